@@ -1,0 +1,215 @@
+"""Mapping with a single directional immovable vertex marker: Algorithm 3.1 (thesis §3.3).
+
+The robot drops its directional marker at the start vertex v0, pointing at the
+exit it faces, so v0 becomes a *directional lighthouse*: entering it reveals
+both the place and the back-link.  Every iteration takes an unexplored edge
+e = (v_k, v_u) from U, walks S to v_k, follows e, and senses v_u:
+
+* the marker is there — v_u is v0, and the entry index is read off the
+  marker's direction: loop augmentation at once;
+* otherwise every unexplored dart e' = (v_k', i') of U whose known end shows
+  v_u's signature (v_k' ≠ v_k) is a hypothesis h' = (e', v_k').  For each, the
+  simple path in S from v_k' to v0 gives a motion sequence M and expected
+  perceptions P^E; the robot executes M and stops at the first mismatch —
+  case (1) during, case (2) at the end (reject, retrace by the reverse motions
+  and re-align to e) — or completes it with every perception matching —
+  case (3) (confirm: loop augmentation);
+* no hypothesis confirmed — non-loop augmentation: v_u joins S with e as its
+  exit 0 and its other exits, numbered clockwise, join U.
+
+The explorer sees only a :class:`~topomark.reference.robot.Robot`.  It keeps
+the iteration records the checker and the trace read.
+
+References
+----------
+Algorithm 3.1 and §3.3–3.4 of *Exploring topological environments*; the
+basic approach of Dudek et al. [26] (§3.1.3).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Callable
+
+from topomark.spec.errors import CheckFailure, Violation
+from topomark.spec.mapstate import MapDart, PartialMap
+from topomark.spec.signature import Signature, signature_at
+
+from .policies import Policies, bfs, tree_to_v0
+from .robot import Robot
+
+__all__ = ["Hypothesis", "Iteration", "LighthouseExplorer"]
+
+V0 = 0
+
+
+@dataclass
+class Hypothesis:
+    """h' = (e', v_k'): with its motion sequence M, expected perceptions P^E and what happened."""
+
+    dart: MapDart
+    motions: tuple[int, ...]
+    expected: tuple[Signature, ...]
+    arrival: MapDart = (0, 0)  # (v0, entry) where M ends if h' holds
+    outcome: str = "untested"  # "case 1", "case 2", "case 3" or "untested"
+    perceived: tuple[Signature, ...] = ()
+
+    def to_json(self) -> dict:
+        return {"dart": list(self.dart), "motions": list(self.motions),
+                "expected": [str(s) for s in self.expected], "outcome": self.outcome,
+                "perceived": [str(s) for s in self.perceived]}
+
+
+@dataclass
+class Iteration:
+    """One pass through the loop body of Algorithm 3.1."""
+
+    number: int
+    edge: MapDart
+    signature: Signature | None = None
+    hypotheses: list[Hypothesis] = field(default_factory=list)
+    kind: str = ""  # "loop" or "non-loop"
+    joined: tuple[MapDart, MapDart] | None = None
+    by_marker: bool = False
+
+    def to_json(self) -> dict:
+        return {"iteration": self.number, "edge": list(self.edge), "signature": str(self.signature),
+                "hypotheses": [h.to_json() for h in self.hypotheses], "augmentation": self.kind,
+                "joined": [list(d) for d in self.joined] if self.joined else None, "by_marker": self.by_marker}
+
+
+class LighthouseExplorer:
+    """Algorithm 3.1 on a robot; ``observer(explorer, iteration)`` runs after every iteration."""
+
+    name = "basic"
+
+    def __init__(self, robot: Robot, policies: Policies | None = None,
+                 observer: Callable[["LighthouseExplorer", Iteration], None] | None = None):
+        self.robot = robot
+        self.policies = policies or Policies()
+        self.observer = observer
+        self.S = PartialMap()
+        self.position: MapDart = (V0, 0)  # believed (map vertex, entry index)
+        self.iterations: list[Iteration] = []
+
+    # -- lines 1-3 -----------------------------------------------------------
+    def start(self) -> None:
+        """Drop the directional marker at v0 pointing at the faced exit; S = {v0}; U = its exits."""
+        here = self.robot.sense()
+        self.robot.drop_marker(0)
+        v0 = self.S.add_vertex(here.degree)
+        self.S.mark_vertex(v0, head=0)
+        self.S.unexplored = [(v0, i) for i in range(here.degree)]
+        self.position = (v0, 0)
+
+    def explore(self) -> PartialMap:
+        """Run to termination (U empty) and return S."""
+        self.start()
+        while self.S.unexplored:
+            self.iterate()
+        return self.S
+
+    # -- lines 5-28 ------------------------------------------------------------
+    def iterate(self) -> Iteration:
+        it = Iteration(len(self.iterations) + 1, self.policies.choose_edge(self.S, self.position[0]))
+        vk, i = it.edge
+        self.travel_to(vk)
+        sig = self.robot.move((i - self.position[1]) % self.S.degree(vk), "new")
+        it.signature = sig
+        mark = self.S.vertex_mark(V0)
+        if sig.vertex_direction is not None:
+            entry = (mark.head - sig.vertex_direction) % sig.degree
+            self.loop_augment(it, (V0, entry), by_marker=True)
+        else:
+            confirmed, heading = self.validate(it, sig)
+            if confirmed is not None:
+                self.loop_augment(it, confirmed.dart)
+                self.position = confirmed.arrival
+            else:
+                self.non_loop_augment(it, sig, heading)
+        self.iterations.append(it)
+        if self.observer is not None:
+            self.observer(self, it)
+        return it
+
+    def travel_to(self, target: int) -> None:
+        """Walk S from the believed position to ``target`` along a shortest path (line 6)."""
+        v, entry = self.position
+        if v == target:
+            return
+        toward = bfs(self.S, target)[1]
+        while v != target:
+            exit_ = toward[v]
+            self.robot.move((exit_ - entry) % self.S.degree(v), "travel")
+            v, entry = self.S.arc((v, exit_))
+        self.position = (v, entry)
+
+    def hypotheses(self, it: Iteration, sig: Signature, toward: dict[int, int]) -> list[Hypothesis]:
+        """H: unexplored darts (v_k' ≠ v_k) whose known end shows v_u's signature, with M and P^E (lines 8, 11-12)."""
+        found, lengths = [], []
+        for dart in self.S.unexplored:
+            v, i = dart
+            if v == it.edge[0] or signature_at(self.S, v, i) != sig:
+                continue
+            motions, expected = [], []
+            entry = i
+            while v != V0:
+                exit_ = toward[v]
+                motions.append((exit_ - entry) % self.S.degree(v))
+                v, entry = self.S.arc((v, exit_))
+                expected.append(signature_at(self.S, v, entry))
+            found.append(Hypothesis(dart, tuple(motions), tuple(expected), (v, entry)))
+            lengths.append(len(motions))
+        return self.policies.order_hypotheses(found, lengths)
+
+    def validate(self, it: Iteration, sig: Signature) -> tuple[Hypothesis | None, int]:
+        """Test hypotheses in turn (lines 9-20).
+
+        Returns the confirmed hypothesis (the robot is then at v0), or None and
+        the robot's heading at v_u: its entry edge counted from e.
+        """
+        it.hypotheses = self.hypotheses(it, sig, tree_to_v0(self.S, self.policies))
+        heading = 0  # the physical entry edge, counted from e (e = exit 0 of v_u)
+        for h in it.hypotheses:
+            done, degrees, perceived = [], [sig.degree], []
+            for step, (motion, want) in enumerate(zip(h.motions, h.expected)):
+                physical = (motion - heading) % sig.degree if step == 0 else motion
+                got = self.robot.move(physical, "validation")
+                done.append(physical)
+                degrees.append(got.degree)
+                perceived.append(got)
+                if got != want:
+                    h.outcome = "case 2" if step == len(h.motions) - 1 else "case 1"
+                    break
+            h.perceived = tuple(perceived)
+            if h.outcome == "untested":
+                h.outcome = "case 3"
+                return h, heading
+            self.retrace(done, degrees)
+            heading = (heading + done[0]) % sig.degree
+        return None, heading
+
+    def retrace(self, done: list[int], degrees: list[int]) -> None:
+        """Execute the reverse of the motions ``done`` (line 17): 0, then −l mod deg back to v_u."""
+        self.robot.move(0, "retrace")
+        for t in range(len(done) - 1, 0, -1):
+            self.robot.move((-done[t]) % degrees[t], "retrace")
+
+    # -- lines 22-28 -----------------------------------------------------------
+    def loop_augment(self, it: Iteration, far: MapDart, by_marker: bool = False) -> None:
+        """Add e/e' = (v_k, v_k') with the existing indices; remove e' from U."""
+        if far not in self.S.unexplored:
+            raise CheckFailure(Violation("Algorithm 3.1", f"iteration {it.number}", f"e' = {far} in U",
+                                         "not in U", "the explorer's own map is inconsistent"))
+        self.S.unexplored.remove(far)
+        self.S.add_edge(it.edge, far)
+        it.kind, it.joined, it.by_marker = "loop", (it.edge, far), by_marker
+        self.position = far
+
+    def non_loop_augment(self, it: Iteration, sig: Signature, heading: int) -> None:
+        """Add v_u and e; e is v_u's exit 0, the rest numbered clockwise and added to U."""
+        u = self.S.add_vertex(sig.degree)
+        self.S.add_edge(it.edge, (u, 0))
+        self.S.unexplored.extend((u, i) for i in range(1, sig.degree))
+        it.kind, it.joined = "non-loop", (it.edge, (u, 0))
+        self.position = (u, heading)

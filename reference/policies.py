@@ -1,0 +1,98 @@
+"""The choices Algorithm 3.1 leaves open, as named deterministic policies (thesis §3.3).
+
+* **edge policy** — which unexplored edge e to take from U (line 5):
+  ``nearest`` (default: the entry of U whose known end is nearest the robot in
+  S, ties broken by U's order), ``fifo`` (oldest entry first), ``lifo``
+  (newest entry first).
+* **hypothesis policy** — the order hypotheses are removed from H (line 10):
+  ``fifo`` (default: U's order), ``lifo``, ``shortest`` (shortest validation
+  path first, ties by U's order).
+* **path policy** — which simple path to v0 validates a hypothesis (line 11):
+  ``shortest`` (default: the path in a breadth-first tree of S rooted at v0,
+  exits scanned in index order), ``dfs`` (the path in a depth-first tree).
+  Either way one tree per iteration serves every hypothesis.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+
+from topomark.spec.errors import InvalidInput
+from topomark.spec.mapstate import MapDart, PartialMap
+
+__all__ = ["EDGE_POLICIES", "HYPOTHESIS_POLICIES", "PATH_POLICIES", "Policies", "bfs", "tree_to_v0"]
+
+EDGE_POLICIES = ("nearest", "fifo", "lifo")
+HYPOTHESIS_POLICIES = ("fifo", "lifo", "shortest")
+PATH_POLICIES = ("shortest", "dfs")
+
+
+class Policies:
+    """A validated choice of edge, hypothesis and path policy."""
+
+    def __init__(self, edge: str = "nearest", hypothesis: str = "fifo", path: str = "shortest"):
+        for name, value, allowed in (("edge", edge, EDGE_POLICIES), ("hypothesis", hypothesis, HYPOTHESIS_POLICIES),
+                                     ("path", path, PATH_POLICIES)):
+            if value not in allowed:
+                raise InvalidInput(f"unknown {name} policy {value!r} (choose from {', '.join(allowed)})")
+        self.edge, self.hypothesis, self.path = edge, hypothesis, path
+
+    def to_json(self) -> dict[str, str]:
+        return {"edge": self.edge, "hypothesis": self.hypothesis, "path": self.path}
+
+    def choose_edge(self, S: PartialMap, here: int) -> MapDart:
+        """Remove and return the next e from U."""
+        U = S.unexplored
+        if self.edge == "fifo":
+            k = 0
+        elif self.edge == "lifo":
+            k = len(U) - 1
+        else:
+            dist = bfs(S, here)[0]
+            k = min(range(len(U)), key=lambda x: (dist[U[x][0]], x))
+        return U.pop(k)
+
+    def order_hypotheses(self, hypotheses: list, lengths: list[int]) -> list:
+        if self.hypothesis == "lifo":
+            return hypotheses[::-1]
+        if self.hypothesis == "shortest":
+            order = sorted(range(len(hypotheses)), key=lambda k: (lengths[k], k))
+            return [hypotheses[k] for k in order]
+        return list(hypotheses)
+
+
+def bfs(S: PartialMap, root: int) -> tuple[dict[int, int], dict[int, int]]:
+    """Breadth-first over S's explored edges: (distance, exit toward the root) per reached vertex."""
+    dist, toward = {root: 0}, {}
+    todo = deque([root])
+    while todo:
+        v = todo.popleft()
+        for i in range(S.degree(v)):
+            t = S.arc((v, i))
+            if t is not None and t[0] not in dist:
+                dist[t[0]] = dist[v] + 1
+                toward[t[0]] = t[1]
+                todo.append(t[0])
+    return dist, toward
+
+
+def _dfs(S: PartialMap, root: int) -> dict[int, int]:
+    toward: dict[int, int] = {}
+    seen = {root}
+    stack = [(root, 0)]
+    while stack:
+        v, i = stack.pop()
+        if i >= S.degree(v):
+            continue
+        stack.append((v, i + 1))
+        t = S.arc((v, i))
+        if t is not None and t[0] not in seen:
+            seen.add(t[0])
+            toward[t[0]] = t[1]
+            stack.append((t[0], 0))
+    return toward
+
+
+def tree_to_v0(S: PartialMap, policy: Policies, v0: int = 0) -> dict[int, int]:
+    """For each vertex of S, the exit that leads one step closer to v0 along the policy's tree."""
+    return bfs(S, v0)[1] if policy.path == "shortest" else _dfs(S, v0)

@@ -1,0 +1,45 @@
+"""The robot interface: all an explorer may know of the world (thesis §3.1.1).
+
+An explorer moves by a relative exit index and receives the signature of the
+vertex reached; it may sense the signature where it stands and operate the
+markers its marker class allows.  It never sees the world, its vertex names,
+or where it really is.  :class:`Robot` is the only object an explorer is given;
+explorer modules import nothing from :mod:`topomark.reference.simulator` or
+:mod:`topomark.spec.world` (``tests/test_wall.py`` enforces this).
+
+``purpose`` tags each motion for the cost accounting of §3.1.2 (``travel`` to
+v_k, the ``new`` edge, hypothesis ``validation``, ``retrace``); the simulator
+counts every traversal whatever the tag says.
+"""
+
+from __future__ import annotations
+
+from typing import Callable
+
+from topomark.spec.signature import Signature
+
+__all__ = ["Robot", "PURPOSES"]
+
+PURPOSES = ("travel", "new", "validation", "retrace", "other")
+
+
+class Robot:
+    """A narrow handle on a simulator: motions, perceptions and marker operations only."""
+
+    __slots__ = ("_move", "_sense", "_drop")
+
+    def __init__(self, move: Callable[[int, str], Signature], sense: Callable[[], Signature],
+                 drop: Callable[[int | None], None]):
+        self._move, self._sense, self._drop = move, sense, drop
+
+    def move(self, motion: int, purpose: str = "other") -> Signature:
+        """Leave through exit ``motion`` counted clockwise from the entry edge; return the signature reached."""
+        return self._move(motion, purpose)
+
+    def sense(self) -> Signature:
+        """The signature of the current vertex relative to the current entry edge."""
+        return self._sense()
+
+    def drop_marker(self, direction: int | None = None) -> None:
+        """Drop a vertex marker here; directional markers point at relative exit ``direction``."""
+        self._drop(direction)

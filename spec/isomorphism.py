@@ -1,0 +1,243 @@
+"""Extended isomorphism of embedded graphs (thesis §3.1.3, following Dudek et al. [26]).
+
+Map S and world G are *extended-isomorphic* iff there is a graph isomorphism
+``f`` and, for every vertex ``v``, a relabelling of its exits that keeps the
+same (clockwise) enumeration but may start from a different reference edge:
+``index(f(e), f(v)) = (index(e, v) + r_v) mod deg(v)``.  Mirror images are not
+isomorphic: the enumeration rule is fixed.
+
+A :class:`Witness` holds ``f`` and the rotation offsets ``r``.  Because the
+graphs are connected, an isomorphism is fixed by the image of a single dart;
+:func:`anchored` propagates that choice in O(n + m) and explains the first
+mismatch in words.  :func:`find_isomorphism` tries every admissible anchor.
+:func:`verify_witness` checks a witness against the definition directly and
+shares no code with the search.  An independent implementation on networkx
+lives in :mod:`topomark.spec.dartgraph`.
+
+With ``markers=True`` the isomorphism must also preserve markers: a marked
+vertex maps to a vertex with the same count; a directional marker's head dart
+maps to the head dart; a marked edge maps to a marked edge with the same count
+and head.
+
+Examples
+--------
+>>> from topomark.spec.world import World
+>>> a = World({"x": ["y", "z"], "y": ["z", "x"], "z": ["x", "y"]})
+>>> b = World({"1": ["3", "2"], "2": ["1", "3"], "3": ["2", "1"]})
+>>> r = find_isomorphism(a, b)
+>>> r.isomorphic, verify_witness(a, b, r.witness) is None
+(True, True)
+"""
+
+from __future__ import annotations
+
+from collections import Counter, deque
+from dataclasses import dataclass
+from typing import Any, Hashable
+
+from .errors import Violation
+
+__all__ = ["Witness", "IsoResult", "anchored", "find_isomorphism", "verify_witness", "local_class"]
+
+
+@dataclass(frozen=True)
+class Witness:
+    """An extended isomorphism: ``vertex_map[v] = f(v)``; exit i of v ↦ exit (i + offsets[v]) mod deg."""
+
+    vertex_map: dict[Any, Any]
+    offsets: dict[Any, int]
+
+    def image(self, g_a, dart: tuple[Any, int]) -> tuple[Any, int]:
+        v, i = dart
+        return (self.vertex_map[v], (i + self.offsets[v]) % g_a.degree(v))
+
+    def to_json(self) -> dict[str, Any]:
+        return {
+            "vertex_map": {str(k): str(v) for k, v in self.vertex_map.items()},
+            "offsets": {str(k): r for k, r in self.offsets.items()},
+        }
+
+
+@dataclass(frozen=True)
+class IsoResult:
+    """A verdict with its certificate: a witness when isomorphic, else the first mismatch."""
+
+    isomorphic: bool
+    witness: Witness | None = None
+    mismatch: Violation | None = None
+    mapped: int = 0  # how many vertices the (best) attempt had matched
+
+    def __bool__(self) -> bool:
+        return self.isomorphic
+
+
+def _mismatch(where: str, expected: str, found: str, detail: str = "") -> Violation:
+    return Violation("extended isomorphism", where, expected, found, detail)
+
+
+def _marks_at(g, v, r: int) -> tuple:
+    """The marks at ``v`` with exit indices shifted by ``r`` (for comparison across graphs)."""
+    d = g.degree(v)
+    vm = g.vertex_mark(v)
+    vpart = None if vm is None else (vm.count, None if vm.head is None else (vm.head + r) % d)
+    dpart = tuple(sorted(((dm.exit + r) % d, dm.count, dm.end) for dm in g.dart_marks(v)))
+    return (vpart, dpart)
+
+
+def _describe_marks(marks: tuple) -> str:
+    vpart, dpart = marks
+    parts = []
+    if vpart is not None:
+        parts.append(f"{vpart[0]} vertex marker(s)" + ("" if vpart[1] is None else f" pointing at exit {vpart[1]}"))
+    for x, count, end in dpart:
+        parts.append(f"{count} edge marker(s) on exit {x}" + ("" if end is None else f" ({end})"))
+    return ", ".join(parts) or "no markers"
+
+
+def anchored(a, b, a_dart, b_dart, markers: bool = True, partial: bool = False) -> IsoResult:
+    """Extend ``a_dart ↦ b_dart`` to an extended isomorphism from ``a`` to ``b``.
+
+    ``a`` and ``b`` are worlds or partial maps (anything with ``degree``,
+    ``arc``, ``vertex_mark``, ``dart_marks`` and ``vertices``).  With
+    ``partial=True`` unexplored darts of ``a`` are skipped and the result is an
+    embedding of the explored part of ``a`` into ``b`` (an isomorphism onto
+    the explored subgraph G_s of §3.4); otherwise it must be a bijection.
+    """
+    v0, i0 = a_dart
+    w0, j0 = b_dart
+    if a.degree(v0) != b.degree(w0):
+        return IsoResult(False, mismatch=_mismatch(
+            f"vertex {v0!r}", f"degree {a.degree(v0)} at its image {w0!r}", f"degree {b.degree(w0)}"))
+    f = {v0: w0}
+    inv = {w0: v0}
+    r = {v0: (j0 - i0) % a.degree(v0)}
+    todo = deque([v0])
+
+    def fail(violation: Violation) -> IsoResult:
+        return IsoResult(False, mismatch=violation, mapped=len(f))
+
+    while todo:
+        v = todo.popleft()
+        fv, d = f[v], a.degree(v)
+        if markers:
+            ma, mb = _marks_at(a, v, r[v]), _marks_at(b, fv, 0)
+            if ma != mb:
+                return fail(_mismatch(f"vertex {v!r} (image {fv!r})", _describe_marks(ma), _describe_marks(mb),
+                                      "markers are not preserved"))
+        for i in range(d):
+            t = a.arc((v, i))
+            if t is None:
+                if partial:
+                    continue
+                return fail(_mismatch(f"vertex {v!r} exit {i}", "an explored edge", "an unexplored dart"))
+            w, j = t
+            k = (i + r[v]) % d
+            bw, bj = b.arc((fv, k))
+            if w in f:
+                if f[w] != bw:
+                    return fail(_mismatch(
+                        f"vertex {v!r} exit {i}",
+                        f"the edge to {w!r}, i.e. to {f[w]!r} through exit {k} of {fv!r}",
+                        f"exit {k} of {fv!r} leads to {bw!r}"))
+                if (j + r[w]) % a.degree(w) != bj:
+                    return fail(_mismatch(
+                        f"edge {v!r}-{w!r} at {w!r}",
+                        f"exit {(j + r[w]) % a.degree(w)} of {bw!r} (from exit {j} of {w!r})",
+                        f"exit {bj} of {bw!r}", "the edge's index at its far end is not preserved"))
+                continue
+            if bw in inv:
+                return fail(_mismatch(
+                    f"vertex {v!r} exit {i}", f"a vertex not yet matched (it leads to {w!r})",
+                    f"{bw!r}, already the image of {inv[bw]!r}", "two vertices would map to one"))
+            if a.degree(w) != b.degree(bw):
+                return fail(_mismatch(
+                    f"vertex {v!r} exit {i}", f"a vertex of degree {a.degree(w)} (like {w!r})",
+                    f"{bw!r} of degree {b.degree(bw)}"))
+            f[w], inv[bw], r[w] = bw, w, (bj - j) % a.degree(w)
+            todo.append(w)
+    if not partial:
+        if len(f) != len(b.vertices):
+            return fail(_mismatch("the vertex sets", f"{len(b.vertices)} vertices reached from the anchor",
+                                  f"{len(f)}"))
+        if len(f) != len(a.vertices):
+            lost = next(v for v in a.vertices if v not in f)
+            return fail(_mismatch(f"vertex {lost!r}", "reachable from the anchor", "unreachable"))
+    return IsoResult(True, Witness(f, r), mapped=len(f))
+
+
+def local_class(g, v) -> Hashable:
+    """What any extended isomorphism preserves at a single vertex (degree and marks, rotation-free)."""
+    vm = g.vertex_mark(v)
+    vpart = None if vm is None else (vm.count, vm.head is not None)
+    return (g.degree(v), vpart, tuple(sorted((dm.count, dm.end or "") for dm in g.dart_marks(v))))
+
+
+def _summary(g, markers: bool) -> dict[str, Any]:
+    degrees = Counter(g.degree(v) for v in g.vertices)
+    out: dict[str, Any] = {
+        "vertices": len(g.vertices),
+        "edges": sum(degrees[d] * d for d in degrees) // 2,
+        "degree histogram": dict(sorted(degrees.items())),
+    }
+    if markers:
+        out["marked vertices"] = sorted(Counter(
+            (c[1], c[0]) for v in g.vertices if (c := local_class(g, v))[1] is not None or c[2]).items())
+    return out
+
+
+def find_isomorphism(a, b, markers: bool = True) -> IsoResult:
+    """Decide extended isomorphism of two complete worlds by anchored propagation.
+
+    Returns an :class:`IsoResult` carrying a witness, or the mismatch of the
+    attempt that matched most vertices before failing.
+    """
+    sa, sb = _summary(a, markers), _summary(b, markers)
+    for key in sa:
+        if sa[key] != sb[key]:
+            return IsoResult(False, mismatch=Violation("extended isomorphism", key, str(sa[key]), str(sb[key]),
+                                                       "the worlds differ in an isomorphism invariant"))
+    classes_b: dict[Hashable, list] = {}
+    for w in b.vertices:
+        classes_b.setdefault(local_class(b, w), []).append(w)
+    # Anchor at the vertex of A whose class is rarest in B; prefer a directional head dart.
+    v = min(a.vertices, key=lambda x: len(classes_b.get(local_class(a, x), ())))
+    head = a.vertex_mark(v).head if markers and a.vertex_mark(v) is not None else None
+    i = 0 if head is None else head
+    best: IsoResult | None = None
+    for w in classes_b.get(local_class(a, v), ()):
+        bhead = b.vertex_mark(w).head if head is not None else None
+        for j in ([bhead] if bhead is not None else range(b.degree(w))):
+            res = anchored(a, b, (v, i), (w, j), markers=markers)
+            if res.isomorphic:
+                return res
+            if best is None or res.mapped > best.mapped:
+                best = res
+    if best is None:
+        return IsoResult(False, mismatch=Violation("extended isomorphism", f"vertex {v!r}",
+                                                   "a vertex of the same degree and markers", "none"))
+    return best
+
+
+def verify_witness(a, b, witness: Witness, markers: bool = True) -> Violation | None:
+    """Check ``witness`` against the definition of extended isomorphism; None if it holds.
+
+    Independent of the search: every dart of ``a`` must land where the witness says.
+    """
+    f, r = witness.vertex_map, witness.offsets
+    if set(f) != set(a.vertices) or sorted(map(str, f.values())) != sorted(map(str, b.vertices)) \
+            or len(set(f.values())) != len(f):
+        return Violation("witness", "vertex map", "a bijection between the vertex sets", str(f))
+    for v in a.vertices:
+        d = a.degree(v)
+        if b.degree(f[v]) != d:
+            return Violation("witness", f"vertex {v!r}", f"degree {d}", f"degree {b.degree(f[v])}")
+        for i in range(d):
+            w, j = a.arc((v, i))
+            expected = (f[w], (j + r[w]) % a.degree(w))
+            found = b.arc((f[v], (i + r[v]) % d))
+            if found != expected:
+                return Violation("witness", f"dart ({v!r}, {i})", str(expected), str(found))
+        if markers and _marks_at(a, v, r[v]) != _marks_at(b, f[v], 0):
+            return Violation("witness", f"vertex {v!r}", _describe_marks(_marks_at(a, v, r[v])),
+                             _describe_marks(_marks_at(b, f[v], 0)))
+    return None

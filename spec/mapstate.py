@@ -1,0 +1,141 @@
+"""The map state: the partial map S and its unexplored darts U (thesis §3.1.3).
+
+S is an embedded graph that grows one edge per iteration.  Its vertices are
+numbered 0, 1, ... in order of discovery (v0 = 0).  Each vertex knows its
+degree, because the robot sensed it; each exit either leads to a known
+``(vertex, entry)`` of S or is still *unexplored*.  U is kept as an explicit,
+ordered list of darts so that an explorer that forgets to remove an entry (or
+adds one twice) is caught by invariant I-2 (§3.4) rather than hidden by a
+derived value.
+
+Marks in S mirror markers in the world in exit indices: the directional
+lighthouse of §3.3 at v0 is ``mark_vertex(0, head=h)``.
+
+Examples
+--------
+>>> S = PartialMap()
+>>> v0 = S.add_vertex(3)
+>>> v1 = S.add_vertex(2)
+>>> S.add_edge((v0, 0), (v1, 0))
+>>> S.neighbour((v0, 0)), S.neighbour((v0, 1))
+((1, 0), None)
+>>> S.explored_edges()
+1
+"""
+
+from __future__ import annotations
+
+from typing import Iterator
+
+from .errors import require
+from .marker import EdgeMarker, VertexMarker
+from .world import DartMark, Start, VertexMark, World
+
+__all__ = ["PartialMap", "MapDart"]
+
+MapDart = tuple[int, int]
+
+
+class PartialMap:
+    """The map S (partial embedded graph) together with U, the unexplored darts."""
+
+    def __init__(self) -> None:
+        self._adj: list[list[MapDart | None]] = []
+        self._vmarks: dict[int, VertexMark] = {}
+        self._dmarks: dict[int, list[DartMark]] = {}
+        self.unexplored: list[MapDart] = []
+
+    # -- building ------------------------------------------------------------
+    def add_vertex(self, degree: int) -> int:
+        require(degree >= 1, f"a map vertex needs degree >= 1, got {degree}")
+        self._adj.append([None] * degree)
+        return len(self._adj) - 1
+
+    def add_edge(self, a: MapDart, b: MapDart) -> None:
+        """Join dart ``a`` and dart ``b`` (both must be unjoined)."""
+        require(a[0] != b[0], f"a map edge may not be a self-loop at vertex {a[0]}")
+        for v, i in (a, b):
+            require(0 <= i < len(self._adj[v]), f"exit {i} does not exist at map vertex {v}")
+            require(self._adj[v][i] is None, f"dart {(v, i)} of the map is already joined")
+        self._adj[a[0]][a[1]] = b
+        self._adj[b[0]][b[1]] = a
+
+    def mark_vertex(self, v: int, count: int = 1, head: int | None = None) -> None:
+        self._vmarks[v] = VertexMark(count, head)
+
+    def mark_dart(self, v: int, mark: DartMark) -> None:
+        self._dmarks.setdefault(v, []).append(mark)
+        self._dmarks[v].sort(key=lambda d: d.exit)
+
+    # -- queries (the same protocol as World, so signature_at works on both) --
+    @property
+    def vertices(self) -> range:
+        return range(len(self._adj))
+
+    @property
+    def n(self) -> int:
+        return len(self._adj)
+
+    def degree(self, v: int) -> int:
+        return len(self._adj[v])
+
+    def neighbour(self, dart: MapDart) -> MapDart | None:
+        """The reverse dart that ``dart`` is joined to, or None if unexplored."""
+        return self._adj[dart[0]][dart[1]]
+
+    arc = neighbour  # the name shared with World.arc
+
+    def vertex_mark(self, v: int) -> VertexMark | None:
+        return self._vmarks.get(v)
+
+    def dart_marks(self, v: int) -> tuple[DartMark, ...]:
+        return tuple(self._dmarks.get(v, ()))
+
+    def darts(self) -> Iterator[MapDart]:
+        for v, row in enumerate(self._adj):
+            for i in range(len(row)):
+                yield (v, i)
+
+    def open_darts(self) -> list[MapDart]:
+        """The darts of S not joined to anything (what U should hold)."""
+        return [d for d in self.darts() if self.neighbour(d) is None]
+
+    def explored_edges(self) -> int:
+        return sum(1 for d in self.darts() if self.neighbour(d) is not None) // 2
+
+    def complete(self) -> bool:
+        return all(x is not None for row in self._adj for x in row)
+
+    def copy(self) -> "PartialMap":
+        other = PartialMap()
+        other._adj = [list(row) for row in self._adj]
+        other._vmarks = dict(self._vmarks)
+        other._dmarks = {v: list(ms) for v, ms in self._dmarks.items()}
+        other.unexplored = list(self.unexplored)
+        return other
+
+    # -- conversion ----------------------------------------------------------
+    @staticmethod
+    def name(v: int) -> str:
+        """A map vertex's name in the world file format: ``"s0"``, ``"s1"``, ..."""
+        return f"s{v}"
+
+    def to_world(self, start: MapDart | None = None) -> World:
+        """The complete map as a :class:`World` (markers included); S must be complete."""
+        require(self.complete(), f"the map still has unexplored darts: {self.open_darts()[:5]}")
+        rotation = {self.name(v): [self.name(w) for (w, _) in row] for v, row in enumerate(self._adj)}
+        markers: list = []
+        for v, mark in sorted(self._vmarks.items()):
+            points = None if mark.head is None else self.name(self._adj[v][mark.head][0])
+            markers.append(VertexMarker(self.name(v), mark.count, points))
+        done = set()
+        for v, marks in sorted(self._dmarks.items()):
+            for dm in marks:
+                w = self._adj[v][dm.exit][0]
+                if frozenset((v, w)) in done:
+                    continue
+                done.add(frozenset((v, w)))
+                head = None if dm.end is None else self.name(v if dm.end == "H" else w)
+                markers.append(EdgeMarker((self.name(v), self.name(w)), dm.count, head))
+        s = None if start is None else Start(self.name(start[0]), self.name(self._adj[start[0]][start[1]][0]))
+        return World(rotation, markers, s)

@@ -1,0 +1,130 @@
+"""Signatures: what the robot senses at a vertex (thesis §3.1.1, Figure 3.2; §6.1).
+
+A signature is the pair of edge-related perception (the degree) and
+marker-related perception, written ``[degree, V#-dir, otherInfo]``:
+
+* ``A`` — no vertex marker; ``V`` — one undirected marker; ``V2`` — two;
+* ``V-h`` — a directional marker pointing at the exit ``h`` places to the
+  left of the entry edge (clockwise enumeration), i.e. ``(head - entry) mod deg``;
+* ``otherInfo`` — ``A`` or, for edge markers (§6.1, Figure 6.1), one item per
+  marked incident edge: ``E-p`` (undirected) or ``E-p-H`` / ``E-p-T``
+  (directional: the head/tail of the marker points at this vertex), ``p`` the
+  marked exit relative to the entry edge; ``E2-p`` for two markers.
+
+Examples
+--------
+>>> str(Signature(3))
+'[3,A,A]'
+>>> str(Signature(4, vertex_count=1, vertex_direction=1))
+'[4,V-1,A]'
+>>> str(Signature(2, vertex_count=2))
+'[2,V2,A]'
+>>> str(Signature(3, edges=((1, 1, "H"),)))
+'[3,A,E-1-H]'
+>>> Signature.parse("[4,V-1,E-1-H,E-3-T]") == Signature(4, 1, 1, ((1, 1, "H"), (3, 1, "T")))
+True
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from typing import Protocol
+
+from .errors import InvalidInput
+from .world import DartMark, VertexMark
+
+__all__ = ["Signature", "signature_at", "Marked"]
+
+
+class Marked(Protocol):
+    """Anything with degrees and marks: a :class:`World` or a partial map."""
+
+    def degree(self, v) -> int: ...
+
+    def vertex_mark(self, v) -> VertexMark | None: ...
+
+    def dart_marks(self, v) -> tuple[DartMark, ...]: ...
+
+
+@dataclass(frozen=True, order=True)
+class Signature:
+    """An immutable signature; ``edges`` holds (relative exit, count, "H"/"T"/None), sorted."""
+
+    degree: int
+    vertex_count: int = 0
+    vertex_direction: int | None = None
+    edges: tuple[tuple[int, int, str | None], ...] = ()
+
+    def __str__(self) -> str:
+        if self.vertex_count == 0:
+            vpart = "A"
+        else:
+            vpart = "V" + (str(self.vertex_count) if self.vertex_count > 1 else "")
+            if self.vertex_direction is not None:
+                vpart += f"-{self.vertex_direction}"
+        if not self.edges:
+            epart = "A"
+        else:
+            items = []
+            for pos, count, end in self.edges:
+                item = "E" + (str(count) if count > 1 else "") + f"-{pos}"
+                items.append(item + (f"-{end}" if end else ""))
+            epart = ",".join(items)
+        return f"[{self.degree},{vpart},{epart}]"
+
+    __repr__ = __str__
+
+    @property
+    def marked(self) -> bool:
+        """True if any marker is sensed here."""
+        return self.vertex_count > 0 or bool(self.edges)
+
+    _V = re.compile(r"^V(\d*)(?:-(\d+))?$")
+    _E = re.compile(r"^E(\d*)-(\d+)(?:-([HT]))?$")
+
+    @classmethod
+    def parse(cls, text: str) -> "Signature":
+        """Read thesis notation back; raises :class:`InvalidInput` on anything else."""
+        body = text.strip()
+        if not (body.startswith("[") and body.endswith("]")):
+            raise InvalidInput(f"signature {text!r} is not of the form [degree,V...,...]")
+        parts = [p.strip() for p in body[1:-1].split(",")]
+        if len(parts) < 3 or not parts[0].isdigit():
+            raise InvalidInput(f"signature {text!r} is not of the form [degree,V...,...]")
+        degree = int(parts[0])
+        count, direction = 0, None
+        if parts[1] != "A":
+            mv = cls._V.match(parts[1])
+            if not mv:
+                raise InvalidInput(f"signature {text!r}: cannot read vertex part {parts[1]!r}")
+            count = int(mv.group(1) or 1)
+            direction = int(mv.group(2)) if mv.group(2) is not None else None
+        edges = []
+        if parts[2:] != ["A"]:
+            for item in parts[2:]:
+                me = cls._E.match(item)
+                if not me:
+                    raise InvalidInput(f"signature {text!r}: cannot read edge part {item!r}")
+                edges.append((int(me.group(2)), int(me.group(1) or 1), me.group(3)))
+        sig = cls(degree, count, direction, tuple(sorted(edges, key=lambda e: e[0])))
+        if str(sig) != body.replace(" ", ""):
+            raise InvalidInput(f"signature {text!r} is not in canonical thesis notation (expected {sig})")
+        return sig
+
+
+def signature_at(g: Marked, v, entry: int) -> Signature:
+    """The signature sensed at ``v`` by a robot whose entry edge is exit ``entry`` (§3.1.1).
+
+    A directional marker pointing at exit ``h`` reads ``V-((h - entry) mod deg)``;
+    an edge marker on exit ``x`` reads ``E-((x - entry) mod deg)``.
+    """
+    d = g.degree(v)
+    mark = g.vertex_mark(v)
+    count, direction = 0, None
+    if mark is not None:
+        count = mark.count
+        if mark.head is not None:
+            direction = (mark.head - entry) % d
+    edges = tuple(sorted(((dm.exit - entry) % d, dm.count, dm.end) for dm in g.dart_marks(v)))
+    return Signature(d, count, direction, edges)

@@ -1,0 +1,172 @@
+"""World and map files: JSON, format ``topomark/world@1`` (schema in ``world.schema.json``).
+
+::
+
+    {"format": "topomark/world@1",
+     "rotation": {"c": ["a", "b", "d", "e"], "a": ["c", "b", "e"], ...},
+     "markers": [{"kind": "vertex", "at": "c", "points_to": "a"}],
+     "start": {"at": "c", "facing": "a"}}
+
+``rotation`` maps each vertex name to its neighbours in clockwise order.
+Markers are ``{"kind": "vertex", "at": V, "count": K, "points_to": W}``
+(``count`` defaults to 1; ``points_to`` only for a directional marker) and
+``{"kind": "edge", "between": [U, V], "count": K, "head": V}`` (``head`` only
+for a directional edge marker).  ``start`` is optional.  A map written by an
+explorer uses the same format, so any two files can be compared.
+
+Loading is strict: malformed JSON, duplicate keys, unknown keys, a wrong
+format version and every graph condition of §3.1.1 give one
+:class:`~topomark.spec.errors.InvalidWorld` naming what is wrong.
+
+Examples
+--------
+>>> w = loads_world('{"format": "topomark/world@1", "rotation": {"a": ["b"], "b": ["a"]}}')
+>>> loads_world(dumps_world(w)) == w
+True
+>>> loads_world('{"format": "topomark/world@2", "rotation": {}}')
+Traceback (most recent call last):
+...
+topomark.spec.errors.InvalidWorld: <string>: unknown format 'topomark/world@2' (this is topomark/world@1)
+"""
+
+from __future__ import annotations
+
+import json
+from importlib import resources
+from pathlib import Path
+from typing import Any
+
+from .errors import InvalidWorld
+from .marker import EdgeMarker, VertexMarker
+from .world import Start, World
+
+__all__ = ["FORMAT", "schema", "world_from_json", "world_to_json", "loads_world", "dumps_world",
+           "load_world", "save_world"]
+
+FORMAT = "topomark/world@1"
+
+
+def schema() -> dict[str, Any]:
+    """The published JSON Schema of the world format."""
+    return json.loads(resources.files(__package__).joinpath("world.schema.json").read_text())
+
+
+def _no_duplicates(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
+    seen: dict[str, Any] = {}
+    for key, value in pairs:
+        if key in seen:
+            raise InvalidWorld(f"duplicate key {key!r} in a JSON object")
+        seen[key] = value
+    return seen
+
+
+def _expect(cond: bool, message: str) -> None:
+    if not cond:
+        raise InvalidWorld(message)
+
+
+def _keys(obj: dict, allowed: set[str], required: set[str], what: str) -> None:
+    unknown = sorted(set(obj) - allowed)
+    _expect(not unknown, f"{what}: unknown key {unknown[0]!r}" if unknown else "")
+    missing = sorted(required - set(obj))
+    _expect(not missing, f"{what}: missing key {missing[0]!r}" if missing else "")
+
+
+def _string(x: Any, what: str) -> str:
+    _expect(isinstance(x, str), f"{what} must be a string, got {json.dumps(x)}")
+    return x
+
+
+def _marker(obj: Any, k: int):
+    what = f"markers[{k}]"
+    _expect(isinstance(obj, dict), f"{what} must be an object")
+    kind = obj.get("kind")
+    count = obj.get("count", 1)
+    _expect(isinstance(count, int) and not isinstance(count, bool) and count >= 1,
+            f"{what}: count must be a positive integer, got {json.dumps(count)}")
+    if kind == "vertex":
+        _keys(obj, {"kind", "at", "count", "points_to"}, {"kind", "at"}, what)
+        points = obj.get("points_to")
+        return VertexMarker(_string(obj["at"], f"{what}.at"), count,
+                            None if points is None else _string(points, f"{what}.points_to"))
+    if kind == "edge":
+        _keys(obj, {"kind", "between", "count", "head"}, {"kind", "between"}, what)
+        between = obj["between"]
+        _expect(isinstance(between, list) and len(between) == 2,
+                f"{what}.between must be a list of two vertex names")
+        head = obj.get("head")
+        return EdgeMarker((_string(between[0], f"{what}.between[0]"), _string(between[1], f"{what}.between[1]")),
+                          count, None if head is None else _string(head, f"{what}.head"))
+    raise InvalidWorld(f"{what}: kind must be \"vertex\" or \"edge\", got {json.dumps(kind)}")
+
+
+def world_from_json(obj: Any) -> World:
+    """Build a :class:`World` from parsed JSON, checking every condition."""
+    _expect(isinstance(obj, dict), "a world file must hold a JSON object")
+    fmt = obj.get("format")
+    _expect(fmt == FORMAT, f"unknown format {fmt!r} (this is {FORMAT})" if "format" in obj
+            else f"missing key 'format' (expected {FORMAT!r})")
+    _keys(obj, {"format", "rotation", "markers", "start"}, {"format", "rotation"}, "world")
+    rot = obj["rotation"]
+    _expect(isinstance(rot, dict), "rotation must be an object mapping each vertex to its clockwise neighbours")
+    for v, ns in rot.items():
+        _expect(isinstance(ns, list), f"rotation of vertex {v!r} must be a list of vertex names")
+        for w in ns:
+            _string(w, f"neighbour of vertex {v!r}")
+    markers = obj.get("markers", [])
+    _expect(isinstance(markers, list), "markers must be a list")
+    start = obj.get("start")
+    if start is not None:
+        _expect(isinstance(start, dict), "start must be an object {\"at\": V, \"facing\": W}")
+        _keys(start, {"at", "facing"}, {"at", "facing"}, "start")
+        start = Start(_string(start["at"], "start.at"), _string(start["facing"], "start.facing"))
+    return World(rot, [_marker(m, k) for k, m in enumerate(markers)], start)
+
+
+def world_to_json(world: World) -> dict[str, Any]:
+    """The JSON object of a world (markers and start included when present)."""
+    out: dict[str, Any] = {"format": FORMAT, "rotation": {v: list(ns) for v, ns in world.rotation.items()}}
+    markers = []
+    for m in world.markers:
+        if isinstance(m, VertexMarker):
+            item: dict[str, Any] = {"kind": "vertex", "at": m.at, "count": m.count}
+            if m.points_to is not None:
+                item["points_to"] = m.points_to
+        else:
+            item = {"kind": "edge", "between": list(m.between), "count": m.count}
+            if m.head is not None:
+                item["head"] = m.head
+        markers.append(item)
+    if markers:
+        out["markers"] = markers
+    if world.start is not None:
+        out["start"] = {"at": world.start.at, "facing": world.start.facing}
+    return out
+
+
+def loads_world(text: str, source: str = "<string>") -> World:
+    """Parse a world from JSON text; errors are prefixed with ``source``."""
+    try:
+        obj = json.loads(text, object_pairs_hook=_no_duplicates)
+        return world_from_json(obj)
+    except json.JSONDecodeError as exc:
+        raise InvalidWorld(f"{source}: malformed JSON at line {exc.lineno} column {exc.colno}: {exc.msg}") from None
+    except InvalidWorld as exc:
+        raise InvalidWorld(f"{source}: {exc}") from None
+
+
+def dumps_world(world: World) -> str:
+    return json.dumps(world_to_json(world), indent=1) + "\n"
+
+
+def load_world(path: str | Path) -> World:
+    """Read a world file; a missing or unreadable file is an :class:`InvalidWorld` too."""
+    try:
+        text = Path(path).read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise InvalidWorld(f"{path}: cannot read the file ({exc.__class__.__name__}: {exc.strerror or exc})") from None
+    return loads_world(text, str(path))
+
+
+def save_world(world: World, path: str | Path) -> None:
+    Path(path).write_text(dumps_world(world), encoding="utf-8")
