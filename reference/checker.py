@@ -78,8 +78,9 @@ class Checker:
         anchor = lighthouse_anchor(S, self.world)
         self._ok(n, None if anchor is not None else Violation(
             "I-1", "v0", "one directional marker in S and in the world", "none or several"))
-        self._ok(n, check_I1(S, self.world, anchor))
-        phi = correspondence(S, self.world, anchor).witness
+        result = correspondence(S, self.world, anchor)
+        self._ok(n, check_I1(S, self.world, anchor, result))
+        phi = result.witness
         self._ok(n, check_I2(S, self.world, phi))
         believed = phi.image(S, explorer.position)
         self._ok(n, None if believed == self.sim.state else Violation(

@@ -144,23 +144,47 @@ class LighthouseExplorer:
             v, entry = self.S.arc((v, exit_))
         self.position = (v, entry)
 
-    def hypotheses(self, it: Iteration, sig: Signature, toward: dict[int, int]) -> list[Hypothesis]:
-        """H: unexplored darts (v_k' ≠ v_k) whose known end shows v_u's signature, with M and P^E (lines 8, 11-12)."""
+    def hypotheses(self, it: Iteration, sig: Signature) -> list[Hypothesis]:
+        """H: unexplored darts (v_k' ≠ v_k) whose known end shows v_u's signature, with M and P^E (lines 8, 11-12).
+
+        One tree to v0 per iteration serves every hypothesis: the path from
+        v_k' is its first motion (which depends on e') followed by the tree
+        path from v_k''s parent, computed once per vertex.
+        """
         found, lengths = [], []
+        toward: dict[int, int] | None = None
+        tails: dict[int, tuple] = {}
         for dart in self.S.unexplored:
             v, i = dart
-            if v == it.edge[0] or signature_at(self.S, v, i) != sig:
+            if v == it.edge[0] or self.S.degree(v) != sig.degree or signature_at(self.S, v, i) != sig:
                 continue
-            motions, expected = [], []
-            entry = i
-            while v != V0:
-                exit_ = toward[v]
-                motions.append((exit_ - entry) % self.S.degree(v))
-                v, entry = self.S.arc((v, exit_))
-                expected.append(signature_at(self.S, v, entry))
-            found.append(Hypothesis(dart, tuple(motions), tuple(expected), (v, entry)))
-            lengths.append(len(motions))
+            if toward is None:
+                toward = tree_to_v0(self.S, self.policies)
+            motions, expected, arrival = self._tail(v, toward, tails)
+            first = (toward[v] - i) % self.S.degree(v)
+            found.append(Hypothesis(dart, (first,) + motions, expected, arrival))
+            lengths.append(len(motions) + 1)
         return self.policies.order_hypotheses(found, lengths)
+
+    def _tail(self, v: int, toward: dict[int, int], tails: dict[int, tuple]) -> tuple:
+        """Motions and expected signatures after leaving ``v`` toward v0, and the arrival dart at v0."""
+        if v in tails:
+            return tails[v]
+        path = []
+        x = v
+        while x != V0 and x not in tails:
+            y, entry = self.S.arc((x, toward[x]))
+            path.append((x, y, entry))
+            x = y
+        motions, expected, arrival = ((), (), None) if x == V0 else tails[x]
+        for x, y, entry in reversed(path):
+            if y == V0:
+                motions, expected, arrival = (), (signature_at(self.S, y, entry),), (y, entry)
+            else:
+                motions = ((toward[y] - entry) % self.S.degree(y),) + motions
+                expected = (signature_at(self.S, y, entry),) + expected
+            tails[x] = (motions, expected, arrival)
+        return tails[v]
 
     def validate(self, it: Iteration, sig: Signature) -> tuple[Hypothesis | None, int]:
         """Test hypotheses in turn (lines 9-20).
@@ -168,7 +192,7 @@ class LighthouseExplorer:
         Returns the confirmed hypothesis (the robot is then at v0), or None and
         the robot's heading at v_u: its entry edge counted from e.
         """
-        it.hypotheses = self.hypotheses(it, sig, tree_to_v0(self.S, self.policies))
+        it.hypotheses = self.hypotheses(it, sig)
         heading = 0  # the physical entry edge, counted from e (e = exit 0 of v_u)
         for h in it.hypotheses:
             done, degrees, perceived = [], [sig.degree], []

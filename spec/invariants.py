@@ -59,11 +59,11 @@ def correspondence(S: PartialMap, world: World, anchor: Anchor) -> IsoResult:
     return anchored(S, world, anchor[0], anchor[1], markers=True, partial=True)
 
 
-def check_I1(S: PartialMap, world: World, anchor: Anchor) -> Violation | None:
-    """I-1: S is (extended-)isomorphic to G_s under the φ that ``anchor`` fixes."""
+def check_I1(S: PartialMap, world: World, anchor: Anchor, phi: IsoResult | None = None) -> Violation | None:
+    """I-1: S is (extended-)isomorphic to G_s under the φ that ``anchor`` fixes (``phi``: that φ, if computed)."""
     if S.n == 0:
         return Violation("I-1", "S", "at least the start vertex v0", "an empty map")
-    phi = correspondence(S, world, anchor)
+    phi = phi or correspondence(S, world, anchor)
     if not phi.isomorphic:
         m = phi.mismatch
         return Violation("I-1", m.where, m.expected, m.found, m.detail or "S is not isomorphic to G_s")
@@ -74,9 +74,14 @@ def check_I1(S: PartialMap, world: World, anchor: Anchor) -> Violation | None:
     return None
 
 
-def explored_world_darts(S: PartialMap, world: World, phi: Witness) -> set[Dart]:
+def explored_world_darts(S: PartialMap, phi: Witness) -> set[Dart]:
     """φ(E_S) as world darts (both directions of each explored edge)."""
-    return {phi.image(S, d) for d in S.darts() if S.arc(d) is not None}
+    f, r = phi.vertex_map, phi.offsets
+    out = set()
+    for v in S.vertices:
+        d, fv, rv = S.degree(v), f[v], r[v]
+        out.update((fv, (i + rv) % d) for i in range(d) if S.arc((v, i)) is not None)
+    return out
 
 
 def check_I2(S: PartialMap, world: World, phi: Witness) -> Violation | None:
@@ -94,7 +99,7 @@ def check_I2(S: PartialMap, world: World, phi: Witness) -> Violation | None:
             return Violation("I-2", f"U entry {dart}", "a dart of S", "no such vertex or exit")
         if k > 1:
             return Violation("I-2", f"U entry {dart}", "listed once", f"listed {k} times")
-    explored = explored_world_darts(S, world, phi)
+    explored = explored_world_darts(S, phi)
     gs = set(phi.vertex_map.values())
     expected = {(x, i) for x in gs for i in range(world.degree(x))} - explored
     images: dict[Dart, MapDart] = {}
@@ -115,7 +120,8 @@ def check_I2(S: PartialMap, world: World, phi: Witness) -> Violation | None:
 
 def check_invariants(S: PartialMap, world: World, anchor: Anchor) -> Violation | None:
     """I-1 then I-2; the first violation found, or None."""
-    v = check_I1(S, world, anchor)
+    phi = correspondence(S, world, anchor)
+    v = check_I1(S, world, anchor, phi)
     if v is not None:
         return v
-    return check_I2(S, world, correspondence(S, world, anchor).witness)
+    return check_I2(S, world, phi.witness)

@@ -116,44 +116,48 @@ def anchored(a, b, a_dart, b_dart, markers: bool = True, partial: bool = False) 
     def fail(violation: Violation) -> IsoResult:
         return IsoResult(False, mismatch=violation, mapped=len(f))
 
+    a_arc, b_arc, a_deg, b_deg = a.arc, b.arc, a.degree, b.degree
     while todo:
         v = todo.popleft()
-        fv, d = f[v], a.degree(v)
-        if markers:
+        fv, d = f[v], a_deg(v)
+        if markers and (a.vertex_mark(v) or a.dart_marks(v) or b.vertex_mark(fv) or b.dart_marks(fv)):
             ma, mb = _marks_at(a, v, r[v]), _marks_at(b, fv, 0)
             if ma != mb:
                 return fail(_mismatch(f"vertex {v!r} (image {fv!r})", _describe_marks(ma), _describe_marks(mb),
                                       "markers are not preserved"))
+        rv = r[v]
         for i in range(d):
-            t = a.arc((v, i))
+            t = a_arc((v, i))
             if t is None:
                 if partial:
                     continue
                 return fail(_mismatch(f"vertex {v!r} exit {i}", "an explored edge", "an unexplored dart"))
             w, j = t
-            k = (i + r[v]) % d
-            bw, bj = b.arc((fv, k))
-            if w in f:
-                if f[w] != bw:
+            k = (i + rv) % d
+            bw, bj = b_arc((fv, k))
+            fw = f.get(w)
+            if fw is not None:
+                if fw != bw:
                     return fail(_mismatch(
                         f"vertex {v!r} exit {i}",
                         f"the edge to {w!r}, i.e. to {f[w]!r} through exit {k} of {fv!r}",
                         f"exit {k} of {fv!r} leads to {bw!r}"))
-                if (j + r[w]) % a.degree(w) != bj:
+                if (j + r[w]) % a_deg(w) != bj:
                     return fail(_mismatch(
                         f"edge {v!r}-{w!r} at {w!r}",
-                        f"exit {(j + r[w]) % a.degree(w)} of {bw!r} (from exit {j} of {w!r})",
+                        f"exit {(j + r[w]) % a_deg(w)} of {bw!r} (from exit {j} of {w!r})",
                         f"exit {bj} of {bw!r}", "the edge's index at its far end is not preserved"))
                 continue
             if bw in inv:
                 return fail(_mismatch(
                     f"vertex {v!r} exit {i}", f"a vertex not yet matched (it leads to {w!r})",
                     f"{bw!r}, already the image of {inv[bw]!r}", "two vertices would map to one"))
-            if a.degree(w) != b.degree(bw):
+            dw = a_deg(w)
+            if dw != b_deg(bw):
                 return fail(_mismatch(
-                    f"vertex {v!r} exit {i}", f"a vertex of degree {a.degree(w)} (like {w!r})",
-                    f"{bw!r} of degree {b.degree(bw)}"))
-            f[w], inv[bw], r[w] = bw, w, (bj - j) % a.degree(w)
+                    f"vertex {v!r} exit {i}", f"a vertex of degree {dw} (like {w!r})",
+                    f"{bw!r} of degree {b_deg(bw)}"))
+            f[w], inv[bw], r[w] = bw, w, (bj - j) % dw
             todo.append(w)
     if not partial:
         if len(f) != len(b.vertices):
@@ -181,7 +185,8 @@ def _summary(g, markers: bool) -> dict[str, Any]:
     }
     if markers:
         out["marked vertices"] = sorted(Counter(
-            (c[1], c[0]) for v in g.vertices if (c := local_class(g, v))[1] is not None or c[2]).items())
+            (c[1], c[0], c[2]) for v in g.vertices if (c := local_class(g, v))[1] is not None or c[2]).items(),
+            key=repr)
     return out
 
 

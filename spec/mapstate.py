@@ -42,7 +42,7 @@ class PartialMap:
     def __init__(self) -> None:
         self._adj: list[list[MapDart | None]] = []
         self._vmarks: dict[int, VertexMark] = {}
-        self._dmarks: dict[int, list[DartMark]] = {}
+        self._dmarks: dict[int, tuple[DartMark, ...]] = {}
         self.unexplored: list[MapDart] = []
 
     # -- building ------------------------------------------------------------
@@ -64,8 +64,7 @@ class PartialMap:
         self._vmarks[v] = VertexMark(count, head)
 
     def mark_dart(self, v: int, mark: DartMark) -> None:
-        self._dmarks.setdefault(v, []).append(mark)
-        self._dmarks[v].sort(key=lambda d: d.exit)
+        self._dmarks[v] = tuple(sorted(self._dmarks.get(v, ()) + (mark,), key=lambda d: d.exit))
 
     # -- queries (the same protocol as World, so signature_at works on both) --
     @property
@@ -79,17 +78,19 @@ class PartialMap:
     def degree(self, v: int) -> int:
         return len(self._adj[v])
 
+    def arc(self, dart: MapDart) -> MapDart | None:
+        """The reverse dart ``dart`` is joined to, or None if unexplored (same name as World.arc)."""
+        return self._adj[dart[0]][dart[1]]
+
     def neighbour(self, dart: MapDart) -> MapDart | None:
         """The reverse dart that ``dart`` is joined to, or None if unexplored."""
         return self._adj[dart[0]][dart[1]]
-
-    arc = neighbour  # the name shared with World.arc
 
     def vertex_mark(self, v: int) -> VertexMark | None:
         return self._vmarks.get(v)
 
     def dart_marks(self, v: int) -> tuple[DartMark, ...]:
-        return tuple(self._dmarks.get(v, ()))
+        return self._dmarks.get(v, ())
 
     def darts(self) -> Iterator[MapDart]:
         for v, row in enumerate(self._adj):
@@ -110,7 +111,7 @@ class PartialMap:
         other = PartialMap()
         other._adj = [list(row) for row in self._adj]
         other._vmarks = dict(self._vmarks)
-        other._dmarks = {v: list(ms) for v, ms in self._dmarks.items()}
+        other._dmarks = dict(self._dmarks)
         other.unexplored = list(self.unexplored)
         return other
 

@@ -121,10 +121,24 @@ def signature_at(g: Marked, v, entry: int) -> Signature:
     """
     d = g.degree(v)
     mark = g.vertex_mark(v)
+    marks = g.dart_marks(v)
+    if mark is None and not marks:
+        return _plain(d)
     count, direction = 0, None
     if mark is not None:
         count = mark.count
         if mark.head is not None:
             direction = (mark.head - entry) % d
-    edges = tuple(sorted(((dm.exit - entry) % d, dm.count, dm.end) for dm in g.dart_marks(v)))
+    edges = tuple(sorted(((dm.exit - entry) % d, dm.count, dm.end) for dm in marks))
     return Signature(d, count, direction, edges)
+
+
+_PLAIN: dict[int, Signature] = {}
+
+
+def _plain(d: int) -> Signature:
+    """The signature ``[d,A,A]`` of an unmarked vertex, shared (signatures are immutable)."""
+    sig = _PLAIN.get(d)
+    if sig is None:
+        sig = _PLAIN[d] = Signature(d)
+    return sig

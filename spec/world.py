@@ -93,11 +93,10 @@ class World:
         self._index = {v: {w: i for i, w in enumerate(ns)} for v, ns in self.rotation.items()}
         self._check_connected()
         self._vmarks: dict[str, VertexMark] = {}
-        self._dmarks: dict[str, list[DartMark]] = {}
+        self._dmarks: dict = {}
         for marker in self.markers:
             self._add_marker(marker)
-        for marks in self._dmarks.values():
-            marks.sort(key=lambda d: d.exit)
+        self._dmarks = {v: tuple(sorted(ms, key=lambda d: d.exit)) for v, ms in self._dmarks.items()}
         self._check_start()
 
     # -- validation (§3.1.1) -------------------------------------------------
@@ -166,7 +165,7 @@ class World:
             if any(d.exit == self._index[a][b] for d in self._dmarks.get(a, ())):
                 _fail(f"two marker entries on edge ({u!r}, {v!r}) (use one entry with a count)")
             end = None if marker.head is None else ("H" if marker.head == a else "T")
-            self._dmarks.setdefault(a, []).append(DartMark(self._index[a][b], marker.count, end))
+            self._dmarks.setdefault(a, []).append(DartMark(self._index[a][b], marker.count, end))  # tuples later
 
     def _check_start(self) -> None:
         s = self.start
@@ -226,7 +225,7 @@ class World:
         return self._vmarks.get(v)
 
     def dart_marks(self, v: str) -> tuple[DartMark, ...]:
-        return tuple(self._dmarks.get(v, ()))
+        return self._dmarks.get(v, ())
 
     def start_state(self) -> tuple[str, int]:
         """The robot state (vertex, entry index) of ``start``; the first vertex facing exit 0 if none."""

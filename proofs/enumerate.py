@@ -1,0 +1,229 @@
+"""Every small embedded world, once up to extended isomorphism (thesis §3.1.1, §3.1.3).
+
+The sufficiency questions of §3.2, §3.7 and §6.1 range over all worlds: all
+connected simple graphs, each with every rotation system (clockwise order of
+the edges at each vertex).  Two worlds count as the same when they are
+extended-isomorphic (§3.1.3: a vertex bijection plus, at each vertex, a cyclic
+relabelling of its exits; mirror images differ).
+
+* :func:`connected_graphs` lists connected simple graphs up to graph
+  isomorphism: networkx's graph atlas (every graph on ≤ 7 vertices) and, for 8
+  vertices, one-vertex extensions of the 7-vertex graphs deduplicated by
+  isomorphism (every connected graph has a vertex whose removal leaves it
+  connected).
+* :func:`embedded_worlds` gives, per graph, one rotation system of every orbit
+  of the graph's automorphism group acting on its ``∏ (deg v - 1)!`` rotation
+  systems — exactly the extended-isomorphism classes on that graph, since
+  worlds on non-isomorphic graphs are never extended-isomorphic.
+* :func:`canonical_form` is an independent canonical code of a world with its
+  markers (and start, if any): the least code over admissible anchor darts of
+  a breadth-first relabelling that starts at the anchor (the standard
+  canonical form of connected maps, O(m) per anchor).  Two worlds have equal
+  codes iff they are extended-isomorphic preserving markers (and start).
+
+Examples
+--------
+>>> [sum(1 for w in embedded_worlds(n, 3, min_vertices=n)) for n in (2, 3, 4)]
+[1, 2, 8]
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections import Counter, deque
+from typing import Iterator
+
+import networkx as nx
+from networkx.algorithms.isomorphism import GraphMatcher
+
+from topomark.spec.errors import InvalidInput
+from topomark.spec.world import World
+
+__all__ = ["connected_graphs", "rotation_systems", "embedded_worlds", "canonical_form", "count_by_size",
+           "ATLAS_MAX_VERTICES", "MAX_VERTICES"]
+
+ATLAS_MAX_VERTICES = 7
+MAX_VERTICES = 8
+_END = {None: 0, "H": 1, "T": 2}
+
+
+# -- graphs up to isomorphism ---------------------------------------------------
+def _atlas(n: int, max_degree: int) -> list[nx.Graph]:
+    return [g for g in nx.graph_atlas_g()
+            if g.number_of_nodes() == n and nx.is_connected(g)
+            and max(d for _, d in g.degree()) <= max_degree]
+
+
+def _extend(smaller: list[nx.Graph], max_degree: int) -> list[nx.Graph]:
+    """Connected graphs one vertex larger, up to isomorphism, from all connected smaller ones."""
+    buckets: dict[str, list[nx.Graph]] = {}
+    out: list[nx.Graph] = []
+    for g in smaller:
+        n = g.number_of_nodes()
+        free = [v for v in sorted(g) if g.degree(v) < max_degree]
+        for k in range(1, min(max_degree, len(free)) + 1):
+            for nbrs in itertools.combinations(free, k):
+                h = g.copy()
+                h.add_edges_from((n, v) for v in nbrs)
+                key = nx.weisfeiler_lehman_graph_hash(h, iterations=3)
+                bucket = buckets.setdefault(key, [])
+                if not any(nx.is_isomorphic(h, other) for other in bucket):
+                    bucket.append(h)
+                    out.append(h)
+    return out
+
+
+def connected_graphs(n: int, max_degree: int) -> list[nx.Graph]:
+    """Connected simple graphs on ``n`` vertices (labelled 0..n-1) with max degree ≤ ``max_degree``."""
+    if not 1 <= n <= MAX_VERTICES:
+        raise InvalidInput(f"graphs are enumerated for 1..{MAX_VERTICES} vertices, not {n}")
+    if n <= ATLAS_MAX_VERTICES:
+        return _atlas(n, max_degree)
+    return _extend(connected_graphs(n - 1, max_degree), max_degree)
+
+
+# -- rotation systems up to automorphism ------------------------------------------
+def _normal(cycle: list[int]) -> tuple[int, ...]:
+    """A cyclic order written from its least element."""
+    k = cycle.index(min(cycle))
+    return tuple(cycle[k:] + cycle[:k])
+
+
+def rotation_systems(g: nx.Graph) -> Iterator[tuple[tuple[int, ...], ...]]:
+    """Every rotation system of ``g`` (vertices 0..n-1), each cyclic order written from its least neighbour."""
+    choices = []
+    for v in range(g.number_of_nodes()):
+        first, *rest = sorted(g[v])
+        choices.append([(first, *perm) for perm in itertools.permutations(rest)])
+    return itertools.product(*choices)
+
+
+def _automorphisms(g: nx.Graph) -> list[dict[int, int]]:
+    return list(GraphMatcher(g, g).isomorphisms_iter())
+
+
+def _image(rot: tuple[tuple[int, ...], ...], sigma: dict[int, int]) -> tuple[tuple[int, ...], ...]:
+    out: list[tuple[int, ...]] = [()] * len(rot)
+    for v, ns in enumerate(rot):
+        out[sigma[v]] = _normal([sigma[w] for w in ns])
+    return tuple(out)
+
+
+def _orbit_representatives(g: nx.Graph) -> Iterator[tuple[tuple[int, ...], ...]]:
+    """The first rotation system (in product order) of every Aut(g)-orbit."""
+    autos = _automorphisms(g)
+    seen: set[tuple[tuple[int, ...], ...]] = set()
+    for rot in rotation_systems(g):
+        if rot in seen:
+            continue
+        orbit = {_image(rot, sigma) for sigma in autos}
+        seen |= orbit
+        yield rot
+
+
+def _world(rot: tuple[tuple[int, ...], ...]) -> World:
+    return World({f"v{v}": [f"v{w}" for w in ns] for v, ns in enumerate(rot)})
+
+
+def embedded_worlds(max_vertices: int, max_degree: int, min_vertices: int = 2) -> Iterator[World]:
+    """Every connected world with ``min_vertices ≤ n ≤ max_vertices`` and degrees ≤ ``max_degree``.
+
+    One world per extended-isomorphism class, vertices named ``v0, v1, ...``,
+    in a fixed order (by n, then graph, then rotation system), without markers
+    or start.
+    """
+    if max_vertices > MAX_VERTICES:
+        raise InvalidInput(f"worlds are enumerated up to {MAX_VERTICES} vertices, not {max_vertices}")
+    if max_degree < 1:
+        raise InvalidInput(f"max degree must be at least 1, not {max_degree}")
+    for n in range(max(min_vertices, 2), max_vertices + 1):
+        for g in connected_graphs(n, max_degree):
+            for rot in _orbit_representatives(g):
+                yield _world(rot)
+
+
+def count_by_size(max_vertices: int, max_degree: int, min_vertices: int = 2) -> dict[int, int]:
+    """How many embedded worlds there are with n vertices, for each n."""
+    counts = Counter(w.n for w in embedded_worlds(max_vertices, max_degree, min_vertices))
+    return {n: counts.get(n, 0) for n in range(max(min_vertices, 2), max_vertices + 1)}
+
+
+# -- canonical form ---------------------------------------------------------------
+def _vertex_key(world: World, v: str, markers: bool) -> tuple[int, ...]:
+    """An extended-isomorphism invariant of a vertex (ints only)."""
+    key = [world.degree(v)]
+    if markers:
+        vm = world.vertex_mark(v)
+        key += [0, 0] if vm is None else [vm.count, int(vm.head is not None)]
+        key += sorted(dm.count * 3 + _END[dm.end] for dm in world.dart_marks(v))
+    key += sorted(world.degree(w) for w in world.rotation[v])
+    return tuple(key)
+
+
+def _dart_key(world: World, dart: tuple[str, int], markers: bool) -> tuple[int, ...]:
+    v, i = dart
+    extra = (0, 0)
+    if markers:
+        vm = world.vertex_mark(v)
+        dm = next((d for d in world.dart_marks(v) if d.exit == i), None)
+        extra = (int(vm is not None and vm.head == i), 0 if dm is None else dm.count * 3 + _END[dm.end])
+    return _vertex_key(world, v, markers) + extra
+
+
+def _anchors(world: World, markers: bool) -> list[tuple[str, int]]:
+    """The darts the canonical form is minimised over: the rarest dart class (isomorphism invariant)."""
+    if world.start is not None:
+        return [world.start_state()]
+    classes: dict[tuple[int, ...], list[tuple[str, int]]] = {}
+    for dart in world.darts():
+        classes.setdefault(_dart_key(world, dart, markers), []).append(dart)
+    best = min(classes, key=lambda k: (len(classes[k]), k))
+    return classes[best]
+
+
+def _marks_code(world: World, v: str, offset: int) -> tuple[int, ...]:
+    d = world.degree(v)
+    vm = world.vertex_mark(v)
+    code = [0, -1] if vm is None else [vm.count, -1 if vm.head is None else (vm.head - offset) % d]
+    marks = sorted(((dm.exit - offset) % d, dm.count, _END[dm.end]) for dm in world.dart_marks(v))
+    code.append(len(marks))
+    for mark in marks:
+        code.extend(mark)
+    return tuple(code)
+
+
+def _code_from(world: World, anchor: tuple[str, int], markers: bool) -> tuple[int, ...]:
+    """Breadth-first relabelling from ``anchor``: vertex labels by discovery, exit 0 = discovery edge."""
+    v0, i0 = anchor
+    label = {v0: 0}
+    offset = {v0: i0}
+    order = [v0]
+    code: list[int] = [world.n]
+    todo = deque([v0])
+    while todo:
+        v = todo.popleft()
+        d = world.degree(v)
+        code.append(d)
+        for k in range(d):
+            w, j = world.target((v, (offset[v] + k) % d))
+            if w not in label:
+                label[w] = len(order)
+                offset[w] = j
+                order.append(w)
+                todo.append(w)
+            code.append(label[w])
+        if markers:
+            code.extend(_marks_code(world, v, offset[v]))
+    return tuple(code)
+
+
+def canonical_form(world: World, markers: bool = True) -> tuple[int, ...]:
+    """A code (tuple of ints) equal for two worlds iff they are extended-isomorphic (§3.1.3).
+
+    With ``markers=True`` markers are part of the code, so isomorphisms must
+    preserve them.  If ``world`` has a start, the code is anchored at the
+    start dart only, so isomorphisms must also map start to start; drop the
+    start (``world.with_start(None)``) to compare placements as marked worlds.
+    """
+    flag = 1 if world.start is not None else 0
+    return (flag,) + min(_code_from(world, a, markers) for a in _anchors(world, markers))
