@@ -24,7 +24,7 @@ relabelling of its exits; mirror images differ).
 Examples
 --------
 >>> [sum(1 for w in embedded_worlds(n, 3, min_vertices=n)) for n in (2, 3, 4)]
-[1, 2, 8]
+[1, 2, 9]
 """
 
 from __future__ import annotations

@@ -85,7 +85,8 @@ def prepare_world(world: World) -> tuple[World, tuple[str, int]]:
 
 
 def explore(world: World, algorithm: str = "basic", policies: Policies | None = None, check: bool = True,
-            record: bool = True, progress: Callable[[int, int], None] | None = None) -> Outcome:
+            record: bool = True, progress: Callable[[int, int], None] | None = None,
+            check_mode: str = "incremental") -> Outcome:
     """Explore ``world`` and return the outcome; a violated check ends the run with ``outcome.violation`` set."""
     if algorithm not in ALGORITHMS:
         raise InvalidInput(f"unknown algorithm {algorithm!r} (choose from {', '.join(ALGORITHMS)})")
@@ -102,7 +103,9 @@ def explore(world: World, algorithm: str = "basic", policies: Policies | None = 
                           "purpose": purpose})
 
     sim = Simulator(bare, state, {"directional-vertex": 1}, listener=on_move)
-    checker = Checker(sim) if check else None
+    if check_mode not in Checker.MODES:
+        raise InvalidInput(f"unknown check mode {check_mode!r} (choose from {', '.join(Checker.MODES)})")
+    checker = Checker(sim, check_mode) if check else None
 
     def observer(explorer, it):
         if record:

@@ -111,9 +111,10 @@ class LighthouseExplorer:
 
     # -- lines 5-28 ------------------------------------------------------------
     def iterate(self) -> Iteration:
-        it = Iteration(len(self.iterations) + 1, self.policies.choose_edge(self.S, self.position[0]))
+        _, _, parent = tree = bfs(self.S, self.position[0])
+        it = Iteration(len(self.iterations) + 1, self.policies.choose_edge(self.S, tree[0]))
         vk, i = it.edge
-        self.travel_to(vk)
+        self.travel_to(vk, parent)
         sig = self.robot.move((i - self.position[1]) % self.S.degree(vk), "new")
         it.signature = sig
         mark = self.S.vertex_mark(V0)
@@ -132,16 +133,17 @@ class LighthouseExplorer:
             self.observer(self, it)
         return it
 
-    def travel_to(self, target: int) -> None:
-        """Walk S from the believed position to ``target`` along a shortest path (line 6)."""
+    def travel_to(self, target: int, parent: dict[int, MapDart]) -> None:
+        """Walk S from the believed position to ``target`` along the BFS tree ``parent`` rooted there (line 6)."""
+        path = []
+        x = target
+        while x != self.position[0]:
+            path.append(parent[x])
+            x = parent[x][0]
         v, entry = self.position
-        if v == target:
-            return
-        toward = bfs(self.S, target)[1]
-        while v != target:
-            exit_ = toward[v]
+        for u, exit_ in reversed(path):
             self.robot.move((exit_ - entry) % self.S.degree(v), "travel")
-            v, entry = self.S.arc((v, exit_))
+            v, entry = self.S.arc((u, exit_))
         self.position = (v, entry)
 
     def hypotheses(self, it: Iteration, sig: Signature) -> list[Hypothesis]:

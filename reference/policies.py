@@ -40,15 +40,14 @@ class Policies:
     def to_json(self) -> dict[str, str]:
         return {"edge": self.edge, "hypothesis": self.hypothesis, "path": self.path}
 
-    def choose_edge(self, S: PartialMap, here: int) -> MapDart:
-        """Remove and return the next e from U."""
+    def choose_edge(self, S: PartialMap, dist: dict[int, int]) -> MapDart:
+        """Remove and return the next e from U; ``dist`` holds distances in S from the robot."""
         U = S.unexplored
         if self.edge == "fifo":
             k = 0
         elif self.edge == "lifo":
             k = len(U) - 1
         else:
-            dist = bfs(S, here)[0]
             k = min(range(len(U)), key=lambda x: (dist[U[x][0]], x))
         return U.pop(k)
 
@@ -61,19 +60,25 @@ class Policies:
         return list(hypotheses)
 
 
-def bfs(S: PartialMap, root: int) -> tuple[dict[int, int], dict[int, int]]:
-    """Breadth-first over S's explored edges: (distance, exit toward the root) per reached vertex."""
-    dist, toward = {root: 0}, {}
+def bfs(S: PartialMap, root: int) -> tuple[dict[int, int], dict[int, int], dict[int, MapDart]]:
+    """Breadth-first over S's explored edges, exits scanned in index order.
+
+    Returns per reached vertex its distance from ``root``, the exit that leads
+    one step toward ``root``, and the parent dart (parent, exit) it was reached by.
+    """
+    dist, toward, parent = {root: 0}, {}, {}
     todo = deque([root])
+    arc = S.arc
     while todo:
         v = todo.popleft()
         for i in range(S.degree(v)):
-            t = S.arc((v, i))
+            t = arc((v, i))
             if t is not None and t[0] not in dist:
                 dist[t[0]] = dist[v] + 1
                 toward[t[0]] = t[1]
+                parent[t[0]] = (v, i)
                 todo.append(t[0])
-    return dist, toward
+    return dist, toward, parent
 
 
 def _dfs(S: PartialMap, root: int) -> dict[int, int]:

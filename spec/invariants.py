@@ -39,7 +39,7 @@ from .mapstate import MapDart, PartialMap
 from .world import Dart, World
 
 __all__ = ["Anchor", "correspondence", "check_I1", "check_I2", "check_invariants", "lighthouse_anchor",
-           "explored_world_darts"]
+           "explored_world_darts", "IncrementalInvariants"]
 
 Anchor = tuple[MapDart, Dart]
 
@@ -125,3 +125,125 @@ def check_invariants(S: PartialMap, world: World, anchor: Anchor) -> Violation |
     if v is not None:
         return v
     return check_I2(S, world, phi.witness)
+
+
+class IncrementalInvariants:
+    """I-1 and I-2 checked per change of S, for long runs (§3.4).
+
+    Algorithm 3.1 only ever *adds* to S — a vertex with its degree, an edge,
+    a mark — and :class:`~topomark.spec.mapstate.PartialMap` journals each
+    addition.  Given that S before the change satisfied I-1 under φ, S after
+    it does iff every journalled edge is consistent with φ: a loop edge joins
+    the two map darts whose images are the two ends of one world edge, and a
+    non-loop edge maps its new vertex to the far end of that world edge, a
+    world vertex not yet in G_s, with the same degree and marks.  I-2 is then
+    a comparison of U's images with the maintained set of unexplored world
+    darts leaving G_s.  Each update costs O(change + |U|) instead of O(n + m).
+
+    Equivalence with :func:`check_I1`/:func:`check_I2` on append-only maps is
+    tested on every explorer run in ``tests/test_checker.py``; the final
+    verdict of a run always uses the full predicates.
+    """
+
+    def __init__(self, S: PartialMap, world: World, anchor: Anchor):
+        self.world = world
+        (v0, i0), (x0, k0) = anchor
+        self.f: dict[int, str] = {}
+        self.r: dict[int, int] = {}
+        self.inv: dict[str, int] = {}
+        self.open: set[Dart] = set()
+        self.degrees: dict[int, int] = {}
+        self.pos = 0
+        self._anchor = (v0, x0, (k0 - i0))
+        self.S = S
+
+    def _map_vertex(self, v: int, x: str, r: int) -> Violation | None:
+        d = self.degrees.get(v)
+        if x in self.inv:
+            return Violation("I-1", f"map vertex {v}", f"a place not yet in G_s (it is world vertex {x!r})",
+                             f"{x!r}, already map vertex {self.inv[x]}", "two map vertices for one place")
+        if d != self.world.degree(x):
+            return Violation("I-1", f"map vertex {v}", f"degree {self.world.degree(x)} (world vertex {x!r})",
+                             f"degree {d}")
+        self.f[v], self.r[v], self.inv[x] = x, r % d, v
+        self.open.update((x, k) for k in range(d))
+        return self._marks(v)
+
+    def _marks(self, v: int) -> Violation | None:
+        from .isomorphism import _describe_marks, _marks_at
+        x = self.f[v]
+        ma, mb = _marks_at(self.S, v, self.r[v]), _marks_at(self.world, x, 0)
+        if ma != mb:
+            return Violation("I-1", f"map vertex {v} (world {x!r})", _describe_marks(mb), _describe_marks(ma),
+                             "markers are not preserved")
+        return None
+
+    def image(self, dart: MapDart) -> Dart:
+        v, i = dart
+        return (self.f[v], (i + self.r[v]) % self.degrees[v])
+
+    def _edge(self, a: MapDart, b: MapDart) -> Violation | None:
+        if a[0] not in self.f:
+            a, b = b, a
+        if a[0] not in self.f:
+            return Violation("I-1", f"map edge {a}-{b}", "an edge touching the explored map", "a detached edge",
+                             "S must be connected")
+        x, k = self.image(a)
+        y, j = self.world.target((x, k))
+        if b[0] not in self.f:
+            bad = self._map_vertex(b[0], y, j - b[1])
+            if bad is not None:
+                return bad
+        elif self.image(b) != (y, j):
+            return Violation("I-1", f"map edge {a}-{b}",
+                             f"world edge {x!r}-{y!r}: map dart {b} should be world dart {(y, j)}",
+                             f"map dart {b} is world dart {self.image(b)}", "the edge is indexed or placed wrongly")
+        self.open.discard((x, k))
+        self.open.discard((y, j))
+        return None
+
+    def update(self) -> Violation | None:
+        """Consume the journal since the last update; the first I-1 or I-2 violation, or None."""
+        S, journal = self.S, self.S.journal
+        for op in journal[self.pos:]:
+            self.pos += 1
+            bad = None
+            if op[0] == "vertex":
+                self.degrees[op[1]] = op[2]
+                if op[1] == self._anchor[0] and not self.f:
+                    bad = self._map_vertex(op[1], self._anchor[1], self._anchor[2])
+            elif op[0] == "edge":
+                bad = self._edge(op[1], op[2])
+            elif op[1] in self.f:
+                bad = self._marks(op[1])
+            if bad is not None:
+                return bad
+        if len(self.f) != S.n:
+            lost = next(v for v in S.vertices if v not in self.f)
+            return Violation("I-1", f"map vertex {lost}", "connected to v0 through explored edges", "not connected")
+        return self._check_u()
+
+    def _check_u(self) -> Violation | None:
+        seen: dict[Dart, MapDart] = {}
+        for dart in self.S.unexplored:
+            v, i = dart
+            if not (0 <= v < self.S.n and 0 <= i < self.S.degree(v)):
+                return Violation("I-2", f"U entry {dart}", "a dart of S", "no such vertex or exit")
+            img = self.image(dart)
+            if img in seen:
+                return Violation("I-2", f"U entry {dart}", "listed once", "listed 2 times")
+            if img not in self.open:
+                w = self.world.neighbour(*img)
+                return Violation("I-2", f"U entry {dart}", "an unexplored edge",
+                                 f"world dart {img} (edge {img[0]!r}-{w!r}) is already explored in S",
+                                 "an explored edge was left in U")
+            seen[img] = dart
+        if len(seen) != len(self.open):
+            dart = min(self.open - set(seen), key=str)
+            w = self.world.neighbour(*dart)
+            return Violation("I-2", f"world dart {dart}",
+                             f"an entry in U (the edge {dart[0]!r}-{w!r} is unexplored)", "none")
+        return None
+
+    def phi(self) -> Witness:
+        return Witness(dict(self.f), dict(self.r))

@@ -169,8 +169,13 @@ def anchored(a, b, a_dart, b_dart, markers: bool = True, partial: bool = False) 
     return IsoResult(True, Witness(f, r), mapped=len(f))
 
 
-def local_class(g, v) -> Hashable:
-    """What any extended isomorphism preserves at a single vertex (degree and marks, rotation-free)."""
+def local_class(g, v, markers: bool = True) -> Hashable:
+    """What any extended isomorphism preserves at a single vertex (degree and marks, rotation-free).
+
+    With ``markers=False`` only the degree: marks are then not part of the isomorphism.
+    """
+    if not markers:
+        return (g.degree(v), None, ())
     vm = g.vertex_mark(v)
     vpart = None if vm is None else (vm.count, vm.head is not None)
     return (g.degree(v), vpart, tuple(sorted((dm.count, dm.end or "") for dm in g.dart_marks(v))))
@@ -203,13 +208,13 @@ def find_isomorphism(a, b, markers: bool = True) -> IsoResult:
                                                        "the worlds differ in an isomorphism invariant"))
     classes_b: dict[Hashable, list] = {}
     for w in b.vertices:
-        classes_b.setdefault(local_class(b, w), []).append(w)
+        classes_b.setdefault(local_class(b, w, markers), []).append(w)
     # Anchor at the vertex of A whose class is rarest in B; prefer a directional head dart.
-    v = min(a.vertices, key=lambda x: len(classes_b.get(local_class(a, x), ())))
+    v = min(a.vertices, key=lambda x: len(classes_b.get(local_class(a, x, markers), ())))
     head = a.vertex_mark(v).head if markers and a.vertex_mark(v) is not None else None
     i = 0 if head is None else head
     best: IsoResult | None = None
-    for w in classes_b.get(local_class(a, v), ()):
+    for w in classes_b.get(local_class(a, v, markers), ()):
         bhead = b.vertex_mark(w).head if head is not None else None
         for j in ([bhead] if bhead is not None else range(b.degree(w))):
             res = anchored(a, b, (v, i), (w, j), markers=markers)

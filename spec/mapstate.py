@@ -41,6 +41,8 @@ class PartialMap:
 
     def __init__(self) -> None:
         self._adj: list[list[MapDart | None]] = []
+        self.journal: list[tuple] = []  # ("vertex", v, degree) | ("edge", a, b) | ("mark", v): S only grows
+        self.edge_count = 0
         self._vmarks: dict[int, VertexMark] = {}
         self._dmarks: dict[int, tuple[DartMark, ...]] = {}
         self.unexplored: list[MapDart] = []
@@ -49,6 +51,7 @@ class PartialMap:
     def add_vertex(self, degree: int) -> int:
         require(degree >= 1, f"a map vertex needs degree >= 1, got {degree}")
         self._adj.append([None] * degree)
+        self.journal.append(("vertex", len(self._adj) - 1, degree))
         return len(self._adj) - 1
 
     def add_edge(self, a: MapDart, b: MapDart) -> None:
@@ -59,12 +62,16 @@ class PartialMap:
             require(self._adj[v][i] is None, f"dart {(v, i)} of the map is already joined")
         self._adj[a[0]][a[1]] = b
         self._adj[b[0]][b[1]] = a
+        self.edge_count += 1
+        self.journal.append(("edge", a, b))
 
     def mark_vertex(self, v: int, count: int = 1, head: int | None = None) -> None:
         self._vmarks[v] = VertexMark(count, head)
+        self.journal.append(("mark", v))
 
     def mark_dart(self, v: int, mark: DartMark) -> None:
         self._dmarks[v] = tuple(sorted(self._dmarks.get(v, ()) + (mark,), key=lambda d: d.exit))
+        self.journal.append(("mark", v))
 
     # -- queries (the same protocol as World, so signature_at works on both) --
     @property
@@ -102,6 +109,7 @@ class PartialMap:
         return [d for d in self.darts() if self.neighbour(d) is None]
 
     def explored_edges(self) -> int:
+        """|E_S|, counted from the darts (``edge_count`` is the journal's running count)."""
         return sum(1 for d in self.darts() if self.neighbour(d) is not None) // 2
 
     def complete(self) -> bool:
@@ -113,6 +121,8 @@ class PartialMap:
         other._vmarks = dict(self._vmarks)
         other._dmarks = dict(self._dmarks)
         other.unexplored = list(self.unexplored)
+        other.journal = list(self.journal)
+        other.edge_count = self.edge_count
         return other
 
     # -- conversion ----------------------------------------------------------

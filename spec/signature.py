@@ -107,6 +107,13 @@ class Signature:
                 if not me:
                     raise InvalidInput(f"signature {text!r}: cannot read edge part {item!r}")
                 edges.append((int(me.group(2)), int(me.group(1) or 1), me.group(3)))
+        if degree < 1:
+            raise InvalidInput(f"signature {text!r}: degree must be >= 1")
+        if direction is not None and direction >= degree:
+            raise InvalidInput(f"signature {text!r}: direction V-{direction} needs an exit < degree {degree}")
+        positions = [e[0] for e in edges]
+        if any(p >= degree for p in positions) or len(set(positions)) != len(positions):
+            raise InvalidInput(f"signature {text!r}: edge markers need distinct exits < degree {degree}")
         sig = cls(degree, count, direction, tuple(sorted(edges, key=lambda e: e[0])))
         if str(sig) != body.replace(" ", ""):
             raise InvalidInput(f"signature {text!r} is not in canonical thesis notation (expected {sig})")

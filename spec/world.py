@@ -269,7 +269,8 @@ class World:
         )
 
     def __hash__(self) -> int:
-        return hash((tuple(self.rotation.items()), frozenset(self.markers), self.start))
+        # order-free, like __eq__ (dict equality ignores insertion order)
+        return hash((frozenset(self.rotation.items()), frozenset(self.markers), self.start))
 
     def __repr__(self) -> str:
         return f"World(n={self.n}, m={self.m}, markers={len(self.markers)}, start={self.start!r})"

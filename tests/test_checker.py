@@ -1,0 +1,97 @@
+"""The checker catches broken explorers, and its incremental and full modes agree (§3.4)."""
+
+from __future__ import annotations
+
+import pytest
+from hypothesis import given, settings
+
+from families import family_worlds
+from topomark.reference import explore as explore_mod
+from topomark.reference import generators as g
+from topomark.reference.explore import explore
+from topomark.reference.lighthouse import LighthouseExplorer
+from topomark.spec.world import Start
+
+
+class KeepsLoopDartInU(LighthouseExplorer):
+    """Forgets to remove e' from U on a loop closure."""
+
+    def loop_augment(self, it, far, by_marker=False):
+        super().loop_augment(it, far, by_marker)
+        self.S.unexplored.append(far)
+
+
+class NoRealign(LighthouseExplorer):
+    """Does not re-align to e after retracing: the heading stays 0."""
+
+    def validate(self, it, sig):
+        confirmed, heading = super().validate(it, sig)
+        return confirmed, 0
+
+
+class TrustsFirstHypothesis(LighthouseExplorer):
+    """Confirms the first hypothesis without validating it."""
+
+    def validate(self, it, sig):
+        it.hypotheses = self.hypotheses(it, sig)
+        if not it.hypotheses:
+            return None, 0
+        h = it.hypotheses[0]
+        h.outcome = "case 3"
+        # pretend the robot is at v0 (it is not): walk there physically is skipped
+        return h, 0
+
+
+class CounterClockwiseNewVertex(LighthouseExplorer):
+    """Numbers a new vertex's exits counter-clockwise."""
+
+    def non_loop_augment(self, it, sig, heading):
+        super().non_loop_augment(it, sig, heading)
+        u, d = self.S.n - 1, sig.degree
+        if d > 2:
+            self.S._adj[u][1:] = self.S._adj[u][1:][::-1]  # only safe while exits 1.. are unjoined
+            self.position = (u, (-heading) % d)
+
+
+FAULTS = {
+    KeepsLoopDartInU: "I-2",
+    NoRealign: None,
+    TrustsFirstHypothesis: None,
+    CounterClockwiseNewVertex: None,
+}
+
+
+@pytest.mark.parametrize("fault", list(FAULTS))
+@pytest.mark.parametrize("mode", ["incremental", "full", "both"])
+def test_faults_are_caught(monkeypatch, fault, mode):
+    monkeypatch.setitem(explore_mod.ALGORITHMS, "basic", fault)
+    world = g.lattice_hole(5, 5, 0.1, seed=2).with_start(None)
+    out = explore(world, check_mode=mode)
+    assert out.violation is not None and not out.verified
+    assert out.violation.check != "checker agreement"
+    if FAULTS[fault]:
+        assert out.violation.check == FAULTS[fault]
+    assert "iteration" in out.violation.detail
+    assert out.trace[-1]["violation"]["check"] == out.violation.check
+
+
+def test_an_unchecked_run_is_never_called_verified():
+    out = explore(g.cycle(5).with_start(Start("0", "1")), check=False)
+    assert not out.verified and out.violation is None and out.checks == 0
+
+
+@settings(max_examples=60, deadline=None)
+@given(family_worlds(small=True))
+def test_incremental_and_full_checks_agree_on_correct_runs(world):
+    a = explore(world, check_mode="incremental")
+    b = explore(world, check_mode="full")
+    assert a.verified and b.verified and a.cost == b.cost
+
+
+def test_violation_names_the_first_broken_iteration(monkeypatch):
+    monkeypatch.setitem(explore_mod.ALGORITHMS, "basic", KeepsLoopDartInU)
+    world = g.cycle(4).with_start(Start("0", "1"))
+    out = explore(world)
+    loops = [it.number for it in out.explorer.iterations if it.kind == "loop"]
+    assert out.violation.data["iteration"] == loops[0]
+    assert "listed" in out.violation.found or "explored" in out.violation.found
