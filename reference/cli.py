@@ -25,6 +25,8 @@ __all__ = ["main", "build_parser", "emit"]
 COMMAND_MODULES = (
     "topomark.reference.cmd_world",
     "topomark.reference.cmd_explore",
+    "topomark.reference.cmd_oracle",
+    "topomark.reference.cmd_bench",
     "topomark.proofs.cli_distinguish",
     "topomark.proofs.cli_search",
 )

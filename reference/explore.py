@@ -25,13 +25,12 @@ from topomark.spec.world import World
 
 from .bounds import upper_bound
 from .checker import Checker
-from .lighthouse import LighthouseExplorer
+from .algorithms import ALGORITHMS
 from .policies import Policies
 from .simulator import Simulator
 
 __all__ = ["ALGORITHMS", "Outcome", "explore", "prepare_world", "TRACE_FORMAT"]
 
-ALGORITHMS = {"basic": LighthouseExplorer}
 TRACE_FORMAT = "topomark/trace@1"
 
 

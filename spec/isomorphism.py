@@ -189,10 +189,24 @@ def _summary(g, markers: bool) -> dict[str, Any]:
         "degree histogram": dict(sorted(degrees.items())),
     }
     if markers:
-        out["marked vertices"] = sorted(Counter(
-            (c[1], c[0], c[2]) for v in g.vertices if (c := local_class(g, v))[1] is not None or c[2]).items(),
-            key=repr)
+        out["markers"] = sorted(Counter(_marker_words(c) for v in g.vertices
+                                        if (c := local_class(g, v))[1] is not None or c[2]).items())
     return out
+
+
+def _render_markers(summary: list) -> str:
+    return "; ".join(f"{k}× {words}" for words, k in summary) or "no markers"
+
+
+def _marker_words(cls: tuple) -> str:
+    """A vertex's local class in words, e.g. 'a degree-4 vertex with 1 directional vertex marker'."""
+    degree, vpart, dpart = cls
+    parts = []
+    if vpart is not None:
+        parts.append(f"{vpart[0]} {'directional' if vpart[1] else 'undirected'} vertex marker(s)")
+    for count, end in dpart:
+        parts.append(f"{count} {'directional' if end else 'undirected'} edge marker(s)" + (f" ({end} end)" if end else ""))
+    return f"a degree-{degree} vertex with " + " and ".join(parts)
 
 
 def find_isomorphism(a, b, markers: bool = True) -> IsoResult:
@@ -204,7 +218,8 @@ def find_isomorphism(a, b, markers: bool = True) -> IsoResult:
     sa, sb = _summary(a, markers), _summary(b, markers)
     for key in sa:
         if sa[key] != sb[key]:
-            return IsoResult(False, mismatch=Violation("extended isomorphism", key, str(sa[key]), str(sb[key]),
+            render = _render_markers if key == "markers" else str
+            return IsoResult(False, mismatch=Violation("extended isomorphism", key, render(sa[key]), render(sb[key]),
                                                        "the worlds differ in an isomorphism invariant"))
     classes_b: dict[Hashable, list] = {}
     for w in b.vertices:

@@ -6,7 +6,7 @@ import pytest
 from hypothesis import given, settings
 
 from families import family_worlds
-from topomark.reference import explore as explore_mod
+from topomark.reference import algorithms as explore_mod
 from topomark.reference import generators as g
 from topomark.reference.explore import explore
 from topomark.reference.lighthouse import LighthouseExplorer
