@@ -30,6 +30,9 @@ def register(sub) -> None:
                         f"path={'|'.join(PATH_POLICIES)}; a bare NAME sets the edge policy (repeatable)")
     p.add_argument("--seed", type=int, help="seed for a random generator")
     p.add_argument("--no-check", action="store_true", help="skip the per-iteration checks (faster)")
+    p.add_argument("--check-mode", default="incremental", choices=("incremental", "full", "both"),
+                   help="how I-1/I-2 are evaluated each iteration: per journalled change (default), from scratch, "
+                        "or both (they must agree); the final verdict is always from scratch")
     p.add_argument("--trace", metavar="FILE", help="write the JSON Lines trace here")
     p.add_argument("--map", metavar="FILE", help="write the final map (world format, marker included)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
@@ -96,8 +99,8 @@ def explore_command(args) -> int:
     else:
         world, label = resolve_world(args.world, args.seed), args.world
     started = time.monotonic()
-    outcome = explore(world, args.algorithm, policies, check=not args.no_check, record=bool(args.trace),
-                      progress=_Progress(not (args.quiet or args.json)))
+    outcome = explore(world, args.algorithm, policies, check=not args.no_check, record=True,
+                      progress=_Progress(not (args.quiet or args.json)), check_mode=args.check_mode)
     if args.trace:
         with open(args.trace, "w", encoding="utf-8") as fh:
             fh.write(dump_trace(outcome.trace))
@@ -105,6 +108,9 @@ def explore_command(args) -> int:
         save_world(outcome.explorer.S.to_world(), args.map)
     data = {"world": label, "policies": policies.to_json(), "algorithm": args.algorithm, **outcome.summary(),
             "checked": not args.no_check}
+    tail = [json.dumps(rec, sort_keys=True) for rec in outcome.trace[-9:-1]] if outcome.violation else []
+    if tail:
+        data["trace_tail"] = outcome.trace[-9:-1]
     if args.json:
         print(json.dumps(data, indent=1, sort_keys=True))
     else:
@@ -113,6 +119,8 @@ def explore_command(args) -> int:
         print(_table(outcome, started))
         if outcome.violation is not None:
             print(f"VIOLATION: {outcome.violation}")
+            print("the trace up to that point (last events; --trace FILE keeps all of it):")
+            print("\n".join(f"  {line}" for line in tail))
         elif args.no_check:
             print("not checked (--no-check): the map was not verified")
         else:

@@ -22,6 +22,7 @@ from typing import Any, Callable
 from topomark.spec.errors import CheckFailure, InvalidInput
 from topomark.spec.marker import VertexMarker
 from topomark.spec.world import World
+from topomark.spec.worldfile import marker_to_json
 
 from .bounds import upper_bound
 from .checker import Checker
@@ -75,7 +76,8 @@ def prepare_world(world: World) -> tuple[World, tuple[str, int]]:
         if not isinstance(marker, VertexMarker) or not marker.directional or marker.at != v0:
             raise InvalidInput(
                 f"the basic algorithm (one directional vertex marker dropped at the start) cannot use the marker "
-                f"{marker} in the world file: only a directional vertex marker at the start vertex {v0!r} is allowed")
+                f"{json.dumps(marker_to_json(marker))} in the world file: only a directional vertex marker at the "
+                f"start vertex {v0!r} is allowed")
         if marker.count != 1 or world.index(v0, marker.points_to) != facing:
             raise InvalidInput(
                 f"the directional marker at {v0!r} points to {marker.points_to!r}, but the robot starts facing "

@@ -40,7 +40,7 @@ from .errors import InvalidWorld
 from .marker import EdgeMarker, VertexMarker
 from .world import Start, World
 
-__all__ = ["FORMAT", "schema", "world_from_json", "world_to_json", "loads_world", "dumps_world",
+__all__ = ["FORMAT", "schema", "world_from_json", "world_to_json", "marker_to_json", "loads_world", "dumps_world",
            "load_world", "save_world"]
 
 FORMAT = "topomark/world@1"
@@ -126,22 +126,25 @@ def world_from_json(obj: Any) -> World:
 def world_to_json(world: World) -> dict[str, Any]:
     """The JSON object of a world (markers and start included when present)."""
     out: dict[str, Any] = {"format": FORMAT, "rotation": {v: list(ns) for v, ns in world.rotation.items()}}
-    markers = []
-    for m in world.markers:
-        if isinstance(m, VertexMarker):
-            item: dict[str, Any] = {"kind": "vertex", "at": m.at, "count": m.count}
-            if m.points_to is not None:
-                item["points_to"] = m.points_to
-        else:
-            item = {"kind": "edge", "between": list(m.between), "count": m.count}
-            if m.head is not None:
-                item["head"] = m.head
-        markers.append(item)
+    markers = [marker_to_json(m) for m in world.markers]
     if markers:
         out["markers"] = markers
     if world.start is not None:
         out["start"] = {"at": world.start.at, "facing": world.start.facing}
     return out
+
+
+def marker_to_json(m) -> dict[str, Any]:
+    """One marker as its JSON object in the world format."""
+    if isinstance(m, VertexMarker):
+        item: dict[str, Any] = {"kind": "vertex", "at": m.at, "count": m.count}
+        if m.points_to is not None:
+            item["points_to"] = m.points_to
+        return item
+    item = {"kind": "edge", "between": list(m.between), "count": m.count}
+    if m.head is not None:
+        item["head"] = m.head
+    return item
 
 
 def loads_world(text: str, source: str = "<string>") -> World:
