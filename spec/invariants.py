@@ -39,7 +39,7 @@ from .mapstate import MapDart, PartialMap
 from .world import Dart, World
 
 __all__ = ["Anchor", "correspondence", "check_I1", "check_I2", "check_invariants", "lighthouse_anchor",
-           "explored_world_darts", "IncrementalInvariants"]
+           "explored_world_darts", "explored_subgraph", "IncrementalInvariants"]
 
 Anchor = tuple[MapDart, Dart]
 
@@ -72,6 +72,14 @@ def check_I1(S: PartialMap, world: World, anchor: Anchor, phi: IsoResult | None 
         return Violation("I-1", f"map vertex {missing[0]}", "connected to v0 through explored edges",
                          "not connected", "S must be connected")
     return None
+
+
+def explored_subgraph(S: PartialMap, phi: Witness) -> tuple[frozenset[str], frozenset[frozenset[str]]]:
+    """G_s (§3.4): the world vertices φ(V_S) and world edges φ(E_S) explored so far."""
+    vertices = frozenset(phi.vertex_map[v] for v in S.vertices)
+    edges = frozenset(frozenset((phi.vertex_map[v], phi.vertex_map[S.arc((v, i))[0]]))
+                      for v, i in S.darts() if S.arc((v, i)) is not None)
+    return vertices, edges
 
 
 def explored_world_darts(S: PartialMap, phi: Witness) -> set[Dart]:

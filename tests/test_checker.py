@@ -2,6 +2,10 @@
 
 from __future__ import annotations
 
+import subprocess
+import sys
+from pathlib import Path
+
 import pytest
 from hypothesis import given, settings
 
@@ -10,7 +14,9 @@ from topomark.reference import algorithms as explore_mod
 from topomark.reference import generators as g
 from topomark.reference.explore import explore
 from topomark.reference.lighthouse import LighthouseExplorer
-from topomark.spec.world import Start
+from topomark.spec.invariants import correspondence, explored_subgraph, lighthouse_anchor
+from topomark.spec.marker import VertexMarker
+from topomark.spec.world import Start, World
 
 
 class KeepsLoopDartInU(LighthouseExplorer):
@@ -95,3 +101,29 @@ def test_violation_names_the_first_broken_iteration(monkeypatch):
     loops = [it.number for it in out.explorer.iterations if it.kind == "loop"]
     assert out.violation.data["iteration"] == loops[0]
     assert "listed" in out.violation.found or "explored" in out.violation.found
+
+
+def test_checks_survive_python_O():
+    """Checks are not bare asserts: under ``python -O`` a broken explorer is still caught."""
+    code = (
+        f"import sys; sys.path.insert(0, {str(Path(__file__).parent)!r})\n"
+        "from faults_min import KeepsLoopDartInU\n"
+        "from topomark.reference import algorithms, generators\n"
+        "from topomark.reference.explore import explore\n"
+        "algorithms.ALGORITHMS['basic'] = KeepsLoopDartInU\n"
+        "print(explore(generators.cycle(5)).violation.check)\n"
+    )
+    proc = subprocess.run([sys.executable, "-O", "-c", code], capture_output=True, text=True, timeout=60)
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout.strip() == "I-2"
+
+
+def test_explored_subgraph_grows_to_the_world():
+    world = g.lattice(3, 3)
+    S = explore(world).explorer.S
+    v, facing = world.start_state()
+    marked = World(world.rotation, [VertexMarker(v, 1, world.neighbour(v, facing))])
+    phi = correspondence(S, marked, lighthouse_anchor(S, marked)).witness
+    vertices, edges = explored_subgraph(S, phi)
+    assert vertices == set(world.vertices)
+    assert edges == {frozenset(e) for e in world.edges()}
