@@ -86,17 +86,16 @@ def _marker(obj: Any, k: int):
             f"{what}: count must be a positive integer, got {json.dumps(count)}")
     if kind == "vertex":
         _keys(obj, {"kind", "at", "count", "points_to"}, {"kind", "at"}, what)
-        points = obj.get("points_to")
-        return VertexMarker(_string(obj["at"], f"{what}.at"), count,
-                            None if points is None else _string(points, f"{what}.points_to"))
+        points = _string(obj["points_to"], f"{what}.points_to") if "points_to" in obj else None
+        return VertexMarker(_string(obj["at"], f"{what}.at"), count, points)
     if kind == "edge":
         _keys(obj, {"kind", "between", "count", "head"}, {"kind", "between"}, what)
         between = obj["between"]
         _expect(isinstance(between, list) and len(between) == 2,
                 f"{what}.between must be a list of two vertex names")
-        head = obj.get("head")
+        head = _string(obj["head"], f"{what}.head") if "head" in obj else None
         return EdgeMarker((_string(between[0], f"{what}.between[0]"), _string(between[1], f"{what}.between[1]")),
-                          count, None if head is None else _string(head, f"{what}.head"))
+                          count, head)
     raise InvalidWorld(f"{what}: kind must be \"vertex\" or \"edge\", got {json.dumps(kind)}")
 
 
@@ -116,7 +115,7 @@ def world_from_json(obj: Any) -> World:
     markers = obj.get("markers", [])
     _expect(isinstance(markers, list), "markers must be a list")
     start = obj.get("start")
-    if start is not None:
+    if "start" in obj:  # present means an object: null is not "no start" (the schema agrees)
         _expect(isinstance(start, dict), "start must be an object {\"at\": V, \"facing\": W}")
         _keys(start, {"at", "facing"}, {"at", "facing"}, "start")
         start = Start(_string(start["at"], "start.at"), _string(start["facing"], "start.facing"))
@@ -167,7 +166,8 @@ def load_world(path: str | Path) -> World:
     try:
         text = Path(path).read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError) as exc:
-        raise InvalidWorld(f"{path}: cannot read the file ({exc.__class__.__name__}: {exc.strerror or exc})") from None
+        reason = getattr(exc, "strerror", None) or exc  # a UnicodeDecodeError has no strerror
+        raise InvalidWorld(f"{path}: cannot read the file ({exc.__class__.__name__}: {reason})") from None
     return loads_world(text, str(path))
 
 
