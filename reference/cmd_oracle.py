@@ -1,0 +1,235 @@
+"""topomark as an oracle for other implementations: ``run-external``, ``replay``, ``check-map``,
+``conformance``, ``drive`` (thesis §3.1, §3.3–3.4, §3.6).
+
+Exit codes as everywhere: 0 positive verdict, 1 negative verdict, 2 bad input.
+Every command takes ``--json``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from topomark.spec.errors import InvalidInput
+from topomark.spec.worldfile import load_world, save_world
+
+from . import conformance
+from .cli import _Parser, emit
+from .cmd_explore import parse_policies
+from .drive import drive
+from .explore import dump_trace
+from .external import Limits, run_external
+from .mapcheck import check_map
+from .replay import load_trace, replay
+from .worldarg import resolve_world
+
+__all__ = ["register"]
+
+
+def _command(args) -> list[str]:
+    """The program after ``--``; options written between the positionals and ``--`` are parsed here."""
+    cmd = list(args.cmd)
+    if "--" in cmd:
+        k = cmd.index("--")
+        options, cmd = cmd[:k], cmd[k + 1:]
+        parser = _Parser(prog=f"topomark {args.command}", add_help=False)
+        args.add_options(parser)
+        parser.parse_args(options, namespace=args)
+    if not cmd or cmd[0].startswith("-"):
+        raise InvalidInput(f"{args.command}: give the program to run after --, e.g. -- python3 client.py")
+    return cmd
+
+
+def _run_options(p) -> None:
+    _limits(p)
+    p.add_argument("--seed", type=int, help="seed for a random generator")
+    p.add_argument("--map", metavar="FILE", help="write the program's map here")
+    p.add_argument("--json", action="store_true")
+
+
+def _drive_options(p) -> None:
+    p.add_argument("--policy", action="append", default=[], metavar="KIND=NAME", help="as for explore")
+    p.add_argument("--check", metavar="WORLD", help="judge the map against this world file")
+    p.add_argument("--trace", metavar="FILE", help="write the topomark/trace@1 trace here")
+    p.add_argument("--map", metavar="FILE", help="write the map here")
+    p.add_argument("--max-traversals", type=int, default=1_000_000, metavar="N")
+    p.add_argument("--timeout", type=float, default=600.0, metavar="SECONDS", help="wall-time limit (default 600)")
+    p.add_argument("--message-timeout", type=float, default=10.0, metavar="SECONDS")
+    p.add_argument("--json", action="store_true")
+
+
+def _conformance_options(p) -> None:
+    _limits(p)
+    p.add_argument("-k", "--select", metavar="TEXT", help="only the cases whose name contains TEXT")
+    p.add_argument("--json", action="store_true")
+
+
+def _no_action() -> int:
+    raise InvalidInput("conformance needs an action: export DIR, lint DIR or run DIR -- CMD")
+
+
+def _limits(p) -> None:
+    p.add_argument("--max-traversals", type=int, metavar="N",
+                   help="fail a program that traverses more edges (default: 4 x the (3.1)+(3.2) bound, >= 1000)")
+    p.add_argument("--timeout", type=float, default=60.0, metavar="SECONDS", help="wall-time limit (default 60)")
+    p.add_argument("--message-timeout", type=float, default=10.0, metavar="SECONDS",
+                   help="longest wait for one message (default 10)")
+
+
+def _make_limits(args) -> Limits:
+    for name in ("timeout", "message_timeout"):
+        if getattr(args, name) <= 0:
+            raise InvalidInput(f"--{name.replace('_', '-')} must be positive")
+    if args.max_traversals is not None and args.max_traversals < 0:
+        raise InvalidInput("--max-traversals must be >= 0")
+    return Limits(args.max_traversals, args.timeout, args.message_timeout)
+
+
+def register(sub) -> None:
+    p = sub.add_parser("run-external", help="play a world to another program over topomark/protocol@1 and judge it",
+                       description="Run CMD as the explorer of WORLD (a world file or generator) over JSON Lines on "
+                                   "its stdin/stdout (spec/protocol.md). Exit 0 if its map is extended-isomorphic "
+                                   "and every snapshot satisfied I-1/I-2, 1 on any failure, 2 on bad input.")
+    p.add_argument("world", metavar="WORLD")
+    p.add_argument("cmd", nargs=argparse.REMAINDER, metavar="-- CMD [ARGS...]")
+    _run_options(p)
+    p.set_defaults(handler=run_external_command, add_options=_run_options)
+
+    q = sub.add_parser("check-map", help="judge a map file against a world file (extended isomorphism)",
+                       description="Exit 0 if MAP is extended-isomorphic to WORLD, 1 if not (with the first mismatch "
+                                   "in words), 2 on bad input. Markers: compared if the world file has any; else, if "
+                                   "the world has a start and the map one directional vertex marker, the lighthouse "
+                                   "Algorithm 3.1 drops at the start is added; else ignored.")
+    q.add_argument("world", metavar="WORLD")
+    q.add_argument("map", metavar="MAP")
+    q.add_argument("--json", action="store_true")
+    q.set_defaults(handler=check_map_command)
+
+    r = sub.add_parser("replay", help="verify a topomark/trace@1 trace recorded by any implementation",
+                       description="Replay TRACE on WORLD: every perception, the cost, I-1/I-2 after every "
+                                   "iteration (S and U rebuilt from the joins) and the final map. Exit 0 if it "
+                                   "holds up, 1 at the first divergence (step, expected, found), 2 on bad input.")
+    r.add_argument("world", metavar="WORLD")
+    r.add_argument("trace", metavar="TRACE")
+    r.add_argument("--json", action="store_true")
+    r.set_defaults(handler=replay_command)
+
+    d = sub.add_parser("drive", help="drive an external world provider (simulator or robot bridge) with "
+                                     "Algorithm 3.1",
+                       description="Run CMD as the world (spec/protocol.md, provider role): topomark sends motions "
+                                   "and marker drops, CMD answers with signatures. Exit 0 when a map was made (and, "
+                                   "with --check WORLD, is extended-isomorphic to it), 1 on failure, 2 on bad input.")
+    d.add_argument("cmd", nargs=argparse.REMAINDER, metavar="-- CMD [ARGS...]")
+    _drive_options(d)
+    d.set_defaults(handler=drive_command, add_options=_drive_options)
+
+    c = sub.add_parser("conformance", help="export, lint or run the conformance suite",
+                       description="export DIR: write the versioned suite (worlds, reference maps, traces, costs, "
+                                   "manifest). lint DIR: check a suite. run DIR -- CMD: run an implementation "
+                                   "against every case through topomark/protocol@1 (exit 0 iff all pass).")
+    csub = c.add_subparsers(dest="action", metavar="ACTION", parser_class=_Parser)
+    ce = csub.add_parser("export", help="write the suite to DIR (new or empty)")
+    ce.add_argument("dir", metavar="DIR")
+    ce.add_argument("--json", action="store_true")
+    ce.set_defaults(handler=conformance_export)
+    cl = csub.add_parser("lint", help="check a suite directory")
+    cl.add_argument("dir", metavar="DIR")
+    cl.add_argument("--json", action="store_true")
+    cl.set_defaults(handler=conformance_lint)
+    cr = csub.add_parser("run", help="run CMD on every case")
+    cr.add_argument("dir", metavar="DIR")
+    cr.add_argument("cmd", nargs=argparse.REMAINDER, metavar="-- CMD [ARGS...]")
+    _conformance_options(cr)
+    cr.set_defaults(handler=conformance_run, add_options=_conformance_options)
+    c.set_defaults(handler=lambda args: _no_action())
+
+
+def run_external_command(args) -> int:
+    world = resolve_world(args.world, args.seed)
+    command = _command(args)
+    result = run_external(world, command, _make_limits(args))
+    if args.map and result.map is not None:
+        _write(args.map, lambda: save_world(result.map, args.map))
+    data = {"world": args.world, "command": command, **result.to_json()}
+    text = (f"{'PASS' if result.passed else 'FAIL'} [{result.reason}] {result.message}\n"
+            f"cost {result.cost} traversals (n={world.n}, m={world.m}), {result.snapshots} snapshots checked, "
+            f"{result.wall:.2f} s")
+    if not result.passed and result.stderr:
+        text += "\nprogram stderr (tail):\n  " + "\n  ".join(result.stderr[-5:])
+    emit(args, data, text)
+    return 0 if result.passed else 1
+
+
+def check_map_command(args) -> int:
+    world, map_ = load_world(args.world), load_world(args.map)
+    verdict = check_map(world, map_)
+    data = {"world": args.world, "map": args.map, **verdict.to_json()}
+    emit(args, data, f"{args.map}: {verdict.words()}")
+    return 0 if verdict.isomorphic else 1
+
+
+def replay_command(args) -> int:
+    world = load_world(args.world)
+    result = replay(world, load_trace(args.trace), args.trace)
+    data = {"world": args.world, "trace": args.trace, **result.to_json()}
+    emit(args, data, ("VERIFIED " if result.ok else "DIVERGED ") + result.message)
+    return 0 if result.ok else 1
+
+
+def drive_command(args) -> int:
+    command = _command(args)
+    limits = _make_limits(args)
+    policies = parse_policies(args.policy)
+    world = load_world(args.check) if args.check else None
+    result = drive(command, policies, world, limits.max_traversals, limits.wall, limits.message)
+    if args.trace:
+        _write(args.trace, lambda: Path(args.trace).write_text(dump_trace(result.trace), encoding="utf-8"))
+    if args.map and result.map is not None:
+        _write(args.map, lambda: save_world(result.map, args.map))
+    data = {"command": command, **result.to_json()}
+    text = f"{'PASS' if result.passed else 'FAIL'} [{result.reason}] {result.message}\ncost {result.cost} traversals"
+    if not result.passed and result.stderr:
+        text += "\nprovider stderr (tail):\n  " + "\n  ".join(result.stderr[-5:])
+    emit(args, data, text)
+    return 0 if result.passed else 1
+
+
+def _write(path: str, write):
+    """Write an output file (returns what ``write`` returns); an unwritable path is bad input (exit 2)."""
+    try:
+        return write()
+    except OSError as exc:
+        raise InvalidInput(f"{path}: cannot write ({exc.strerror or exc})") from None
+
+
+def _suite_summary(manifest: dict) -> dict:
+    return {"format": manifest["format"], "version": manifest["version"], "cases": len(manifest["cases"]),
+            "policies": list(manifest["policies"])}
+
+
+def conformance_export(args) -> int:
+    manifest = _write(args.dir, lambda: conformance.export(args.dir))
+    info = _suite_summary(manifest)
+    emit(args, {"dir": args.dir, **info}, f"wrote {args.dir}: {info['format']} version {info['version']}, "
+                                          f"{info['cases']} cases x {len(info['policies'])} policies (linted)")
+    return 0
+
+
+def conformance_lint(args) -> int:
+    info = _suite_summary(conformance.lint(args.dir))
+    emit(args, {"dir": args.dir, "ok": True, **info},
+         f"{args.dir}: ok ({info['format']} version {info['version']}, {info['cases']} cases)")
+    return 0
+
+
+def conformance_run(args) -> int:
+    command = _command(args)
+    limits = _make_limits(args)
+    show = None if args.json else (lambda row: print(f"  {row.name}: {row.result.verdict}", file=sys.stderr))
+    rows, wall = conformance.timed_run(args.dir, command, limits, args.select, show)
+    passed = sum(r.result.passed for r in rows)
+    data = {"dir": args.dir, "command": command, "passed": passed, "total": len(rows),
+            "wall_seconds": round(wall, 3), "cases": [r.to_json() for r in rows]}
+    emit(args, data, conformance.render_table(rows, wall))
+    return 0 if passed == len(rows) else 1

@@ -1,0 +1,152 @@
+"""``drive``: topomark's Algorithm 3.1 explorer drives an external world (thesis §3.3, §3.6).
+
+The other direction of ``topomark/protocol@1`` (``spec/protocol.md``): the
+external program is the *world provider* — another simulator, or a bridge to
+a physical robot as in §3.6, where a vertex is a junction recognised by the
+robot's sensors and a motion is "leave by the l-th exit clockwise from the
+one you came in by".  The provider says ``hello`` with the marker class and
+the initial signature, then answers every ``move`` and ``drop`` with the
+signature reached.  topomark runs :class:`~topomark.reference.lighthouse.
+LighthouseExplorer` over a :class:`~topomark.reference.robot.Robot` whose
+three operations are those messages, and ends by sending its ``map``.
+
+No ground truth is available here (the provider *is* the world), so the
+run is judged only if the caller supplies the world (``check=``), by
+:func:`topomark.reference.mapcheck.check_map`; the trace it records can also
+be verified later with ``topomark replay``.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+from typing import Any, Sequence
+
+from topomark.spec.errors import CheckFailure, InvalidInput, Violation
+from topomark.spec.signature import Signature
+from topomark.spec.world import World
+from topomark.spec.worldfile import world_to_json
+
+from .explore import TRACE_FORMAT
+from .lighthouse import LighthouseExplorer
+from .mapcheck import MapVerdict, check_map
+from .policies import Policies
+from .protocol import PROTOCOL, Peer, ProtocolError
+from .robot import Robot
+
+__all__ = ["DriveResult", "drive"]
+
+
+@dataclass
+class DriveResult:
+    verdict: str  # "pass" (map made, and verified if a world was given) or "fail"
+    reason: str
+    message: str
+    cost: int = 0
+    map: World | None = None
+    trace: list[dict] = field(default_factory=list)
+    check: MapVerdict | None = None
+    wall: float = 0.0
+    stderr: list[str] = field(default_factory=list)
+
+    @property
+    def passed(self) -> bool:
+        return self.verdict == "pass"
+
+    def to_json(self) -> dict[str, Any]:
+        return {"verdict": self.verdict, "reason": self.reason, "message": self.message, "cost": self.cost,
+                "n": None if self.map is None else self.map.n, "m": None if self.map is None else self.map.m,
+                "check": None if self.check is None else self.check.to_json(), "wall_seconds": round(self.wall, 3),
+                "stderr_tail": self.stderr}
+
+
+class _Link:
+    """The robot's three operations, as protocol messages to the provider."""
+
+    def __init__(self, peer: Peer, max_traversals: int, trace: list[dict]):
+        self.peer, self.max_traversals, self.trace = peer, max_traversals, trace
+        self.cost = 0
+        self.here: Signature | None = None
+
+    def hello(self) -> None:
+        msg = self.peer.receive(("hello",))
+        if msg["protocol"] != PROTOCOL or msg["role"] != "world":
+            raise ProtocolError("protocol", f"hello from a {msg['role']!r} speaking {msg['protocol']!r} "
+                                            f"(expected role 'world', {PROTOCOL})")
+        kit = msg["markers"].get("directional-vertex", 0)
+        if not isinstance(kit, int) or isinstance(kit, bool) or kit < 1:
+            raise ProtocolError("protocol", f"Algorithm 3.1 needs one directional vertex marker; the provider "
+                                            f"offers {msg['markers']}")
+        self.here = self._signature(msg["signature"])
+
+    def _signature(self, text: str) -> Signature:
+        try:
+            return Signature.parse(text)
+        except InvalidInput as exc:
+            raise ProtocolError("garbage", f"the provider sent a bad signature: {exc}") from None
+
+    def _answer(self) -> Signature:
+        msg = self.peer.receive(("signature", "error"))
+        if msg["type"] == "error":
+            raise ProtocolError("crash", f"the provider reported an error: {msg['message']}")
+        return self._signature(msg["value"])
+
+    def move(self, motion: int, purpose: str) -> Signature:
+        if self.cost >= self.max_traversals:
+            raise ProtocolError("limit", f"more than {self.max_traversals} traversals")
+        if not 0 <= motion < self.here.degree:
+            raise CheckFailure(Violation("robot interface", f"step {self.cost + 1}", "an existing exit",
+                                         f"motion {motion} at degree {self.here.degree}"))
+        self.peer.send({"type": "move", "motion": motion})
+        self.here = self._answer()
+        self.cost += 1
+        self.trace.append({"event": "move", "step": self.cost, "motion": motion, "perception": str(self.here),
+                           "purpose": purpose})
+        return self.here
+
+    def drop(self, direction: int | None) -> None:
+        self.peer.send({"type": "drop", "direction": direction})
+        self.here = self._answer()
+        self.trace.append({"event": "drop", "direction": direction, "signature": str(self.here)})
+
+    def robot(self) -> Robot:
+        return Robot(self.move, lambda: self.here, self.drop)
+
+
+def drive(command: Sequence[str], policies: Policies | None = None, world: World | None = None,
+          max_traversals: int = 1_000_000, wall: float = 600.0, message: float = 10.0) -> DriveResult:
+    """Explore the provider's world; ``world`` (optional) is the truth to judge the map against."""
+    policies = policies or Policies()
+    started = time.monotonic()
+    trace: list[dict] = []
+    peer = Peer(command, message, wall)
+    link = _Link(peer, max_traversals, trace)
+    try:
+        link.hello()
+        explorer = LighthouseExplorer(link.robot(), policies,
+                                      lambda ex, it: trace.append({"event": "iteration", **it.to_json()}))
+        S = explorer.explore()
+        map_ = S.to_world()
+        peer.send({"type": "map", "world": world_to_json(map_)})
+        peer.receive(("bye",))
+        peer.finish()
+        result = DriveResult("pass", "ok", f"mapped {map_.n} vertices and {map_.m} edges", link.cost, map_)
+        if world is not None:
+            result.check = check_map(world, map_)
+            if not result.check.isomorphic:
+                result.verdict, result.reason = "fail", "not-isomorphic"
+            result.message += f"; against the given world: {result.check.words()}"
+    except ProtocolError as exc:
+        result = DriveResult("fail", exc.kind, str(exc), link.cost)
+    except (CheckFailure, InvalidInput, LookupError) as exc:  # the explorer's map cannot be a world
+        result = DriveResult("fail", "inconsistent", f"the provider's answers are inconsistent with any world: {exc}",
+                             link.cost)
+    finally:
+        peer.kill()
+    n, m = (result.map.n, result.map.m) if result.map is not None else (0, 0)
+    header = {"event": "header", "format": TRACE_FORMAT, "algorithm": "basic", "policies": policies.to_json(),
+              "n": n, "m": m}
+    result.trace = [header] + trace + [{"event": "end", "cost": link.cost, "verified": result.check is not None
+                                        and result.check.isomorphic, "violation": None}]
+    result.wall, result.stderr = time.monotonic() - started, peer.stderr_tail()
+    return result
