@@ -67,7 +67,14 @@ which vertex 0 could be mapped: any B dart for ``none``; darts of vertex 0
 for a uniquely marked start vertex; darts of vertex 0 or of the other marked
 vertex / other edge end for two undirected markers or an undirected edge
 marker (an isomorphism preserves markers, so nothing else can be an image of
-vertex 0).  Anchors that are not darts (k >= deg) are excused.  If n_A != n_B
+vertex 0).  For the four sufficient classes the markers fix the start dart
+itself: a directional vertex/edge marker or the edge of vertex-and-edge pins
+the offset at vertex 0, and for three undirected markers the exit towards
+the V2 neighbour does; since R relates the starts, their signatures (and,
+after one motion, the V2 exit) agree, so the only possible image of (0, 0)
+is (0, 0) and that single anchor is used.  (Dropping anchors only weakens
+the formula, so UNSAT stays a proof; a spurious model would be caught by the
+re-check.)  Anchors that are not darts (k >= deg) are excused.  If n_A != n_B
 the worlds cannot be isomorphic and no anchor is needed.  Values downstream
 of a genuine defect may be arbitrary (domains include NULL so nothing is
 forced to be unsatisfiable), but a defect in an isomorphism is impossible
@@ -75,15 +82,43 @@ because there every value is forced.  Note that a closed relation R alone
 could not decide isomorphism: the largest bisimulation may relate states
 that no automorphism relates.
 
+*Planarity (optional).*  The thesis allows any embedding ("not necessarily a
+planar surface", §3.1.1), so by default both worlds may have any genus; with
+``planar=True`` each world also satisfies Euler's formula n - m + f = 2,
+where the faces f are counted through a face label per dart (constant along
+the face permutation, a representative per face forced by a rank) and a
+pseudo-Boolean equation.
+
+*Bounds.*  Size pairs are tried smallest first (larger world, then total),
+so the first ``found`` is smallest in the larger world's size; for a pair
+the degree bound is clamped to n_B - 1 (a simple graph has no larger degree).
+
+*Validation* (``tests/test_z3search.py``, :mod:`topomark.proofs.bench_z3`):
+the single-world encoding has exactly one model per placed world up to
+start-preserving isomorphism (model counting, with and without planarity);
+found/none and the smallest size agree with brute-force enumeration for all
+eight classes up to 5 vertices and degree 4; with both worlds pinned
+(:func:`pair_is_model`) the formula accepts the thesis's counterexample
+pairs (Figures 3.3, 3.4, 3.21(a), 6.1(a)) and rejects the distinguishable
+ones (Figures 3.6, 3.21(b), 6.1(b)) and isomorphic pairs.
+
 Every model is decoded into two :class:`World` objects and re-checked with
 the specification's own predicates (World validation, class placement,
 :func:`find_isomorphism`, :mod:`topomark.proofs.bisim`); a failure raises
-:class:`CheckFailure` because it means this encoding is wrong.
+:class:`CheckFailure` because it means this encoding is wrong.  The reported
+relation is the reachable product of the two starts (the least
+bisimulation), and the reported motion sequence is a common walk entering
+every state of both worlds, with the perception sequence both produce.
+
+>>> r = search("none", 4, 2)   # Figure 3.3: cycles of different lengths
+>>> r.outcome, sorted(w.n for w in r.worlds), str(r.perceptions[0])
+('found', [3, 4], '[2,A,A]')
 """
 
 from __future__ import annotations
 
 import itertools
+import re
 import time
 from collections import deque
 from dataclasses import dataclass, field
@@ -102,7 +137,8 @@ from .markerclass import MARKER_CLASSES, marker_class
 
 __all__ = [
     "SearchResult", "ProofReport", "SizeCheck", "search", "prove", "size_pairs", "decode_pair",
-    "recheck", "covering_walk", "reachable_relation", "SUFFICIENT", "SYMMETRY_BREAKING", "MAX_VERTICES",
+    "recheck", "covering_walk", "canonical_labelling", "pair_is_model", "reachable_relation", "relation_to_json",
+    "SUFFICIENT", "SYMMETRY_BREAKING", "MAX_VERTICES",
 ]
 
 NULL = -1
@@ -111,16 +147,16 @@ SUFFICIENT = ("directional-vertex", "directional-edge", "vertex-and-edge", "thre
 SYMMETRY_BREAKING = (
     "start = vertex 0 facing exit 0",
     "vertices numbered in BFS order from the start (exits explored in index order)",
-    "exit 0 of every other vertex is its BFS-parent edge",
+    "exit 0 of every other vertex is its BFS-parent edge (canonical: one encoding per world and start)",
     "markers anchored at vertex 0 (head/marked neighbour/marked edge via one exit variable)",
     "pairs ordered n_A <= n_B",
 )
 
 # which vertex of B an isomorphism may send A's start vertex to
 _ANCHORS = {
-    "none": "any", "undirected-vertex": "same", "directional-vertex": "same",
-    "two-undirected-vertex": "pair", "three-undirected-vertex": "same", "undirected-edge": "pair",
-    "directional-edge": "same", "vertex-and-edge": "same",
+    "none": "any", "undirected-vertex": "same", "directional-vertex": "start",
+    "two-undirected-vertex": "pair", "three-undirected-vertex": "start", "undirected-edge": "pair",
+    "directional-edge": "start", "vertex-and-edge": "start",
 }
 _NEEDS_EXIT = {"directional-vertex", "two-undirected-vertex", "three-undirected-vertex", "undirected-edge",
                "directional-edge", "vertex-and-edge"}
@@ -129,15 +165,17 @@ _NEEDS_EXIT = {"directional-vertex", "two-undirected-vertex", "three-undirected-
 # -- results ------------------------------------------------------------------
 @dataclass(frozen=True)
 class SizeCheck:
-    """The verdict of one solver call: world sizes, 'sat'/'unsat'/'unknown', seconds."""
+    """The verdict of one solver call: world sizes, 'sat'/'unsat'/'unknown', wall and CPU seconds."""
 
     n_a: int
     n_b: int
     verdict: str
     seconds: float
+    cpu_seconds: float = 0.0
 
     def to_json(self) -> dict[str, Any]:
-        return {"n_a": self.n_a, "n_b": self.n_b, "verdict": self.verdict, "seconds": round(self.seconds, 3)}
+        return {"n_a": self.n_a, "n_b": self.n_b, "verdict": self.verdict, "seconds": round(self.seconds, 3),
+                "cpu_seconds": round(self.cpu_seconds, 3)}
 
 
 @dataclass
@@ -155,6 +193,7 @@ class SearchResult:
     motions: tuple[int, ...] | None = None
     perceptions: tuple[Signature, ...] | None = None
     reason: str = ""
+    planar: bool = False
 
     @property
     def found(self) -> bool:
@@ -165,7 +204,7 @@ class SearchResult:
 
         out: dict[str, Any] = {
             "outcome": self.outcome, "found": self.found, "marker": self.marker,
-            "max_vertices": self.max_vertices, "max_degree": self.max_degree,
+            "max_vertices": self.max_vertices, "max_degree": self.max_degree, "planar": self.planar,
             "seconds": round(self.seconds, 3), "checks": [c.to_json() for c in self.checks],
         }
         if self.reason:
@@ -207,28 +246,40 @@ def relation_to_json(relation) -> list[list[list[Any]]]:
 
 
 # -- small propositional helpers -------------------------------------------------
+# Formulas are built as SMT-LIB text (literals are symbol names or Python bools) and
+# handed to Z3 in one piece: far faster than one Python API call per clause.
 class _Builder:
-    """Collects constraints; one-hot variables are dicts value -> Bool."""
+    """Collects declarations and assertions; one-hot variables are dicts value -> literal."""
 
-    def __init__(self, solver: z3.Solver):
-        self.s = solver
-        self.count = 0
+    def __init__(self):
+        self.decls: list[str] = []
+        self.asserts: list[str] = []
+        self._names: set[str] = set()
+
+    @property
+    def count(self) -> int:
+        return len(self.asserts)
+
+    def var(self, name: str) -> str:
+        name = re.sub(r"[^A-Za-z0-9_]", "_", name)
+        if name in self._names:
+            raise CheckFailure(f"encoding bug: variable {name} declared twice")
+        self._names.add(name)
+        self.decls.append(f"(declare-const {name} Bool)")
+        return name
 
     def add(self, *constraints) -> None:
         for c in constraints:
             if c is True:
                 continue
-            if c is False:
-                c = z3.BoolVal(False)
-            self.s.add(c)
-            self.count += 1
+            self.asserts.append(f"(assert {'false' if c is False else c})")
 
     def onehot(self, name: str, values: Iterable) -> dict:
-        vs = {c: z3.Bool(f"{name}={c}") for c in values}
+        vs = {c: self.var(f"{name}_{c}") for c in values}
         lits = list(vs.values())
-        self.add(z3.Or(lits))
+        self.add(_or(lits))
         if len(lits) > 1:
-            self.add(z3.AtMost(*lits, 1))
+            self.asserts.append(f"(assert ((_ at-most 1) {' '.join(lits)}))")
         return vs
 
     def implies(self, premises: list, conclusion) -> None:
@@ -236,10 +287,10 @@ class _Builder:
         ps = [p for p in premises if p is not True]
         if any(p is False for p in ps) or conclusion is True:
             return
-        if conclusion is False:
-            self.add(z3.Not(z3.And(ps)) if ps else z3.BoolVal(False))
-        else:
-            self.add(z3.Implies(z3.And(ps), conclusion) if ps else conclusion)
+        self.add(_or([_not(p) for p in ps] + [conclusion]))
+
+    def text(self) -> str:
+        return "\n".join(self.decls + self.asserts)
 
 
 def _lit(onehot: dict, value):
@@ -251,35 +302,41 @@ def _or(items):
     items = [x for x in items if x is not False]
     if any(x is True for x in items):
         return True
-    return z3.Or(items) if items else False
+    if not items:
+        return False
+    return items[0] if len(items) == 1 else f"(or {' '.join(items)})"
 
 
 def _and(items):
     items = [x for x in items if x is not True]
     if any(x is False for x in items):
         return False
-    return z3.And(items) if items else True
+    if not items:
+        return True
+    return items[0] if len(items) == 1 else f"(and {' '.join(items)})"
 
 
 def _not(x):
-    return (not x) if isinstance(x, bool) else z3.Not(x)
+    if isinstance(x, bool):
+        return not x
+    return x[5:-1] if x.startswith("(not ") else f"(not {x})"
 
 
 def _iff(a, b):
     if isinstance(a, bool) and isinstance(b, bool):
         return a == b
     if isinstance(a, bool):
-        return b if a else z3.Not(b)
+        return b if a else _not(b)
     if isinstance(b, bool):
-        return a if b else z3.Not(a)
-    return a == b
+        return a if b else _not(a)
+    return f"(= {a} {b})"
 
 
 # -- one world ----------------------------------------------------------------------
 class _WorldVars:
     """The variables and constraints of one world with exactly ``n`` vertices (see module docstring)."""
 
-    def __init__(self, b: _Builder, tag: str, n: int, dmax: int, marker: str):
+    def __init__(self, b: _Builder, tag: str, n: int, dmax: int, marker: str, planar: bool = False):
         self.b, self.tag, self.n, self.D, self.marker = b, tag, n, dmax, marker
         V, D = range(n), range(dmax)
         self.deg = {v: b.onehot(f"{tag}deg{v}", range(1, dmax + 1)) for v in V}
@@ -289,6 +346,8 @@ class _WorldVars:
         self._bfs()
         self._marker_vars()
         self._steps()
+        if planar:
+            self._genus_zero()
 
     def exists(self, v: int, i: int):
         """Literal: exit i of v exists."""
@@ -320,7 +379,7 @@ class _WorldVars:
                 b.implies([lit], self.te[u, i][0])
                 for u2 in range(u):
                     for i2 in range(D):
-                        b.implies([lit], z3.Not(self.tv[u2, i2][v]))
+                        b.implies([lit], _not(self.tv[u2, i2][v]))
         for v in range(1, n - 1):
             for a, la in self.par[v].items():
                 for c, lc in self.par[v + 1].items():
@@ -330,7 +389,7 @@ class _WorldVars:
     def _marker_vars(self) -> None:
         b, n, D = self.b, self.n, self.D
         self.e = b.onehot(f"{self.tag}e", range(D)) if self.marker in _NEEDS_EXIT else None
-        self.head0 = z3.Bool(f"{self.tag}head0") if self.marker == "directional-edge" else None
+        self.head0 = b.var(f"{self.tag}head0") if self.marker == "directional-edge" else None
         self.nb = {v: False for v in range(n)}  # v is the marked neighbour / other end of the marked edge
         self.mk = {(v, y): False for v in range(n) for y in range(D)}  # dart (v, y) carries the edge marker
         if self.e is None:
@@ -338,16 +397,16 @@ class _WorldVars:
         for x in range(D):
             b.implies([self.e[x]], self.exists(0, x))
         for v in range(1, n):
-            self.nb[v] = z3.Bool(f"{self.tag}nb{v}")
-            b.add(self.nb[v] == _or(_and([self.e[x], self.tv[0, x][v]]) for x in range(D)))
+            self.nb[v] = b.var(f"{self.tag}nb{v}")
+            b.add(_iff(self.nb[v], _or([_and([self.e[x], self.tv[0, x][v]]) for x in range(D)])))
         if self.marker in ("undirected-edge", "directional-edge", "vertex-and-edge"):
             for y in range(D):
                 self.mk[0, y] = self.e[y]
             for v in range(1, n):
                 for y in range(D):
-                    self.mk[v, y] = z3.Bool(f"{self.tag}mk{v},{y}")
-                    b.add(self.mk[v, y] == _or(_and([self.e[x], self.tv[0, x][v], self.te[0, x][y]])
-                                                for x in range(D)))
+                    self.mk[v, y] = b.var(f"{self.tag}mk{v},{y}")
+                    b.add(_iff(self.mk[v, y], _or([_and([self.e[x], self.tv[0, x][v], self.te[0, x][y]])
+                                                      for x in range(D)])))
 
     def _steps(self) -> None:
         """S[v,j,l]: the state reached from (v, j) by motion l (NULL vertex when l >= deg)."""
@@ -356,7 +415,8 @@ class _WorldVars:
         for v in range(n):
             for j in range(D):
                 for l in range(D):
-                    sv = self.sv[v, j, l] = b.onehot(f"{self.tag}sv{v},{j},{l}", [NULL] + [w for w in range(n) if w != v])
+                    others = [NULL] + [w for w in range(n) if w != v]
+                    sv = self.sv[v, j, l] = b.onehot(f"{self.tag}sv{v},{j},{l}", others)
                     se = self.se[v, j, l] = b.onehot(f"{self.tag}se{v},{j},{l}", range(D))
                     for d in range(1, D + 1):
                         dl = self.deg[v][d]
@@ -370,6 +430,50 @@ class _WorldVars:
                                 b.implies([dl, lit], sv[w])
                         for k in range(D):
                             b.implies([dl, self.te[v, x][k]], se[k])
+
+    def _genus_zero(self) -> None:
+        """Euler's formula n - m + f = 2 (a planar embedding, §3.1.1), with f counted by face labels.
+
+        The face permutation is phi(v, i) = (w, j + 1) for target (w, j).  Every
+        dart carries the label L of its face (constant along phi, at most its own
+        index); the darts with L = own index are the representatives, and a rank
+        that grows by one along phi except at a representative forces every face
+        to contain one.  So f = number of representatives.
+        """
+        b, n, D = self.b, self.n, self.D
+        darts = [(v, i) for v in range(n) for i in range(D)]
+        idx = {d: k for k, d in enumerate(darts)}
+        phw, phk, lab, rank, rep = {}, {}, {}, {}, {}
+        for (v, i) in darts:
+            phw[v, i] = self.tv[v, i]
+            phk[v, i] = b.onehot(f"{self.tag}phk{v},{i}", range(D))
+            for w, lw in self.tv[v, i].items():
+                if w == NULL:
+                    continue
+                for d in range(1, D + 1):
+                    for j in range(D):
+                        b.implies([lw, self.deg[w][d], self.te[v, i][j]], phk[v, i][(j + 1) % d])
+            b.implies([self.tv[v, i][NULL]], phk[v, i][0])
+            lab[v, i] = b.onehot(f"{self.tag}lab{v},{i}", [NULL] + list(range(idx[v, i] + 1)))
+            b.add(_iff(lab[v, i][NULL], self.tv[v, i][NULL]))
+            rank[v, i] = b.onehot(f"{self.tag}rank{v},{i}", range(len(darts)))
+            rep[v, i] = lab[v, i][idx[v, i]]
+        for (v, i) in darts:
+            for w, lw in phw[v, i].items():
+                if w == NULL:
+                    continue
+                for k, lk in phk[v, i].items():
+                    for c, lc in lab[v, i].items():
+                        if c != NULL:
+                            b.implies([lw, lk, lc], _lit(lab[w, k], c))
+                    for r, lr in rank[v, i].items():
+                        nxt = _lit(rank[w, k], r + 1)
+                        b.implies([lw, lk, lr, _not(rep[w, k])], nxt)
+        weights = [(2, rep[d]) for d in darts] + [(D - d, self.deg[v][d]) for v in range(n)
+                                                   for d in range(1, D + 1) if D - d > 0]
+        total = 4 - 2 * n + n * D
+        coeffs = " ".join(str(c) for c, _ in weights)
+        b.asserts.append(f"(assert ((_ pbeq {total} {coeffs}) {' '.join(l for _, l in weights)}))")
 
     # -- signature features (each a dict value -> literal/bool, exactly one true) --
     def features(self, v: int, j: int) -> list[dict]:
@@ -387,9 +491,9 @@ class _WorldVars:
             feats.append(self._relative(v, j, {y: self.mk[v, y] for y in range(self.D)}))
         if m == "directional-edge":
             if v == 0:
-                feats.append({"H": self.head0, "T": z3.Not(self.head0)})
+                feats.append({"H": self.head0, "T": _not(self.head0)})
             else:
-                feats.append({"H": _and([self.nb[v], z3.Not(self.head0)]), "T": _and([self.nb[v], self.head0]),
+                feats.append({"H": _and([self.nb[v], _not(self.head0)]), "T": _and([self.nb[v], self.head0]),
                               None: _not(self.nb[v])})
         return feats
 
@@ -414,11 +518,11 @@ def _sig_equal(a: _WorldVars, p: tuple[int, int], bw: _WorldVars, q: tuple[int, 
 class _PairEncoding:
     """Bisimilar and non-isomorphic: worlds A (n_a vertices) and B (n_b vertices)."""
 
-    def __init__(self, solver: z3.Solver, marker: str, n_a: int, n_b: int, dmax: int):
-        self.b = _Builder(solver)
+    def __init__(self, marker: str, n_a: int, n_b: int, dmax: int, planar: bool = False):
+        self.b = _Builder()
         self.marker, self.D = marker, dmax
-        self.A = _WorldVars(self.b, "A", n_a, dmax, marker)
-        self.B = _WorldVars(self.b, "B", n_b, dmax, marker)
+        self.A = _WorldVars(self.b, "A", n_a, dmax, marker, planar)
+        self.B = _WorldVars(self.b, "B", n_b, dmax, marker, planar)
         self._sigcache: dict = {}
         self._relation()
         if n_a == n_b:
@@ -428,8 +532,8 @@ class _PairEncoding:
         if (p, q) not in self._sigcache:
             expr = _sig_equal(self.A, p, self.B, q)
             if not isinstance(expr, bool):
-                lit = z3.Bool(f"SE{p},{q}")
-                self.b.add(lit == expr)
+                lit = self.b.var(f"SE{p},{q}")
+                self.b.add(_iff(lit, expr))
                 expr = lit
             self._sigcache[p, q] = expr
         return self._sigcache[p, q]
@@ -438,13 +542,13 @@ class _PairEncoding:
         A, B, b, D = self.A, self.B, self.b, self.D
         sa = [(v, j) for v in range(A.n) for j in range(D)]
         sb = [(w, k) for w in range(B.n) for k in range(D)]
-        self.R = {(p, q): z3.Bool(f"R{p},{q}") for p in sa for q in sb}
+        self.R = {(p, q): self.b.var(f"R{p},{q}") for p in sa for q in sb}
         b.add(self.R[(0, 0), (0, 0)])
         for (p, q), r in self.R.items():
             b.implies([r], A.exists(*p))
             b.implies([r], B.exists(*q))
             b.implies([r], self.sig_eq(p, q))
-        half = {(p2, q, l): z3.Bool(f"H{p2},{q},{l}") for p2 in sa for q in sb for l in range(D)}
+        half = {(p2, q, l): self.b.var(f"H{p2},{q},{l}") for p2 in sa for q in sb for l in range(D)}
         for (p, q), r in self.R.items():
             for l in range(D):
                 for v2, lv in A.sv[p[0], p[1], l].items():
@@ -463,6 +567,9 @@ class _PairEncoding:
     # -- non-isomorphism by anchored propagation -------------------------------------
     def _anchors(self) -> Iterator[tuple[str, int]]:
         kind = _ANCHORS[self.marker]
+        if kind == "start":
+            yield (0, 0)
+            return
         for k in range(self.D):
             if kind == "any":
                 for w in range(self.B.n):
@@ -487,15 +594,19 @@ class _PairEncoding:
                    for w, lit in self._anchor_vertex(anchor).items())
 
     def _defects(self, t: int, anchor) -> list:
+        """Literals whose disjunction says: f_t (the propagation from ``anchor``) is not an isomorphism."""
+        im = self._propagate(t, anchor)
+        return self._signature_defects(im) + self._dart_defects(im) + self._collisions(im)
+
+    def _propagate(self, t: int, anchor) -> dict:
+        """One-hots of f_t: image (iw, ik) of each dart (v, 0), entry idk of each image dart, far end (rdw, rdk)."""
         A, B, b, D = self.A, self.B, self.b, self.D
-        iw, ik = {}, {}
-        iw[0] = self._anchor_vertex(anchor)
-        ik[0] = {k: k == anchor[1] for k in range(D)}
+        iw = {0: self._anchor_vertex(anchor)}
+        ik = {0: {k: k == anchor[1] for k in range(D)}}
         for v in range(1, A.n):
             iw[v] = b.onehot(f"I{t}w{v}", range(B.n))
             ik[v] = b.onehot(f"I{t}k{v}", range(D))
-        # image degree, image darts and their far ends
-        idw, idk, rdw, rdk = {}, {}, {}, {}
+        idk, rdw, rdk = {}, {}, {}
         for u in range(A.n):
             imdeg = b.onehot(f"I{t}deg{u}", range(1, D + 1))
             for w, lw in iw[u].items():
@@ -506,46 +617,63 @@ class _PairEncoding:
                 for k, lk in ik[u].items():
                     for d in range(1, D + 1):
                         b.implies([lk, imdeg[d]], idk[u, i][(k + i) % d])
-                idw[u, i] = iw[u]
-                rdw[u, i] = b.onehot(f"I{t}rw{u},{i}", [NULL] + list(range(B.n)))
-                rdk[u, i] = b.onehot(f"I{t}rk{u},{i}", range(D))
-                for w, lw in iw[u].items():
-                    for y in range(D):
-                        for w2, l2 in B.tv[w, y].items():
-                            b.implies([lw, idk[u, i][y], l2], rdw[u, i][w2])
-                        for k2 in range(D):
-                            b.implies([lw, idk[u, i][y], B.te[w, y][k2]], rdk[u, i][k2])
-        for v in range(1, A.n):
+                rdw[u, i], rdk[u, i] = self._far_end(f"I{t}r{u},{i}", iw[u], idk[u, i])
+        for v in range(1, A.n):  # the tree edge: (v, 0) maps to the far end of its parent dart's image
             for (u, i), lp in A.par[v].items():
                 for w2, l2 in rdw[u, i].items():
                     if w2 != NULL:
                         b.implies([lp, l2], iw[v][w2])
                 for k2, l2 in rdk[u, i].items():
                     b.implies([lp, l2], ik[v][k2])
-        defects = []
-        # (a) signature (degree, markers) not preserved at a vertex
-        for v in range(A.n):
-            defects += [_and([lw, lk, _not(self.sig_eq((v, 0), (w, k)))])
-                        for w, lw in iw[v].items() for k, lk in ik[v].items()]
-        # (b) a dart whose far end is not mapped to the far end of its image
+        return {"iw": iw, "ik": ik, "idk": idk, "rdw": rdw, "rdk": rdk}
+
+    def _far_end(self, name: str, vertex: dict, entry: dict) -> tuple[dict, dict]:
+        """One-hots for target((vertex, entry)) in B (NULL vertex if that dart does not exist)."""
+        B, b, D = self.B, self.b, self.D
+        rw = b.onehot(f"{name}w", [NULL] + list(range(B.n)))
+        rk = b.onehot(f"{name}k", range(D))
+        for w, lw in vertex.items():
+            for y in range(D):
+                for w2, l2 in B.tv[w, y].items():
+                    b.implies([lw, entry[y], l2], rw[w2])
+                for k2 in range(D):
+                    b.implies([lw, entry[y], B.te[w, y][k2]], rk[k2])
+        return rw, rk
+
+    def _signature_defects(self, im: dict) -> list:
+        """(a) degree or markers not preserved: sig(v, 0) differs from the sig of its image state."""
+        return [_and([lw, lk, _not(self.sig_eq((v, 0), (w, k)))])
+                for v in range(self.A.n) for w, lw in im["iw"][v].items() for k, lk in im["ik"][v].items()]
+
+    def _dart_defects(self, im: dict) -> list:
+        """(b) a dart of A whose far end's image is not the far end of its image."""
+        A, D, out = self.A, self.D, []
         for v in range(A.n):
             for i in range(D):
+                rdw, rdk = im["rdw"][v, i], im["rdk"][v, i]
                 for v2, lv in A.tv[v, i].items():
                     if v2 == NULL:
                         continue
                     for j2, lj in A.te[v, i].items():
-                        mism = _or([_and([rdw[v, i][w], _not(_lit(iw[v2], w))]) for w in rdw[v, i]] +
-                                   [_and([rdk[v, i][k], _not(idk[v2, j2][k])]) for k in range(D)])
-                        defects.append(_and([lv, lj, mism]))
-        # (c) two vertices with one image
-        for v, v2 in itertools.combinations(range(A.n), 2):
-            defects += [_and([iw[v][w], iw[v2][w]]) for w in range(B.n)]
-        return defects
+                        mism = _or([_and([rdw[w], _not(_lit(im["iw"][v2], w))]) for w in rdw] +
+                                   [_and([rdk[k], _not(im["idk"][v2, j2][k])]) for k in range(D)])
+                        out.append(_and([lv, lj, mism]))
+        return out
+
+    def _collisions(self, im: dict) -> list:
+        """(c) two vertices of A with the same image vertex."""
+        iw = im["iw"]
+        return [_and([iw[v][w], iw[v2][w]]) for v, v2 in itertools.combinations(range(self.A.n), 2)
+                for w in range(self.B.n)]
 
 
 # -- decoding and re-checking -------------------------------------------------------------
+def _true(model: z3.ModelRef, lit) -> bool:
+    return lit if isinstance(lit, bool) else z3.is_true(model.eval(z3.Bool(lit), model_completion=True))
+
+
 def _value(model: z3.ModelRef, onehot: dict):
-    hits = [c for c, lit in onehot.items() if (lit if isinstance(lit, bool) else z3.is_true(model.eval(lit)))]
+    hits = [c for c, lit in onehot.items() if _true(model, lit)]
     if len(hits) != 1:
         raise CheckFailure(f"z3 model violates a one-hot constraint: {hits}")
     return hits[0]
@@ -575,7 +703,7 @@ def _decode_world(model: z3.ModelRef, wv: _WorldVars) -> World:
     if m in ("undirected-edge", "vertex-and-edge"):
         markers.append(EdgeMarker((v0, other)))
     if m == "directional-edge":
-        markers.append(EdgeMarker((v0, other), 1, v0 if z3.is_true(model.eval(wv.head0)) else other))
+        markers.append(EdgeMarker((v0, other), 1, v0 if _true(model, wv.head0) else other))
     return World(rotation, markers, Start(v0, rotation[v0][0]))
 
 
@@ -583,7 +711,7 @@ def decode_pair(model: z3.ModelRef, enc: _PairEncoding) -> tuple[World, World, f
     """The two worlds and the relation R of a model (states named as in the worlds)."""
     a, b = _decode_world(model, enc.A), _decode_world(model, enc.B)
     rel = frozenset(((_name(p[0]), p[1]), (_name(q[0]), q[1])) for (p, q), lit in enc.R.items()
-                    if z3.is_true(model.eval(lit)))
+                    if _true(model, lit))
     return a, b, rel
 
 
@@ -672,6 +800,71 @@ def recheck(marker: str, a: World, b: World, relation: frozenset) -> None:
             raise CheckFailure(f"related states {p} and {q} have different signatures")
 
 
+# -- fixing a given pair (to test the encoding on the thesis figures) ----------------------
+def canonical_labelling(world: World) -> tuple[dict[str, int], dict[str, int]]:
+    """The BFS numbering of the symmetry breaking and, per vertex, the rotation shift making exit 0 canonical."""
+    at, facing = world.start_state()
+    order, shift, queue = {at: 0}, {at: facing}, deque([at])
+    while queue:
+        u = queue.popleft()
+        d = world.degree(u)
+        for i in range(d):
+            w = world.neighbour(u, (i + shift[u]) % d)
+            if w not in order:
+                order[w], shift[w] = len(order), world.index(w, u)
+                queue.append(w)
+    return order, shift
+
+
+def _other_marked(world: World) -> str | None:
+    """The vertex the exit variable e of vertex 0 leads to (head, marked neighbour, far end of the marked edge)."""
+    at = world.start.at
+    for m in world.markers:
+        if isinstance(m, EdgeMarker):
+            return m.between[1] if m.between[0] == at else m.between[0]
+        if m.points_to is not None:
+            return m.points_to
+        if m.at != at:
+            return m.at
+    return None
+
+
+def _fixing_literals(wv: _WorldVars, world: World) -> list[str]:
+    """Literals that pin the variables of ``wv`` to ``world`` (in its canonical labelling)."""
+    order, shift = canonical_labelling(world)
+    lits = []
+    for v, k in order.items():
+        d = world.degree(v)
+        lits.append(wv.deg[k][d])
+        for i in range(d):
+            w = world.neighbour(v, (i + shift[v]) % d)
+            lits += [wv.tv[k, i][order[w]], wv.te[k, i][(world.index(w, v) - shift[w]) % world.degree(w)]]
+    other = _other_marked(world)
+    if wv.e is not None and other is not None:
+        at, d0 = world.start.at, world.degree(world.start.at)
+        lits.append(wv.e[next(i for i in range(d0) if world.neighbour(at, (i + shift[at]) % d0) == other)])
+    if wv.head0 is not None:
+        head = next(m.head for m in world.markers if isinstance(m, EdgeMarker))
+        lits.append(wv.head0 if head == world.start.at else _not(wv.head0))
+    return [x for x in lits if x is not True]
+
+
+def pair_is_model(marker: str, a: World, b: World, planar: bool = False) -> str:
+    """'sat' if the encoding accepts exactly this pair as a counterexample, else 'unsat' (or 'unknown').
+
+    Both worlds must carry the class's markers and a start; the D bound is their
+    largest degree.  Used to test the encoding on the thesis's figure pairs.
+    """
+    dmax = max(w.degree(v) for w in (a, b) for v in w.vertices)
+    enc = _PairEncoding(marker, a.n, b.n, dmax, planar)
+    solver = z3.SolverFor("QF_FD")
+    solver.from_string(enc.b.text())
+    lits = _fixing_literals(enc.A, a) + _fixing_literals(enc.B, b)
+    if any(x is False for x in lits):
+        return "unsat"
+    return str(solver.check([z3.Not(z3.Bool(x[5:-1])) if x.startswith("(not ") else z3.Bool(x) for x in lits]))
+
+
 # -- driver ---------------------------------------------------------------------------
 def size_pairs(max_vertices: int, min_vertices: int = 2) -> list[tuple[int, int]]:
     """Size pairs n_A <= n_B in the order searched: smaller largest world first, then smaller total."""
@@ -682,7 +875,8 @@ def size_pairs(max_vertices: int, min_vertices: int = 2) -> list[tuple[int, int]
 def _validate(marker: str, max_vertices: int, max_degree: int, min_vertices: int) -> None:
     marker_class(marker)
     if not isinstance(max_vertices, int) or max_vertices < 2:
-        raise InvalidInput(f"--max-vertices must be an integer >= 2 (a world has at least 2 vertices), got {max_vertices!r}")
+        raise InvalidInput(f"--max-vertices must be an integer >= 2 (a world has at least 2 vertices), "
+                           f"got {max_vertices!r}")
     if max_vertices > MAX_VERTICES:
         raise InvalidInput(f"--max-vertices {max_vertices} is too large for the solver (at most {MAX_VERTICES})")
     if not isinstance(max_degree, int) or max_degree < 1:
@@ -691,46 +885,58 @@ def _validate(marker: str, max_vertices: int, max_degree: int, min_vertices: int
         raise InvalidInput(f"min_vertices must be between 2 and {max_vertices}, got {min_vertices!r}")
 
 
-def _check_pair(marker, n_a, n_b, dmax, remaining):
-    solver = z3.Solver()
+def _check_pair(marker, n_a, n_b, dmax, remaining, planar=False):
+    started = time.monotonic()
+    enc = _PairEncoding(marker, n_a, n_b, dmax, planar)
+    solver = z3.SolverFor("QF_FD")
     if remaining is not None:
-        solver.set("timeout", max(1, int(remaining * 1000)))
-    enc = _PairEncoding(solver, marker, n_a, n_b, dmax)
+        left = remaining - (time.monotonic() - started)
+        if left <= 0:
+            return z3.unknown, None, enc
+        solver.set("timeout", max(1, int(left * 1000)))
+    solver.from_string(enc.b.text())
     verdict = solver.check()
     return verdict, solver, enc
 
 
 def search(marker: str, max_vertices: int, max_degree: int, timeout: float | None = None,
-           min_vertices: int = 2) -> SearchResult:
+           min_vertices: int = 2, planar: bool = False) -> SearchResult:
     """Look for a counterexample of ``marker`` with at most ``max_vertices`` vertices and degree ``max_degree``.
 
     Size pairs are tried smallest first, so a ``found`` pair is smallest in
     the larger world's size.  ``timeout`` (seconds) bounds the whole search.
+    With ``planar=True`` both worlds must be planar embeddings (genus 0, like
+    the thesis's drawings); by default any orientable embedding is allowed
+    (§3.1.1: "not necessarily a planar surface").
     """
     _validate(marker, max_vertices, max_degree, min_vertices)
     t0 = time.monotonic()
-    result = SearchResult("none", marker, max_vertices, max_degree, 0.0)
+    result = SearchResult("none", marker, max_vertices, max_degree, 0.0, planar=planar)
     for n_a, n_b in size_pairs(max_vertices, min_vertices):
         remaining = None if timeout is None else timeout - (time.monotonic() - t0)
         if remaining is not None and remaining <= 0:
             result.outcome, result.reason = "unknown", "timeout"
             break
-        t1 = time.monotonic()
-        verdict, solver, enc = _check_pair(marker, n_a, n_b, max_degree, remaining)
-        result.checks.append(SizeCheck(n_a, n_b, str(verdict), time.monotonic() - t1))
+        t1, c1 = time.monotonic(), time.process_time()
+        dmax = min(max_degree, n_b - 1)  # a simple graph on n_b vertices has no larger degree
+        verdict, solver, enc = _check_pair(marker, n_a, n_b, dmax, remaining, planar)
+        result.checks.append(SizeCheck(n_a, n_b, str(verdict), time.monotonic() - t1, time.process_time() - c1))
         if verdict == z3.sat:
-            _fill_found(result, marker, solver.model(), enc)
+            _fill_found(result, marker, solver.model(), enc, planar)
             break
         if verdict == z3.unknown:
-            result.outcome, result.reason = "unknown", solver.reason_unknown() or "unknown"
+            why = solver.reason_unknown() if solver is not None else "timeout"
+            result.outcome, result.reason = "unknown", "timeout" if "timeout" in why or "canceled" in why else why
             if remaining is not None:
                 break
     result.seconds = time.monotonic() - t0
     return result
 
 
-def _fill_found(result: SearchResult, marker: str, model, enc) -> None:
+def _fill_found(result: SearchResult, marker: str, model, enc, planar: bool = False) -> None:
     a, b, rel = decode_pair(model, enc)
+    if planar and (a.genus(), b.genus()) != (0, 0):
+        raise CheckFailure(f"decoded worlds have genus {a.genus()} and {b.genus()}, not planar")
     recheck(marker, a, b, rel)
     reach = reachable_relation(a, b)
     recheck(marker, a, b, reach)
@@ -743,12 +949,13 @@ def _fill_found(result: SearchResult, marker: str, model, enc) -> None:
     result.motions, result.perceptions = motions, perceptions
 
 
-def prove(marker: str, max_vertices: int, max_degree: int, timeout: float | None = None) -> ProofReport:
+def prove(marker: str, max_vertices: int, max_degree: int, timeout: float | None = None,
+          planar: bool = False) -> ProofReport:
     """Show there is no counterexample for ``marker`` within the bounds (UNSAT for every size pair)."""
     t0 = time.monotonic()
-    res = search(marker, max_vertices, max_degree, timeout)
+    res = search(marker, max_vertices, max_degree, timeout, planar=planar)
     outcome = {"none": "proved", "found": "counterexample", "unknown": "unknown"}[res.outcome]
     bounds = {"max_vertices": max_vertices, "max_degree": max_degree, "min_vertices": 2,
-              "size_pairs": len(size_pairs(max_vertices))}
+              "size_pairs": len(size_pairs(max_vertices)), "planar_only": planar}
     return ProofReport(outcome, marker, bounds, SYMMETRY_BREAKING, f"z3 {z3.get_version_string()}",
                        time.monotonic() - t0, res)

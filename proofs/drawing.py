@@ -1,0 +1,305 @@
+"""Draw worlds and world pairs like the thesis figures, as hand-written SVG (Figures 3.3, 3.4, 3.21, 6.1).
+
+The thesis draws each world as a plane graph with exit indices at the edge
+ends (Figure 3.1), a marked vertex as a filled disc, a directional vertex
+marker as an arrow towards the exit it points at (Figure 3.2(c)), an edge
+marker as a bar across the edge (Figure 6.1(a)) with an arrowhead towards its
+head (Figure 6.1(b)), and the robot's start at ``v_0`` facing an edge.
+
+Layout: when the rotation system is planar (genus 0, §3.1.1) the vertices
+are placed with networkx's straight-line drawing of *that* embedding and
+mirrored if needed so that exits run clockwise on screen, as in the thesis;
+otherwise (the embedding lives on a torus or higher surface) a spring layout
+is used and only the exit labels carry the rotation.  No plotting library is
+needed: the SVG is written by hand.
+
+>>> from topomark.spec.world import World, Start
+>>> w = World({"a": ["b", "c"], "b": ["c", "a"], "c": ["a", "b"]}, start=Start("a", "b"))
+>>> world_svg(w).startswith("<svg")
+True
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Sequence
+from xml.sax.saxutils import escape
+
+import networkx as nx
+
+from topomark.spec.errors import InvalidInput
+from topomark.spec.world import World
+
+__all__ = ["layout", "world_svg", "pair_svg", "save_pair", "clockwise_ok"]
+
+SIZE = 320          # drawing area of one world (px)
+MARGIN = 40
+RADIUS = 11         # vertex radius
+
+
+def _graph(world: World) -> nx.Graph:
+    g = nx.Graph()
+    g.add_nodes_from(world.vertices)
+    g.add_edges_from(world.edges())
+    return g
+
+
+def _faces(world: World) -> list[list[str]]:
+    """Faces of the embedding as vertex cycles (trace: from dart (v, i) go to (w, j + 1))."""
+    seen, faces = set(), []
+    for dart in world.darts():
+        face, d = [], dart
+        while d not in seen:
+            seen.add(d)
+            face.append(d[0])
+            w, j = world.target(d)
+            d = (w, (j + 1) % world.degree(w))
+        if face:
+            faces.append(face)
+    return faces
+
+
+def _tutte_positions(world: World) -> dict[str, tuple[float, float]] | None:
+    """Tutte's barycentric drawing with the longest face as a convex outer polygon (planar worlds only)."""
+    import numpy as np
+
+    outer = max(_faces(world), key=len)
+    if len(set(outer)) != len(outer) or len(outer) < 3:
+        return None
+    pos = {v: (math.cos(2 * math.pi * k / len(outer)), math.sin(2 * math.pi * k / len(outer)))
+           for k, v in enumerate(outer)}
+    inner = [v for v in world.vertices if v not in pos]
+    if inner:
+        idx = {v: k for k, v in enumerate(inner)}
+        m = np.zeros((len(inner), len(inner)))
+        rhs = np.zeros((len(inner), 2))
+        for v in inner:
+            m[idx[v], idx[v]] = world.degree(v)
+            for w in world.rotation[v]:
+                if w in idx:
+                    m[idx[v], idx[w]] -= 1
+                else:
+                    rhs[idx[v]] += pos[w]
+        try:
+            sol = np.linalg.solve(m, rhs)
+        except np.linalg.LinAlgError:
+            return None
+        pos.update({v: (float(sol[idx[v], 0]), float(sol[idx[v], 1])) for v in inner})
+    return pos
+
+
+def _crossing_free(world: World, pos) -> bool:
+    """No two vertices nearly coincide and no two non-adjacent edges cross."""
+    pts = list(pos.values())
+    if any(math.dist(p, q) < 1e-3 for p, q in zip(pts, pts[1:])) or \
+            len({(round(x, 4), round(y, 4)) for x, y in pts}) < len(pts):
+        return False
+
+    def orient(a, b, c):
+        return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+
+    edges = list(world.edges())
+    for (a, b), (c, d) in ((e, f) for k, e in enumerate(edges) for f in edges[k + 1:]):
+        if {a, b} & {c, d}:
+            continue
+        p, q, r, t = pos[a], pos[b], pos[c], pos[d]
+        if orient(p, q, r) * orient(p, q, t) < 0 and orient(r, t, p) * orient(r, t, q) < 0:
+            return False
+    return True
+
+
+def _planar_candidates(world: World) -> list[dict[str, tuple[float, float]]]:
+    """Straight-line drawings of a planar rotation system: Tutte's if it is clean, then networkx's grid one."""
+    if world.genus() != 0 or world.n < 3:
+        return []
+    out = []
+    tutte = _tutte_positions(world)
+    if tutte is not None and _crossing_free(world, tutte):
+        out.append(tutte)
+    grid = _grid_positions(world)
+    return out + ([grid] if grid is not None else [])
+
+
+def _grid_positions(world: World) -> dict[str, tuple[float, float]] | None:
+    emb = nx.PlanarEmbedding()
+    emb.set_data({v: list(ns) for v, ns in world.rotation.items()})
+    try:
+        emb.check_structure()
+        pos = nx.combinatorial_embedding_to_pos(emb)
+    except (nx.NetworkXException, KeyError):
+        return None
+    return {v: (float(x), float(y)) for v, (x, y) in pos.items()}
+
+
+def clockwise_ok(world: World, pos: dict[str, tuple[float, float]]) -> bool:
+    """True if, in screen coordinates (y down), every vertex's exits appear clockwise in index order."""
+    for v, ns in world.rotation.items():
+        if len(ns) < 3:
+            continue
+        x0, y0 = pos[v]
+        angles = [math.atan2(pos[w][1] - y0, pos[w][0] - x0) for w in ns]
+        order = sorted(range(len(ns)), key=lambda i: angles[i])
+        if any(abs(angles[order[k + 1]] - angles[order[k]]) < 1e-6 for k in range(len(ns) - 1)):
+            return False  # two exits drawn on top of each other
+        k = order.index(0)
+        if order[k:] + order[:k] != list(range(len(ns))):
+            return False
+    return True
+
+
+def _fit(pos: dict, size: float) -> dict[str, tuple[float, float]]:
+    xs = [p[0] for p in pos.values()]
+    ys = [p[1] for p in pos.values()]
+    span = max(max(xs) - min(xs), max(ys) - min(ys), 1e-9)
+    scale = (size - 2 * MARGIN) / span
+    return {v: (MARGIN + (x - min(xs)) * scale, MARGIN + (y - min(ys)) * scale) for v, (x, y) in pos.items()}
+
+
+def layout(world: World, size: float = SIZE) -> tuple[dict[str, tuple[float, float]], bool]:
+    """Vertex positions in a ``size`` square and whether they show the rotation system faithfully."""
+    for pos in _planar_candidates(world):
+        for flip in (False, True):
+            cand = _fit({v: (x, -y if flip else y) for v, (x, y) in pos.items()}, size)
+            if clockwise_ok(world, cand):
+                return cand, True
+    if world.n == 2:
+        a, b = world.vertices
+        return {a: (MARGIN, size / 2), b: (size - MARGIN, size / 2)}, True
+    raw = nx.spring_layout(_graph(world), seed=7)
+    cand = _fit({v: (float(x), float(y)) for v, (x, y) in raw.items()}, size)
+    return cand, clockwise_ok(world, cand)
+
+
+def _along(p, q, t: float, side: float = 0.0):
+    """The point a fraction t from p to q, shifted ``side`` px to the right of the direction."""
+    dx, dy = q[0] - p[0], q[1] - p[1]
+    length = math.hypot(dx, dy) or 1.0
+    nx_, ny_ = -dy / length, dx / length
+    return (p[0] + dx * t + nx_ * side, p[1] + dy * t + ny_ * side)
+
+
+def _arrow(p, q, colour: str, width: float = 2.5) -> list[str]:
+    """A line p -> q with an arrowhead at q."""
+    dx, dy = q[0] - p[0], q[1] - p[1]
+    length = math.hypot(dx, dy) or 1.0
+    ux, uy = dx / length, dy / length
+    left = (q[0] - 8 * ux + 4 * uy, q[1] - 8 * uy - 4 * ux)
+    right = (q[0] - 8 * ux - 4 * uy, q[1] - 8 * uy + 4 * ux)
+    return [f'<line x1="{p[0]:.1f}" y1="{p[1]:.1f}" x2="{q[0]:.1f}" y2="{q[1]:.1f}" stroke="{colour}" '
+            f'stroke-width="{width}"/>',
+            f'<polygon points="{q[0]:.1f},{q[1]:.1f} {left[0]:.1f},{left[1]:.1f} {right[0]:.1f},{right[1]:.1f}" '
+            f'fill="{colour}"/>']
+
+
+def _edges(world: World, pos) -> list[str]:
+    out = []
+    for u, v in world.edges():
+        (x1, y1), (x2, y2) = pos[u], pos[v]
+        out.append(f'<line x1="{x1:.1f}" y1="{y1:.1f}" x2="{x2:.1f}" y2="{y2:.1f}" stroke="#444" stroke-width="1.5"/>')
+    return out
+
+
+def _exit_labels(world: World, pos) -> list[str]:
+    out = []
+    for v, ns in world.rotation.items():
+        for i, w in enumerate(ns):
+            x, y = _along(pos[v], pos[w], 0.0, 0.0)
+            dist = math.dist(pos[v], pos[w]) or 1.0
+            lx, ly = _along(pos[v], pos[w], min(0.45, (RADIUS + 11) / dist), 7.0)
+            out.append(f'<text x="{lx:.1f}" y="{ly + 3:.1f}" font-size="10" fill="#1f4e9e" '
+                       f'text-anchor="middle">{i}</text>')
+    return out
+
+
+def _edge_markers(world: World, pos) -> list[str]:
+    out = []
+    for m in world.markers:
+        if not hasattr(m, "between"):
+            continue
+        u, v = m.between
+        p, q = pos[u], pos[v]
+        a, b = _along(p, q, 0.5, -7.0), _along(p, q, 0.5, 7.0)
+        out.append(f'<line x1="{a[0]:.1f}" y1="{a[1]:.1f}" x2="{b[0]:.1f}" y2="{b[1]:.1f}" stroke="#c0392b" '
+                   f'stroke-width="4"/>')
+        if m.count > 1:
+            c = _along(p, q, 0.5, 14.0)
+            out.append(f'<text x="{c[0]:.1f}" y="{c[1]:.1f}" font-size="10" fill="#c0392b">x{m.count}</text>')
+        if m.head is not None:
+            tail, head = (u, v) if m.head == v else (v, u)
+            out += _arrow(_along(pos[tail], pos[head], 0.5), _along(pos[tail], pos[head], 0.68), "#c0392b")
+    return out
+
+
+def _vertices(world: World, pos) -> list[str]:
+    out = []
+    for v in world.vertices:
+        x, y = pos[v]
+        mark = world.vertex_mark(v)
+        fill = "#fff" if mark is None else "#222"
+        out.append(f'<circle cx="{x:.1f}" cy="{y:.1f}" r="{RADIUS}" fill="{fill}" stroke="#222" stroke-width="1.5"/>')
+        if mark is not None and mark.count > 1:
+            out.append(f'<circle cx="{x:.1f}" cy="{y:.1f}" r="{RADIUS + 4}" fill="none" stroke="#222" '
+                       f'stroke-width="1.5"/>')
+            out.append(f'<text x="{x + RADIUS + 6:.1f}" y="{y + RADIUS + 10:.1f}" font-size="10">x{mark.count}</text>')
+        if mark is not None and mark.head is not None:
+            w = world.neighbour(v, mark.head)
+            out += _arrow(pos[v], _along(pos[v], pos[w], min(0.4, 34 / (math.dist(pos[v], pos[w]) or 1))), "#e67e22")
+        colour = "#fff" if mark is not None else "#222"
+        out.append(f'<text x="{x:.1f}" y="{y + 3.5:.1f}" font-size="9" fill="{colour}" '
+                   f'text-anchor="middle">{escape(v)}</text>')
+    return out
+
+
+def _start(world: World, pos) -> list[str]:
+    if world.start is None:
+        return []
+    v, w = world.start.at, world.start.facing
+    p = pos[v]
+    dist = math.dist(p, pos[w]) or 1.0
+    a = _along(p, pos[w], (RADIUS + 2) / dist, -10.0)
+    b = _along(p, pos[w], min(0.45, (RADIUS + 26) / dist), -10.0)
+    return _arrow(a, b, "#27ae60", 2.0) + [
+        f'<text x="{a[0]:.1f}" y="{a[1] - 4:.1f}" font-size="9" fill="#27ae60">start</text>']
+
+
+def _world_group(world: World, title: str, dx: float, size: float) -> list[str]:
+    pos, faithful = layout(world, size)
+    pos = {v: (x + dx, y + 18) for v, (x, y) in pos.items()}
+    note = "" if faithful else " (non-planar embedding: exit labels give the rotation)"
+    parts = [f'<text x="{dx + 8:.1f}" y="16" font-size="12" font-weight="bold">{escape(title)}</text>',
+             f'<text x="{dx + 8:.1f}" y="{size + 30:.1f}" font-size="9" fill="#666">n={world.n}, m={world.m}, '
+             f'genus {world.genus()}{escape(note)}</text>']
+    return parts + _edges(world, pos) + _edge_markers(world, pos) + _exit_labels(world, pos) + \
+        _vertices(world, pos) + _start(world, pos)
+
+
+def _svg(body: list[str], width: float, height: float) -> str:
+    head = (f'<svg xmlns="http://www.w3.org/2000/svg" width="{width:.0f}" height="{height:.0f}" '
+            f'viewBox="0 0 {width:.0f} {height:.0f}" font-family="sans-serif">')
+    return "\n".join([head, f'<rect width="100%" height="100%" fill="white"/>'] + body + ["</svg>"]) + "\n"
+
+
+def world_svg(world: World, title: str = "", size: float = SIZE) -> str:
+    """One world as an SVG document."""
+    return _svg(_world_group(world, title, 0.0, size), size, size + 40)
+
+
+def pair_svg(a: World, b: World, titles: Sequence[str] = ("(a)", "(b)"), caption: str = "",
+             size: float = SIZE) -> str:
+    """Two worlds side by side with an optional caption (e.g. the shared M and P), as in Figure 3.4."""
+    body = _world_group(a, titles[0], 0.0, size) + _world_group(b, titles[1], size + 20, size)
+    height = size + 40
+    lines = [caption[i:i + 110] for i in range(0, len(caption), 110)]
+    for k, line in enumerate(lines):
+        body.append(f'<text x="8" y="{height + 14 * k + 4:.1f}" font-size="10">{escape(line)}</text>')
+    return _svg(body, 2 * size + 20, height + 14 * len(lines) + 8)
+
+
+def save_pair(a: World, b: World, path: str | Path, **kwargs) -> Path:
+    """Write :func:`pair_svg` to ``path`` (``.svg``; PNG would need matplotlib, which topomark avoids)."""
+    path = Path(path)
+    if path.suffix.lower() != ".svg":
+        raise InvalidInput(f"cannot draw to {str(path)!r}: only .svg output is supported (no plotting library)")
+    path.write_text(pair_svg(a, b, **kwargs))
+    return path
