@@ -45,15 +45,17 @@ from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 from typing import Any, Callable, Iterable, Iterator
 
+from topomark.proofs.bisim import distinguishing_sequence
 from topomark.proofs.enumerate import canonical_form, embedded_worlds
 from topomark.proofs.markerclass import marker_class
 from topomark.spec.errors import CheckFailure
 from topomark.spec.isomorphism import find_isomorphism
+from topomark.spec.marker import VertexMarker
 from topomark.spec.robot import State, sense, step
 from topomark.spec.world import World
 
-__all__ = ["Machine", "machine", "minimise", "language_code", "language_digest", "SizeRow", "CensusResult",
-           "census", "placement"]
+__all__ = ["Machine", "machine", "minimise", "representatives", "language_code", "language_digest", "SizeRow",
+           "CensusResult", "census", "placement", "stderr_progress"]
 
 Member = tuple[int, int, int, int, bytes]  # (n, m, world index, placement index, iso key of the marked world)
 
@@ -69,13 +71,30 @@ class Machine:
     out: tuple[str, ...]
 
 
-def machine(world: World) -> Machine:
-    """The robot's Moore machine on ``world`` (markers included, start ignored)."""
-    states = tuple(world.darts())
-    index = {s: k for k, s in enumerate(states)}
-    succ = tuple(tuple(index[step(world, s, l)] for l in range(world.degree(s[0]))) for s in states)
-    out = tuple(str(sense(world, s)) for s in states)
-    return Machine(states, index, succ, out)
+def machine(world: World, base: Machine | None = None) -> Machine:
+    """The robot's Moore machine on ``world`` (markers included, start ignored).
+
+    ``base`` — the machine of the same rotation system without markers — is
+    reused for the transitions; only the outputs at marked vertices are recomputed.
+    """
+    if base is None:
+        states = tuple(world.darts())
+        index = {s: k for k, s in enumerate(states)}
+        succ = tuple(tuple(index[step(world, s, l)] for l in range(world.degree(s[0]))) for s in states)
+        return Machine(states, index, succ, tuple(str(sense(world, s)) for s in states))
+    out = list(base.out)
+    for v in _marked_vertices(world):
+        for i in range(world.degree(v)):
+            out[base.index[(v, i)]] = str(sense(world, (v, i)))
+    return Machine(base.states, base.index, base.succ, tuple(out))
+
+
+def _marked_vertices(world: World) -> set[str]:
+    """Vertices whose signatures a marker can change: marked vertices and ends of marked edges."""
+    marked: set[str] = set()
+    for m in world.markers:
+        marked.update((m.at,) if isinstance(m, VertexMarker) else m.between)
+    return marked
 
 
 def _renumber(keys: Iterable[Any]) -> list[int]:
@@ -95,11 +114,24 @@ def minimise(mach: Machine) -> list[int]:
         block, count = new, new_count
 
 
-def language_code(mach: Machine, block: list[int], start: int) -> tuple:
-    """The minimal machine reachable from ``start``, blocks numbered breadth-first in input order."""
+def representatives(block: list[int]) -> dict[int, int]:
+    """One state of every block."""
     rep: dict[int, int] = {}
     for s, b in enumerate(block):
         rep.setdefault(b, s)
+    return rep
+
+
+def language_code(mach: Machine, block: list[int], start: int, rep: dict[int, int] | None = None) -> tuple:
+    """The minimal machine reachable from ``start``, blocks numbered breadth-first in input order.
+
+    Equal for two placements iff their start states are Moore-equivalent:
+    the quotient by equivalence is the minimal machine, and a breadth-first
+    numbering in input order is a canonical labelling of a deterministic
+    machine whose states are all reachable from the initial one.
+    """
+    if rep is None:
+        rep = representatives(block)
     number = {block[start]: 0}
     todo = deque([block[start]])
     code: list[Any] = []
@@ -117,24 +149,60 @@ def language_code(mach: Machine, block: list[int], start: int) -> tuple:
 
 
 def language_digest(code: tuple) -> bytes:
+    """A 128-bit BLAKE2b digest of a code (see the module docstring on collisions)."""
     return hashlib.blake2b(repr(code).encode(), digest_size=16).digest()
 
 
 # -- one chunk of worlds (runs in a worker process) ----------------------------------
-def _world_languages(class_name: str, index: int, world: World) -> Iterator[tuple[bytes, Member]]:
-    """(language digest, member) for every placement of the class on ``world``."""
+def _layouts(class_name: str, world: World) -> Iterator[tuple[int, tuple, list[State]]]:
+    """(index of its first placement, markers, starts) per marker layout, in ``placements`` order.
+
+    :meth:`MarkerClass.placements` yields, for each vertex v and each layout
+    at v, one world per facing in rotation order; we list each layout once
+    with its starts ``(v, i)`` instead (``tests/test_census.py`` checks that
+    the order and the worlds agree with ``placements``).
+    """
     mc = marker_class(class_name)
-    layouts: dict[tuple, tuple[Machine, list[int], bytes]] = {}
-    for k, placed in enumerate(mc.placements(world)):
-        key = tuple(sorted(map(repr, placed.markers)))
-        if key not in layouts:
-            marked = placed.with_start(None)
-            mach = machine(marked)
-            iso = language_digest(canonical_form(marked, markers=True))
-            layouts[key] = (mach, minimise(mach), iso)
-        mach, block, iso = layouts[key]
-        code = language_code(mach, block, mach.index[placed.start_state()])
-        yield language_digest(code), (world.n, world.m, index, k, iso)
+    k = 0
+    for v in world.vertices:
+        for markers in mc._layouts(world, v):
+            starts = [(v, i) for i in range(world.degree(v))]
+            yield k, tuple(markers), starts
+            k += len(starts)
+
+
+def _marker_key(markers: Iterable) -> frozenset:
+    """The layout as a set (an edge marker's two spellings (u, v) and (v, u) are one layout)."""
+    return frozenset((m.at, m.count, m.points_to) if isinstance(m, VertexMarker)
+                     else (frozenset(m.between), m.count, m.head) for m in markers)
+
+
+def _world_languages(class_name: str, index: int, world: World) -> Iterator[tuple[bytes, Member]]:
+    """(language digest, member) for every placement of the class on ``world``.
+
+    A member's iso key identifies its marked world up to extended isomorphism:
+    the digest of its canonical form, or — when the class has a single layout
+    on this world — the world's index (worlds of the enumeration are pairwise
+    non-isomorphic, so marked worlds on different ones never are).
+    """
+    layouts = list(_layouts(class_name, world))
+    single = len({_marker_key(markers) for _, markers, _ in layouts}) == 1
+    base = machine(world)
+    cache: dict[frozenset, tuple] = {}
+    for k, markers, starts in layouts:
+        key = _marker_key(markers)
+        if key not in cache:
+            marked = World(world.rotation, markers)
+            mach = machine(marked, base)
+            iso = b"#%d" % index if single else language_digest(canonical_form(marked, markers=True))
+            block = minimise(mach)
+            cache[key] = (mach, block, representatives(block), iso, {})
+        mach, block, rep, iso, digests = cache[key]
+        for j, start in enumerate(starts):
+            b = block[mach.index[start]]
+            if b not in digests:  # equivalent starts have the same language
+                digests[b] = language_digest(language_code(mach, block, mach.index[start], rep))
+            yield digests[b], (world.n, world.m, index, k + j, iso)
 
 
 def _insert(best: list[Member], member: Member) -> None:
@@ -213,7 +281,7 @@ def _chunks(class_name: str, worlds: list[World], size: int) -> Iterator[tuple[s
 def _merge(results: Iterable, progress: Callable[[str], None] | None, total: int):
     langs: dict[bytes, list] = {}
     sizes: dict[int, list[int]] = {}
-    done = 0
+    done, last = 0, time.perf_counter()
     for chunk_langs, chunk_sizes in results:
         for digest, (mask, members) in chunk_langs.items():
             entry = langs.setdefault(digest, [0, []])
@@ -225,8 +293,10 @@ def _merge(results: Iterable, progress: Callable[[str], None] | None, total: int
             tally[0] += w
             tally[1] += p
             done += w
-        if progress:
+        now = time.perf_counter()
+        if progress and (done == total or now - last >= 2.0):
             progress(f"census: {done}/{total} worlds, {len(langs)} languages")
+            last = now
     return langs, sizes
 
 
@@ -242,25 +312,36 @@ def _rows(langs: dict[bytes, list], sizes: dict[int, list[int]], min_n: int, max
     return tuple(rows)
 
 
-def _smallest(langs: dict[bytes, list], worlds: list[World], class_name: str) -> tuple[World, World] | None:
-    """The ambiguous class whose two smallest members are smallest (max size, then min size); re-checked."""
-    pairs = [best for _, best in langs.values() if len(best) == 2]
-    if not pairs:
-        return None
-    best = min(pairs, key=lambda b: (b[1][0], b[1][1], b[0][0], b[0][1], b[0][2:4], b[1][2:4]))
+def _recheck(best: list[Member], worlds: list[World], class_name: str) -> tuple[World, World]:
+    """Rebuild the two members of an ambiguous class and re-check them with bisim and find_isomorphism."""
     a, b = (placement(worlds[mem[2]], class_name, mem[3]) for mem in best)
-    from topomark.proofs.bisim import distinguishing_sequence  # late import: bisim is independent of the census
     if distinguishing_sequence(a, b) is not None or find_isomorphism(a, b, markers=True).isomorphic:
-        raise CheckFailure(f"census: the {class_name} counterexample candidate fails the independent re-check")
+        raise CheckFailure(f"census: a {class_name} counterexample candidate fails the independent re-check")
     return a, b
 
 
+def _smallest(langs: dict[bytes, list], worlds: list[World], class_name: str,
+              verify_all: bool) -> tuple[World, World] | None:
+    """The ambiguous class whose two smallest members are smallest (larger size, then smaller); re-checked."""
+    pairs = [best for _, best in langs.values() if len(best) == 2]
+    if verify_all:
+        for best in pairs:
+            _recheck(best, worlds, class_name)
+    if not pairs:
+        return None
+    best = min(pairs, key=lambda b: (b[1][0], b[1][1], b[0][0], b[0][1], b[0][2:4], b[1][2:4]))
+    return _recheck(best, worlds, class_name)
+
+
 def census(class_name: str, max_vertices: int, max_degree: int, jobs: int = 1, min_vertices: int = 2,
-           progress: Callable[[str], None] | None = None, chunk_size: int = 200) -> CensusResult:
+           progress: Callable[[str], None] | None = None, chunk_size: int = 200,
+           verify_all: bool = False) -> CensusResult:
     """Group every placement of ``class_name`` on worlds of ``min..max_vertices`` vertices by language.
 
     The result does not depend on ``jobs`` (chunks are merged in order and
-    the kept members are minima of a total order).
+    the kept members are minima of a total order).  The smallest
+    counterexample is always re-checked independently; with ``verify_all``
+    the two smallest members of every ambiguous class are.
     """
     marker_class(class_name)  # validates the name
     t0 = time.perf_counter()
@@ -272,7 +353,7 @@ def census(class_name: str, max_vertices: int, max_degree: int, jobs: int = 1, m
     else:
         langs, sizes = _merge(map(_chunk, jobs_list), progress, len(worlds))
     rows = _rows(langs, sizes, max(min_vertices, 2), max_vertices)
-    pair = _smallest(langs, worlds, class_name)
+    pair = _smallest(langs, worlds, class_name, verify_all)
     return CensusResult(class_name, max_vertices, max_degree, rows, pair, time.perf_counter() - t0)
 
 

@@ -30,6 +30,7 @@ Examples
 from __future__ import annotations
 
 import itertools
+import warnings
 from collections import Counter, deque
 from typing import Iterator
 
@@ -65,7 +66,9 @@ def _extend(smaller: list[nx.Graph], max_degree: int) -> list[nx.Graph]:
             for nbrs in itertools.combinations(free, k):
                 h = g.copy()
                 h.add_edges_from((n, v) for v in nbrs)
-                key = nx.weisfeiler_lehman_graph_hash(h, iterations=3)
+                with warnings.catch_warnings():  # networkx 3.5 notes its hash values changed; we only bucket
+                    warnings.simplefilter("ignore", UserWarning)
+                    key = nx.weisfeiler_lehman_graph_hash(h, iterations=3)
                 bucket = buckets.setdefault(key, [])
                 if not any(nx.is_isomorphic(h, other) for other in bucket):
                     bucket.append(h)
@@ -171,12 +174,21 @@ def _dart_key(world: World, dart: tuple[str, int], markers: bool) -> tuple[int, 
 
 
 def _anchors(world: World, markers: bool) -> list[tuple[str, int]]:
-    """The darts the canonical form is minimised over: the rarest dart class (isomorphism invariant)."""
+    """The darts the canonical form is minimised over (an isomorphism-invariant choice).
+
+    With a start: the start dart alone.  Otherwise: the rarest vertex class
+    (ties broken by the class key), then the rarest dart class at those vertices.
+    """
     if world.start is not None:
         return [world.start_state()]
+    vclasses: dict[tuple[int, ...], list[str]] = {}
+    for v in world.vertices:
+        vclasses.setdefault(_vertex_key(world, v, markers), []).append(v)
+    best_v = min(vclasses, key=lambda k: (len(vclasses[k]), k))
     classes: dict[tuple[int, ...], list[tuple[str, int]]] = {}
-    for dart in world.darts():
-        classes.setdefault(_dart_key(world, dart, markers), []).append(dart)
+    for v in vclasses[best_v]:
+        for i in range(world.degree(v)):
+            classes.setdefault(_dart_key(world, (v, i), markers), []).append((v, i))
     best = min(classes, key=lambda k: (len(classes[k]), k))
     return classes[best]
 

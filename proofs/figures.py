@@ -97,10 +97,8 @@ def figure_3_3_cycles() -> tuple[World, World, World]:
 
 
 def _wheels(directional: bool) -> tuple[World, World]:
-    try:
-        from topomark.reference.generators import wheel_pair, wheel_pair_directional
-    except ImportError:  # pragma: no cover - the generators module is part of the package
-        raise
+    from topomark.reference.generators import wheel_pair, wheel_pair_directional
+
     return wheel_pair_directional() if directional else wheel_pair()
 
 
