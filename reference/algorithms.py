@@ -8,8 +8,11 @@ like :class:`~topomark.reference.lighthouse.LighthouseExplorer` (Algorithm 3.1,
 
 from __future__ import annotations
 
+from .enhancements import EXPLORERS
 from .lighthouse import LighthouseExplorer
 
 __all__ = ["ALGORITHMS"]
 
-ALGORITHMS: dict[str, type] = {"basic": LighthouseExplorer}
+ALGORITHMS: dict[str, type] = {"basic": LighthouseExplorer, **EXPLORERS}
+"""``basic`` (Algorithm 3.1) and the Chapter 4 enhancements: ``enh1``, ``enh2``, ``enh3``, ``enh4``,
+``enh5-d1``, ``enh5-d2``, ``enh3+4``, ``enh3+5`` (see :mod:`topomark.reference.enhancements`)."""

@@ -20,7 +20,7 @@ from topomark.spec.signature import Signature
 
 __all__ = ["Robot", "PURPOSES"]
 
-PURPOSES = ("travel", "new", "validation", "retrace", "other")
+PURPOSES = ("travel", "new", "validation", "retrace", "expansion", "other")
 
 
 class Robot:

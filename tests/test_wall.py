@@ -17,7 +17,7 @@ from topomark.reference.robot import Robot
 from topomark.reference.simulator import Simulator
 
 REFERENCE = Path(__file__).resolve().parents[1] / "reference"
-EXPLORER_MODULES = ["lighthouse.py", "policies.py", "robot.py"]
+EXPLORER_MODULES = ["lighthouse.py", "policies.py", "robot.py", "enhancements.py"]
 ALLOWED = {
     "__future__", "dataclasses", "typing", "collections",
     "topomark.spec.signature", "topomark.spec.mapstate", "topomark.spec.errors",
