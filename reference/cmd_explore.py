@@ -80,6 +80,7 @@ def _table(o, started: float) -> str:
         ("upper bound (3.1)+(3.2)", o.upper_bound),
         ("  travel to v_k", o.by_purpose.get("travel", 0)), ("  new edges", o.by_purpose.get("new", 0)),
         ("  validation", o.by_purpose.get("validation", 0)), ("  retrace", o.by_purpose.get("retrace", 0)),
+        ("  expansion (Chapter 4 signatures)", o.by_purpose.get("expansion", 0)),
         ("iterations (non-loop + loop)", f"{o.iterations} ({o.nonloop_iterations} + {o.loop_iterations})"),
         ("hypotheses (rejected / confirmed)", f"{o.hypotheses} ({o.hypotheses_rejected} / {o.hypotheses_confirmed})"),
         ("checks passed", o.checks), ("wall time", f"{time.monotonic() - started:.2f} s"),
