@@ -100,11 +100,14 @@ def check_I2(S: PartialMap, world: World, phi: Witness) -> Violation | None:
     U and unexplored *darts* leaving G_s.  The entry (v, i) must name exit
     ``(i + r_v) mod deg`` of φ(v) — the edge-index condition.
     """
-    counts = Counter(S.unexplored)
-    for dart, k in counts.items():
+    for dart in S.unexplored:
+        if not (isinstance(dart, tuple) and len(dart) == 2 and all(isinstance(x, int) for x in dart)):
+            return Violation("I-2", f"U entry {dart!r}", "a dart of S: a (vertex, exit) pair of integers",
+                             f"{type(dart).__name__} {dart!r}")
         v, i = dart
         if not (0 <= v < S.n and 0 <= i < S.degree(v)):
             return Violation("I-2", f"U entry {dart}", "a dart of S", "no such vertex or exit")
+    for dart, k in Counter(S.unexplored).items():
         if k > 1:
             return Violation("I-2", f"U entry {dart}", "listed once", f"listed {k} times")
     explored = explored_world_darts(S, phi)
@@ -145,8 +148,10 @@ class IncrementalInvariants:
     the two map darts whose images are the two ends of one world edge, and a
     non-loop edge maps its new vertex to the far end of that world edge, a
     world vertex not yet in G_s, with the same degree and marks.  I-2 is then
-    a comparison of U's images with the maintained set of unexplored world
-    darts leaving G_s.  Each update costs O(change + |U|) instead of O(n + m).
+    a set comparison of U with the maintained preimage under φ of the
+    unexplored world darts leaving G_s (U must list each exactly once); on a
+    mismatch :func:`check_I2` names the fault.  Each update costs
+    O(change + |U|) instead of O(n + m).
 
     Equivalence with :func:`check_I1`/:func:`check_I2` on append-only maps is
     tested on every explorer run in ``tests/test_checker.py``; the final
@@ -160,6 +165,7 @@ class IncrementalInvariants:
         self.r: dict[int, int] = {}
         self.inv: dict[str, int] = {}
         self.open: set[Dart] = set()
+        self.open_map: set[MapDart] = set()  # the preimage of ``open`` under the correspondence
         self.degrees: dict[int, int] = {}
         self.pos = 0
         self._anchor = (v0, x0, (k0 - i0))
@@ -175,6 +181,7 @@ class IncrementalInvariants:
                              f"degree {d}")
         self.f[v], self.r[v], self.inv[x] = x, r % d, v
         self.open.update((x, k) for k in range(d))
+        self.open_map.update((v, i) for i in range(d))
         return self._marks(v)
 
     def _marks(self, v: int) -> Violation | None:
@@ -208,6 +215,7 @@ class IncrementalInvariants:
                              f"map dart {b} is world dart {self.image(b)}", "the edge is indexed or placed wrongly")
         self.open.discard((x, k))
         self.open.discard((y, j))
+        self.open_map.difference_update((a, b))
         return None
 
     def update(self) -> Violation | None:
@@ -232,26 +240,20 @@ class IncrementalInvariants:
         return self._check_u()
 
     def _check_u(self) -> Violation | None:
-        seen: dict[Dart, MapDart] = {}
-        for dart in self.S.unexplored:
-            v, i = dart
-            if not (0 <= v < self.S.n and 0 <= i < self.S.degree(v)):
-                return Violation("I-2", f"U entry {dart}", "a dart of S", "no such vertex or exit")
-            img = self.image(dart)
-            if img in seen:
-                return Violation("I-2", f"U entry {dart}", "listed once", "listed 2 times")
-            if img not in self.open:
-                w = self.world.neighbour(*img)
-                return Violation("I-2", f"U entry {dart}", "an unexplored edge",
-                                 f"world dart {img} (edge {img[0]!r}-{w!r}) is already explored in S",
-                                 "an explored edge was left in U")
-            seen[img] = dart
-        if len(seen) != len(self.open):
-            dart = min(self.open - set(seen), key=str)
-            w = self.world.neighbour(*dart)
-            return Violation("I-2", f"world dart {dart}",
-                             f"an entry in U (the edge {dart[0]!r}-{w!r} is unexplored)", "none")
-        return None
+        U = self.S.unexplored
+        try:
+            listed = set(U)
+        except TypeError:  # an entry that is not a dart at all
+            return self._diagnose_u()
+        if len(listed) == len(U) and listed == self.open_map:
+            return None  # U lists each open dart exactly once: I-2 holds
+        return self._diagnose_u()
+
+    def _diagnose_u(self) -> Violation:
+        """U is not the open darts listed once: name the fault as the full predicate does."""
+        found = check_I2(self.S, self.world, self.phi())
+        return found or Violation("I-2", "U", f"the {len(self.open_map)} open darts of S, each listed once",
+                                  f"{len(self.S.unexplored)} entries", "the incremental and full checks disagree")
 
     def phi(self) -> Witness:
         return Witness(dict(self.f), dict(self.r))

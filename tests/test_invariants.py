@@ -18,7 +18,8 @@ import pytest
 
 from topomark.spec.errors import Violation
 from topomark.spec.invariants import (
-    check_I1, check_I2, check_invariants, correspondence, explored_world_darts, lighthouse_anchor,
+    IncrementalInvariants, check_I1, check_I2, check_invariants, correspondence, explored_world_darts,
+    lighthouse_anchor,
 )
 from topomark.spec.mapstate import PartialMap
 from topomark.spec.marker import VertexMarker
@@ -153,6 +154,32 @@ def test_U_entry_that_is_not_a_dart():
     S = three_edges()
     S.unexplored.append((9, 0))
     assert_violation(check_invariants(S, WORLD, anchor(S)), "I-2", where="U entry (9, 0)")
+
+
+# The incremental checker (run after every iteration) must report each U fault exactly as the full one does,
+# including a duplicate that hides a missing entry (same length as the right U).
+U_FAULTS = {
+    "missing": lambda U: U.remove((2, 1)),
+    "duplicate": lambda U: U.append((3, 1)),
+    "explored": lambda U: U.append((1, 0)),
+    "bad exit": lambda U: U.append((0, 7)),
+    "bad vertex": lambda U: U.append((9, 0)),
+    "duplicate for missing": lambda U: U.__setitem__(U.index((2, 1)), (3, 1)),
+    "not a dart": lambda U: U.append([0, 0]),
+}
+
+
+@pytest.mark.parametrize("fault", sorted(U_FAULTS))
+def test_incremental_I2_agrees_with_the_full_check(fault):
+    S = three_edges()
+    quick = IncrementalInvariants(S, WORLD, anchor(S))
+    assert quick.update() is None
+    U_FAULTS[fault](S.unexplored)
+    full = check_invariants(S, WORLD, anchor(S))
+    assert isinstance(full, Violation) and full.check == "I-2"
+    assert quick.update() == full
+    S.unexplored[:] = three_edges().unexplored
+    assert quick.update() is None and check_invariants(S, WORLD, anchor(S)) is None
 
 
 # -- I-1 ---------------------------------------------------------------------------
