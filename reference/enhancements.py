@@ -401,7 +401,7 @@ class EnhancedExplorer(LighthouseExplorer):
         "map": trace on S plus the hypothesized edge e''/e (Enhancement-2);
         "map+T": and continue into the records of T (Enhancement-3, and D of Enhancements 4/5).
         """
-        S = self.S
+        S, links, T, traced = self.S, self.S.links, self.T, mode == "map+T"
         link = {h.dart: it.edge, it.edge: h.dart}
         for node in self._new:
             ps = state.get(node.parent)
@@ -419,12 +419,13 @@ class EnhancedExplorer(LighthouseExplorer):
             nm, nrecs = None, []
             if md is not None:
                 x, entry = md
-                t = (x, (entry + m) % S.degree(x))
-                nm = S.arc(t)
+                row = links(x)
+                t = (x, (entry + m) % len(row))
+                nm = row[t[1]]
                 if nm is None:
                     nm = link.get(t)
-                    if mode == "map+T":
-                        rec = self.T.get(t)
+                    if traced:
+                        rec = T.get(t)
                         if rec is not None:
                             nrecs.append(rec)
                 if nm is not None and signature_at(S, nm[0], nm[1]) != node.sig:

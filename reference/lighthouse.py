@@ -156,9 +156,15 @@ class LighthouseExplorer:
         found, lengths = [], []
         toward: dict[int, int] | None = None
         tails: dict[int, tuple] = {}
+        shows: dict[int, bool] = {it.edge[0]: False}  # per vertex whose signature is the same from every entry
         for dart in self.S.unexplored:
             v, i = dart
-            if v == it.edge[0] or self.S.degree(v) != sig.degree or signature_at(self.S, v, i) != sig:
+            match = shows.get(v)
+            if match is None:
+                match = self.S.degree(v) == sig.degree and signature_at(self.S, v, i) == sig
+                if self.S.vertex_mark(v) is None and not self.S.dart_marks(v):
+                    shows[v] = match
+            if not match:
                 continue
             if toward is None:
                 toward = tree_to_v0(self.S, self.policies)

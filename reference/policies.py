@@ -68,13 +68,13 @@ def bfs(S: PartialMap, root: int) -> tuple[dict[int, int], dict[int, int], dict[
     """
     dist, toward, parent = {root: 0}, {}, {}
     todo = deque([root])
-    arc = S.arc
+    links = S.links
     while todo:
         v = todo.popleft()
-        for i in range(S.degree(v)):
-            t = arc((v, i))
+        d = dist[v] + 1
+        for i, t in enumerate(links(v)):
             if t is not None and t[0] not in dist:
-                dist[t[0]] = dist[v] + 1
+                dist[t[0]] = d
                 toward[t[0]] = t[1]
                 parent[t[0]] = (v, i)
                 todo.append(t[0])

@@ -89,6 +89,13 @@ class PartialMap:
         """The reverse dart ``dart`` is joined to, or None if unexplored (same name as World.arc)."""
         return self._adj[dart[0]][dart[1]]
 
+    def links(self, v: int) -> list[MapDart | None]:
+        """The reverse dart of each exit of ``v`` in index order, None where unexplored.
+
+        The map's own row, for tight loops (breadth-first search); read it, never mutate it.
+        """
+        return self._adj[v]
+
     def neighbour(self, dart: MapDart) -> MapDart | None:
         """The reverse dart that ``dart`` is joined to, or None if unexplored."""
         return self._adj[dart[0]][dart[1]]
