@@ -423,6 +423,13 @@ def _pct(x: float | None) -> str:
     return "" if x is None else f"{x:.1f}%"
 
 
+def _in_experiment(exp: Experiment, row: dict) -> bool:
+    """Whether a CSV row is one of the runs ``exp`` plans (any seed): the CSV may hold other experiments' runs."""
+    return any(row["experiment"] == p.family and row["algorithm"] in p.algorithms
+               and (row.get("policy") or "nearest") in p.policies
+               and (p.sizes is None or int(row["size"]) in p.sizes) for p in exp.parts)
+
+
 def write_report(experiment: str, out: Path, wall: float | None = None, plots: bool = True) -> Path:
     """Generate ``out/EXPERIMENT.md`` (and plots) from ``out/runs.csv``."""
     exp = EXPERIMENTS[experiment]
@@ -436,12 +443,11 @@ def write_report(experiment: str, out: Path, wall: float | None = None, plots: b
              "basic algorithm (same worlds, same policies); the thesis's figure is in the next column.", ""]
     if wall is not None:
         lines += [f"Wall time of this invocation: {wall:.0f} s.", ""]
-    mine = [r for r in latest(rows) if any(r["experiment"] == p.family and r["algorithm"] in p.algorithms
-                                          for p in exp.parts)]
+    mine = [r for r in latest(rows) if _in_experiment(exp, r)]
     cpu = sum(_num(r.get("cpu_seconds") or r.get("seconds") or 0) for r in mine)
     lines += [f"Runs in this experiment: {len(mine)}; their total CPU time: {cpu:,.0f} s "
               f"(on an otherwise idle 2-core machine about {cpu / 2 / 60:.0f} min of wall time).", ""]
-    problems = [r for r in rows if any(r["experiment"] == p.family for p in exp.parts)
+    problems = [r for r in rows if _in_experiment(exp, r)
                 and str(r.get("checked")) == "True" and str(r.get("verified")) != "True"]
     lines += [f"Checked runs whose map was **not** verified: {len(problems)}.", ""]
     for part in exp.parts:

@@ -64,6 +64,13 @@ def test_sweep_is_checked_resumable_and_reported(tmp_path):
     report = bench.write_report("table-4.3", tmp_path, plots=False).read_text()
     assert "| 72 | 72 |" in report and "36.5%" in report  # the thesis's Table 4.3 figure beside ours
     assert "## Table 4.3" in report and "not** verified: 0" in report
+    assert "Runs in this experiment: 4;" in report
+    # Another experiment's runs in the same CSV (other policies) are not counted as this one's.
+    bench.run_sweep(bench.plan("policies", graphs=1, sizes=[90]), tmp_path, jobs=1, progress=False)
+    report = bench.write_report("table-4.3", tmp_path, plots=False).read_text()
+    assert "Runs in this experiment: 5;" in report  # + the policies' nearest basic run on seed 0, a shared world
+    policies = bench.write_report("policies", tmp_path, plots=False).read_text()
+    assert "Runs in this experiment: 6;" in policies and "| 90 | basic | 1 |" in policies
 
 
 def test_plots_are_skipped_without_matplotlib_but_csv_and_markdown_are_written(tmp_path, monkeypatch, capsys):
