@@ -423,6 +423,17 @@ def _pct(x: float | None) -> str:
     return "" if x is None else f"{x:.1f}%"
 
 
+def _between_bounds(rows: list[dict], quote: bool) -> str:
+    """The thesis's reading of Figures 3.10-3.12 (§3.5.3), stated for one table of sizes."""
+    inside = all(r["m"] <= r["mean"] <= r["bound"] for r in rows)
+    top = max(r["mean"] / r["bound"] for r in rows)
+    low, high = min(r["cost_per_m"] for r in rows), max(r["cost_per_m"] for r in rows)
+    return (f"Mean cost between the lower bound m and bound (3.3) at every size: {'yes' if inside else '**no**'}; "
+            f"at most {100 * top:.2g}% of the bound; cost/m from {low:.1f} to {high:.1f}"
+            + (" (§3.5.3 on the basic algorithm: \"substantially below its theoretical upper cost bound … "
+               "significantly above the theoretical lower bound\")." if quote else "."))
+
+
 def _in_experiment(exp: Experiment, row: dict) -> bool:
     """Whether a CSV row is one of the runs ``exp`` plans (any seed): the CSV may hold other experiments' runs."""
     return any(row["experiment"] == p.family and row["algorithm"] in p.algorithms
@@ -478,7 +489,7 @@ def write_report(experiment: str, out: Path, wall: float | None = None, plots: b
                         f"{_fmt(s['mean'])} ± {_fmt(s['sd'])} | {s['cost_per_m']:.1f} | {_fmt(s['bound'])} | "
                         f"{s['m']:.0f} | {_fmt(s['expansion'])} | {_pct(red[0] if red else None)} | "
                         f"{_pct(tr[0] if tr else None)} | {_fmt(tc[0]) if tc else ''} |")
-                lines.append("")
+                lines += ["", _between_bounds([summary[k] for k in keys], quote=alg == "basic"), ""]
     for part in exp.parts:
         if len(part.policies) < 2:
             continue

@@ -65,6 +65,7 @@ def test_sweep_is_checked_resumable_and_reported(tmp_path):
     assert "| 72 | 72 |" in report and "36.5%" in report  # the thesis's Table 4.3 figure beside ours
     assert "## Table 4.3" in report and "not** verified: 0" in report
     assert "Runs in this experiment: 4;" in report
+    assert report.count("bound (3.3) at every size: yes; at most") == 2  # basic and enh4, each size-72 row
     # Another experiment's runs in the same CSV (other policies) are not counted as this one's.
     bench.run_sweep(bench.plan("policies", graphs=1, sizes=[90]), tmp_path, jobs=1, progress=False)
     report = bench.write_report("table-4.3", tmp_path, plots=False).read_text()
