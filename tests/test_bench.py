@@ -41,6 +41,9 @@ def test_plan_covers_every_table_and_caps_the_quartic_row():
     d2 = [r for r in runs if r.family == "complete-hole" and r.algorithm == "enh5-d2"]
     assert {r.seed for r in d2} == {0, 1} and {r.size for r in d2} == {24, 28, 32, 36, 40}
     assert len([r for r in runs if r.family == "lattice-hole" and r.algorithm == "enh5-d2"]) == 30 * 9
+    # By default the heavy row still has a figure beside every column of Table 4.6.
+    d2 = [r for r in bench.plan("table-4.6") if r.algorithm == "enh5-d2"]
+    assert {r.size for r in d2} == set(tf.COMPLETE_HOLE_SIZES) and len({r.seed for r in d2}) > 1
     with pytest.raises(Exception):
         bench.plan("table-9.9")
 
