@@ -33,7 +33,7 @@ from typing import Callable
 
 from topomark.spec.errors import CheckFailure, Violation
 from topomark.spec.mapstate import MapDart, PartialMap
-from topomark.spec.signature import Signature, signature_at
+from topomark.spec.signature import Signature, depends_on_entry, signature_at
 
 from .policies import Policies, bfs, tree_to_v0
 from .robot import Robot
@@ -162,7 +162,7 @@ class LighthouseExplorer:
             match = shows.get(v)
             if match is None:
                 match = self.S.degree(v) == sig.degree and signature_at(self.S, v, i) == sig
-                if self.S.vertex_mark(v) is None and not self.S.dart_marks(v):
+                if not depends_on_entry(self.S, v):
                     shows[v] = match
             if not match:
                 continue

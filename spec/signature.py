@@ -34,7 +34,7 @@ from typing import Protocol
 from .errors import InvalidInput
 from .world import DartMark, VertexMark
 
-__all__ = ["Signature", "signature_at", "Marked"]
+__all__ = ["Signature", "signature_at", "depends_on_entry", "Marked"]
 
 
 class Marked(Protocol):
@@ -138,6 +138,13 @@ def signature_at(g: Marked, v, entry: int) -> Signature:
             direction = (mark.head - entry) % d
     edges = tuple(sorted(((dm.exit - entry) % d, dm.count, dm.end) for dm in marks))
     return Signature(d, count, direction, edges)
+
+
+def depends_on_entry(g: Marked, v) -> bool:
+    """Whether :func:`signature_at` may differ between entries of ``v``: only a directional
+    vertex marker or an edge marker is read relative to the entry edge (§3.1.1)."""
+    mark = g.vertex_mark(v)
+    return (mark is not None and mark.head is not None) or bool(g.dart_marks(v))
 
 
 _PLAIN: dict[int, Signature] = {}

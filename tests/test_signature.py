@@ -9,7 +9,7 @@ from hypothesis import strategies as st
 from topomark.reference.strategies import worlds
 from topomark.spec.errors import InvalidInput
 from topomark.spec.marker import EdgeMarker, VertexMarker
-from topomark.spec.signature import Signature, signature_at
+from topomark.spec.signature import Signature, depends_on_entry, signature_at
 from topomark.spec.world import World
 
 FAST = settings(max_examples=80, deadline=None)
@@ -151,3 +151,16 @@ def test_edge_marker_head_and_tail():
     w2 = World(rot, [EdgeMarker(("b", "a"), count=2)])
     assert str(signature_at(w2, "a", 1)) == "[2,A,E2-1]"
     assert str(signature_at(w2, "b", 1)) == "[2,A,E2-0]"
+
+
+@FAST
+@given(worlds(max_vertices=7, markers="any"))
+def test_depends_on_entry_exactly_when_some_entry_reads_differently(w):
+    """Explorers may compare a vertex's signature once when it does not depend on the entry."""
+    for v in w.vertices:
+        readings = {signature_at(w, v, j) for j in range(w.degree(v))}
+        mark = w.vertex_mark(v)
+        if not depends_on_entry(w, v):
+            assert len(readings) == 1
+        elif mark is not None and mark.head is not None and not w.dart_marks(v):
+            assert len(readings) == w.degree(v)  # V-0 .. V-(d-1), one per entry
