@@ -298,22 +298,22 @@ def _lit(onehot: dict, value):
     return onehot.get(value, False)
 
 
-def _or(items):
-    items = [x for x in items if x is not False]
-    if any(x is True for x in items):
-        return True
+def _connective(op: str, unit: bool, items):
+    """``(op items...)`` simplified: ``unit`` items dropped, the absorbing ``not unit`` wins, arity 0/1 collapsed."""
+    items = [x for x in items if x is not unit]
+    if any(x is (not unit) for x in items):
+        return not unit
     if not items:
-        return False
-    return items[0] if len(items) == 1 else f"(or {' '.join(items)})"
+        return unit
+    return items[0] if len(items) == 1 else f"({op} {' '.join(items)})"
+
+
+def _or(items):
+    return _connective("or", False, items)
 
 
 def _and(items):
-    items = [x for x in items if x is not True]
-    if any(x is False for x in items):
-        return False
-    if not items:
-        return True
-    return items[0] if len(items) == 1 else f"(and {' '.join(items)})"
+    return _connective("and", True, items)
 
 
 def _not(x):
