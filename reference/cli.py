@@ -2,7 +2,9 @@
 
 Every command exits 0 for success or a positive verdict, 1 for a negative
 verdict or a violated invariant, 2 for bad input (one message, no traceback),
-and takes ``--json`` for machine-readable output on stdout.
+3 when topomark itself failed (its own checks disagree, or an unexpected
+exception: a bug to report), and takes ``--json`` for machine-readable output
+on stdout.
 
 Commands from other parts of topomark register themselves through a
 ``register(subparsers)`` function that adds a subparser whose ``handler``
@@ -14,10 +16,14 @@ from __future__ import annotations
 import argparse
 import importlib
 import json
+import os
 import sys
 from typing import Any, Sequence
 
-from topomark.spec.errors import CheckFailure, InvalidInput
+import traceback
+
+from topomark.spec.errors import (EXIT_BAD_INPUT, EXIT_CODES_HELP, EXIT_FAULT, EXIT_NEGATIVE, CheckFailure,
+                                  InvalidInput, TopomarkFault)
 
 __all__ = ["main", "build_parser", "emit"]
 
@@ -41,8 +47,15 @@ class _Parser(argparse.ArgumentParser):
 
 def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(prog="topomark", description="Marker-based topological SLAM: the thesis's reference "
-                                                    "implementation, checker and proofs.")
+                                                    "implementation, checker and proofs.", epilog=EXIT_CODES_HELP)
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
+    _add_parser = sub.add_parser
+
+    def add_parser(*a, **kw):  # every command's --help ends with the four exit codes
+        kw.setdefault("epilog", EXIT_CODES_HELP)
+        return _add_parser(*a, **kw)
+
+    sub.add_parser = add_parser
     for name in COMMAND_MODULES:
         try:
             module = importlib.import_module(name)
@@ -75,15 +88,28 @@ def main(argv: Sequence[str] | None = None) -> int:
         return int(args.handler(args))
     except InvalidInput as exc:
         print(f"topomark: error: {exc}", file=sys.stderr)
-        return 2
+        return EXIT_BAD_INPUT
     except CheckFailure as exc:
         print(f"topomark: check failed: {exc}", file=sys.stderr)
-        return 1
+        return EXIT_NEGATIVE
     except KeyboardInterrupt:
         print("topomark: interrupted", file=sys.stderr)
         return 130
     except BrokenPipeError:
         return 0
+    except TopomarkFault as exc:
+        return _fault(f"{exc}")
+    except Exception as exc:  # noqa: BLE001 - anything else is a bug in topomark, reported as one
+        return _fault(f"unexpected {exc.__class__.__name__}: {exc}", traceback.format_exc())
+
+
+def _fault(message: str, detail: str = "") -> int:
+    """Exit 3: topomark itself failed.  The traceback goes to stderr only with TOPOMARK_DEBUG=1."""
+    print(f"topomark: internal fault (a bug in topomark, not in what it checked): {message[:2000]}\n"
+          "please report it with the command line and input that caused it", file=sys.stderr)
+    if detail and os.environ.get("TOPOMARK_DEBUG"):
+        print(detail, file=sys.stderr)
+    return EXIT_FAULT
 
 
 if __name__ == "__main__":

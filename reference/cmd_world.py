@@ -7,7 +7,7 @@ import sys
 from collections import Counter
 
 from topomark.spec.dartgraph import find_isomorphism_nx
-from topomark.spec.errors import CheckFailure, InvalidInput
+from topomark.spec.errors import InvalidInput, TopomarkFault
 from topomark.spec.isomorphism import find_isomorphism, verify_witness
 from topomark.spec.worldfile import dumps_world, load_world, world_to_json
 
@@ -85,14 +85,14 @@ def iso_command(args) -> int:
         results["networkx"] = find_isomorphism_nx(a, b, markers=markers)
     verdicts = {r.isomorphic for r in results.values()}
     if len(verdicts) != 1:
-        raise CheckFailure(f"the isomorphism implementations disagree: "
+        raise TopomarkFault(f"the isomorphism implementations disagree: "
                            f"{ {k: r.isomorphic for k, r in results.items()} }")
     result = next(iter(results.values()))
     if result.isomorphic:
         for name, r in results.items():
             bad = verify_witness(a, b, r.witness, markers=markers)
             if bad is not None:
-                raise CheckFailure(bad)
+                raise TopomarkFault(f"the {name} isomorphism's witness fails re-verification: {bad}")
         data = {"isomorphic": True, "witness": result.witness.to_json(), "methods": list(results)}
         text = (f"isomorphic: {args.a} ≅ {args.b} (extended isomorphism"
                 + (", markers preserved" if markers else ", markers ignored") + "; witness verified)")

@@ -1,10 +1,16 @@
-"""The two kinds of failure topomark keeps apart.
+"""The three kinds of failure topomark keeps apart, and the exit codes they map to.
 
+* :class:`CheckFailure`: a loop invariant (thesis §3.4), an isomorphism or a
+  verdict check failed.  That means the *implementation, world, map or trace
+  under test* is wrong.  The CLI exits with code 1.
 * :class:`InvalidInput` (and its child :class:`InvalidWorld`): what the user gave
   us is not a valid world, map, motion or option.  The CLI exits with code 2.
-* :class:`CheckFailure`: a loop invariant (thesis §3.4), an isomorphism or an
-  internal consistency check failed.  That means an *implementation* is wrong.
-  The CLI exits with code 1.
+* :class:`TopomarkFault`: topomark's *own* checks disagree (its two isomorphism
+  implementations, a witness that fails re-verification, its own explorer
+  breaking under ``drive``) or an unexpected exception escaped.  That is a bug in
+  topomark, not in what it judged.  The CLI exits with code 3 and says so.
+
+Exit 0 is success or a positive verdict.
 
 Checks are made with :func:`require`, never with bare ``assert`` statements, so
 they survive ``python -O``.
@@ -23,7 +29,18 @@ __all__ = [
     "CheckFailure",
     "require",
     "require_input",
+    "TopomarkFault",
+    "EXIT_OK",
+    "EXIT_NEGATIVE",
+    "EXIT_BAD_INPUT",
+    "EXIT_FAULT",
+    "EXIT_CODES_HELP",
 ]
+
+EXIT_OK, EXIT_NEGATIVE, EXIT_BAD_INPUT, EXIT_FAULT = 0, 1, 2, 3
+EXIT_CODES_HELP = ("exit codes: 0 success or a positive verdict; 1 a negative verdict (the world, map, trace or "
+                   "implementation under test is wrong); 2 bad input (one message naming it); 3 a fault in "
+                   "topomark itself (please report it)")
 
 
 class TopomarkError(Exception):
@@ -76,6 +93,18 @@ class CheckFailure(TopomarkError, AssertionError):
             violation = Violation("internal check", "-", "true", "false", violation)
         self.violation = violation
         super().__init__(str(violation))
+
+
+class TopomarkFault(TopomarkError, RuntimeError):
+    """topomark itself failed: its own checks disagree.  The CLI exits 3.
+
+    Raised where two of topomark's independent implementations disagree or a
+    result fails its own re-verification; never for a fault of the thing
+    under test (that is :class:`CheckFailure`, exit 1).
+    """
+
+    def __init__(self, message: str):
+        super().__init__(message)
 
 
 def require(condition: bool, message: str) -> None:
