@@ -5,8 +5,8 @@
 * (3.3): the leading terms 2m²n − 2mn² + ⅔n³ − 2m² − 5/2 n², as plotted in
   the thesis's figures (lower-order terms ignored).
 
->>> upper_bound(3, 3)  # a triangle
-17
+>>> upper_bound(3, 3)  # a triangle: (3.1) = 1 + 10, (3.2) = 3 + 8
+22
 """
 
 from __future__ import annotations

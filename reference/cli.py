@@ -33,6 +33,7 @@ COMMAND_MODULES = (
     "topomark.reference.cmd_explore",
     "topomark.reference.cmd_oracle",
     "topomark.reference.cmd_bench",
+    "topomark.reference.cmd_algorithms",
     "topomark.proofs.cli_distinguish",
     "topomark.proofs.cli_search",
 )

@@ -165,16 +165,16 @@ class Enhancement:
 
 
 ENHANCEMENTS: dict[str, Enhancement] = {e.name: e for e in (
-    Enhancement("enh1", trace="path", stage2=True, section="§4.1 Enhancement-1, Algorithm 4.1"),
-    Enhancement("enh2", trace="map", stage2=True, section="§4.1 Enhancement-2, Algorithm 4.2"),
-    Enhancement("enh3", trace="map+T", stage2=True, record="all", section="§4.1 Enhancement-3, Algorithm 4.3"),
-    Enhancement("enh4", prune=True, expand_new=True, record="new:1", section="§4.2 Enhancement-4, Algorithm 4.4"),
-    Enhancement("enh5-d1", prune=True, expand_place=1, record="new:1", section="§4.2 Enhancement-5, Algorithm 4.5"),
-    Enhancement("enh5-d2", prune=True, expand_place=2, record="new:2", section="§4.2 Enhancement-5, Algorithm 4.5"),
+    Enhancement("enh1", trace="path", stage2=True, section="§4.1, Enhancement-1, Algorithm 4.1"),
+    Enhancement("enh2", trace="map", stage2=True, section="§4.1, Enhancement-2, Algorithm 4.2"),
+    Enhancement("enh3", trace="map+T", stage2=True, record="all", section="§4.1, Enhancement-3, Algorithm 4.3"),
+    Enhancement("enh4", prune=True, expand_new=True, record="new:1", section="§4.2, Enhancement-4, Algorithm 4.4"),
+    Enhancement("enh5-d1", prune=True, expand_place=1, record="new:1", section="§4.2, Enhancement-5, Algorithm 4.5"),
+    Enhancement("enh5-d2", prune=True, expand_place=2, record="new:2", section="§4.2, Enhancement-5, Algorithm 4.5"),
     Enhancement("enh3+4", trace="map+T", stage2=True, prune=True, expand_new=True, record="all",
-                section="§4.3 enhancement 3+4, Table 4.8"),
+                section="§4.3, Enhancements 3+4, Table 4.8"),
     Enhancement("enh3+5", trace="map+T", stage2=True, prune=True, expand_place=2, record="all",
-                section="§4.3 enhancement 3+5, Table 4.7"),
+                section="§4.3, Enhancements 3+5, Table 4.7"),
 )}
 
 

@@ -1,0 +1,35 @@
+"""``topomark algorithms [--json]``: the registered algorithms, their thesis references, kits and bounds.
+
+The JSON form is a list of objects with ``name``, ``thesis``, ``kit``,
+``bound``, ``markers``, ``deterministic``, ``options`` and ``checks``
+(:meth:`topomark.reference.registry.AlgorithmSpec.to_json`).
+"""
+
+from __future__ import annotations
+
+import json
+
+from .registry import CHECKS, REGISTRY
+
+__all__ = ["register", "algorithms_command"]
+
+
+def register(sub) -> None:
+    p = sub.add_parser("algorithms", help="list the registered algorithms with their thesis references and bounds",
+                       description=__doc__.split("\n\n")[0])
+    p.add_argument("--json", action="store_true", help="a JSON list on stdout")
+    p.set_defaults(handler=algorithms_command)
+
+
+def algorithms_command(args) -> int:
+    specs = list(REGISTRY.values())
+    if args.json:
+        print(json.dumps([s.to_json() for s in specs], indent=1))
+        return 0
+    width = max(len(s.name) for s in specs)
+    for s in specs:
+        print(f"{s.name:<{width}}  {s.thesis}")
+        print(f"{'':<{width}}  kit: {s.kit.describe()}; markers: {s.markers}; "
+              f"bound: {s.bound or 'none stated in the thesis'}")
+    print(f"\nchecks: " + "; ".join(f"{k} = {v}" for k, v in CHECKS.items()))
+    return 0
