@@ -9,10 +9,13 @@ Explorers only ever receive :meth:`Simulator.robot`.
 
 from __future__ import annotations
 
+import json
 from collections import Counter
 
 from topomark.spec.errors import CheckFailure, InvalidInput, Violation
+from topomark.spec.kit import Kit
 from topomark.spec.marker import VertexMarker
+from topomark.spec.markerlayer import MarkerLayer, MarkerOp, apply_op
 from topomark.spec.robot import State, sense, step
 from topomark.spec.signature import Signature
 from topomark.spec.world import World
@@ -23,21 +26,34 @@ __all__ = ["Simulator"]
 
 
 class Simulator:
-    """Plays ``world`` to a robot starting in ``state`` and carrying ``kit`` markers.
+    """Plays ``world`` to a robot starting in ``state`` and carrying ``kit``.
 
-    ``kit`` maps a marker kind (``"directional-vertex"``, ``"undirected-vertex"``)
-    to how many the robot carries.  ``listener`` (optional) is called with
-    ``(motion, purpose, signature, true_state)`` after every traversal.
+    ``kit`` is a :class:`~topomark.spec.kit.Kit` (or its protocol form, e.g.
+    ``{"directional-vertex": 1}``).  Markers live in a
+    :class:`~topomark.spec.markerlayer.MarkerLayer` over the world's rotation;
+    :attr:`world` is the world as it is now, markers dropped so far included.
+    ``listener`` (optional) is called with ``(motion, purpose, signature,
+    true_state)`` after every traversal.  Edge traversals are the cost
+    (§3.1.2); marker operations are counted apart in :attr:`operations` and
+    logged, with the step they followed, in :attr:`events`.
     """
 
-    def __init__(self, world: World, state: State, kit: dict[str, int] | None = None, listener=None):
-        self.world = world
+    def __init__(self, world: World, state: State, kit: Kit | dict | None = None, listener=None):
+        self.layer = MarkerLayer(world)
         self.state = state
-        self.kit = Counter(kit or {})
+        self.kit = kit if isinstance(kit, Kit) else Kit.from_json(kit or {})
+        self.held = Counter({"vertex": self.kit.vertex, "edge": self.kit.edge})
         self.cost = 0
         self.by_purpose: Counter[str] = Counter()
+        self.operations: Counter[str] = Counter()
+        self.events: list[dict] = []
         self.listener = listener
         self.drops: list[VertexMarker] = []
+
+    @property
+    def world(self) -> World:
+        """The world with every marker now lying in it."""
+        return self.layer.world()
 
     # -- the explorer's side -------------------------------------------------
     def robot(self) -> Robot:
@@ -47,30 +63,46 @@ class Simulator:
         if purpose not in PURPOSES:
             raise CheckFailure(Violation("robot interface", "move", f"a purpose in {PURPOSES}", repr(purpose)))
         try:
-            self.state = step(self.world, self.state, motion)
+            self.state = step(self.layer, self.state, motion)
         except InvalidInput as exc:
             raise CheckFailure(Violation("robot interface", f"step {self.cost + 1}", "an existing exit",
                                          str(exc), "the explorer asked for an exit that does not exist")) from None
         self.cost += 1
         self.by_purpose[purpose] += 1
-        sig = sense(self.world, self.state)
+        sig = sense(self.layer, self.state)
         if self.listener is not None:
             self.listener(motion, purpose, sig, self.state)
         return sig
 
     def _sense(self) -> Signature:
-        return sense(self.world, self.state)
+        return sense(self.layer, self.state)
 
     def _drop(self, direction: int | None) -> None:
-        kind = "undirected-vertex" if direction is None else "directional-vertex"
-        v, entry = self.state
-        if self.kit[kind] < 1:
-            raise CheckFailure(Violation("marker class", f"vertex {v!r}", f"a {kind} marker in the kit",
-                                         "none left"))
-        if self.world.vertex_mark(v) is not None:
-            raise CheckFailure(Violation("marker class", f"vertex {v!r}", "an unmarked vertex", "a marker already there"))
-        self.kit[kind] -= 1
-        points = None if direction is None else self.world.neighbour(v, (entry + direction) % self.world.degree(v))
-        marker = VertexMarker(v, 1, points)
-        self.drops.append(marker)
-        self.world = self.world.with_markers(self.world.markers + (marker,), self.world.start)
+        """Algorithm 3.1's drop: one vertex marker here (kept for the explorers written against it)."""
+        self.operate(MarkerOp("vertex", direction=direction))
+
+    def operate(self, op: MarkerOp) -> None:
+        """Carry out a marker operation, gated by the kit; a refused one is the explorer's fault."""
+        where = f"step {self.cost} at vertex {self.state[0]!r}"
+        directional = op.direction is not None
+        if not op.pick_up:
+            reason = self.kit.refusal(op.kind, directional, op.count, self.kit.count(op.kind) - self.held[op.kind])
+        elif not self.kit.movable:
+            reason = f"the kit ({self.kit.describe()}) holds immovable markers: none may be picked up"
+        else:
+            reason = None
+        if reason is None:
+            try:
+                apply_op(self.layer, self.state, op)
+            except InvalidInput as exc:
+                reason = str(exc)
+        if reason is not None:
+            raise CheckFailure(Violation("marker kit", where, f"an operation the kit allows", json.dumps(op.to_json()),
+                                         reason))
+        self.held[op.kind] += op.count if op.pick_up else -op.count
+        self.operations["pick_up" if op.pick_up else "drop"] += 1
+        self.events.append({"step": self.cost, **op.to_json()})
+        if op.kind == "vertex" and not op.pick_up:
+            v, entry = self.state
+            head = None if op.direction is None else self.layer.neighbour(v, (entry + op.direction) % self.layer.degree(v))
+            self.drops.append(VertexMarker(v, op.count, head))

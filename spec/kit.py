@@ -102,7 +102,8 @@ class Kit:
             want = "directional" if self.directional else "undirected"
             return f"the kit ({self.describe()}) holds {want} markers only"
         if held + count > have:
-            return f"the kit ({self.describe()}) holds {have} {kind} marker(s); {held} already dropped"
+            left = have - held
+            return f"the kit ({self.describe()}) holds {have} {kind} marker(s): {left or 'none'} left, {count} asked for"
         return None
 
     def to_json(self) -> dict[str, Any]:

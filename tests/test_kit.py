@@ -41,6 +41,7 @@ def test_refusals_name_the_kit():
     kit = Kit(vertex=1, directional=True)
     assert kit.refusal("vertex", True, 1, 0) is None
     assert "1 directional vertex marker" in kit.refusal("vertex", True, 1, 1)
+    assert "none left" in kit.refusal("vertex", True, 1, 1)
     assert "directional markers only" in kit.refusal("vertex", False, 1, 0)
     assert "no edge marker" in kit.refusal("edge", True, 1, 0)
     assert Kit(vertex=3).refusal("vertex", False, 2, 1) is None

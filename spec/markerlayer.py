@@ -1,0 +1,238 @@
+"""The marker layer: markers dropped and picked up during a run, over a world's immutable rotation
+(thesis §3.1.1, §6.1–6.2, §2.3.1).
+
+A :class:`World` is immutable: its rotation system never changes while a
+robot explores it.  Its *markers* do — Algorithm 3.1 drops one at v0, the
+algorithms of §6.2 drop many while exploring, and the movable marker of
+Dudek et al. (§2.3.1) is picked up again.  A :class:`MarkerLayer` holds the
+markers of a run in mutable dictionaries over the world's rotation, offers
+the same queries as a world (``degree``, ``target``, ``vertex_mark``,
+``dart_marks``), so :func:`~topomark.spec.robot.sense` and
+:func:`~topomark.spec.robot.step` work on it unchanged, and builds a
+:class:`World` carrying the current markers only when asked
+(:meth:`MarkerLayer.world`), never per drop.
+
+Rules (each refusal is an :class:`~topomark.spec.errors.InvalidInput` naming
+the place; the simulator reports it as the explorer's fault):
+
+* markers dropped where markers of the same kind already lie join them (the
+  count grows), which is how the thesis stacks homogeneous markers (``V#``,
+  ``E#``; §6.2, Figure 6.8); a directional marker joins only markers pointing
+  the same way — one place cannot point two ways (the world format holds one
+  head per vertex and one per edge);
+* a pick-up takes markers that are there, and no more.
+
+Examples
+--------
+>>> from topomark.spec.world import World
+>>> layer = MarkerLayer(World({"a": ["b", "c"], "b": ["c", "a"], "c": ["a", "b"]}))
+>>> layer.drop_vertex("a", 1, head=1)
+>>> layer.vertex_mark("a")
+VertexMark(count=1, head=1)
+>>> layer.drop_edge("b", 0, 2, end=None)
+>>> layer.dart_marks("c")  # b is exit 1 of c
+(DartMark(exit=1, count=2, end=None),)
+>>> [m.__class__.__name__ for m in layer.world().markers]
+['VertexMarker', 'EdgeMarker']
+>>> layer.pick_up_vertex("a", 1)
+>>> layer.vertex_mark("a") is None
+True
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Iterator
+
+from .errors import InvalidInput
+from .marker import EdgeMarker, Marker, VertexMarker
+from .world import DartMark, VertexMark, World
+
+__all__ = ["MarkerLayer", "MarkerOp", "apply_op"]
+
+_FLIP = {"H": "T", "T": "H", None: None}
+
+
+class MarkerLayer:
+    """Mutable markers over ``world``'s rotation; starts with the world's own markers."""
+
+    __slots__ = ("base", "_vmarks", "_emarks", "_dmarks", "_world")
+
+    def __init__(self, world: World):
+        self.base = world
+        self._vmarks: dict[str, VertexMark] = {v: world.vertex_mark(v) for v in world.vertices
+                                               if world.vertex_mark(v) is not None}
+        # edge -> (tail-side dart (v, exit), count, end seen from that dart); insertion order kept
+        self._emarks: dict[frozenset, tuple[tuple[str, int], int, str | None]] = {}
+        for v in world.vertices:
+            for dm in world.dart_marks(v):
+                key = frozenset((v, world.neighbour(v, dm.exit)))
+                self._emarks.setdefault(key, ((v, dm.exit), dm.count, dm.end))
+        self._dmarks: dict[str, tuple[DartMark, ...]] = {v: world.dart_marks(v) for v in world.vertices
+                                                         if world.dart_marks(v)}
+        self._world: World | None = world
+
+    # -- the queries of a world -----------------------------------------------
+    def degree(self, v: str) -> int:
+        return self.base.degree(v)
+
+    def target(self, dart: tuple[str, int]) -> tuple[str, int]:
+        return self.base.target(dart)
+
+    def neighbour(self, v: str, i: int) -> str:
+        return self.base.neighbour(v, i)
+
+    @property
+    def vertices(self) -> tuple[str, ...]:
+        return self.base.vertices
+
+    def vertex_mark(self, v: str) -> VertexMark | None:
+        return self._vmarks.get(v)
+
+    def dart_marks(self, v: str) -> tuple[DartMark, ...]:
+        return self._dmarks.get(v, ())
+
+    def _refresh(self, v: str, exit: int) -> None:
+        """Recompute the dart marks at both ends of the edge at exit ``exit`` of ``v`` after a change."""
+        self._world = None
+        for x in (v, self.base.neighbour(v, exit)):
+            marks = self._darts(x)
+            if marks:
+                self._dmarks[x] = marks
+            else:
+                self._dmarks.pop(x, None)
+
+    def _darts(self, v: str) -> tuple[DartMark, ...]:
+        out = []
+        for i, w in enumerate(self.base.rotation[v]):
+            entry = self._emarks.get(frozenset((v, w)))
+            if entry is not None:
+                (tail, _), count, end = entry
+                out.append(DartMark(i, count, end if tail == v else _FLIP[end]))
+        return tuple(out)
+
+    # -- operations ----------------------------------------------------------
+    def drop_vertex(self, v: str, count: int, head: int | None) -> None:
+        """Add ``count`` markers at ``v``, pointing at exit ``head`` (None: undirected)."""
+        _positive(count)
+        old = self._vmarks.get(v)
+        if old is not None and old.head != head:
+            raise InvalidInput(f"vertex {v!r} already holds markers {_vertex_words(old.head)}; a marker "
+                               f"{_vertex_words(head)} cannot join them")
+        self._vmarks[v] = VertexMark(count + (old.count if old else 0), head)
+        self._world = None
+
+    def drop_edge(self, v: str, exit: int, count: int, end: str | None) -> None:
+        """Add ``count`` markers on the edge at exit ``exit`` of ``v``; ``end`` is "H"/"T" as seen from ``v``."""
+        _positive(count)
+        key = frozenset((v, self.base.neighbour(v, exit)))
+        old = self._emarks.get(key)
+        if old is None:
+            self._emarks[key] = ((v, exit), count, end)
+        else:
+            (tail, texit), have, old_end = old
+            seen = old_end if tail == v else _FLIP[old_end]
+            if seen != end:
+                raise InvalidInput(f"the edge at exit {exit} of {v!r} already holds markers with end {seen!r} "
+                                   f"here; markers with end {end!r} cannot join them")
+            self._emarks[key] = ((tail, texit), have + count, old_end)
+        self._refresh(v, exit)
+
+    def pick_up_vertex(self, v: str, count: int) -> None:
+        """Take ``count`` markers from ``v``."""
+        _positive(count)
+        old = self._vmarks.get(v)
+        if old is None or old.count < count:
+            raise InvalidInput(f"cannot pick up {count} marker(s) at vertex {v!r}: {old.count if old else 0} there")
+        if old.count == count:
+            del self._vmarks[v]
+        else:
+            self._vmarks[v] = VertexMark(old.count - count, old.head)
+        self._world = None
+
+    def pick_up_edge(self, v: str, exit: int, count: int) -> None:
+        """Take ``count`` markers from the edge at exit ``exit`` of ``v``."""
+        _positive(count)
+        key = frozenset((v, self.base.neighbour(v, exit)))
+        old = self._emarks.get(key)
+        if old is None or old[1] < count:
+            there = old[1] if old else 0
+            raise InvalidInput(f"cannot pick up {count} marker(s) on the edge at exit {exit} of {v!r}: {there} there")
+        if old[1] == count:
+            del self._emarks[key]
+        else:
+            self._emarks[key] = (old[0], old[1] - count, old[2])
+        self._refresh(v, exit)
+
+    # -- the world as it is now ------------------------------------------------
+    def markers(self) -> Iterator[Marker]:
+        """The markers now lying in the world, vertex markers then edge markers, in the order first placed."""
+        for v, mark in self._vmarks.items():
+            yield VertexMarker(v, mark.count, None if mark.head is None else self.base.neighbour(v, mark.head))
+        for (v, exit), count, end in self._emarks.values():
+            w = self.base.neighbour(v, exit)
+            yield EdgeMarker((v, w), count, None if end is None else (v if end == "H" else w))
+
+    def world(self) -> World:
+        """A :class:`World` with the current markers (built once per change, on demand)."""
+        if self._world is None:
+            self._world = self.base.with_markers(tuple(self.markers()), self.base.start)
+        return self._world
+
+
+@dataclass(frozen=True)
+class MarkerOp:
+    """A marker operation as the robot states it, relative to its entry edge (§3.1.1).
+
+    ``kind`` is ``"vertex"`` or ``"edge"``; ``exit`` (edge markers only) is the
+    marked exit counted clockwise from the entry edge, like a motion;
+    ``direction`` is, for a vertex marker, the relative exit it points at, and
+    for an edge marker ``"H"`` or ``"T"`` — its head or tail at this vertex —
+    and ``None`` for an undirected marker; ``pick_up`` takes markers instead.
+    """
+
+    kind: str = "vertex"
+    exit: int | None = None
+    direction: int | str | None = None
+    count: int = 1
+    pick_up: bool = False
+
+    def to_json(self) -> dict:
+        out = {"op": "pick_up" if self.pick_up else "drop", "kind": self.kind, "count": self.count}
+        if self.exit is not None:
+            out["exit"] = self.exit
+        if self.direction is not None:
+            out["direction"] = self.direction
+        return out
+
+
+def apply_op(layer: MarkerLayer, state: tuple[str, int], op: MarkerOp) -> None:
+    """Carry out ``op`` by a robot in ``state`` = (vertex, entry); refusals are InvalidInput naming why."""
+    v, entry = state
+    d = layer.degree(v)
+    if op.kind == "vertex":
+        if op.exit is not None:
+            raise InvalidInput("a vertex marker takes no exit")
+        if op.pick_up:
+            return layer.pick_up_vertex(v, op.count)
+        if op.direction is not None and not (isinstance(op.direction, int) and 0 <= op.direction < d):
+            raise InvalidInput(f"direction {op.direction!r} is not an exit of a vertex of degree {d}")
+        return layer.drop_vertex(v, op.count, None if op.direction is None else (entry + op.direction) % d)
+    if op.kind != "edge":
+        raise InvalidInput(f"unknown marker kind {op.kind!r} (vertex or edge)")
+    if not (isinstance(op.exit, int) and not isinstance(op.exit, bool) and 0 <= op.exit < d):
+        raise InvalidInput(f"edge marker exit {op.exit!r} is not an exit of a vertex of degree {d}")
+    if op.pick_up:
+        return layer.pick_up_edge(v, (entry + op.exit) % d, op.count)
+    if op.direction not in (None, "H", "T"):
+        raise InvalidInput(f"an edge marker's direction is \"H\", \"T\" or null, got {op.direction!r}")
+    return layer.drop_edge(v, (entry + op.exit) % d, op.count, op.direction)
+
+
+def _positive(count: int) -> None:
+    if not isinstance(count, int) or isinstance(count, bool) or count < 1:
+        raise InvalidInput(f"a marker count must be a positive integer, got {count!r}")
+
+
+def _vertex_words(head: int | None) -> str:
+    return "without a direction" if head is None else f"pointing at exit {head}"

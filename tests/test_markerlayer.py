@@ -1,0 +1,106 @@
+"""The marker layer (spec/markerlayer.py) and the simulator's kit-gated marker operations."""
+
+from __future__ import annotations
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from topomark.reference.generators import lattice_hole, wheel_a
+from topomark.reference.simulator import Simulator
+from topomark.spec.errors import CheckFailure, InvalidInput
+from topomark.spec.kit import Kit
+from topomark.spec.markerlayer import MarkerLayer, MarkerOp, apply_op
+from topomark.spec.robot import sense
+from topomark.spec.world import Start, World
+
+
+def test_an_unchanged_layer_is_the_world_itself():
+    w = wheel_a()
+    assert MarkerLayer(w).world() is w
+
+
+def test_layer_world_equals_a_world_built_with_the_same_markers():
+    """The layer's queries and the World built from them agree, vertex by vertex and entry by entry."""
+    w = lattice_hole(4, 4, seed=1)
+    layer = MarkerLayer(w)
+    v, u = w.vertices[0], w.vertices[5]
+    layer.drop_vertex(v, 1, head=0)
+    layer.drop_edge(u, 1, 2, end="H")
+    layer.drop_vertex(u, 3, head=None)
+    built = layer.world()
+    for x in w.vertices:
+        for entry in range(w.degree(x)):
+            assert sense(layer, (x, entry)) == sense(built, (x, entry))
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.data())
+def test_drops_then_pick_ups_restore_the_world(data):
+    w = World(lattice_hole(3, 4, seed=2).rotation)
+    layer = MarkerLayer(w)
+    ops = []
+    for _ in range(data.draw(st.integers(1, 6))):
+        v = data.draw(st.sampled_from(w.vertices))
+        entry = data.draw(st.integers(0, w.degree(v) - 1))
+        if data.draw(st.booleans()):
+            op = MarkerOp("vertex", count=data.draw(st.integers(1, 3)))
+        else:
+            op = MarkerOp("edge", exit=data.draw(st.integers(0, w.degree(v) - 1)), count=data.draw(st.integers(1, 3)))
+        apply_op(layer, (v, entry), op)
+        ops.append(((v, entry), op))
+    for state, op in reversed(ops):
+        apply_op(layer, state, MarkerOp(op.kind, op.exit, op.direction, op.count, pick_up=True))
+    assert layer.world().markers == ()
+
+
+@pytest.mark.parametrize("first, second", [
+    (MarkerOp("vertex", direction=0), MarkerOp("vertex", direction=1)),
+    (MarkerOp("vertex", direction=0), MarkerOp("vertex")),
+    (MarkerOp("edge", exit=0, direction="H"), MarkerOp("edge", exit=0, direction="T")),
+])
+def test_markers_pointing_two_ways_cannot_share_a_place(first, second):
+    layer = MarkerLayer(wheel_a())
+    layer = MarkerLayer(World(layer.base.rotation))
+    apply_op(layer, ("0", 0), first)
+    with pytest.raises(InvalidInput, match="cannot join"):
+        apply_op(layer, ("0", 0), second)
+
+
+def test_an_edge_marker_reads_head_at_one_end_and_tail_at_the_other():
+    w = World({"a": ["b", "c"], "b": ["c", "a"], "c": ["a", "b"]})
+    layer = MarkerLayer(w)
+    apply_op(layer, ("a", 0), MarkerOp("edge", exit=0, direction="H"))  # head at a, on edge a-b
+    assert str(sense(layer, ("a", 0))) == "[2,A,E-0-H]"
+    assert str(sense(layer, ("b", 1))) == "[2,A,E-0-T]"
+
+
+def _sim(kit):
+    w = World({"a": ["b", "c"], "b": ["c", "a"], "c": ["a", "b"]}, start=Start("a", "b"))
+    return Simulator(World(w.rotation, (), w.start), w.start_state(), kit)
+
+
+@pytest.mark.parametrize("kit, op, reason", [
+    (Kit(vertex=1, directional=True), MarkerOp("vertex"), "directional markers only"),
+    (Kit(vertex=1, directional=True), MarkerOp("edge", exit=0, direction="H"), "no edge marker"),
+    (Kit(vertex=1), MarkerOp("vertex", count=2), "1 left, 2 asked for"),
+    (Kit(vertex=1), MarkerOp("vertex", pick_up=True), "immovable"),
+    (Kit(vertex=1, movable=True), MarkerOp("vertex", pick_up=True), "0 there"),
+])
+def test_the_simulator_refuses_what_the_kit_forbids_and_names_the_kit(kit, op, reason):
+    sim = _sim(kit)
+    with pytest.raises(CheckFailure, match=reason):
+        sim.operate(op)
+    assert sim.operations.total() == 0 and sim.world.markers == ()
+
+
+def test_a_movable_marker_goes_down_and_comes_back_uncounted_as_cost():
+    sim = _sim(Kit(vertex=1, movable=True))
+    sim.operate(MarkerOp("vertex"))
+    assert sim.world.vertex_mark("a").count == 1 and sim.held["vertex"] == 0
+    sim.robot().move(0)
+    sim.robot().move(0)
+    sim.operate(MarkerOp("vertex", pick_up=True))
+    assert sim.world.markers == () and sim.held["vertex"] == 1
+    assert sim.cost == 2 and dict(sim.operations) == {"drop": 1, "pick_up": 1}
+    assert [e["op"] for e in sim.events] == ["drop", "pick_up"] and [e["step"] for e in sim.events] == [0, 2]
