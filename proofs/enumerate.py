@@ -38,6 +38,7 @@ import networkx as nx
 from networkx.algorithms.isomorphism import GraphMatcher
 
 from topomark.spec.errors import InvalidInput
+from topomark.spec.signature import signature_at
 from topomark.spec.world import World
 
 __all__ = ["connected_graphs", "rotation_systems", "embedded_worlds", "canonical_form", "count_by_size",
@@ -156,9 +157,9 @@ def _vertex_key(world: World, v: str, markers: bool) -> tuple[int, ...]:
     """An extended-isomorphism invariant of a vertex (ints only)."""
     key = [world.degree(v)]
     if markers:
-        vm = world.vertex_mark(v)
-        key += [0, 0] if vm is None else [vm.count, int(vm.head is not None)]
-        key += sorted(dm.count * 3 + _END[dm.end] for dm in world.dart_marks(v))
+        sig = signature_at(world, v, 0)
+        key += [sig.vertex_count, int(sig.vertex_direction is not None)]
+        key += sorted(count * 3 + _END[end] for _, count, end in sig.edges)
     key += sorted(world.degree(w) for w in world.rotation[v])
     return tuple(key)
 
@@ -167,9 +168,9 @@ def _dart_key(world: World, dart: tuple[str, int], markers: bool) -> tuple[int, 
     v, i = dart
     extra = (0, 0)
     if markers:
-        vm = world.vertex_mark(v)
-        dm = next((d for d in world.dart_marks(v) if d.exit == i), None)
-        extra = (int(vm is not None and vm.head == i), 0 if dm is None else dm.count * 3 + _END[dm.end])
+        sig = signature_at(world, v, i)  # read from the dart itself: relative exit 0 is exit i
+        edge = next(((count, end) for x, count, end in sig.edges if x == 0), None)
+        extra = (int(sig.vertex_direction == 0), 0 if edge is None else edge[0] * 3 + _END[edge[1]])
     return _vertex_key(world, v, markers) + extra
 
 
@@ -194,13 +195,10 @@ def _anchors(world: World, markers: bool) -> list[tuple[str, int]]:
 
 
 def _marks_code(world: World, v: str, offset: int) -> tuple[int, ...]:
-    d = world.degree(v)
-    vm = world.vertex_mark(v)
-    code = [0, -1] if vm is None else [vm.count, -1 if vm.head is None else (vm.head - offset) % d]
-    marks = sorted(((dm.exit - offset) % d, dm.count, _END[dm.end]) for dm in world.dart_marks(v))
-    code.append(len(marks))
-    for mark in marks:
-        code.extend(mark)
+    sig = signature_at(world, v, offset)
+    code = [sig.vertex_count, -1 if sig.vertex_direction is None else sig.vertex_direction, len(sig.edges)]
+    for x, count, end in sig.edges:
+        code.extend((x, count, _END[end]))
     return tuple(code)
 
 

@@ -24,18 +24,17 @@ from networkx.algorithms.isomorphism import DiGraphMatcher
 
 from .errors import Violation
 from .isomorphism import IsoResult, Witness
+from .signature import signature_at
 
 __all__ = ["dart_graph", "find_isomorphism_nx"]
 
 
 def _label(g, v, i: int, markers: bool) -> tuple:
-    label: tuple = (g.degree(v),)
+    """What a robot entering ``v`` by exit ``i`` senses (:func:`~topomark.spec.signature.signature_at`), or
+    only the degree when markers are ignored: an extended isomorphism maps darts to darts of equal label."""
     if not markers:
-        return label
-    vm = g.vertex_mark(v)
-    vpart = None if vm is None else (vm.count, None if vm.head is None else vm.head == i)
-    dpart = next(((dm.count, dm.end) for dm in g.dart_marks(v) if dm.exit == i), None)
-    return label + (vpart, dpart)
+        return (g.degree(v),)
+    return (signature_at(g, v, i),)
 
 
 def dart_graph(g, markers: bool = True) -> nx.DiGraph:

@@ -36,6 +36,7 @@ from dataclasses import dataclass
 from typing import Any, Hashable
 
 from .errors import Violation
+from .signature import signature_at
 
 __all__ = ["Witness", "IsoResult", "anchored", "find_isomorphism", "verify_witness", "local_class"]
 
@@ -76,12 +77,14 @@ def _mismatch(where: str, expected: str, found: str, detail: str = "") -> Violat
 
 
 def _marks_at(g, v, r: int) -> tuple:
-    """The marks at ``v`` with exit indices shifted by ``r`` (for comparison across graphs)."""
-    d = g.degree(v)
-    vm = g.vertex_mark(v)
-    vpart = None if vm is None else (vm.count, None if vm.head is None else (vm.head + r) % d)
-    dpart = tuple(sorted(((dm.exit + r) % d, dm.count, dm.end) for dm in g.dart_marks(v)))
-    return (vpart, dpart)
+    """The marks at ``v`` with exit indices shifted by ``r`` (for comparison across graphs).
+
+    Derived from what a robot senses (:func:`~topomark.spec.signature.signature_at`): exit
+    ``x`` shifted by ``r`` is exit ``x`` read from the entry ``-r``.
+    """
+    sig = signature_at(g, v, (-r) % g.degree(v))
+    vpart = None if sig.vertex_count == 0 else (sig.vertex_count, sig.vertex_direction)
+    return (vpart, sig.edges)
 
 
 def _describe_marks(marks: tuple) -> str:
@@ -176,9 +179,9 @@ def local_class(g, v, markers: bool = True) -> Hashable:
     """
     if not markers:
         return (g.degree(v), None, ())
-    vm = g.vertex_mark(v)
-    vpart = None if vm is None else (vm.count, vm.head is not None)
-    return (g.degree(v), vpart, tuple(sorted((dm.count, dm.end or "") for dm in g.dart_marks(v))))
+    sig = signature_at(g, v, 0)  # what the robot senses, with every exit index dropped
+    vpart = None if sig.vertex_count == 0 else (sig.vertex_count, sig.vertex_direction is not None)
+    return (sig.degree, vpart, tuple(sorted((count, end or "") for _, count, end in sig.edges)))
 
 
 def _summary(g, markers: bool) -> dict[str, Any]:
