@@ -57,7 +57,7 @@ import z3
 
 from topomark.proofs import bisim, z3search
 from topomark.proofs.enumerate import embedded_worlds
-from topomark.spec.kit import MARKER_CLASSES
+from topomark.spec.markerclass import MARKER_CLASSES
 from topomark.spec.robot import sense, step
 
 __all__ = ["INSUFFICIENT", "bench_smallest", "bench_proofs", "bench_cross_check", "brute_force_smallest",

@@ -1,6 +1,6 @@
 """Census of indistinguishable worlds per marker class (thesis §3.2, §3.3, §3.7, §6.1).
 
-For a marker class (:mod:`topomark.spec.kit`) we take every small
+For a marker class (:mod:`topomark.spec.markerclass`) we take every small
 embedded world (:mod:`topomark.proofs.enumerate`), every placement of the
 class's markers and every start, and group the placements by the robot's
 *language*: what it perceives under every motion sequence.
@@ -47,7 +47,7 @@ from typing import Any, Callable, Iterable, Iterator
 
 from topomark.proofs.bisim import distinguishing_sequence
 from topomark.proofs.enumerate import canonical_form, embedded_worlds
-from topomark.spec.kit import marker_class
+from topomark.spec.markerclass import marker_class
 from topomark.spec.errors import CheckFailure
 from topomark.spec.isomorphism import find_isomorphism
 from topomark.spec.marker import VertexMarker

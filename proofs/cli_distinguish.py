@@ -17,7 +17,7 @@ from typing import Any
 from topomark.proofs.bisim import bisimulation, check_relation, distinguishing_sequence
 from topomark.proofs.census import CensusResult, census, stderr_progress
 from topomark.proofs.enumerate import MAX_VERTICES
-from topomark.spec.kit import MARKER_CLASSES, marker_class
+from topomark.spec.markerclass import MARKER_CLASSES, marker_class
 from topomark.spec.errors import CheckFailure, InvalidInput
 from topomark.spec.worldfile import load_world, world_to_json
 

@@ -43,7 +43,7 @@ from collections import defaultdict
 from typing import Iterator, Sequence
 
 from topomark.proofs.enumerate import embedded_worlds
-from topomark.spec.kit import marker_class
+from topomark.spec.markerclass import marker_class
 from topomark.spec.errors import InvalidInput
 from topomark.spec.isomorphism import find_isomorphism
 from topomark.spec.marker import EdgeMarker, VertexMarker

@@ -133,7 +133,7 @@ from topomark.spec.robot import sense, step
 from topomark.spec.signature import Signature
 from topomark.spec.world import Start, World
 
-from topomark.spec.kit import MARKER_CLASSES, marker_class
+from topomark.spec.markerclass import MARKER_CLASSES, marker_class
 
 __all__ = [
     "SearchResult", "ProofReport", "SizeCheck", "search", "prove", "size_pairs", "decode_pair",

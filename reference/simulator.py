@@ -13,9 +13,9 @@ import json
 from collections import Counter
 
 from topomark.spec.errors import CheckFailure, InvalidInput, Violation
-from topomark.spec.kit import Kit
+from topomark.spec.kit import Kit, MarkerOp
 from topomark.spec.marker import VertexMarker
-from topomark.spec.markerlayer import MarkerLayer, MarkerOp, apply_op
+from topomark.spec.markerlayer import MarkerLayer, apply_op
 from topomark.spec.robot import State, sense, step
 from topomark.spec.signature import Signature
 from topomark.spec.world import World

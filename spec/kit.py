@@ -1,60 +1,42 @@
-"""Marker kits and marker classes: what a robot carries, and where a class's markers lie (thesis §3.1.1,
-§3.2, §3.3, Figure 3.21, §6.1–6.3, §2.3.1).
+"""Marker kits: what a robot carries, and the marker operations it may do with them (thesis §3.1.1,
+§6.1–6.3, §2.3.1).
 
 A :class:`Kit` is what the robot is given before it sets out: how many vertex
 markers and edge markers, whether they are directional, whether they may be
 picked up again (the movable marker of Dudek et al., §2.3.1), and a thread of
-some length (§6.3).  The robot and the simulator refuse any operation the
-kit does not allow (:meth:`Kit.refusal` says why); the protocol's ``hello``
-carries :meth:`Kit.to_json`.
-
-A :class:`MarkerClass` is a kit placed in a world: it says which markers the
-world carries and where the robot starts.  Searches and the census range
-over every world, every placement of the class's markers and every starting
-exit; :meth:`MarkerClass.placements` enumerates exactly those.
-
-=========================  ==========================================================  ==========
-name                       markers and start                                           thesis
-=========================  ==========================================================  ==========
-none                       no marker; start anywhere                                   §3.2.1, Fig 3.3
-undirected-vertex          one undirected marker at the start vertex                   §3.2.2, Fig 3.4
-directional-vertex         one directional marker at the start vertex                  §3.3, Fig 3.6
-two-undirected-vertex      one marker each on two adjacent vertices; start at one      Fig 3.21(a)
-three-undirected-vertex    one marker on the start vertex, two on a neighbour          Fig 3.21(b)
-undirected-edge            one marker on an edge; start at an end of it                §6.1, Fig 6.1(a)
-directional-edge           one directional marker on an edge; start at an end          §6.1, Fig 6.1(b)
-vertex-and-edge            one marker at the start vertex, one on an incident edge     §6.2
-=========================  ==========================================================  ==========
+some length (§6.3).  A :class:`MarkerOp` is one operation as the robot states
+it, relative to its entry edge.  The simulator refuses any operation the kit
+does not allow (:meth:`Kit.refusal` says why); the protocol's ``hello``
+carries :meth:`Kit.to_json`.  Where the kits of the thesis's marker classes
+are placed in worlds is :mod:`topomark.spec.markerclass`.
 
 Decision (the thesis is silent): a kit's markers are all directional or all
 undirected — every marker class of the thesis is homogeneous in that respect
 (Figure 3.21, §6.1, §6.2) — and a thread's length is in edges, 0 meaning the
 thesis's l = ε (tied at v0, never laid along an edge; §6.3).
 
+This module imports nothing that can see a world: explorers may use it.
+
 Examples
 --------
->>> from topomark.spec.world import World
->>> tri = World({"a": ["b", "c"], "b": ["c", "a"], "c": ["a", "b"]})
->>> len(list(MARKER_CLASSES["directional-vertex"].placements(tri)))  # 3 vertices x 2 heads x 2 facings
-12
->>> MARKER_CLASSES["directional-vertex"].kit.to_json()
+>>> Kit(vertex=1, directional=True).to_json()
 {'directional-vertex': 1}
 >>> Kit.from_json({"directional-vertex": 1}) == Kit(vertex=1, directional=True)
 True
 >>> Kit(vertex=1).refusal("edge", directional=False, count=1, held=0)
 'the kit (1 undirected vertex marker) has no edge marker'
+>>> MarkerOp("edge", exit=2, direction="H").to_json()
+{'op': 'drop', 'kind': 'edge', 'count': 1, 'exit': 2, 'direction': 'H'}
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Callable, Iterator
+from typing import Any
 
 from .errors import InvalidInput
-from .marker import EdgeMarker, Marker, VertexMarker
-from .world import Start, World
 
-__all__ = ["Kit", "MarkerClass", "MARKER_CLASSES", "marker_class"]
+__all__ = ["Kit", "MarkerOp"]
 
 
 @dataclass(frozen=True)
@@ -141,84 +123,26 @@ class Kit:
 
 
 @dataclass(frozen=True)
-class MarkerClass:
-    """A kit placed in a world: the placements searches and the census range over."""
+class MarkerOp:
+    """A marker operation as the robot states it, relative to its entry edge (§3.1.1).
 
-    name: str
-    kit: Kit
-    description: str
-    section: str
-    sufficient: bool  # what the thesis shows: a single class member maps every world
-    _layouts: Callable[[World, str], Iterator[list[Marker]]]
+    ``kind`` is ``"vertex"`` or ``"edge"``; ``exit`` (edge markers only) is the
+    marked exit counted clockwise from the entry edge, like a motion;
+    ``direction`` is, for a vertex marker, the relative exit it points at, and
+    for an edge marker ``"H"`` or ``"T"`` — its head or tail at this vertex —
+    and ``None`` for an undirected marker; ``pick_up`` takes markers instead.
+    """
 
-    def placements(self, world: World) -> Iterator[World]:
-        """Every placement of this class's markers on ``world`` with every starting exit."""
-        for v in world.vertices:
-            for markers in self._layouts(world, v):
-                for facing in world.rotation[v]:
-                    yield World(world.rotation, markers, Start(v, facing))
+    kind: str = "vertex"
+    exit: int | None = None
+    direction: int | str | None = None
+    count: int = 1
+    pick_up: bool = False
 
-
-def _none(world, v):
-    yield []
-
-
-def _undirected_vertex(world, v):
-    yield [VertexMarker(v)]
-
-
-def _directional_vertex(world, v):
-    for w in world.rotation[v]:
-        yield [VertexMarker(v, 1, w)]
-
-
-def _two_undirected(world, v):
-    for w in world.rotation[v]:
-        yield [VertexMarker(v), VertexMarker(w)]
-
-
-def _three_undirected(world, v):
-    for w in world.rotation[v]:
-        yield [VertexMarker(v), VertexMarker(w, 2)]
-
-
-def _undirected_edge(world, v):
-    for w in world.rotation[v]:
-        yield [EdgeMarker((v, w))]
-
-
-def _directional_edge(world, v):
-    for w in world.rotation[v]:
-        for head in (v, w):
-            yield [EdgeMarker((v, w), 1, head)]
-
-
-def _vertex_and_edge(world, v):
-    for w in world.rotation[v]:
-        yield [VertexMarker(v), EdgeMarker((v, w))]
-
-
-MARKER_CLASSES: dict[str, MarkerClass] = {c.name: c for c in (
-    MarkerClass("none", Kit(), "no marker", "§3.2.1", False, _none),
-    MarkerClass("undirected-vertex", Kit(vertex=1), "one undirected vertex marker at the start", "§3.2.2", False,
-                _undirected_vertex),
-    MarkerClass("directional-vertex", Kit(vertex=1, directional=True), "one directional vertex marker at the start",
-                "§3.3", True, _directional_vertex),
-    MarkerClass("two-undirected-vertex", Kit(vertex=2), "undirected markers on the start and an adjacent vertex",
-                "§3.7, Figure 3.21(a)", False, _two_undirected),
-    MarkerClass("three-undirected-vertex", Kit(vertex=3), "one undirected marker at the start, two on a neighbour",
-                "§3.7, Figure 3.21(b)", True, _three_undirected),
-    MarkerClass("undirected-edge", Kit(edge=1), "one undirected edge marker; start at an end",
-                "§6.1, Figure 6.1(a)", False, _undirected_edge),
-    MarkerClass("directional-edge", Kit(edge=1, directional=True), "one directional edge marker; start at an end",
-                "§6.1, Figure 6.1(b)", True, _directional_edge),
-    MarkerClass("vertex-and-edge", Kit(vertex=1, edge=1), "one undirected marker at the start and one on an "
-                "incident edge", "§6.2", True, _vertex_and_edge),
-)}
-
-
-def marker_class(name: str) -> MarkerClass:
-    """The marker class called ``name``; an unknown name is :class:`InvalidInput` listing the known ones."""
-    if name not in MARKER_CLASSES:
-        raise InvalidInput(f"unknown marker class {name!r} (choose from {', '.join(MARKER_CLASSES)})")
-    return MARKER_CLASSES[name]
+    def to_json(self) -> dict:
+        out = {"op": "pick_up" if self.pick_up else "drop", "kind": self.kind, "count": self.count}
+        if self.exit is not None:
+            out["exit"] = self.exit
+        if self.direction is not None:
+            out["direction"] = self.direction
+        return out

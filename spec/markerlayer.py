@@ -41,14 +41,14 @@ True
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import Iterator
 
 from .errors import InvalidInput
+from .kit import MarkerOp
 from .marker import EdgeMarker, Marker, VertexMarker
 from .world import DartMark, VertexMark, World
 
-__all__ = ["MarkerLayer", "MarkerOp", "apply_op"]
+__all__ = ["MarkerLayer", "apply_op"]
 
 _FLIP = {"H": "T", "T": "H", None: None}
 
@@ -178,32 +178,6 @@ class MarkerLayer:
         if self._world is None:
             self._world = self.base.with_markers(tuple(self.markers()), self.base.start)
         return self._world
-
-
-@dataclass(frozen=True)
-class MarkerOp:
-    """A marker operation as the robot states it, relative to its entry edge (§3.1.1).
-
-    ``kind`` is ``"vertex"`` or ``"edge"``; ``exit`` (edge markers only) is the
-    marked exit counted clockwise from the entry edge, like a motion;
-    ``direction`` is, for a vertex marker, the relative exit it points at, and
-    for an edge marker ``"H"`` or ``"T"`` — its head or tail at this vertex —
-    and ``None`` for an undirected marker; ``pick_up`` takes markers instead.
-    """
-
-    kind: str = "vertex"
-    exit: int | None = None
-    direction: int | str | None = None
-    count: int = 1
-    pick_up: bool = False
-
-    def to_json(self) -> dict:
-        out = {"op": "pick_up" if self.pick_up else "drop", "kind": self.kind, "count": self.count}
-        if self.exit is not None:
-            out["exit"] = self.exit
-        if self.direction is not None:
-            out["direction"] = self.direction
-        return out
 
 
 def apply_op(layer: MarkerLayer, state: tuple[str, int], op: MarkerOp) -> None:

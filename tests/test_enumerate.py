@@ -12,7 +12,7 @@ from hypothesis import strategies as st
 
 from topomark.proofs.enumerate import (_extend, _world, canonical_form, connected_graphs, count_by_size,
                                        embedded_worlds, rotation_systems)
-from topomark.spec.kit import MARKER_CLASSES
+from topomark.spec.markerclass import MARKER_CLASSES
 from topomark.reference.strategies import relabelled, rotated, worlds
 from topomark.spec.errors import InvalidInput
 from topomark.spec.isomorphism import anchored, find_isomorphism

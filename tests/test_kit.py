@@ -10,7 +10,8 @@ import pytest
 
 import topomark.spec
 from topomark.spec.errors import InvalidInput
-from topomark.spec.kit import MARKER_CLASSES, Kit, marker_class
+from topomark.spec.kit import Kit
+from topomark.spec.markerclass import MARKER_CLASSES, marker_class
 
 
 @pytest.mark.parametrize("name", sorted(m.name for m in pkgutil.iter_modules(topomark.spec.__path__)))

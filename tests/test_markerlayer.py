@@ -9,8 +9,8 @@ from hypothesis import strategies as st
 from topomark.reference.generators import lattice_hole, wheel_a
 from topomark.reference.simulator import Simulator
 from topomark.spec.errors import CheckFailure, InvalidInput
-from topomark.spec.kit import Kit
-from topomark.spec.markerlayer import MarkerLayer, MarkerOp, apply_op
+from topomark.spec.kit import Kit, MarkerOp
+from topomark.spec.markerlayer import MarkerLayer, apply_op
 from topomark.spec.robot import sense
 from topomark.spec.world import Start, World
 

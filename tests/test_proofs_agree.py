@@ -14,7 +14,7 @@ import pytest
 
 from topomark.proofs.bisim import is_counterexample
 from topomark.proofs.census import census
-from topomark.spec.kit import MARKER_CLASSES
+from topomark.spec.markerclass import MARKER_CLASSES
 from topomark.proofs.z3search import search
 
 BOUNDS = [(3, 2), (4, 3), (4, 4), (5, 3)]
