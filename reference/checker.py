@@ -27,7 +27,7 @@ them to agree.  The end-of-run verdict always uses the full predicates.
 from __future__ import annotations
 
 from topomark.spec.errors import CheckFailure, Violation
-from topomark.spec.invariants import (IncrementalInvariants, check_I1, check_I2, correspondence,
+from topomark.spec.invariants import (IncrementalInvariants, check_I1, check_I2, check_lemma1, correspondence,
                                       lighthouse_anchor)
 from topomark.spec.isomorphism import anchored, verify_witness
 
@@ -65,16 +65,7 @@ class Checker:
 
     def after_iteration(self, explorer, it) -> None:
         n = it.number
-        # Lemma 1: (M, P^E) unique among this iteration's hypotheses.
-        seen: dict[tuple, list] = {}
-        for h in it.hypotheses:
-            for other in seen.setdefault(h.motions, []):
-                if other.expected == h.expected:
-                    self._fail(n, Violation("Lemma 1", f"hypotheses {other.dart} and {h.dart}",
-                                            "distinct (M, P^E) pairs",
-                                            f"both M={list(h.motions)}, P^E={[str(x) for x in h.expected]}"))
-            seen[h.motions].append(h)
-        self.passed += 1
+        self._ok(n, check_lemma1(it.hypotheses))  # Lemma 1: (M, P^E) unique among this iteration's hypotheses
         # Bound function t = |E_G| - |E_S|.
         edges = explorer.S.edge_count if self.mode == "incremental" else explorer.S.explored_edges()
         t = self.world.m - edges

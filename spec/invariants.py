@@ -39,7 +39,7 @@ from .mapstate import MapDart, PartialMap
 from .world import Dart, World
 
 __all__ = ["Anchor", "correspondence", "check_I1", "check_I2", "check_invariants", "lighthouse_anchor",
-           "explored_world_darts", "explored_subgraph", "IncrementalInvariants"]
+           "explored_world_darts", "explored_subgraph", "IncrementalInvariants", "check_lemma1"]
 
 Anchor = tuple[MapDart, Dart]
 
@@ -126,6 +126,21 @@ def check_I2(S: PartialMap, world: World, phi: Witness) -> Violation | None:
         w = world.neighbour(*dart)
         return Violation("I-2", f"world dart {dart}", f"an entry in U (the edge {dart[0]!r}-{w!r} is unexplored)",
                          "none")
+    return None
+
+
+def check_lemma1(hypotheses) -> Violation | None:
+    """Lemma 1 (§3.4): the pairs (M, P^E) of one iteration's hypotheses are pairwise distinct.
+
+    ``hypotheses`` are objects with ``dart``, ``motions`` and ``expected``
+    (tuples); the first pair of hypotheses sharing (M, P^E), or None.
+    """
+    seen: dict[tuple, object] = {}
+    for h in hypotheses:
+        other = seen.setdefault((tuple(h.motions), tuple(h.expected)), h)
+        if other is not h:
+            return Violation("Lemma 1", f"hypotheses {other.dart} and {h.dart}", "distinct (M, P^E) pairs",
+                             f"both M={list(h.motions)}, P^E={[str(x) for x in h.expected]}")
     return None
 
 
