@@ -18,11 +18,13 @@ be verified later with ``topomark replay``.
 
 from __future__ import annotations
 
+import json
 import time
 from dataclasses import dataclass, field
 from typing import Any, Sequence
 
-from topomark.spec.errors import CheckFailure, InvalidInput, Violation
+from topomark.spec.errors import CheckFailure, InvalidInput, TopomarkFault, Violation
+from topomark.spec.kit import MarkerOp
 from topomark.spec.signature import Signature
 from topomark.spec.world import World
 from topomark.spec.worldfile import world_to_json
@@ -104,13 +106,17 @@ class _Link:
                            "purpose": purpose})
         return self.here
 
-    def drop(self, direction: int | None) -> None:
+    def operate(self, op: MarkerOp) -> None:
+        """A vertex marker drop is the one marker operation of ``topomark/protocol@1``."""
+        if op.kind != "vertex" or op.pick_up or op.count != 1:
+            raise TopomarkFault(f"drive speaks topomark/protocol@1, which has no {json.dumps(op.to_json())}")
+        direction = op.direction
         self.peer.send({"type": "drop", "direction": direction})
         self.here = self._answer()
         self.trace.append({"event": "drop", "direction": direction, "signature": str(self.here)})
 
     def robot(self) -> Robot:
-        return Robot(self.move, lambda: self.here, self.drop)
+        return Robot(self.move, lambda: self.here, self.operate)
 
 
 def drive(command: Sequence[str], policies: Policies | None = None, world: World | None = None,

@@ -87,6 +87,7 @@ from topomark.spec.errors import CheckFailure, Violation
 from topomark.spec.mapstate import MapDart
 from topomark.spec.signature import Signature, signature_at
 
+from .explorers.lighthouses import LIGHTHOUSES
 from .lighthouse import V0, Hypothesis, Iteration, LighthouseExplorer
 from .policies import bfs
 
@@ -184,8 +185,8 @@ class EnhancedExplorer(LighthouseExplorer):
     enhancement = Enhancement("basic")
     name = "basic"
 
-    def __init__(self, robot, policies=None, observer=None):
-        super().__init__(robot, policies, observer)
+    def __init__(self, robot, policies=None, observer=None, lighthouse=LIGHTHOUSES["directional-vertex"]):
+        super().__init__(robot, policies, observer, lighthouse)
         self.T: dict[MapDart, _Record] = {}
         self.stats: Counter[str] = Counter()
         self._root: _Node | None = None
@@ -202,8 +203,8 @@ class EnhancedExplorer(LighthouseExplorer):
         self.travel_to(vk, parent)
         sig = self.robot.move((i - self.position[1]) % self.S.degree(vk), "new")
         it.signature = sig
-        if sig.vertex_direction is not None:
-            entry = (self.S.vertex_mark(V0).head - sig.vertex_direction) % sig.degree
+        entry = self.lighthouse_entry(sig)
+        if entry is not None:
             self.loop_augment(it, (V0, entry), by_marker=True)
             self._migrate((it.edge, (V0, entry)))
         else:

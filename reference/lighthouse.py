@@ -35,6 +35,7 @@ from topomark.spec.errors import CheckFailure, Violation
 from topomark.spec.mapstate import MapDart, PartialMap
 from topomark.spec.signature import Signature, depends_on_entry, signature_at
 
+from .explorers.lighthouses import LIGHTHOUSES, Lighthouse
 from .policies import Policies, bfs, tree_to_v0
 from .robot import Robot
 
@@ -84,23 +85,30 @@ class LighthouseExplorer:
     name = "basic"
 
     def __init__(self, robot: Robot, policies: Policies | None = None,
-                 observer: Callable[["LighthouseExplorer", Iteration], None] | None = None):
+                 observer: Callable[["LighthouseExplorer", Iteration], None] | None = None,
+                 lighthouse: Lighthouse = LIGHTHOUSES["directional-vertex"]):
         self.robot = robot
         self.policies = policies or Policies()
         self.observer = observer
+        self.lighthouse = lighthouse
         self.S = PartialMap()
         self.position: MapDart = (V0, 0)  # believed (map vertex, entry index)
         self.iterations: list[Iteration] = []
+        self._v0_entries: dict[Signature, int] = {}
 
     # -- lines 1-3 -----------------------------------------------------------
     def start(self) -> None:
-        """Drop the directional marker at v0 pointing at the faced exit; S = {v0}; U = its exits."""
+        """Establish the lighthouse at v0, facing exit 0 (line 1: Algorithm 3.1 drops its directional marker
+        pointing at the faced exit); S = {v0}; U = its exits."""
         here = self.robot.sense()
-        self.robot.drop_marker(0)
         v0 = self.S.add_vertex(here.degree)
-        self.S.mark_vertex(v0, head=0)
+        self._v0_entries = self.lighthouse.establish(self.robot, self.S, v0)
         self.S.unexplored = [(v0, i) for i in range(here.degree)]
         self.position = (v0, 0)
+
+    def lighthouse_entry(self, sig: Signature) -> int | None:
+        """The exit of v0 the robot entered by, if ``sig`` is the lighthouse's (§3.3: place and back-link)."""
+        return self._v0_entries.get(sig)
 
     def explore(self) -> PartialMap:
         """Run to termination (U empty) and return S."""
@@ -117,9 +125,8 @@ class LighthouseExplorer:
         self.travel_to(vk, parent)
         sig = self.robot.move((i - self.position[1]) % self.S.degree(vk), "new")
         it.signature = sig
-        mark = self.S.vertex_mark(V0)
-        if sig.vertex_direction is not None:
-            entry = (mark.head - sig.vertex_direction) % sig.degree
+        entry = self.lighthouse_entry(sig)
+        if entry is not None:
             self.loop_augment(it, (V0, entry), by_marker=True)
         else:
             confirmed, heading = self.validate(it, sig)
@@ -241,6 +248,7 @@ class LighthouseExplorer:
     def non_loop_augment(self, it: Iteration, sig: Signature, heading: int) -> None:
         """Add v_u and e; e is v_u's exit 0, the rest numbered clockwise and added to U."""
         u = self.S.add_vertex(sig.degree)
+        self.S.mark_as_sensed(u, sig, 0)  # markers seen at v_u (e.g. the far end of a marked edge, §6.1)
         self.S.add_edge(it.edge, (u, 0))
         self.S.unexplored.extend((u, i) for i in range(1, sig.degree))
         it.kind, it.joined = "non-loop", (it.edge, (u, 0))

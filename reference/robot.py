@@ -16,6 +16,7 @@ from __future__ import annotations
 
 from typing import Callable
 
+from topomark.spec.kit import MarkerOp
 from topomark.spec.signature import Signature
 
 __all__ = ["Robot", "PURPOSES"]
@@ -26,11 +27,11 @@ PURPOSES = ("travel", "new", "validation", "retrace", "expansion", "other")
 class Robot:
     """A narrow handle on a simulator: motions, perceptions and marker operations only."""
 
-    __slots__ = ("_move", "_sense", "_drop")
+    __slots__ = ("_move", "_sense", "_operate")
 
     def __init__(self, move: Callable[[int, str], Signature], sense: Callable[[], Signature],
-                 drop: Callable[[int | None], None]):
-        self._move, self._sense, self._drop = move, sense, drop
+                 operate: Callable[[MarkerOp], None]):
+        self._move, self._sense, self._operate = move, sense, operate
 
     def move(self, motion: int, purpose: str = "other") -> Signature:
         """Leave through exit ``motion`` counted clockwise from the entry edge; return the signature reached."""
@@ -40,6 +41,10 @@ class Robot:
         """The signature of the current vertex relative to the current entry edge."""
         return self._sense()
 
+    def operate(self, op: MarkerOp) -> None:
+        """Drop or pick up markers here (:class:`~topomark.spec.kit.MarkerOp`), as the kit allows."""
+        self._operate(op)
+
     def drop_marker(self, direction: int | None = None) -> None:
         """Drop a vertex marker here; directional markers point at relative exit ``direction``."""
-        self._drop(direction)
+        self._operate(MarkerOp("vertex", direction=direction))

@@ -57,7 +57,7 @@ class Simulator:
 
     # -- the explorer's side -------------------------------------------------
     def robot(self) -> Robot:
-        return Robot(self._move, self._sense, self._drop)
+        return Robot(self._move, self._sense, self.operate)
 
     def _move(self, motion: int, purpose: str) -> Signature:
         if purpose not in PURPOSES:
@@ -76,10 +76,6 @@ class Simulator:
 
     def _sense(self) -> Signature:
         return sense(self.layer, self.state)
-
-    def _drop(self, direction: int | None) -> None:
-        """Algorithm 3.1's drop: one vertex marker here (kept for the explorers written against it)."""
-        self.operate(MarkerOp("vertex", direction=direction))
 
     def operate(self, op: MarkerOp) -> None:
         """Carry out a marker operation, gated by the kit; a refused one is the explorer's fault."""

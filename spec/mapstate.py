@@ -73,6 +73,21 @@ class PartialMap:
         self._dmarks[v] = tuple(sorted(self._dmarks.get(v, ()) + (mark,), key=lambda d: d.exit))
         self.journal.append(("mark", v))
 
+    def mark_as_sensed(self, v: int, sig, entry: int) -> None:
+        """Record at ``v`` the marks in ``sig``, sensed by a robot that entered ``v`` by exit ``entry``.
+
+        The inverse of :func:`~topomark.spec.signature.signature_at`: afterwards
+        ``signature_at(self, v, entry) == sig`` (§3.1.1: a relative direction
+        ``h`` read from entry ``j`` is exit ``(j + h) mod deg``).
+        """
+        d = self.degree(v)
+        require(sig.degree == d, f"signature {sig} sensed at map vertex {v} of degree {d}")
+        if sig.vertex_count:
+            head = None if sig.vertex_direction is None else (entry + sig.vertex_direction) % d
+            self.mark_vertex(v, sig.vertex_count, head)
+        for x, count, end in sig.edges:
+            self.mark_dart(v, DartMark((entry + x) % d, count, end))
+
     # -- queries (the same protocol as World, so signature_at works on both) --
     @property
     def vertices(self) -> range:

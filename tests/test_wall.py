@@ -17,11 +17,12 @@ from topomark.reference.robot import Robot
 from topomark.reference.simulator import Simulator
 
 REFERENCE = Path(__file__).resolve().parents[1] / "reference"
-EXPLORER_MODULES = ["lighthouse.py", "policies.py", "robot.py", "enhancements.py"]
+EXPLORER_MODULES = ["lighthouse.py", "policies.py", "robot.py", "enhancements.py"] + sorted(
+    f"explorers/{p.name}" for p in (REFERENCE / "explorers").glob("*.py"))
 ALLOWED = {
     "__future__", "dataclasses", "typing", "collections",
-    "topomark.spec.signature", "topomark.spec.mapstate", "topomark.spec.errors",
-    ".policies", ".robot", ".lighthouse",
+    "topomark.spec.signature", "topomark.spec.mapstate", "topomark.spec.errors", "topomark.spec.kit",
+    ".policies", ".robot", ".lighthouse", ".explorers.lighthouses",
 }
 
 
@@ -52,6 +53,6 @@ def test_robot_exposes_only_motions_perception_and_markers():
     robot = sim.robot()
     assert isinstance(robot, Robot)
     public = {name for name in dir(robot) if not name.startswith("_")}
-    assert public == {"move", "sense", "drop_marker"}
+    assert public == {"move", "sense", "operate", "drop_marker"}
     assert not hasattr(robot, "__dict__")  # __slots__: nothing can be attached
     assert str(robot.move(1, "new")) == "[2,A,A]" and sim.cost == 1
