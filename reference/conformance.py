@@ -17,8 +17,10 @@ test vectors, :func:`export` writes a self-describing, versioned directory:
     the edge, hypothesis and path choices open): its trace (``spec/trace.md``),
     its map, and in the manifest its cost in edge traversals (§3.1.2).
 
-:func:`lint` checks a suite: the manifest's shape and version, unique case
-names, every world and map file valid against the published schema and the
+:func:`lint` checks a suite: the manifest's shape and version, field by field
+and before anything else (:func:`check_manifest`: every path relative and
+inside the suite, every count and cost a positive integer), unique case
+names, the suite's schema being the published one, every world and map file valid against the published schema and the
 strict loader, every file listed and every listed file present, every
 reference trace verified by :func:`topomark.reference.replay.replay` with
 the cost the manifest claims, every reference map isomorphic to its world.
@@ -27,6 +29,11 @@ the cost the manifest claims, every reference map isomorphic to its world.
 ``topomark/protocol@1`` (:func:`topomark.reference.external.run_external`): a
 crash, a hang or garbage is a failure like a wrong map.  Each row reports the
 implementation's cost and its ratio to the reference costs.
+
+A suite is input like any other: every file is read through
+:mod:`topomark.spec.jsontext` (regular files only, bounded size, UTF-8,
+bounded nesting and integers), and any defect of a tampered suite is one
+:class:`~topomark.spec.errors.InvalidInput` naming the file and field.
 """
 
 from __future__ import annotations
@@ -35,13 +42,14 @@ import json
 import re
 import time
 from dataclasses import dataclass
-from pathlib import Path
+from pathlib import Path, PurePosixPath
 from typing import Any, Callable, Sequence
 
-from topomark.spec.errors import CheckFailure, InvalidInput
+from topomark.spec.errors import CheckFailure, InvalidInput, TopomarkFault
+from topomark.spec.jsontext import parse_json, read_text_file
 from topomark.spec.world import Start, World
 from topomark.spec.worldfile import FORMAT as WORLD_FORMAT
-from topomark.spec.worldfile import dumps_world, load_world, schema
+from topomark.spec.worldfile import MAX_WORLD_BYTES, dumps_world, load_world, loads_world, schema
 
 from . import generators as g
 from .explore import TRACE_FORMAT, dump_trace, explore
@@ -52,7 +60,7 @@ from .protocol import PROTOCOL
 from .replay import load_trace, replay
 
 __all__ = ["SUITE_FORMAT", "SUITE_VERSION", "POLICIES", "default_cases", "export", "lint", "run", "Row",
-           "render_table"]
+           "render_table", "load_manifest", "check_manifest"]
 
 SUITE_FORMAT = "topomark/conformance@1"
 SUITE_VERSION = "1.0.0"
@@ -64,7 +72,9 @@ POLICIES: dict[str, Policies] = {  # the default, and each other named policy of
     "hypothesis-shortest": Policies(hypothesis="shortest"),
     "path-dfs": Policies(path="dfs"),
 }
-_NAME = re.compile(r"^[a-z0-9][a-z0-9.-]*$")
+_NAME = re.compile(r"[a-z0-9][a-z0-9.-]*")
+_PATH_PART = re.compile(r"[A-Za-z0-9_][A-Za-z0-9_.-]*")  # no "..", no hidden files, nothing the OS reinterprets
+_MANIFEST_BYTES = 64 << 20  # the default suite's manifest is about 20 kB
 LAYOUT = {
     "manifest.json": "this file",
     "schema/world.schema.json": "JSON Schema of topomark/world@1; every worlds/ and reference/*.map.json file is "
@@ -156,43 +166,114 @@ def _bad(root: Path, message: str) -> None:
 
 
 def load_manifest(root: Path) -> dict[str, Any]:
+    """The parsed ``manifest.json`` of the suite at ``root``, its shape checked by :func:`check_manifest`."""
     path = root / "manifest.json"
-    try:
-        manifest = json.loads(path.read_text(encoding="utf-8"))
-    except (OSError, UnicodeDecodeError):
+    if not path.exists():
         _bad(root, "no readable manifest.json (is this a conformance suite directory?)")
-    except json.JSONDecodeError as exc:
-        _bad(root, f"manifest.json is malformed JSON ({exc.msg} at line {exc.lineno})")
-    if not isinstance(manifest, dict) or manifest.get("format") != SUITE_FORMAT:
-        found = manifest.get("format") if isinstance(manifest, dict) else None
-        _bad(root, f"manifest format {found!r} is not {SUITE_FORMAT}")
-    major = str(manifest.get("version", "")).split(".")[0]
-    if major != SUITE_VERSION.split(".")[0]:
-        _bad(root, f"suite version {manifest.get('version')!r} is not compatible with {SUITE_VERSION}")
+    manifest = parse_json(read_text_file(path, max_bytes=_MANIFEST_BYTES), str(path))
+    check_manifest(root, manifest)
+    return manifest
+
+
+def _field(root: Path, where: str, value: Any, ok: bool, want: str) -> None:
+    if not ok:
+        shown = json.dumps(value)
+        shown = shown if len(shown) <= 60 else shown[:57] + "..."
+        _bad(root, f"manifest.json: {where} must be {want}, got {shown}")
+
+
+def _count(root: Path, where: str, value: Any) -> None:
+    _field(root, where, value, isinstance(value, int) and not isinstance(value, bool) and value >= 1,
+           "a positive integer")
+
+
+def _path(root: Path, where: str, value: Any) -> None:
+    ok = isinstance(value, str) and all(_PATH_PART.fullmatch(p) for p in value.split("/"))
+    _field(root, where, value, ok and not PurePosixPath(value).is_absolute(),
+           "a relative path inside the suite (letters, digits, '_', '.', '-' and '/')")
+
+
+def check_manifest(root: Path, manifest: Any) -> None:
+    """Check the shape of a parsed manifest, field by field, before any of it is used.
+
+    Format, version (same major version), protocol; ``policies`` a non-empty
+    object; each case an object with a valid unique ``name``, a string
+    ``description``, a ``world`` path, positive integers ``n`` and ``m``, and a
+    ``reference`` with one object per policy holding a positive integer
+    ``cost`` (costs are divided by) and ``trace`` and ``map`` paths.  Paths
+    are relative and cannot leave the suite (no ``..``, no absolute path).
+    Any defect is one :class:`InvalidInput` naming ``manifest.json`` and the field.
+    """
+    _field(root, "the manifest", manifest, isinstance(manifest, dict), "a JSON object")
+    fmt = manifest.get("format")
+    if fmt != SUITE_FORMAT:
+        _bad(root, f"manifest format {fmt!r} is not {SUITE_FORMAT}")
+    version = manifest.get("version")
+    _field(root, "version", version, isinstance(version, str), "a version string")
+    if version.split(".")[0] != SUITE_VERSION.split(".")[0]:
+        _bad(root, f"suite version {version!r} is not compatible with {SUITE_VERSION}")
     for key, want in (("cases", list), ("policies", dict), ("protocol", str)):
         if not isinstance(manifest.get(key), want):
             _bad(root, f"manifest.{key} is missing or not a {want.__name__}")
     if manifest["protocol"] != PROTOCOL:
         _bad(root, f"the suite speaks {manifest['protocol']!r}, this topomark speaks {PROTOCOL}")
-    return manifest
+    policies = manifest["policies"]
+    _field(root, "policies", policies, bool(policies), "a non-empty object")
+    names: set[str] = set()
+    for k, case in enumerate(manifest["cases"]):
+        _field(root, f"cases[{k}]", case, isinstance(case, dict), "an object")
+        name = case.get("name")
+        if not isinstance(name, str) or not _NAME.fullmatch(name):
+            _bad(root, f"cases[{k}] has no valid name (lowercase letters, digits, '.', '-')")
+        if name in names:
+            _bad(root, f"duplicate case name {name!r}")
+        names.add(name)
+        _check_case(root, f"cases[{k}] ({name})", case, policies)
+
+
+def _check_case(root: Path, where: str, case: dict, policies: dict) -> None:
+    _field(root, f"{where}.description", case.get("description"), isinstance(case.get("description"), str),
+           "a string")
+    _path(root, f"{where}.world", case.get("world"))
+    _count(root, f"{where}.n", case.get("n"))
+    _count(root, f"{where}.m", case.get("m"))
+    reference = case.get("reference")
+    if not isinstance(reference, dict) or set(reference) != set(policies):
+        _bad(root, f"manifest.json: {where}.reference must have one entry per named policy "
+                   f"({', '.join(policies)})")
+    for label, ref in reference.items():
+        _field(root, f"{where}.reference.{label}", ref, isinstance(ref, dict), "an object {cost, trace, map}")
+        _count(root, f"{where}.reference.{label}.cost", ref.get("cost"))
+        _path(root, f"{where}.reference.{label}.trace", ref.get("trace"))
+        _path(root, f"{where}.reference.{label}.map", ref.get("map"))
 
 
 def _validator(root: Path) -> Callable[[Any, str], None]:
-    """Validation against the suite's published schema (jsonschema if installed, else the strict loader only)."""
-    try:
-        published = json.loads((root / "schema" / "world.schema.json").read_text(encoding="utf-8"))
-    except (OSError, json.JSONDecodeError):
-        _bad(root, "schema/world.schema.json is missing or malformed")
+    """Validation against the published world schema, which the suite's copy must equal.
+
+    The suite's ``schema/world.schema.json`` is compared with topomark's own
+    (a tampered schema could make anything valid, or make validation itself
+    expensive); validation then uses topomark's.  ``jsonschema`` is a
+    dependency of topomark: without it lint cannot do its job, which is a
+    fault of the installation (exit 3), not of the suite.
+    """
+    rel = "schema/world.schema.json"
+    if not (root / rel).is_file():
+        _bad(root, f"{rel} is missing")
+    published = parse_json(read_text_file(root / rel, max_bytes=_MANIFEST_BYTES), str(root / rel))
+    if published != schema():
+        _bad(root, f"{rel} is not the published schema of {WORLD_FORMAT}")
     try:
         import jsonschema
-    except ImportError:  # pragma: no cover - jsonschema is a test dependency
-        return lambda obj, where: None
+    except ImportError:
+        raise TopomarkFault("conformance lint needs the jsonschema package, a dependency of topomark; "
+                            "reinstall topomark (pip install topomark)") from None
     validator = jsonschema.Draft202012Validator(published)
 
     def check(obj: Any, where: str) -> None:
         error = next(iter(validator.iter_errors(obj)), None)
         if error is not None:
-            _bad(root, f"{where} is not valid against schema/world.schema.json: {error.message}")
+            _bad(root, f"{where} is not valid against {rel}: {error.message}")
     return check
 
 
@@ -202,14 +283,7 @@ def lint(directory: str | Path, replay_traces: bool = True) -> dict[str, Any]:
     manifest = load_manifest(root)
     validate = _validator(root)
     listed = {"manifest.json", "schema/world.schema.json"}
-    names: set[str] = set()
-    for k, case in enumerate(manifest["cases"]):
-        name = case.get("name") if isinstance(case, dict) else None
-        if not isinstance(name, str) or not _NAME.match(name):
-            _bad(root, f"cases[{k}] has no valid name (lowercase letters, digits, '.', '-')")
-        if name in names:
-            _bad(root, f"duplicate case name {name!r}")
-        names.add(name)
+    for case in manifest["cases"]:
         _lint_case(root, case, validate, listed, manifest["policies"], replay_traces)
     present = {p.relative_to(root).as_posix() for p in root.rglob("*") if p.is_file()}
     for path in sorted(present - listed):
@@ -217,42 +291,38 @@ def lint(directory: str | Path, replay_traces: bool = True) -> dict[str, Any]:
     return manifest
 
 
-def _load_checked(root: Path, rel: Any, validate, listed: set[str], what: str) -> World:
-    if not isinstance(rel, str) or not (root / rel).is_file():
+def _load_checked(root: Path, rel: str, validate, listed: set[str], what: str) -> World:
+    """The world or map file ``rel``: valid against the schema, then loaded by the strict loader."""
+    if not (root / rel).exists():
         _bad(root, f"{what}: file {rel!r} is missing")
     listed.add(rel)
-    try:
-        obj = json.loads((root / rel).read_text(encoding="utf-8"))
-    except json.JSONDecodeError as exc:
-        _bad(root, f"{rel}: malformed JSON ({exc.msg})")
-    validate(obj, rel)
-    return load_world(root / rel)
+    text = read_text_file(root / rel, max_bytes=MAX_WORLD_BYTES)
+    validate(parse_json(text, str(root / rel)), rel)
+    return loads_world(text, str(root / rel))
 
 
 def _lint_case(root: Path, case: dict, validate, listed: set[str], policies: dict, replay_traces: bool) -> None:
+    """Check one case whose shape :func:`check_manifest` has checked: its files and their agreement."""
     name = case["name"]
-    world = _load_checked(root, case.get("world"), validate, listed, f"case {name}")
-    if (case.get("n"), case.get("m")) != (world.n, world.m):
-        _bad(root, f"case {name}: manifest says n={case.get('n')}, m={case.get('m')}; the world has "
+    world = _load_checked(root, case["world"], validate, listed, f"case {name}")
+    if (case["n"], case["m"]) != (world.n, world.m):
+        _bad(root, f"case {name}: manifest says n={case['n']}, m={case['m']}; the world has "
                    f"n={world.n}, m={world.m}")
-    reference = case.get("reference")
-    if not isinstance(reference, dict) or set(reference) != set(policies):
-        _bad(root, f"case {name}: reference must have one entry per named policy ({', '.join(policies)})")
-    for label, ref in reference.items():
+    for label, ref in case["reference"].items():
         where = f"case {name}, policy {label}"
-        map_ = _load_checked(root, ref.get("map"), validate, listed, where)
+        map_ = _load_checked(root, ref["map"], validate, listed, where)
         if not check_map(world, map_).isomorphic:
             _bad(root, f"{where}: the reference map is not isomorphic to the world")
-        trace = ref.get("trace")
-        if not isinstance(trace, str) or not (root / trace).is_file():
+        trace = ref["trace"]
+        if not (root / trace).exists():
             _bad(root, f"{where}: trace file {trace!r} is missing")
         listed.add(trace)
         if replay_traces:
             result = replay(world, load_trace(root / trace), trace)
             if not result.ok:
                 _bad(root, f"{where}: the reference trace does not replay: {result.message}")
-            if result.cost != ref.get("cost"):
-                _bad(root, f"{where}: manifest cost {ref.get('cost')} but the trace has {result.cost} traversals")
+            if result.cost != ref["cost"]:
+                _bad(root, f"{where}: manifest cost {ref['cost']} but the trace has {result.cost} traversals")
 
 
 # -- run ------------------------------------------------------------------------

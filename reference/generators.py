@@ -8,6 +8,13 @@ from the global random state.  Impossible parameters raise
 :class:`~topomark.spec.errors.InvalidInput` with a message naming the
 parameter.
 
+Size: every generator computes n and m from its parameters and refuses, before
+building anything, a world above :data:`~topomark.spec.world.MAX_VERTICES`
+vertices or :data:`~topomark.spec.world.MAX_EDGES` edges (for ``lattice-hole``
+and ``complete-hole`` the full graph they start from; for ``small-world`` the
+most edges it can get), so ``lattice:rows=3000,cols=3000`` fails at once with
+a message naming the limit instead of running into MemoryError.
+
 Conventions
 -----------
 * Vertex names are strings: ``"0"``, ``"1"``, ... for numbered vertices and
@@ -32,10 +39,12 @@ Examples
 
 from __future__ import annotations
 
+import bisect
 import math
 import random
 import re
 from collections import deque
+from collections.abc import Sequence
 from numbers import Integral, Real
 from typing import Any, Callable, Hashable, Iterable, Mapping
 
@@ -43,7 +52,7 @@ import networkx as nx
 
 from topomark.spec.errors import InvalidInput
 from topomark.spec.marker import VertexMarker
-from topomark.spec.world import Start, World
+from topomark.spec.world import Start, World, check_size
 
 __all__ = [
     "natural_key",
@@ -87,8 +96,11 @@ def natural_key(name: str) -> tuple:
 
 
 def _integer(name: str, value: Any, minimum: int) -> int:
+    """``value`` as an int of at most 18 digits (like every JSON and CLI integer) and ``>= minimum``."""
     if isinstance(value, bool) or not isinstance(value, Integral):
         raise InvalidInput(f"{name} must be an integer, got {value!r}")
+    if abs(value) >= 10**18:  # checked first: a 5,000-digit int cannot even be printed in the message
+        raise InvalidInput(f"{name} is out of range (at most 18 digits)")
     if value < minimum:
         raise InvalidInput(f"{name} must be >= {minimum}, got {value}")
     return int(value)
@@ -270,12 +282,14 @@ def cycle(n: int) -> World:
     Vertex ``k`` is joined to ``k±1 (mod n)``; drawn on a circle.
     """
     n = _integer("n", n, 3)
+    check_size(n, n, f"cycle:n={n}")
     return _on_circle(n, ((k, (k + 1) % n) for k in range(n)))
 
 
 def chain(n: int) -> World:
     """The path ("chain") of n >= 2 vertices ``0 - 1 - ... - n-1``, drawn on a horizontal line."""
     n = _integer("n", n, 2)
+    check_size(n, n - 1, f"chain:n={n}")
     return from_positions([(k, k + 1) for k in range(n - 1)], {k: (float(k), 0.0) for k in range(n)})
 
 
@@ -289,6 +303,7 @@ def _lattice_size(rows: Any, cols: Any) -> tuple[int, int]:
     cols = _integer("cols", cols, 1)
     if rows * cols < 2:
         raise InvalidInput(f"a {rows}x{cols} lattice has a single vertex of degree 0; it needs at least 2 cells")
+    check_size(rows * cols, rows * (cols - 1) + cols * (rows - 1), f"the {rows}x{cols} lattice")
     return rows, cols
 
 
@@ -415,6 +430,7 @@ def complete(n: int) -> World:
     is planar for n <= 3 only.
     """
     n = _integer("n", n, 2)
+    check_size(n, n * (n - 1) // 2, f"K_{n}")
     return _on_circle(n, ((i, j) for i in range(n) for j in range(i + 1, n)))
 
 
@@ -427,6 +443,7 @@ def complete_hole(n: int, fraction: float = 0.1, seed: int = 0) -> World:
     outside [0, 1), or more removals than a connected graph allows.
     """
     n = _integer("n", n, 2)
+    check_size(n, n * (n - 1) // 2, f"K_{n} (built before its edges are removed)")
     fraction = _fraction(fraction)
     rng = random.Random(_seed(seed))
     graph = nx.complete_graph(n)
@@ -447,7 +464,8 @@ def small_world(n: int, k: int, p: float, seed: int = 0) -> World:
        added -- unless w == u or (u, w) is already an edge (ring edge or an
        earlier shortcut), in which case nothing is added (no redraw).
 
-    So n*k/2 <= m <= min(n*k, n(n-1)/2).  Embedding: vertices on a circle,
+    So n*k/2 <= m <= min(n*k, n(n-1)/2); the upper bound (n*k/2 if p = 0)
+    is what is checked against the size limits, before anything is built.  Embedding: vertices on a circle,
     clockwise by angle (as :func:`complete`).
     """
     n = _integer("n", n, 3)
@@ -459,6 +477,7 @@ def small_world(n: int, k: int, p: float, seed: int = 0) -> World:
     p = _real("p", p)
     if not 0.0 <= p <= 1.0:
         raise InvalidInput(f"p must be a probability in [0, 1], got {p!r}")
+    check_size(n, min(n * k, n * (n - 1) // 2) if p > 0 else n * k // 2, f"small-world:n={n},k={k},p={p!r}")
     rng = random.Random(_seed(seed))
     ring = [(u, (u + j) % n) for u in range(n) for j in range(1, k // 2 + 1)]
     graph = nx.Graph()
@@ -472,15 +491,52 @@ def small_world(n: int, k: int, p: float, seed: int = 0) -> World:
     return from_positions(graph, circle_positions(n))
 
 
+class _OtherPairs(Sequence):
+    """The vertex pairs ``(i, j)``, ``i < j < n``, in lexicographic order, minus the sorted ``taken`` ones.
+
+    Equal, element by element, to the list of those pairs, but computed on
+    demand: ``random.Random.sample`` draws the same indices from it as from
+    the list (it uses only ``len`` and indexing), so :func:`random_graph` picks
+    the same edges while using memory in proportion to the edges it keeps,
+    not to the n(n-1)/2 pairs.
+    """
+
+    def __init__(self, n: int, taken: Iterable[tuple[int, int]]):
+        self.n = n
+        ranks = sorted(self._rank(i, j) for i, j in taken)
+        self._gaps = [r - t for t, r in enumerate(ranks)]  # kept pairs before the t-th taken one
+        self._len = n * (n - 1) // 2 - len(ranks)
+
+    def _start(self, i: int) -> int:
+        return i * (2 * self.n - i - 1) // 2
+
+    def _rank(self, i: int, j: int) -> int:
+        return self._start(i) + j - i - 1
+
+    def __len__(self) -> int:
+        return self._len
+
+    def __getitem__(self, k: int) -> tuple[int, int]:
+        if not 0 <= k < self._len:
+            raise IndexError(k)
+        r = k + bisect.bisect_right(self._gaps, k)
+        b = 2 * self.n - 1
+        i = max(0, (b - math.isqrt(b * b - 8 * r)) // 2 - 1)
+        while self._start(i + 1) <= r:
+            i += 1
+        return i, r - self._start(i) + i + 1
+
+
 def random_graph(n: int, fraction: float, seed: int = 0) -> World:
     """A randomly connected graph, §3.5.3 (Figure 3.9(b)): ``round(fraction * n(n-1)/2)`` edges.
 
     Connectivity is guaranteed by construction: first a random spanning tree
     (vertices in a random order, each joined to a uniformly chosen earlier
     one), then the remaining edges drawn uniformly without replacement from
-    all other vertex pairs.  Embedding: vertices on a circle, clockwise by
-    angle (as :func:`complete`).  Raises InvalidInput if n < 2, fraction is
-    outside (0, 1], or the edge count is below n - 1 (no connected graph).
+    all other vertex pairs (:class:`_OtherPairs`).  Embedding: vertices on a
+    circle, clockwise by angle (as :func:`complete`).  Raises InvalidInput if
+    n < 2, fraction is outside (0, 1], the edge count is below n - 1 (no
+    connected graph) or the world exceeds the size limits (checked first).
     """
     n = _integer("n", n, 2)
     f = _real("fraction", fraction)
@@ -488,6 +544,7 @@ def random_graph(n: int, fraction: float, seed: int = 0) -> World:
         raise InvalidInput(f"fraction must be in (0, 1], got {fraction!r}")
     total = n * (n - 1) // 2
     count = round(f * total)
+    check_size(n, count, f"random:n={n},fraction={fraction!r}")
     if count < n - 1:
         raise InvalidInput(
             f"fraction {fraction!r} gives {count} edges, fewer than the {n - 1} a connected graph "
@@ -497,8 +554,7 @@ def random_graph(n: int, fraction: float, seed: int = 0) -> World:
     order = list(range(n))
     rng.shuffle(order)
     edges = {tuple(sorted((order[i], order[rng.randrange(i)]))) for i in range(1, n)}
-    rest = [(i, j) for i in range(n) for j in range(i + 1, n) if (i, j) not in edges]
-    edges.update(rng.sample(rest, count - len(edges)))
+    edges.update(rng.sample(_OtherPairs(n, edges), count - len(edges)))
     return _on_circle(n, sorted(edges))
 
 
@@ -622,13 +678,29 @@ PARAMETERS: dict[str, dict[str, Any]] = {
 (int, float or str); ``generate`` fills in missing parameters from here."""
 
 
+_CLI_NUMBER = {int: re.compile(r"[+-]?[0-9]+"),
+               float: re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")}
+_CLI_DIGITS = 18  # as for JSON integers (topomark.spec.jsontext.MAX_INT_DIGITS)
+
+
+def _shown(value: str, limit: int = 40) -> str:
+    """``repr(value)`` cut to ``limit`` characters, for messages about hostile parameters."""
+    return repr(value) if len(value) <= limit else repr(value[:limit]) + f"... ({len(value):,} characters)"
+
+
 def _coerce(generator: str, param: str, value: Any, default: Any) -> Any:
+    """A parameter value as the type of its default; a string (from the CLI) must be a plain ASCII
+    number (no ``nan``, ``1_000`` or non-ASCII digits) of at most 18 digits before the point,
+    so no conversion ever costs more than the text is long."""
     kind = type(default)
     if isinstance(value, str) and kind is not str:
-        try:
-            return kind(value)
-        except ValueError:
-            raise InvalidInput(f"{generator}: parameter {param} must be {kind.__name__}, got {value!r}") from None
+        if not _CLI_NUMBER[kind].fullmatch(value):
+            raise InvalidInput(f"{generator}: parameter {param} must be {kind.__name__}, got {_shown(value)}")
+        mantissa = re.split(r"[.eE]", value.lstrip("+-"))[0]
+        if len(mantissa) > _CLI_DIGITS:
+            raise InvalidInput(f"{generator}: parameter {param} = {_shown(value)} is out of range "
+                               f"(at most {_CLI_DIGITS} digits)")
+        return kind(value)
     if kind is float and isinstance(value, Integral) and not isinstance(value, bool):
         return float(value)
     return value

@@ -4,6 +4,12 @@
 ``topomark explore world.json`` both name a world.  ``--seed`` goes to the
 generator's ``seed`` parameter; giving one where it has no effect (a file, or
 a generator without a seed) is refused rather than ignored.
+
+An argument that is both a generator spec and an existing file is the file.
+Whether a file exists is asked without failing (:func:`_is_existing_path`):
+``lattice-hole:rows=<4,400 digits>`` is a name the operating system refuses
+(``ENAMETOOLONG``), which just means "not a file", so it reaches the generator
+and its parameter check.
 """
 
 from __future__ import annotations
@@ -17,6 +23,15 @@ from topomark.spec.worldfile import load_world
 from .generators import GENERATORS, PARAMETERS, generate
 
 __all__ = ["resolve_world", "parse_generator"]
+
+
+def _is_existing_path(text: str) -> bool:
+    """Whether ``text`` names something that exists; a string that cannot be a path
+    (too long, an embedded NUL byte, a component the OS refuses) is simply not one."""
+    try:
+        return Path(text).exists()
+    except (OSError, ValueError):
+        return False
 
 
 def parse_generator(text: str) -> tuple[str, dict[str, str]]:
@@ -36,7 +51,8 @@ def parse_generator(text: str) -> tuple[str, dict[str, str]]:
 def resolve_world(text: str, seed: int | None = None) -> World:
     """The world a command-line argument names."""
     name, params = parse_generator(text)
-    if name in GENERATORS and not Path(text).exists():
+    exists = _is_existing_path(text)
+    if name in GENERATORS and not exists:
         if seed is not None:
             if "seed" not in PARAMETERS[name]:
                 raise InvalidInput(f"--seed has no effect: generator {name!r} is not random")
@@ -44,8 +60,9 @@ def resolve_world(text: str, seed: int | None = None) -> World:
                 raise InvalidInput(f"seed given twice: --seed {seed} and seed={params['seed']} in {text!r}")
             params["seed"] = str(seed)
         return generate(name, **params)
-    if Path(text).exists() or text.endswith(".json"):
+    if exists or text.endswith(".json"):
         if seed is not None:
             raise InvalidInput(f"--seed has no effect on a world file ({text})")
         return load_world(text)
-    raise InvalidInput(f"{text!r} is neither a world file nor a generator (generators: {', '.join(GENERATORS)})")
+    shown = repr(text) if len(text) <= 80 else repr(text[:80]) + f"... ({len(text):,} characters)"
+    raise InvalidInput(f"{shown} is neither a world file nor a generator (generators: {', '.join(GENERATORS)})")

@@ -32,7 +32,7 @@ from dataclasses import dataclass
 from typing import Protocol
 
 from .errors import InvalidInput
-from .world import DartMark, VertexMark
+from .world import MAX_DEGREE, DartMark, VertexMark
 
 __all__ = ["Signature", "signature_at", "depends_on_entry", "Marked"]
 
@@ -80,44 +80,72 @@ class Signature:
         """True if any marker is sensed here."""
         return self.vertex_count > 0 or bool(self.edges)
 
-    _V = re.compile(r"^V(\d*)(?:-(\d+))?$")
-    _E = re.compile(r"^E(\d*)-(\d+)(?:-([HT]))?$")
+    _V = re.compile(r"V([0-9]*)(?:-([0-9]+))?")
+    _E = re.compile(r"E([0-9]*)-([0-9]+)(?:-([HT]))?")
 
     @classmethod
     def parse(cls, text: str) -> "Signature":
-        """Read thesis notation back; raises :class:`InvalidInput` on anything else."""
+        """Read thesis notation back; raises :class:`InvalidInput` on anything else.
+
+        Only ASCII digits are numbers (``"²".isdigit()`` is true, but it is no
+        degree).  The degree is at most :data:`~topomark.spec.world.MAX_DEGREE`
+        (no world has a larger one) and every number at most 18 digits, both
+        checked before anything is built, so parsing costs time and memory in
+        proportion to the length of ``text``, never to the values it names.
+        """
+        if not isinstance(text, str):
+            raise InvalidInput(f"a signature must be a string, got {type(text).__name__}")
         body = text.strip()
         if not (body.startswith("[") and body.endswith("]")):
-            raise InvalidInput(f"signature {text!r} is not of the form [degree,V...,...]")
+            raise InvalidInput(f"signature {_shown(text)} is not of the form [degree,V...,...]")
         parts = [p.strip() for p in body[1:-1].split(",")]
-        if len(parts) < 3 or not parts[0].isdigit():
-            raise InvalidInput(f"signature {text!r} is not of the form [degree,V...,...]")
-        degree = int(parts[0])
+        if len(parts) < 3 or not _DIGITS.fullmatch(parts[0]):
+            raise InvalidInput(f"signature {_shown(text)} is not of the form [degree,V...,...]")
+        degree = _number(parts[0], "degree", text)
+        if not 1 <= degree <= MAX_DEGREE:
+            raise InvalidInput(f"signature {_shown(text)}: degree must be 1..{MAX_DEGREE} (MAX_DEGREE: no world "
+                               "has a larger one)")
         count, direction = 0, None
         if parts[1] != "A":
-            mv = cls._V.match(parts[1])
+            mv = cls._V.fullmatch(parts[1])
             if not mv:
-                raise InvalidInput(f"signature {text!r}: cannot read vertex part {parts[1]!r}")
-            count = int(mv.group(1) or 1)
-            direction = int(mv.group(2)) if mv.group(2) is not None else None
+                raise InvalidInput(f"signature {_shown(text)}: cannot read vertex part {_shown(parts[1])}")
+            count = _number(mv.group(1) or "1", "marker count", text)
+            direction = _number(mv.group(2), "direction", text) if mv.group(2) is not None else None
         edges = []
         if parts[2:] != ["A"]:
             for item in parts[2:]:
-                me = cls._E.match(item)
+                me = cls._E.fullmatch(item)
                 if not me:
-                    raise InvalidInput(f"signature {text!r}: cannot read edge part {item!r}")
-                edges.append((int(me.group(2)), int(me.group(1) or 1), me.group(3)))
-        if degree < 1:
-            raise InvalidInput(f"signature {text!r}: degree must be >= 1")
+                    raise InvalidInput(f"signature {_shown(text)}: cannot read edge part {_shown(item)}")
+                edges.append((_number(me.group(2), "edge exit", text), _number(me.group(1) or "1", "marker count",
+                                                                             text), me.group(3)))
         if direction is not None and direction >= degree:
-            raise InvalidInput(f"signature {text!r}: direction V-{direction} needs an exit < degree {degree}")
+            raise InvalidInput(f"signature {_shown(text)}: direction V-{direction} needs an exit < degree {degree}")
         positions = [e[0] for e in edges]
         if any(p >= degree for p in positions) or len(set(positions)) != len(positions):
-            raise InvalidInput(f"signature {text!r}: edge markers need distinct exits < degree {degree}")
+            raise InvalidInput(f"signature {_shown(text)}: edge markers need distinct exits < degree {degree}")
         sig = cls(degree, count, direction, tuple(sorted(edges, key=lambda e: e[0])))
         if str(sig) != body.replace(" ", ""):
-            raise InvalidInput(f"signature {text!r} is not in canonical thesis notation (expected {sig})")
+            raise InvalidInput(f"signature {_shown(text)} is not in canonical thesis notation (expected {sig})")
         return sig
+
+
+_DIGITS = re.compile(r"[0-9]+")
+_MAX_DIGITS = 18  # as for every JSON integer (topomark.spec.jsontext.MAX_INT_DIGITS)
+
+
+def _shown(text: str, limit: int = 60) -> str:
+    """``repr(text)`` cut to ``limit`` characters: a hostile signature can be megabytes long."""
+    return repr(text) if len(text) <= limit else repr(text[:limit]) + f"... ({len(text):,} characters)"
+
+
+def _number(digits: str, what: str, text: str) -> int:
+    """The value of an ASCII digit string of at most 18 digits (longer ones are refused, not converted)."""
+    if len(digits) > _MAX_DIGITS:
+        raise InvalidInput(f"signature {_shown(text)}: {what} of {len(digits)} digits is out of range "
+                           f"(at most {_MAX_DIGITS})")
+    return int(digits)
 
 
 def signature_at(g: Marked, v, entry: int) -> Signature:

@@ -30,9 +30,55 @@ from typing import Iterable, Iterator, Mapping, Sequence
 from .errors import InvalidWorld, require_input
 from .marker import EdgeMarker, Marker, VertexMarker
 
-__all__ = ["World", "Start", "Dart", "VertexMark", "DartMark"]
+__all__ = ["World", "Start", "Dart", "VertexMark", "DartMark", "MAX_VERTICES", "MAX_EDGES", "MAX_DEGREE",
+           "check_size"]
 
 Dart = tuple[str, int]
+
+MAX_VERTICES = 250_000
+"""The most vertices a world may have (generated or loaded).
+
+Why a limit at all: without one, ``lattice-hole:rows=3000,cols=3000`` runs for
+a minute and then dies of MemoryError, and a world file can ask for anything.
+Why this value: it is far beyond every experiment of the thesis (the
+§3.5 figures go up to 360 vertices) and still fits comfortably in memory -- measured
+with ``/usr/bin/time``: ``lattice(500, 500)`` (250,000 vertices, 499,000
+edges) peaks at about 0.5 GB and ``small_world(250000, 4, 0.1)`` likewise.
+Generators and the world loader check it *before* building anything
+(:func:`check_size`), so an oversized request fails at once.
+"""
+
+MAX_EDGES = 1_000_000
+"""The most edges a world may have, for the same reasons as :data:`MAX_VERTICES`.
+
+A dense world reaches memory limits long before the vertex limit: ``K_1415``
+(about 1,000,000 edges) peaks at about 0.35 GB while ``complete-hole`` builds
+it, and twice the vertex limit in edges covers every lattice and ring of up to
+:data:`MAX_VERTICES` vertices.
+"""
+
+MAX_DEGREE = MAX_VERTICES - 1
+"""The largest degree any valid world can have: a simple graph (§3.1.1) on at most
+:data:`MAX_VERTICES` vertices.  A signature read from outside
+(:meth:`topomark.spec.signature.Signature.parse`) with a larger degree cannot
+describe any world, so it is refused before anything is allocated for it."""
+
+
+def check_size(n: int, m: int, what: str) -> None:
+    """Refuse ``what`` (a world about to be built) with ``n`` vertices and ``m`` edges above
+    :data:`MAX_VERTICES` / :data:`MAX_EDGES`, with an :class:`InvalidWorld` naming the limit.
+
+    Callers compute ``n`` and ``m`` from their parameters (or count a file's
+    rotation) and call this before allocating the world.
+    """
+    def count(x: int) -> str:  # a 5,000-digit int cannot even be printed (sys.get_int_max_str_digits)
+        return f"{x:,}" if x < 10**18 else "more than 10**18"
+    if n > MAX_VERTICES:
+        _fail(f"{what} has {count(n)} vertices, more than the limit of {MAX_VERTICES:,} "
+              "(topomark.spec.world.MAX_VERTICES)")
+    if m > MAX_EDGES:
+        _fail(f"{what} has {count(m)} edges, more than the limit of {MAX_EDGES:,} "
+              "(topomark.spec.world.MAX_EDGES)")
 
 
 @dataclass(frozen=True)

@@ -16,7 +16,13 @@ explorer uses the same format, so any two files can be compared.
 
 Loading is strict: malformed JSON, duplicate keys, unknown keys, a wrong
 format version and every graph condition of §3.1.1 give one
-:class:`~topomark.spec.errors.InvalidWorld` naming what is wrong.
+:class:`~topomark.spec.errors.InvalidWorld` naming what is wrong.  So do
+hostile inputs, refused before they cost anything (:mod:`topomark.spec.jsontext`):
+nesting deeper than 64 levels, integers of more than 18 digits, ``NaN``, a
+FIFO, device or directory instead of a regular file, a file larger than
+:data:`MAX_WORLD_BYTES`, non-UTF-8 text, and a rotation with more vertices or
+edges than :data:`~topomark.spec.world.MAX_VERTICES` /
+:data:`~topomark.spec.world.MAX_EDGES` (counted before the world is built).
 
 Examples
 --------
@@ -37,13 +43,23 @@ from pathlib import Path
 from typing import Any
 
 from .errors import InvalidWorld
+from .jsontext import parse_json, read_text_file
 from .marker import EdgeMarker, VertexMarker
-from .world import Start, World
+from .world import Start, World, check_size
 
-__all__ = ["FORMAT", "schema", "world_from_json", "world_to_json", "marker_to_json", "loads_world", "dumps_world",
-           "load_world", "save_world"]
+__all__ = ["FORMAT", "MAX_WORLD_BYTES", "schema", "world_from_json", "world_to_json", "marker_to_json",
+           "loads_world", "dumps_world", "load_world", "save_world"]
 
 FORMAT = "topomark/world@1"
+
+MAX_WORLD_BYTES = 256 << 20
+"""The largest world file :func:`load_world` reads: 256 MiB.
+
+A world at the size limits (:data:`~topomark.spec.world.MAX_VERTICES`
+vertices, :data:`~topomark.spec.world.MAX_EDGES` edges) takes about 20-30 MB
+as written by :func:`dumps_world`, so this leaves room for long vertex names;
+parsing 256 MiB of JSON into Python objects needs a few GB, while the general
+1 GiB file limit of :mod:`~topomark.spec.jsontext` would need far more."""
 
 
 def schema() -> dict[str, Any]:
@@ -72,8 +88,14 @@ def _keys(obj: dict, allowed: set[str], required: set[str], what: str) -> None:
     _expect(not missing, f"{what}: missing key {missing[0]!r}" if missing else "")
 
 
+def _show(x: Any, limit: int = 60) -> str:
+    """``x`` as JSON for a message, cut to ``limit`` characters (a hostile value can be megabytes long)."""
+    text = json.dumps(x)
+    return text if len(text) <= limit else text[:limit - 3] + "..."
+
+
 def _string(x: Any, what: str) -> str:
-    _expect(isinstance(x, str), f"{what} must be a string, got {json.dumps(x)}")
+    _expect(isinstance(x, str), f"{what} must be a string, got {_show(x)}")
     return x
 
 
@@ -83,7 +105,7 @@ def _marker(obj: Any, k: int):
     kind = obj.get("kind")
     count = obj.get("count", 1)
     _expect(isinstance(count, int) and not isinstance(count, bool) and count >= 1,
-            f"{what}: count must be a positive integer, got {json.dumps(count)}")
+            f"{what}: count must be a positive integer, got {_show(count)}")
     if kind == "vertex":
         _keys(obj, {"kind", "at", "count", "points_to"}, {"kind", "at"}, what)
         points = _string(obj["points_to"], f"{what}.points_to") if "points_to" in obj else None
@@ -96,7 +118,7 @@ def _marker(obj: Any, k: int):
         head = _string(obj["head"], f"{what}.head") if "head" in obj else None
         return EdgeMarker((_string(between[0], f"{what}.between[0]"), _string(between[1], f"{what}.between[1]")),
                           count, head)
-    raise InvalidWorld(f"{what}: kind must be \"vertex\" or \"edge\", got {json.dumps(kind)}")
+    raise InvalidWorld(f"{what}: kind must be \"vertex\" or \"edge\", got {_show(kind)}")
 
 
 def world_from_json(obj: Any) -> World:
@@ -110,6 +132,8 @@ def world_from_json(obj: Any) -> World:
     _expect(isinstance(rot, dict), "rotation must be an object mapping each vertex to its clockwise neighbours")
     for v, ns in rot.items():
         _expect(isinstance(ns, list), f"rotation of vertex {v!r} must be a list of vertex names")
+    check_size(len(rot), sum(len(ns) for ns in rot.values()) // 2, "the world")
+    for v, ns in rot.items():
         for w in ns:
             _string(w, f"neighbour of vertex {v!r}")
     markers = obj.get("markers", [])
@@ -147,12 +171,11 @@ def marker_to_json(m) -> dict[str, Any]:
 
 
 def loads_world(text: str, source: str = "<string>") -> World:
-    """Parse a world from JSON text; errors are prefixed with ``source``."""
+    """Parse a world from JSON text within the limits of :func:`~topomark.spec.jsontext.parse_json`;
+    errors are prefixed with ``source``."""
+    obj = parse_json(text, source, InvalidWorld, object_pairs_hook=_no_duplicates)
     try:
-        obj = json.loads(text, object_pairs_hook=_no_duplicates)
         return world_from_json(obj)
-    except json.JSONDecodeError as exc:
-        raise InvalidWorld(f"{source}: malformed JSON at line {exc.lineno} column {exc.colno}: {exc.msg}") from None
     except InvalidWorld as exc:
         raise InvalidWorld(f"{source}: {exc}") from None
 
@@ -162,13 +185,9 @@ def dumps_world(world: World) -> str:
 
 
 def load_world(path: str | Path) -> World:
-    """Read a world file; a missing or unreadable file is an :class:`InvalidWorld` too."""
-    try:
-        text = Path(path).read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        reason = getattr(exc, "strerror", None) or exc  # a UnicodeDecodeError has no strerror
-        raise InvalidWorld(f"{path}: cannot read the file ({exc.__class__.__name__}: {reason})") from None
-    return loads_world(text, str(path))
+    """Read a world file; a missing, unreadable, special (FIFO, device, directory), oversized
+    (> :data:`MAX_WORLD_BYTES`) or non-UTF-8 file is an :class:`InvalidWorld` too."""
+    return loads_world(read_text_file(path, InvalidWorld, MAX_WORLD_BYTES), str(path))
 
 
 def save_world(world: World, path: str | Path) -> None:

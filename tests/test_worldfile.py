@@ -195,7 +195,7 @@ def test_missing_file(tmp_path):
 
 
 def test_directory_and_binary_files(tmp_path):
-    with pytest.raises(InvalidWorld, match="cannot read"):
+    with pytest.raises(InvalidWorld, match="not a regular file"):
         load_world(tmp_path)
     binary = tmp_path / "w.json"
     binary.write_bytes(b"\xff\xfe\x00garbage")
