@@ -20,11 +20,11 @@ from __future__ import annotations
 
 import argparse
 import json
-import math
 from pathlib import Path
 
 from topomark.proofs import z3search
 from topomark.proofs.markerclass import MARKER_CLASSES, marker_class
+from topomark.reference.cliargs import check_seconds
 from topomark.spec.errors import InvalidInput
 from topomark.spec.worldfile import save_world
 
@@ -59,8 +59,8 @@ def validate_args(args: argparse.Namespace) -> None:
         raise InvalidInput(f"--max-vertices {args.max_vertices} is too large: at most {z3search.MAX_VERTICES}")
     if args.max_degree < 1:
         raise InvalidInput(f"--max-degree must be at least 1, got {args.max_degree}")
-    if args.timeout is not None and not (math.isfinite(args.timeout) and args.timeout > 0):
-        raise InvalidInput(f"--timeout must be a positive number of seconds, got {args.timeout}")
+    if args.timeout is not None:
+        check_seconds(args.timeout, "--timeout")
     if args.out is not None and Path(args.out).exists() and not Path(args.out).is_dir():
         raise InvalidInput(f"--out {args.out!r} exists and is not a directory")
 

@@ -16,6 +16,7 @@ from topomark.spec.worldfile import load_world, save_world
 
 from . import conformance
 from .cli import _Parser, emit
+from .cliargs import check_count, check_seconds
 from .cmd_explore import parse_policies
 from .drive import drive
 from .explore import dump_trace
@@ -79,10 +80,9 @@ def _limits(p) -> None:
 
 def _make_limits(args) -> Limits:
     for name in ("timeout", "message_timeout"):
-        if getattr(args, name) <= 0:
-            raise InvalidInput(f"--{name.replace('_', '-')} must be positive")
-    if args.max_traversals is not None and args.max_traversals < 0:
-        raise InvalidInput("--max-traversals must be >= 0")
+        check_seconds(getattr(args, name), f"--{name.replace('_', '-')}")
+    if args.max_traversals is not None:
+        check_count(args.max_traversals, "--max-traversals")
     return Limits(args.max_traversals, args.timeout, args.message_timeout)
 
 

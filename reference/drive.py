@@ -33,7 +33,8 @@ from .explore import TRACE_FORMAT
 from .lighthouse import LighthouseExplorer
 from .mapcheck import MapVerdict, check_map
 from .policies import Policies
-from .protocol import PROTOCOL, Peer, ProtocolError
+from .peer import Peer
+from .protocol import MAX_MESSAGE, PROTOCOL, ProtocolError, clip
 from .robot import Robot
 
 __all__ = ["DriveResult", "drive"]
@@ -73,24 +74,24 @@ class _Link:
     def hello(self) -> None:
         msg = self.peer.receive(("hello",))
         if msg["protocol"] != PROTOCOL or msg["role"] != "world":
-            raise ProtocolError("protocol", f"hello from a {msg['role']!r} speaking {msg['protocol']!r} "
+            raise ProtocolError("protocol", f"hello from a {clip(msg['role'])!r} speaking {clip(msg['protocol'])!r} "
                                             f"(expected role 'world', {PROTOCOL})")
         kit = msg["markers"].get("directional-vertex", 0)
         if not isinstance(kit, int) or isinstance(kit, bool) or kit < 1:
             raise ProtocolError("protocol", f"Algorithm 3.1 needs one directional vertex marker; the provider "
-                                            f"offers {msg['markers']}")
+                                            f"offers {clip(str(msg['markers']))}")
         self.here = self._signature(msg["signature"])
 
     def _signature(self, text: str) -> Signature:
         try:
             return Signature.parse(text)
         except InvalidInput as exc:
-            raise ProtocolError("garbage", f"the provider sent a bad signature: {exc}") from None
+            raise ProtocolError("garbage", f"the provider sent a bad signature: {clip(str(exc), 300)}") from None
 
     def _answer(self) -> Signature:
         msg = self.peer.receive(("signature", "error"))
         if msg["type"] == "error":
-            raise ProtocolError("crash", f"the provider reported an error: {msg['message']}")
+            raise ProtocolError("crash", f"the provider reported an error: {clip(msg['message'], 500)}")
         return self._signature(msg["value"])
 
     def move(self, motion: int, purpose: str) -> Signature:
@@ -125,34 +126,38 @@ def drive(command: Sequence[str], policies: Policies | None = None, world: World
     policies = policies or Policies()
     started = time.monotonic()
     trace: list[dict] = []
-    peer = Peer(command, message, wall)
-    link = _Link(peer, max_traversals, trace)
-    try:
-        link.hello()
-        explorer = LighthouseExplorer(link.robot(), policies,
-                                      lambda ex, it: trace.append({"event": "iteration", **it.to_json()}))
-        S = explorer.explore()
-        map_ = S.to_world()
-        peer.send({"type": "map", "world": world_to_json(map_)})
-        peer.receive(("bye",))
-        peer.finish()
-        result = DriveResult("pass", "ok", f"mapped {map_.n} vertices and {map_.m} edges", link.cost, map_)
-        if world is not None:
-            result.check = check_map(world, map_)
-            if not result.check.isomorphic:
-                result.verdict, result.reason = "fail", "not-isomorphic"
-            result.message += f"; against the given world: {result.check.words()}"
-    except ProtocolError as exc:
-        result = DriveResult("fail", exc.kind, str(exc), link.cost)
-    except (CheckFailure, InvalidInput, LookupError) as exc:  # the explorer's map cannot be a world
-        result = DriveResult("fail", "inconsistent", f"the provider's answers are inconsistent with any world: {exc}",
-                             link.cost)
-    finally:
-        peer.kill()
+    with Peer(command, message, wall) as peer:  # on leaving: the provider and all it started are killed
+        link = _Link(peer, max_traversals, trace)
+        try:
+            result = _explore(link, policies, trace, world)
+        except ProtocolError as exc:
+            result = DriveResult("fail", exc.kind, str(exc), link.cost)
+        except (CheckFailure, InvalidInput, LookupError) as exc:  # the explorer's map cannot be a world
+            result = DriveResult("fail", "inconsistent", "the provider's answers are inconsistent with any "
+                                 f"world: {exc}", link.cost)
+    result.message = clip(result.message, MAX_MESSAGE)
     n, m = (result.map.n, result.map.m) if result.map is not None else (0, 0)
     header = {"event": "header", "format": TRACE_FORMAT, "algorithm": "basic", "policies": policies.to_json(),
               "n": n, "m": m}
     result.trace = [header] + trace + [{"event": "end", "cost": link.cost, "verified": result.check is not None
                                         and result.check.isomorphic, "violation": None}]
     result.wall, result.stderr = time.monotonic() - started, peer.stderr_tail()
+    return result
+
+
+def _explore(link: _Link, policies: Policies, trace: list[dict], world: World | None) -> DriveResult:
+    """Algorithm 3.1 over the link, the map sent, ``bye`` awaited; judged against ``world`` if given."""
+    link.hello()
+    explorer = LighthouseExplorer(link.robot(), policies,
+                                  lambda ex, it: trace.append({"event": "iteration", **it.to_json()}))
+    map_ = explorer.explore().to_world()
+    link.peer.send({"type": "map", "world": world_to_json(map_)})
+    link.peer.receive(("bye",))
+    link.peer.finish()
+    result = DriveResult("pass", "ok", f"mapped {map_.n} vertices and {map_.m} edges", link.cost, map_)
+    if world is not None:
+        result.check = check_map(world, map_)
+        if not result.check.isomorphic:
+            result.verdict, result.reason = "fail", "not-isomorphic"
+        result.message += f"; against the given world: {result.check.words()}"
     return result

@@ -28,7 +28,8 @@ from topomark.spec.worldfile import world_from_json
 from .bounds import upper_bound
 from .explore import prepare_world
 from .mapcheck import check_map
-from .protocol import PROTOCOL, Peer, ProtocolError, snapshot_to_map
+from .peer import Peer
+from .protocol import MAX_MESSAGE, PROTOCOL, ProtocolError, clip, snapshot_to_map
 from .simulator import Simulator
 
 __all__ = ["Limits", "ExternalResult", "run_external", "REASONS"]
@@ -88,7 +89,7 @@ class ExternalResult:
 
 class _Fail(Exception):
     def __init__(self, reason: str, message: str, violation: Violation | None = None):
-        super().__init__(message)
+        super().__init__(clip(message, MAX_MESSAGE))
         self.reason, self.violation = reason, violation
 
 
@@ -125,7 +126,7 @@ class _Session:
             elif kind == "snapshot":
                 self.snapshot(msg)
             elif kind == "error":
-                raise _Fail("crash", f"the program gave up: {msg['message']}")
+                raise _Fail("crash", f"the program gave up: {clip(msg['message'], 500)}")
             else:
                 return self.read_map(msg["world"])
 
@@ -178,36 +179,43 @@ class _Session:
 
 def run_external(world: World, command: Sequence[str], limits: Limits | None = None,
                  check_snapshots: bool = True) -> ExternalResult:
-    """Play ``world`` to ``command`` and judge it; bad input (world, command) raises InvalidInput."""
+    """Play ``world`` to ``command`` and judge it; bad input (world, command) raises InvalidInput.
+
+    The program and everything it started are killed when the session ends,
+    whatever the verdict (:class:`~topomark.reference.peer.Peer`).
+    """
     limits = limits or Limits()
     prepare_world(world)  # bad input (a marker the algorithm cannot use) before anything is started
     started = time.monotonic()
-    peer = Peer(command, limits.message, limits.wall)
     session = None
-    try:
-        session = _Session(world, peer, limits, check_snapshots)
-        map_ = session.play()
-        truth = session.sim.world.with_start(world.start)
-        verdict = check_map(truth, map_)
-        result = ExternalResult("pass" if verdict.isomorphic else "fail",
-                                "ok" if verdict.isomorphic else "not-isomorphic", verdict.words(),
-                                violation=None if verdict.isomorphic else verdict.result.mismatch,
-                                map=map_, rule=verdict.rule)
-        _say(peer, {"type": "bye", "verdict": result.verdict, "cost": session.sim.cost})
-        peer.finish()
-    except ProtocolError as exc:
-        result = ExternalResult("fail", exc.kind, str(exc))
-        _say(peer, {"type": "error", "message": str(exc)})
-    except _Fail as exc:
-        result = ExternalResult("fail", exc.reason, str(exc), violation=exc.violation)
-        _say(peer, {"type": "error", "message": str(exc)})
-    finally:
-        peer.kill()
+    with Peer(command, limits.message, limits.wall) as peer:
+        try:
+            session = _Session(world, peer, limits, check_snapshots)
+            result = _judge(world, session)
+            _say(peer, {"type": "bye", "verdict": result.verdict, "cost": session.sim.cost})
+            peer.finish()
+        except ProtocolError as exc:
+            result = ExternalResult("fail", exc.kind, str(exc))
+            _say(peer, {"type": "error", "message": str(exc)})
+        except _Fail as exc:
+            result = ExternalResult("fail", exc.reason, str(exc), violation=exc.violation)
+            _say(peer, {"type": "error", "message": str(exc)})
     if session is not None:
         result.cost, result.snapshots = session.sim.cost, session.snapshots
+    result.message = clip(result.message, MAX_MESSAGE)
     result.wall = time.monotonic() - started
     result.stderr = peer.stderr_tail()
     return result
+
+
+def _judge(world: World, session: _Session) -> ExternalResult:
+    """Play the session to its map and judge the map against the world."""
+    map_ = session.play()
+    truth = session.sim.world.with_start(world.start)
+    verdict = check_map(truth, map_)
+    return ExternalResult("pass" if verdict.isomorphic else "fail", "ok" if verdict.isomorphic else "not-isomorphic",
+                          verdict.words(), violation=None if verdict.isomorphic else verdict.result.mismatch,
+                          map=map_, rule=verdict.rule)
 
 
 def _say(peer: Peer, msg: dict) -> None:

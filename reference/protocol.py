@@ -12,9 +12,8 @@ Contents:
 
 * :func:`encode` / :func:`decode` — one message per line, validated field by
   field against :data:`MESSAGES`;
-* :class:`Peer` — a subprocess spoken to over pipes, with a reader thread,
-  a per-message timeout, a wall-time deadline and a kill of the whole
-  process group (no hangs, whatever the program does);
+* :func:`clip` — what a verdict may quote of the other side's input (a
+  bounded piece, never a whole line);
 * :func:`snapshot_to_map` / :func:`map_to_snapshot` — (S, U) of §3.1.3 on
   the wire.
 """
@@ -22,25 +21,18 @@ Contents:
 from __future__ import annotations
 
 import json
-import os
-import queue
-import select
-import signal
-import subprocess
-import threading
-import time
-from collections import deque
-from dataclasses import dataclass
 from typing import Any, Sequence
 
 from topomark.spec.errors import CheckFailure, InvalidInput
+from topomark.spec.jsontext import parse_json
 from topomark.spec.mapstate import PartialMap
 
-__all__ = ["PROTOCOL", "MESSAGES", "ProtocolError", "encode", "decode", "Peer", "snapshot_to_map",
-           "map_to_snapshot", "MAX_LINE"]
+__all__ = ["PROTOCOL", "MESSAGES", "ProtocolError", "encode", "decode", "clip", "snapshot_to_map",
+           "map_to_snapshot", "MAX_LINE", "MAX_MESSAGE"]
 
 PROTOCOL = "topomark/protocol@1"
 MAX_LINE = 4_000_000  # bytes; a longer line is garbage
+MAX_MESSAGE = 2000  # characters of a verdict message; what the other side sent is quoted clipped
 
 _INT, _STR, _OBJ, _LIST = "integer", "string", "object", "list"
 _OPT_INT = "integer or null"
@@ -68,7 +60,7 @@ class ProtocolError(Exception):
     """The other side broke the protocol: ``kind`` is garbage, timeout, crash, limit or protocol."""
 
     def __init__(self, kind: str, message: str):
-        super().__init__(message)
+        super().__init__(clip(message, MAX_MESSAGE))
         self.kind = kind
 
 
@@ -88,173 +80,37 @@ def decode(line: str, expect: Sequence[str] | None = None) -> dict[str, Any]:
     """Parse and validate one line; raises :class:`ProtocolError` (kind ``garbage``) on anything wrong."""
     text = line.strip()
     try:
-        msg = json.loads(text)
-    except json.JSONDecodeError as exc:
-        raise ProtocolError("garbage", f"not a JSON object: {_clip(text)!r} ({exc.msg})") from None
+        msg = parse_json(text, "the line")  # bounded depth and integers: nothing can blow up later
+    except InvalidInput as exc:
+        raise ProtocolError("garbage", f"not a JSON object: {clip(text)!r} ({clip(str(exc), 200)})") from None
     if not isinstance(msg, dict) or not isinstance(msg.get("type"), str):
-        raise ProtocolError("garbage", f"not a message (a JSON object with a string \"type\"): {_clip(text)!r}")
+        raise ProtocolError("garbage", f"not a message (a JSON object with a string \"type\"): {clip(text)!r}")
     kind = msg["type"]
     if kind not in MESSAGES:
-        raise ProtocolError("garbage", f"unknown message type {kind!r} (known: {', '.join(MESSAGES)})")
+        raise ProtocolError("garbage", f"unknown message type {clip(kind)!r} (known: {', '.join(MESSAGES)})")
     if expect is not None and kind not in expect:
         raise ProtocolError("protocol", f"unexpected message {kind!r} here (expected {' or '.join(expect)})")
     fields = {**MESSAGES[kind], **_OPTIONAL.get(kind, {})}
     for name, want in fields.items():
         if name in msg and not _is_kind(msg[name], want):
-            raise ProtocolError("garbage", f"{kind}.{name} must be {want}, got {json.dumps(msg[name])}")
+            raise ProtocolError("garbage", f"{kind}.{name} must be {want}, got {clip(json.dumps(msg[name]))}")
     missing = [f for f in MESSAGES[kind] if f not in msg]
     unknown = sorted(set(msg) - set(fields) - {"type"})
     if missing or unknown:
-        what = f"missing field {missing[0]!r}" if missing else f"unknown field {unknown[0]!r}"
+        what = f"missing field {missing[0]!r}" if missing else f"unknown field {clip(unknown[0])!r}"
         raise ProtocolError("garbage", f"{kind} message: {what}")
     return msg
 
 
-def _clip(text: str, limit: int = 120) -> str:
-    return text if len(text) <= limit else text[:limit] + "..."
-
-
-@dataclass
-class _Eof:
-    pass
-
-
-class Peer:
-    """A program spoken to over stdin/stdout; stderr is kept (its tail goes into verdicts).
-
-    ``deadline`` is an absolute :func:`time.monotonic` time after which every
-    receive fails with kind ``timeout``; ``message_timeout`` bounds each wait.
-    """
-
-    def __init__(self, command: Sequence[str], message_timeout: float = 10.0, wall: float = 60.0,
-                 cwd: str | None = None):
-        if not command:
-            raise InvalidInput("no command given after --")
-        try:
-            self.proc = subprocess.Popen(list(command), stdin=subprocess.PIPE, stdout=subprocess.PIPE,
-                                         stderr=subprocess.PIPE, start_new_session=True, cwd=cwd)
-        except OSError as exc:
-            raise InvalidInput(f"cannot start {command[0]!r}: {exc.strerror or exc}") from None
-        self.message_timeout = message_timeout
-        self.deadline = time.monotonic() + wall
-        self.wall = wall
-        self.lines: queue.Queue = queue.Queue()
-        self.stderr: deque[str] = deque(maxlen=20)
-        self.received = 0
-        threading.Thread(target=self._read_stdout, daemon=True).start()
-        threading.Thread(target=self._read_stderr, daemon=True).start()
-
-    def _read_stdout(self) -> None:
-        try:
-            while True:
-                raw = self.proc.stdout.readline(MAX_LINE + 1)
-                if not raw:
-                    break
-                self.lines.put(raw)
-        except (OSError, ValueError):
-            pass
-        self.lines.put(_Eof())
-
-    def _read_stderr(self) -> None:
-        try:
-            for raw in self.proc.stderr:
-                self.stderr.append(raw.decode("utf-8", "replace").rstrip("\n"))
-        except (OSError, ValueError):
-            pass
-
-    def send(self, msg: dict[str, Any], timeout: float | None = None) -> None:
-        """Write one message without ever blocking for long.
-
-        A closed pipe means the program died (kind ``crash``); a pipe that stays
-        full for ``timeout`` (default ``message_timeout``) means it stopped reading
-        (kind ``timeout``).
-        Writes go in chunks of at most PIPE_BUF bytes once ``select`` reports
-        the pipe writable, so a single write cannot block.
-        """
-        data = encode(msg).encode()
-        try:
-            fd = self.proc.stdin.fileno()
-            while data:
-                limit = self.message_timeout if timeout is None else timeout
-                wait = max(0.0, min(limit, self.deadline - time.monotonic()))
-                if not select.select([], [fd], [], wait)[1]:
-                    raise ProtocolError("timeout", f"the program stopped reading its input (no room in the pipe "
-                                                   f"for {wait:g} s)")
-                data = data[os.write(fd, data[:select.PIPE_BUF]):]
-        except (BrokenPipeError, OSError, ValueError):
-            raise ProtocolError("crash", self._died("stopped reading its input")) from None
-
-    def receive(self, expect: Sequence[str] | None = None) -> dict[str, Any]:
-        """The next message, validated; raises :class:`ProtocolError` on timeout, EOF or garbage."""
-        remaining = self.deadline - time.monotonic()
-        if remaining <= 0:
-            raise ProtocolError("timeout", f"wall-time limit of {self.wall:g} s exceeded")
-        wait = min(self.message_timeout, remaining)
-        try:
-            item = self.lines.get(timeout=wait)
-        except queue.Empty:
-            if wait < self.message_timeout:
-                raise ProtocolError("timeout", f"wall-time limit of {self.wall:g} s exceeded") from None
-            raise ProtocolError("timeout", f"no message within {self.message_timeout:g} s "
-                                           f"(after {self.received} messages)") from None
-        if isinstance(item, _Eof):
-            raise ProtocolError("crash", self._died("closed its output"))
-        self.received += 1
-        if len(item) > MAX_LINE:
-            raise ProtocolError("garbage", f"message {self.received} is longer than {MAX_LINE} bytes")
-        try:
-            line = item.decode("utf-8")
-        except UnicodeDecodeError:
-            raise ProtocolError("garbage", f"message {self.received} is not UTF-8") from None
-        return decode(line, expect)
-
-    def _died(self, what: str) -> str:
-        try:
-            code = self.proc.wait(timeout=1.0)
-        except subprocess.TimeoutExpired:
-            code = None
-        time.sleep(0.05)  # let the stderr reader catch up
-        tail = " | ".join(list(self.stderr)[-3:])
-        status = "still running" if code is None else f"exit status {code}"
-        return f"the program {what} ({status})" + (f"; stderr: {tail}" if tail else "")
-
-    def finish(self, grace: float = 2.0) -> int | None:
-        """Close stdin, give the program ``grace`` seconds to exit, then kill its process group."""
-        try:
-            self.proc.stdin.close()
-        except OSError:
-            pass
-        try:
-            return self.proc.wait(timeout=grace)
-        except subprocess.TimeoutExpired:
-            self.kill()
-            return None
-
-    def kill(self) -> None:
-        """Kill the program and everything it started (its own process group)."""
-        if self.proc.poll() is None:
-            try:
-                os.killpg(self.proc.pid, signal.SIGKILL)
-            except (ProcessLookupError, PermissionError):
-                pass
-        try:
-            self.proc.wait(timeout=5.0)
-        except subprocess.TimeoutExpired:
-            pass
-        for stream in (self.proc.stdin, self.proc.stdout, self.proc.stderr):
-            try:
-                stream.close()
-            except OSError:
-                pass
-
-    def stderr_tail(self) -> list[str]:
-        return list(self.stderr)
+def clip(text: str, limit: int = 120) -> str:
+    """``text`` cut to ``limit`` characters (with "..." and the full length when cut)."""
+    return text if len(text) <= limit else f"{text[:limit]}... ({len(text):,} characters)"
 
 
 # -- (S, U) on the wire -----------------------------------------------------------
 def _dart(x: Any, what: str) -> tuple[int, int]:
     if not (isinstance(x, list) and len(x) == 2 and all(_is_kind(k, _INT) for k in x)):
-        raise CheckFailure(f"{what} must be a map dart [vertex, exit], got {json.dumps(x)}")
+        raise CheckFailure(f"{what} must be a map dart [vertex, exit], got {clip(json.dumps(x))}")
     return (x[0], x[1])
 
 

@@ -1,0 +1,43 @@
+"""Numeric command-line options: the one place that says which durations and counts are sane.
+
+``float("nan")``, ``float("inf")`` and ``1e308`` all parse as floats, and a
+time limit of NaN never fires (every comparison with NaN is false) while
+``1e308`` seconds overflows wherever it is turned into a timestamp or into
+milliseconds.  Every command that takes a time limit (``run-external``,
+``conformance run``, ``drive``, ``search``) and every count limit
+(``--max-traversals``) checks the parsed value here, after argparse, so the
+message names the option: exit 2, one line.
+
+>>> check_seconds(2.5, "--timeout")
+2.5
+>>> check_seconds(float("nan"), "--timeout")
+Traceback (most recent call last):
+...
+topomark.spec.errors.InvalidInput: --timeout must be positive and finite, at most 604800 seconds (one week); got nan
+"""
+
+from __future__ import annotations
+
+import math
+
+from topomark.spec.errors import InvalidInput
+
+__all__ = ["MAX_SECONDS", "MAX_COUNT", "check_seconds", "check_count"]
+
+MAX_SECONDS = 7 * 24 * 3600  # one week: longer than any run, far from every overflow
+MAX_COUNT = 10 ** 15  # fits the protocol's integers (spec.jsontext.MAX_INT_DIGITS) and every clock
+
+
+def check_seconds(value: float, option: str) -> float:
+    """``value`` if it is a finite number of seconds in (0, MAX_SECONDS]; else InvalidInput naming ``option``."""
+    if not (math.isfinite(value) and 0 < value <= MAX_SECONDS):
+        raise InvalidInput(f"{option} must be positive and finite, at most {MAX_SECONDS} seconds (one week); "
+                           f"got {value!r}")
+    return value
+
+
+def check_count(value: int, option: str, maximum: int = MAX_COUNT) -> int:
+    """``value`` if it is an integer in [0, maximum]; else InvalidInput naming ``option``."""
+    if not 0 <= value <= maximum:
+        raise InvalidInput(f"{option} must be >= 0 and at most {maximum}; got {value}")
+    return value
