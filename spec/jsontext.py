@@ -116,7 +116,9 @@ def open_regular_file(path: str | Path, error: type[InvalidInput] = InvalidInput
     try:
         fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK)
     except OSError as exc:
-        raise error(f"{path}: cannot read the file ({exc.__class__.__name__}: {exc.strerror or exc})") from None
+        raise error(f"{_clip(path)}: cannot read the file ({exc.__class__.__name__}: {exc.strerror or exc})") from None
+    except ValueError:  # a NUL byte: no file has such a name
+        raise error(f"{_clip(path)}: not a file name (it contains a NUL byte)") from None
     info = os.fstat(fd)
     if not stat.S_ISREG(info.st_mode):
         os.close(fd)
@@ -126,6 +128,11 @@ def open_regular_file(path: str | Path, error: type[InvalidInput] = InvalidInput
         raise error(f"{path}: file of {info.st_size:,} bytes is larger than the limit of {max_bytes:,} bytes")
     os.set_blocking(fd, True)
     return os.fdopen(fd, "rb")
+
+
+def _clip(path: str | Path, limit: int = 200) -> str:
+    text = str(path)
+    return text if len(text) <= limit else text[:limit] + f"... ({len(text)} characters)"
 
 
 def read_text_file(path: str | Path, error: type[InvalidInput] = InvalidInput,

@@ -84,8 +84,12 @@ def test_drive_against_the_wrong_world_fails(tmp_path):
      "bad signature"),
     (HELLO + "for line in sys.stdin:\n    send({'type': 'error', 'message': 'wheel slipped'})\n", "crash",
      "wheel slipped"),
-    # an inconsistent world: every vertex looks new and unmarked, forever (the marker is never seen again)
-    (HELLO + "for line in sys.stdin:\n    send({'type': 'signature', 'value': '[2,A,A]'})\n", "limit",
+    # the dropped marker is not there when the robot senses v0 again: no lighthouse (§3.2.2)
+    (HELLO + "for line in sys.stdin:\n    send({'type': 'signature', 'value': '[2,A,A]'})\n", "inconsistent",
+     "no explicit back-link"),
+    # an inconsistent world: the marker is seen at the drop, then every vertex looks new and unmarked, forever
+    (HELLO + "first = True\nfor line in sys.stdin:\n"
+     "    send({'type': 'signature', 'value': '[2,V-0,A]' if first else '[2,A,A]'}); first = False\n", "limit",
      "more than 200 traversals"),
 ])
 def test_misbehaving_providers_get_a_clear_verdict(tmp_path, body, reason, words):

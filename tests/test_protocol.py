@@ -11,6 +11,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from topomark.spec.kit import MarkerOp
 from topomark.reference import generators as g
 from topomark.reference.cli import main
 from topomark.reference.explore import explore
@@ -101,7 +102,7 @@ def test_any_snapshot_is_judged_never_crashes(exits, marks, U):
             pass
 
     session = _Session(TRIANGLE, Quiet(), Limits(), True)
-    session.sim._drop(0)
+    session.sim.operate(MarkerOp("vertex", direction=0))
     try:
         session.snapshot({"type": "snapshot", "S": {"exits": exits, "marks": marks}, "U": U})
     except _Fail as exc:
