@@ -33,7 +33,7 @@ from __future__ import annotations
 
 from collections import Counter
 
-from .errors import Violation
+from .errors import Violation, TopomarkFault
 from .isomorphism import IsoResult, Witness, anchored
 from .mapstate import MapDart, PartialMap
 from .world import Dart, World
@@ -267,8 +267,10 @@ class IncrementalInvariants:
     def _diagnose_u(self) -> Violation:
         """U is not the open darts listed once: name the fault as the full predicate does."""
         found = check_I2(self.S, self.world, self.phi())
-        return found or Violation("I-2", "U", f"the {len(self.open_map)} open darts of S, each listed once",
-                                  f"{len(self.S.unexplored)} entries", "the incremental and full checks disagree")
+        if found is None:
+            raise TopomarkFault(f"topomark's incremental I-2 check rejects U ({len(self.S.unexplored)} entries, "
+                                f"{len(self.open_map)} open darts) but the full predicate accepts it")
+        return found
 
     def phi(self) -> Witness:
         return Witness(dict(self.f), dict(self.r))
