@@ -2,17 +2,18 @@
 
 Each entry is an explorer class taking ``(robot, policies, observer)`` and
 offering ``start()``, ``iterate()``, ``S``, ``position`` and ``iterations``
-like :class:`~topomark.reference.lighthouse.LighthouseExplorer` (Algorithm 3.1,
-``basic``).  Variants register themselves here.
+like :class:`~topomark.reference.explorers.algorithm31.LighthouseExplorer`
+(Algorithm 3.1, ``basic``); the Chapter 4 algorithms are compositions of
+techniques on its template (:mod:`topomark.reference.explorers.compositions`).
 """
 
 from __future__ import annotations
 
-from .enhancements import EXPLORERS
-from .lighthouse import LighthouseExplorer
+from .explorers.algorithm31 import LighthouseExplorer
+from .explorers.compositions import EXPLORERS
 
 __all__ = ["ALGORITHMS"]
 
 ALGORITHMS: dict[str, type] = {"basic": LighthouseExplorer, **EXPLORERS}
 """``basic`` (Algorithm 3.1) and the Chapter 4 enhancements: ``enh1``, ``enh2``, ``enh3``, ``enh4``,
-``enh5-d1``, ``enh5-d2``, ``enh3+4``, ``enh3+5`` (see :mod:`topomark.reference.enhancements`)."""
+``enh5-d1``, ``enh5-d2``, ``enh3+4``, ``enh3+5`` (see :mod:`topomark.reference.explorers.compositions`)."""

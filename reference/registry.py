@@ -38,7 +38,7 @@ from topomark.spec.kit import Kit
 
 from . import algorithms
 from .bounds import upper_bound
-from .enhancements import ENHANCEMENTS
+from .explorers.compositions import ENHANCEMENTS
 
 __all__ = ["AlgorithmSpec", "REGISTRY", "algorithm_spec", "CHECKS"]
 

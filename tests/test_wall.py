@@ -23,6 +23,10 @@ ALLOWED = {
     "__future__", "dataclasses", "typing", "collections",
     "topomark.spec.signature", "topomark.spec.mapstate", "topomark.spec.errors", "topomark.spec.kit",
     ".policies", ".robot", ".lighthouse", ".explorers.lighthouses",
+    ".explorers.algorithm31", ".explorers.enhanced", ".explorers.compositions",  # the re-export modules
+    # within reference/explorers/: the siblings, and the robot and policies one level up
+    "..policies", "..robot", ".lighthouses", ".algorithm31", ".execution_trie", ".records", ".enhanced",
+    ".overlap", ".tracing", ".expansion",
 }
 
 

@@ -1,0 +1,293 @@
+"""Mapping with a single directional immovable vertex marker: Algorithm 3.1 (thesis §3.3) as a template.
+
+The robot drops its directional marker at the start vertex v0, pointing at the
+exit it faces, so v0 becomes a *directional lighthouse*: entering it reveals
+both the place and the back-link.  Every iteration takes an unexplored edge
+e = (v_k, v_u) from U, walks S to v_k, follows e, and senses v_u:
+
+* the marker is there — v_u is v0, and the entry index is read off the
+  marker's direction: loop augmentation at once;
+* otherwise every unexplored dart e' = (v_k', i') of U whose known end shows
+  v_u's signature (v_k' ≠ v_k) is a hypothesis h' = (e', v_k').  For each, the
+  simple path in S from v_k' to v0 gives a motion sequence M and expected
+  perceptions P^E; the robot executes M and stops at the first mismatch —
+  case (1) during, case (2) at the end (reject, retrace by the reverse motions
+  and re-align to e) — or completes it with every perception matching —
+  case (3) (confirm: loop augmentation);
+* no hypothesis confirmed — non-loop augmentation: v_u joins S with e as its
+  exit 0 and its other exits, numbered clockwise, join U.
+
+:meth:`LighthouseExplorer.iterate` is the loop body (lines 5–28) written once.
+Chapter 4's listings modify it at named points, the **hooks**; each does
+nothing (or Algorithm 3.1's own step) here:
+
+===================  ==============================================================  ==========================
+hook                 where in the listing                                            modified by
+===================  ==============================================================  ==========================
+``on_enter``         after line 7: the robot has followed e and sensed v_u           Alg. 4.5 line 7 (expand v_u)
+``hypotheses``       lines 8, 11–12: H with every M and P^E                          —
+``validate``         lines 8–20: H tested with motion, one hypothesis at a time     Alg. 4.1–4.5 (stages 1, 2)
+``arrival``          lines 19–20: where the robot is once M completed (case 3)       the execution trie's offset
+``after_non_loop``   after lines 27–28: v_u joined S as a new vertex                 Alg. 4.4 line 22 (expand it)
+``after_join``       after line 25 or 28 (and the marker's join): S augmented        Alg. 4.3 lines 36–37 (T)
+===================  ==============================================================  ==========================
+
+The explorer sees only a :class:`~topomark.reference.robot.Robot`.  It keeps
+the iteration records the checker and the trace read.
+
+References
+----------
+Algorithm 3.1 and §3.3–3.4 of *Exploring topological environments*; the
+basic approach of Dudek et al. [26] (§3.1.3).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Callable
+
+from topomark.spec.errors import CheckFailure, Violation
+from topomark.spec.mapstate import MapDart, PartialMap
+from topomark.spec.signature import Signature, depends_on_entry, signature_at
+
+from ..policies import Policies, bfs, tree_to_v0
+from ..robot import Robot
+from .lighthouses import LIGHTHOUSES, Lighthouse
+
+__all__ = ["Hypothesis", "Iteration", "LighthouseExplorer", "V0"]
+
+V0 = 0
+
+
+@dataclass
+class Hypothesis:
+    """h' = (e', v_k'): with its motion sequence M, expected perceptions P^E and what happened."""
+
+    dart: MapDart
+    motions: tuple[int, ...]
+    expected: tuple[Signature, ...]
+    arrival: MapDart = (0, 0)  # (v0, entry) where M ends if h' holds
+    outcome: str = "untested"  # "case 1", "case 2", "case 3" or "untested"
+    perceived: tuple[Signature, ...] = ()
+
+    def to_json(self) -> dict:
+        return {"dart": list(self.dart), "motions": list(self.motions),
+                "expected": [str(s) for s in self.expected], "outcome": self.outcome,
+                "perceived": [str(s) for s in self.perceived]}
+
+
+@dataclass
+class Iteration:
+    """One pass through the loop body of Algorithm 3.1."""
+
+    number: int
+    edge: MapDart
+    signature: Signature | None = None
+    hypotheses: list[Hypothesis] = field(default_factory=list)
+    kind: str = ""  # "loop" or "non-loop"
+    joined: tuple[MapDart, MapDart] | None = None
+    by_marker: bool = False
+
+    def to_json(self) -> dict:
+        return {"iteration": self.number, "edge": list(self.edge), "signature": str(self.signature),
+                "hypotheses": [h.to_json() for h in self.hypotheses], "augmentation": self.kind,
+                "joined": [list(d) for d in self.joined] if self.joined else None, "by_marker": self.by_marker}
+
+
+class LighthouseExplorer:
+    """Algorithm 3.1 on a robot; ``observer(explorer, iteration)`` runs after every iteration."""
+
+    name = "basic"
+    hypothesis_type: type = Hypothesis  # the record of one h' (Chapter 4 adds how it was rejected)
+    iteration_type: type = Iteration  # the record of one iteration (Chapter 4 adds its counters)
+
+    def __init__(self, robot: Robot, policies: Policies | None = None,
+                 observer: Callable[["LighthouseExplorer", Iteration], None] | None = None,
+                 lighthouse: Lighthouse = LIGHTHOUSES["directional-vertex"]):
+        self.robot = robot
+        self.policies = policies or Policies()
+        self.observer = observer
+        self.lighthouse = lighthouse
+        self.S = PartialMap()
+        self.position: MapDart = (V0, 0)  # believed (map vertex, entry index)
+        self.iterations: list[Iteration] = []
+        self._v0_entries: dict[Signature, int] = {}
+
+    # -- lines 1-3 -----------------------------------------------------------
+    def start(self) -> None:
+        """Establish the lighthouse at v0, facing exit 0 (line 1: Algorithm 3.1 drops its directional marker
+        pointing at the faced exit); S = {v0}; U = its exits."""
+        here = self.robot.sense()
+        v0 = self.S.add_vertex(here.degree)
+        self._v0_entries = self.lighthouse.establish(self.robot, self.S, v0)
+        self.S.unexplored = [(v0, i) for i in range(here.degree)]
+        self.position = (v0, 0)
+
+    def lighthouse_entry(self, sig: Signature) -> int | None:
+        """The exit of v0 the robot entered by, if ``sig`` is the lighthouse's (§3.3: place and back-link)."""
+        return self._v0_entries.get(sig)
+
+    def explore(self) -> PartialMap:
+        """Run to termination (U empty) and return S."""
+        self.start()
+        while self.S.unexplored:
+            self.iterate()
+        return self.S
+
+    # -- lines 5-28: the template ------------------------------------------------
+    def iterate(self) -> Iteration:
+        """One pass through lines 5–28, calling the hooks at the points Chapter 4 modifies."""
+        _, _, parent = tree = bfs(self.S, self.position[0])
+        it = self.iteration_type(len(self.iterations) + 1, self.policies.choose_edge(self.S, tree[0]))  # line 5
+        vk, i = it.edge
+        self.travel_to(vk, parent)  # line 6
+        sig = self.robot.move((i - self.position[1]) % self.S.degree(vk), "new")
+        it.signature = sig  # line 7
+        entry = self.lighthouse_entry(sig)
+        if entry is not None:  # the marker: place and back-link at once (§3.3)
+            self.loop_augment(it, (V0, entry), by_marker=True)
+        else:
+            self.on_enter(it, sig)
+            confirmed, heading = self.validate(it, sig)  # lines 8-20
+            if confirmed is not None:  # lines 22-25
+                self.loop_augment(it, confirmed.dart)
+                self.position = self.arrival(confirmed)
+            else:  # lines 26-28
+                self.non_loop_augment(it, sig, heading)
+                self.after_non_loop(it)
+        self.after_join(it)
+        self.iterations.append(it)
+        if self.observer is not None:
+            self.observer(self, it)
+        return it
+
+    # -- the hooks (Algorithm 3.1: nothing, or its own step) -----------------------
+    def on_enter(self, it: Iteration, sig: Signature) -> None:
+        """After line 7, before H: the robot stands at v_u, entered by e (Algorithm 3.1: nothing more)."""
+
+    def arrival(self, h: Hypothesis) -> MapDart:
+        """Where the robot is once h' is confirmed (lines 19–20): v0, entered as P^E's last perception says."""
+        return h.arrival
+
+    def after_non_loop(self, it: Iteration) -> None:
+        """After lines 27–28: v_u is S's newest vertex and the robot stands there (Algorithm 3.1: nothing)."""
+
+    def after_join(self, it: Iteration) -> None:
+        """After S is augmented by ``it.joined`` (lines 24–25, 27–28 or the marker's join; Algorithm 3.1: nothing)."""
+
+    # -- line 6 ----------------------------------------------------------------
+    def travel_to(self, target: int, parent: dict[int, MapDart]) -> None:
+        """Walk S from the believed position to ``target`` along the BFS tree ``parent`` rooted there (line 6)."""
+        path = []
+        x = target
+        while x != self.position[0]:
+            path.append(parent[x])
+            x = parent[x][0]
+        v, entry = self.position
+        for u, exit_ in reversed(path):
+            self.robot.move((exit_ - entry) % self.S.degree(v), "travel")
+            v, entry = self.S.arc((u, exit_))
+        self.position = (v, entry)
+
+    # -- lines 8-20 --------------------------------------------------------------
+    def hypotheses(self, it: Iteration, sig: Signature) -> list[Hypothesis]:
+        """H: unexplored darts (v_k' ≠ v_k) whose known end shows v_u's signature, with M and P^E (lines 8, 11-12).
+
+        One tree to v0 per iteration serves every hypothesis: the path from
+        v_k' is its first motion (which depends on e') followed by the tree
+        path from v_k''s parent, computed once per vertex.
+        """
+        found, lengths = [], []
+        toward: dict[int, int] | None = None
+        tails: dict[int, tuple] = {}
+        shows: dict[int, bool] = {it.edge[0]: False}  # per vertex whose signature is the same from every entry
+        make = self.hypothesis_type
+        for dart in self.S.unexplored:
+            v, i = dart
+            match = shows.get(v)
+            if match is None:
+                match = self.S.degree(v) == sig.degree and signature_at(self.S, v, i) == sig
+                if not depends_on_entry(self.S, v):
+                    shows[v] = match
+            if not match:
+                continue
+            if toward is None:
+                toward = tree_to_v0(self.S, self.policies)
+            motions, expected, arrival = self._tail(v, toward, tails)
+            first = (toward[v] - i) % self.S.degree(v)
+            found.append(make(dart, (first,) + motions, expected, arrival))
+            lengths.append(len(motions) + 1)
+        return self.policies.order_hypotheses(found, lengths)
+
+    def _tail(self, v: int, toward: dict[int, int], tails: dict[int, tuple]) -> tuple:
+        """Motions and expected signatures after leaving ``v`` toward v0, and the arrival dart at v0."""
+        if v in tails:
+            return tails[v]
+        path = []
+        x = v
+        while x != V0 and x not in tails:
+            y, entry = self.S.arc((x, toward[x]))
+            path.append((x, y, entry))
+            x = y
+        motions, expected, arrival = ((), (), None) if x == V0 else tails[x]
+        for x, y, entry in reversed(path):
+            if y == V0:
+                motions, expected, arrival = (), (signature_at(self.S, y, entry),), (y, entry)
+            else:
+                motions = ((toward[y] - entry) % self.S.degree(y),) + motions
+                expected = (signature_at(self.S, y, entry),) + expected
+            tails[x] = (motions, expected, arrival)
+        return tails[v]
+
+    def validate(self, it: Iteration, sig: Signature) -> tuple[Hypothesis | None, int]:
+        """Test hypotheses in turn (lines 8-20).
+
+        Returns the confirmed hypothesis (the robot is then at v0), or None and
+        the robot's heading at v_u: its entry edge counted from e.
+        """
+        it.hypotheses = self.hypotheses(it, sig)
+        heading = 0  # the physical entry edge, counted from e (e = exit 0 of v_u)
+        for h in it.hypotheses:
+            done, degrees, perceived = [], [sig.degree], []
+            for step, (motion, want) in enumerate(zip(h.motions, h.expected)):
+                physical = (motion - heading) % sig.degree if step == 0 else motion
+                got = self.robot.move(physical, "validation")
+                done.append(physical)
+                degrees.append(got.degree)
+                perceived.append(got)
+                if got != want:
+                    h.outcome = "case 2" if step == len(h.motions) - 1 else "case 1"
+                    break
+            h.perceived = tuple(perceived)
+            if h.outcome == "untested":
+                h.outcome = "case 3"
+                return h, heading
+            self.retrace(done, degrees)
+            heading = (heading + done[0]) % sig.degree
+        return None, heading
+
+    def retrace(self, done: list[int], degrees: list[int]) -> None:
+        """Execute the reverse of the motions ``done`` (line 17): 0, then −l mod deg back to v_u."""
+        self.robot.move(0, "retrace")
+        for t in range(len(done) - 1, 0, -1):
+            self.robot.move((-done[t]) % degrees[t], "retrace")
+
+    # -- lines 22-28 -----------------------------------------------------------
+    def loop_augment(self, it: Iteration, far: MapDart, by_marker: bool = False) -> None:
+        """Add e/e' = (v_k, v_k') with the existing indices; remove e' from U."""
+        if far not in self.S.unexplored:
+            raise CheckFailure(Violation("Algorithm 3.1", f"iteration {it.number}", f"e' = {far} in U",
+                                         "not in U", "the explorer's own map is inconsistent"))
+        self.S.unexplored.remove(far)
+        self.S.add_edge(it.edge, far)
+        it.kind, it.joined, it.by_marker = "loop", (it.edge, far), by_marker
+        self.position = far
+
+    def non_loop_augment(self, it: Iteration, sig: Signature, heading: int) -> None:
+        """Add v_u and e; e is v_u's exit 0, the rest numbered clockwise and added to U."""
+        u = self.S.add_vertex(sig.degree)
+        self.S.mark_as_sensed(u, sig, 0)  # markers seen at v_u (e.g. the far end of a marked edge, §6.1)
+        self.S.add_edge(it.edge, (u, 0))
+        self.S.unexplored.extend((u, i) for i in range(1, sig.degree))
+        it.kind, it.joined = "non-loop", (it.edge, (u, 0))
+        self.position = (u, heading)
