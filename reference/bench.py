@@ -38,7 +38,9 @@ Runs go to ``DIR/runs.csv`` keyed by (experiment = family, size, seed,
 algorithm, edge policy); a restarted sweep skips keys already there.  Each
 run is checked (invariants after every iteration, final isomorphism) unless
 ``--no-check``; the row records ``verified``.  The report ``DIR/EXPERIMENT.md``
-and plots ``DIR/EXPERIMENT-*.png`` are generated from the CSV.
+and plots ``DIR/EXPERIMENT-*.png`` are generated from the CSV.  One sweep at
+a time works in a directory (``DIR/.lock``), and a file damaged by a killed
+sweep is repaired when read (:mod:`~topomark.reference.runstore`).
 
 Heavy rows: Enhancement-5 with d = 2 on complete-hole worlds invests
 Θ(n^4) expansion traversals (§4.2: "O(n^4) extra traversals"; 6.2 million
@@ -50,7 +52,6 @@ size ``HEAVY_MAX_SIZE`` (``--heavy-max-size``); the report marks the row.
 
 from __future__ import annotations
 
-import csv
 import os
 import random
 import statistics
@@ -68,6 +69,7 @@ from . import thesis_figures as tf
 from .bounds import expression_3_3, upper_bound
 from .explore import explore
 from .policies import Policies
+from .runstore import CSV_FIELDS, Appender, locked, read_runs, rewrite, row_key, write_atomic
 
 __all__ = ["FAMILIES", "EXPERIMENTS", "Run", "plan", "run_sweep", "write_report", "CSV_FIELDS"]
 
@@ -199,19 +201,14 @@ def world_for(family: str, size: int, seed: int) -> World:
     return World(world.rotation, (), Start(v, facing))
 
 
-CSV_FIELDS = ("experiment", "size", "seed", "algorithm", "policy", "n", "m", "cost", "cost_per_m", "verified",
-              "checked", "travel", "new", "validation", "retrace", "expansion", "hypotheses", "pruned",
-              "rejected_without_motion", "overlap_saved", "recorded", "upper_bound", "expression_3_3", "seconds",
-              "cpu_seconds", "error")
-
-
 def run_one(run: Run, check: bool = True) -> dict:
     t, cpu = time.perf_counter(), time.process_time()
     world = world_for(run.family, run.size, run.seed)
     row = {"experiment": run.family, "size": run.size, "seed": run.seed, "algorithm": run.algorithm,
            "policy": run.policy, "n": world.n, "m": world.m, "checked": check, "error": ""}
     try:
-        out = explore(world, run.algorithm, Policies(edge=run.policy), check=check, record=False)
+        out = explore(world, run.algorithm, Policies(edge=run.policy), check=check, record=False,
+                      keep_hypotheses=False)
     except Exception as exc:  # a crashed run is recorded, never silently dropped
         row.update(cost="", verified=False, error=f"{type(exc).__name__}: {exc}")
         return row
@@ -262,27 +259,6 @@ def _weight(r: Run) -> float:
     return w * (r.size if is_heavy(r.family, r.algorithm) else 1)
 
 
-def _load(path: Path) -> list[dict]:
-    """The complete rows of a runs file (a line cut short by a killed sweep is ignored)."""
-    if not path.exists():
-        return []
-    with path.open(newline="") as fh:
-        return [r for r in csv.DictReader(fh) if r.get("error") is not None and None not in r]
-
-
-def _repair(path: Path) -> None:
-    """Drop a last line left unfinished by a killed sweep, so appended rows start on a line of their own."""
-    if not path.exists() or path.stat().st_size == 0:
-        return
-    data = path.read_bytes()
-    if not data.endswith(b"\n"):
-        path.write_bytes(data[: data.rfind(b"\n") + 1])
-
-
-def _key(row: dict) -> tuple:
-    return (row["experiment"], str(row["size"]), str(row["seed"]), row["algorithm"], row.get("policy") or "nearest")
-
-
 def _worker(args):
     run, check = args
     return run_one(run, check)
@@ -319,45 +295,49 @@ class Progress:
 
 
 def run_sweep(runs: list[Run], out: Path, jobs: int = 0, check: bool = True, progress: bool = True) -> dict:
-    """Run what is not yet in ``out/runs.csv`` (append, flush per row); return counts."""
+    """Run what is not yet in ``out/runs.csv`` (append, one whole row per run); return counts.
+
+    The directory is locked for the sweep (a second sweep on it is bad input, exit 2), and the rows a
+    killed or concurrent sweep left damaged are repaired first (:mod:`~topomark.reference.runstore`).
+    """
     out.mkdir(parents=True, exist_ok=True)
     path = out / "runs.csv"
-    _repair(path)
-    existing = _load(path)
-    # A checked sweep does not accept an unchecked row for the same key (it reruns it; the report then
-    # prefers the checked row); an unchecked sweep accepts either.
-    have = {_key(r) for r in existing if str(r.get("checked")) == "True" or not check}
-    todo = [r for r in runs if r.key not in have]
-    jobs = jobs or os.cpu_count() or 1
-    new_file = not path.exists() or path.stat().st_size == 0
-    bar = Progress(len(todo), progress)
-    failures = 0
     started = time.monotonic()
-    with path.open("a", newline="") as fh:
-        writer = csv.DictWriter(fh, fieldnames=CSV_FIELDS)
-        if new_file:
-            writer.writeheader()
-            fh.flush()
-
-        def emit(row):
-            nonlocal failures
-            writer.writerow({k: row.get(k, "") for k in CSV_FIELDS})
-            fh.flush()
-            if check and not row.get("verified"):
-                failures += 1
-            bar.step(row)
-
-        if jobs <= 1 or len(todo) <= 1:
-            for r in todo:
-                emit(run_one(r, check))
-        else:
-            import multiprocessing as mp
-            ctx = mp.get_context("fork") if "fork" in mp.get_all_start_methods() else mp.get_context()
-            with ctx.Pool(jobs) as pool:
-                for row in pool.imap_unordered(_worker, [(r, check) for r in todo], chunksize=1):
-                    emit(row)
+    with locked(out):
+        existing = read_runs(path)
+        if existing.needs_rewrite and path.exists():
+            rewrite(path, existing)
+        # A checked sweep does not accept an unchecked row for the same key (it reruns it; the report then
+        # prefers the checked row); an unchecked sweep accepts either.
+        have = {row_key(r) for r in existing.rows if str(r.get("checked")) == "True" or not check}
+        todo = [r for r in runs if r.key not in have]
+        with Appender(path) as store:
+            failures = _run_all(todo, store, jobs or os.cpu_count() or 1, check, Progress(len(todo), progress))
     return {"planned": len(runs), "skipped": len(runs) - len(todo), "ran": len(todo), "failures": failures,
             "seconds": round(time.monotonic() - started, 1)}
+
+
+def _run_all(todo: list[Run], store: Appender, jobs: int, check: bool, bar: Progress) -> int:
+    """Run ``todo`` (in ``jobs`` processes), appending each row as it finishes; the number not verified."""
+    failures = 0
+
+    def emit(row):
+        nonlocal failures
+        store.append(row)
+        if check and not row.get("verified"):
+            failures += 1
+        bar.step(row)
+
+    if jobs <= 1 or len(todo) <= 1:
+        for r in todo:
+            emit(run_one(r, check))
+    else:
+        import multiprocessing as mp
+        ctx = mp.get_context("fork") if "fork" in mp.get_all_start_methods() else mp.get_context()
+        with ctx.Pool(jobs) as pool:
+            for row in pool.imap_unordered(_worker, [(r, check) for r in todo], chunksize=1):
+                emit(row)
+    return failures
 
 
 # -- the report -------------------------------------------------------------------
@@ -369,7 +349,7 @@ def latest(rows: list[dict]) -> list[dict]:
     """One row per key: the last checked row if any, else the last row."""
     best: dict[tuple, dict] = {}
     for r in rows:
-        k = _key(r)
+        k = row_key(r)
         if k not in best or str(r.get("checked")) == "True" or str(best[k].get("checked")) != "True":
             best[k] = r
     return list(best.values())
@@ -445,7 +425,7 @@ def _in_experiment(exp: Experiment, row: dict) -> bool:
 def write_report(experiment: str, out: Path, wall: float | None = None, plots: bool = True) -> Path:
     """Generate ``out/EXPERIMENT.md`` (and plots) from ``out/runs.csv``."""
     exp = EXPERIMENTS[experiment]
-    rows = _load(out / "runs.csv")
+    rows = read_runs(out / "runs.csv").rows
     summary = summarize(rows)
     lines = [f"# {exp.title}", "",
              f"Generated by `topomark bench {experiment}` from `runs.csv` ({len(rows)} rows in the file). "
@@ -558,7 +538,7 @@ def write_report(experiment: str, out: Path, wall: float | None = None, plots: b
     else:
         lines += ["Plots: " + ", ".join(f"`{p.name}`" for p in made), ""]
     path = out / f"{experiment}.md"
-    path.write_text("\n".join(lines))
+    write_atomic(path, "\n".join(lines))
     return path
 
 

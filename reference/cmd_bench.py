@@ -4,11 +4,11 @@ from __future__ import annotations
 
 import json
 import time
-from pathlib import Path
 
 from topomark.spec.errors import InvalidInput
 
 from .bench import EXPERIMENTS, HEAVY_GRAPHS, HEAVY_MAX_SIZE, plan, run_sweep, write_report
+from .outputs import check_output_dir
 
 __all__ = ["register"]
 
@@ -18,8 +18,8 @@ def register(sub) -> None:
         "bench", help="run a thesis experiment (figures 3.10-3.12, tables 4.1-4.8) and write CSV + report",
         description="Run EXPERIMENT over fixed-seed worlds, every run checked (invariants after every iteration, "
                     "final isomorphism) unless --no-check; append each run to DIR/runs.csv (a restarted sweep "
-                    "skips finished runs) and write DIR/EXPERIMENT.md and plots. Exit 0 when every checked run "
-                    "was verified, 1 otherwise, 2 on bad input.")
+                    "skips finished runs; one sweep at a time per DIR) and write DIR/EXPERIMENT.md and plots. "
+                    "Exit 0 when every checked run was verified, 1 otherwise, 2 on bad input.")
     p.add_argument("experiment", metavar="EXPERIMENT", help=f"one of: {', '.join(EXPERIMENTS)}")
     p.add_argument("--graphs", type=int, default=30, help="worlds per size (default 30)")
     p.add_argument("--heavy-graphs", type=int, default=HEAVY_GRAPHS,
@@ -44,11 +44,11 @@ def bench_command(args) -> int:
         raise InvalidInput("--graphs and --heavy-graphs must be >= 1")
     if args.jobs < 0:
         raise InvalidInput("--jobs must be >= 0")
-    out = Path(args.out)
     started = time.monotonic()
     runs = plan(args.experiment, args.graphs, args.sizes, args.heavy_graphs, args.heavy_max_size)
     if not runs:
         raise InvalidInput(f"no runs planned for {args.experiment} with sizes {args.sizes}")
+    out = check_output_dir(args.out, create=not args.report_only)
     result = {"planned": len(runs), "ran": 0, "skipped": len(runs), "failures": 0}
     if not args.report_only:
         result = run_sweep(runs, out, args.jobs, check=not args.no_check, progress=not args.quiet)

@@ -2,16 +2,19 @@
 
 from __future__ import annotations
 
+import contextlib
 import json
 import sys
 import time
 
 from topomark.spec.errors import InvalidInput
-from topomark.spec.worldfile import save_world
+from topomark.spec.worldfile import dumps_world
 
-from .explore import ALGORITHMS, dump_trace, explore
+from .explore import ALGORITHMS, explore, prepare_world
 from .generators import DEFAULT_WORLD
+from .outputs import check_output, write_output
 from .policies import EDGE_POLICIES, HYPOTHESIS_POLICIES, PATH_POLICIES, Policies
+from .tracesink import FileSink, RingSink, TeeSink
 from .worldarg import resolve_world
 
 __all__ = ["register", "parse_policies"]
@@ -55,23 +58,41 @@ def parse_policies(items: list[str]) -> Policies:
 
 
 class _Progress:
-    """A one-line progress bar on stderr, for terminals only."""
+    """Progress on stderr: a one-line bar on a terminal; otherwise, on a long run, a plain line every ``every`` s.
 
-    def __init__(self, enabled: bool):
-        self.enabled = enabled and sys.stderr.isatty()
-        self.last = 0.0
+    The plain lines (edges explored / m, cost so far, elapsed) start only once the run has taken ``every``
+    seconds, so short runs and logs stay quiet.
+    """
 
-    def __call__(self, done: int, total: int) -> None:
-        now = time.monotonic()
-        if not self.enabled or (now - self.last < 0.2 and done < total):
+    def __init__(self, enabled: bool, stream=None, clock=time.monotonic, every: float = 10.0):
+        self.stream = stream or sys.stderr
+        self.enabled = enabled
+        self.tty = self.stream.isatty()
+        self.clock, self.every = clock, every
+        self.started = self.last = clock()
+
+    def __call__(self, done: int, total: int, cost: int = 0) -> None:
+        if not self.enabled:
+            return
+        now = self.clock()
+        if self.tty:
+            self._bar(now, done, total)
+        elif now - self.last >= self.every:
+            self.last = now
+            self.stream.write(f"topomark: exploring: {done}/{total} edges explored, cost {cost} so far, "
+                              f"{now - self.started:.0f} s elapsed\n")
+            self.stream.flush()
+
+    def _bar(self, now: float, done: int, total: int) -> None:
+        if now - self.last < 0.2 and done < total:
             return
         self.last = now
         width = 30
         fill = width * done // max(total, 1)
-        sys.stderr.write(f"\rexploring [{'#' * fill}{'.' * (width - fill)}] {done}/{total} edges")
+        self.stream.write(f"\rexploring [{'#' * fill}{'.' * (width - fill)}] {done}/{total} edges")
         if done >= total:
-            sys.stderr.write("\n")
-        sys.stderr.flush()
+            self.stream.write("\n")
+        self.stream.flush()
 
 
 def _table(o, started: float) -> str:
@@ -89,29 +110,38 @@ def _table(o, started: float) -> str:
     return "\n".join(f"{k:<{width}}  {v}" for k, v in rows)
 
 
+TAIL = 8  # trace records shown before a violation's end record
+
+
 def explore_command(args) -> int:
     policies = parse_policies(args.policy)
     if args.algorithm not in ALGORITHMS:
         raise InvalidInput(f"unknown algorithm {args.algorithm!r} (choose from {', '.join(ALGORITHMS)})")
+    for path in (args.trace, args.map):  # before the run: a typo must not cost a long exploration
+        if path:
+            check_output(path)
     if args.world is None:
         if args.seed is not None:
             raise InvalidInput("--seed needs a generator: the built-in default world is fixed")
         world, label = DEFAULT_WORLD(), "built-in default world (5x5 lattice, 2 cells removed, seed 1)"
     else:
         world, label = resolve_world(args.world, args.seed), args.world
+    prepare_world(world)  # a world this algorithm cannot take is refused before the trace file is started
     started = time.monotonic()
-    outcome = explore(world, args.algorithm, policies, check=not args.no_check, record=True,
-                      progress=_Progress(not (args.quiet or args.json)), check_mode=args.check_mode)
-    if args.trace:
-        with open(args.trace, "w", encoding="utf-8") as fh:
-            fh.write(dump_trace(outcome.trace))
+    ring = RingSink(TAIL + 1)
+    with contextlib.ExitStack() as stack:
+        sink = TeeSink(stack.enter_context(FileSink(args.trace)), ring) if args.trace else ring
+        outcome = explore(world, args.algorithm, policies, check=not args.no_check, sink=sink,
+                          progress=_Progress(not (args.quiet or args.json)), check_mode=args.check_mode,
+                          keep_hypotheses=False)
     if args.map and outcome.violation is None and outcome.explorer.S.complete():
-        save_world(outcome.explorer.S.to_world(), args.map)
+        write_output(args.map, dumps_world(outcome.explorer.S.to_world()))
+    last = ring.records[:-1]  # the records before the end record
     data = {"world": label, "policies": policies.to_json(), "algorithm": args.algorithm, **outcome.summary(),
             "checked": not args.no_check}
-    tail = [json.dumps(rec, sort_keys=True) for rec in outcome.trace[-9:-1]] if outcome.violation else []
+    tail = [json.dumps(rec, sort_keys=True) for rec in last] if outcome.violation else []
     if tail:
-        data["trace_tail"] = outcome.trace[-9:-1]
+        data["trace_tail"] = last
     if args.json:
         print(json.dumps(data, indent=1, sort_keys=True))
     else:

@@ -12,6 +12,7 @@ from topomark.spec.isomorphism import find_isomorphism, verify_witness
 from topomark.spec.worldfile import dumps_world, load_world, world_to_json
 
 from .generators import GENERATORS, PARAMETERS
+from .outputs import check_output, write_output
 from .worldarg import resolve_world
 
 __all__ = ["register", "describe"]
@@ -63,10 +64,11 @@ def world_command(args) -> int:
     name = args.generator.partition(":")[0]
     if name not in GENERATORS:
         raise InvalidInput(f"unknown generator {name!r}; known generators: {', '.join(GENERATORS)}")
+    if args.output:
+        check_output(args.output)  # before generating: a large world must not be built for nothing
     world = resolve_world(args.generator, args.seed)
     if args.output:
-        with open(args.output, "w", encoding="utf-8") as fh:
-            fh.write(dumps_world(world))
+        write_output(args.output, dumps_world(world))
         info = describe(world)
         msg = f"wrote {args.output}: n={info['n']} m={info['m']} genus={info['genus']}"
         print(json.dumps({"file": args.output, **info}) if args.json else msg)
