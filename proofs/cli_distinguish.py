@@ -17,8 +17,9 @@ from typing import Any
 from topomark.proofs.bisim import bisimulation, check_relation, distinguishing_sequence
 from topomark.proofs.census import CensusResult, census, stderr_progress
 from topomark.proofs.enumerate import MAX_VERTICES
-from topomark.spec.markerclass import MARKER_CLASSES, marker_class
 from topomark.spec.errors import CheckFailure, InvalidInput
+from topomark.spec.markerclass import MARKER_CLASSES, marker_class
+from topomark.spec.world import MAX_DEGREE
 from topomark.spec.worldfile import load_world, world_to_json
 
 __all__ = ["register", "distinguish_command", "census_command", "format_motions", "format_perceptions",
@@ -98,6 +99,9 @@ def _validate(args: argparse.Namespace) -> None:
                            f"of at most {MAX_VERTICES} vertices (n = 8 already takes hours)")
     if args.max_degree < 1:
         raise InvalidInput(f"--max-degree must be at least 1, not {args.max_degree}")
+    if args.max_degree > MAX_DEGREE:
+        raise InvalidInput(f"--max-degree {args.max_degree} is larger than any world's degree can be "
+                           f"(at most {MAX_DEGREE:,}, topomark.spec.world.MAX_DEGREE)")
     if args.jobs < 1:
         raise InvalidInput(f"--jobs must be at least 1, not {args.jobs}")
 

@@ -23,9 +23,10 @@ import json
 from pathlib import Path
 
 from topomark.proofs import z3search
-from topomark.proofs.markerclass import MARKER_CLASSES, marker_class
 from topomark.reference.cliargs import check_seconds
 from topomark.spec.errors import InvalidInput
+from topomark.spec.markerclass import MARKER_CLASSES, marker_class
+from topomark.spec.world import MAX_DEGREE
 from topomark.spec.worldfile import save_world
 
 __all__ = ["register", "search_command", "validate_args", "describe_world", "write_outputs"]
@@ -59,6 +60,9 @@ def validate_args(args: argparse.Namespace) -> None:
         raise InvalidInput(f"--max-vertices {args.max_vertices} is too large: at most {z3search.MAX_VERTICES}")
     if args.max_degree < 1:
         raise InvalidInput(f"--max-degree must be at least 1, got {args.max_degree}")
+    if args.max_degree > MAX_DEGREE:
+        raise InvalidInput(f"--max-degree {args.max_degree} is larger than any world's degree can be "
+                           f"(at most {MAX_DEGREE:,}, topomark.spec.world.MAX_DEGREE)")
     if args.timeout is not None:
         check_seconds(args.timeout, "--timeout")
     if args.out is not None and Path(args.out).exists() and not Path(args.out).is_dir():

@@ -25,7 +25,7 @@ import traceback
 from topomark.spec.errors import (EXIT_BAD_INPUT, EXIT_CODES_HELP, EXIT_FAULT, EXIT_NEGATIVE, CheckFailure,
                                   InvalidInput, TopomarkFault)
 
-__all__ = ["main", "build_parser", "emit"]
+__all__ = ["main", "build_parser", "emit", "clip_message"]
 
 # Modules that contribute commands: each has register(subparsers).
 COMMAND_MODULES = (
@@ -88,10 +88,10 @@ def main(argv: Sequence[str] | None = None) -> int:
             return 2
         return int(args.handler(args))
     except InvalidInput as exc:
-        print(f"topomark: error: {exc}", file=sys.stderr)
+        print(f"topomark: error: {clip_message(str(exc))}", file=sys.stderr)
         return EXIT_BAD_INPUT
     except CheckFailure as exc:
-        print(f"topomark: check failed: {exc}", file=sys.stderr)
+        print(f"topomark: check failed: {clip_message(str(exc))}", file=sys.stderr)
         return EXIT_NEGATIVE
     except KeyboardInterrupt:
         print("topomark: interrupted", file=sys.stderr)
@@ -102,6 +102,11 @@ def main(argv: Sequence[str] | None = None) -> int:
         return _fault(f"{exc}")
     except Exception as exc:  # noqa: BLE001 - anything else is a bug in topomark, reported as one
         return _fault(f"unexpected {exc.__class__.__name__}: {exc}", traceback.format_exc())
+
+
+def clip_message(text: str, limit: int = 1000) -> str:
+    """One message, bounded: whatever an input quotes back, stderr gets at most ``limit`` characters of it."""
+    return text if len(text) <= limit else f"{text[:limit]}... ({len(text):,} characters in all)"
 
 
 def _fault(message: str, detail: str = "") -> int:

@@ -59,7 +59,11 @@ def resolve_world(text: str, seed: int | None = None) -> World:
             if "seed" in params:
                 raise InvalidInput(f"seed given twice: --seed {seed} and seed={params['seed']} in {text!r}")
             params["seed"] = str(seed)
-        return generate(name, **params)
+        try:
+            return generate(name, **params)
+        except InvalidInput as exc:  # name the argument: "lattice-hole:rows=3000,cols=3000: ..."
+            shown = text if len(text) <= 80 else text[:80] + "..."
+            raise exc.__class__(f"{shown}: {exc}") from None
     if exists or text.endswith(".json"):
         if seed is not None:
             raise InvalidInput(f"--seed has no effect on a world file ({text})")

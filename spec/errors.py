@@ -30,6 +30,8 @@ __all__ = [
     "require",
     "require_input",
     "TopomarkFault",
+    "MAX_MESSAGE",
+    "bounded",
     "EXIT_OK",
     "EXIT_NEGATIVE",
     "EXIT_BAD_INPUT",
@@ -47,8 +49,25 @@ class TopomarkError(Exception):
     """Base class of every error topomark raises on purpose."""
 
 
+MAX_MESSAGE = 1000
+"""The longest message an error carries, in characters: a message that quotes a hostile value (a
+megabyte-long name, a 100,000-bracket key) keeps its first and last parts, so it still names the
+place and the rule, and stays one readable line."""
+
+
+def bounded(message: str, limit: int = MAX_MESSAGE) -> str:
+    """``message`` if short, else its first and last parts around a note of what was left out."""
+    if len(message) <= limit:
+        return message
+    head, tail = limit * 7 // 10, limit * 2 // 10
+    return f"{message[:head]} ... ({len(message) - head - tail:,} characters left out) ... {message[-tail:]}"
+
+
 class InvalidInput(TopomarkError, ValueError):
-    """Input that is not acceptable: the CLI reports it and exits 2."""
+    """Input that is not acceptable: the CLI reports it and exits 2.  Its message is :func:`bounded`."""
+
+    def __init__(self, message: str = ""):
+        super().__init__(bounded(str(message)))
 
 
 class InvalidWorld(InvalidInput):

@@ -30,7 +30,7 @@ from typing import Iterable, Iterator, Mapping, Sequence
 from .errors import InvalidWorld, require_input
 from .marker import EdgeMarker, Marker, VertexMarker
 
-__all__ = ["World", "Start", "Dart", "VertexMark", "DartMark", "MAX_VERTICES", "MAX_EDGES", "MAX_DEGREE",
+__all__ = ["World", "Start", "Dart", "VertexMark", "DartMark", "MAX_VERTICES", "MAX_EDGES", "MAX_DEGREE", "MAX_NAME_LENGTH",
            "check_size"]
 
 Dart = tuple[str, int]
@@ -62,6 +62,12 @@ MAX_DEGREE = MAX_VERTICES - 1
 :data:`MAX_VERTICES` vertices.  A signature read from outside
 (:meth:`topomark.spec.signature.Signature.parse`) with a larger degree cannot
 describe any world, so it is refused before anything is allocated for it."""
+
+
+MAX_NAME_LENGTH = 200
+"""The longest vertex name, in characters.  Names only label vertices (the
+robot never senses them, §3.1.1); a bound keeps every message that quotes a
+name one short line however hostile the file."""
 
 
 def check_size(n: int, m: int, what: str) -> None:
@@ -152,11 +158,17 @@ class World:
             _fail("the world has no vertices")
         for v, ns in rot.items():
             require_input(isinstance(v, str), f"vertex name {v!r} is not a string", InvalidWorld)
+            if len(v) > MAX_NAME_LENGTH:
+                _fail(f"vertex name {v[:40]!r}... has {len(v):,} characters, more than the limit of "
+                      f"{MAX_NAME_LENGTH} (topomark.spec.world.MAX_NAME_LENGTH)")
             if not ns:
                 _fail(f"vertex {v!r} has degree 0 (every degree must be >= 1)")
             for w in ns:
                 if not isinstance(w, str):
-                    _fail(f"vertex {v!r} lists neighbour {w!r}, which is not a string")
+                    _fail(f"vertex {v!r} lists neighbour {str(w)[:40]!r}, which is not a string")
+                if len(w) > MAX_NAME_LENGTH:
+                    _fail(f"vertex {v!r} lists neighbour {w[:40]!r}... of {len(w):,} characters, more than the "
+                          f"limit of {MAX_NAME_LENGTH} (topomark.spec.world.MAX_NAME_LENGTH)")
                 if w == v:
                     _fail(f"self-loop at vertex {v!r}")
                 if w not in rot:

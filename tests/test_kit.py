@@ -65,11 +65,6 @@ def test_unknown_class_lists_the_known():
         marker_class("sideways")
 
 
-def test_old_location_still_imports():
-    from topomark.proofs.markerclass import MARKER_CLASSES as old
-    assert old is MARKER_CLASSES
-
-
 @pytest.mark.parametrize("path, message", [("a\x00b", "NUL byte"), ("x" * 5000, "5000 characters")])
 def test_unopenable_paths_are_bad_input_with_a_short_message(path, message):
     from topomark.spec.jsontext import read_text_file
