@@ -6,7 +6,7 @@ a physical robot as in §3.6, where a vertex is a junction recognised by the
 robot's sensors and a motion is "leave by the l-th exit clockwise from the
 one you came in by".  The provider says ``hello`` with the marker class and
 the initial signature, then answers every ``move`` and ``drop`` with the
-signature reached.  topomark runs :class:`~topomark.reference.lighthouse.
+signature reached.  topomark runs :class:`~topomark.reference.explorers.algorithm31.
 LighthouseExplorer` over a :class:`~topomark.reference.robot.Robot` whose
 three operations are those messages, and ends by sending its ``map``.
 
@@ -30,7 +30,7 @@ from topomark.spec.world import World
 from topomark.spec.worldfile import world_to_json
 
 from .explore import TRACE_FORMAT
-from .lighthouse import LighthouseExplorer
+from .explorers.algorithm31 import LighthouseExplorer
 from .mapcheck import MapVerdict, check_map
 from .policies import Policies
 from .peer import Peer

@@ -1,6 +1,6 @@
 """Seeded faults: Algorithm 3.1 explorers with one mistake each that a real implementer could make (§3.3–3.4).
 
-Each is a :class:`~topomark.reference.lighthouse.LighthouseExplorer` subclass
+Each is a :class:`~topomark.reference.explorers.algorithm31.LighthouseExplorer` subclass
 overriding the smallest method that contains the mistake.  They use only the
 robot interface (motions, perceptions, the marker drop): none of them peeks
 at the world.  ``tests/test_seeded_faults.py`` checks that the checker
@@ -9,7 +9,7 @@ at the world.  ``tests/test_seeded_faults.py`` checks that the checker
 
 from __future__ import annotations
 
-from topomark.reference.lighthouse import V0, LighthouseExplorer
+from topomark.reference.explorers.algorithm31 import V0, LighthouseExplorer
 
 __all__ = ["FAULTS"]
 

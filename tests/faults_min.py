@@ -1,6 +1,6 @@
 """A minimal faulty explorer shared by CLI tests (the full seeded-fault set lives in faults.py)."""
 
-from topomark.reference.lighthouse import LighthouseExplorer
+from topomark.reference.explorers.algorithm31 import LighthouseExplorer
 
 
 class KeepsLoopDartInU(LighthouseExplorer):

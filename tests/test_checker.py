@@ -13,7 +13,7 @@ from families import family_worlds
 from topomark.reference import algorithms as explore_mod
 from topomark.reference import generators as g
 from topomark.reference.explore import explore
-from topomark.reference.lighthouse import LighthouseExplorer
+from topomark.reference.explorers.algorithm31 import LighthouseExplorer
 from topomark.spec.invariants import correspondence, explored_subgraph, lighthouse_anchor
 from topomark.spec.marker import VertexMarker
 from topomark.spec.world import Start, World

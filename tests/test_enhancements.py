@@ -12,7 +12,8 @@ from families import family_worlds
 from topomark.reference import generators as g
 from topomark.reference.algorithms import ALGORITHMS
 from topomark.reference.cli import main
-from topomark.reference.enhancements import ENHANCEMENTS, Enhancement, EnhancedExplorer
+from topomark.reference.explorers.compositions import ENHANCEMENTS
+from topomark.reference.explorers.enhanced import Enhancement, EnhancedExplorer
 from topomark.reference.explore import dump_trace, explore
 from topomark.reference.policies import EDGE_POLICIES, HYPOTHESIS_POLICIES, PATH_POLICIES, Policies
 from topomark.spec.world import Start, World

@@ -143,7 +143,7 @@ def test_faults_use_only_the_robot_interface():
     tree = ast.parse((Path(__file__).parent / "faults.py").read_text())
     mods = {n.module for n in ast.walk(tree) if isinstance(n, ast.ImportFrom)}
     mods |= {a.name for n in ast.walk(tree) if isinstance(n, ast.Import) for a in n.names}
-    assert mods <= {"__future__", "topomark.reference.lighthouse"}, mods
+    assert mods <= {"__future__", "topomark.reference.explorers.algorithm31"}, mods
 
 
 if __name__ == "__main__":  # re-run the one-off witness search (minutes): python tests/test_seeded_faults.py

@@ -1,8 +1,11 @@
 """The wall between explorer and truth is structural (issue: the reference explorer).
 
-Explorer modules may import only the spec's signature, map-state and error
-modules and their sibling robot/policy modules; never the world, the
-simulator, the checker or anything that can reach the truth.
+Every module in ``reference/explorers/`` (found by listing the folder, so a
+new explorer is covered without editing this file) and the two interface
+modules it is handed (the robot and the policies) may import only the spec's
+signature, map-state, kit and error modules, each other, and the robot and
+policy modules; never the world, the simulator, the checker or anything that
+can reach the truth.
 """
 
 from __future__ import annotations
@@ -17,17 +20,15 @@ from topomark.reference.robot import Robot
 from topomark.reference.simulator import Simulator
 
 REFERENCE = Path(__file__).resolve().parents[1] / "reference"
-EXPLORER_MODULES = ["lighthouse.py", "policies.py", "robot.py", "enhancements.py"] + sorted(
-    f"explorers/{p.name}" for p in (REFERENCE / "explorers").glob("*.py"))
+EXPLORERS = REFERENCE / "explorers"
+INTERFACE_MODULES = ["robot.py", "policies.py"]  # what explorers are handed: the robot, the open choices
+EXPLORER_MODULES = INTERFACE_MODULES + sorted(f"explorers/{p.name}" for p in EXPLORERS.glob("*.py"))
+SIBLINGS = {f".{p.stem}" for p in EXPLORERS.glob("*.py") if p.stem != "__init__"}  # any module of the folder
 ALLOWED = {
     "__future__", "dataclasses", "typing", "collections",
     "topomark.spec.signature", "topomark.spec.mapstate", "topomark.spec.errors", "topomark.spec.kit",
-    ".policies", ".robot", ".lighthouse", ".explorers.lighthouses",
-    ".explorers.algorithm31", ".explorers.enhanced", ".explorers.compositions",  # the re-export modules
-    # within reference/explorers/: the siblings, and the robot and policies one level up
-    "..policies", "..robot", ".lighthouses", ".algorithm31", ".execution_trie", ".records", ".enhanced",
-    ".overlap", ".tracing", ".expansion",
-}
+    ".policies", "..policies", "..robot",
+} | SIBLINGS
 
 
 def imports(path: Path) -> set[str]:
