@@ -47,7 +47,8 @@ def bench_command(args) -> int:
     started = time.monotonic()
     runs = plan(args.experiment, args.graphs, args.sizes, args.heavy_graphs, args.heavy_max_size)
     if not runs:
-        raise InvalidInput(f"no runs planned for {args.experiment} with sizes {args.sizes}")
+        raise InvalidInput(f"no runs planned for {args.experiment} with --sizes {' '.join(map(str, args.sizes))} "
+                           f"(see topomark bench --help for each experiment's sizes)")
     out = check_output_dir(args.out, create=not args.report_only)
     result = {"planned": len(runs), "ran": 0, "skipped": len(runs), "failures": 0}
     if not args.report_only:

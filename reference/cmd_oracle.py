@@ -22,6 +22,7 @@ from .drive import drive
 from .explore import dump_trace
 from .external import Limits, run_external
 from .mapcheck import check_map
+from .outputs import guarded
 from .replay import load_trace, replay
 from .worldarg import resolve_world
 
@@ -150,7 +151,7 @@ def run_external_command(args) -> int:
     command = _command(args)
     result = run_external(world, command, _make_limits(args))
     if args.map and result.map is not None:
-        _write(args.map, lambda: save_world(result.map, args.map))
+        guarded(args.map, lambda: save_world(result.map, args.map))
     data = {"world": args.world, "command": command, **result.to_json()}
     text = (f"{'PASS' if result.passed else 'FAIL'} [{result.reason}] {result.message}\n"
             f"cost {result.cost} traversals (n={world.n}, m={world.m}), {result.snapshots} snapshots checked, "
@@ -184,9 +185,9 @@ def drive_command(args) -> int:
     world = load_world(args.check) if args.check else None
     result = drive(command, policies, world, limits.max_traversals, limits.wall, limits.message)
     if args.trace:
-        _write(args.trace, lambda: Path(args.trace).write_text(dump_trace(result.trace), encoding="utf-8"))
+        guarded(args.trace, lambda: Path(args.trace).write_text(dump_trace(result.trace), encoding="utf-8"))
     if args.map and result.map is not None:
-        _write(args.map, lambda: save_world(result.map, args.map))
+        guarded(args.map, lambda: save_world(result.map, args.map))
     data = {"command": command, **result.to_json()}
     text = f"{'PASS' if result.passed else 'FAIL'} [{result.reason}] {result.message}\ncost {result.cost} traversals"
     if not result.passed and result.stderr:
@@ -195,21 +196,13 @@ def drive_command(args) -> int:
     return 0 if result.passed else 1
 
 
-def _write(path: str, write):
-    """Write an output file (returns what ``write`` returns); an unwritable path is bad input (exit 2)."""
-    try:
-        return write()
-    except OSError as exc:
-        raise InvalidInput(f"{path}: cannot write ({exc.strerror or exc})") from None
-
-
 def _suite_summary(manifest: dict) -> dict:
     return {"format": manifest["format"], "version": manifest["version"], "cases": len(manifest["cases"]),
             "policies": list(manifest["policies"])}
 
 
 def conformance_export(args) -> int:
-    manifest = _write(args.dir, lambda: conformance.export(args.dir))
+    manifest = guarded(args.dir, lambda: conformance.export(args.dir))
     info = _suite_summary(manifest)
     emit(args, {"dir": args.dir, **info}, f"wrote {args.dir}: {info['format']} version {info['version']}, "
                                           f"{info['cases']} cases x {len(info['policies'])} policies (linted)")
