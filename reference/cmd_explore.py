@@ -11,6 +11,8 @@ from topomark.spec.errors import InvalidInput
 from topomark.spec.worldfile import dumps_world
 
 from .explore import ALGORITHMS, explore, prepare_world
+from .explorers.lighthouses import LIGHTHOUSES, lighthouse
+from .registry import algorithm_spec
 from .generators import DEFAULT_WORLD
 from .outputs import check_output, write_output
 from .policies import EDGE_POLICIES, HYPOTHESIS_POLICIES, PATH_POLICIES, Policies
@@ -27,7 +29,10 @@ def register(sub) -> None:
                     "with 2 cells removed) and verify the map. Exit 0 when the map is verified isomorphic, 1 on an "
                     "invariant violation, 2 on bad input.")
     p.add_argument("world", nargs="?", metavar="WORLD_OR_GENERATOR")
-    p.add_argument("--algorithm", default="basic", help=f"one of: {', '.join(ALGORITHMS)} (default basic)")
+    p.add_argument("--algorithm", default="basic", help=f"one of: {', '.join(ALGORITHMS)} (default basic; "
+                                                          "topomark algorithms lists them)")
+    p.add_argument("--lighthouse", default="directional-vertex",
+                   help=f"how v0 is marked: {', '.join(LIGHTHOUSES)} (default directional-vertex, Algorithm 3.1's)")
     p.add_argument("--policy", action="append", default=[], metavar="KIND=NAME",
                    help=f"edge={'|'.join(EDGE_POLICIES)}, hypothesis={'|'.join(HYPOTHESIS_POLICIES)}, "
                         f"path={'|'.join(PATH_POLICIES)}; a bare NAME sets the edge policy (repeatable)")
@@ -102,6 +107,8 @@ def _table(o, started: float) -> str:
         ("  travel to v_k", o.by_purpose.get("travel", 0)), ("  new edges", o.by_purpose.get("new", 0)),
         ("  validation", o.by_purpose.get("validation", 0)), ("  retrace", o.by_purpose.get("retrace", 0)),
         ("  expansion (Chapter 4 signatures)", o.by_purpose.get("expansion", 0)),
+        ("marker operations (not cost, §3.1.2)",
+         ", ".join(f"{op.replace('_', ' ')}: {n}" for op, n in o.marker_operations.items()) or "none"),
         ("iterations (non-loop + loop)", f"{o.iterations} ({o.nonloop_iterations} + {o.loop_iterations})"),
         ("hypotheses (rejected / confirmed)", f"{o.hypotheses} ({o.hypotheses_rejected} / {o.hypotheses_confirmed})"),
         ("checks passed", o.checks), ("wall time", f"{time.monotonic() - started:.2f} s"),
@@ -126,14 +133,15 @@ def explore_command(args) -> int:
         world, label = DEFAULT_WORLD(), "built-in default world (5x5 lattice, 2 cells removed, seed 1)"
     else:
         world, label = resolve_world(args.world, args.seed), args.world
-    prepare_world(world)  # a world this algorithm cannot take is refused before the trace file is started
+    light = lighthouse(args.lighthouse)
+    prepare_world(world, light, args.algorithm)  # refused before the trace file is started
     started = time.monotonic()
     ring = RingSink(TAIL + 1)
     with contextlib.ExitStack() as stack:
         sink = TeeSink(stack.enter_context(FileSink(args.trace)), ring) if args.trace else ring
         outcome = explore(world, args.algorithm, policies, check=not args.no_check, sink=sink,
                           progress=_Progress(not (args.quiet or args.json)), check_mode=args.check_mode,
-                          keep_hypotheses=False)
+                          keep_hypotheses=False, lighthouse=light)
     if args.map and outcome.violation is None and outcome.explorer.S.complete():
         write_output(args.map, dumps_world(outcome.explorer.S.to_world()))
     last = ring.records[:-1]  # the records before the end record
@@ -145,8 +153,9 @@ def explore_command(args) -> int:
     if args.json:
         print(json.dumps(data, indent=1, sort_keys=True))
     else:
-        print(f"explored {label} with Algorithm 3.1 ({args.algorithm}; policies "
-              + ", ".join(f"{k}={v}" for k, v in policies.to_json().items()) + ")")
+        print(f"explored {label} with {algorithm_spec(args.algorithm).thesis} ({args.algorithm}; "
+              f"lighthouse {light.name}; policies " + ", ".join(f"{k}={v}" for k, v in policies.to_json().items())
+              + ")")
         print(_table(outcome, started))
         if outcome.violation is not None:
             print(f"VIOLATION: {outcome.violation}")
@@ -155,7 +164,7 @@ def explore_command(args) -> int:
         elif args.no_check:
             print("not checked (--no-check): the map was not verified")
         else:
-            print("verified: the map is extended-isomorphic to the world (marker included); "
+            print("verified: the map is extended-isomorphic to the world (markers included); "
                   "I-1, I-2, t, Lemma 1 held after every iteration")
     if outcome.violation is not None:
         if args.json:

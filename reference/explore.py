@@ -1,12 +1,17 @@
 """Running a checked exploration: world → simulator → explorer (+ checker, trace, cost).
 
-:func:`explore` wires the pieces together for Algorithm 3.1 (``basic``):
+:func:`explore` wires the pieces together for a registered algorithm
+(:mod:`~topomark.reference.registry`) and a lighthouse
+(:mod:`~topomark.reference.explorers.lighthouses`):
 
-1. validate the world for the algorithm (§3.3: one directional immovable
-   vertex marker, dropped by the robot at v0 pointing at the exit it faces);
-2. build the simulator, hand the explorer only its robot;
+1. validate the world for the lighthouse (§3.3: the robot drops its kit at v0,
+   facing the exit it starts facing; a world file may carry exactly those
+   markers or none);
+2. build the simulator with the lighthouse's kit, hand the explorer only its
+   robot, and drive it by the explorer contract (``start``, then ``step``
+   until ``done``);
 3. after every iteration run the :class:`~topomark.reference.checker.Checker`
-   (unless ``check=False``) and hand the trace records to a sink
+   with the checks the algorithm's registry entry names (unless ``check=False``) and hand the trace records to a sink
    (:mod:`~topomark.reference.tracesink`: kept in a list, streamed to a file,
    or only the last few kept) as they are made;
 4. return an :class:`Outcome` with the map, the cost split by purpose and the
@@ -22,13 +27,16 @@ from dataclasses import dataclass, field
 from typing import Any, Callable
 
 from topomark.spec.errors import CheckFailure, InvalidInput
-from topomark.spec.marker import VertexMarker
+from topomark.spec.marker import EdgeMarker, VertexMarker
+from topomark.spec.markerlayer import MarkerLayer, apply_op
 from topomark.spec.world import World
 from topomark.spec.worldfile import marker_to_json
 
 from .bounds import upper_bound
 from .checker import Checker
+from .explorers.lighthouses import LIGHTHOUSES, Lighthouse, lighthouse as lighthouse_named
 from .algorithms import ALGORITHMS
+from .registry import AlgorithmSpec, algorithm_spec
 from .policies import Policies
 from .simulator import Simulator
 from .tracesink import ListSink, TraceSink, trace_line
@@ -36,6 +44,7 @@ from .tracesink import ListSink, TraceSink, trace_line
 __all__ = ["ALGORITHMS", "Outcome", "explore", "prepare_world", "dump_trace", "TRACE_FORMAT"]
 
 TRACE_FORMAT = "topomark/trace@1"
+TRACE_FORMAT_2 = "topomark/trace@2"
 
 
 @dataclass
@@ -53,6 +62,8 @@ class Outcome:
     checks: int
     by_purpose: dict[str, int]
     upper_bound: int
+    lighthouse: str = "directional-vertex"
+    marker_operations: dict[str, int] = field(default_factory=dict)
     explorer: Any = None
     trace: list[dict] = field(default_factory=list)
     violation: Any = None
@@ -60,38 +71,68 @@ class Outcome:
     def summary(self) -> dict[str, Any]:
         out = {k: getattr(self, k) for k in (
             "n", "m", "cost", "verified", "iterations", "loop_iterations", "nonloop_iterations", "hypotheses",
-            "hypotheses_rejected", "hypotheses_confirmed", "checks", "by_purpose", "upper_bound")}
+            "hypotheses_rejected", "hypotheses_confirmed", "checks", "by_purpose", "upper_bound", "lighthouse",
+            "marker_operations")}
         out["cost_per_m"] = round(self.cost / self.m, 3)
         if self.violation is not None:
             out["violation"] = self.violation.to_json()
         return out
 
 
-def prepare_world(world: World) -> tuple[World, tuple[str, int]]:
-    """The world without markers and the start state, checked against §3.3's marker class.
+def prepare_world(world: World, lighthouse: Lighthouse = LIGHTHOUSES["directional-vertex"],
+                  algorithm: str = "basic") -> tuple[World, tuple[str, int]]:
+    """The world without markers and the start state, checked against the lighthouse (§3.3, §6.1, §6.2).
 
-    A directional vertex marker already in the world at v0 must point at the
-    faced exit; any other marker is an error for this algorithm.
+    A world file may already carry the markers the robot would drop at the
+    start (the lighthouse's, where the robot drops them); any other marker,
+    or a part of them, is bad input for this algorithm.
     """
     state = world.start_state()
     v0, facing = state
-    for marker in world.markers:
-        if not isinstance(marker, VertexMarker) or not marker.directional or marker.at != v0:
-            raise InvalidInput(
-                f"the basic algorithm (one directional vertex marker dropped at the start) cannot use the marker "
-                f"{json.dumps(marker_to_json(marker))} in the world file: only a directional vertex marker at the "
-                f"start vertex {v0!r} is allowed")
-        if marker.count != 1 or world.index(v0, marker.points_to) != facing:
-            raise InvalidInput(
-                f"the directional marker at {v0!r} points to {marker.points_to!r}, but the robot starts facing "
-                f"{world.neighbour(v0, facing)!r}: the robot drops its marker pointing at the exit it faces")
-    return World(world.rotation, (), world.start), state
+    bare = World(world.rotation, (), world.start)
+    if bare.degree(v0) < lighthouse.min_degree:
+        raise InvalidInput(f"the {lighthouse.name} lighthouse needs a start vertex of degree >= "
+                           f"{lighthouse.min_degree}; the start vertex {v0!r} has degree {bare.degree(v0)}")
+    if world.markers:
+        layer = MarkerLayer(bare)
+        for op in lighthouse.ops:
+            apply_op(layer, state, op)
+        expected = {_place(m): m for m in layer.markers()}
+        for marker in world.markers:
+            _expect_marker(marker, expected.get(_place(marker)), world, lighthouse, algorithm, v0, facing)
+        if len(world.markers) != len(expected):
+            raise InvalidInput(f"the world file carries {len(world.markers)} of the {len(expected)} markers the "
+                               f"{lighthouse.name} lighthouse drops at the start: give all of them or none")
+    return bare, state
 
 
-def explore(world: World, algorithm: str = "basic", policies: Policies | None = None, check: bool = True,
-            record: bool = True, progress: Callable[[int, int, int], None] | None = None,
-            check_mode: str = "incremental", sink: TraceSink | None = None,
-            keep_hypotheses: bool = True) -> Outcome:
+def _place(marker) -> Any:
+    return ("vertex", marker.at) if isinstance(marker, VertexMarker) else ("edge", frozenset(marker.between))
+
+
+def _expect_marker(marker, want, world: World, lighthouse: Lighthouse, algorithm: str, v0: str, facing: int) -> None:
+    """A world file's marker must be one the lighthouse drops, exactly as it drops it."""
+    text = json.dumps(marker_to_json(marker))
+    if want is None or marker.directional != want.directional:
+        raise InvalidInput(
+            f"the {algorithm} algorithm with the {lighthouse.name} lighthouse ({lighthouse.kit.describe()} dropped "
+            f"at the start) cannot use the marker {text} in the world file: only the markers the robot drops at the "
+            f"start vertex {v0!r} are allowed")
+    same_edge = isinstance(marker, EdgeMarker) and (marker.count, marker.head) == (want.count, want.head)
+    if marker == want or same_edge:
+        return
+    if isinstance(marker, VertexMarker) and marker.directional:
+        raise InvalidInput(
+            f"the directional marker at {v0!r} points to {marker.points_to!r}, but the robot starts facing "
+            f"{world.neighbour(v0, facing)!r}: the robot drops its marker pointing at the exit it faces")
+    raise InvalidInput(f"the world file's marker {text} is not the one the {lighthouse.name} lighthouse drops "
+                       f"there: {json.dumps(marker_to_json(want))}")
+
+
+def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: Policies | None = None,
+            check: bool = True, record: bool = True, progress: Callable[[int, int, int], None] | None = None,
+            check_mode: str = "incremental", sink: TraceSink | None = None, keep_hypotheses: bool = True,
+            lighthouse: "str | Lighthouse" = "directional-vertex") -> Outcome:
     """Explore ``world`` and return the outcome; a violated check ends the run with ``outcome.violation`` set.
 
     The trace records go to ``sink`` as they are made; without one, ``record=True`` keeps them all in
@@ -100,10 +141,10 @@ def explore(world: World, algorithm: str = "basic", policies: Policies | None = 
     checked and counted, so memory stays proportional to the world.  ``progress(explored_edges, m, cost)``
     is called after every iteration.
     """
-    if algorithm not in ALGORITHMS:
-        raise InvalidInput(f"unknown algorithm {algorithm!r} (choose from {', '.join(ALGORITHMS)})")
+    spec = algorithm if isinstance(algorithm, AlgorithmSpec) else algorithm_spec(algorithm)
+    light = lighthouse if isinstance(lighthouse, Lighthouse) else lighthouse_named(lighthouse)
     policies = policies or Policies()
-    bare, state = prepare_world(world)
+    bare, state = prepare_world(world, light, spec.name)
     trace: list[dict] = []
     if sink is None and record:
         sink = ListSink()
@@ -111,18 +152,21 @@ def explore(world: World, algorithm: str = "basic", policies: Policies | None = 
     emit = sink.emit if sink is not None else None
     tally = _Tally()
     if emit:
-        emit({"event": "header", "format": TRACE_FORMAT, "algorithm": algorithm,
-              "policies": policies.to_json(), "n": world.n, "m": world.m})
+        header = {"event": "header", "format": TRACE_FORMAT, "algorithm": spec.name,
+                  "policies": policies.to_json(), "n": world.n, "m": world.m}
+        if light.name != "directional-vertex":
+            header.update(format=TRACE_FORMAT_2, lighthouse=light.name, kit=light.kit.to_json())
+        emit(header)
 
     def on_move(motion, purpose, sig, true_state):
         if emit:
             emit({"event": "move", "step": sim.cost, "motion": motion, "perception": str(sig),
                   "purpose": purpose})
 
-    sim = Simulator(bare, state, {"directional-vertex": 1}, listener=on_move)
+    sim = Simulator(bare, state, light.kit, listener=on_move)
     if check_mode not in Checker.MODES:
         raise InvalidInput(f"unknown check mode {check_mode!r} (choose from {', '.join(Checker.MODES)})")
-    checker = Checker(sim, check_mode) if check else None
+    checker = Checker(sim, check_mode, spec.checks) if check else None
 
     def observer(explorer, it):
         if emit:
@@ -135,16 +179,16 @@ def explore(world: World, algorithm: str = "basic", policies: Policies | None = 
         if progress is not None:
             progress(explorer.S.explored_edges(), world.m, sim.cost)
 
-    explorer = ALGORITHMS[algorithm](sim.robot(), policies, observer)
+    explorer = spec.factory(sim.robot(), policies, observer, light)
     violation = None
     try:
         explorer.start()
         if emit:
-            emit({"event": "drop", "direction": 0, "signature": str(sim._sense())})
+            _emit_drops(emit, sim, light)
         if checker is not None:
             checker.after_start(explorer)
-        while explorer.S.unexplored:
-            explorer.iterate()
+        while not explorer.done():
+            explorer.step()
         if checker is not None:
             checker.at_end(explorer)
     except CheckFailure as exc:
@@ -154,6 +198,19 @@ def explore(world: World, algorithm: str = "basic", policies: Policies | None = 
         emit({"event": "end", "cost": sim.cost, "verified": outcome.verified,
               "violation": violation.to_json() if violation else None})
     return outcome
+
+
+def _emit_drops(emit, sim: Simulator, light: Lighthouse) -> None:
+    """The marker operations of the start, from the simulator's log of what the robot did.
+
+    trace@1 can say only Algorithm 3.1's single vertex drop; any other lighthouse's operations are
+    written as ``op`` records of trace@2 (the header says which).
+    """
+    for event in sim.events:
+        if light.name == "directional-vertex":
+            emit({"event": "drop", "direction": event.get("direction"), "signature": event["signature"]})
+        else:
+            emit({"event": "op", **event})
 
 
 class _Tally:
@@ -179,7 +236,8 @@ def _outcome(world: World, sim: Simulator, explorer, checker: Checker | None, vi
         iterations=tally.iterations, loop_iterations=tally.loop, nonloop_iterations=tally.nonloop,
         hypotheses=tally.hypotheses, hypotheses_rejected=tally.rejected, hypotheses_confirmed=tally.confirmed,
         checks=checker.passed if checker else 0, by_purpose=dict(sorted(sim.by_purpose.items())),
-        upper_bound=upper_bound(world.n, world.m), explorer=explorer, trace=trace, violation=violation)
+        upper_bound=upper_bound(world.n, world.m), lighthouse=explorer.lighthouse.name,
+        marker_operations=dict(sorted(sim.operations.items())), explorer=explorer, trace=trace, violation=violation)
 
 
 def dump_trace(trace: list[dict]) -> str:

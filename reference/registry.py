@@ -38,6 +38,7 @@ from topomark.spec.kit import Kit
 
 from . import algorithms
 from .bounds import upper_bound
+from .explorers.lighthouses import LIGHTHOUSES
 from .explorers.compositions import ENHANCEMENTS
 
 __all__ = ["AlgorithmSpec", "REGISTRY", "algorithm_spec", "CHECKS"]
@@ -48,14 +49,16 @@ CHECKS: dict[str, str] = {
     "I-2": "U holds exactly the unexplored edges at known vertices, with their exit indices (§3.4, I-2)",
     "bound-function": "t = |E_G| − |E_S| decreases by one per iteration (§3.4)",
     "lemma-1": "each hypothesis's (M, P^E) is unique (§3.4, Lemma 1)",
-    "marker": "the lighthouse never moves and no marker outside the kit is dropped",
+    "marker": "no marker is dropped, moved or picked up after the lighthouse is established (the kit itself is "
+              "enforced by the simulator)",
     "iterations": "n − 1 non-loop and m − n + 1 loop iterations (§3.1.3)",
     "isomorphism": "the final map is extended-isomorphic to the world, markers included (§3.1.3)",
 }
 """Every check the checker knows, by name, with the condition it states."""
 
 _ALGORITHM_3_1_CHECKS = ("pose", "I-1", "I-2", "bound-function", "lemma-1", "marker", "iterations", "isomorphism")
-_POLICY_OPTIONS = ("policy edge=nearest|fifo|lifo", "policy hypothesis=fifo|lifo|shortest", "policy path=shortest|dfs")
+_POLICY_OPTIONS = ("policy edge=nearest|fifo|lifo", "policy hypothesis=fifo|lifo|shortest", "policy path=shortest|dfs",
+                   "lighthouse " + "|".join(LIGHTHOUSES))
 
 
 @dataclass(frozen=True)
@@ -82,12 +85,15 @@ class AlgorithmSpec:
         return None if self.bound_fn is None else self.bound_fn(n, m)
 
     def to_json(self) -> dict[str, Any]:
+        """The listing of ``topomark algorithms --json``; ``kit`` is the default lighthouse's, ``lighthouses`` the
+        kits the algorithm runs with."""
         return {"name": self.name, "thesis": self.thesis, "kit": self.kit.to_json(), "bound": self.bound,
                 "markers": self.markers, "deterministic": self.deterministic, "options": list(self.options),
-                "checks": list(self.checks)}
+                "checks": list(self.checks),
+                "lighthouses": {h.name: {"thesis": h.thesis, "kit": h.kit.to_json()} for h in LIGHTHOUSES.values()}}
 
 
-_LIGHTHOUSE = Kit(vertex=1, directional=True)
+_LIGHTHOUSE = LIGHTHOUSES["directional-vertex"].kit
 _BOUND_3 = "(3.1)+(3.2) = O(m²n), §3.5.2"
 
 

@@ -35,7 +35,8 @@ class Simulator:
     ``listener`` (optional) is called with ``(motion, purpose, signature,
     true_state)`` after every traversal.  Edge traversals are the cost
     (§3.1.2); marker operations are counted apart in :attr:`operations` and
-    logged, with the step they followed, in :attr:`events`.
+    logged, with the step they followed and the signature sensed just after,
+    in :attr:`events`.
     """
 
     def __init__(self, world: World, state: State, kit: Kit | dict | None = None, listener=None):
@@ -97,7 +98,7 @@ class Simulator:
                                          reason))
         self.held[op.kind] += op.count if op.pick_up else -op.count
         self.operations["pick_up" if op.pick_up else "drop"] += 1
-        self.events.append({"step": self.cost, **op.to_json()})
+        self.events.append({"step": self.cost, **op.to_json(), "signature": str(sense(self.layer, self.state))})
         if op.kind == "vertex" and not op.pick_up:
             v, entry = self.state
             head = None if op.direction is None else self.layer.neighbour(v, (entry + op.direction) % self.layer.degree(v))

@@ -16,7 +16,11 @@ from topomark.spec.errors import CheckFailure
 from topomark.spec.isomorphism import find_isomorphism
 from topomark.spec.kit import Kit, MarkerOp
 from topomark.spec.signature import signature_at
+from topomark.spec.marker import EdgeMarker, VertexMarker
 from topomark.spec.world import World
+from topomark.spec.worldfile import dumps_world, load_world
+from topomark.reference.cli import main
+from topomark.reference.explore import explore
 
 WORLDS = {
     "lattice-hole": lambda: generate("lattice-hole", rows=4, cols=5, seed=3),
@@ -44,6 +48,44 @@ def test_every_lighthouse_maps_every_world_with_every_algorithm(world, name, alg
     result = find_isomorphism(S.to_world(), sim.world)
     assert result.isomorphic, result.mismatch
     assert sum(m.count for m in sim.world.markers) == sum(op.count for op in LIGHTHOUSES[name].ops)
+
+
+@pytest.mark.parametrize("world", sorted(WORLDS))
+@pytest.mark.parametrize("name", sorted(LIGHTHOUSES))
+@pytest.mark.parametrize("algorithm", list(ALGORITHMS))
+def test_every_pair_is_verified_by_the_checker(world, name, algorithm):
+    """Issue 10: every lighthouse with every Chapter 3–4 algorithm, every check after every iteration."""
+    w = WORLDS[world]()
+    outcome = explore(World(w.rotation, (), w.start), algorithm, lighthouse=name, record=False)
+    assert outcome.verified, outcome.violation
+    assert outcome.marker_operations == {"drop": len(LIGHTHOUSES[name].ops)}
+
+
+def test_the_map_file_shows_the_markers_where_the_robot_dropped_them(tmp_path, capsys):
+    w = generate("lattice-hole", rows=4, cols=4, seed=5)
+    (tmp_path / "w.json").write_text(dumps_world(w))
+    code = main(["explore", str(tmp_path / "w.json"), "--lighthouse", "vertex-and-edge", "--map",
+                 str(tmp_path / "m.json"), "--quiet"])
+    assert code == 0, capsys.readouterr().err
+    drawn = load_world(tmp_path / "m.json")
+    assert sorted(type(m).__name__ for m in drawn.markers) == ["EdgeMarker", "VertexMarker"]
+    v0, facing = w.start_state()
+    faced = w.neighbour(v0, facing)
+    truth = World(w.rotation, [VertexMarker(v0), EdgeMarker((v0, faced))], w.start)
+    assert find_isomorphism(drawn, truth).isomorphic
+    assert not find_isomorphism(drawn, World(w.rotation, [VertexMarker(v0)], w.start)).isomorphic
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["cycle:n=5", "--lighthouse", "sideways"], "unknown lighthouse 'sideways'"),
+    (["chain:n=3", "--lighthouse", "three-undirected-edge"], "needs a start vertex of degree >= 2"),
+    (["wheel-a", "--lighthouse", "vertex-and-edge"], "carries 1 of the 2 markers"),
+    (["wheel-a", "--lighthouse", "directional-edge"], "cannot use the marker"),
+])
+def test_a_lighthouse_the_world_cannot_take_is_bad_input(argv, message, capsys):
+    assert main(["explore", *argv, "--quiet"]) == 2
+    err = capsys.readouterr().err
+    assert message in err and len(err.splitlines()) == 1
 
 
 def test_the_default_lighthouse_reproduces_algorithm_3_1_move_for_move():

@@ -127,11 +127,24 @@ class LighthouseExplorer:
         """The exit of v0 the robot entered by, if ``sig`` is the lighthouse's (§3.3: place and back-link)."""
         return self._v0_entries.get(sig)
 
+    # -- the explorer contract: start, step, done, models ---------------------------
+    def step(self) -> Iteration:
+        """One step of the algorithm: for Algorithm 3.1, one iteration of lines 5–28."""
+        return self.iterate()
+
+    def done(self) -> bool:
+        """Line 4's loop condition: U is empty (§3.1.3: termination)."""
+        return not self.S.unexplored
+
+    def models(self) -> list[tuple[PartialMap, MapDart]]:
+        """The (map, believed pose) pairs the explorer holds: one, for a deterministic algorithm."""
+        return [(self.S, self.position)]
+
     def explore(self) -> PartialMap:
         """Run to termination (U empty) and return S."""
         self.start()
-        while self.S.unexplored:
-            self.iterate()
+        while not self.done():
+            self.step()
         return self.S
 
     # -- lines 5-28: the template ------------------------------------------------
