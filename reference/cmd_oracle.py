@@ -12,6 +12,8 @@ import sys
 from pathlib import Path
 
 from topomark.spec.errors import InvalidInput
+from topomark.spec.jsontext import parse_json
+from topomark.spec.kit import Kit
 from topomark.spec.worldfile import load_world, save_world
 
 from . import conformance
@@ -20,10 +22,12 @@ from .cliargs import check_count, check_seconds
 from .cmd_explore import parse_policies
 from .drive import drive
 from .explore import dump_trace
+from .explorers.lighthouses import LIGHTHOUSES, lighthouse
 from .external import Limits, run_external
 from .mapcheck import check_map
 from .outputs import guarded
 from .replay import load_trace, replay
+from .wireops import MAX_COUNT
 from .worldarg import resolve_world
 
 __all__ = ["register"]
@@ -45,6 +49,7 @@ def _command(args) -> list[str]:
 
 def _run_options(p) -> None:
     _limits(p)
+    _protocol_options(p)
     p.add_argument("--seed", type=int, help="seed for a random generator")
     p.add_argument("--map", metavar="FILE", help="write the program's map here")
     p.add_argument("--json", action="store_true")
@@ -58,13 +63,40 @@ def _drive_options(p) -> None:
     p.add_argument("--max-traversals", type=int, default=1_000_000, metavar="N")
     p.add_argument("--timeout", type=float, default=600.0, metavar="SECONDS", help="wall-time limit (default 600)")
     p.add_argument("--message-timeout", type=float, default=10.0, metavar="SECONDS")
+    p.add_argument("--lighthouse", default="directional-vertex", metavar="NAME",
+                   help=f"the markers the explorer drops at v0: {', '.join(LIGHTHOUSES)} (default directional-vertex; "
+                        "another one needs a provider speaking topomark/protocol@2)")
     p.add_argument("--json", action="store_true")
 
 
 def _conformance_options(p) -> None:
     _limits(p)
+    _protocol_options(p)
     p.add_argument("-k", "--select", metavar="TEXT", help="only the cases whose name contains TEXT")
     p.add_argument("--json", action="store_true")
+
+
+def _protocol_options(p) -> None:
+    p.add_argument("--protocol", type=int, choices=(1, 2), metavar="1|2",
+                   help="the protocol version spoken to the program (default 1; 2 with --kit)")
+    p.add_argument("--kit", metavar="JSON", help="the program's marker kit, e.g. '{\"undirected-edge\": 3}' "
+                                                  "(implies --protocol 2; default {\"directional-vertex\": 1})")
+
+
+def _protocol_choice(args) -> tuple[int, Kit | None]:
+    """(version, kit) from --protocol and --kit: a kit implies @2 and cannot go with --protocol 1."""
+    if args.kit is None:
+        return args.protocol or 1, None
+    if args.protocol == 1:
+        raise InvalidInput("--kit needs topomark/protocol@2: give --protocol 2 (or leave --protocol out); "
+                           "topomark/protocol@1 knows only the kit {\"directional-vertex\": 1}")
+    kit = Kit.from_json(parse_json(args.kit, "--kit"))
+    if kit.thread is not None:
+        raise InvalidInput("--kit: thread operations are not in topomark/protocol@2 yet (they arrive with §6.3 in a "
+                           "later minor version); give a kit of markers only")
+    if max(kit.vertex, kit.edge) > MAX_COUNT or kit.vertex + kit.edge == 0:
+        raise InvalidInput(f"--kit: give 1..{MAX_COUNT} vertex or edge markers, got {kit.to_json()}")
+    return 2, kit
 
 
 def _no_action() -> int:
@@ -149,7 +181,8 @@ def register(sub) -> None:
 def run_external_command(args) -> int:
     world = resolve_world(args.world, args.seed)
     command = _command(args)
-    result = run_external(world, command, _make_limits(args))
+    version, kit = _protocol_choice(args)
+    result = run_external(world, command, _make_limits(args), version=version, kit=kit)
     if args.map and result.map is not None:
         guarded(args.map, lambda: save_world(result.map, args.map))
     data = {"world": args.world, "command": command, **result.to_json()}
@@ -183,7 +216,11 @@ def drive_command(args) -> int:
     limits = _make_limits(args)
     policies = parse_policies(args.policy)
     world = load_world(args.check) if args.check else None
-    result = drive(command, policies, world, limits.max_traversals, limits.wall, limits.message)
+    light = lighthouse(args.lighthouse)
+    if args.trace and light.name != "directional-vertex":
+        raise InvalidInput(f"--trace: a trace of the {light.name} lighthouse needs topomark/trace@2, which is not "
+                           "written yet: run without --trace, or with the directional-vertex lighthouse")
+    result = drive(command, policies, world, limits.max_traversals, limits.wall, limits.message, light)
     if args.trace:
         guarded(args.trace, lambda: Path(args.trace).write_text(dump_trace(result.trace), encoding="utf-8"))
     if args.map and result.map is not None:
@@ -219,8 +256,9 @@ def conformance_lint(args) -> int:
 def conformance_run(args) -> int:
     command = _command(args)
     limits = _make_limits(args)
+    version, kit = _protocol_choice(args)
     show = None if args.json else (lambda row: print(f"  {row.name}: {row.result.verdict}", file=sys.stderr))
-    rows, wall = conformance.timed_run(args.dir, command, limits, args.select, show)
+    rows, wall = conformance.timed_run(args.dir, command, limits, args.select, show, version, kit)
     passed = sum(r.result.passed for r in rows)
     data = {"dir": args.dir, "command": command, "passed": passed, "total": len(rows),
             "wall_seconds": round(wall, 3), "cases": [r.to_json() for r in rows]}

@@ -26,7 +26,7 @@ reference trace verified by :func:`topomark.reference.replay.replay` with
 the cost the manifest claims, every reference map isomorphic to its world.
 
 :func:`run` plays every world to an external implementation through
-``topomark/protocol@1`` (:func:`topomark.reference.external.run_external`): a
+``topomark/protocol@1`` or ``@2`` with any kit (:func:`topomark.reference.external.run_external`): a
 crash, a hang or garbage is a failure like a wrong map.  Each row reports the
 implementation's cost and its ratio to the reference costs.
 
@@ -47,6 +47,7 @@ from typing import Any, Callable, Sequence
 
 from topomark.spec.errors import CheckFailure, InvalidInput, TopomarkFault
 from topomark.spec.jsontext import parse_json, read_text_file
+from topomark.spec.kit import Kit
 from topomark.spec.world import Start, World
 from topomark.spec.worldfile import FORMAT as WORLD_FORMAT
 from topomark.spec.worldfile import MAX_WORLD_BYTES, dumps_world, load_world, loads_world, schema
@@ -344,8 +345,10 @@ class Row:
 
 
 def run(directory: str | Path, command: Sequence[str], limits: Limits | None = None,
-        select: str | None = None, progress: Callable[[Row], None] | None = None) -> list[Row]:
-    """Run ``command`` on every case (or those whose name contains ``select``)."""
+        select: str | None = None, progress: Callable[[Row], None] | None = None, version: int = 1,
+        kit: Kit | None = None) -> list[Row]:
+    """Run ``command`` on every case (or those whose name contains ``select``), speaking protocol ``version``
+    with ``kit`` (:func:`topomark.reference.external.run_external`)."""
     root = Path(directory)
     manifest = lint(root, replay_traces=False)
     rows = []
@@ -354,7 +357,7 @@ def run(directory: str | Path, command: Sequence[str], limits: Limits | None = N
             continue
         world = load_world(root / case["world"])
         costs = {k: v["cost"] for k, v in case["reference"].items()}
-        row = Row(case["name"], world.n, world.m, run_external(world, command, limits),
+        row = Row(case["name"], world.n, world.m, run_external(world, command, limits, version=version, kit=kit),
                   costs.get("default", min(costs.values())), min(costs.values()))
         rows.append(row)
         if progress is not None:
@@ -381,7 +384,8 @@ def render_table(rows: list[Row], wall: float) -> str:
     return "\n".join(line.rstrip() for line in lines)
 
 
-def timed_run(directory, command, limits=None, select=None, progress=None) -> tuple[list[Row], float]:
+def timed_run(directory, command, limits=None, select=None, progress=None, version: int = 1,
+              kit: Kit | None = None) -> tuple[list[Row], float]:
     started = time.monotonic()
-    rows = run(directory, command, limits, select, progress)
+    rows = run(directory, command, limits, select, progress, version, kit)
     return rows, time.monotonic() - started

@@ -1,14 +1,22 @@
 """``drive``: topomark's Algorithm 3.1 explorer drives an external world (thesis §3.3, §3.6).
 
-The other direction of ``topomark/protocol@1`` (``spec/protocol.md``): the
+The other direction of ``topomark/protocol@1`` and ``@2`` (``spec/protocol.md``): the
 external program is the *world provider* — another simulator, or a bridge to
 a physical robot as in §3.6, where a vertex is a junction recognised by the
 robot's sensors and a motion is "leave by the l-th exit clockwise from the
-one you came in by".  The provider says ``hello`` with the marker class and
+one you came in by".  The provider says ``hello`` with the marker kit and
 the initial signature, then answers every ``move`` and ``drop`` with the
 signature reached.  topomark runs :class:`~topomark.reference.explorers.algorithm31.
 LighthouseExplorer` over a :class:`~topomark.reference.robot.Robot` whose
 three operations are those messages, and ends by sending its ``map``.
+
+The provider's ``hello`` chooses the version: ``@1`` offers ``markers`` and
+allows only the directional-vertex lighthouse; ``@2`` offers a ``kit``, which
+must hold what the chosen lighthouse drops (``lighthouse=``,
+:data:`~topomark.reference.explorers.lighthouses.LIGHTHOUSES`), and drops
+are sent in the ``@2`` form.  A trace (``topomark/trace@1``) is recorded for
+the directional-vertex lighthouse only; with another one
+:attr:`DriveResult.trace` is empty.
 
 No ground truth is available here (the provider *is* the world), so the
 run is judged only if the caller supplies the world (``check=``), by
@@ -24,18 +32,20 @@ from dataclasses import dataclass, field
 from typing import Any, Sequence
 
 from topomark.spec.errors import CheckFailure, InvalidInput, TopomarkFault, Violation
-from topomark.spec.kit import MarkerOp
+from topomark.spec.kit import Kit, MarkerOp
 from topomark.spec.signature import Signature
 from topomark.spec.world import World
 from topomark.spec.worldfile import world_to_json
 
 from .explore import TRACE_FORMAT
 from .explorers.algorithm31 import LighthouseExplorer
+from .explorers.lighthouses import LIGHTHOUSES, Lighthouse
 from .mapcheck import MapVerdict, check_map
 from .policies import Policies
 from .peer import Peer
-from .protocol import MAX_MESSAGE, PROTOCOL, ProtocolError, clip
+from .protocol import MAX_MESSAGE, VERSIONS, Expect, ProtocolError, clip
 from .robot import Robot
+from .wireops import op_to_message
 
 __all__ = ["DriveResult", "drive"]
 
@@ -66,21 +76,47 @@ class DriveResult:
 class _Link:
     """The robot's three operations, as protocol messages to the provider."""
 
-    def __init__(self, peer: Peer, max_traversals: int, trace: list[dict]):
-        self.peer, self.max_traversals, self.trace = peer, max_traversals, trace
+    def __init__(self, peer: Peer, max_traversals: int, trace: list[dict], light: Lighthouse):
+        self.peer, self.max_traversals, self.trace, self.light = peer, max_traversals, trace, light
         self.cost = 0
+        self.version = 1
         self.here: Signature | None = None
 
     def hello(self) -> None:
-        msg = self.peer.receive(("hello",))
-        if msg["protocol"] != PROTOCOL or msg["role"] != "world":
+        msg = self.peer.receive(Expect(("hello",), None))  # any version this topomark speaks
+        self.version = VERSIONS[msg["protocol"]]
+        if msg["role"] != "world":
             raise ProtocolError("protocol", f"hello from a {clip(msg['role'])!r} speaking {clip(msg['protocol'])!r} "
-                                            f"(expected role 'world', {PROTOCOL})")
-        kit = msg["markers"].get("directional-vertex", 0)
+                                            f"(expected role 'world')")
+        if self.version == 1:
+            self._markers(msg["markers"])
+        else:
+            self._kit(msg["kit"])
+        self.here = self._signature(msg["signature"])
+
+    def _markers(self, markers: dict) -> None:
+        """@1: Algorithm 3.1's directional vertex marker, the one lighthouse @1 can drop."""
+        if self.light.name != "directional-vertex":
+            raise ProtocolError("protocol", f"the {self.light.name} lighthouse drops {self.light.kit.describe()}, "
+                                            "which needs a provider speaking topomark/protocol@2; this one speaks @1")
+        kit = markers.get("directional-vertex", 0)
         if not isinstance(kit, int) or isinstance(kit, bool) or kit < 1:
             raise ProtocolError("protocol", f"Algorithm 3.1 needs one directional vertex marker; the provider "
-                                            f"offers {clip(str(msg['markers']))}")
-        self.here = self._signature(msg["signature"])
+                                            f"offers {clip(str(markers))}")
+
+    def _kit(self, obj: dict) -> None:
+        """@2: the provider's kit must hold every marker the lighthouse drops."""
+        try:
+            kit = Kit.from_json(obj)
+        except InvalidInput as exc:
+            raise ProtocolError("garbage", f"hello.kit: {clip(str(exc), 300)}") from None
+        held = {"vertex": 0, "edge": 0}
+        for op in self.light.ops:
+            why = kit.refusal(op.kind, op.direction is not None, op.count, held[op.kind])
+            if why is not None:
+                raise ProtocolError("protocol", f"the {self.light.name} lighthouse ({self.light.kit.describe()}) "
+                                                f"cannot be dropped with the provider's kit: {why}")
+            held[op.kind] += op.count
 
     def _signature(self, text: str) -> Signature:
         try:
@@ -89,7 +125,7 @@ class _Link:
             raise ProtocolError("garbage", f"the provider sent a bad signature: {clip(str(exc), 300)}") from None
 
     def _answer(self) -> Signature:
-        msg = self.peer.receive(("signature", "error"))
+        msg = self.peer.receive(Expect(("signature", "error"), self.version))
         if msg["type"] == "error":
             raise ProtocolError("crash", f"the provider reported an error: {clip(msg['message'], 500)}")
         return self._signature(msg["value"])
@@ -108,26 +144,29 @@ class _Link:
         return self.here
 
     def operate(self, op: MarkerOp) -> None:
-        """A vertex marker drop is the one marker operation of ``topomark/protocol@1``."""
-        if op.kind != "vertex" or op.pick_up or op.count != 1:
+        """@1: a vertex marker drop, its one marker operation; @2: any operation, as ``MarkerOp.to_json`` says."""
+        single = op.kind == "vertex" and not op.pick_up and op.count == 1
+        if self.version == 1 and not single:
             raise TopomarkFault(f"drive speaks topomark/protocol@1, which has no {json.dumps(op.to_json())}")
-        direction = op.direction
-        self.peer.send({"type": "drop", "direction": direction})
+        self.peer.send({"type": "drop", "direction": op.direction} if self.version == 1 else op_to_message(op))
         self.here = self._answer()
-        self.trace.append({"event": "drop", "direction": direction, "signature": str(self.here)})
+        if single:
+            self.trace.append({"event": "drop", "direction": op.direction, "signature": str(self.here)})
 
     def robot(self) -> Robot:
         return Robot(self.move, lambda: self.here, self.operate)
 
 
 def drive(command: Sequence[str], policies: Policies | None = None, world: World | None = None,
-          max_traversals: int = 1_000_000, wall: float = 600.0, message: float = 10.0) -> DriveResult:
-    """Explore the provider's world; ``world`` (optional) is the truth to judge the map against."""
+          max_traversals: int = 1_000_000, wall: float = 600.0, message: float = 10.0,
+          light: Lighthouse = LIGHTHOUSES["directional-vertex"]) -> DriveResult:
+    """Explore the provider's world from the ``light`` lighthouse; ``world`` (optional) is the truth to judge
+    the map against."""
     policies = policies or Policies()
     started = time.monotonic()
     trace: list[dict] = []
     with Peer(command, message, wall) as peer:  # on leaving: the provider and all it started are killed
-        link = _Link(peer, max_traversals, trace)
+        link = _Link(peer, max_traversals, trace, light)
         try:
             result = _explore(link, policies, trace, world)
         except ProtocolError as exc:
@@ -141,6 +180,8 @@ def drive(command: Sequence[str], policies: Policies | None = None, world: World
               "n": n, "m": m}
     result.trace = [header] + trace + [{"event": "end", "cost": link.cost, "verified": result.check is not None
                                         and result.check.isomorphic, "violation": None}]
+    if light.name != "directional-vertex":
+        result.trace = []  # topomark/trace@1 records a vertex drop only
     result.wall, result.stderr = time.monotonic() - started, peer.stderr_tail()
     return result
 
@@ -149,7 +190,7 @@ def _explore(link: _Link, policies: Policies, trace: list[dict], world: World | 
     """Algorithm 3.1 over the link, the map sent, ``bye`` awaited; judged against ``world`` if given."""
     link.hello()
     explorer = LighthouseExplorer(link.robot(), policies,
-                                  lambda ex, it: trace.append({"event": "iteration", **it.to_json()}))
+                                  lambda ex, it: trace.append({"event": "iteration", **it.to_json()}), link.light)
     map_ = explorer.explore().to_world()
     link.peer.send({"type": "map", "world": world_to_json(map_)})
     link.peer.receive(("bye",))
