@@ -115,9 +115,8 @@ def _expect_marker(marker, want, world: World, lighthouse: Lighthouse, algorithm
     text = json.dumps(marker_to_json(marker))
     if want is None or marker.directional != want.directional:
         raise InvalidInput(
-            f"the {algorithm} algorithm with the {lighthouse.name} lighthouse ({lighthouse.kit.describe()} dropped "
-            f"at the start) cannot use the marker {text} in the world file: only the markers the robot drops at the "
-            f"start vertex {v0!r} are allowed")
+            f"the {algorithm} algorithm with the {lighthouse.name} lighthouse cannot use the marker {text} in the "
+            f"world file: only {lighthouse.drops}, dropped by the robot at the start vertex {v0!r}, may be there")
     same_edge = isinstance(marker, EdgeMarker) and (marker.count, marker.head) == (want.count, want.head)
     if marker == want or same_edge:
         return

@@ -116,7 +116,7 @@ def test_the_directional_edge_lighthouse_reads_the_head_at_v0_and_the_tail_at_it
 
 def test_an_undirected_vertex_marker_is_no_lighthouse():
     """§3.2.2: one undirected marker gives no back-link at v0; establishing it is refused, naming why."""
-    fake = Lighthouse("undirected-vertex", "§3.2.2", Kit(vertex=1), (MarkerOp("vertex"),))
+    fake = Lighthouse("undirected-vertex", "§3.2.2", Kit(vertex=1), (MarkerOp("vertex"),), "an undirected marker")
     world = generate("cycle", n=5)
     with pytest.raises(CheckFailure, match="no explicit back-link"):
         _run(world, fake, "basic")

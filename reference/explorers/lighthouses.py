@@ -65,6 +65,7 @@ class Lighthouse:
     thesis: str
     kit: Kit
     ops: tuple[MarkerOp, ...]
+    drops: str  # what the robot drops, in words
     min_degree: int = 1
 
     def establish(self, robot, S: PartialMap, v0: int) -> dict[Signature, int]:
@@ -89,10 +90,13 @@ def _edge(exit: int, count: int = 1, direction: str | None = None) -> MarkerOp:
 
 LIGHTHOUSES: dict[str, Lighthouse] = {h.name: h for h in (
     Lighthouse("directional-vertex", "§3.3, Algorithm 3.1", Kit(vertex=1, directional=True),
-               (MarkerOp("vertex", direction=0),)),
-    Lighthouse("directional-edge", "§6.1, Figure 6.1(b)", Kit(edge=1, directional=True), (_edge(0, direction="H"),)),
-    Lighthouse("vertex-and-edge", "§6.2", Kit(vertex=1, edge=1), (MarkerOp("vertex"), _edge(0))),
-    Lighthouse("three-undirected-edge", "§6.2", Kit(edge=3), (_edge(0), _edge(1, 2)), min_degree=2),
+               (MarkerOp("vertex", direction=0),), "a directional vertex marker pointing at the faced exit"),
+    Lighthouse("directional-edge", "§6.1, Figure 6.1(b)", Kit(edge=1, directional=True), (_edge(0, direction="H"),),
+               "a directional edge marker on the faced edge, its head at v0"),
+    Lighthouse("vertex-and-edge", "§6.2", Kit(vertex=1, edge=1), (MarkerOp("vertex"), _edge(0)),
+               "an undirected vertex marker and an undirected edge marker on the faced edge"),
+    Lighthouse("three-undirected-edge", "§6.2", Kit(edge=3), (_edge(0), _edge(1, 2)),
+               "one undirected edge marker on the faced edge and two on the next exit clockwise", min_degree=2),
 )}
 """The lighthouses by name; ``directional-vertex`` is Algorithm 3.1's own and the default."""
 
