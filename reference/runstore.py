@@ -15,6 +15,9 @@ This module keeps that file sound when runs are killed or started twice:
   on stderr; anything else malformed is bad input (exit 2) naming the file
   and the line.  :func:`rewrite` then writes the repaired rows back
   atomically (a sweep does this under the lock).
+* A file written before a column of :data:`DEFAULTS` existed (``policy``,
+  ``lighthouse``) reads with that column's default value, and a sweep
+  rewrites it with the current columns before appending to it.
 """
 
 from __future__ import annotations
@@ -37,9 +40,9 @@ try:  # POSIX; elsewhere a sweep runs unlocked (rows are still appended whole)
 except ImportError:  # pragma: no cover - not on the platforms topomark supports
     fcntl = None
 
-__all__ = ["CSV_FIELDS", "Runs", "read_runs", "rewrite", "row_key", "locked", "Appender", "write_atomic"]
+__all__ = ["CSV_FIELDS", "DEFAULTS", "Runs", "read_runs", "rewrite", "row_key", "locked", "Appender", "write_atomic"]
 
-CSV_FIELDS = ("experiment", "size", "seed", "algorithm", "policy", "n", "m", "cost", "cost_per_m", "verified",
+CSV_FIELDS = ("experiment", "size", "seed", "algorithm", "policy", "lighthouse", "n", "m", "cost", "cost_per_m", "verified",
               "checked", "travel", "new", "validation", "retrace", "expansion", "hypotheses", "pruned",
               "rejected_without_motion", "overlap_saved", "recorded", "upper_bound", "expression_3_3", "seconds",
               "cpu_seconds", "error")
@@ -49,9 +52,14 @@ NUMBERS = ("n", "m", "cost", "cost_per_m", "travel", "new", "validation", "retra
            "upper_bound", "expression_3_3", "seconds", "cpu_seconds")
 
 
-def row_key(row: dict) -> tuple[str, str, str, str, str]:
-    """(family, size, seed, algorithm, edge policy): what a restarted sweep matches finished runs by."""
-    return (row["experiment"], str(row["size"]), str(row["seed"]), row["algorithm"], row.get("policy") or "nearest")
+DEFAULTS = {"policy": "nearest", "lighthouse": "directional-vertex"}
+"""Columns added after the first runs files were written, and the value a row without them ran with."""
+
+
+def row_key(row: dict) -> tuple[str, str, str, str, str, str]:
+    """(family, size, seed, algorithm, edge policy, lighthouse): what a restarted sweep matches finished runs by."""
+    return (row["experiment"], str(row["size"]), str(row["seed"]), row["algorithm"],
+            row.get("policy") or DEFAULTS["policy"], row.get("lighthouse") or DEFAULTS["lighthouse"])
 
 
 def _note(message: str) -> None:
@@ -130,6 +138,8 @@ def read_runs(path: str | Path, note: Callable[[str], None] | None = _note) -> R
                                "(the file is damaged; delete that line to run it again)")
         else:
             row = dict(zip(header, record))
+            for name, value in DEFAULTS.items():  # an older file: the column is added with what its runs used
+                row[name] = row.get(name) or value
             _check_row(path, line, row)
             ident = (row_key(row), row["checked"])
             if ident in seen:

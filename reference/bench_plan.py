@@ -1,0 +1,212 @@
+"""What a bench sweep runs: the world families, the experiments, and the plan of runs (fixed seeds).
+
+Part of ``topomark bench`` (:mod:`~topomark.reference.bench` documents the
+experiments and the interpretations of the thesis's worlds).  A world of
+(family, size, seed) is built from fixed seeds derived from those three, and
+the robot's start (vertex and facing) is drawn from the same seed, so every
+algorithm, edge policy and lighthouse of a row explores exactly the same
+worlds.  A lighthouse that needs a start vertex of degree >= 2
+(``three-undirected-edge``, §6.2) is not planned on a world whose drawn start
+has degree 1: that world is *skipped* for that lighthouse (never re-drawn, which
+would compare different starts), and the lighthouse report counts the skips.
+"""
+
+from __future__ import annotations
+
+import functools
+import random
+from dataclasses import dataclass
+from typing import Callable, Iterable
+
+from topomark.spec.errors import InvalidInput
+from topomark.spec.world import Start, World
+
+from . import generators as g
+from . import thesis_figures as tf
+from .explorers.lighthouses import LIGHTHOUSES
+
+__all__ = ["FAMILIES", "EXPERIMENTS", "Experiment", "Part", "Run", "plan", "world_for", "is_heavy", "fits",
+           "HEAVY_GRAPHS", "HEAVY_MAX_SIZE", "DEFAULT_LIGHTHOUSE", "LIGHTHOUSE_ALGS", "LIGHTHOUSE_COMPLETE_SIZES"]
+
+DEFAULT_LIGHTHOUSE = "directional-vertex"
+HEAVY_GRAPHS = 5
+HEAVY_MAX_SIZE = 55
+
+GRIDS = {72: (8, 10), 90: (10, 10), 108: (10, 12), 152: (13, 13), 202: (15, 15), 230: (16, 16),
+         260: (17, 17), 324: (19, 19), 360: (20, 20)}
+
+
+@dataclass(frozen=True)
+class Family:
+    name: str
+    sizes: tuple[int, ...]
+    build: Callable[[int, int], World]  # (size, seed) -> world without start
+    figure: str
+    log: bool = True
+    random_graph: bool = True
+    note: str = ""
+
+
+def _seed(family: str, size: int, seed: int) -> int:
+    return (sum(ord(c) * 31 ** k for k, c in enumerate(family)) % 100_003) * 1_000_003 + size * 10_007 + seed
+
+
+def _lattice_hole(size: int, seed: int) -> World:
+    rows, cols = GRIDS[size]
+    return g.lattice_hole(rows, cols, 0.1, "vertices", _seed("lattice-hole", size, seed))
+
+
+def _lattice(size: int, seed: int) -> World:
+    return g.lattice(*GRIDS[size])
+
+
+FAMILIES: dict[str, Family] = {f.name: f for f in (
+    Family("lattice", tf.LATTICE_HOLE_SIZES, _lattice, "Figure 3.10(a)", random_graph=False,
+           note="8x10, 10x10, 10x12, 13x13, 15x15, 16x16, 17x17, 19x19, 20x20 grids (labelled by the "
+                "lattice-hole size they give); the worlds of a size differ only in the start"),
+    Family("complete", tf.COMPLETE_HOLE_SIZES, lambda n, s: g.complete(n), "Figure 3.10(b)", random_graph=False,
+           note="K_n; the worlds of a size differ only in the start"),
+    Family("lattice-hole", tf.LATTICE_HOLE_SIZES, _lattice_hole, "Figure 3.10(c)",
+           note="size s = an 8x10, 10x10, 10x12, 13x13, 15x15, 16x16, 17x17, 19x19 or 20x20 grid with 10% of "
+                "its vertices removed at random (kept connected), so n = s"),
+    Family("complete-hole", tf.COMPLETE_HOLE_SIZES,
+           lambda n, s: g.complete_hole(n, 0.1, _seed("complete-hole", n, s)), "Figure 3.10(d)",
+           note="K_n with 10% of its edges removed at random (kept connected)"),
+    Family("small-world-k2-p10", (20, 40, 60, 80, 100, 150, 200),
+           lambda n, s: g.small_world(n, 2, 0.1, _seed("small-world-k2-p10", n, s)), "Figure 3.11"),
+    Family("small-world-k4-p20", (20, 40, 60, 80, 100, 150, 200),
+           lambda n, s: g.small_world(n, 4, 0.2, _seed("small-world-k4-p20", n, s)), "Figure 3.11"),
+    Family("random-20", (15, 20, 25, 30, 35, 40, 50),
+           lambda n, s: g.random_graph(n, 0.2, _seed("random-20", n, s)), "Figure 3.12"),
+    Family("random-40", (15, 20, 25, 30, 35, 40, 50),
+           lambda n, s: g.random_graph(n, 0.4, _seed("random-40", n, s)), "Figure 3.12"),
+)}
+
+LATTICE_TABLE_ALGS = ("basic", "enh1", "enh2", "enh3", "enh4", "enh5-d1", "enh5-d2", "enh3+5")
+COMPLETE_TABLE_ALGS = ("basic", "enh1", "enh2", "enh3", "enh4", "enh5-d1", "enh5-d2", "enh3+4")
+
+
+@dataclass(frozen=True)
+class Part:
+    family: str
+    algorithms: tuple[str, ...] = ("basic",)
+    sizes: tuple[int, ...] | None = None  # None: the family's sizes
+    policies: tuple[str, ...] = ("nearest",)
+    lighthouses: tuple[str, ...] = (DEFAULT_LIGHTHOUSE,)
+
+
+@dataclass(frozen=True)
+class Experiment:
+    name: str
+    parts: tuple[Part, ...]
+    title: str
+    tables: tuple[str, ...] = ()
+
+
+def _tables_parts(numbers: Iterable[str]) -> tuple[Part, ...]:
+    by_family: dict[str, list[str]] = {}
+    for t in numbers:
+        fam, algs = tf.TABLE_SOURCES[t]
+        lst = by_family.setdefault(fam, ["basic"])
+        lst.extend(a for a in algs if a not in lst)
+    return tuple(Part(f, tuple(a)) for f, a in by_family.items())
+
+
+EXPERIMENTS: dict[str, Experiment] = {}
+for _f in FAMILIES.values():
+    EXPERIMENTS[_f.name] = Experiment(_f.name, (Part(_f.name),), f"{_f.figure}: {_f.name} worlds, basic algorithm")
+EXPERIMENTS["figure-3.10"] = Experiment("figure-3.10", tuple(Part(f) for f in ("lattice", "complete", "lattice-hole",
+                                                                               "complete-hole")),
+                                        "Figure 3.10: homogeneous and hole worlds, basic algorithm")
+EXPERIMENTS["figure-3.11"] = Experiment("figure-3.11", (Part("small-world-k2-p10"), Part("small-world-k4-p20")),
+                                        "Figure 3.11: small-world worlds, basic algorithm")
+EXPERIMENTS["figure-3.12"] = Experiment("figure-3.12", (Part("random-20"), Part("random-40")),
+                                        "Figure 3.12: random worlds, basic algorithm")
+for _t in tf.TABLE_SOURCES:
+    EXPERIMENTS[f"table-{_t}"] = Experiment(f"table-{_t}", _tables_parts([_t]), f"Table {_t}", (_t,))
+EXPERIMENTS["tables"] = Experiment("tables", (Part("lattice-hole", LATTICE_TABLE_ALGS),
+                                              Part("complete-hole", COMPLETE_TABLE_ALGS)),
+                                   "Tables 4.1-4.8: the enhancements of Chapter 4", tuple(tf.TABLE_SOURCES))
+EXPERIMENTS["policies"] = Experiment("policies", (Part("lattice-hole", ("basic", "enh3"), (90, 260),
+                                                       ("nearest", "fifo", "lifo")),),
+                                     "Edge-selection policies side by side (lattice-hole 90 and 260)")
+LIGHTHOUSE_ALGS = ("basic", "enh3")
+LIGHTHOUSE_COMPLETE_SIZES = (24, 40, 55)
+EXPERIMENTS["lighthouses"] = Experiment(
+    "lighthouses", (Part("lattice-hole", LIGHTHOUSE_ALGS, lighthouses=tuple(LIGHTHOUSES)),
+                    Part("complete-hole", LIGHTHOUSE_ALGS, LIGHTHOUSE_COMPLETE_SIZES, lighthouses=tuple(LIGHTHOUSES))),
+    "The lighthouses of §3.3, §6.1 and §6.2 side by side (lattice-hole and complete-hole worlds)")
+EXPERIMENTS["all"] = Experiment("all", EXPERIMENTS["figure-3.10"].parts + EXPERIMENTS["figure-3.11"].parts
+                                + EXPERIMENTS["figure-3.12"].parts + EXPERIMENTS["tables"].parts
+                                + EXPERIMENTS["policies"].parts + EXPERIMENTS["lighthouses"].parts,
+                                "Every experiment", tuple(tf.TABLE_SOURCES))
+
+
+@dataclass(frozen=True, order=True)
+class Run:
+    family: str
+    size: int
+    seed: int
+    algorithm: str
+    policy: str = "nearest"
+    lighthouse: str = DEFAULT_LIGHTHOUSE
+
+    @property
+    def key(self) -> tuple[str, str, str, str, str, str]:
+        return (self.family, str(self.size), str(self.seed), self.algorithm, self.policy, self.lighthouse)
+
+
+def world_for(family: str, size: int, seed: int) -> World:
+    """The world of (family, size, seed), with a start drawn from the seed."""
+    fam = FAMILIES[family]
+    world = fam.build(size, seed)
+    rng = random.Random(_seed(family + "/start", size, seed))
+    v = rng.choice(sorted(world.vertices, key=g.natural_key))
+    facing = rng.choice(list(world.rotation[v]))
+    return World(world.rotation, (), Start(v, facing))
+
+
+@functools.lru_cache(maxsize=4096)
+def _start_degree(family: str, size: int, seed: int) -> int:
+    world = world_for(family, size, seed)
+    return world.degree(world.start_state()[0])
+
+
+def fits(family: str, size: int, seed: int, lighthouse: str) -> bool:
+    """Whether the lighthouse can be dropped at the start drawn for this world (its start-degree condition)."""
+    need = LIGHTHOUSES[lighthouse].min_degree
+    return need <= 1 or _start_degree(family, size, seed) >= need
+
+
+def plan(experiment: str, graphs: int = 30, sizes: list[int] | None = None,
+         heavy_graphs: int = HEAVY_GRAPHS, heavy_max_size: int = HEAVY_MAX_SIZE) -> list[Run]:
+    """Every run of an experiment: world by world (seed 0 of every size first), largest worlds first within.
+
+    A sweep stopped early thus leaves every size with (about) the same number of worlds done, and the
+    largest runs of each round start first (load balance)."""
+    if experiment not in EXPERIMENTS:
+        raise InvalidInput(f"unknown experiment {experiment!r} (choose from {', '.join(EXPERIMENTS)})")
+    runs: set[Run] = set()
+    for part in EXPERIMENTS[experiment].parts:
+        fam = FAMILIES[part.family]
+        chosen = part.sizes or fam.sizes
+        if sizes:  # a selection among the family's (the thesis's) sizes
+            chosen = [s for s in chosen if s in sizes]
+        for size in chosen:
+            for alg in part.algorithms:
+                count = graphs
+                if is_heavy(part.family, alg):
+                    count = min(graphs, heavy_graphs) if size <= heavy_max_size else 0
+                for seed in range(count):
+                    runs.update(Run(part.family, size, seed, alg, pol, lh) for pol in part.policies
+                                for lh in part.lighthouses if fits(part.family, size, seed, lh))
+    return sorted(runs, key=lambda r: (r.seed, -_weight(r), r))
+
+
+def is_heavy(family: str, algorithm: str) -> bool:
+    return family in ("complete-hole", "complete") and algorithm in ("enh5-d2", "enh3+5")
+
+
+def _weight(r: Run) -> float:
+    w = r.size ** 2 if "lattice" in r.family else r.size ** 3
+    return w * (r.size if is_heavy(r.family, r.algorithm) else 1)
