@@ -39,9 +39,10 @@ from .algorithms import ALGORITHMS
 from .registry import AlgorithmSpec, algorithm_spec
 from .policies import Policies
 from .simulator import Simulator
+from .tracefamilies import family_of
 from .tracesink import ListSink, TraceSink, trace_line
 
-__all__ = ["ALGORITHMS", "Outcome", "explore", "prepare_world", "dump_trace", "TRACE_FORMAT"]
+__all__ = ["ALGORITHMS", "Outcome", "explore", "prepare_world", "dump_trace", "TRACE_FORMAT", "TRACE_FORMAT_2"]
 
 TRACE_FORMAT = "topomark/trace@1"
 TRACE_FORMAT_2 = "topomark/trace@2"
@@ -151,18 +152,18 @@ def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: 
     emit = sink.emit if sink is not None else None
     tally = _Tally()
     if emit:
-        header = {"event": "header", "format": TRACE_FORMAT, "algorithm": spec.name,
-                  "policies": policies.to_json(), "n": world.n, "m": world.m}
-        if light.name != "directional-vertex":
-            header.update(format=TRACE_FORMAT_2, lighthouse=light.name, kit=light.kit.to_json())
-        emit(header)
+        emit(trace_header(spec.name, policies, light, world))
 
     def on_move(motion, purpose, sig, true_state):
         if emit:
             emit({"event": "move", "step": sim.cost, "motion": motion, "perception": str(sig),
                   "purpose": purpose})
 
-    sim = Simulator(bare, state, light.kit, listener=on_move)
+    def on_op(event):
+        if emit:
+            emit(op_record(event, light))
+
+    sim = Simulator(bare, state, light.kit, listener=on_move, op_listener=on_op)
     if check_mode not in Checker.MODES:
         raise InvalidInput(f"unknown check mode {check_mode!r} (choose from {', '.join(Checker.MODES)})")
     checker = Checker(sim, check_mode, spec.checks) if check else None
@@ -182,8 +183,6 @@ def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: 
     violation = None
     try:
         explorer.start()
-        if emit:
-            _emit_drops(emit, sim, light)
         if checker is not None:
             checker.after_start(explorer)
         while not explorer.done():
@@ -199,17 +198,23 @@ def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: 
     return outcome
 
 
-def _emit_drops(emit, sim: Simulator, light: Lighthouse) -> None:
-    """The marker operations of the start, from the simulator's log of what the robot did.
+def trace_header(algorithm: str, policies: Policies, light: Lighthouse, world: World) -> dict:
+    """The trace's first record: trace@1 for Algorithm 3.1's own lighthouse (byte-for-byte as before trace@2
+    existed), trace@2 with the algorithm's family, the lighthouse and its kit for every other one."""
+    header = {"event": "header", "format": TRACE_FORMAT, "algorithm": algorithm, "policies": policies.to_json(),
+              "n": world.n, "m": world.m}
+    if light.name != "directional-vertex":
+        header.update(format=TRACE_FORMAT_2, family=family_of(algorithm).name, lighthouse=light.name,
+                      kit=light.kit.to_json())
+    return header
 
-    trace@1 can say only Algorithm 3.1's single vertex drop; any other lighthouse's operations are
-    written as ``op`` records of trace@2 (the header says which).
-    """
-    for event in sim.events:
-        if light.name == "directional-vertex":
-            emit({"event": "drop", "direction": event.get("direction"), "signature": event["signature"]})
-        else:
-            emit({"event": "op", **event})
+
+def op_record(event: dict, light: Lighthouse) -> dict:
+    """A marker operation from the simulator's log (streamed as the robot does it, between its moves): trace@2's
+    ``op`` record, or trace@1's ``drop`` for the directional vertex marker, the only one trace@1 can say."""
+    if light.name == "directional-vertex":
+        return {"event": "drop", "direction": event.get("direction"), "signature": event["signature"]}
+    return {"event": "op", **event}
 
 
 class _Tally:

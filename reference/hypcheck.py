@@ -5,6 +5,10 @@ record (``spec/trace.md``) with S and U as they were when H was formed
 (e already taken out of U), and returns the first
 :class:`~topomark.spec.errors.Violation` or None:
 
+S carries the marks the robot sensed (the lighthouse's at v0 and those seen
+at new vertices, :mod:`~topomark.reference.alg31layer`), so every expected
+perception below includes them, whatever the lighthouse (§6.1).
+
 * **H**: every recorded e' = (v_k', i') is a hypothesis of line 8: a dart of
   U, v_k' ≠ v_k, whose end shows v_u's signature in S
   (:func:`~topomark.spec.signature.signature_at`); none is listed twice; the

@@ -36,10 +36,12 @@ class Simulator:
     true_state)`` after every traversal.  Edge traversals are the cost
     (§3.1.2); marker operations are counted apart in :attr:`operations` and
     logged, with the step they followed and the signature sensed just after,
-    in :attr:`events`.
+    in :attr:`events`; ``op_listener`` (optional) is called with each such
+    event as it happens, so moves and marker operations reach a trace in the
+    order the robot did them (``spec/trace.md``, trace@2's robot layer).
     """
 
-    def __init__(self, world: World, state: State, kit: Kit | dict | None = None, listener=None):
+    def __init__(self, world: World, state: State, kit: Kit | dict | None = None, listener=None, op_listener=None):
         self.layer = MarkerLayer(world)
         self.state = state
         self.kit = kit if isinstance(kit, Kit) else Kit.from_json(kit or {})
@@ -49,6 +51,7 @@ class Simulator:
         self.operations: Counter[str] = Counter()
         self.events: list[dict] = []
         self.listener = listener
+        self.op_listener = op_listener
         self.drops: list[VertexMarker] = []
 
     @property
@@ -98,7 +101,10 @@ class Simulator:
                                          reason))
         self.held[op.kind] += op.count if op.pick_up else -op.count
         self.operations["pick_up" if op.pick_up else "drop"] += 1
-        self.events.append({"step": self.cost, **op.to_json(), "signature": str(sense(self.layer, self.state))})
+        event = {"step": self.cost, **op.to_json(), "signature": str(sense(self.layer, self.state))}
+        self.events.append(event)
+        if self.op_listener is not None:
+            self.op_listener(event)
         if op.kind == "vertex" and not op.pick_up:
             v, entry = self.state
             head = None if op.direction is None else self.layer.neighbour(v, (entry + op.direction) % self.layer.degree(v))

@@ -1,25 +1,27 @@
-"""Reading a ``topomark/trace@1`` file: the record schema and a streaming, bounded parser (``spec/trace.md``).
+"""Reading a trace file (``topomark/trace@1`` or ``@2``): the record schema and a streaming, bounded parser.
 
 :func:`load_trace` reads a trace line by line (a trace can be far larger than
 memory allows to hold twice) and yields one checked record per line;
 :func:`parse_trace` does the same for a string.  Everything here is
 *well-formedness*, and any defect is one :class:`~topomark.spec.errors.
-InvalidInput` (exit 2) naming the file and line:
+InvalidInput` (exit 2) naming the file and line (``spec/trace.md``):
 
 * the file: a regular file (a FIFO, ``/dev/zero`` or a directory is refused
   before it is read, :func:`topomark.spec.jsontext.open_regular_file`), UTF-8,
   every line at most :data:`MAX_LINE_BYTES`, no empty line;
 * each line: JSON within :func:`topomark.spec.jsontext.parse_json`'s limits
-  (nesting, integer size, no NaN), an object with a known ``event`` and exactly
-  the fields :data:`EVENTS` lists, of the listed kinds; every signature in
+  (nesting, integer size, no NaN), an object with an ``event`` the header's
+  format and family allow and exactly the fields :data:`EVENTS` (trace@1) or
+  :data:`EVENTS_2` (trace@2) list, of the listed kinds; every signature in
   thesis notation; nested objects (hypotheses, the ``enhancement`` counters,
   the ``end`` violation) with exactly their own fields; vocabularies
   (``purpose`` from :data:`topomark.reference.robot.PURPOSES`, the hypothesis
-  ``outcome`` and ``rejected_by``, the ``augmentation``) closed;
-* the header: first line, ``format`` is :data:`TRACE_FORMAT`, ``algorithm``
-  a registered algorithm (:data:`topomark.reference.algorithms.ALGORITHMS`),
-  ``policies`` exactly ``edge``, ``hypothesis`` and ``path``, each a valid
-  policy (:class:`topomark.reference.policies.Policies`);
+  ``outcome`` and ``rejected_by``, the ``augmentation``, an ``op``'s ``op``
+  and ``kind``) closed; an ``op`` shaped as a
+  :class:`~topomark.spec.kit.MarkerOp` (an edge marker's ``exit`` and ``"H"``/
+  ``"T"`` direction, a vertex marker's integer direction and no exit);
+* the header: first line, judged by :func:`topomark.reference.traceheader.
+  check_header` (format, family, algorithm, policies, lighthouse, kit);
 * the ``end``: exactly one, on the last line; ``verified: true`` with a
   violation is a contradiction.
 
@@ -37,12 +39,11 @@ from topomark.spec.errors import InvalidInput
 from topomark.spec.jsontext import open_regular_file, parse_json
 from topomark.spec.signature import Signature
 
-from .algorithms import ALGORITHMS
-from .explore import TRACE_FORMAT
-from .policies import Policies
+from .explore import TRACE_FORMAT_2
 from .robot import PURPOSES
+from .traceheader import check_header, header_policies
 
-__all__ = ["EVENTS", "HYPOTHESIS", "ENHANCEMENT", "VIOLATION", "OUTCOMES", "REJECTED_BY", "MAX_LINE_BYTES",
+__all__ = ["EVENTS", "EVENTS_2", "HYPOTHESIS", "ENHANCEMENT", "VIOLATION", "OUTCOMES", "REJECTED_BY", "MAX_LINE_BYTES",
            "load_trace", "parse_trace", "header_policies", "signature"]
 
 MAX_LINE_BYTES = 64 << 20
@@ -54,7 +55,9 @@ AUGMENTATIONS = ("loop", "non-loop")
 
 _I, _N, _S, _B, _O, _L, _D = "integer", "natural", "string", "boolean", "object", "list", "dart"
 _SIG, _SIGS, _INTS, _DARTS, _JOIN = "signature", "signatures", "integers", "darts", "join"
-_OBJ_OR_NULL = "object or null"
+_OBJ_OR_NULL, _S_OR_NULL, _POS, _DIR = "object or null", "string or null", "positive integer", "direction"
+OPS = ("drop", "pick_up")
+KINDS = ("vertex", "edge")
 
 Schema = tuple[dict[str, Any], dict[str, Any]]  # (required fields, optional fields): name -> kind or vocabulary
 EVENTS: dict[str, Schema] = {
@@ -65,13 +68,20 @@ EVENTS: dict[str, Schema] = {
                    "joined": _JOIN, "by_marker": _B}, {"unexplored": _DARTS, "enhancement": _O}),
     "end": ({"cost": _I, "verified": _B, "violation": _OBJ_OR_NULL}, {}),
 }
+EVENTS_2: dict[str, Schema] = {
+    "header": ({"format": _S, "family": _S, "algorithm": _S, "policies": _O, "lighthouse": _S_OR_NULL, "kit": _O,
+                "n": _I, "m": _I}, {}),
+    "op": ({"step": _N, "op": OPS, "kind": KINDS, "count": _POS, "signature": _SIG}, {"exit": _N, "direction": _DIR}),
+    **{k: v for k, v in EVENTS.items() if k not in ("header", "drop")},
+}
 HYPOTHESIS: Schema = ({"dart": _D, "motions": _INTS, "expected": _SIGS, "outcome": OUTCOMES, "perceived": _SIGS},
                       {"rejected_by": REJECTED_BY})
 ENHANCEMENT: Schema = ({"pruned": _N, "without_motion": _N, "expansion": _N, "known": _N}, {})
 VIOLATION: Schema = ({"check": _S, "where": _S, "expected": _S, "found": _S, "detail": _S}, {})
 
 _SHAPES = {_D: "[vertex, exit]", _DARTS: "a list of [vertex, exit]", _JOIN: "[[vertex, exit], [vertex, exit]]",
-           _INTS: "a list of integers", _SIGS: "a list of signatures", _N: "an integer >= 0"}
+           _INTS: "a list of integers", _SIGS: "a list of signatures", _N: "an integer >= 0",
+           _POS: "an integer >= 1", _DIR: "an integer >= 0, \"H\" or \"T\""}
 
 
 def _show(value: Any) -> str:
@@ -91,6 +101,8 @@ _KINDS = {
     _I: _is_int, _N: lambda v: _is_int(v) and v >= 0, _D: _is_dart, _S: lambda v: isinstance(v, str),
     _SIG: lambda v: isinstance(v, str), _B: lambda v: isinstance(v, bool), _O: lambda v: isinstance(v, dict),
     _L: lambda v: isinstance(v, list), _OBJ_OR_NULL: lambda v: v is None or isinstance(v, dict),
+    _S_OR_NULL: lambda v: v is None or isinstance(v, str), _POS: lambda v: _is_int(v) and v >= 1,
+    _DIR: lambda v: (_is_int(v) and v >= 0) or v in ("H", "T"),
     _INTS: lambda v: isinstance(v, list) and all(_is_int(x) for x in v),
     _SIGS: lambda v: isinstance(v, list) and all(isinstance(x, str) for x in v),
     _DARTS: lambda v: isinstance(v, list) and all(_is_dart(x) for x in v),
@@ -135,35 +147,18 @@ def _check_object(obj: Any, schema: Schema, label: str, what: str, where: str, s
         raise InvalidInput(f"{where}: {what} without field {missing[0]!r}")
 
 
-def header_policies(value: dict, where: str) -> Policies:
-    """The header's ``policies`` object as :class:`Policies`: exactly the three kinds, each a valid name."""
-    kinds = ("edge", "hypothesis", "path")
-    for key in value:
-        if key not in kinds:
-            raise InvalidInput(f"{where}: header.policies: unknown policy kind {key!r} (the kinds are "
-                               f"{', '.join(kinds)})")
-    for key in kinds:
-        if key not in value:
-            raise InvalidInput(f"{where}: header.policies: no {key} policy")
-    try:
-        return Policies(**value)
-    except InvalidInput as exc:
-        raise InvalidInput(f"{where}: header.policies: {exc}") from None
-
-
-def _check_record(rec: Any, where: str) -> dict[str, Any]:
-    if not isinstance(rec, dict) or rec.get("event") not in EVENTS:
+def _check_record(rec: Any, where: str, table: dict[str, Schema], allowed: tuple[str, ...]) -> tuple[dict, tuple]:
+    """The record checked against ``table``'s schemas and the ``allowed`` events; returns it with the events
+    allowed from now on (a header narrows them to its format's and family's)."""
+    if not isinstance(rec, dict) or rec.get("event") not in allowed:
         found = rec.get("event") if isinstance(rec, dict) else type(rec).__name__
-        raise InvalidInput(f"{where}: expected a trace event ({', '.join(EVENTS)}), found {_show(found)}")
+        raise InvalidInput(f"{where}: expected a trace event ({', '.join(allowed)}), found {_show(found)}")
     event = rec["event"]
-    _check_object(rec, EVENTS[event], event, f"a {event} event", where, skip="event")
+    _check_object(rec, table[event], event, f"a {event} event", where, skip="event")
     if event == "header":
-        if rec["format"] != TRACE_FORMAT:
-            raise InvalidInput(f"{where}: unknown trace format {rec['format']!r} (this is {TRACE_FORMAT})")
-        if rec["algorithm"] not in ALGORITHMS:
-            raise InvalidInput(f"{where}: header.algorithm: unknown algorithm {rec['algorithm']!r} "
-                               f"(the registered algorithms are {', '.join(ALGORITHMS)})")
-        header_policies(rec["policies"], where)
+        allowed = ("header", *check_header(rec, where), "end")
+    elif event == "op":
+        _check_op(rec, where)
     elif event == "iteration":
         for k, h in enumerate(rec["hypotheses"]):
             _check_object(h, HYPOTHESIS, f"iteration.hypotheses[{k}]", f"iteration.hypotheses[{k}]", where)
@@ -173,17 +168,42 @@ def _check_record(rec: Any, where: str) -> dict[str, Any]:
         _check_object(rec["violation"], VIOLATION, "end.violation", "end.violation", where)
         if rec["verified"]:
             raise InvalidInput(f"{where}: end says verified: true and names a violation (a contradiction)")
-    return rec
+    return rec, allowed
+
+
+def _check_op(rec: dict[str, Any], where: str) -> None:
+    """An op is a :class:`~topomark.spec.kit.MarkerOp` as written: its fields fit its kind and operation."""
+    kind, direction = rec["kind"], rec.get("direction")
+    if kind == "vertex" and "exit" in rec:
+        raise InvalidInput(f"{where}: op.exit: a vertex marker takes no exit")
+    if kind == "edge" and "exit" not in rec:
+        raise InvalidInput(f"{where}: an edge marker op without field 'exit'")
+    if rec["op"] == "pick_up" and direction is not None:
+        raise InvalidInput(f"{where}: op.direction: a pick_up takes no direction")
+    if direction is not None and isinstance(direction, str) != (kind == "edge"):
+        want = '"H" or "T"' if kind == "edge" else "a relative exit (an integer >= 0)"
+        raise InvalidInput(f"{where}: op.direction: a {kind} marker's direction is {want}, got {_show(direction)}")
+
+
+def _table(rec: Any) -> dict[str, Schema]:
+    """The schemas a trace starting with ``rec`` is read by: trace@2's if it is a trace@2 header."""
+    is_2 = isinstance(rec, dict) and rec.get("event") == "header" and rec.get("format") == TRACE_FORMAT_2
+    return EVENTS_2 if is_2 else EVENTS
 
 
 def _records(lines: Iterable[tuple[int, str]], source: str) -> Iterator[dict[str, Any]]:
     """Checked records; each is yielded only once the next line is read, so nothing may follow the end."""
     held: dict[str, Any] | None = None
+    table, allowed = EVENTS, tuple(EVENTS)
     for k, line in lines:
         where = f"{source} line {k}"
         if not line.strip():
             raise InvalidInput(f"{where}: empty line (a trace has one JSON object per line)")
-        rec = _check_record(parse_json(line, where), where)
+        rec = parse_json(line, where)
+        if held is None:
+            table = _table(rec)
+            allowed = tuple(table)
+        rec, allowed = _check_record(rec, where, table, allowed)
         if held is None:
             if rec["event"] != "header":
                 raise InvalidInput(f"{source}: the first line must be the header event")

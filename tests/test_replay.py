@@ -175,7 +175,7 @@ def test_a_truncated_run_is_incomplete():
 # -- bad input: exit 2 -------------------------------------------------------------
 @pytest.mark.parametrize("edit, words", [
     (lambda lines: ["{not json"] + lines[1:], "line 1: malformed JSON"),
-    (lambda lines: [lines[0].replace("trace@1", "trace@2")] + lines[1:], "unknown trace format 'topomark/trace@2'"),
+    (lambda lines: [lines[0].replace("trace@1", "trace@3")] + lines[1:], "unknown trace format 'topomark/trace@3'"),
     (lambda lines: lines[:1] + ['{"event":"teleport"}'] + lines[1:], "line 2: expected a trace event"),
     (lambda lines: lines[:1] + ['{"event":"move","motion":0,"perception":"[2,A,A]","purpose":"new"}'] + lines[1:],
      "move event without field 'step'"),
