@@ -145,10 +145,11 @@ def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: 
     light = lighthouse if isinstance(lighthouse, Lighthouse) else lighthouse_named(lighthouse)
     policies = policies or Policies()
     bare, state = prepare_world(world, light, spec.name)
-    trace: list[dict] = []
+    if check_mode not in Checker.MODES:
+        raise InvalidInput(f"unknown check mode {check_mode!r} (choose from {', '.join(Checker.MODES)})")
     if sink is None and record:
         sink = ListSink()
-        trace = sink.records
+    trace = sink.records if isinstance(sink, ListSink) else []
     emit = sink.emit if sink is not None else None
     tally = _Tally()
     if emit:
@@ -164,8 +165,6 @@ def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: 
             emit(op_record(event, light))
 
     sim = Simulator(bare, state, light.kit, listener=on_move, op_listener=on_op)
-    if check_mode not in Checker.MODES:
-        raise InvalidInput(f"unknown check mode {check_mode!r} (choose from {', '.join(Checker.MODES)})")
     checker = Checker(sim, check_mode, spec.checks) if check else None
 
     def observer(explorer, it):
@@ -180,7 +179,17 @@ def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: 
             progress(explorer.S.explored_edges(), world.m, sim.cost)
 
     explorer = spec.factory(sim.robot(), policies, observer, light)
-    violation = None
+    violation = _drive(explorer, checker)
+    outcome = _outcome(world, sim, explorer, checker, violation, trace, tally)
+    if emit:
+        emit({"event": "end", "cost": sim.cost, "verified": outcome.verified,
+              "violation": violation.to_json() if violation else None})
+    return outcome
+
+
+def _drive(explorer, checker: Checker | None):
+    """The explorer contract: ``start``, then ``step`` until ``done``; the checker after the start and at the
+    end.  Returns the first violation, or None."""
     try:
         explorer.start()
         if checker is not None:
@@ -190,12 +199,8 @@ def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: 
         if checker is not None:
             checker.at_end(explorer)
     except CheckFailure as exc:
-        violation = exc.violation
-    outcome = _outcome(world, sim, explorer, checker, violation, trace, tally)
-    if emit:
-        emit({"event": "end", "cost": sim.cost, "verified": outcome.verified,
-              "violation": violation.to_json() if violation else None})
-    return outcome
+        return exc.violation
+    return None
 
 
 def trace_header(algorithm: str, policies: Policies, light: Lighthouse, world: World) -> dict:

@@ -220,16 +220,28 @@ class Cli:
             self._zygote, self._stamp = _Zygote(), stamp
         return self._zygote
 
+    def _warm_or_none(self) -> "_Zygote | None":
+        """The zygote, or None (run a fresh interpreter) if it cannot start: the zygote is a speed-up only."""
+        try:
+            return self._warm()
+        except RuntimeError:
+            self._zygote = None
+            return None
+
     def __call__(self, *argv: str, timeout: float = TIMEOUT, cwd: Path | None = None, fresh: bool | None = None) -> Run:
         self._n += 1
         out, err = self.workdir / f"run{self._n}.out", self.workdir / f"run{self._n}.err"
         use_fresh = self.fresh if fresh is None else fresh
-        zygote = None if use_fresh else self._warm()
+        zygote = None if use_fresh else self._warm_or_none()
         start = time.monotonic()
         if zygote is None:
             code = _run_fresh(list(argv), cwd or self.workdir, out, err, timeout)
         else:
-            code = zygote.run(list(argv), cwd or self.workdir, out, err, timeout)
+            try:
+                code = zygote.run(list(argv), cwd or self.workdir, out, err, timeout)
+            except RuntimeError:  # the zygote itself died (not the command): run this one afresh
+                self._zygote = None
+                code = _run_fresh(list(argv), cwd or self.workdir, out, err, timeout)
         seconds = time.monotonic() - start
         text = [p.read_bytes()[:1 << 20].decode("utf-8", "replace") if p.exists() else "" for p in (out, err)]
         for p in (out, err):
