@@ -217,9 +217,6 @@ def drive_command(args) -> int:
     policies = parse_policies(args.policy)
     world = load_world(args.check) if args.check else None
     light = lighthouse(args.lighthouse)
-    if args.trace and light.name != "directional-vertex":
-        raise InvalidInput(f"--trace: a trace of the {light.name} lighthouse needs topomark/trace@2, which is not "
-                           "written yet: run without --trace, or with the directional-vertex lighthouse")
     result = drive(command, policies, world, limits.max_traversals, limits.wall, limits.message, light)
     if args.trace:
         guarded(args.trace, lambda: Path(args.trace).write_text(dump_trace(result.trace), encoding="utf-8"))

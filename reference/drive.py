@@ -14,9 +14,9 @@ The provider's ``hello`` chooses the version: ``@1`` offers ``markers`` and
 allows only the directional-vertex lighthouse; ``@2`` offers a ``kit``, which
 must hold what the chosen lighthouse drops (``lighthouse=``,
 :data:`~topomark.reference.explorers.lighthouses.LIGHTHOUSES`), and drops
-are sent in the ``@2`` form.  A trace (``topomark/trace@1``) is recorded for
-the directional-vertex lighthouse only; with another one
-:attr:`DriveResult.trace` is empty.
+are sent in the ``@2`` form.  The trace is ``topomark/trace@1`` for the
+directional-vertex lighthouse and ``topomark/trace@2`` for any other
+(``spec/trace.md``), so ``replay`` verifies either.
 
 No ground truth is available here (the provider *is* the world), so the
 run is judged only if the caller supplies the world (``check=``), by
@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import json
 import time
+from types import SimpleNamespace
 from dataclasses import dataclass, field
 from typing import Any, Sequence
 
@@ -37,7 +38,7 @@ from topomark.spec.signature import Signature
 from topomark.spec.world import World
 from topomark.spec.worldfile import world_to_json
 
-from .explore import TRACE_FORMAT
+from .explore import op_record, trace_header
 from .explorers.algorithm31 import LighthouseExplorer
 from .explorers.lighthouses import LIGHTHOUSES, Lighthouse
 from .mapcheck import MapVerdict, check_map
@@ -150,8 +151,7 @@ class _Link:
             raise TopomarkFault(f"drive speaks topomark/protocol@1, which has no {json.dumps(op.to_json())}")
         self.peer.send({"type": "drop", "direction": op.direction} if self.version == 1 else op_to_message(op))
         self.here = self._answer()
-        if single:
-            self.trace.append({"event": "drop", "direction": op.direction, "signature": str(self.here)})
+        self.trace.append(op_record({"step": self.cost, **op.to_json(), "signature": str(self.here)}, self.light))
 
     def robot(self) -> Robot:
         return Robot(self.move, lambda: self.here, self.operate)
@@ -175,13 +175,10 @@ def drive(command: Sequence[str], policies: Policies | None = None, world: World
             result = DriveResult("fail", "inconsistent", "the provider's answers are inconsistent with any "
                                  f"world: {exc}", link.cost)
     result.message = clip(result.message, MAX_MESSAGE)
-    n, m = (result.map.n, result.map.m) if result.map is not None else (0, 0)
-    header = {"event": "header", "format": TRACE_FORMAT, "algorithm": "basic", "policies": policies.to_json(),
-              "n": n, "m": m}
+    size = result.map if result.map is not None else SimpleNamespace(n=0, m=0)
+    header = trace_header("basic", policies, light, size)  # trace@1, or trace@2 for another lighthouse
     result.trace = [header] + trace + [{"event": "end", "cost": link.cost, "verified": result.check is not None
                                         and result.check.isomorphic, "violation": None}]
-    if light.name != "directional-vertex":
-        result.trace = []  # topomark/trace@1 records a vertex drop only
     result.wall, result.stderr = time.monotonic() - started, peer.stderr_tail()
     return result
 

@@ -132,3 +132,18 @@ def test_provider_is_standalone():
     mods = {a.name for n in ast.walk(tree) if isinstance(n, ast.Import) for a in n.names}
     mods |= {n.module for n in ast.walk(tree) if isinstance(n, ast.ImportFrom)}
     assert mods <= {"json", "sys"}, mods
+
+
+@pytest.mark.parametrize("name", ["directional-edge", "vertex-and-edge"])
+def test_a_drive_trace_of_any_lighthouse_replays(tmp_path, name, capsys):
+    """drive records trace@2 for a lighthouse other than Algorithm 3.1's, and replay verifies it."""
+    from topomark.reference.explorers.lighthouses import LIGHTHOUSES
+    world = g.lattice_hole(4, 4, 0.1, seed=2)
+    (tmp_path / "w.json").write_text(dumps_world(world))
+    kit = json.dumps(LIGHTHOUSES[name].kit.to_json())
+    provider = [sys.executable, PROVIDER, str(tmp_path / "w.json"), "--protocol", "2", "--kit", kit]
+    assert main(["drive", "--check", str(tmp_path / "w.json"), "--lighthouse", name, "--trace",
+                 str(tmp_path / "t.jsonl"), "--", *provider]) == 0
+    assert '"format":"topomark/trace@2"' in (tmp_path / "t.jsonl").read_text().splitlines()[0]
+    assert main(["replay", str(tmp_path / "w.json"), str(tmp_path / "t.jsonl")]) == 0
+    assert "VERIFIED" in capsys.readouterr().out
