@@ -97,6 +97,45 @@ def _describe_marks(marks: tuple) -> str:
     return ", ".join(parts) or "no markers"
 
 
+def _marks_mismatch(a, b, v, fv, rv: int) -> Violation | None:
+    """The mismatch if the marks at ``v`` (exits shifted by ``rv``) differ from those at its image ``fv``."""
+    ma, mb = _marks_at(a, v, rv), _marks_at(b, fv, 0)
+    if ma == mb:
+        return None
+    return _mismatch(f"vertex {v!r} (image {fv!r})", _describe_marks(ma), _describe_marks(mb),
+                     "markers are not preserved")
+
+
+def _edge_mismatch(a, v, i: int, w, j: int, k: int, fv, bw, bj: int, f: dict, r: dict) -> Violation:
+    """Why the dart (v, i) to the matched vertex ``w`` does not land where ``f`` says: wrong vertex or index."""
+    if f[w] != bw:
+        return _mismatch(f"vertex {v!r} exit {i}",
+                         f"the edge to {w!r}, i.e. to {f[w]!r} through exit {k} of {fv!r}",
+                         f"exit {k} of {fv!r} leads to {bw!r}")
+    return _mismatch(f"edge {v!r}-{w!r} at {w!r}",
+                     f"exit {(j + r[w]) % a.degree(w)} of {bw!r} (from exit {j} of {w!r})",
+                     f"exit {bj} of {bw!r}", "the edge's index at its far end is not preserved")
+
+
+def _new_vertex_mismatch(a, b, v, i: int, w, bw, inv: dict) -> Violation:
+    """Why the unmatched vertex ``w`` cannot map to ``bw``: already an image, or another degree."""
+    if bw in inv:
+        return _mismatch(f"vertex {v!r} exit {i}", f"a vertex not yet matched (it leads to {w!r})",
+                         f"{bw!r}, already the image of {inv[bw]!r}", "two vertices would map to one")
+    return _mismatch(f"vertex {v!r} exit {i}", f"a vertex of degree {a.degree(w)} (like {w!r})",
+                     f"{bw!r} of degree {b.degree(bw)}")
+
+
+def _not_bijective(a, b, f: dict) -> Violation | None:
+    """The mismatch if the propagated map ``f`` misses a vertex of ``b`` or of ``a``."""
+    if len(f) != len(b.vertices):
+        return _mismatch("the vertex sets", f"{len(b.vertices)} vertices reached from the anchor", f"{len(f)}")
+    if len(f) != len(a.vertices):
+        lost = next(v for v in a.vertices if v not in f)
+        return _mismatch(f"vertex {lost!r}", "reachable from the anchor", "unreachable")
+    return None
+
+
 def anchored(a, b, a_dart, b_dart, markers: bool = True, partial: bool = False) -> IsoResult:
     """Extend ``a_dart ↦ b_dart`` to an extended isomorphism from ``a`` to ``b``.
 
@@ -105,6 +144,10 @@ def anchored(a, b, a_dart, b_dart, markers: bool = True, partial: bool = False) 
     ``partial=True`` unexplored darts of ``a`` are skipped and the result is an
     embedding of the explored part of ``a`` into ``b`` (an isomorphism onto
     the explored subgraph G_s of §3.4); otherwise it must be a bijection.
+    Vertices are matched breadth-first from the anchor: a dart to a matched
+    vertex must land on its image at the right index, a dart to a new vertex
+    matches it if its image is new and of the same degree.  (The loop stays
+    inline, on the checker's hot path; the helpers only explain a mismatch.)
     """
     v0, i0 = a_dart
     w0, j0 = b_dart
@@ -115,60 +158,37 @@ def anchored(a, b, a_dart, b_dart, markers: bool = True, partial: bool = False) 
     inv = {w0: v0}
     r = {v0: (j0 - i0) % a.degree(v0)}
     todo = deque([v0])
-
-    def fail(violation: Violation) -> IsoResult:
-        return IsoResult(False, mismatch=violation, mapped=len(f))
-
     a_arc, b_arc, a_deg, b_deg = a.arc, b.arc, a.degree, b.degree
     while todo:
         v = todo.popleft()
-        fv, d = f[v], a_deg(v)
+        fv, d, rv = f[v], a_deg(v), r[v]
         if markers and (a.vertex_mark(v) or a.dart_marks(v) or b.vertex_mark(fv) or b.dart_marks(fv)):
-            ma, mb = _marks_at(a, v, r[v]), _marks_at(b, fv, 0)
-            if ma != mb:
-                return fail(_mismatch(f"vertex {v!r} (image {fv!r})", _describe_marks(ma), _describe_marks(mb),
-                                      "markers are not preserved"))
-        rv = r[v]
+            violation = _marks_mismatch(a, b, v, fv, rv)
+            if violation is not None:
+                return IsoResult(False, mismatch=violation, mapped=len(f))
         for i in range(d):
             t = a_arc((v, i))
             if t is None:
                 if partial:
                     continue
-                return fail(_mismatch(f"vertex {v!r} exit {i}", "an explored edge", "an unexplored dart"))
+                return IsoResult(False, mismatch=_mismatch(f"vertex {v!r} exit {i}", "an explored edge",
+                                                           "an unexplored dart"), mapped=len(f))
             w, j = t
             k = (i + rv) % d
             bw, bj = b_arc((fv, k))
             fw = f.get(w)
             if fw is not None:
-                if fw != bw:
-                    return fail(_mismatch(
-                        f"vertex {v!r} exit {i}",
-                        f"the edge to {w!r}, i.e. to {f[w]!r} through exit {k} of {fv!r}",
-                        f"exit {k} of {fv!r} leads to {bw!r}"))
-                if (j + r[w]) % a_deg(w) != bj:
-                    return fail(_mismatch(
-                        f"edge {v!r}-{w!r} at {w!r}",
-                        f"exit {(j + r[w]) % a_deg(w)} of {bw!r} (from exit {j} of {w!r})",
-                        f"exit {bj} of {bw!r}", "the edge's index at its far end is not preserved"))
+                if fw != bw or (j + r[w]) % a_deg(w) != bj:
+                    return IsoResult(False, mismatch=_edge_mismatch(a, v, i, w, j, k, fv, bw, bj, f, r), mapped=len(f))
                 continue
-            if bw in inv:
-                return fail(_mismatch(
-                    f"vertex {v!r} exit {i}", f"a vertex not yet matched (it leads to {w!r})",
-                    f"{bw!r}, already the image of {inv[bw]!r}", "two vertices would map to one"))
             dw = a_deg(w)
-            if dw != b_deg(bw):
-                return fail(_mismatch(
-                    f"vertex {v!r} exit {i}", f"a vertex of degree {dw} (like {w!r})",
-                    f"{bw!r} of degree {b_deg(bw)}"))
+            if bw in inv or dw != b_deg(bw):
+                return IsoResult(False, mismatch=_new_vertex_mismatch(a, b, v, i, w, bw, inv), mapped=len(f))
             f[w], inv[bw], r[w] = bw, w, (bj - j) % dw
             todo.append(w)
-    if not partial:
-        if len(f) != len(b.vertices):
-            return fail(_mismatch("the vertex sets", f"{len(b.vertices)} vertices reached from the anchor",
-                                  f"{len(f)}"))
-        if len(f) != len(a.vertices):
-            lost = next(v for v in a.vertices if v not in f)
-            return fail(_mismatch(f"vertex {lost!r}", "reachable from the anchor", "unreachable"))
+    violation = None if partial else _not_bijective(a, b, f)
+    if violation is not None:
+        return IsoResult(False, mismatch=violation, mapped=len(f))
     return IsoResult(True, Witness(f, r), mapped=len(f))
 
 
