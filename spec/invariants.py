@@ -135,12 +135,14 @@ def check_lemma1(hypotheses) -> Violation | None:
     ``hypotheses`` are objects with ``dart``, ``motions`` and ``expected``
     (tuples); the first pair of hypotheses sharing (M, P^E), or None.
     """
-    seen: dict[tuple, object] = {}
+    seen: dict[tuple, list] = {}  # M -> the hypotheses with that M (P^E compared only when M is shared)
     for h in hypotheses:
-        other = seen.setdefault((tuple(h.motions), tuple(h.expected)), h)
-        if other is not h:
-            return Violation("Lemma 1", f"hypotheses {other.dart} and {h.dart}", "distinct (M, P^E) pairs",
-                             f"both M={list(h.motions)}, P^E={[str(x) for x in h.expected]}")
+        same_m = seen.setdefault(tuple(h.motions), [])
+        for other in same_m:
+            if tuple(other.expected) == tuple(h.expected):
+                return Violation("Lemma 1", f"hypotheses {other.dart} and {h.dart}", "distinct (M, P^E) pairs",
+                                 f"both M={list(h.motions)}, P^E={[str(x) for x in h.expected]}")
+        same_m.append(h)
     return None
 
 

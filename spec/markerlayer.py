@@ -56,10 +56,12 @@ _FLIP = {"H": "T", "T": "H", None: None}
 class MarkerLayer:
     """Mutable markers over ``world``'s rotation; starts with the world's own markers."""
 
-    __slots__ = ("base", "_vmarks", "_emarks", "_dmarks", "_world")
+    __slots__ = ("base", "_vmarks", "_emarks", "_dmarks", "_world", "degree", "target", "neighbour")
 
     def __init__(self, world: World):
         self.base = world
+        # The rotation's queries are the world's own (bound here, not forwarded: they are on the robot's hot path).
+        self.degree, self.target, self.neighbour = world.degree, world.target, world.neighbour
         self._vmarks: dict[str, VertexMark] = {v: world.vertex_mark(v) for v in world.vertices
                                                if world.vertex_mark(v) is not None}
         # edge -> (tail-side dart (v, exit), count, end seen from that dart); insertion order kept
@@ -72,16 +74,7 @@ class MarkerLayer:
                                                          if world.dart_marks(v)}
         self._world: World | None = world
 
-    # -- the queries of a world -----------------------------------------------
-    def degree(self, v: str) -> int:
-        return self.base.degree(v)
-
-    def target(self, dart: tuple[str, int]) -> tuple[str, int]:
-        return self.base.target(dart)
-
-    def neighbour(self, v: str, i: int) -> str:
-        return self.base.neighbour(v, i)
-
+    # -- the queries of a world (degree, target and neighbour are bound in __init__) ----
     @property
     def vertices(self) -> tuple[str, ...]:
         return self.base.vertices
