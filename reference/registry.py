@@ -30,7 +30,7 @@ topomark.spec.errors.InvalidInput: unknown algorithm 'nope' (choose from basic, 
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any, Callable
 
 from topomark.spec.errors import InvalidInput
@@ -41,7 +41,7 @@ from .bounds import upper_bound
 from .explorers.lighthouses import LIGHTHOUSES
 from .explorers.compositions import ENHANCEMENTS
 
-__all__ = ["AlgorithmSpec", "REGISTRY", "algorithm_spec", "CHECKS"]
+__all__ = ["AlgorithmSpec", "REGISTRY", "algorithm_spec", "variant", "CHECKS"]
 
 CHECKS: dict[str, str] = {
     "pose": "the explorer's believed position is the robot's true state (φ anchored at the believed pose)",
@@ -74,11 +74,12 @@ class AlgorithmSpec:
     options: tuple[str, ...]
     checks: tuple[str, ...]
     bound_fn: Callable[[int, int], int] | None = None
+    explorer: type | None = None  # an explorer class of one's own (see :func:`variant`); else the registered one
 
     @property
     def factory(self) -> Callable[..., Any]:
-        """The explorer class (looked up at call time, so a test may substitute a faulty one)."""
-        return algorithms.ALGORITHMS[self.name]
+        """The explorer class (a registered one is looked up at call time, so a test may substitute a faulty one)."""
+        return self.explorer if self.explorer is not None else algorithms.ALGORITHMS[self.name]
 
     def bound_for(self, n: int, m: int) -> int | None:
         """The cost bound evaluated on a world of n vertices and m edges, or None if the thesis states none."""
@@ -111,6 +112,15 @@ REGISTRY: dict[str, AlgorithmSpec] = {
                            _ALGORITHM_3_1_CHECKS, upper_bound),
     **{name: _enhancement(name) for name in ENHANCEMENTS},
 }
+
+
+def variant(name: str, explorer: type, like: str = "basic") -> AlgorithmSpec:
+    """An explorer class of one's own, run and checked like the registered algorithm ``like``.
+
+    For trying a modification of an algorithm under the full checker
+    (``explore(world, variant("mine", MyExplorer))``) without registering it.
+    """
+    return replace(algorithm_spec(like), name=name, explorer=explorer)
 
 
 def algorithm_spec(name: str) -> AlgorithmSpec:

@@ -13,6 +13,7 @@ from topomark.reference import generators as g
 from topomark.reference.algorithms import ALGORITHMS
 from topomark.reference.cli import main
 from topomark.reference.explorers.compositions import ENHANCEMENTS
+from topomark.reference.registry import variant
 from topomark.reference.explorers.enhanced import Enhancement, EnhancedExplorer
 from topomark.reference.explore import dump_trace, explore
 from topomark.reference.policies import EDGE_POLICIES, HYPOTHESIS_POLICIES, PATH_POLICIES, Policies
@@ -54,12 +55,8 @@ class _AllOff(EnhancedExplorer):
 @given(family_worlds(small=True))
 def test_the_trie_explorer_with_every_technique_off_is_the_basic_algorithm(world):
     """Same motions, same perceptions, same cost: the robot's trie bookkeeping is exact."""
-    ALGORITHMS["_all_off"] = _AllOff
-    try:
-        a = explore(world, "basic")
-        b = explore(world, "_all_off")
-    finally:
-        del ALGORITHMS["_all_off"]
+    a = explore(world, "basic")
+    b = explore(world, variant("_all_off", _AllOff))
     moves = lambda out: [r for r in out.trace if r["event"] == "move"]  # noqa: E731
     assert moves(a) == moves(b) and a.cost == b.cost and b.verified
 

@@ -171,7 +171,9 @@ def test_editable_install_into_a_fresh_venv(tmp_path, outside):
 def test_repository_layout_matches_the_packages():
     meta = tomllib.loads((ROOT / "pyproject.toml").read_text())
     dirs = meta["tool"]["setuptools"]["package-dir"]
-    assert dirs == {"topomark.spec": "spec", "topomark.reference": "reference", "topomark.proofs": "proofs"}
+    assert dirs == {"topomark.spec": "spec", "topomark.reference": "reference",
+                    "topomark.reference.explorers": "reference/explorers", "topomark.proofs": "proofs"}
+    assert sorted(meta["tool"]["setuptools"]["packages"]) == sorted(dirs)
     for d in dirs.values():
         assert (ROOT / d / "__init__.py").is_file()
     assert meta["project"]["scripts"]["topomark"] == "topomark.reference.cli:main"

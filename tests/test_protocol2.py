@@ -277,7 +277,8 @@ def test_drive_another_lighthouse_needs_an_at_2_provider_with_its_kit(tmp_path, 
     path.write_text(dumps_world(world))
     result = drive(provider(path, "--protocol", "2", "--kit", kit), world=world, light=LIGHTHOUSES[name])
     assert result.passed and result.check.isomorphic, result.message
-    assert result.trace == []  # trace@1 cannot record these drops
+    assert result.trace[0]["format"] == "topomark/trace@2"  # trace@1 cannot record these drops
+    assert [r["kind"] for r in result.trace if r["event"] == "op"] == [op.kind for op in LIGHTHOUSES[name].ops]
     at1 = drive(provider(path), light=LIGHTHOUSES[name])
     assert at1.reason == "protocol" and "needs a provider speaking topomark/protocol@2" in at1.message
     short = drive(provider(path, "--protocol", "2"), light=LIGHTHOUSES[name])
@@ -290,7 +291,8 @@ def test_cli_drive_lighthouse(tmp_path, capsys):
     cmd = ["--", sys.executable, PROVIDER, str(path), "--protocol", "2", "--kit", '{"directional-edge": 1}']
     assert main(["drive", "--lighthouse", "directional-edge", "--check", str(path)] + cmd) == 0
     assert "PASS" in capsys.readouterr().out
-    assert main(["drive", "--lighthouse", "directional-edge", "--trace", str(tmp_path / "t.jsonl")] + cmd) == 2
-    assert "topomark/trace@2" in capsys.readouterr().err
+    assert main(["drive", "--lighthouse", "directional-edge", "--trace", str(tmp_path / "t.jsonl")] + cmd) == 0
+    capsys.readouterr()
+    assert '"format":"topomark/trace@2"' in (tmp_path / "t.jsonl").read_text().splitlines()[0]
     assert main(["drive", "--lighthouse", "lamp"] + cmd) == 2
     assert "unknown lighthouse 'lamp'" in capsys.readouterr().err
