@@ -41,7 +41,7 @@ from typing import Any
 from topomark.spec.errors import CheckFailure, Violation
 from topomark.spec.invariants import IncrementalInvariants
 from topomark.spec.mapstate import PartialMap
-from topomark.spec.signature import Signature, signature_at
+from topomark.spec.signature import Signature, back_link_table, signature_at
 from topomark.spec.world import World
 
 from .algorithms import ALGORITHMS
@@ -121,11 +121,9 @@ class Algorithm31Layer:
         S = PartialMap()
         v0 = S.add_vertex(degree)
         S.mark_as_sensed(v0, signature(sensed, "v0"), 0)
-        self.table = {signature_at(S, v0, e): e for e in range(degree)}
-        if len(self.table) != degree:
-            diverge(f"v0 (lighthouse {self.lighthouse.name})", f"{degree} different signatures, one per entry",
-                    str(len(self.table)), "the markers give no explicit back-link information at v0 (§3.2.2)",
-                    check="lighthouse")
+        self.table, bad = back_link_table(S, v0, f"v0 (lighthouse {self.lighthouse.name})")
+        if bad is not None:
+            raise Diverged(bad)
         S.unexplored = [(v0, i) for i in range(degree)]
         self.S = S
 

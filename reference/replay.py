@@ -48,6 +48,7 @@ a different size is bad input too.
 
 from __future__ import annotations
 
+from collections import deque
 from dataclasses import dataclass
 from typing import Any, Iterable
 
@@ -143,8 +144,8 @@ def replay(world: World, records: Iterable[dict[str, Any]], source: str = "<trac
         for line, rec in enumerate(records, 2):
             r.record(rec, f"{source} line {line}")
     except Diverged as exc:
-        for rec in records:  # the rest must still be well-formed: bad input outranks a divergence
-            pass
+        rest = deque(records, maxlen=1)  # read (and so check) every later line: bad input outranks a divergence
+        rec = rest[0] if rest else rec  # the trace's own last record: its end, with the recorder's verdict
         failed = rec["violation"] is not None
         note = f"; consistent: the trace records its own failure ({_claim(rec)})" if failed else ""
         return ReplayResult(False, f"line {line}: {exc.violation}{note}", r.robot.steps, r.iterations, exc.violation,

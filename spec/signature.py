@@ -31,10 +31,10 @@ import re
 from dataclasses import dataclass
 from typing import Protocol
 
-from .errors import InvalidInput
+from .errors import InvalidInput, Violation
 from .world import MAX_DEGREE, DartMark, VertexMark
 
-__all__ = ["Signature", "signature_at", "depends_on_entry", "Marked"]
+__all__ = ["Signature", "signature_at", "depends_on_entry", "back_link_table", "Marked"]
 
 
 class Marked(Protocol):
@@ -173,6 +173,21 @@ def depends_on_entry(g: Marked, v) -> bool:
     vertex marker or an edge marker is read relative to the entry edge (§3.1.1)."""
     mark = g.vertex_mark(v)
     return (mark is not None and mark.head is not None) or bool(g.dart_marks(v))
+
+
+def back_link_table(g: Marked, v, where: str) -> tuple[dict[Signature, int], Violation | None]:
+    """What a robot entering ``v`` senses ↦ the entry it came by, and whether that is a function.
+
+    ``v`` gives *explicit back-link information* (§3.2.2) exactly when its
+    signatures from its d entries are d different ones; a lighthouse must
+    (§3.3).  Returns the table and None, or the table and the violation named
+    at ``where``.
+    """
+    table = {signature_at(g, v, e): e for e in range(g.degree(v))}
+    if len(table) == g.degree(v):
+        return table, None
+    return table, Violation("lighthouse", where, f"{g.degree(v)} different signatures, one per entry", f"{len(table)}",
+                            "the markers give no explicit back-link information at v0 (§3.2.2)")
 
 
 _PLAIN: dict[int, Signature] = {}

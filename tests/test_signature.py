@@ -164,3 +164,15 @@ def test_depends_on_entry_exactly_when_some_entry_reads_differently(w):
             assert len(readings) == 1
         elif mark is not None and mark.head is not None and not w.dart_marks(v):
             assert len(readings) == w.degree(v)  # V-0 .. V-(d-1), one per entry
+
+
+def test_back_link_table_states_the_lighthouse_condition():
+    """§3.2.2: a directional marker gives one signature per entry; an undirected one gives one for all."""
+    from topomark.spec.marker import VertexMarker
+    from topomark.spec.signature import back_link_table
+    from topomark.spec.world import World
+    rot = {"a": ["b", "c", "d"], "b": ["a", "c"], "c": ["a", "b", "d"], "d": ["a", "c"]}
+    table, bad = back_link_table(World(rot, [VertexMarker("a", points_to="b")]), "a", "v0")
+    assert bad is None and sorted(table.values()) == [0, 1, 2]
+    table, bad = back_link_table(World(rot, [VertexMarker("a")]), "a", "v0")
+    assert len(table) == 1 and bad.check == "lighthouse" and "back-link" in bad.detail

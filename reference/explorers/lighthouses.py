@@ -49,10 +49,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from topomark.spec.errors import CheckFailure, InvalidInput, Violation
+from topomark.spec.errors import CheckFailure, InvalidInput
 from topomark.spec.kit import Kit, MarkerOp
 from topomark.spec.mapstate import PartialMap
-from topomark.spec.signature import Signature, signature_at
+from topomark.spec.signature import Signature, back_link_table
 
 __all__ = ["Lighthouse", "LIGHTHOUSES", "lighthouse"]
 
@@ -76,11 +76,9 @@ class Lighthouse:
         for op in self.ops:
             robot.operate(op)
         S.mark_as_sensed(v0, robot.sense(), 0)
-        table = {signature_at(S, v0, e): e for e in range(S.degree(v0))}
-        if len(table) != S.degree(v0):
-            raise CheckFailure(Violation(
-                "lighthouse", f"v0 (lighthouse {self.name})", f"{S.degree(v0)} different signatures, one per entry",
-                f"{len(table)}", "the markers give no explicit back-link information at v0 (§3.2.2)"))
+        table, bad = back_link_table(S, v0, f"v0 (lighthouse {self.name})")
+        if bad is not None:
+            raise CheckFailure(bad)
         return table
 
 
