@@ -30,6 +30,10 @@ __all__ = [
     "require",
     "require_input",
     "TopomarkFault",
+    "AlgorithmStopped",
+    "AlgorithmFailed",
+    "LimitReached",
+    "OUTCOMES",
     "MAX_MESSAGE",
     "bounded",
     "EXIT_OK",
@@ -124,6 +128,40 @@ class TopomarkFault(TopomarkError, RuntimeError):
 
     def __init__(self, message: str):
         super().__init__(message)
+
+
+OUTCOMES = ("correct", "wrong-map", "failed", "limit")
+"""How an exploration ends (issue 11): the map is ``correct`` (extended-isomorphic to the world), or a
+``wrong-map``; or the algorithm stopped — ``failed`` (it says it cannot go on, and why: §5.1's walk found no
+lighthouse, §6.2's markers ran out) or ``limit`` (a cap on steps or models was reached — the thesis's "never
+terminates", §5.2.2).  Only ``correct`` exits 0; the others exit 1."""
+
+
+class AlgorithmStopped(TopomarkError):
+    """An explorer stops before it has a map.  Not a fault of topomark, and not bad input: an outcome.
+
+    Raised by an explorer (through the robot interface it knows only what it sensed); the driver
+    (:func:`topomark.reference.explore.explore`) turns it into the run's outcome, :attr:`outcome`, with
+    :attr:`reason` in words.
+    """
+
+    outcome = "failed"
+
+    def __init__(self, reason: str):
+        self.reason = bounded(str(reason))
+        super().__init__(self.reason)
+
+
+class AlgorithmFailed(AlgorithmStopped):
+    """The algorithm reports that it cannot go on (e.g. no lighthouse within the walk limit, §5.1)."""
+
+    outcome = "failed"
+
+
+class LimitReached(AlgorithmStopped):
+    """A cap on steps, live models or cost was reached before the algorithm terminated (§5.2.2)."""
+
+    outcome = "limit"
 
 
 def require(condition: bool, message: str) -> None:
