@@ -15,6 +15,16 @@ checks run is named by the algorithm's registry entry
 * ``lemma-1`` — each hypothesis's pair (M, P^E) is unique in its iteration;
 * ``marker`` — no marker was dropped, moved or picked up after the start
   (the lighthouse is immovable; the kit itself is enforced by the simulator);
+* ``marker-budget`` — never more markers in the world (counts summed) than
+  the algorithm's stated marker bound for this n and m (its registry
+  entry's ``marker_bound_fn``), after every step;
+* ``models`` — for an explorer holding several models (§5.2.2, Algorithm
+  5.1): after every step one of ``explorer.models()`` — (map, believed pose)
+  pairs, each naming the start place as ``explorer.position`` named it at
+  the start — still maps into the world with its pose on the robot's true
+  state.  The truth voided by topomark's own explorer is a fault of topomark
+  (:class:`~topomark.spec.errors.TopomarkFault`, exit 3; issue 11); by an
+  explorer under test (``registry.variant``), a check failure;
 * ``iterations`` — n − 1 non-loop and m − n + 1 loop iterations;
 * ``isomorphism`` — at termination U is empty and S ≅ G by extended
   isomorphism, every marker in the world (dropped ones included) shown in
@@ -36,9 +46,12 @@ from topomark.spec.errors import CheckFailure, TopomarkFault, Violation
 from topomark.spec.invariants import IncrementalInvariants, check_I1, check_I2, check_lemma1, correspondence
 from topomark.spec.isomorphism import anchored, verify_witness
 
+from .algorithmspec import CHECKS
+
 __all__ = ["Checker", "ALL_CHECKS"]
 
 ALL_CHECKS = ("pose", "I-1", "I-2", "bound-function", "lemma-1", "marker", "iterations", "isomorphism")
+"""Algorithm 3.1's checks, the default; :data:`~topomark.reference.algorithmspec.CHECKS` lists every one."""
 
 
 class Checker:
@@ -50,8 +63,8 @@ class Checker:
 
     MODES = ("incremental", "full", "both")
 
-    def __init__(self, simulator, mode: str = "incremental", checks=ALL_CHECKS):
-        unknown = set(checks) - set(ALL_CHECKS)
+    def __init__(self, simulator, mode: str = "incremental", checks=ALL_CHECKS, spec=None):
+        unknown = set(checks) - set(CHECKS)
         if unknown:
             raise ValueError(f"unknown checks {sorted(unknown)}")
         self.sim = simulator
@@ -63,6 +76,7 @@ class Checker:
         self.checks = frozenset(checks)
         self.anchor = None
         self.incremental: IncrementalInvariants | None = None
+        self.spec = spec  # the algorithm's registry entry: its marker bound, and whether it is topomark's own
 
     def _fail(self, it, violation: Violation) -> None:
         detail = f"iteration {it}" + (f"; {violation.detail}" if violation.detail else "")
@@ -81,6 +95,7 @@ class Checker:
         self.anchor = (explorer.position, self.sim.state)
         if self.checks & {"pose", "I-1", "I-2"}:
             self.check_state(explorer, 0)
+        self.check_kit_use(explorer, 0)
 
     def after_iteration(self, explorer, it) -> None:
         n = it.number
@@ -97,6 +112,34 @@ class Checker:
                 "immovable marker", "world markers", str(self.markers), str(self.sim.world.markers)))
         if self.checks & {"pose", "I-1", "I-2"}:
             self.check_state(explorer, n)
+        self.check_kit_use(explorer, n)
+
+    def check_kit_use(self, explorer, n: int) -> None:
+        """``marker-budget`` and ``models``, where the algorithm's entry names them."""
+        if "marker-budget" in self.checks:
+            world = self.sim.world
+            bound = self.spec.marker_bound_fn(world.n, world.m)
+            used = sum(m.count for m in world.markers)
+            self._ok(n, None if used <= bound else Violation(
+                "marker budget", "world markers", f"at most {bound} (the algorithm's stated bound)", str(used)))
+        if "models" in self.checks:
+            self.check_models(explorer, n)
+
+    def check_models(self, explorer, n: int) -> None:
+        """The true world survives among the live models (§5.2.2): one maps into it, its pose on the truth."""
+        models = list(explorer.models())
+        for S, pose in models:
+            phi = correspondence(S, self.sim.world, self.anchor)
+            if check_I1(S, self.sim.world, self.anchor, phi) is None and \
+                    phi.witness.image(S, pose) == self.sim.state:
+                self.passed += 1
+                return
+        violation = Violation("models", f"step {n}", "the true world among the live models",
+                              f"none of {len(models)} live model(s) maps into it")
+        if self.spec is not None and self.spec.own:
+            raise TopomarkFault(f"step {n}: topomark's own explorer {self.spec.name} voided the true world: "
+                                f"{violation}; please report it with the world and the seed")
+        self._fail(n, violation)
 
     def check_state(self, explorer, n: int) -> None:
         S, anchor = explorer.S, self.anchor

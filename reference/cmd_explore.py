@@ -10,9 +10,9 @@ import time
 from topomark.spec.errors import InvalidInput
 from topomark.spec.worldfile import dumps_world
 
-from .explore import ALGORITHMS, explore, prepare_world
+from .explore import check_run, explore
 from .explorers.lighthouses import LIGHTHOUSES, lighthouse
-from .registry import algorithm_spec
+from .registry import REGISTRY, algorithm_spec, parameters
 from .generators import DEFAULT_WORLD
 from .outputs import check_output, write_output
 from .policies import EDGE_POLICIES, HYPOTHESIS_POLICIES, PATH_POLICIES, Policies
@@ -29,10 +29,15 @@ def register(sub) -> None:
                     "with 2 cells removed) and verify the map. Exit 0 when the map is verified isomorphic, 1 on an "
                     "invariant violation, 2 on bad input.")
     p.add_argument("world", nargs="?", metavar="WORLD_OR_GENERATOR")
-    p.add_argument("--algorithm", default="basic", help=f"one of: {', '.join(ALGORITHMS)} (default basic; "
+    p.add_argument("--algorithm", default="basic", help=f"one of: {', '.join(REGISTRY)} (default basic; "
                                                           "topomark algorithms lists them)")
-    p.add_argument("--lighthouse", default="directional-vertex",
-                   help=f"how v0 is marked: {', '.join(LIGHTHOUSES)} (default directional-vertex, Algorithm 3.1's)")
+    p.add_argument("--lighthouse", default=None,
+                   help=f"how v0 is marked: {', '.join(LIGHTHOUSES)} (default directional-vertex, Algorithm 3.1's; "
+                        "for Algorithm 3.1 and the Chapter 4 enhancements only)")
+    for param in parameters().values():
+        takers = ", ".join(s.name for s in REGISTRY.values() if param in s.parameters)
+        p.add_argument(f"--{param.name}", dest=f"param_{param.name.replace('-', '_')}", metavar="VALUE",
+                       help=f"{param.help} (for {takers}; default {param.default})")
     p.add_argument("--policy", action="append", default=[], metavar="KIND=NAME",
                    help=f"edge={'|'.join(EDGE_POLICIES)}, hypothesis={'|'.join(HYPOTHESIS_POLICIES)}, "
                         f"path={'|'.join(PATH_POLICIES)}; a bare NAME sets the edge policy (repeatable)")
@@ -122,8 +127,8 @@ TAIL = 8  # trace records shown before a violation's end record
 
 def explore_command(args) -> int:
     policies = parse_policies(args.policy)
-    if args.algorithm not in ALGORITHMS:
-        raise InvalidInput(f"unknown algorithm {args.algorithm!r} (choose from {', '.join(ALGORITHMS)})")
+    spec = algorithm_spec(args.algorithm)
+    options = {name: getattr(args, f"param_{name.replace('-', '_')}") for name in parameters()}
     for path in (args.trace, args.map):  # before the run: a typo must not cost a long exploration
         if path:
             check_output(path)
@@ -133,17 +138,18 @@ def explore_command(args) -> int:
         world, label = DEFAULT_WORLD(), "built-in default world (5x5 lattice, 2 cells removed, seed 1)"
     else:
         world, label = resolve_world(args.world, args.seed), args.world
-    light = lighthouse(args.lighthouse)
-    prepare_world(world, light, args.algorithm)  # refused before the trace file is started
+    light = lighthouse(args.lighthouse) if args.lighthouse is not None else None
+    check_run(world, spec, light, options)  # refused before the trace file is started
     started = time.monotonic()
     ring = RingSink(TAIL + 1)
     with contextlib.ExitStack() as stack:
         sink = TeeSink(stack.enter_context(FileSink(args.trace)), ring) if args.trace else ring
-        outcome = explore(world, args.algorithm, policies, check=not args.no_check, sink=sink,
+        outcome = explore(world, spec, policies, check=not args.no_check, sink=sink,
                           progress=_Progress(not (args.quiet or args.json)), check_mode=args.check_mode,
-                          keep_hypotheses=False, lighthouse=light)
-    if args.map and outcome.violation is None and outcome.explorer.S.complete():
-        write_output(args.map, dumps_world(outcome.explorer.S.to_world()))
+                          keep_hypotheses=False, lighthouse=light, options=options)
+    S = getattr(outcome.explorer, "S", None)
+    if args.map and outcome.violation is None and S is not None and S.complete():
+        write_output(args.map, dumps_world(S.to_world()))
     last = ring.records[:-1]  # the records before the end record
     data = {"world": label, "policies": policies.to_json(), "algorithm": args.algorithm, **outcome.summary(),
             "checked": not args.no_check}
@@ -153,21 +159,27 @@ def explore_command(args) -> int:
     if args.json:
         print(json.dumps(data, indent=1, sort_keys=True))
     else:
-        print(f"explored {label} with {algorithm_spec(args.algorithm).thesis} ({args.algorithm}; "
-              f"lighthouse {light.name}; policies " + ", ".join(f"{k}={v}" for k, v in policies.to_json().items())
-              + ")")
-        print(_table(outcome, started))
-        if outcome.violation is not None:
-            print(f"VIOLATION: {outcome.violation}")
-            print("the trace up to that point (last events; --trace FILE keeps all of it):")
-            print("\n".join(f"  {line}" for line in tail))
-        elif args.no_check:
-            print("not checked (--no-check): the map was not verified")
-        else:
-            print("verified: the map is extended-isomorphic to the world (markers included); "
-                  "I-1, I-2, t, Lemma 1 held after every iteration")
+        _print_report(args, spec, label, policies, outcome, started, tail)
+    if outcome.violation is not None and args.json:
+        print(f"topomark: check failed: {outcome.violation}", file=sys.stderr)
+    return 0 if outcome.outcome == "correct" or (args.no_check and outcome.claimed == "correct") else 1
+
+
+def _print_report(args, spec, label: str, policies, outcome, started: float, tail: list[str]) -> None:
+    """The human-readable report: what ran, the table, and the outcome — claimed by the algorithm, judged by
+    the checker (issue 11: ``correct``, ``wrong-map``, ``failed``, ``limit``)."""
+    setup = f"lighthouse {outcome.lighthouse}" if spec.uses_lighthouse else f"kit: {outcome.kit}"
+    print(f"explored {label} with {spec.thesis} ({args.algorithm}; {setup}; policies "
+          + ", ".join(f"{k}={v}" for k, v in policies.to_json().items()) + ")")
+    print(_table(outcome, started))
     if outcome.violation is not None:
-        if args.json:
-            print(f"topomark: check failed: {outcome.violation}", file=sys.stderr)
-        return 1
-    return 0
+        print(f"VIOLATION: {outcome.violation}")
+        print("the trace up to that point (last events; --trace FILE keeps all of it):")
+        print("\n".join(f"  {line}" for line in tail))
+    elif outcome.claimed != "correct":
+        print(f"outcome: {outcome.outcome} — the algorithm stopped: {outcome.reason}")
+    elif args.no_check:
+        print("not checked (--no-check): the map was not verified")
+    else:
+        print("verified: the map is extended-isomorphic to the world (markers included); "
+              f"{', '.join(c for c in spec.checks if c != 'isomorphism')} held after every step")

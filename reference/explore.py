@@ -26,7 +26,8 @@ import json
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
-from topomark.spec.errors import CheckFailure, InvalidInput
+from topomark.spec.errors import AlgorithmStopped, CheckFailure, InvalidInput
+from topomark.spec.kit import Kit
 from topomark.spec.marker import EdgeMarker, VertexMarker
 from topomark.spec.markerlayer import MarkerLayer, apply_op
 from topomark.spec.world import World
@@ -39,10 +40,10 @@ from .algorithms import ALGORITHMS
 from .registry import AlgorithmSpec, algorithm_spec
 from .policies import Policies
 from .simulator import Simulator
-from .tracefamilies import family_of
+from .tracefamilies import FAMILIES, family_of
 from .tracesink import ListSink, TraceSink, trace_line
 
-__all__ = ["ALGORITHMS", "Outcome", "explore", "prepare_world", "dump_trace", "TRACE_FORMAT", "TRACE_FORMAT_2"]
+__all__ = ["ALGORITHMS", "Outcome", "explore", "check_run", "prepare_world", "dump_trace", "TRACE_FORMAT", "TRACE_FORMAT_2"]
 
 TRACE_FORMAT = "topomark/trace@1"
 TRACE_FORMAT_2 = "topomark/trace@2"
@@ -63,17 +64,21 @@ class Outcome:
     checks: int
     by_purpose: dict[str, int]
     upper_bound: int
-    lighthouse: str = "directional-vertex"
+    lighthouse: str | None = "directional-vertex"
     marker_operations: dict[str, int] = field(default_factory=dict)
     explorer: Any = None
     trace: list[dict] = field(default_factory=list)
     violation: Any = None
+    outcome: str = "correct"
+    claimed: str = "correct"
+    reason: str | None = None
+    kit: str = ""
 
     def summary(self) -> dict[str, Any]:
         out = {k: getattr(self, k) for k in (
             "n", "m", "cost", "verified", "iterations", "loop_iterations", "nonloop_iterations", "hypotheses",
             "hypotheses_rejected", "hypotheses_confirmed", "checks", "by_purpose", "upper_bound", "lighthouse",
-            "marker_operations")}
+            "marker_operations", "outcome", "claimed", "reason")}
         out["cost_per_m"] = round(self.cost / self.m, 3)
         if self.violation is not None:
             out["violation"] = self.violation.to_json()
@@ -132,19 +137,19 @@ def _expect_marker(marker, want, world: World, lighthouse: Lighthouse, algorithm
 def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: Policies | None = None,
             check: bool = True, record: bool = True, progress: Callable[[int, int, int], None] | None = None,
             check_mode: str = "incremental", sink: TraceSink | None = None, keep_hypotheses: bool = True,
-            lighthouse: "str | Lighthouse" = "directional-vertex") -> Outcome:
+            lighthouse: "str | Lighthouse | None" = None, options: dict[str, Any] | None = None) -> Outcome:
     """Explore ``world`` and return the outcome; a violated check ends the run with ``outcome.violation`` set.
 
     The trace records go to ``sink`` as they are made; without one, ``record=True`` keeps them all in
     ``outcome.trace`` and ``record=False`` makes none.  ``keep_hypotheses=False`` drops each iteration's
     hypotheses (their M, P^E and perceptions) from ``outcome.explorer.iterations`` once they are traced,
     checked and counted, so memory stays proportional to the world.  ``progress(explored_edges, m, cost)``
-    is called after every iteration.
+    is called after every iteration.  ``lighthouse`` (default ``directional-vertex``) is for the lighthouse
+    algorithms; ``options`` (name ↦ value) for a kit algorithm's :class:`~topomark.reference.algorithmspec.Parameter`.
     """
     spec = algorithm if isinstance(algorithm, AlgorithmSpec) else algorithm_spec(algorithm)
-    light = lighthouse if isinstance(lighthouse, Lighthouse) else lighthouse_named(lighthouse)
+    run = _setup(world, spec, lighthouse, options or {})
     policies = policies or Policies()
-    bare, state = prepare_world(world, light, spec.name)
     if check_mode not in Checker.MODES:
         raise InvalidInput(f"unknown check mode {check_mode!r} (choose from {', '.join(Checker.MODES)})")
     if sink is None and record:
@@ -153,7 +158,8 @@ def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: 
     emit = sink.emit if sink is not None else None
     tally = _Tally()
     if emit:
-        emit(trace_header(spec.name, policies, light, world))
+        emit(trace_header(spec.name, policies, run.light, world, run.kit, spec.family))
+    layer = FAMILIES[spec.family].events
 
     def on_move(motion, purpose, sig, true_state):
         if emit:
@@ -162,13 +168,13 @@ def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: 
 
     def on_op(event):
         if emit:
-            emit(op_record(event, light))
+            emit(op_record(event, run.light))
 
-    sim = Simulator(bare, state, light.kit, listener=on_move, op_listener=on_op)
-    checker = Checker(sim, check_mode, spec.checks) if check else None
+    sim = Simulator(run.bare, run.state, run.kit, listener=on_move, op_listener=on_op)
+    checker = Checker(sim, check_mode, spec.checks, spec) if check else None
 
     def observer(explorer, it):
-        if emit:
+        if emit and "iteration" in layer:
             emit({"event": "iteration", **it.to_json()})
         tally.add(it)  # counted before the check: an iteration that fails it is in explorer.iterations too
         if checker is not None:
@@ -176,20 +182,63 @@ def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: 
         if not keep_hypotheses:
             it.hypotheses = []
         if progress is not None:
-            progress(explorer.S.explored_edges(), world.m, sim.cost)
+            progress(_explored(explorer), world.m, sim.cost)
 
-    explorer = spec.factory(sim.robot(), policies, observer, light)
-    violation = _drive(explorer, checker)
-    outcome = _outcome(world, sim, explorer, checker, violation, trace, tally)
+    explorer = spec.factory(sim.robot(), policies, observer, run.light if spec.uses_lighthouse else run.options)
+    violation, stopped = _drive(explorer, checker)
+    outcome = _outcome(world, sim, explorer, checker, violation, trace, tally, spec, stopped)
     if emit:
         emit({"event": "end", "cost": sim.cost, "verified": outcome.verified,
               "violation": violation.to_json() if violation else None})
     return outcome
 
 
-def _drive(explorer, checker: Checker | None):
+@dataclass(frozen=True)
+class _Run:
+    """What a run starts from: the world without markers, the start state, the kit, the lighthouse (lighthouse
+    algorithms) or the checked options (kit algorithms)."""
+
+    bare: World
+    state: tuple[str, int]
+    kit: Kit
+    light: Lighthouse | None
+    options: dict[str, Any]
+
+
+def check_run(world: World, spec: AlgorithmSpec, lighthouse: "str | Lighthouse | None" = None,
+              options: dict | None = None) -> None:
+    """Refuse, as bad input, a world, lighthouse or option the algorithm cannot run with (before anything runs)."""
+    _setup(world, spec, lighthouse, options or {})
+
+
+def _setup(world: World, spec: AlgorithmSpec, lighthouse: "str | Lighthouse | None", options: dict) -> _Run:
+    """Check the world, lighthouse and options against the algorithm (bad input before anything runs)."""
+    opts = spec.parse_options(options)
+    if spec.uses_lighthouse:
+        light = lighthouse if isinstance(lighthouse, Lighthouse) else lighthouse_named(lighthouse or
+                                                                                       "directional-vertex")
+        bare, state = prepare_world(world, light, spec.name)
+        return _Run(bare, state, light.kit, light, opts)
+    if lighthouse is not None:
+        name = lighthouse if isinstance(lighthouse, str) else lighthouse.name
+        raise InvalidInput(f"the algorithm {spec.name} takes no lighthouse (given {name!r}): it carries its own kit, "
+                           f"{spec.kit.describe()}")
+    if world.markers:
+        raise InvalidInput(f"the algorithm {spec.name} drops its own markers: the world file must carry none "
+                           f"(it carries {len(world.markers)})")
+    kit = spec.kit_for(world.n, world.m, opts)
+    return _Run(World(world.rotation, (), world.start), world.start_state(), kit, None, opts)
+
+
+def _explored(explorer) -> int:
+    """Edges explored so far, for the progress bar (0 for an explorer with no single map)."""
+    S = getattr(explorer, "S", None)
+    return S.explored_edges() if S is not None else 0
+
+
+def _drive(explorer, checker: Checker | None) -> tuple[Any, AlgorithmStopped | None]:
     """The explorer contract: ``start``, then ``step`` until ``done``; the checker after the start and at the
-    end.  Returns the first violation, or None."""
+    end.  Returns the first violation (or None) and how the algorithm stopped early (or None)."""
     try:
         explorer.start()
         if checker is not None:
@@ -199,25 +248,30 @@ def _drive(explorer, checker: Checker | None):
         if checker is not None:
             checker.at_end(explorer)
     except CheckFailure as exc:
-        return exc.violation
-    return None
+        return exc.violation, None
+    except AlgorithmStopped as stop:
+        return None, stop
+    return None, None
 
 
-def trace_header(algorithm: str, policies: Policies, light: Lighthouse, world: World) -> dict:
+def trace_header(algorithm: str, policies: Policies, light: Lighthouse | None, world: World,
+                 kit: Kit | None = None, family: str | None = None) -> dict:
     """The trace's first record: trace@1 for Algorithm 3.1's own lighthouse (byte-for-byte as before trace@2
-    existed), trace@2 with the algorithm's family, the lighthouse and its kit for every other one."""
+    existed), trace@2 with the algorithm's family, the lighthouse (null for a kit algorithm) and the kit for
+    every other run."""
     header = {"event": "header", "format": TRACE_FORMAT, "algorithm": algorithm, "policies": policies.to_json(),
               "n": world.n, "m": world.m}
-    if light.name != "directional-vertex":
-        header.update(format=TRACE_FORMAT_2, family=family_of(algorithm).name, lighthouse=light.name,
-                      kit=light.kit.to_json())
+    if light is None or light.name != "directional-vertex":
+        header.update(format=TRACE_FORMAT_2, family=family or family_of(algorithm).name,
+                      lighthouse=None if light is None else light.name,
+                      kit=(light.kit if kit is None else kit).to_json())
     return header
 
 
-def op_record(event: dict, light: Lighthouse) -> dict:
+def op_record(event: dict, light: Lighthouse | None) -> dict:
     """A marker operation from the simulator's log (streamed as the robot does it, between its moves): trace@2's
     ``op`` record, or trace@1's ``drop`` for the directional vertex marker, the only one trace@1 can say."""
-    if light.name == "directional-vertex":
+    if light is not None and light.name == "directional-vertex":
         return {"event": "drop", "direction": event.get("direction"), "signature": event["signature"]}
     return {"event": "op", **event}
 
@@ -238,15 +292,22 @@ class _Tally:
 
 
 def _outcome(world: World, sim: Simulator, explorer, checker: Checker | None, violation, trace: list[dict],
-             tally: _Tally) -> Outcome:
-    """The counts the CLI reports, from the finished (or stopped) run."""
+             tally: _Tally, spec: AlgorithmSpec, stopped: AlgorithmStopped | None) -> Outcome:
+    """The counts the CLI reports, from the finished (or stopped) run, and its outcome (``spec.errors.OUTCOMES``):
+    what the algorithm claimed, and what the checker, which sees the truth, says it is."""
+    claimed = stopped.outcome if stopped else "correct"
+    verified = checker is not None and violation is None and stopped is None
+    judged = claimed if stopped else ("correct" if verified else "wrong-map" if checker is not None else "unchecked")
+    light = getattr(explorer, "lighthouse", None)
+    bound = upper_bound(world.n, world.m) if spec.uses_lighthouse else spec.bound_for(world.n, world.m)
     return Outcome(
-        n=world.n, m=world.m, cost=sim.cost, verified=checker is not None and violation is None,
+        n=world.n, m=world.m, cost=sim.cost, verified=verified,
         iterations=tally.iterations, loop_iterations=tally.loop, nonloop_iterations=tally.nonloop,
         hypotheses=tally.hypotheses, hypotheses_rejected=tally.rejected, hypotheses_confirmed=tally.confirmed,
         checks=checker.passed if checker else 0, by_purpose=dict(sorted(sim.by_purpose.items())),
-        upper_bound=upper_bound(world.n, world.m), lighthouse=explorer.lighthouse.name,
-        marker_operations=dict(sorted(sim.operations.items())), explorer=explorer, trace=trace, violation=violation)
+        upper_bound=bound, lighthouse=None if light is None else light.name,
+        marker_operations=dict(sorted(sim.operations.items())), explorer=explorer, trace=trace, violation=violation,
+        outcome=judged, claimed=claimed, reason=stopped.reason if stopped else None, kit=sim.kit.describe())
 
 
 def dump_trace(trace: list[dict]) -> str:

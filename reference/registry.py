@@ -30,68 +30,23 @@ topomark.spec.errors.InvalidInput: unknown algorithm 'nope' (choose from basic, 
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
-from typing import Any, Callable
+import importlib
+import pkgutil
+from dataclasses import replace
 
 from topomark.spec.errors import InvalidInput
-from topomark.spec.kit import Kit
 
-from . import algorithms
+from . import registrations
+from .algorithmspec import CHECKS, AlgorithmSpec, Parameter
 from .bounds import upper_bound
 from .explorers.lighthouses import LIGHTHOUSES
 from .explorers.compositions import ENHANCEMENTS
 
-__all__ = ["AlgorithmSpec", "REGISTRY", "algorithm_spec", "variant", "CHECKS"]
-
-CHECKS: dict[str, str] = {
-    "pose": "the explorer's believed position is the robot's true state (φ anchored at the believed pose)",
-    "I-1": "S is extended-isomorphic to the subgraph of G it maps onto (§3.4, I-1)",
-    "I-2": "U holds exactly the unexplored edges at known vertices, with their exit indices (§3.4, I-2)",
-    "bound-function": "t = |E_G| − |E_S| decreases by one per iteration (§3.4)",
-    "lemma-1": "each hypothesis's (M, P^E) is unique (§3.4, Lemma 1)",
-    "marker": "no marker is dropped, moved or picked up after the lighthouse is established (the kit itself is "
-              "enforced by the simulator)",
-    "iterations": "n − 1 non-loop and m − n + 1 loop iterations (§3.1.3)",
-    "isomorphism": "the final map is extended-isomorphic to the world, markers included (§3.1.3)",
-}
-"""Every check the checker knows, by name, with the condition it states."""
+__all__ = ["AlgorithmSpec", "Parameter", "REGISTRY", "algorithm_spec", "variant", "CHECKS", "parameters"]
 
 _ALGORITHM_3_1_CHECKS = ("pose", "I-1", "I-2", "bound-function", "lemma-1", "marker", "iterations", "isomorphism")
 _POLICY_OPTIONS = ("policy edge=nearest|fifo|lifo", "policy hypothesis=fifo|lifo|shortest", "policy path=shortest|dfs",
                    "lighthouse " + "|".join(LIGHTHOUSES))
-
-
-@dataclass(frozen=True)
-class AlgorithmSpec:
-    """One registered algorithm; ``factory(robot, policies, observer)`` builds its explorer."""
-
-    name: str
-    thesis: str
-    kit: Kit
-    bound: str | None
-    markers: str
-    deterministic: bool
-    options: tuple[str, ...]
-    checks: tuple[str, ...]
-    bound_fn: Callable[[int, int], int] | None = None
-    explorer: type | None = None  # an explorer class of one's own (see :func:`variant`); else the registered one
-
-    @property
-    def factory(self) -> Callable[..., Any]:
-        """The explorer class (a registered one is looked up at call time, so a test may substitute a faulty one)."""
-        return self.explorer if self.explorer is not None else algorithms.ALGORITHMS[self.name]
-
-    def bound_for(self, n: int, m: int) -> int | None:
-        """The cost bound evaluated on a world of n vertices and m edges, or None if the thesis states none."""
-        return None if self.bound_fn is None else self.bound_fn(n, m)
-
-    def to_json(self) -> dict[str, Any]:
-        """The listing of ``topomark algorithms --json``; ``kit`` is the default lighthouse's, ``lighthouses`` the
-        kits the algorithm runs with."""
-        return {"name": self.name, "thesis": self.thesis, "kit": self.kit.to_json(), "bound": self.bound,
-                "markers": self.markers, "deterministic": self.deterministic, "options": list(self.options),
-                "checks": list(self.checks),
-                "lighthouses": {h.name: {"thesis": h.thesis, "kit": h.kit.to_json()} for h in LIGHTHOUSES.values()}}
 
 
 _LIGHTHOUSE = LIGHTHOUSES["directional-vertex"].kit
@@ -107,11 +62,37 @@ def _enhancement(name: str) -> AlgorithmSpec:
                          upper_bound if inherits else None)
 
 
+def _registered() -> dict[str, AlgorithmSpec]:
+    """Every module of :mod:`topomark.reference.registrations` (found by listing the folder, so a new algorithm
+    family adds a module and edits nothing else) contributes its ``SPECS``, in module-name order."""
+    found: dict[str, AlgorithmSpec] = {}
+    for info in sorted(pkgutil.iter_modules(registrations.__path__), key=lambda i: i.name):
+        module = importlib.import_module(f"{registrations.__name__}.{info.name}")
+        for spec in getattr(module, "SPECS", ()):
+            if spec.name in found:
+                raise ValueError(f"algorithm {spec.name!r} is registered twice ({info.name})")
+            found[spec.name] = spec
+    return found
+
+
 REGISTRY: dict[str, AlgorithmSpec] = {
     "basic": AlgorithmSpec("basic", "§3.3, Algorithm 3.1", _LIGHTHOUSE, _BOUND_3, "1", True, _POLICY_OPTIONS,
                            _ALGORITHM_3_1_CHECKS, upper_bound),
     **{name: _enhancement(name) for name in ENHANCEMENTS},
 }
+for _name, _spec in _registered().items():
+    if _name in REGISTRY:
+        raise ValueError(f"algorithm {_name!r} is registered twice")
+    REGISTRY[_name] = _spec
+
+
+def parameters() -> dict[str, Parameter]:
+    """Every option any registered algorithm takes, by name (the CLI offers each as ``--NAME``)."""
+    out: dict[str, Parameter] = {}
+    for spec in REGISTRY.values():
+        for p in spec.parameters:
+            out.setdefault(p.name, p)
+    return out
 
 
 def variant(name: str, explorer: type, like: str = "basic") -> AlgorithmSpec:
@@ -120,7 +101,7 @@ def variant(name: str, explorer: type, like: str = "basic") -> AlgorithmSpec:
     For trying a modification of an algorithm under the full checker
     (``explore(world, variant("mine", MyExplorer))``) without registering it.
     """
-    return replace(algorithm_spec(like), name=name, explorer=explorer)
+    return replace(algorithm_spec(like), name=name, explorer=explorer, own=False)
 
 
 def algorithm_spec(name: str) -> AlgorithmSpec:

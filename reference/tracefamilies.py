@@ -67,5 +67,6 @@ FAMILIES: dict[str, Family] = {f.name: f for f in (
 
 
 def family_of(algorithm: str) -> Family:
-    """The family a registered algorithm's traces are written in (every one is Algorithm 3.1's, for now)."""
-    return FAMILIES["algorithm-3.1"]
+    """The family an algorithm's traces are written in: Algorithm 3.1's for it and the Chapter 4 enhancements,
+    the robot layer alone for every other algorithm (until its family defines an algorithm layer)."""
+    return FAMILIES["algorithm-3.1"] if algorithm in ALGORITHMS else FAMILIES["robot"]
