@@ -26,7 +26,7 @@ import json
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
-from topomark.spec.errors import AlgorithmStopped, CheckFailure, InvalidInput
+from topomark.spec.errors import AlgorithmStopped, CheckFailure, InvalidInput, OutOfMarkers
 from topomark.spec.kit import Kit
 from topomark.spec.marker import EdgeMarker, VertexMarker
 from topomark.spec.markerlayer import MarkerLayer, apply_op
@@ -101,8 +101,8 @@ def prepare_world(world: World, lighthouse: Lighthouse = LIGHTHOUSES["directiona
                            f"{lighthouse.min_degree}; the start vertex {v0!r} has degree {bare.degree(v0)}")
     if world.markers:
         layer = MarkerLayer(bare)
-        for op in lighthouse.ops:
-            apply_op(layer, state, op)
+        for place, op in lighthouse.placed_ops(bare, state):  # where the robot does each (Figure 3.21(b) moves)
+            apply_op(layer, place, op)
         expected = {_place(m): m for m in layer.markers()}
         for marker in world.markers:
             _expect_marker(marker, expected.get(_place(marker)), world, lighthouse, algorithm, v0, facing)
@@ -236,7 +236,7 @@ def _explored(explorer) -> int:
     return S.explored_edges() if S is not None else 0
 
 
-def _drive(explorer, checker: Checker | None) -> tuple[Any, AlgorithmStopped | None]:
+def _drive(explorer, checker: Checker | None) -> tuple[Any, AlgorithmStopped | OutOfMarkers | None]:
     """The explorer contract: ``start``, then ``step`` until ``done``; the checker after the start and at the
     end.  Returns the first violation (or None) and how the algorithm stopped early (or None)."""
     try:
@@ -247,6 +247,8 @@ def _drive(explorer, checker: Checker | None) -> tuple[Any, AlgorithmStopped | N
             explorer.step()
         if checker is not None:
             checker.at_end(explorer)
+    except OutOfMarkers as stop:  # before CheckFailure, its base: the failed outcome, not a violation
+        return None, stop
     except CheckFailure as exc:
         return exc.violation, None
     except AlgorithmStopped as stop:
@@ -292,7 +294,7 @@ class _Tally:
 
 
 def _outcome(world: World, sim: Simulator, explorer, checker: Checker | None, violation, trace: list[dict],
-             tally: _Tally, spec: AlgorithmSpec, stopped: AlgorithmStopped | None) -> Outcome:
+             tally: _Tally, spec: AlgorithmSpec, stopped: AlgorithmStopped | OutOfMarkers | None) -> Outcome:
     """The counts the CLI reports, from the finished (or stopped) run, and its outcome (``spec.errors.OUTCOMES``):
     what the algorithm claimed, and what the checker, which sees the truth, says it is."""
     claimed = stopped.outcome if stopped else "correct"

@@ -12,7 +12,7 @@ from __future__ import annotations
 import json
 from collections import Counter
 
-from topomark.spec.errors import AlgorithmFailed, CheckFailure, InvalidInput, Violation
+from topomark.spec.errors import CheckFailure, InvalidInput, OutOfMarkers, Violation
 from topomark.spec.kit import Kit, MarkerOp
 from topomark.spec.marker import VertexMarker
 from topomark.spec.markerlayer import MarkerLayer, apply_op
@@ -96,12 +96,11 @@ class Simulator:
                 apply_op(self.layer, self.state, op)
             except InvalidInput as exc:
                 reason = str(exc)
-        if reason is not None and not op.pick_up and self.kit.count(op.kind) and 0 <= self.held[op.kind] < op.count \
-                and directional == self.kit.directional:
-            raise AlgorithmFailed(f"out of markers at {where}: {reason}")  # issue 12: a named outcome, not a crash
         if reason is not None:
-            raise CheckFailure(Violation("marker kit", where, f"an operation the kit allows", json.dumps(op.to_json()),
-                                         reason))
+            out = not op.pick_up and self.kit.count(op.kind) and self.held[op.kind] < op.count \
+                and directional == self.kit.directional  # issue 12: running out is a named outcome, not a crash
+            raise (OutOfMarkers if out else CheckFailure)(Violation(
+                "marker kit", where, "an operation the kit allows", json.dumps(op.to_json()), reason))
         self.held[op.kind] += op.count if op.pick_up else -op.count
         self.operations["pick_up" if op.pick_up else "drop"] += 1
         event = {"step": self.cost, **op.to_json(), "signature": str(sense(self.layer, self.state))}

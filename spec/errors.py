@@ -33,6 +33,7 @@ __all__ = [
     "AlgorithmStopped",
     "AlgorithmFailed",
     "LimitReached",
+    "OutOfMarkers",
     "OUTCOMES",
     "MAX_MESSAGE",
     "bounded",
@@ -162,6 +163,21 @@ class LimitReached(AlgorithmStopped):
     """A cap on steps, live models or cost was reached before the algorithm terminated (§5.2.2)."""
 
     outcome = "limit"
+
+
+class OutOfMarkers(CheckFailure):
+    """The robot tried to drop a marker its kit has none left of (issue 12: running out is a named outcome).
+
+    A :class:`CheckFailure` to everything that judges a robot from outside (replay, the protocol: an
+    operation the kit refuses), and the ``failed`` outcome to the driver of an exploration, with
+    :attr:`reason`.
+    """
+
+    outcome = "failed"
+
+    def __init__(self, violation: Violation):
+        super().__init__(violation)
+        self.reason = f"out of markers at {violation.where}: {violation.detail}"
 
 
 def require(condition: bool, message: str) -> None:
