@@ -73,6 +73,10 @@ class Algorithm31Layer:
         self.new_perception: str | None = None  # the perception of this iteration's new move, once made
         self.purposes: dict[str, int] = {}  # this iteration's moves by purpose
         self.invariants: IncrementalInvariants | None = None
+        self.P = None  # S as the explorer perceives it (lighthouses.Lighthouse.perceive)
+        self.raw: set[str] = set()  # v0's own signatures, for a lighthouse recognised by probing
+        self.anchor = robot.start
+        self.establishing = 0  # establish moves before v0 is established
 
     # -- the start: the lighthouse --------------------------------------------------
     def drop(self, rec: dict) -> None:
@@ -106,8 +110,14 @@ class Algorithm31Layer:
     def ready(self, where: str, before: str, expected_1: str, found_1: str) -> PartialMap:
         """S, once the lighthouse is established (a trace@2's ops, once all made, establish it here); else a
         divergence: trace@1's words ``expected_1``/``found_1``, or the lighthouse's operations ``before`` what."""
-        if self.S is None and self.trace2 and len(self.ops) == len(self.lighthouse.ops):
-            self.establish(self.ops[-1]["signature"])
+        light = self.lighthouse
+        if self.S is None and self.trace2 and len(self.ops) == len(light.ops):
+            motions = sum(isinstance(x, int) for x in light.script)
+            if light.script and self.establishing != motions:
+                diverge(where, f"the {light.name} lighthouse's {motions} establish move(s) (its script)",
+                        str(self.establishing), check="marker")
+            moved = light.script or light.search  # v0 is where the robot stands now, not where it dropped last
+            self.establish(str(self.robot.robot.sense()) if moved else self.ops[-1]["signature"])
         if self.S is None and not self.trace2:
             diverge(where, expected_1, found_1)
         if self.S is None:
@@ -121,17 +131,33 @@ class Algorithm31Layer:
         S = PartialMap()
         v0 = S.add_vertex(degree)
         S.mark_as_sensed(v0, signature(sensed, "v0"), 0)
-        self.table, bad = back_link_table(S, v0, f"v0 (lighthouse {self.lighthouse.name})")
+        self.P = self.lighthouse.perceive(S)  # a probing lighthouse's v0 as the explorer perceives it
+        self.table, bad = back_link_table(self.P, v0, f"v0 (lighthouse {self.lighthouse.name})")
         if bad is not None:
             raise Diverged(bad)
+        self.raw = {str(signature_at(S, v0, e)) for e in range(degree)} if self.lighthouse.probing else set()
+        self.anchor = self.robot.sim.state  # φ: map v0 exit 0 ↦ the robot's state once v0 is established
         S.unexplored = [(v0, i) for i in range(degree)]
         self.S = S
 
     # -- the loop body ---------------------------------------------------------------
     def purpose(self, purpose: str, where: str) -> None:
-        """The move's purpose fits the loop body: travel*, then the one new edge, then the rest (lines 5-28)."""
+        """The move's purpose fits the loop body: travel*, then the one new edge, then the rest (lines 5-28);
+        before them only the lighthouse's own ``establish``/``probe`` moves, if it moves to establish."""
+        light = self.lighthouse
+        if self.S is None and purpose in ("establish", "probe") and (light.script or light.search):
+            if purpose == "probe" and not light.search:
+                diverge(where, f"the {light.name} lighthouse's establish moves only before the first iteration",
+                        "a probe move")
+            self.establishing += purpose == "establish"
+            return
         self.ready(where, "any move", "the marker drop before any move (Algorithm 3.1 line 1)", f"a {purpose} move")
         after_new = self.new_perception is not None
+        if purpose == "establish":
+            diverge(where, "establish moves only before the first iteration (line 1)", "one after it")
+        if purpose == "probe" and not (after_new and light.probing):
+            diverge(where, "probe moves only after the new edge, for a lighthouse recognised by probing "
+                           "(Figure 3.21(b), §5.1)", f"a probe move ({light.name})")
         if purpose == "new" and after_new:
             diverge(where, f"one new move in iteration {self.iterations + 1}", "a second new move")
         if purpose == "travel" and after_new:
@@ -158,7 +184,8 @@ class Algorithm31Layer:
         if self.new_perception is None:
             diverge(it, "the new move (purpose \"new\", line 7) before its iteration record", "none")
         sig = signature(rec["signature"], where)
-        if rec["signature"] != self.new_perception:
+        probed = sig in self.table and self.new_perception in self.raw  # v0, perceived after probing
+        if rec["signature"] != self.new_perception and not probed:
             diverge(it, f"v_u's signature {self.new_perception} (perceived on the new edge)", rec["signature"])
         self.claims(rec, sig, it)
         e = tuple(rec["edge"])
@@ -167,14 +194,14 @@ class Algorithm31Layer:
         S.unexplored.remove(e)
         # H is judged on S and U as they were before the join, reported after I-1/I-2: a wrong join outranks
         # records that contradict it.
-        false = None if rec["by_marker"] else check_hypotheses(S, rec, sig, self.policies, self.enhancement, it,
+        false = None if rec["by_marker"] else check_hypotheses(self.P, rec, sig, self.policies, self.enhancement, it,
                                                                where)
         self.new_perception, self.purposes = None, {}
         self.join(rec, sig, it)
         if "unexplored" in rec:
             S.unexplored = [tuple(d) for d in rec["unexplored"]]
         if self.invariants is None:
-            self.invariants = IncrementalInvariants(S, self.robot.sim.world, ((0, 0), self.robot.start))
+            self.invariants = IncrementalInvariants(S, self.robot.sim.world, ((0, 0), self.anchor))
         bad = self.invariants.update()
         if bad is not None:
             raise Diverged(Violation(bad.check, bad.where, bad.expected, bad.found,

@@ -21,7 +21,9 @@ from topomark.spec.signature import Signature
 
 __all__ = ["Robot", "PURPOSES"]
 
-PURPOSES = ("travel", "new", "validation", "retrace", "expansion", "other")
+PURPOSES = ("travel", "new", "validation", "retrace", "expansion", "other", "establish", "probe")
+"""``establish``: moves that set up a lighthouse (Figure 3.21(b)'s walk to the neighbour, §5.1/§6.1's random walk);
+``probe``: out-and-back traversals that sense neighbours (§5.1's D, recognising a lighthouse whose back-link needs them)."""
 
 
 class Robot:

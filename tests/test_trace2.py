@@ -64,7 +64,9 @@ def test_explore_then_replay_verifies_every_lighthouse_and_algorithm(tmp_path, c
         ops = [r for r in records if r["event"] == "op"]
         assert [MarkerOp(r["kind"], r.get("exit"), r.get("direction"), r["count"]) for r in ops] == \
             list(LIGHTHOUSES[light].ops)
-        assert all(r["step"] == 0 for r in ops) and not any(r["event"] == "drop" for r in records)
+        script = LIGHTHOUSES[light].script or LIGHTHOUSES[light].ops  # ops at v0, or between establish moves
+        steps = [sum(isinstance(x, int) for x in script[:k]) for k, x in enumerate(script) if not isinstance(x, int)]
+        assert [r["step"] for r in ops] == steps and not any(r["event"] == "drop" for r in records)
     assert main(["replay", w, t, "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
     assert data["verified"] is True and data["layers"] == ["robot", "algorithm-3.1"]

@@ -111,17 +111,24 @@ class LighthouseExplorer:
         self.S = PartialMap()
         self.position: MapDart = (V0, 0)  # believed (map vertex, entry index)
         self.iterations: list[Iteration] = []
+        self.P = self.S  # S as the explorer perceives it (a probing lighthouse's v0 carries its virtual head)
+        self.beacon = None
         self._v0_entries: dict[Signature, int] = {}
+        self._v0_sigs: list[Signature] = []
 
     # -- lines 1-3 -----------------------------------------------------------
     def start(self) -> None:
-        """Establish the lighthouse at v0, facing exit 0 (line 1: Algorithm 3.1 drops its directional marker
-        pointing at the faced exit); S = {v0}; U = its exits."""
-        here = self.robot.sense()
-        v0 = self.S.add_vertex(here.degree)
-        self._v0_entries = self.lighthouse.establish(self.robot, self.S, v0)
-        self.S.unexplored = [(v0, i) for i in range(here.degree)]
-        self.position = (v0, 0)
+        """Establish the lighthouse at v0 (line 1: Algorithm 3.1 drops its directional marker pointing at the
+        faced exit; a searched lighthouse walks to its v0 first); S = {v0}; U = its exits; the robot at v0,
+        entered by exit 0."""
+        self.beacon = self.lighthouse.establish(self.robot, self.S)
+        self.robot = self.beacon.robot(self.robot)  # probes at v0 if its back-link needs them (Figure 3.21(b), §5.1)
+        self.P = self.beacon.perceived
+        self._v0_entries = self.beacon.table
+        degree = self.S.degree(V0)
+        self._v0_sigs = [signature_at(self.P, V0, e) for e in range(degree)]  # P^E's last perception (§3.3)
+        self.S.unexplored = [(V0, i) for i in range(degree)]
+        self.position = (V0, 0)
 
     def lighthouse_entry(self, sig: Signature) -> int | None:
         """The exit of v0 the robot entered by, if ``sig`` is the lighthouse's (§3.3: place and back-link)."""
@@ -245,7 +252,7 @@ class LighthouseExplorer:
         motions, expected, arrival = ((), (), None) if x == V0 else tails[x]
         for x, y, entry in reversed(path):
             if y == V0:
-                motions, expected, arrival = (), (signature_at(self.S, y, entry),), (y, entry)
+                motions, expected, arrival = (), (self._v0_sigs[entry],), (y, entry)
             else:
                 motions = ((toward[y] - entry) % self.S.degree(y),) + motions
                 expected = (signature_at(self.S, y, entry),) + expected

@@ -221,12 +221,12 @@ class EnhancedExplorer(LighthouseExplorer):
 
     def after_join(self, it: EnhancedIteration) -> None:
         """Records under darts just explored move on; the techniques' share of the trie goes into T."""
-        migrate(self.S, self.T, self.stats, it.joined)
+        migrate(self.P, self.T, self.stats, it.joined)
         if it.by_marker:
             return
         depth = max((t.recorded_depth(it.kind == "non-loop") for t in self.techniques), default=0)
         if depth:
-            record_trie(self.S, self.T, self.stats, self.trie, it.joined[1], depth)
+            record_trie(self.P, self.T, self.stats, self.trie, it.joined[1], depth)
 
     # -- validation on the trie --------------------------------------------------------
     def choose(self, remaining: list) -> tuple[EnhancedHypothesis, int]:

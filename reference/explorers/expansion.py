@@ -87,7 +87,7 @@ class _ExpandedSignatures(Technique):
         trie = explorer.trie
         if 0 not in trie.root.children:
             vk, i = it.edge
-            trie.add(trie.root, 0, signature_at(explorer.S, vk, i), "virtual")
+            trie.add(trie.root, 0, signature_at(explorer.P, vk, i), "virtual")
 
     def prune(self, explorer, it, found: list) -> list:
         """H keeps only hypotheses whose expanded signature agrees with everything known around v_u."""

@@ -47,19 +47,53 @@ Examples
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from typing import Any, Callable, Iterator
 
 from topomark.spec.errors import CheckFailure, InvalidInput
 from topomark.spec.kit import Kit, MarkerOp
 from topomark.spec.mapstate import PartialMap
-from topomark.spec.signature import Signature, back_link_table
+from topomark.spec.signature import Signature, back_link_table, signature_at
 
-__all__ = ["Lighthouse", "LIGHTHOUSES", "lighthouse"]
+from .lighthouse_search import after_search, search_edge, search_vertex
+from .probing import PerceivedMap, ProbingRobot, identify, perceived
+
+__all__ = ["Lighthouse", "Beacon", "LIGHTHOUSES", "lighthouse"]
+
+
+@dataclass
+class Beacon:
+    """v0 once established: how the explorer recognises and perceives it.
+
+    ``table`` maps v0's perception from each entry to that entry (§3.3: place
+    and back-link); ``perceived`` is S as the explorer perceives it (S itself,
+    or S with v0's virtual head for a probing lighthouse); ``recognise`` and
+    ``raw`` (v0's own signatures) make the robot probe on meeting v0;
+    ``walk_steps`` counts the random walk that found v0 (§5.1, §6.1).
+    """
+
+    table: dict[Signature, int]
+    perceived: Any
+    recognise: Callable | None = None
+    raw: frozenset = frozenset()
+    walk_steps: int = 0
+
+    def robot(self, robot):
+        """The robot the explorer drives: ``robot`` itself, or one that probes at v0 (:class:`ProbingRobot`)."""
+        return robot if self.recognise is None else ProbingRobot(robot, self.recognise, self.raw)
 
 
 @dataclass(frozen=True)
 class Lighthouse:
-    """A way to make v0 a place of explicit place and back-link information."""
+    """A way to make v0 a place of explicit place and back-link information.
+
+    ``script`` is ``ops`` with the motions between them (ints), where the
+    robot moves while establishing (Figure 3.21(b)); ``recognition(S, v0)``
+    gives the probing recogniser of a lighthouse whose back-link needs probes
+    (None: v0's signatures from its entries differ); ``search`` finds and
+    establishes v0 by a random walk (§5.1, §6.1), with ``seed``,
+    ``walk_limit`` and ``neighbourhood`` (the ``options`` it takes).
+    """
 
     name: str
     thesis: str
@@ -67,19 +101,88 @@ class Lighthouse:
     ops: tuple[MarkerOp, ...]
     drops: str  # what the robot drops, in words
     min_degree: int = 1
+    script: tuple = ()
+    recognition: Callable | None = None
+    search: Callable | None = None
+    options: tuple[str, ...] = ()
+    seed: int = 0
+    walk_limit: int = 200
+    neighbourhood: int = 1
 
-    def establish(self, robot, S: PartialMap, v0: int) -> dict[Signature, int]:
-        """Drop the markers at v0 (the robot stands there, facing exit 0) and record them in S.
+    @property
+    def probing(self) -> bool:
+        """Whether recognising v0 needs probing moves (then the explorer perceives S through a PerceivedMap)."""
+        return self.recognition is not None
 
-        Returns the recognition table: v0's signature from each entry ↦ that entry.
-        """
-        for op in self.ops:
-            robot.operate(op)
+    def perceive(self, S):
+        """S as the explorer perceives it: v0 with its virtual head if recognising it probes, else S itself."""
+        return PerceivedMap(S) if self.probing else S
+
+    def establish(self, robot, S: PartialMap) -> Beacon:
+        """Set up v0 = map vertex 0 (the robot stands at the start, facing exit 0; a search walks first) and
+        record in S what the robot senses there; the robot ends at v0, entered by map exit 0."""
+        if self.search is not None:
+            return self.search(self, robot, S)
+        v0 = S.add_vertex(robot.sense().degree)
+        for item in self.script or self.ops:
+            if isinstance(item, int):
+                robot.move(item, "establish")
+            else:
+                robot.operate(item)
         S.mark_as_sensed(v0, robot.sense(), 0)
-        table, bad = back_link_table(S, v0, f"v0 (lighthouse {self.name})")
+        return self.beacon(S, v0)
+
+    def beacon(self, S: PartialMap, v0: int, walk_steps: int = 0, recognise: Callable | None = None) -> Beacon:
+        """The recognition of v0, once S holds its marks; raises if it gives no explicit back-link (§3.2.2)."""
+        P = self.perceive(S)
+        table, bad = back_link_table(P, v0, f"v0 (lighthouse {self.name})")
         if bad is not None:
             raise CheckFailure(bad)
-        return table
+        if not self.probing:
+            return Beacon(table, P, walk_steps=walk_steps)
+        raw = frozenset(signature_at(S, v0, e) for e in range(S.degree(v0)))
+        return Beacon(table, P, recognise or self.recognition(S, v0), raw, walk_steps)
+
+    def placed_ops(self, world, state: tuple) -> Iterator[tuple[tuple, MarkerOp]]:
+        """(robot state, op) for each op the start makes, walking the script's motions on ``world`` (anything
+        with ``degree`` and ``target``) from ``state``; none for a searched lighthouse (its v0 is not known)."""
+        if self.search is not None:
+            return
+        v, entry = state
+        for item in self.script or self.ops:
+            if isinstance(item, int):
+                v, entry = world.target((v, (entry + item) % world.degree(v)))
+            else:
+                yield (v, entry), item
+
+    def with_options(self, **given) -> "Lighthouse":
+        """This lighthouse with ``seed``, ``walk_limit`` or ``neighbourhood`` set (None: unchanged); bad input
+        names the option."""
+        given = {k: v for k, v in given.items() if v is not None}
+        for key, value in given.items():
+            flag = "--" + key.replace("_", "-")
+            if key not in self.options:
+                raise InvalidInput(f"the {self.name} lighthouse takes no option {flag}"
+                                   + (f" (it takes {', '.join('--' + o.replace('_', '-') for o in self.options)})"
+                                      if self.options else ""))
+            if not isinstance(value, int) or isinstance(value, bool):
+                raise InvalidInput(f"{flag} must be an integer, got {value!r}")
+            if key != "seed" and value < 1:
+                raise InvalidInput(f"{flag} must be at least 1, got {value}")
+        return replace(self, **given)
+
+
+def _marked_neighbour(S: PartialMap, v0: int) -> Callable:
+    """Figure 3.21(b): v0's entry is found by probing for the neighbour with two markers (v0's exit 0)."""
+
+    def two(sig: Signature) -> bool:
+        return sig.vertex_count == 2
+
+    def recognise(robot, sig: Signature, previous: Signature) -> Signature:
+        d = sig.degree
+        return perceived(sig, identify(robot, sig, lambda j, r: (j + r) % d == 0, two(previous), 1, two))
+
+    return recognise
 
 
 def _edge(exit: int, count: int = 1, direction: str | None = None) -> MarkerOp:
@@ -95,6 +198,16 @@ LIGHTHOUSES: dict[str, Lighthouse] = {h.name: h for h in (
                "an undirected vertex marker and an undirected edge marker on the faced edge"),
     Lighthouse("three-undirected-edge", "§6.2", Kit(edge=3), (_edge(0), _edge(1, 2)),
                "one undirected edge marker on the faced edge and two on the next exit clockwise", min_degree=2),
+    Lighthouse("three-undirected-vertex", "§3.7, Figure 3.21(b)", Kit(vertex=3),
+               (MarkerOp("vertex"), MarkerOp("vertex", count=2)),
+               "one undirected vertex marker at the start vertex and two at the neighbour it faces",
+               script=(MarkerOp("vertex"), 0, MarkerOp("vertex", count=2), 0), recognition=_marked_neighbour),
+    Lighthouse("undirected-vertex", "§5.1", Kit(vertex=1), (MarkerOp("vertex"),),
+               "one undirected vertex marker, dropped where a random walk found aperiodic neighbour degrees",
+               recognition=after_search, search=search_vertex, options=("seed", "walk_limit", "neighbourhood")),
+    Lighthouse("undirected-edge", "§6.1, Figure 6.2", Kit(edge=1), (_edge(0),),
+               "one undirected edge marker, dropped on an edge a random walk found with ends of different degrees",
+               search=search_edge, options=("seed", "walk_limit")),
 )}
 """The lighthouses by name; ``directional-vertex`` is Algorithm 3.1's own and the default."""
 

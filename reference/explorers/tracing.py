@@ -52,7 +52,7 @@ class ExecutedPathsOnS(Technique):
 
     def contradiction(self, explorer, h, state: dict, new: list, ctx, it) -> int | None:
         """-1 if a new perception contradicts S (or T) traced from h's dart, else None."""
-        S, T = explorer.S, self.store(explorer)
+        S, T = explorer.P, self.store(explorer)  # S as perceived: a probing lighthouse's v0 with its virtual head
         links = S.links
         link = {h.dart: it.edge, it.edge: h.dart}
         for node in new:
