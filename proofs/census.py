@@ -43,6 +43,7 @@ import time
 from collections import deque
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
+from operator import itemgetter
 from typing import Any, Callable, Iterable, Iterator
 
 from topomark.proofs.bisim import distinguishing_sequence
@@ -103,15 +104,20 @@ def _renumber(keys: Iterable[Any]) -> list[int]:
 
 
 def minimise(mach: Machine) -> list[int]:
-    """Moore equivalence by partition refinement: ``block[s]`` equal iff states are equivalent."""
+    """Moore equivalence by partition refinement: ``block[s]`` equal iff states are equivalent.
+
+    Blocks are numbered by first occurrence; a state's key in a round is its
+    block and its successors' blocks (read by one ``itemgetter`` per state).
+    """
     block = _renumber(mach.out)
     count = max(block) + 1
+    getters = [itemgetter(*succ) for succ in mach.succ]
     while True:
-        new = _renumber((block[s], tuple(block[t] for t in mach.succ[s])) for s in range(len(block)))
-        new_count = max(new) + 1
-        if new_count == count:
+        ids: dict[Any, int] = {}
+        new = [ids.setdefault((block[s], get(block)), len(ids)) for s, get in enumerate(getters)]
+        if len(ids) == count:
             return new
-        block, count = new, new_count
+        block, count = new, len(ids)
 
 
 def representatives(block: list[int]) -> dict[int, int]:
@@ -314,7 +320,12 @@ def _rows(langs: dict[bytes, list], sizes: dict[int, list[int]], min_n: int, max
 
 def _recheck(best: list[Member], worlds: list[World], class_name: str) -> tuple[World, World]:
     """Rebuild the two members of an ambiguous class and re-check them with bisim and find_isomorphism."""
-    a, b = (placement(worlds[mem[2]], class_name, mem[3]) for mem in best)
+    return _recheck_pair([(worlds[mem[2]], mem[3]) for mem in best], class_name)
+
+
+def _recheck_pair(members: list[tuple[World, int]], class_name: str) -> tuple[World, World]:
+    """Placements ``(world, k)`` of an ambiguous class, re-checked: indistinguishable, not isomorphic."""
+    a, b = (placement(world, class_name, k) for world, k in members)
     if distinguishing_sequence(a, b) is not None or find_isomorphism(a, b, markers=True).isomorphic:
         raise CheckFailure(f"census: a {class_name} counterexample candidate fails the independent re-check")
     return a, b

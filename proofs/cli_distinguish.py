@@ -4,7 +4,9 @@
   perceptions differ (printed in thesis notation), exit 1 when A and B are
   indistinguishable (with the size of the bisimulation relation certifying it).
 * ``census --marker CLASS --max-vertices N --max-degree D``: the language
-  census of :mod:`topomark.proofs.census`; exit 0 when the class has no
+  census of :mod:`topomark.proofs.census`, run as map and reduce over shards
+  on disk (:mod:`topomark.proofs.census_run`; ``--jobs``, ``--shards DIR`` to
+  keep and resume them, ``--scheduler`` for Dask); exit 0 when the class has no
   counterexample up to N, 1 when it has one (printed with the smallest pair).
 """
 
@@ -12,10 +14,12 @@ from __future__ import annotations
 
 import argparse
 import json
+import tempfile
 from typing import Any
 
 from topomark.proofs.bisim import bisimulation, check_relation, distinguishing_sequence
-from topomark.proofs.census import CensusResult, census, stderr_progress
+from topomark.proofs.census import CensusResult, stderr_progress
+from topomark.proofs.census_run import sharded_census
 from topomark.proofs.enumerate import MAX_VERTICES
 from topomark.spec.errors import CheckFailure, InvalidInput
 from topomark.spec.markerclass import MARKER_CLASSES, marker_class
@@ -44,6 +48,10 @@ def register(sub) -> None:
     q.add_argument("--max-vertices", type=int, required=True, metavar="N")
     q.add_argument("--max-degree", type=int, required=True, metavar="D")
     q.add_argument("--jobs", type=int, default=1, metavar="J", help="worker processes (default 1)")
+    q.add_argument("--shards", metavar="DIR", help="keep the map/reduce shards in DIR; a killed census run again "
+                   "with the same DIR resumes from its finished tasks (default: a temporary directory)")
+    q.add_argument("--scheduler", metavar="ADDRESS", help="run the map and reduce on a Dask cluster "
+                   "(tcp://host:8786), or 'local' for a local Dask cluster of J workers (needs topomark[cluster])")
     q.add_argument("--json", action="store_true", help="machine-readable output")
     q.set_defaults(handler=census_command)
 
@@ -96,7 +104,7 @@ def _validate(args: argparse.Namespace) -> None:
         raise InvalidInput(f"--max-vertices must be at least 2, not {args.max_vertices}")
     if args.max_vertices > MAX_VERTICES:
         raise InvalidInput(f"--max-vertices {args.max_vertices} is too large: the census enumerates worlds "
-                           f"of at most {MAX_VERTICES} vertices (n = 8 already takes hours)")
+                           f"of at most {MAX_VERTICES} vertices")
     if args.max_degree < 1:
         raise InvalidInput(f"--max-degree must be at least 1, not {args.max_degree}")
     if args.max_degree > MAX_DEGREE:
@@ -126,7 +134,13 @@ def census_table(result: CensusResult) -> str:
 
 def census_command(args: argparse.Namespace) -> int:
     _validate(args)
-    result = census(args.marker, args.max_vertices, args.max_degree, jobs=args.jobs, progress=stderr_progress)
+    if args.shards is not None:
+        result = sharded_census(args.marker, args.max_vertices, args.max_degree, args.shards, jobs=args.jobs,
+                                scheduler=args.scheduler, progress=stderr_progress)
+    else:
+        with tempfile.TemporaryDirectory(prefix="topomark-census-") as root:
+            result = sharded_census(args.marker, args.max_vertices, args.max_degree, root, jobs=args.jobs,
+                                    scheduler=args.scheduler, progress=stderr_progress)
     pair = result.smallest_counterexample
     data = {"marker": result.marker, "max_vertices": result.max_vertices, "max_degree": result.max_degree,
             "rows": [r.to_json() for r in result.rows], "languages": result.languages,

@@ -175,7 +175,7 @@ def test_cli_census_text(capsys):
 @pytest.mark.parametrize("argv", [
     ["--marker", "nope", "--max-vertices", "4", "--max-degree", "3"],
     ["--marker", "none", "--max-vertices", "1", "--max-degree", "3"],
-    ["--marker", "none", "--max-vertices", "9", "--max-degree", "3"],
+    ["--marker", "none", "--max-vertices", "11", "--max-degree", "3"],
     ["--marker", "none", "--max-vertices", "4", "--max-degree", "0"],
     ["--marker", "none", "--max-vertices", "4", "--max-degree", "3", "--jobs", "0"],
     ["--marker", "none", "--max-vertices", "four", "--max-degree", "3"],

@@ -1,0 +1,204 @@
+"""The census's map: languages of every placement on a slice of the worlds (thesis §3.2, §3.3, §3.7, §6.1).
+
+A *unit* is ``(n, gi, c, C)``: the orbit representatives of graph ``gi`` of
+:func:`topomark.proofs.enumerate.connected_graphs` (n, D) whose index is
+``c`` modulo ``C`` (a graph with many rotation systems is split into ``C``
+units; every unit enumerates the graph's orbit representatives and keeps its
+own).  :func:`plan` groups units into map tasks of about ``task_worlds``
+worlds, estimated as ``∏ (deg v - 1)! / |Aut|`` per graph (exact when the
+automorphism group acts freely; only used for balancing and the progress bar).
+
+:func:`run_map` computes, for every world of a task, every placement's
+language digest (the kernel of :mod:`topomark.proofs.census`), combines the
+records per digest (:func:`topomark.proofs.census_shards.combine`), and
+writes one file per shard, then the task's ``done`` file.
+
+The iso key of a placement (equal iff the marked worlds are extended-
+isomorphic, markers preserved) is computed from the world's automorphisms,
+not from :func:`topomark.proofs.enumerate.canonical_form` as the in-memory
+census does: two placements on different worlds of the enumeration are never
+isomorphic (the worlds are pairwise non-isomorphic), and two on the same
+world ``W`` are iff an automorphism of ``W`` maps one layout onto the other
+(an isomorphism of marked worlds on W is an automorphism of W preserving the
+markers; §3.1.3, mirror images excluded).  The automorphisms of W are the
+graph automorphisms fixing its rotation system.  ``tests/test_census_shards.py``
+compares the two censuses, so the two iso keys are checked against each other.
+
+Examples
+--------
+>>> units = [u for t in plan(4, 3, 2, task_worlds=5) for u, _ in t]
+>>> sorted(units)[:3]
+[(2, 0, 0, 1), (3, 0, 0, 1), (3, 1, 0, 1)]
+"""
+
+from __future__ import annotations
+
+import hashlib
+import math
+from functools import lru_cache
+from pathlib import Path
+from typing import Any, Iterator
+
+import networkx as nx
+import numpy as np
+
+from topomark.proofs.census import _layouts, _marker_key, machine, minimise
+from topomark.proofs.census_language import start_digests
+from topomark.proofs.census_shards import combine, done_path, map_path, records, shard_of, write_atomic, write_json
+from topomark.proofs.enumerate import _automorphisms, _orbit_representatives, _world, connected_graphs
+from topomark.spec.marker import VertexMarker
+from topomark.spec.world import World
+
+__all__ = ["Unit", "plan", "estimate", "run_map", "unit_worlds", "world_at", "world_records", "marked"]
+
+Unit = tuple[int, int, int, int]  # (n, graph index, chunk, chunks)
+
+
+@lru_cache(maxsize=None)
+def _graphs(n: int, max_degree: int) -> tuple[nx.Graph, ...]:
+    return tuple(connected_graphs(n, max_degree))
+
+
+@lru_cache(maxsize=64)
+def _autos(n: int, max_degree: int, gi: int) -> tuple[dict[int, int], ...]:
+    return tuple(_automorphisms(_graphs(n, max_degree)[gi]))
+
+
+def estimate(g: nx.Graph, autos: int) -> int:
+    """About how many worlds graph ``g`` carries: rotation systems over automorphisms (at least 1)."""
+    rots = math.prod(math.factorial(d - 1) for _, d in g.degree())
+    return max(1, -(-rots // autos))
+
+
+def plan(max_vertices: int, max_degree: int, min_vertices: int = 2,
+         task_worlds: int = 2000) -> list[list[tuple[Unit, int]]]:
+    """Map tasks: lists of ``(unit, estimated worlds)`` of about ``task_worlds`` worlds each."""
+    tasks: list[list[tuple[Unit, int]]] = []
+    current: list[tuple[Unit, int]] = []
+    size = 0
+    for n in range(max(min_vertices, 2), max_vertices + 1):
+        for gi, g in enumerate(_graphs(n, max_degree)):
+            est = estimate(g, len(_autos(n, max_degree, gi)))
+            chunks = -(-est // task_worlds)
+            for c in range(chunks):
+                share = est // chunks + (c < est % chunks)
+                current.append(((n, gi, c, chunks), share))
+                size += share
+                if size >= task_worlds:
+                    tasks.append(current)
+                    current, size = [], 0
+    if current:
+        tasks.append(current)
+    return tasks
+
+
+def unit_worlds(unit: Unit, max_degree: int) -> Iterator[tuple[int, World, tuple[dict[int, int], ...]]]:
+    """(rotation index, world, automorphisms of the world) for the unit's worlds."""
+    n, gi, c, chunks = unit
+    autos = _autos(n, max_degree, gi)
+    for ri, rot in enumerate(_orbit_representatives(_graphs(n, max_degree)[gi])):
+        if ri % chunks == c:
+            yield ri, _world(rot), tuple(s for s in autos if _fixes(rot, s))
+
+
+def _fixes(rot: tuple[tuple[int, ...], ...], sigma: dict[int, int]) -> bool:
+    """``enumerate._image(rot, sigma) == rot``, stopping at the first vertex whose cyclic order moves."""
+    for v, ns in enumerate(rot):
+        target = rot[sigma[v]]
+        image = [sigma[w] for w in ns]
+        k = image.index(target[0]) if target[0] in image else -1
+        if k < 0 or tuple(image[k:] + image[:k]) != target:
+            return False
+    return True
+
+
+def world_at(n: int, max_degree: int, gi: int, ri: int) -> World:
+    """The world a record names: rotation system ``ri`` of graph ``gi``."""
+    return next(w for r, w, _ in unit_worlds((n, gi, ri, ri + 1), max_degree) if r == ri)
+
+
+def _layout_code(key: frozenset, sigma: dict[int, int]) -> tuple:
+    """A layout (``census._marker_key``) moved by a vertex permutation, as a sorted tuple of ints."""
+    def f(name: str | None) -> int:
+        return -1 if name is None else sigma[int(name[1:])]
+
+    items = []
+    for item in key:
+        if isinstance(item[0], str):
+            at, count, points_to = item
+            items.append((0, f(at), count, f(points_to)))
+        else:
+            between, count, head = item
+            u, v = sorted(f(x) for x in between)
+            items.append((1, u, v, count, f(head)))
+    return tuple(sorted(items))
+
+
+def _iso_key(world_id: tuple[int, int, int], key: frozenset, autos: tuple[dict[int, int], ...]) -> bytes:
+    code = min(_layout_code(key, s) for s in autos)
+    return hashlib.blake2b(repr((world_id, code)).encode(), digest_size=16).digest()
+
+
+def marked(world: World, markers: tuple) -> World:
+    """``World(world.rotation, markers)`` without re-validating the rotation system of an enumerated world.
+
+    The marks are derived by World's own ``_add_marker`` (the marks at v are
+    defined once, in spec); ``tests/test_census_shards.py`` checks every
+    signature against the validated construction.
+    """
+    w = object.__new__(World)
+    w.rotation, w.markers, w.start, w._index = world.rotation, tuple(markers), None, world._index
+    w._vmarks, w._dmarks = {}, {}
+    for marker in w.markers:
+        w._add_marker(marker)
+    w._dmarks = {v: tuple(sorted(ms, key=lambda d: d.exit)) for v, ms in w._dmarks.items()}
+    return w
+
+
+def world_records(class_name: str, world_id: tuple[int, int, int], world: World, autos: tuple[dict[int, int], ...],
+                  rows: list[tuple[bytes, int, tuple, bytes]]) -> int:
+    """Append ``(digest, 1 << n, (n, m, gi, ri, k), iso)`` for every placement on ``world`` to ``rows``
+    (equivalent starts of one layout once: same language, larger member); returns the number of placements."""
+    n, gi, ri = world_id
+    base = machine(world)
+    cache: dict[frozenset, tuple] = {}
+    placements = 0
+    for k, markers, starts in _layouts(class_name, world):
+        placements += len(starts)
+        key = _marker_key(markers)
+        if key not in cache:
+            mach = machine(marked(world, markers), base) if markers else base
+            block = minimise(mach)
+            cache[key] = (mach, block, _iso_key(world_id, key, autos), set())
+        mach, block, iso, seen = cache[key]
+        index = [mach.index[s] for s in starts]
+        digests = start_digests(mach, block, index)
+        for j, s in enumerate(index):
+            b = block[s]
+            if b not in seen:
+                seen.add(b)
+                rows.append((digests[b], 1 << n, (n, world.m, gi, ri, k + j), iso))
+    return placements
+
+
+def run_map(root: str, task: int, class_name: str, max_degree: int, units: list[Unit],
+            shards: int) -> dict[str, Any]:
+    """Run map task ``task`` into directory ``root``; returns (and writes) ``{"sizes": {n: [worlds, placements]}}``."""
+    rows: list[tuple] = []
+    sizes: dict[int, list[int]] = {}
+    for unit in units:
+        n, gi = unit[0], unit[1]
+        tally = sizes.setdefault(n, [0, 0])
+        for ri, world, autos in unit_worlds(unit, max_degree):
+            tally[0] += 1
+            tally[1] += world_records(class_name, (n, gi, ri), world, autos, rows)
+    recs = combine(records(rows))
+    where = shard_of(recs, shards)
+    order = np.argsort(where, kind="stable")
+    bounds = np.searchsorted(where[order], np.arange(shards + 1))
+    path = Path(root)
+    for s in range(shards):
+        write_atomic(map_path(path, task, s), recs[order[bounds[s]:bounds[s + 1]]].tobytes())
+    result = {"sizes": {str(n): v for n, v in sizes.items()}}
+    write_json(done_path(path, task), result)
+    return result

@@ -1,0 +1,174 @@
+"""The census as map and reduce over shards on disk (thesis §3.2, §3.3, §3.7, §6.1).
+
+:func:`sharded_census` gives the same :class:`~topomark.proofs.census.CensusResult`
+as the in-memory :func:`~topomark.proofs.census.census` (``tests/test_census_shards.py``
+compares them), but its memory is set by the shard size, not by the number of
+worlds, and a killed run resumes:
+
+1. plan the map tasks (:func:`topomark.proofs.census_map.plan`) and write the
+   manifest — or, if the directory already holds one, check it describes the
+   same census and keep its plan;
+2. run every map task without a ``done`` file (:func:`~topomark.proofs.census_map.run_map`);
+3. reduce every shard without a ``reduce`` file (:func:`reduce_shard`);
+4. merge the shard summaries, rebuild the smallest counterexample from its
+   record and re-check it with bisimulation and ``find_isomorphism``.
+
+Tasks run on an executor (:mod:`topomark.proofs.census_exec`): inline,
+local processes (``jobs``) or a Dask cluster (``scheduler``).  The on-disk
+format is described in :mod:`topomark.proofs.census_shards`.
+
+Examples
+--------
+>>> import tempfile
+>>> with tempfile.TemporaryDirectory() as d:
+...     r = sharded_census("none", 4, 3, d)
+>>> [(row.n, row.worlds, row.languages_upto, row.ambiguous_upto) for row in r.rows]
+[(2, 1, 1, 0), (3, 2, 4, 0), (4, 9, 28, 2)]
+"""
+
+from __future__ import annotations
+
+import os
+import time
+from pathlib import Path
+from typing import Any, Callable
+
+from topomark.proofs.census import CensusResult, SizeRow, _recheck_pair
+from topomark.proofs.census_exec import Executor, Progress, executor
+from topomark.proofs.census_map import plan, run_map, world_at
+from topomark.proofs.census_shards import (FORMAT, done_path, merge_summaries, read_json, read_shard, reduce_path,
+                                           summary, write_json)
+from topomark.spec.errors import InvalidInput
+from topomark.spec.markerclass import marker_class
+
+__all__ = ["sharded_census", "reduce_shard", "default_shards", "prepare"]
+
+PLACEMENTS_PER_WORLD = 100  # a generous average, to size shards
+RECORDS_PER_SHARD = 2_000_000  # ~100 MB of records per shard at most
+
+
+def default_shards(estimated_worlds: int) -> int:
+    """A power of two keeping a shard under RECORDS_PER_SHARD records."""
+    need = estimated_worlds * PLACEMENTS_PER_WORLD / RECORDS_PER_SHARD
+    shards = 1
+    while shards < need and shards < 4096:
+        shards *= 2
+    return shards
+
+
+def _writable(root: Path) -> None:
+    try:
+        root.mkdir(parents=True, exist_ok=True)
+        probe = root / f".probe-{os.getpid()}"
+        probe.write_bytes(b"")
+        probe.unlink()
+    except OSError as e:
+        raise InvalidInput(f"shard directory {str(root)!r} is not writable: {e.strerror or e}") from None
+
+
+def prepare(root: Path, params: dict[str, Any], task_worlds: int, shards: int | None) -> dict[str, Any]:
+    """The manifest of ``root``: read (resume) if present and matching ``params``, else planned and written."""
+    _writable(root)
+    path = root / "manifest.json"
+    if path.exists():
+        try:
+            manifest = read_json(path)
+        except (OSError, ValueError) as e:
+            raise InvalidInput(f"{path}: not a census manifest ({e})") from None
+        if not isinstance(manifest, dict) or manifest.get("format") != FORMAT:
+            raise InvalidInput(f"{path}: not a {FORMAT} manifest")
+        if manifest.get("params") != params:
+            raise InvalidInput(f"{root} holds the shards of another census ({manifest.get('params')}); "
+                               f"use an empty directory or the same options")
+        return manifest
+    tasks = plan(params["max_vertices"], params["max_degree"], params["min_vertices"], task_worlds)
+    estimated = sum(est for task in tasks for _, est in task)
+    manifest = {"format": FORMAT, "params": params, "shards": shards or default_shards(estimated),
+                "estimated_worlds": estimated,
+                "tasks": [[[list(unit), est] for unit, est in task] for task in tasks]}
+    write_json(path, manifest)
+    return manifest
+
+
+def reduce_shard(root: str, shard: int, tasks: int, min_n: int, max_n: int, all_pairs: bool) -> dict[str, Any]:
+    """Reduce one shard (all map tasks done): write and return its summary."""
+    result = summary(read_shard(Path(root), tasks, shard), min_n, max_n, all_pairs)
+    write_json(reduce_path(Path(root), shard), result)
+    return result
+
+
+def _map_phase(ex: Executor, root: Path, manifest: dict[str, Any], progress: Progress) -> None:
+    p = manifest["params"]
+    todo = []
+    for t, task in enumerate(manifest["tasks"]):
+        est = sum(e for _, e in task)
+        if done_path(root, t).exists():
+            progress.skip(est, sum(w for w, _ in read_json(done_path(root, t))["sizes"].values()))
+        else:
+            todo.append((t, est, [tuple(u) for u, _ in task]))
+    calls = [(run_map, (str(root), t, p["marker"], p["max_degree"], units, manifest["shards"])) for t, _, units in todo]
+    for i, result in ex.run(calls):
+        progress.done(todo[i][1], sum(w for w, _ in result["sizes"].values()))
+
+
+def _reduce_phase(ex: Executor, root: Path, manifest: dict[str, Any], all_pairs: bool) -> list[dict[str, Any]]:
+    p, tasks = manifest["params"], len(manifest["tasks"])
+    out: dict[int, dict[str, Any]] = {}
+    calls, which = [], []
+    for s in range(manifest["shards"]):
+        part = read_json(reduce_path(root, s)) if reduce_path(root, s).exists() else None
+        if part is not None and (not all_pairs or "pairs" in part):
+            out[s] = part
+        else:
+            calls.append((reduce_shard, (str(root), s, tasks, p["min_n"], p["max_vertices"], all_pairs)))
+            which.append(s)
+    for i, result in ex.run(calls):
+        out[which[i]] = result
+    return [out[s] for s in sorted(out)]
+
+
+def _rows(manifest: dict[str, Any], total: dict[str, Any], root: Path) -> tuple[SizeRow, ...]:
+    p = manifest["params"]
+    sizes: dict[int, list[int]] = {}
+    for t in range(len(manifest["tasks"])):
+        for n, (w, pl) in read_json(done_path(root, t))["sizes"].items():
+            tally = sizes.setdefault(int(n), [0, 0])
+            tally[0] += w
+            tally[1] += pl
+    return tuple(SizeRow(n, *sizes.get(n, [0, 0]), total["languages"][j], total["languages_upto"][j],
+                         total["ambiguous_upto"][j]) for j, n in enumerate(range(p["min_n"], p["max_vertices"] + 1)))
+
+
+def sharded_census(class_name: str, max_vertices: int, max_degree: int, root: str | os.PathLike,
+                   jobs: int = 1, scheduler: str | None = None, min_vertices: int = 2,
+                   progress: Callable[[str], None] | None = None, task_worlds: int = 2000,
+                   shards: int | None = None, verify_all: bool = False) -> CensusResult:
+    """The census of ``class_name`` as map and reduce over shards in directory ``root`` (resumed if present).
+
+    ``jobs`` local worker processes (1: inline), or ``scheduler``: a Dask
+    scheduler address or ``"local"``.  ``verify_all`` re-checks the two
+    smallest members of every ambiguous class, as :func:`census` does.
+    """
+    marker_class(class_name)
+    t0 = time.perf_counter()
+    min_n = max(min_vertices, 2)
+    params = {"marker": class_name, "max_vertices": max_vertices, "max_degree": max_degree,
+              "min_vertices": min_vertices, "min_n": min_n}
+    path = Path(root)
+    with executor(jobs, scheduler) as ex:
+        manifest = prepare(path, params, task_worlds, shards)
+        bar = Progress(manifest["estimated_worlds"], progress)
+        _map_phase(ex, path, manifest, bar)
+        bar.finish()
+        total = merge_summaries(_reduce_phase(ex, path, manifest, verify_all))
+    rows = _rows(manifest, total, path)
+
+    def rebuild(member: list[int]):
+        n, _, gi, ri, k = member
+        return world_at(n, max_degree, gi, ri), k
+
+    if verify_all:
+        for pair in total["pairs"]:
+            _recheck_pair([rebuild(m) for m in pair], class_name)
+    pair = None if total["pair"] is None else _recheck_pair([rebuild(m) for m in total["pair"]], class_name)
+    return CensusResult(class_name, max_vertices, max_degree, rows, pair, time.perf_counter() - t0)
