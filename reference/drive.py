@@ -113,6 +113,11 @@ class _Link:
             raise ProtocolError("garbage", f"hello.kit: {clip(str(exc), 300)}") from None
         held = {"vertex": 0, "edge": 0}
         for op in self.light.ops:
+            if op.kind == "thread":  # §6.3: the kit must have a thread
+                why = kit.thread_refusal()
+                if why is not None:
+                    raise ProtocolError("protocol", f"the {self.light.name} lighthouse needs a thread: {why}")
+                continue
             why = kit.refusal(op.kind, op.direction is not None, op.count, held[op.kind])
             if why is not None:
                 raise ProtocolError("protocol", f"the {self.light.name} lighthouse ({self.light.kit.describe()}) "

@@ -129,14 +129,14 @@ class _Session:
     def play(self) -> World:
         """Answer messages until the map arrives; returns the map."""
         self.hello()
-        expect = Expect(("move", "drop", "snapshot", "map", "error") + (("pick_up",) if self.version >= 2 else ()),
-                        self.version)
+        expect = Expect(("move", "drop", "snapshot", "map", "error")
+                        + (("pick_up", "thread") if self.version >= 2 else ()), self.version)
         while True:
             msg = self.peer.receive(expect)
             kind = msg["type"]
             if kind == "move":
                 self.move(msg["motion"])
-            elif kind in ("drop", "pick_up") and self.version >= 2:
+            elif kind in ("drop", "pick_up", "thread") and self.version >= 2:
                 self.operate(msg)
             elif kind == "drop":
                 self.drop(msg["direction"])
@@ -176,8 +176,13 @@ class _Session:
         """An @2 ``drop`` or ``pick_up``: malformed fields are garbage, refusals the simulator's ``marker``."""
         v, _ = self.sim.state
         op = op_from_message(msg, self.sim.world.degree(v))
+        if getattr(op, "op", None) == "rewind" and self.sim.cost >= self.max_traversals:  # a rewind is a move
+            raise _Fail("limit", f"traversal {self.sim.cost + 1} exceeds the limit of {self.max_traversals}")
         try:
-            self.robot.operate(op)
+            if getattr(op, "op", None) == "rewind":
+                self.robot.rewind("other")
+            else:
+                self.robot.operate(op)
         except CheckFailure as exc:
             raise _Fail("marker", f"{msg['type']}: {exc}", exc.violation) from None
         self.peer.send({"type": "signature", "value": str(self.robot.sense()), "step": self.sim.cost})

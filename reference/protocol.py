@@ -65,11 +65,13 @@ MESSAGES2: dict[str, dict[str, str]] = {
     "hello": {"protocol": _STR, "role": _STR, "kit": _OBJ, "signature": _STR},
     "drop": {"kind": _STR},
     "pick_up": {"kind": _STR},
+    "thread": {"op": _STR},  # §6.3: reference/wireops.py
 }
 _OPTIONAL2: dict[str, dict[str, str]] = {
     **_OPTIONAL,
     "drop": {"exit": _OPT_INT, "direction": _DIRECTION, "count": _INT},
     "pick_up": {"exit": _OPT_INT, "count": _INT},
+    "thread": {"direction": _OPT_INT, "count": _INT},
 }
 _SCHEMAS = {1: (MESSAGES, _OPTIONAL), 2: (MESSAGES2, _OPTIONAL2)}
 

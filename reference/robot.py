@@ -10,13 +10,20 @@ explorer modules import nothing from :mod:`topomark.reference.simulator` or
 ``purpose`` tags each motion for the cost accounting of §3.1.2 (``travel`` to
 v_k, the ``new`` edge, hypothesis ``validation``, ``retrace``); the simulator
 counts every traversal whatever the tag says.
+
+Threads (§6.3): :meth:`Robot.operate` also takes a
+:class:`~topomark.spec.kit.ThreadOp` (tie, untie, leave, take, knot);
+holding the free end of a tied thread, every :meth:`Robot.move` lays it;
+:meth:`Robot.rewind` moves back along the last laid edge, picking it up
+(a traversal like any move).
 """
 
 from __future__ import annotations
 
 from typing import Callable
 
-from topomark.spec.kit import MarkerOp
+from topomark.spec.errors import TopomarkFault
+from topomark.spec.kit import MarkerOp, ThreadOp
 from topomark.spec.signature import Signature
 
 __all__ = ["Robot", "PURPOSES"]
@@ -29,11 +36,12 @@ PURPOSES = ("travel", "new", "validation", "retrace", "expansion", "other", "est
 class Robot:
     """A narrow handle on a simulator: motions, perceptions and marker operations only."""
 
-    __slots__ = ("_move", "_sense", "_operate")
+    __slots__ = ("_move", "_sense", "_operate", "_rewind")
 
     def __init__(self, move: Callable[[int, str], Signature], sense: Callable[[], Signature],
-                 operate: Callable[[MarkerOp], None]):
-        self._move, self._sense, self._operate = move, sense, operate
+                 operate: Callable[[MarkerOp | ThreadOp], None],
+                 rewind: Callable[[str], Signature] | None = None):
+        self._move, self._sense, self._operate, self._rewind = move, sense, operate, rewind
 
     def move(self, motion: int, purpose: str = "other") -> Signature:
         """Leave through exit ``motion`` counted clockwise from the entry edge; return the signature reached."""
@@ -43,9 +51,16 @@ class Robot:
         """The signature of the current vertex relative to the current entry edge."""
         return self._sense()
 
-    def operate(self, op: MarkerOp) -> None:
-        """Drop or pick up markers here (:class:`~topomark.spec.kit.MarkerOp`), as the kit allows."""
+    def operate(self, op: MarkerOp | ThreadOp) -> None:
+        """Drop or pick up markers here (:class:`~topomark.spec.kit.MarkerOp`), or operate the thread
+        (:class:`~topomark.spec.kit.ThreadOp`), as the kit allows."""
         self._operate(op)
+
+    def rewind(self, purpose: str = "retrace") -> Signature:
+        """Move back along the thread's last laid edge, picking it up; return the signature reached."""
+        if self._rewind is None:
+            raise TopomarkFault("this robot (a link without a thread) cannot rewind a thread")
+        return self._rewind(purpose)
 
     def drop_marker(self, direction: int | None = None) -> None:
         """Drop a vertex marker here; directional markers point at relative exit ``direction``."""

@@ -16,6 +16,11 @@ Diverged` at the first claim the world contradicts:
   does not hold, an exit that does not exist, nothing to pick up — is a
   divergence, not bad input: the trace claims the robot did it); its
   ``signature`` is what the robot senses just after;
+* a thread op (§6.3: ``tie``, ``untie``, ``leave``, ``take``, ``knot``) is
+  carried out like a marker op; a ``rewind`` op is not an operation of its
+  own but the record that the move just replayed rewound the thread (a move
+  back along the last laid edge, holding the free end): replay checks that
+  it did, and that every move that rewound is followed by one;
 * the ``end``'s ``cost`` is the number of traversals replayed.
 """
 
@@ -25,7 +30,7 @@ import json
 from typing import Any
 
 from topomark.spec.errors import CheckFailure, InvalidInput
-from topomark.spec.kit import Kit, MarkerOp
+from topomark.spec.kit import THREAD_OPS, Kit, MarkerOp, ThreadOp
 from topomark.spec.world import World
 
 from .divergence import diverge
@@ -36,8 +41,10 @@ from .simulator import Simulator
 __all__ = ["RobotLayer", "marker_op"]
 
 
-def marker_op(rec: dict[str, Any]) -> MarkerOp:
-    """The :class:`MarkerOp` an ``op`` record states."""
+def marker_op(rec: dict[str, Any]) -> MarkerOp | ThreadOp:
+    """The :class:`MarkerOp` or :class:`ThreadOp` an ``op`` record states."""
+    if rec["op"] in THREAD_OPS:
+        return ThreadOp(rec["op"], rec.get("direction"), rec["count"])
     return MarkerOp(rec["kind"], rec.get("exit"), rec.get("direction"), rec["count"], rec["op"] == "pick_up")
 
 
@@ -57,13 +64,15 @@ class RobotLayer:
         else:
             bare, state = world, world.start_state()
         self.start = state
-        self.sim = Simulator(bare, state, kit)
+        self.rewinds: list[int] = []  # the steps whose moves rewound the thread, not yet claimed by a rewind op
+        self.sim = Simulator(bare, state, kit, op_listener=self._rewound)
         self.robot = self.sim.robot()
         self.steps = 0
         self.ops = 0
 
     def step(self, rec: dict[str, Any]) -> str:
         """Count a move; its ``step`` must be the count.  Returns the move's name (``step k``)."""
+        self._unclaimed(f"step {self.steps + 1}")
         self.steps += 1
         where = f"step {self.steps}"
         if rec["step"] != self.steps:
@@ -89,16 +98,37 @@ class RobotLayer:
         where = f"op {self.ops} (after step {self.steps})"
         if rec["step"] != self.steps:
             diverge(where, f"step {self.steps} (the traversals before the op)", str(rec["step"]))
+        if rec["op"] == "rewind":
+            if self.rewinds != [self.steps]:
+                diverge(where, "a rewind op only just after a move that rewound the thread", "a rewind op",
+                        "the move before it did not pick the thread up", check="marker kit")
+            self.rewinds.clear()
+            return self._sensed(rec, where)
+        self._unclaimed(where)
         try:
             self.sim.operate(marker_op(rec))
         except CheckFailure as exc:
             diverge(where, "an operation the kit and the world allow", _op_text(rec), exc.violation.detail,
                     check="marker kit")
+        return self._sensed(rec, where)
+
+    def _sensed(self, rec: dict[str, Any], where: str) -> str:
         got = str(self.robot.sense())
         if rec["signature"] != got:
             diverge(where, f"signature {got} (sensed after the op)", rec["signature"])
         return got
 
+    def _rewound(self, event: dict[str, Any]) -> None:
+        if event["op"] == "rewind":
+            self.rewinds.append(event["step"])
+
+    def _unclaimed(self, where: str) -> None:
+        """A move that rewound the thread must be recorded as one: the next record is its rewind op."""
+        if self.rewinds:
+            diverge(where, f"a rewind op after step {self.rewinds[0]} (its move rewound the thread)", "none",
+                    check="marker kit")
+
     def end(self, rec: dict[str, Any]) -> None:
+        self._unclaimed("end")
         if rec["cost"] != self.steps:
             diverge("end", f"cost {self.steps} (the traversals replayed)", f"cost {rec['cost']}")

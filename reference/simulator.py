@@ -2,8 +2,9 @@
 
 It holds the world and where the robot really is, executes motions, counts
 every edge traversal (the thesis's cost metric), enforces the marker class
-(what the robot carries and may drop), and records the true state after every
-motion so the checker can compare the explorer's beliefs with the truth.
+(what the robot carries and may drop, and its thread, §6.3), and records the
+true state after every motion so the checker can compare the explorer's
+beliefs with the truth.
 Explorers only ever receive :meth:`Simulator.robot`.
 """
 
@@ -13,7 +14,7 @@ import json
 from collections import Counter
 
 from topomark.spec.errors import CheckFailure, InvalidInput, OutOfMarkers, Violation
-from topomark.spec.kit import Kit, MarkerOp
+from topomark.spec.kit import Kit, MarkerOp, ThreadOp
 from topomark.spec.marker import VertexMarker
 from topomark.spec.markerlayer import MarkerLayer, apply_op
 from topomark.spec.robot import State, sense, step
@@ -39,6 +40,13 @@ class Simulator:
     in :attr:`events`; ``op_listener`` (optional) is called with each such
     event as it happens, so moves and marker operations reach a trace in the
     order the robot did them (``spec/trace.md``, trace@2's robot layer).
+
+    Threads (§6.3, :mod:`topomark.spec.thread`): a :class:`ThreadOp` is gated
+    by the kit's thread like a marker operation; holding the free end of a
+    tied thread, every move lays it or — back along the last laid edge —
+    rewinds it; a move that would lay more than the kit's length is refused
+    before the robot moves.  A rewinding move is a traversal (cost, §3.1.2)
+    and is also logged as a ``rewind`` operation, just after the move.
     """
 
     def __init__(self, world: World, state: State, kit: Kit | dict | None = None, listener=None, op_listener=None):
@@ -61,31 +69,65 @@ class Simulator:
 
     # -- the explorer's side -------------------------------------------------
     def robot(self) -> Robot:
-        return Robot(self._move, self._sense, self.operate)
+        return Robot(self._move, self._sense, self.operate, self._rewind)
 
     def _move(self, motion: int, purpose: str) -> Signature:
         if purpose not in PURPOSES:
             raise CheckFailure(Violation("robot interface", "move", f"a purpose in {PURPOSES}", repr(purpose)))
         try:
-            self.state = step(self.layer, self.state, motion)
+            before = self.state
+            self.state = step(self.layer, before, motion)
         except InvalidInput as exc:
             raise CheckFailure(Violation("robot interface", f"step {self.cost + 1}", "an existing exit",
                                          str(exc), "the explorer asked for an exit that does not exist")) from None
+        rewound = False
+        if self.layer.thread.tied is not None:
+            try:
+                rewound = self.layer.pull(before, motion, self.kit.thread or 0)
+            except InvalidInput as exc:
+                self.state = before
+                raise CheckFailure(Violation("marker kit", f"step {self.cost + 1} at vertex {before[0]!r}",
+                                             "a move the thread allows", f"motion {motion}", str(exc))) from None
         self.cost += 1
         self.by_purpose[purpose] += 1
         sig = sense(self.layer, self.state)
         if self.listener is not None:
             self.listener(motion, purpose, sig, self.state)
+        if rewound:
+            self._log(ThreadOp("rewind"))
         return sig
+
+    def _rewind(self, purpose: str) -> Signature:
+        """Move back along the last laid edge, picking the thread up (a traversal, §3.1.2)."""
+        try:
+            motion = self.layer.thread.rewind_exit(self.base_world, self.state)
+        except InvalidInput as exc:
+            raise CheckFailure(Violation("marker kit", f"step {self.cost} at vertex {self.state[0]!r}",
+                                         "an operation the kit allows", '{"op": "rewind"}', str(exc))) from None
+        return self._move(motion, purpose)
+
+    @property
+    def base_world(self) -> World:
+        """The world's rotation (markers as the run began)."""
+        return self.layer.base
+
+    def _log(self, op: MarkerOp | ThreadOp) -> None:
+        self.operations[op.op if isinstance(op, ThreadOp) else "pick_up" if op.pick_up else "drop"] += 1
+        event = {"step": self.cost, **op.to_json(), "signature": str(sense(self.layer, self.state))}
+        self.events.append(event)
+        if self.op_listener is not None:
+            self.op_listener(event)
 
     def _sense(self) -> Signature:
         return sense(self.layer, self.state)
 
-    def operate(self, op: MarkerOp) -> None:
-        """Carry out a marker operation, gated by the kit; a refused one is the explorer's fault."""
+    def operate(self, op: MarkerOp | ThreadOp) -> None:
+        """Carry out a marker or thread operation, gated by the kit; a refused one is the explorer's fault."""
         where = f"step {self.cost} at vertex {self.state[0]!r}"
         directional = op.direction is not None
-        if not op.pick_up:
+        if isinstance(op, ThreadOp):
+            reason = self.kit.thread_refusal()
+        elif not op.pick_up:
             reason = self.kit.refusal(op.kind, directional, op.count, self.kit.count(op.kind) - self.held[op.kind])
         elif not self.kit.movable:
             reason = f"the kit ({self.kit.describe()}) holds immovable markers: none may be picked up"
@@ -97,16 +139,14 @@ class Simulator:
             except InvalidInput as exc:
                 reason = str(exc)
         if reason is not None:
-            out = not op.pick_up and self.kit.count(op.kind) and self.held[op.kind] < op.count \
+            out = not isinstance(op, ThreadOp) and not op.pick_up and self.kit.count(op.kind) and self.held[op.kind] < op.count \
                 and directional == self.kit.directional  # issue 12: running out is a named outcome, not a crash
             raise (OutOfMarkers if out else CheckFailure)(Violation(
                 "marker kit", where, "an operation the kit allows", json.dumps(op.to_json()), reason))
+        if isinstance(op, ThreadOp):
+            return self._log(op)
         self.held[op.kind] += op.count if op.pick_up else -op.count
-        self.operations["pick_up" if op.pick_up else "drop"] += 1
-        event = {"step": self.cost, **op.to_json(), "signature": str(sense(self.layer, self.state))}
-        self.events.append(event)
-        if self.op_listener is not None:
-            self.op_listener(event)
+        self._log(op)
         if op.kind == "vertex" and not op.pick_up:
             v, entry = self.state
             head = None if op.direction is None else self.layer.neighbour(v, (entry + op.direction) % self.layer.degree(v))

@@ -10,7 +10,12 @@
   directional edge marker at ``v``: ``H`` its head) to null.  An edge mark on
   an explored edge holds at both of its darts (the far end seeing the other
   end of the marker), so listing it once is enough; listing both is fine if
-  they agree.
+  they agree;
+* in ``@2`` only, a thread mark (§6.3) ``{"vertex": v, "thread": {"tied":
+  bool, "head": exit or null, "edges": [[exit, times], ...], "end": bool,
+  "knots": k}}`` — what of the thread lies at ``v``, in ``v``'s exits
+  (:class:`~topomark.spec.thread.ThreadMark`); every field but ``tied``
+  optional, at most one per vertex.
 
 A malformed snapshot raises :class:`~topomark.spec.errors.CheckFailure`
 naming the defect, never anything else.
@@ -23,6 +28,8 @@ from typing import Any
 
 from topomark.spec.errors import CheckFailure
 from topomark.spec.mapstate import PartialMap
+from topomark.spec.signature import Signature
+from topomark.spec.thread import ThreadMark
 from topomark.spec.world import DartMark
 
 from .protocol import clip
@@ -71,7 +78,9 @@ def snapshot_to_map(S_obj: dict[str, Any], U: list[Any], version: int = 1) -> Pa
     _exits(S, exits)
     darts: dict[tuple[int, int], tuple[int, str | None]] = {}
     for k, mark in enumerate(marks):
-        if version >= 2 and isinstance(mark, dict) and "exit" in mark:
+        if version >= 2 and isinstance(mark, dict) and "thread" in mark:
+            _thread_mark(S, k, mark)
+        elif version >= 2 and isinstance(mark, dict) and "exit" in mark:
             _edge_mark(S, k, mark, darts)
         else:
             _vertex_mark(S, k, mark, version)
@@ -121,6 +130,26 @@ def _edge_mark(S: PartialMap, k: int, mark: dict, darts: dict) -> None:
                                f"({darts[dart]} and {value}, as (count, end))")
 
 
+def _thread_mark(S: PartialMap, k: int, mark: dict) -> None:
+    """A thread mark at a vertex of S: the thread as :class:`ThreadMark` says, in that vertex's exits."""
+    v, t = mark.get("vertex"), mark.get("thread")
+    form = ("a thread mark {\"vertex\": v, \"thread\": {\"tied\": bool, \"head\": exit or null, \"edges\": "
+            "[[exit, times], ...], \"end\": bool, \"knots\": k}}")
+    ok = (set(mark) == {"vertex", "thread"} and _int(v) and 0 <= v < S.n and isinstance(t, dict)
+          and set(t) <= {"tied", "head", "edges", "end", "knots"} and isinstance(t.get("tied"), bool))
+    if ok:
+        d, head, edges = S.degree(v), t.get("head"), t.get("edges", [])
+        ok = ((head is None or (_int(head) and 0 <= head < d)) and isinstance(edges, list)
+              and all(isinstance(e, list) and len(e) == 2 and _int(e[0]) and 0 <= e[0] < d and _int(e[1])
+                      and 1 <= e[1] <= _MAX_COUNT for e in edges) and len({e[0] for e in edges}) == len(edges)
+              and isinstance(t.get("end", False), bool) and _int(t.get("knots", 0))
+              and 0 <= t.get("knots", 0) <= _MAX_COUNT and S.thread_mark(v) is None)
+    if not ok:
+        raise CheckFailure(f"snapshot S.marks[{k}] must be {form} on a vertex of S, its exits < its degree, once")
+    tm = ThreadMark(t["tied"], head, tuple(sorted(tuple(e) for e in edges)), t.get("end", False), t.get("knots", 0))
+    S.mark_as_sensed(v, Signature(S.degree(v), thread=tm), 0)
+
+
 def map_to_snapshot(S: PartialMap, version: int = 1) -> dict[str, Any]:
     """The ``snapshot`` message for (S, U) in protocol ``version`` (edge marks need ``@2``)."""
     exits = [[None if S.arc((v, i)) is None else list(S.arc((v, i))) for i in range(S.degree(v))]
@@ -133,4 +162,7 @@ def map_to_snapshot(S: PartialMap, version: int = 1) -> dict[str, Any]:
     if version >= 2:
         marks += [{"vertex": v, "exit": dm.exit, "count": dm.count, "end": dm.end}
                   for v in S.vertices for dm in S.dart_marks(v)]
+        marks += [{"vertex": v, "thread": {"tied": t.tied, "head": t.head, "edges": [list(e) for e in t.edges],
+                                           "end": t.end, "knots": t.knots}}
+                  for v in S.vertices if (t := S.thread_mark(v)) is not None]
     return {"type": "snapshot", "S": {"exits": exits, "marks": marks}, "U": [list(d) for d in S.unexplored]}

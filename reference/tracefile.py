@@ -37,6 +37,7 @@ from typing import Any, Iterable, Iterator
 
 from topomark.spec.errors import InvalidInput
 from topomark.spec.jsontext import open_regular_file, parse_json
+from topomark.spec.kit import THREAD_OPS
 from topomark.spec.signature import Signature
 
 from .explore import TRACE_FORMAT_2
@@ -56,8 +57,8 @@ AUGMENTATIONS = ("loop", "non-loop")
 _I, _N, _S, _B, _O, _L, _D = "integer", "natural", "string", "boolean", "object", "list", "dart"
 _SIG, _SIGS, _INTS, _DARTS, _JOIN = "signature", "signatures", "integers", "darts", "join"
 _OBJ_OR_NULL, _S_OR_NULL, _POS, _DIR = "object or null", "string or null", "positive integer", "direction"
-OPS = ("drop", "pick_up")
-KINDS = ("vertex", "edge")
+OPS = ("drop", "pick_up", *THREAD_OPS)
+KINDS = ("vertex", "edge", "thread")
 
 Schema = tuple[dict[str, Any], dict[str, Any]]  # (required fields, optional fields): name -> kind or vocabulary
 EVENTS: dict[str, Schema] = {
@@ -174,6 +175,12 @@ def _check_record(rec: Any, where: str, table: dict[str, Schema], allowed: tuple
 def _check_op(rec: dict[str, Any], where: str) -> None:
     """An op is a :class:`~topomark.spec.kit.MarkerOp` as written: its fields fit its kind and operation."""
     kind, direction = rec["kind"], rec.get("direction")
+    if (kind == "thread") != (rec["op"] in THREAD_OPS):
+        raise InvalidInput(f"{where}: op.kind: a thread op ({', '.join(THREAD_OPS)}) has kind \"thread\" and no "
+                           f"other op does, got op {rec['op']!r} with kind {kind!r}")
+    if kind == "thread" and ("exit" in rec or (direction is not None and (rec["op"] != "tie"
+                                                                          or isinstance(direction, str)))):
+        raise InvalidInput(f"{where}: a thread op takes no exit, and a direction (a relative exit) only on a tie")
     if kind == "vertex" and "exit" in rec:
         raise InvalidInput(f"{where}: op.exit: a vertex marker takes no exit")
     if kind == "edge" and "exit" not in rec:

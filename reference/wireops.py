@@ -12,6 +12,14 @@ of a given degree, or raises :class:`~topomark.reference.protocol.ProtocolError`
 of kind ``garbage`` for a malformed field; whether the kit and the markers
 lying there allow the operation is the simulator's judgement, not this
 module's.  :func:`op_to_message` is the inverse (what ``drive`` sends).
+
+A ``thread`` message (§6.3) names a :class:`~topomark.spec.kit.ThreadOp`:
+``op`` one of ``tie``, ``untie``, ``leave``, ``take``, ``knot``, ``rewind``;
+``direction`` (``tie`` only: the relative exit the thread is laid out
+toward, or null) and ``count`` (``knot`` only: how many knots, default 1).
+The world answers each with a ``signature``; ``rewind`` moves the robot back
+along the last laid edge (a traversal, counted against the limit), its
+``signature`` is the vertex reached.
 """
 
 from __future__ import annotations
@@ -19,7 +27,7 @@ from __future__ import annotations
 import json
 from typing import Any
 
-from topomark.spec.kit import MarkerOp
+from topomark.spec.kit import THREAD_OPS, MarkerOp, ThreadOp
 
 from .protocol import ProtocolError, clip
 
@@ -40,8 +48,10 @@ def _shown(value: Any) -> str:
     return clip(json.dumps(value), 60)
 
 
-def op_from_message(msg: dict[str, Any], degree: int) -> MarkerOp:
-    """The operation a decoded ``@2`` ``drop``/``pick_up`` states, at a vertex of ``degree``."""
+def op_from_message(msg: dict[str, Any], degree: int) -> MarkerOp | ThreadOp:
+    """The operation a decoded ``@2`` ``drop``/``pick_up``/``thread`` states, at a vertex of ``degree``."""
+    if msg["type"] == "thread":
+        return _thread_op(msg, degree)
     kind, exit_, count = msg["kind"], msg.get("exit"), msg.get("count", 1)
     direction = msg.get("direction")
     if kind not in ("vertex", "edge"):
@@ -62,7 +72,23 @@ def op_from_message(msg: dict[str, Any], degree: int) -> MarkerOp:
     return MarkerOp(kind, exit=exit_, direction=direction, count=count, pick_up=msg["type"] == "pick_up")
 
 
-def op_to_message(op: MarkerOp) -> dict[str, Any]:
-    """The ``@2`` message for ``op``: ``MarkerOp.to_json`` with ``type`` in place of ``op``."""
+def _thread_op(msg: dict[str, Any], degree: int) -> ThreadOp:
+    op, direction, count = msg["op"], msg.get("direction"), msg.get("count", 1)
+    if op not in THREAD_OPS:
+        raise _bad(msg, f"op must be one of {', '.join(THREAD_OPS)}, got {_shown(op)}")
+    if direction is not None and not (op == "tie" and _int(direction) and 0 <= direction < degree):
+        raise _bad(msg, f"a direction is an exit 0..{degree - 1} here, on a tie only, got {_shown(direction)}")
+    if not (_int(count) and 1 <= count <= MAX_COUNT) or (count != 1 and op != "knot"):
+        raise _bad(msg, f"count must be an integer 1..{MAX_COUNT}, and 1 but for a knot, got {_shown(count)}")
+    return ThreadOp(op, direction, count)
+
+
+def op_to_message(op: MarkerOp | ThreadOp) -> dict[str, Any]:
+    """The ``@2`` message for ``op``: ``MarkerOp.to_json`` with ``type`` in place of ``op``; a thread op is
+    ``{"type": "thread", "op": ..., "direction": ..., "count": ...}``."""
+    if isinstance(op, ThreadOp):
+        fields = op.to_json()
+        del fields["kind"]
+        return {"type": "thread", **fields}
     fields = op.to_json()
     return {"type": fields.pop("op"), **fields}

@@ -27,6 +27,10 @@ True
 'the kit (1 undirected vertex marker) has no edge marker'
 >>> MarkerOp("edge", exit=2, direction="H").to_json()
 {'op': 'drop', 'kind': 'edge', 'count': 1, 'exit': 2, 'direction': 'H'}
+>>> ThreadOp("tie", direction=0).to_json()
+{'op': 'tie', 'kind': 'thread', 'count': 1, 'direction': 0}
+>>> Kit(vertex=1).thread_refusal()
+'the kit (1 undirected vertex marker) has no thread'
 """
 
 from __future__ import annotations
@@ -36,7 +40,7 @@ from typing import Any
 
 from .errors import InvalidInput
 
-__all__ = ["Kit", "MarkerOp"]
+__all__ = ["Kit", "MarkerOp", "ThreadOp", "THREAD_OPS"]
 
 
 @dataclass(frozen=True)
@@ -87,6 +91,10 @@ class Kit:
             left = have - held
             return f"the kit ({self.describe()}) holds {have} {kind} marker(s): {left or 'none'} left, {count} asked for"
         return None
+
+    def thread_refusal(self) -> str | None:
+        """Why a thread operation is not allowed with this kit (it has no thread), or None."""
+        return None if self.thread is not None else f"the kit ({self.describe()}) has no thread"
 
     def to_json(self) -> dict[str, Any]:
         """The kit as the protocol's ``hello.markers`` object, e.g. ``{"directional-vertex": 1}``."""
@@ -143,6 +151,35 @@ class MarkerOp:
         out = {"op": "pick_up" if self.pick_up else "drop", "kind": self.kind, "count": self.count}
         if self.exit is not None:
             out["exit"] = self.exit
+        if self.direction is not None:
+            out["direction"] = self.direction
+        return out
+
+
+THREAD_OPS = ("tie", "untie", "leave", "take", "knot", "rewind")
+"""The thread operations (§6.3, :mod:`topomark.spec.thread` says what each does)."""
+
+
+@dataclass(frozen=True)
+class ThreadOp:
+    """A thread operation as the robot states it, relative to its entry edge (§6.3).
+
+    ``op`` is one of :data:`THREAD_OPS`: ``tie`` the thread here (``direction``:
+    the relative exit it is laid out toward, the l = ε thread's direction, or
+    None), ``untie`` it, ``leave`` its free end here, ``take`` the free end
+    lying here, tie ``count`` knots here (``knot``), ``rewind`` (a move back
+    along the last laid edge, picking it up; see ``Robot.rewind``).  Its JSON
+    form has the shape of :meth:`MarkerOp.to_json` with ``kind`` ``"thread"``.
+    """
+
+    op: str
+    direction: int | None = None
+    count: int = 1
+
+    kind = "thread"
+
+    def to_json(self) -> dict:
+        out: dict = {"op": self.op, "kind": "thread", "count": self.count}
         if self.direction is not None:
             out["direction"] = self.direction
         return out

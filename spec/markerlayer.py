@@ -20,7 +20,13 @@ the place; the simulator reports it as the explorer's fault):
   ``E#``; §6.2, Figure 6.8); a directional marker joins only markers pointing
   the same way — one place cannot point two ways (the world format holds one
   head per vertex and one per edge);
-* a pick-up takes markers that are there, and no more.
+* a pick-up takes markers that are there, and no more;
+* the thread (§6.3) is a :class:`~topomark.spec.thread.ThreadState` in the
+  same layer (:attr:`MarkerLayer.thread`): :func:`apply_op` carries out a
+  :class:`~topomark.spec.kit.ThreadOp`, :meth:`MarkerLayer.pull` is what a
+  move does to it, :meth:`MarkerLayer.thread_mark` what lies at a vertex,
+  and :meth:`MarkerLayer.world` a
+  :class:`~topomark.spec.thread.ThreadedWorld` while the thread is tied.
 
 Examples
 --------
@@ -44,8 +50,9 @@ from __future__ import annotations
 from typing import Iterator
 
 from .errors import InvalidInput
-from .kit import MarkerOp
+from .kit import MarkerOp, ThreadOp
 from .marker import EdgeMarker, Marker, VertexMarker
+from .thread import Thread, ThreadedWorld, ThreadMark, ThreadState
 from .world import DartMark, VertexMark, World
 
 __all__ = ["MarkerLayer", "apply_op"]
@@ -56,7 +63,7 @@ _FLIP = {"H": "T", "T": "H", None: None}
 class MarkerLayer:
     """Mutable markers over ``world``'s rotation; starts with the world's own markers."""
 
-    __slots__ = ("base", "_vmarks", "_emarks", "_dmarks", "_world", "degree", "target", "neighbour")
+    __slots__ = ("base", "_vmarks", "_emarks", "_dmarks", "_world", "degree", "target", "neighbour", "thread")
 
     def __init__(self, world: World):
         self.base = world
@@ -73,6 +80,8 @@ class MarkerLayer:
         self._dmarks: dict[str, tuple[DartMark, ...]] = {v: world.dart_marks(v) for v in world.vertices
                                                          if world.dart_marks(v)}
         self._world: World | None = world
+        thread = getattr(world, "thread", None)
+        self.thread = ThreadState() if thread is None else thread.state(world)
 
     # -- the queries of a world (degree, target and neighbour are bound in __init__) ----
     @property
@@ -84,6 +93,18 @@ class MarkerLayer:
 
     def dart_marks(self, v: str) -> tuple[DartMark, ...]:
         return self._dmarks.get(v, ())
+
+    def thread_mark(self, v: str) -> ThreadMark | None:
+        """What of the thread lies at ``v`` (absolute exits), or None."""
+        return None if self.thread.tied is None else self.thread.marks(self.base).get(v)
+
+    def pull(self, state: tuple[str, int], motion: int, length: int) -> bool:
+        """What a move from ``state`` by ``motion`` does to the thread (:meth:`ThreadState.pull`):
+        True if it rewinds an edge; a lay beyond ``length`` edges is refused before the robot moves."""
+        if self.thread.tied is None or not self.thread.held:
+            return False
+        self._world = None
+        return self.thread.pull(self.base, state, motion, length)
 
     def _refresh(self, v: str, exit: int) -> None:
         """Recompute the dart marks at both ends of the edge at exit ``exit`` of ``v`` after a change."""
@@ -169,12 +190,19 @@ class MarkerLayer:
     def world(self) -> World:
         """A :class:`World` with the current markers (built once per change, on demand)."""
         if self._world is None:
-            self._world = self.base.with_markers(tuple(self.markers()), self.base.start)
+            thread = Thread.of(self.base, self.thread)
+            if thread is None:
+                self._world = World(self.base.rotation, tuple(self.markers()), self.base.start)
+            else:
+                self._world = ThreadedWorld(self.base.rotation, tuple(self.markers()), self.base.start, thread)
         return self._world
 
 
-def apply_op(layer: MarkerLayer, state: tuple[str, int], op: MarkerOp) -> None:
+def apply_op(layer: MarkerLayer, state: tuple[str, int], op: MarkerOp | ThreadOp) -> None:
     """Carry out ``op`` by a robot in ``state`` = (vertex, entry); refusals are InvalidInput naming why."""
+    if isinstance(op, ThreadOp):
+        layer._world = None
+        return layer.thread.apply(layer.base, state, op, 0)
     v, entry = state
     d = layer.degree(v)
     if op.kind == "vertex":

@@ -9,7 +9,22 @@ marker-related perception, written ``[degree, V#-dir, otherInfo]``:
 * ``otherInfo`` — ``A`` or, for edge markers (§6.1, Figure 6.1), one item per
   marked incident edge: ``E-p`` (undirected) or ``E-p-H`` / ``E-p-T``
   (directional: the head/tail of the marker points at this vertex), ``p`` the
-  marked exit relative to the entry edge; ``E2-p`` for two markers.
+  marked exit relative to the entry edge; ``E2-p`` for two markers;
+* thread items (§6.3, :mod:`topomark.spec.thread`), after the edge part and
+  only where the thread lies at this vertex: ``T`` — the thread is tied here,
+  ``T-p`` tied here and laid out toward relative exit ``p`` (the direction of
+  an l = ε thread, L2030: "whether the thread is present at the vertex and
+  the direction of the thread"); ``S-p`` — the thread lies along the edge at
+  relative exit ``p`` (a "thread-marked" or "stringed" edge, L2046, L2121),
+  ``S2-p`` twice; ``F`` — the thread's free end lies here (L2049); ``K`` —
+  a knot is tied here, ``K3`` three (Figure 6.20).  In that order, edges by
+  exit: e.g. ``[3,A,A,T-0,F]`` (an l = ε thread tied here, toward the
+  entry edge) or ``[4,A,A,S-0,S-2,K2]``.
+
+"The marks at v" are what :func:`signature_at` reads — ``vertex_mark(v)``,
+``dart_marks(v)`` and, on anything that has one, ``thread_mark(v)`` — so
+isomorphism, the census and every check that compares marks derive them
+from it.
 
 Examples
 --------
@@ -23,6 +38,10 @@ Examples
 '[3,A,E-1-H]'
 >>> Signature.parse("[4,V-1,E-1-H,E-3-T]") == Signature(4, 1, 1, ((1, 1, "H"), (3, 1, "T")))
 True
+>>> str(Signature(3, thread=ThreadMark(tied=True, head=0, end=True)))
+'[3,A,A,T-0,F]'
+>>> Signature.parse("[4,A,E-1,S-0,S2-2,K3]").thread
+ThreadMark(tied=False, head=None, edges=((0, 1), (2, 2)), end=False, knots=3)
 """
 
 from __future__ import annotations
@@ -32,6 +51,7 @@ from dataclasses import dataclass
 from typing import Protocol
 
 from .errors import InvalidInput, Violation
+from .thread import ThreadMark, shifted
 from .world import MAX_DEGREE, DartMark, VertexMark
 
 __all__ = ["Signature", "signature_at", "depends_on_entry", "back_link_table", "Marked"]
@@ -55,6 +75,7 @@ class Signature:
     vertex_count: int = 0
     vertex_direction: int | None = None
     edges: tuple[tuple[int, int, str | None], ...] = ()
+    thread: ThreadMark | None = None  # relative exits; None where no thread lies
 
     def __str__(self) -> str:
         if self.vertex_count == 0:
@@ -71,6 +92,8 @@ class Signature:
                 item = "E" + (str(count) if count > 1 else "") + f"-{pos}"
                 items.append(item + (f"-{end}" if end else ""))
             epart = ",".join(items)
+        if self.thread is not None:
+            epart += "".join("," + item for item in _thread_items(self.thread))
         return f"[{self.degree},{vpart},{epart}]"
 
     __repr__ = __str__
@@ -78,7 +101,7 @@ class Signature:
     @property
     def marked(self) -> bool:
         """True if any marker is sensed here."""
-        return self.vertex_count > 0 or bool(self.edges)
+        return self.vertex_count > 0 or bool(self.edges) or self.thread is not None
 
     _V = re.compile(r"V([0-9]*)(?:-([0-9]+))?")
     _E = re.compile(r"E([0-9]*)-([0-9]+)(?:-([HT]))?")
@@ -113,8 +136,12 @@ class Signature:
             count = _number(mv.group(1) or "1", "marker count", text)
             direction = _number(mv.group(2), "direction", text) if mv.group(2) is not None else None
         edges = []
-        if parts[2:] != ["A"]:
-            for item in parts[2:]:
+        items = parts[2:]
+        thread_from = next((k for k, item in enumerate(items) if k > 0 and item[:1] in "TSFK"), len(items))
+        thread = _parse_thread(items[thread_from:], text) if thread_from < len(items) else None
+        items = items[:thread_from]
+        if items != ["A"]:
+            for item in items:
                 me = cls._E.fullmatch(item)
                 if not me:
                     raise InvalidInput(f"signature {_shown(text)}: cannot read edge part {_shown(item)}")
@@ -125,7 +152,10 @@ class Signature:
         positions = [e[0] for e in edges]
         if any(p >= degree for p in positions) or len(set(positions)) != len(positions):
             raise InvalidInput(f"signature {_shown(text)}: edge markers need distinct exits < degree {degree}")
-        sig = cls(degree, count, direction, tuple(sorted(edges, key=lambda e: e[0])))
+        if thread is not None and (any(x >= degree for x, _ in thread.edges)
+                                   or (thread.head is not None and thread.head >= degree)):
+            raise InvalidInput(f"signature {_shown(text)}: thread exits must be < degree {degree}")
+        sig = cls(degree, count, direction, tuple(sorted(edges, key=lambda e: e[0])), thread)
         if str(sig) != body.replace(" ", ""):
             raise InvalidInput(f"signature {_shown(text)} is not in canonical thesis notation (expected {sig})")
         return sig
@@ -148,6 +178,44 @@ def _number(digits: str, what: str, text: str) -> int:
     return int(digits)
 
 
+_T = re.compile(r"T(?:-([0-9]+))?")
+_S = re.compile(r"S([0-9]*)-([0-9]+)")
+_K = re.compile(r"K([0-9]*)")
+
+
+def _thread_items(t: ThreadMark) -> list[str]:
+    """A :class:`ThreadMark` (relative exits) in thesis-style notation: ``T[-p]``, ``S[k]-p``, ``F``, ``K[k]``."""
+    items = []
+    if t.tied:
+        items.append("T" if t.head is None else f"T-{t.head}")
+    items += [f"S{k if k > 1 else ''}-{x}" for x, k in t.edges]
+    if t.end:
+        items.append("F")
+    if t.knots:
+        items.append("K" + (str(t.knots) if t.knots > 1 else ""))
+    return items
+
+
+def _parse_thread(items: list[str], text: str) -> ThreadMark:
+    tied, head, edges, end, knots = False, None, [], False, 0
+    for item in items:
+        mt, ms, mk = _T.fullmatch(item), _S.fullmatch(item), _K.fullmatch(item)
+        if mt:
+            tied, head = True, (_number(mt.group(1), "thread direction", text) if mt.group(1) else None)
+        elif ms:
+            edges.append((_number(ms.group(2), "thread edge exit", text),
+                          _number(ms.group(1) or "1", "thread count", text)))
+        elif item == "F":
+            end = True
+        elif mk:
+            knots = _number(mk.group(1) or "1", "knot count", text)
+        else:
+            raise InvalidInput(f"signature {_shown(text)}: cannot read thread part {_shown(item)}")
+    if len({x for x, _ in edges}) != len(edges):
+        raise InvalidInput(f"signature {_shown(text)}: thread edges need distinct exits")
+    return ThreadMark(tied, head, tuple(sorted(edges)), end, knots)
+
+
 def signature_at(g: Marked, v, entry: int) -> Signature:
     """The signature sensed at ``v`` by a robot whose entry edge is exit ``entry`` (§3.1.1).
 
@@ -157,7 +225,9 @@ def signature_at(g: Marked, v, entry: int) -> Signature:
     d = g.degree(v)
     mark = g.vertex_mark(v)
     marks = g.dart_marks(v)
-    if mark is None and not marks:
+    thread_mark = getattr(g, "thread_mark", None)  # worlds and maps without a thread need not have one
+    tm = None if thread_mark is None else thread_mark(v)
+    if mark is None and not marks and tm is None:
         return _plain(d)
     count, direction = 0, None
     if mark is not None:
@@ -165,14 +235,17 @@ def signature_at(g: Marked, v, entry: int) -> Signature:
         if mark.head is not None:
             direction = (mark.head - entry) % d
     edges = tuple(sorted(((dm.exit - entry) % d, dm.count, dm.end) for dm in marks))
-    return Signature(d, count, direction, edges)
+    return Signature(d, count, direction, edges, None if tm is None else shifted(tm, entry, d))
 
 
 def depends_on_entry(g: Marked, v) -> bool:
     """Whether :func:`signature_at` may differ between entries of ``v``: only a directional
-    vertex marker or an edge marker is read relative to the entry edge (§3.1.1)."""
+    vertex marker, an edge marker or a thread's direction or edges is read relative to the entry edge (§3.1.1)."""
     mark = g.vertex_mark(v)
-    return (mark is not None and mark.head is not None) or bool(g.dart_marks(v))
+    thread_mark = getattr(g, "thread_mark", None)
+    tm = None if thread_mark is None else thread_mark(v)
+    return ((mark is not None and mark.head is not None) or bool(g.dart_marks(v))
+            or (tm is not None and (tm.head is not None or bool(tm.edges))))
 
 
 def back_link_table(g: Marked, v, where: str) -> tuple[dict[Signature, int], Violation | None]:

@@ -14,6 +14,16 @@ Markers are ``{"kind": "vertex", "at": V, "count": K, "points_to": W}``
 for a directional edge marker).  ``start`` is optional.  A map written by an
 explorer uses the same format, so any two files can be compared.
 
+``thread`` (optional, §6.3; a file without it is exactly as before) is a
+thread laid in the world, :class:`~topomark.spec.thread.Thread`:
+``{"walk": [V, ...], "points_to": W, "end": "left", "knots": [[i, K], ...]}``
+— tied at ``walk[0]``, laid along the walk's edges in order, ``points_to``
+the neighbour of ``walk[0]`` it is laid out toward (optional: the direction
+of an l = ε thread, whose walk is its one vertex), ``end`` ``"left"`` (its
+free end lies at ``walk[-1]``, the default) or ``"held"`` (a robot holds it
+there), ``knots`` ``K`` knots at walk position ``i`` (optional).  A world
+with one is a :class:`~topomark.spec.thread.ThreadedWorld`.
+
 Loading is strict: malformed JSON, duplicate keys, unknown keys, a wrong
 format version and every graph condition of §3.1.1 give one
 :class:`~topomark.spec.errors.InvalidWorld` naming what is wrong.  So do
@@ -29,6 +39,10 @@ Examples
 >>> w = loads_world('{"format": "topomark/world@1", "rotation": {"a": ["b"], "b": ["a"]}}')
 >>> loads_world(dumps_world(w)) == w
 True
+>>> t = loads_world('{"format": "topomark/world@1", "rotation": {"a": ["b"], "b": ["a"]}, '
+...                 '"thread": {"walk": ["a"], "points_to": "b"}}')
+>>> t.thread_mark("a"), loads_world(dumps_world(t)) == t
+(ThreadMark(tied=True, head=0, edges=(), end=True, knots=0), True)
 >>> loads_world('{"format": "topomark/world@2", "rotation": {}}')
 Traceback (most recent call last):
 ...
@@ -44,7 +58,9 @@ from typing import Any
 
 from .errors import InvalidWorld
 from .jsontext import parse_json, read_text_file
+from .errors import InvalidInput
 from .marker import EdgeMarker, VertexMarker
+from .thread import Thread, ThreadedWorld
 from .world import Start, World, check_size
 
 __all__ = ["FORMAT", "MAX_WORLD_BYTES", "schema", "world_from_json", "world_to_json", "marker_to_json",
@@ -127,7 +143,7 @@ def world_from_json(obj: Any) -> World:
     fmt = obj.get("format")
     _expect(fmt == FORMAT, f"unknown format {fmt!r} (this is {FORMAT})" if "format" in obj
             else f"missing key 'format' (expected {FORMAT!r})")
-    _keys(obj, {"format", "rotation", "markers", "start"}, {"format", "rotation"}, "world")
+    _keys(obj, {"format", "rotation", "markers", "start", "thread"}, {"format", "rotation"}, "world")
     rot = obj["rotation"]
     _expect(isinstance(rot, dict), "rotation must be an object mapping each vertex to its clockwise neighbours")
     for v, ns in rot.items():
@@ -143,7 +159,30 @@ def world_from_json(obj: Any) -> World:
         _expect(isinstance(start, dict), "start must be an object {\"at\": V, \"facing\": W}")
         _keys(start, {"at", "facing"}, {"at", "facing"}, "start")
         start = Start(_string(start["at"], "start.at"), _string(start["facing"], "start.facing"))
-    return World(rot, [_marker(m, k) for k, m in enumerate(markers)], start)
+    marks = [_marker(m, k) for k, m in enumerate(markers)]
+    if "thread" not in obj:
+        return World(rot, marks, start)
+    thread = _thread(obj["thread"])
+    try:
+        return ThreadedWorld(rot, marks, start, thread)
+    except InvalidInput as exc:
+        raise InvalidWorld(f"thread: {exc}") from None
+
+
+def _thread(obj: Any) -> Thread:
+    _expect(isinstance(obj, dict), "thread must be an object {\"walk\": [V, ...], ...}")
+    _keys(obj, {"walk", "points_to", "end", "knots"}, {"walk"}, "thread")
+    walk = obj["walk"]
+    _expect(isinstance(walk, list) and len(walk) >= 1, "thread.walk must be a non-empty list of vertex names")
+    walk = tuple(_string(v, f"thread.walk[{k}]") for k, v in enumerate(walk))
+    points = _string(obj["points_to"], "thread.points_to") if "points_to" in obj else None
+    end = obj.get("end", "left")
+    _expect(end in ("left", "held"), f"thread.end must be \"left\" or \"held\", got {_show(end)}")
+    knots = obj.get("knots", [])
+    _expect(isinstance(knots, list) and all(isinstance(k, list) and len(k) == 2 and all(
+        isinstance(x, int) and not isinstance(x, bool) for x in k) for k in knots),
+        "thread.knots must be a list of [position, count] pairs of integers")
+    return Thread(walk, points, end == "left", tuple(tuple(k) for k in knots))
 
 
 def world_to_json(world: World) -> dict[str, Any]:
@@ -154,6 +193,15 @@ def world_to_json(world: World) -> dict[str, Any]:
         out["markers"] = markers
     if world.start is not None:
         out["start"] = {"at": world.start.at, "facing": world.start.facing}
+    thread = getattr(world, "thread", None)
+    if thread is not None:
+        item: dict[str, Any] = {"walk": list(thread.walk)}
+        if thread.points_to is not None:
+            item["points_to"] = thread.points_to
+        item["end"] = "left" if thread.end_left else "held"
+        if thread.knots:
+            item["knots"] = [list(k) for k in thread.knots]
+        out["thread"] = item
     return out
 
 

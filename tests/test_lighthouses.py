@@ -4,6 +4,7 @@ Chapter 3–4 algorithm."""
 from __future__ import annotations
 
 import doctest
+from collections import Counter
 
 import pytest
 
@@ -14,7 +15,7 @@ from topomark.reference.generators import generate, wheel_a, wheel_b
 from topomark.reference.simulator import Simulator
 from topomark.spec.errors import CheckFailure
 from topomark.spec.isomorphism import find_isomorphism
-from topomark.spec.kit import Kit, MarkerOp
+from topomark.spec.kit import Kit, MarkerOp, ThreadOp
 from topomark.spec.signature import signature_at
 from topomark.spec.marker import EdgeMarker, VertexMarker
 from topomark.spec.world import World
@@ -47,7 +48,9 @@ def test_every_lighthouse_maps_every_world_with_every_algorithm(world, name, alg
     sim, S = _run(WORLDS[world](), LIGHTHOUSES[name], algorithm)
     result = find_isomorphism(S.to_world(), sim.world)
     assert result.isomorphic, result.mismatch
-    assert sum(m.count for m in sim.world.markers) == sum(op.count for op in LIGHTHOUSES[name].ops)
+    ops = LIGHTHOUSES[name].ops
+    assert sum(m.count for m in sim.world.markers) == sum(op.count for op in ops if isinstance(op, MarkerOp))
+    assert (getattr(sim.world, "thread", None) is not None) == any(isinstance(op, ThreadOp) for op in ops)
 
 
 @pytest.mark.parametrize("world", sorted(WORLDS))
@@ -58,7 +61,7 @@ def test_every_pair_is_verified_by_the_checker(world, name, algorithm):
     w = WORLDS[world]()
     outcome = explore(World(w.rotation, (), w.start), algorithm, lighthouse=name, record=False)
     assert outcome.verified, outcome.violation
-    assert outcome.marker_operations == {"drop": len(LIGHTHOUSES[name].ops)}
+    assert outcome.marker_operations == Counter(getattr(op, "op", "drop") for op in LIGHTHOUSES[name].ops)
 
 
 def test_the_map_file_shows_the_markers_where_the_robot_dropped_them(tmp_path, capsys):

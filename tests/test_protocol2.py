@@ -58,13 +58,13 @@ def play(command, world=TRIANGLE, kit=EDGE_KIT, version=2):
 
 # -- messages ---------------------------------------------------------------------
 def test_decode_at_2_takes_the_markerop_fields_and_refuses_the_at_1_forms():
-    two = Expect(("drop", "pick_up", "hello"), 2)
+    two = Expect(("drop", "pick_up", "thread", "hello"), 2)
     assert decode('{"type": "drop", "kind": "edge", "exit": 1, "direction": "H", "count": 2}', two)["count"] == 2
     assert decode('{"type": "pick_up", "kind": "vertex"}', two) == {"type": "pick_up", "kind": "vertex"}
     assert decode('{"type": "hello", "protocol": "x", "role": "world", "kit": {}, "signature": "[1,A,A]"}', two)
     for line, words in [('{"type": "drop", "direction": 0}', "missing field 'kind'"),
                         ('{"type": "pick_up", "kind": "vertex", "direction": 0}', "unknown field 'direction'"),
-                        ('{"type": "thread", "kind": "lay"}', "unknown message type 'thread'")]:
+                        ('{"type": "thread", "kind": "lay"}', "missing field 'op'")]:
         with pytest.raises(ProtocolError) as exc:
             decode(line, two)
         assert exc.value.kind == "garbage" and words in str(exc.value)
@@ -164,7 +164,7 @@ def test_cli_client2_and_the_conformance_suite_at_2(tmp_path, capsys):
 
 @pytest.mark.parametrize("args, words", [
     (["--protocol", "1", "--kit", '{"directional-edge": 1}'], "--kit needs topomark/protocol@2"),
-    (["--kit", '{"directional-edge": 1, "thread": 3}'], "thread operations"),
+    (["--kit", '{"directional-edge": 1, "thread": -3}'], "thread length must be a non-negative integer"),
     (["--kit", '{"sideways-edge": 1}'], "unknown key"),
     (["--kit", "{"], "--kit"),
     (["--kit", "{}"], "give 1..1000000"),
@@ -247,7 +247,9 @@ def test_an_operation_the_kit_or_the_markers_refuse_is_a_marker_failure(scripted
     ({"type": "drop", "kind": "edge", "exit": 0, "direction": "H", "count": 0}, "count must be an integer 1..1000000"),
     ({"type": "drop", "kind": "edge", "exit": 0, "direction": "H", "count": 10 ** 6 + 1}, "count must be"),
     ({"type": "pick_up", "kind": "edge", "exit": 0, "count": "1"}, "must be integer"),
-    ({"type": "thread", "op": "lay"}, "unknown message type 'thread'"),
+    ({"type": "thread", "op": "lay"}, "op must be one of tie, untie"),
+    ({"type": "thread", "op": "leave", "direction": 0}, "on a tie only"),
+    ({"type": "thread", "op": "tie", "count": 2}, "1 but for a knot"),
 ])
 def test_a_malformed_operation_is_garbage_with_a_bounded_message(scripted, op, words):
     result = play(scripted(op))

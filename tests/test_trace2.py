@@ -20,6 +20,7 @@ from topomark.reference.cli import main
 from topomark.reference.explore import dump_trace, explore
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES
 from topomark.reference.replay import parse_trace, replay
+from topomark.reference.robotlayer import marker_op
 from topomark.reference.simulator import Simulator
 from topomark.spec.kit import Kit, MarkerOp
 from topomark.spec.world import Start, World
@@ -48,8 +49,8 @@ def index(trace: list[dict], pred) -> int:
 
 # -- every lighthouse x every algorithm: explore writes it, replay verifies it -------------------
 @pytest.mark.parametrize("world", WORLDS)
-@pytest.mark.parametrize("light", LIGHTHOUSES)
-@pytest.mark.parametrize("algorithm", ALGORITHMS)
+@pytest.mark.parametrize("light", [n for n, h in LIGHTHOUSES.items() if h.search is None])  # searched ones fail on
+@pytest.mark.parametrize("algorithm", ALGORITHMS)  # the cycle: tests/test_lighthouse_search.py replays them
 def test_explore_then_replay_verifies_every_lighthouse_and_algorithm(tmp_path, capsys, world, light, algorithm):
     w, t = files(tmp_path, WORLDS[world], "")
     assert main(["explore", w, "--lighthouse", light, "--algorithm", algorithm, "--trace", t]) == 0
@@ -62,7 +63,7 @@ def test_explore_then_replay_verifies_every_lighthouse_and_algorithm(tmp_path, c
         assert header["format"] == "topomark/trace@2" and header["family"] == "algorithm-3.1"
         assert (header["lighthouse"], header["kit"]) == (light, LIGHTHOUSES[light].kit.to_json())
         ops = [r for r in records if r["event"] == "op"]
-        assert [MarkerOp(r["kind"], r.get("exit"), r.get("direction"), r["count"]) for r in ops] == \
+        assert [marker_op(r) for r in ops] == \
             list(LIGHTHOUSES[light].ops)
         script = LIGHTHOUSES[light].script or LIGHTHOUSES[light].ops  # ops at v0, or between establish moves
         steps = [sum(isinstance(x, int) for x in script[:k]) for k, x in enumerate(script) if not isinstance(x, int)]
@@ -79,7 +80,7 @@ def test_hypotheses_are_rechecked_for_every_lighthouse(light):
     assert replay(LATTICE, iter(copy.deepcopy(trace))).ok
     k = index(trace, lambda r: r["event"] == "iteration" and any(h["outcome"] == "case 3" for h in r["hypotheses"]))
     h = next(h for h in trace[k]["hypotheses"] if h["outcome"] == "case 3")
-    assert any("E" in s or "V" in s for s in h["expected"])  # the lighthouse's marks are in P^E
+    assert any("E" in s or "V" in s or ",T" in s for s in h["expected"])  # the lighthouse's marks are in P^E
     h["expected"][-1] = h["perceived"][-1] = "[2,A,A]" if h["expected"][-1] != "[2,A,A]" else "[3,A,A]"
     result = replay(LATTICE, iter(trace))
     assert not result.ok and result.line == k + 1 and result.divergence.check == "hypothesis"

@@ -58,6 +58,6 @@ def test_robot_exposes_only_motions_perception_and_markers():
     robot = sim.robot()
     assert isinstance(robot, Robot)
     public = {name for name in dir(robot) if not name.startswith("_")}
-    assert public == {"move", "sense", "operate", "drop_marker"}
+    assert public == {"move", "sense", "operate", "drop_marker", "rewind"}  # rewind: a thread move (§6.3)
     assert not hasattr(robot, "__dict__")  # __slots__: nothing can be attached
     assert str(robot.move(1, "new")) == "[2,A,A]" and sim.cost == 1

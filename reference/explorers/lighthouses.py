@@ -12,6 +12,7 @@ directional-vertex         a directional vertex marker pointing at exit 0       
 directional-edge           a directional edge marker on exit 0, its head at v0         §6.1, Figure 6.1(b)
 vertex-and-edge            an undirected marker at v0 and one on exit 0                §6.2
 three-undirected-edge      one undirected marker on exit 0, two on exit 1              §6.2
+thread                     a thread of length ε tied at v0, laid out toward exit 0     §6.3.1 (L2028-L2030)
 =========================  ==========================================================  =====================
 
 A :class:`Lighthouse` drops its markers, then records in S what it senses at
@@ -51,7 +52,7 @@ from dataclasses import dataclass, replace
 from typing import Any, Callable, Iterator
 
 from topomark.spec.errors import CheckFailure, InvalidInput
-from topomark.spec.kit import Kit, MarkerOp
+from topomark.spec.kit import Kit, MarkerOp, ThreadOp
 from topomark.spec.mapstate import PartialMap
 from topomark.spec.signature import Signature, back_link_table, signature_at
 
@@ -98,7 +99,7 @@ class Lighthouse:
     name: str
     thesis: str
     kit: Kit
-    ops: tuple[MarkerOp, ...]
+    ops: tuple[MarkerOp | ThreadOp, ...]
     drops: str  # what the robot drops, in words
     min_degree: int = 1
     script: tuple = ()
@@ -208,6 +209,10 @@ LIGHTHOUSES: dict[str, Lighthouse] = {h.name: h for h in (
     Lighthouse("undirected-edge", "§6.1, Figure 6.2", Kit(edge=1), (_edge(0),),
                "one undirected edge marker, dropped on an edge a random walk found with ends of different degrees",
                search=search_edge, options=("seed", "walk_limit")),
+    # §6.3.1 L2028-L2030: tied at v0, laid out toward the faced exit, its free end left there; the robot senses
+    # "whether the thread is present at the vertex and the direction of the thread": T-p and F (spec.signature).
+    Lighthouse("thread", "§6.3.1 (L2028-L2030)", Kit(thread=0), (ThreadOp("tie", direction=0), ThreadOp("leave")),
+               "a thread of length ε tied at the start vertex, laid out toward the faced exit"),
 )}
 """The lighthouses by name; ``directional-vertex`` is Algorithm 3.1's own and the default."""
 
