@@ -1,11 +1,14 @@
 """The census's map: languages of every placement on a slice of the worlds (thesis §3.2, §3.3, §3.7, §6.1).
 
-A *unit* is ``(n, gi, c, C)``: the orbit representatives of graph ``gi`` of
-:func:`topomark.proofs.enumerate.connected_graphs` (n, D) whose index is
-``c`` modulo ``C`` (a graph with many rotation systems is split into ``C``
-units; every unit enumerates the graph's orbit representatives and keeps its
-own).  :func:`plan` groups units into map tasks of about ``task_worlds``
-worlds, estimated as ``∏ (deg v - 1)! / |Aut|`` per graph (exact when the
+A *unit* is ``(n, gi, lo, hi)``: the rotation systems of graph ``gi`` of
+:func:`topomark.proofs.enumerate.connected_graphs` (n, D) whose *rank* — index
+in the product order of :func:`topomark.proofs.enumerate.rotation_systems` —
+lies in ``lo..hi-1``, of which the unit keeps the orbit representatives (the
+least system of each Aut-orbit, decided from the system alone, so a graph
+with many rotation systems splits into independent units).  A world is named
+by ``(n, gi, rank)``; at fixed n that order is the enumeration's order.
+:func:`plan` groups units into map tasks of about ``task_worlds`` worlds,
+estimated as ``∏ (deg v - 1)! / |Aut|`` per graph (exact when the
 automorphism group acts freely; only used for balancing and the progress bar).
 
 :func:`run_map` computes, for every world of a task, every placement's
@@ -29,11 +32,14 @@ Examples
 >>> units = [u for t in plan(4, 3, 2, task_worlds=5) for u, _ in t]
 >>> sorted(units)[:3]
 [(2, 0, 0, 1), (3, 0, 0, 1), (3, 1, 0, 1)]
+>>> [rank for rank, _, _ in unit_worlds((4, 5, 0, 16), 3)]  # K4: 16 rotation systems, 3 worlds
+[0, 1, 5]
 """
 
 from __future__ import annotations
 
 import hashlib
+import itertools
 import math
 from functools import lru_cache
 from pathlib import Path
@@ -45,13 +51,14 @@ import numpy as np
 from topomark.proofs.census import _layouts, _marker_key, machine, minimise
 from topomark.proofs.census_language import start_digests
 from topomark.proofs.census_shards import combine, done_path, map_path, records, shard_of, write_atomic, write_json
-from topomark.proofs.enumerate import _automorphisms, _orbit_representatives, _world, connected_graphs
+from topomark.proofs.enumerate import _automorphisms, _world, connected_graphs
 from topomark.spec.marker import VertexMarker
 from topomark.spec.world import World
 
-__all__ = ["Unit", "plan", "estimate", "run_map", "unit_worlds", "world_at", "world_records", "marked"]
+__all__ = ["Unit", "plan", "estimate", "rotation_count", "run_map", "unit_worlds", "world_at", "world_records",
+           "marked"]
 
-Unit = tuple[int, int, int, int]  # (n, graph index, chunk, chunks)
+Unit = tuple[int, int, int, int]  # (n, graph index, first rank, end rank)
 
 
 @lru_cache(maxsize=None)
@@ -80,9 +87,10 @@ def plan(max_vertices: int, max_degree: int, min_vertices: int = 2,
         for gi, g in enumerate(_graphs(n, max_degree)):
             est = estimate(g, len(_autos(n, max_degree, gi)))
             chunks = -(-est // task_worlds)
+            ranks = rotation_count(n, max_degree, gi)
             for c in range(chunks):
                 share = est // chunks + (c < est % chunks)
-                current.append(((n, gi, c, chunks), share))
+                current.append(((n, gi, ranks * c // chunks, ranks * (c + 1) // chunks), share))
                 size += share
                 if size >= task_worlds:
                     tasks.append(current)
@@ -92,29 +100,96 @@ def plan(max_vertices: int, max_degree: int, min_vertices: int = 2,
     return tasks
 
 
+@lru_cache(maxsize=64)
+def _graph_data(n: int, max_degree: int, gi: int) -> tuple[list[list[tuple[int, ...]]], list[int], list[tuple]]:
+    """Per vertex its cyclic orders (the factors of ``enumerate.rotation_systems``, in its order), their
+    numbers, and every automorphism sigma of graph ``gi`` (the identity first) with its action on choices:
+    ``rows[u] = (w, table)`` where ``w = sigma⁻¹(u)`` and ``table[d]`` is the index, among u's choices,
+    of the image of w's choice ``d`` (written from its least neighbour, as ``enumerate._normal`` does)."""
+    g = _graphs(n, max_degree)[gi]
+    choices = []
+    for v in range(n):
+        first, *rest = sorted(g[v])
+        choices.append([(first, *perm) for perm in itertools.permutations(rest)])
+    index = [{c: d for d, c in enumerate(cs)} for cs in choices]
+    actions = []
+    for sigma in sorted(_autos(n, max_degree, gi), key=lambda s: any(k != v for k, v in s.items())):
+        inverse = {v: k for k, v in sigma.items()}
+        rows = []
+        for u in range(n):
+            w = inverse[u]
+            table = []
+            for c in choices[w]:
+                image = [sigma[x] for x in c]
+                k = image.index(min(image))
+                table.append(index[u][tuple(image[k:] + image[:k])])
+            rows.append((w, table))
+        actions.append((sigma, rows))
+    return choices, [len(c) for c in choices], actions
+
+
+def rotation_count(n: int, max_degree: int, gi: int) -> int:
+    """The number of rotation systems of graph ``gi``: ranks run over ``range(rotation_count(...))``."""
+    return math.prod(_graph_data(n, max_degree, gi)[1])
+
+
+def _digits(rank: int, radices: list[int]) -> list[int]:
+    """Mixed-radix digits of ``rank``, vertex 0 most significant (product order)."""
+    digits = [0] * len(radices)
+    for v in range(len(radices) - 1, -1, -1):
+        rank, digits[v] = divmod(rank, radices[v])
+    return digits
+
+
+def _stabiliser(digits: list[int], actions: list[tuple]) -> tuple[dict[int, int], ...] | None:
+    """The automorphisms fixing the rotation system ``digits`` if it is the least of its orbit, else None.
+
+    Product order on systems is the order of their digit lists (each
+    vertex's choices are in lexicographic order), so the image is compared
+    digit by digit, stopping at the first that differs.
+    """
+    fixing = []
+    for sigma, rows in actions:
+        for u, (w, table) in enumerate(rows):
+            e, d = table[digits[w]], digits[u]
+            if e != d:
+                if e < d:
+                    return None
+                break
+        else:
+            fixing.append(sigma)
+    return tuple(fixing)
+
+
 def unit_worlds(unit: Unit, max_degree: int) -> Iterator[tuple[int, World, tuple[dict[int, int], ...]]]:
-    """(rotation index, world, automorphisms of the world) for the unit's worlds."""
-    n, gi, c, chunks = unit
-    autos = _autos(n, max_degree, gi)
-    for ri, rot in enumerate(_orbit_representatives(_graphs(n, max_degree)[gi])):
-        if ri % chunks == c:
-            yield ri, _world(rot), tuple(s for s in autos if _fixes(rot, s))
+    """(rank, world, automorphisms of the world) for the orbit representatives with rank in the unit's range.
+
+    A representative is the least rotation system of its Aut-orbit in
+    product order, the one :func:`topomark.proofs.enumerate.embedded_worlds`
+    lists; deciding it needs only the system itself, so a graph's ranks split
+    into units that run anywhere (``tests/test_census_shards.py`` checks the
+    representatives against ``enumerate._orbit_representatives``).
+    """
+    n, gi, lo, hi = unit
+    choices, radices, actions = _graph_data(n, max_degree, gi)
+    digits = _digits(lo, radices)
+    for rank in range(lo, hi):
+        fixing = _stabiliser(digits, actions)
+        if fixing is not None:
+            yield rank, _world(tuple(choices[v][d] for v, d in enumerate(digits))), fixing
+        v = n - 1
+        while v >= 0:  # the next rank: an odometer, the last vertex fastest
+            digits[v] += 1
+            if digits[v] < radices[v]:
+                break
+            digits[v] = 0
+            v -= 1
 
 
-def _fixes(rot: tuple[tuple[int, ...], ...], sigma: dict[int, int]) -> bool:
-    """``enumerate._image(rot, sigma) == rot``, stopping at the first vertex whose cyclic order moves."""
-    for v, ns in enumerate(rot):
-        target = rot[sigma[v]]
-        image = [sigma[w] for w in ns]
-        k = image.index(target[0]) if target[0] in image else -1
-        if k < 0 or tuple(image[k:] + image[:k]) != target:
-            return False
-    return True
-
-
-def world_at(n: int, max_degree: int, gi: int, ri: int) -> World:
-    """The world a record names: rotation system ``ri`` of graph ``gi``."""
-    return next(w for r, w, _ in unit_worlds((n, gi, ri, ri + 1), max_degree) if r == ri)
+def world_at(n: int, max_degree: int, gi: int, rank: int) -> World:
+    """The world a record names: the rotation system of rank ``rank`` of graph ``gi``."""
+    choices, radices, _ = _graph_data(n, max_degree, gi)
+    return _world(tuple(choices[v][d] for v, d in enumerate(_digits(rank, radices))))
 
 
 def _layout_code(key: frozenset, sigma: dict[int, int]) -> tuple:

@@ -21,8 +21,10 @@ reduced again.  That is what makes a killed census resumable.
 A record is one member of a language class: ``d0, d1`` the 128-bit language
 digest, ``mask`` a bit per world size n seen in the class, ``n, m`` the
 world's size, ``gi`` the graph's index in
-:func:`topomark.proofs.enumerate.connected_graphs` (n, D), ``ri`` the index of
-the world's rotation system among that graph's orbit representatives, ``k``
+:func:`topomark.proofs.enumerate.connected_graphs` (n, D), ``ri`` the rank of
+the world's rotation system in the product order of
+:func:`topomark.proofs.enumerate.rotation_systems` (see
+:mod:`topomark.proofs.census_map`), ``k``
 the placement index (:meth:`MarkerClass.placements` order) and ``i0, i1`` a
 128-bit key equal for two members iff their marked worlds are
 extended-isomorphic (markers preserved, start ignored).  Members are ordered

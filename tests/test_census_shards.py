@@ -17,10 +17,11 @@ import topomark.proofs.census_run as census_run
 from topomark.proofs.census import census, language_code, machine, minimise
 from topomark.proofs.census_exec import Progress
 from topomark.proofs.census_language import start_digests
-from topomark.proofs.census_map import _graphs, _iso_key, _layouts, _marker_key, marked, unit_worlds
+from topomark.proofs.census_map import (_graphs, _iso_key, _layouts, _marker_key, marked, rotation_count,
+                                        unit_worlds, world_at)
 from topomark.proofs.census_run import sharded_census
 from topomark.proofs.census_shards import done_path, reduce_path
-from topomark.proofs.enumerate import canonical_form
+from topomark.proofs.enumerate import _image, _orbit_representatives, _world, canonical_form
 from topomark.reference.cli import main
 from topomark.reference.strategies import worlds
 from topomark.spec.errors import InvalidInput
@@ -59,12 +60,27 @@ def test_anchored_digest_equal_iff_code_equal_within_a_world(w):
         assert (_digest(w) == _digest(other)) == (_code(w) == _code(other))
 
 
+@pytest.mark.parametrize("n,max_degree", [(4, 3), (5, 4), (6, 3)])
+def test_units_list_the_enumerations_worlds(n, max_degree):
+    """Orbit representatives decided per rotation system, whole or split in ranges of 3 ranks, are
+    exactly ``enumerate``'s worlds in its order; world_at rebuilds each from its rank."""
+    for gi, g in enumerate(_graphs(n, max_degree)):
+        ranks = rotation_count(n, max_degree, gi)
+        whole = list(unit_worlds((n, gi, 0, ranks), max_degree))
+        split = [w for lo in range(0, ranks, 3) for _, w, _ in unit_worlds((n, gi, lo, min(ranks, lo + 3)), max_degree)]
+        assert [w for _, w, _ in whole] == [_world(r) for r in _orbit_representatives(g)] == split
+        assert all(world_at(n, max_degree, gi, rank) == w for rank, w, _ in whole)
+        for _, w, autos in whole:  # the stabiliser: automorphisms fixing the rotation system
+            assert all(_image(tuple(tuple(int(x[1:]) for x in w.rotation[f"v{v}"]) for v in range(n)), s)
+                       == tuple(tuple(int(x[1:]) for x in w.rotation[f"v{v}"]) for v in range(n)) for s in autos)
+
+
 @pytest.mark.parametrize("class_name", sorted(MARKER_CLASSES))
 def test_marked_and_iso_keys_agree_with_spec(class_name):
     """marked() senses what World() senses; iso keys are equal iff canonical forms are (n <= 4, D <= 4)."""
     for n in range(2, 5):
         for gi in range(len(_graphs(n, 4))):
-            for ri, w, autos in unit_worlds((n, gi, 0, 1), 4):
+            for ri, w, autos in unit_worlds((n, gi, 0, rotation_count(n, 4, gi)), 4):
                 keys: dict[bytes, tuple] = {}
                 for _, markers, _ in _layouts(class_name, w):
                     fast, slow = marked(w, markers), World(w.rotation, markers)
