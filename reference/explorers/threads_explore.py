@@ -1,0 +1,352 @@
+"""Mapping with a thread laid closest-first: Algorithm 6.7 (l = c(G)) and Algorithm 6.8 (l < c(G),
+explore-explore) (thesis §6.3.2–6.3.3, L2038–L2141, Figures 6.19, 6.21).
+
+The robot ties the thread at v_s (first v0) and lays it along every edge it
+explores, holding the free end, so the thread is a simple path of S from v_s
+to the robot — a depth-first stack: each step explores an unexplored edge of
+the vertex where the thread ends (the closest one, L2046), and "the robot
+retraces its steps along the thread by picking up and rewinding the thread"
+after a loop edge or when the current place is fully explored (L2046,
+Algorithm 6.7 lines 8–9 and 14).  At v_u (Algorithm 6.8 lines 6–15):
+
+* **the thread lay here already** (more than e is sensed: ``T`` or a second
+  ``S-p``) — v_u is a vertex on the thread.  The robot compares what it
+  senses with its own record of the thread: every thread vertex w of v_u's
+  degree and open exit j whose marks, read from j with e added at j, are the
+  ones sensed is a hypothesis (w, j).  **Ours**: one hypothesis needs no
+  motion.  Otherwise "the robot searches back along the thread looking for
+  the vertex that has one more marked edge" (line 7, L2050): it leaves the
+  free end at v_u, goes back over e to v_k and walks the thread back toward
+  v_s; the vertex with one more thread-marked edge than its record is v_k' =
+  v_u, that edge is e'.  There it takes the free end and rewinds e to v_k
+  (guide §8.3's reading: rewinding e before v_k' is found would lose the mark).
+* **no thread** — in Algorithm 6.7 v_u is new (every visited vertex that is
+  not fully explored lies on the thread, L2046).  In Algorithm 6.8 v_u may be
+  a visited vertex the robot rewound from when l was reached (L2096): line 11
+  searches "non-thread vertices on S that has unexplored edges and has the
+  same degree as v_u, looking for the vertex containing the thread's free
+  end" (the candidates of the movable marker explorer, minus the thread's
+  vertices, visited in the same order), leaving the free end at v_u.  Found
+  at v_k': the thread's one edge there is e'; take the end, rewind e.  Not
+  found: v_u is new; walk back to v_k, cross e and take the end (guide §8.5).
+
+After the step (lines 16–21) the robot rewinds until it stands at a vertex
+that is not fully explored and the thread is shorter than l; when it reaches
+v_s fully explored, it unties the thread there, walks S to the closest not
+fully explored (frontier) vertex (**ours**: the choice is open, L2096) and
+ties the thread again there (line 21).  When U is empty the thread is all
+rewound and untied, so the final world carries no thread and S shows none
+(the thread is the robot's working state, never recorded in S).
+
+Decisions where the thesis is silent:
+
+* **Algorithm 6.7 and the length.** The robot of Algorithm 6.7 is only
+  "assured" that it does not run out (L2044); it is given no length and
+  never rewinds because of one.  Told a length (option ``thread-length``),
+  it knows when l is reached (L2096, ``spec.thread``'s decision) and stops
+  with the failed outcome "out of thread" instead of laying beyond it —
+  Algorithm 6.7 has no rule for that case.
+* **Which edge.** "A closest edge" (line 4) is, with the robot at the
+  thread's end, an unexplored exit of the current vertex (distance 0); the
+  lowest-numbered one.
+* The robot never needs to be told n or m.
+
+Cost purposes: ``new`` (over e), ``retrace`` (back over e, every rewind),
+``validation`` (the searches), ``other`` (back to v_u for the free end),
+``travel`` (to a new v_s).
+
+Examples
+--------
+>>> ThreadExplorer.name, CircumferenceThreadExplorer.name
+('thread-explore', 'thread-circumference')
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from dataclasses import dataclass, field
+from typing import Callable
+
+from topomark.spec.errors import AlgorithmFailed, CheckFailure, Violation
+from topomark.spec.kit import ThreadOp
+from topomark.spec.mapstate import MapDart, PartialMap
+from topomark.spec.signature import Signature
+
+from ..policies import Policies, bfs
+from .movable_marker import MovableMarkerExplorer
+
+__all__ = ["ThreadIteration", "ThreadWalker", "ThreadExplorer", "CircumferenceThreadExplorer"]
+
+TIE, UNTIE, LEAVE, TAKE = ThreadOp("tie"), ThreadOp("untie"), ThreadOp("leave"), ThreadOp("take")
+
+
+@dataclass
+class ThreadIteration:
+    """One step: the edge e explored, what was sensed at v_u, how it was resolved, the thread after it."""
+
+    number: int
+    edge: MapDart
+    signature: Signature | None = None
+    kind: str = ""  # "loop" or "non-loop"
+    joined: tuple[MapDart, MapDart] | None = None
+    how: str = ""  # "new", "sensed", "thread search", "off-thread search", "knots", "probe"
+    candidates: list[int] = field(default_factory=list)
+    laid: int = 0  # edges of thread laid after the step
+    tied: int | None = None  # where the thread is tied after the step
+    hypotheses: list = field(default_factory=list)  # the contract's field: none made here
+
+    def to_json(self) -> dict:
+        return {"iteration": self.number, "edge": list(self.edge), "signature": str(self.signature),
+                "augmentation": self.kind, "joined": [list(d) for d in self.joined] if self.joined else None,
+                "resolved": self.how, "candidates": self.candidates, "laid": self.laid, "tied": self.tied}
+
+
+class ThreadWalker:
+    """S, U, the believed pose and the robot's record of its thread: tied at ``tied`` (map vertex), laid
+    along ``laid`` (darts of S, from the tied vertex out), free end ``held`` or lying at the laid end."""
+
+    name = "thread"
+
+    def __init__(self, robot, policies: Policies | None = None,
+                 observer: Callable[[object, ThreadIteration], None] | None = None, options: dict | None = None):
+        self.robot = robot
+        self.policies = policies or Policies()
+        self.observer = observer
+        self.options = options or {}
+        self.length: int | None = self.options.get("thread-length")
+        self.S = PartialMap()
+        self.position: MapDart = (0, 0)
+        self.iterations: list[ThreadIteration] = []
+        self.tied: int | None = None
+        self.laid: list[MapDart] = []
+        self.held = True
+
+    # -- the explorer contract ----------------------------------------------------------
+    def start(self) -> None:
+        """S = {v0}, U = its exits numbered from the exit the robot faces (the thread is tied in the first step)."""
+        v0 = self.S.add_vertex(self.robot.sense().degree)
+        self.S.unexplored = [(v0, i) for i in range(self.S.degree(v0))]
+        self.position = (v0, 0)
+
+    def done(self) -> bool:
+        return not self.S.unexplored
+
+    def models(self) -> list[tuple[PartialMap, MapDart]]:
+        return [(self.S, self.position)]
+
+    def finish(self, it: ThreadIteration) -> ThreadIteration:
+        it.laid, it.tied = len(self.laid), self.tied
+        self.iterations.append(it)
+        if self.observer is not None:
+            self.observer(self, it)
+        return it
+
+    # -- the thread ----------------------------------------------------------------------
+    def tie(self) -> None:
+        self.robot.operate(TIE)
+        self.tied, self.laid, self.held = self.position[0], [], True
+
+    def untie(self) -> None:
+        self.robot.operate(UNTIE)
+        self.tied, self.held = None, True
+
+    def open_exit(self, v: int) -> int | None:
+        """The lowest unexplored exit of ``v`` (the closest edge, the robot standing there), or None."""
+        return next((j for j, t in enumerate(self.S.links(v)) if t is None), None)
+
+    def can_lay(self) -> bool:
+        return self.length is None or len(self.laid) < self.length
+
+    def lay(self, exit_: int, purpose: str) -> Signature:
+        """Follow ``exit_`` of the current vertex holding the free end: the thread is laid along it."""
+        if not self.can_lay():
+            raise AlgorithmFailed(f"out of thread: the thread's {self.length} edges are all laid, from map vertex "
+                                  f"{self.tied} to map vertex {self.position[0]}, and this algorithm has no rule for "
+                                  "running out (Algorithm 6.7 assumes l = c(G) suffices, L2044)")
+        v, entry = self.position
+        sig = self.robot.move((exit_ - entry) % self.S.degree(v), purpose)
+        self.laid.append((v, exit_))
+        return sig
+
+    def rewind(self, purpose: str = "retrace") -> None:
+        """Move back along the last laid edge, picking it up; the robot enters its near end by that edge."""
+        self.robot.rewind(purpose)
+        self.position = self.laid.pop()
+
+    def on_thread(self, upto: int | None = None) -> list[int]:
+        """The thread's vertices in order from the tied one (the laid darts ``laid[:upto]``)."""
+        return [self.tied] + [self.S.arc(d)[0] for d in self.laid[:upto]]
+
+    def thread_edges(self, upto: int | None = None) -> dict[int, Counter]:
+        """Map vertex ↦ exit ↦ how often the thread lies along it (``laid[:upto]``, as recorded)."""
+        out: dict[int, Counter] = {}
+        for d in self.laid[:upto]:
+            for v, x in (d, self.S.arc(d)):
+                out.setdefault(v, Counter())[x] += 1
+        return out
+
+    def walk(self, path: list[MapDart], purpose: str, stop: Callable[[int, int, Signature], bool] | None = None):
+        """Follow darts of S not holding the thread; with ``stop``, end at the first vertex where it holds:
+        (vertex, entry, signature), else None."""
+        for u, exit_ in path:
+            sig = self.robot.move((exit_ - self.position[1]) % self.S.degree(u), purpose)
+            self.position = self.S.arc((u, exit_))
+            if stop is not None and stop(self.position[0], self.position[1], sig):
+                return self.position[0], self.position[1], sig
+        return None
+
+    def walk_to(self, target: int, purpose: str, stop=None):
+        return self.walk(MovableMarkerExplorer.path(bfs(self.S, self.position[0])[2], target), purpose, stop)
+
+    # -- augmentation (§3.1.3) -------------------------------------------------------------
+    def loop_augment(self, it: ThreadIteration, far: MapDart) -> None:
+        if far not in self.S.unexplored:
+            raise CheckFailure(Violation("thread loop", f"iteration {it.number}", f"e' = {far} in U", "not in U",
+                                         "the explorer's own map is inconsistent"))
+        self.S.unexplored.remove(far)
+        self.S.add_edge(it.edge, far)
+        it.kind, it.joined = "loop", (it.edge, far)
+
+    def non_loop_augment(self, it: ThreadIteration, degree: int) -> None:
+        """Add v_u and e (its exit 0; the robot stands at v_u, entered by e); its other exits join U."""
+        u = self.S.add_vertex(degree)
+        self.S.add_edge(it.edge, (u, 0))
+        self.S.unexplored.extend((u, j) for j in range(1, degree))
+        it.kind, it.joined = "non-loop", (it.edge, (u, 0))
+        self.position = (u, 0)
+
+
+def _sensed_edges(sig: Signature, entry: int) -> Counter:
+    """The thread-marked exits sensed, in absolute exits of a vertex entered by ``entry``."""
+    return Counter({(entry + p) % sig.degree: k for p, k in sig.thread.edges}) if sig.thread else Counter()
+
+
+class ThreadExplorer(ThreadWalker):
+    """Algorithm 6.8, explore-explore (§6.3.3, L2096–L2141), with a thread of ``thread-length`` edges."""
+
+    name = "thread-explore"
+    retie = True
+
+    def step(self) -> ThreadIteration:
+        """Lines 4–21: lay the thread along the closest unexplored edge, resolve v_u, rewind / retie."""
+        if self.tied is None:
+            self.tie()
+        vk = self.position[0]
+        i = self.open_exit(vk)
+        self.S.unexplored.remove((vk, i))
+        it = ThreadIteration(len(self.iterations) + 1, (vk, i))
+        it.signature = sig = self.lay(i, "new")
+        t = sig.thread
+        if t.tied or len(t.edges) > 1 or t.knots:  # lines 6-9: the thread lay at v_u already
+            self.loop_on_thread(it, sig)
+        elif self.retie:  # lines 10-15
+            self.off_thread(it, sig)
+        else:  # Algorithm 6.7 line 6: no thread, so v_u is new
+            it.how = "new"
+            self.non_loop_augment(it, sig.degree)
+        self.settle()
+        return self.finish(it)
+
+    def loop_on_thread(self, it: ThreadIteration, sig: Signature) -> None:
+        """v_u is a vertex of the thread: which one, and by which exit e' (hypotheses, else the search back)."""
+        vk, i = it.edge
+        marks = self.thread_edges(-1)
+        near = {vk} | {t[0] for t in self.S.links(vk) if t is not None}
+        hyps = [(w, j) for w in dict.fromkeys(self.on_thread(-1)) if w not in near and self.S.degree(w) == sig.degree
+                for j, t in enumerate(self.S.links(w)) if t is None and self._reads(w, j, marks, sig)]
+        it.candidates = sorted({w for w, _ in hyps})
+        if len(hyps) == 1:
+            it.how = "sensed"
+            self.rewind()
+            return self.loop_augment(it, hyps[0])
+        it.how = "thread search"
+        self.robot.operate(LEAVE)
+        self.held = False
+        self.robot.move(0, "retrace")
+        self.position = (vk, i)
+        found = None
+        for d in reversed(self.laid[:-1]):  # line 7: back along the thread from v_k toward v_s
+            self.walk([self.S.arc(d)], "validation")
+            w, entry = self.position
+            extra = _sensed_edges(self.robot.sense(), entry) - marks.get(w, Counter())
+            if w in it.candidates and sum(extra.values()) == 1:
+                found = (w, next(iter(extra)))
+                break
+        if found is None:
+            raise CheckFailure(Violation("thread search", f"iteration {it.number}", "v_u on the thread",
+                                         "no vertex with one more thread-marked edge",
+                                         "the explorer's own map is inconsistent"))
+        self.robot.operate(TAKE)
+        self.held = True
+        self.rewind()
+        self.loop_augment(it, found)
+
+    def _reads(self, w: int, j: int, marks: dict[int, Counter], sig: Signature) -> bool:
+        """Whether w entered by exit j, the thread as recorded plus e at j, senses the thread ``sig`` shows."""
+        d = self.S.degree(w)
+        edges = sorted([((x - j) % d, k) for x, k in marks.get(w, Counter()).items()] + [(0, 1)])
+        t = sig.thread
+        return (t.tied, t.head, t.end, t.knots, t.edges) == (w == self.tied, None, False, 0, tuple(edges))
+
+    def off_thread(self, it: ThreadIteration, sig: Signature) -> None:
+        """Line 11: search the known vertices off the thread that could be v_u for the free end left there."""
+        vk, i = it.edge
+        thread = set(self.on_thread(-1))
+        it.candidates = [w for w in MovableMarkerExplorer.candidates(self, vk, sig.degree) if w not in thread]
+        if not it.candidates:
+            it.how = "new"
+            return self.non_loop_augment(it, sig.degree)
+        it.how = "off-thread search"
+        self.robot.operate(LEAVE)
+        self.held = False
+        self.robot.move(0, "retrace")
+        self.position = (vk, i)
+
+        def free_end(w: int, entry: int, seen: Signature) -> bool:
+            return seen.thread is not None and seen.thread.end
+
+        found = None
+        for target in it.candidates:
+            found = self.walk_to(target, "validation", free_end)
+            if found is not None:
+                break
+        self.robot.operate(TAKE) if found is not None else None
+        if found is not None:
+            w, entry, seen = found
+            self.held = True
+            self.rewind()
+            return self.loop_augment(it, (w, next(iter(_sensed_edges(seen, entry)))))
+        self.walk_to(vk, "other")  # v_u is new: back to it for the free end
+        self.robot.move((i - self.position[1]) % self.S.degree(vk), "other")
+        self.robot.operate(TAKE)
+        self.held = True
+        self.non_loop_augment(it, sig.degree)
+
+    def settle(self) -> None:
+        """Lines 16–21: rewind to a not fully explored vertex where the thread can still be laid; at v_s fully
+        explored, untie and (Algorithm 6.8) retie at the closest frontier vertex."""
+        while True:
+            if self.open_exit(self.position[0]) is not None and (self.can_lay() or not self.retie):
+                return
+            if self.laid:
+                self.rewind()
+                continue
+            self.untie()
+            if not self.S.unexplored:
+                return
+            if not self.retie:
+                raise CheckFailure(Violation("thread stack", "Algorithm 6.7", "every vertex not fully explored on "
+                                             "the thread", "a vertex off it", "the explorer's own map is inconsistent"))
+            dist = bfs(self.S, self.position[0])[0]
+            frontier = min((v for v in dist if self.open_exit(v) is not None), key=lambda v: (dist[v], v))
+            self.walk_to(frontier, "travel")
+            self.tie()
+            return
+
+
+class CircumferenceThreadExplorer(ThreadExplorer):
+    """Algorithm 6.7 (§6.3.2, L2038–L2075): never retied; v_u without thread is new; stops "out of thread"
+    if told a length it reaches."""
+
+    name = "thread-circumference"
+    retie = False
