@@ -181,6 +181,8 @@ def _check_op(rec: dict[str, Any], where: str) -> None:
     if kind == "thread" and ("exit" in rec or (direction is not None and (rec["op"] != "tie"
                                                                           or isinstance(direction, str)))):
         raise InvalidInput(f"{where}: a thread op takes no exit, and a direction (a relative exit) only on a tie")
+    if kind == "thread" and rec["op"] != "knot" and rec["count"] != 1:
+        raise InvalidInput(f"{where}: op.count: only a knot takes a count other than 1")
     if kind == "vertex" and "exit" in rec:
         raise InvalidInput(f"{where}: op.exit: a vertex marker takes no exit")
     if kind == "edge" and "exit" not in rec:

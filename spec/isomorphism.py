@@ -87,11 +87,6 @@ def _marks_at(g, v, r: int) -> tuple:
     return (vpart, sig.edges) if sig.thread is None else (vpart, sig.edges, sig.thread)
 
 
-def _no_thread(v) -> None:
-    """``thread_mark`` of a world or map that has no thread (§6.3)."""
-    return None
-
-
 def _describe_marks(marks: tuple) -> str:
     vpart, dpart = marks[:2]
     parts = [] if len(marks) == 2 else [f"the thread ({marks[2]})"]
@@ -164,13 +159,13 @@ def anchored(a, b, a_dart, b_dart, markers: bool = True, partial: bool = False) 
     r = {v0: (j0 - i0) % a.degree(v0)}
     todo = deque([v0])
     a_arc, b_arc, a_deg, b_deg = a.arc, b.arc, a.degree, b.degree
-    a_thread, b_thread = getattr(a, "thread_mark", _no_thread), getattr(b, "thread_mark", _no_thread)  # §6.3
-    threads = a_thread is not _no_thread or b_thread is not _no_thread
+    a_thread, b_thread = getattr(a, "thread_marks", None) or {}, getattr(b, "thread_marks", None) or {}  # §6.3
+    threads = bool(a_thread or b_thread)
     while todo:
         v = todo.popleft()
         fv, d, rv = f[v], a_deg(v), r[v]
         if markers and (a.vertex_mark(v) or a.dart_marks(v) or b.vertex_mark(fv) or b.dart_marks(fv)
-                        or (threads and (a_thread(v) or b_thread(fv)))):
+                        or (threads and (v in a_thread or fv in b_thread))):
             violation = _marks_mismatch(a, b, v, fv, rv)
             if violation is not None:
                 return IsoResult(False, mismatch=violation, mapped=len(f))

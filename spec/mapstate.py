@@ -46,7 +46,7 @@ class PartialMap:
         self.edge_count = 0
         self._vmarks: dict[int, VertexMark] = {}
         self._dmarks: dict[int, tuple[DartMark, ...]] = {}
-        self._tmarks: dict = {}  # map vertex -> spec.thread.ThreadMark (absolute exits), §6.3
+        self.thread_marks: dict = {}  # map vertex -> spec.thread.ThreadMark (absolute exits), §6.3
         self.unexplored: list[MapDart] = []
 
     # -- building ------------------------------------------------------------
@@ -90,7 +90,7 @@ class PartialMap:
         for x, count, end in sig.edges:
             self.mark_dart(v, DartMark((entry + x) % d, count, end))
         if sig.thread is not None:
-            self._tmarks[v] = unshifted(sig.thread, entry, d)
+            self.thread_marks[v] = unshifted(sig.thread, entry, d)
             self.journal.append(("mark", v))
 
     # -- queries (the same protocol as World, so signature_at works on both) --
@@ -128,7 +128,7 @@ class PartialMap:
 
     def thread_mark(self, v: int):
         """The thread sensed at ``v`` (a :class:`~topomark.spec.thread.ThreadMark`), or None."""
-        return self._tmarks.get(v)
+        return self.thread_marks.get(v)
 
     def darts(self) -> Iterator[MapDart]:
         for v, row in enumerate(self._adj):
@@ -151,7 +151,7 @@ class PartialMap:
         other._adj = [list(row) for row in self._adj]
         other._vmarks = dict(self._vmarks)
         other._dmarks = dict(self._dmarks)
-        other._tmarks = dict(self._tmarks)
+        other.thread_marks = dict(self.thread_marks)
         other.unexplored = list(self.unexplored)
         other.journal = list(self.journal)
         other.edge_count = self.edge_count
@@ -181,16 +181,16 @@ class PartialMap:
                 head = None if dm.end is None else self.name(v if dm.end == "H" else w)
                 markers.append(EdgeMarker((self.name(v), self.name(w)), dm.count, head))
         s = None if start is None else Start(self.name(start[0]), self.name(self._adj[start[0]][start[1]][0]))
-        if self._tmarks:
+        if self.thread_marks:
             return ThreadedWorld(rotation, markers, s, self._thread())
         return World(rotation, markers, s)
 
     def _thread(self) -> Thread:
         """The thread S's marks show, in map names (one tied vertex, one simple walk from it)."""
-        tied = [v for v, t in self._tmarks.items() if t.tied]
+        tied = [v for v, t in self.thread_marks.items() if t.tied]
         require(len(tied) == 1, f"the map's thread marks show {len(tied)} tied ends")
-        walk = walk_from_marks(lambda v, i: self._adj[v][i][0], self._tmarks, tied[0])
-        t = self._tmarks[tied[0]]
+        walk = walk_from_marks(lambda v, i: self._adj[v][i][0], self.thread_marks, tied[0])
+        t = self.thread_marks[tied[0]]
         head = None if t.head is None else self.name(self._adj[tied[0]][t.head][0])
-        knots = tuple((k, self._tmarks[v].knots) for k, v in enumerate(walk) if self._tmarks[v].knots)
-        return Thread(tuple(self.name(v) for v in walk), head, self._tmarks[walk[-1]].end, knots)
+        knots = tuple((k, self.thread_marks[v].knots) for k, v in enumerate(walk) if self.thread_marks[v].knots)
+        return Thread(tuple(self.name(v) for v in walk), head, self.thread_marks[walk[-1]].end, knots)

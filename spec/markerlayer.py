@@ -63,7 +63,8 @@ _FLIP = {"H": "T", "T": "H", None: None}
 class MarkerLayer:
     """Mutable markers over ``world``'s rotation; starts with the world's own markers."""
 
-    __slots__ = ("base", "_vmarks", "_emarks", "_dmarks", "_world", "degree", "target", "neighbour", "thread")
+    __slots__ = ("base", "_vmarks", "_emarks", "_dmarks", "_world", "degree", "target", "neighbour", "thread",
+                 "thread_marks")
 
     def __init__(self, world: World):
         self.base = world
@@ -82,6 +83,7 @@ class MarkerLayer:
         self._world: World | None = world
         thread = getattr(world, "thread", None)
         self.thread = ThreadState() if thread is None else thread.state(world)
+        self.thread_marks = self.thread.marks(world)  # vertex -> ThreadMark, what signature_at reads
 
     # -- the queries of a world (degree, target and neighbour are bound in __init__) ----
     @property
@@ -96,7 +98,7 @@ class MarkerLayer:
 
     def thread_mark(self, v: str) -> ThreadMark | None:
         """What of the thread lies at ``v`` (absolute exits), or None."""
-        return None if self.thread.tied is None else self.thread.marks(self.base).get(v)
+        return self.thread_marks.get(v)
 
     def pull(self, state: tuple[str, int], motion: int, length: int) -> bool:
         """What a move from ``state`` by ``motion`` does to the thread (:meth:`ThreadState.pull`):
@@ -104,7 +106,10 @@ class MarkerLayer:
         if self.thread.tied is None or not self.thread.held:
             return False
         self._world = None
-        return self.thread.pull(self.base, state, motion, length)
+        try:
+            return self.thread.pull(self.base, state, motion, length)
+        finally:
+            self.thread_marks = self.thread.marks(self.base)
 
     def _refresh(self, v: str, exit: int) -> None:
         """Recompute the dart marks at both ends of the edge at exit ``exit`` of ``v`` after a change."""
@@ -202,7 +207,10 @@ def apply_op(layer: MarkerLayer, state: tuple[str, int], op: MarkerOp | ThreadOp
     """Carry out ``op`` by a robot in ``state`` = (vertex, entry); refusals are InvalidInput naming why."""
     if isinstance(op, ThreadOp):
         layer._world = None
-        return layer.thread.apply(layer.base, state, op, 0)
+        try:
+            return layer.thread.apply(layer.base, state, op, 0)
+        finally:
+            layer.thread_marks = layer.thread.marks(layer.base)
     v, entry = state
     d = layer.degree(v)
     if op.kind == "vertex":

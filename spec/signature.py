@@ -22,7 +22,8 @@ marker-related perception, written ``[degree, V#-dir, otherInfo]``:
   entry edge) or ``[4,A,A,S-0,S-2,K2]``.
 
 "The marks at v" are what :func:`signature_at` reads — ``vertex_mark(v)``,
-``dart_marks(v)`` and, on anything that has one, ``thread_mark(v)`` — so
+``dart_marks(v)`` and, on anything that has them, ``thread_marks`` (a
+mapping vertex ↦ :class:`~topomark.spec.thread.ThreadMark`) — so
 isomorphism, the census and every check that compares marks derive them
 from it.
 
@@ -225,8 +226,8 @@ def signature_at(g: Marked, v, entry: int) -> Signature:
     d = g.degree(v)
     mark = g.vertex_mark(v)
     marks = g.dart_marks(v)
-    thread_mark = getattr(g, "thread_mark", None)  # worlds and maps without a thread need not have one
-    tm = None if thread_mark is None else thread_mark(v)
+    thread_marks = getattr(g, "thread_marks", None)  # worlds and maps without a thread need not have them
+    tm = thread_marks.get(v) if thread_marks else None
     if mark is None and not marks and tm is None:
         return _plain(d)
     count, direction = 0, None
@@ -242,8 +243,8 @@ def depends_on_entry(g: Marked, v) -> bool:
     """Whether :func:`signature_at` may differ between entries of ``v``: only a directional
     vertex marker, an edge marker or a thread's direction or edges is read relative to the entry edge (§3.1.1)."""
     mark = g.vertex_mark(v)
-    thread_mark = getattr(g, "thread_mark", None)
-    tm = None if thread_mark is None else thread_mark(v)
+    thread_marks = getattr(g, "thread_marks", None)
+    tm = thread_marks.get(v) if thread_marks else None
     return ((mark is not None and mark.head is not None) or bool(g.dart_marks(v))
             or (tm is not None and (tm.head is not None or bool(tm.edges))))
 

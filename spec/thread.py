@@ -11,7 +11,7 @@ thread as a piece of world state, in world names and absolute exits:
   (its "thread-marked" or "stringed" edges, L2046, L2121), whether its *free
   end* lies here (L2049, Algorithm 6.8 line 11) and how many *knots* are tied
   here (Figure 6.20).  :func:`~topomark.spec.signature.signature_at` reads it
-  (through ``thread_mark(v)``) relative to the entry edge, in the notation
+  (through ``thread_marks``) relative to the entry edge, in the notation
   documented in :mod:`topomark.spec.signature`.
 * :class:`ThreadState` — the thread of one run (held by
   :class:`~topomark.spec.markerlayer.MarkerLayer`): where it is tied, the walk
@@ -131,6 +131,8 @@ class ThreadState:
         v, entry = state
         d = world.degree(v)
         kind = op.op
+        if kind != "knot" and op.count != 1:
+            raise InvalidInput(f"a {kind} takes no count (only a knot does), got count {op.count!r}")
         if kind == "tie":
             _need(self.tied is None, f"the thread is already tied at a vertex; untie it before tying it at {v!r}")
             if op.direction is not None and not (_int(op.direction) and 0 <= op.direction < d):
@@ -269,17 +271,17 @@ class Thread:
 class ThreadedWorld(World):
     """A :class:`World` with a laid :class:`Thread` in it; :meth:`thread_mark` is what lies at ``v``."""
 
-    __slots__ = ("thread", "_tmarks")
+    __slots__ = ("thread", "thread_marks")
 
     def __init__(self, rotation, markers: Iterable[Marker] = (), start: Start | None = None,
                  thread: Thread | None = None):
         super().__init__(rotation, markers, start)
         self.thread = thread
         state = thread.state(self) if thread is not None else ThreadState()
-        self._tmarks = state.marks(self)
+        self.thread_marks = state.marks(self)
 
     def thread_mark(self, v: str) -> ThreadMark | None:
-        return self._tmarks.get(v)
+        return self.thread_marks.get(v)
 
     def with_markers(self, markers: Iterable[Marker], start: Start | None = None) -> World:
         return ThreadedWorld(self.rotation, markers, start, self.thread)

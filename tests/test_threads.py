@@ -13,11 +13,12 @@ from hypothesis import given, settings, strategies as st
 from topomark.reference.algorithms import ALGORITHMS
 from topomark.reference.cli import main
 from topomark.reference.divergence import Diverged
-from topomark.reference.explore import explore
+from topomark.reference.explore import dump_trace, explore
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES
 from topomark.reference.external import run_external
 from topomark.reference.generators import generate
 from topomark.reference.protocol import Expect, decode, encode
+from topomark.reference.replay import parse_trace
 from topomark.reference.robotlayer import RobotLayer
 from topomark.reference.simulator import Simulator
 from topomark.reference.wireops import op_from_message, op_to_message
@@ -107,6 +108,7 @@ def test_signatures_with_a_thread_read_back_and_plain_ones_are_unchanged():
     (Kit(thread=2), [ThreadOp("tie", direction=3)], "not an exit of a vertex of degree 3"),
     (Kit(thread=2), [ThreadOp("rewind")], "rewind moves the robot"),
     (Kit(thread=2), [ThreadOp("tie"), ThreadOp("knot", count=0)], "knot count"),
+    (Kit(thread=2), [ThreadOp("tie", count=2)], "takes no count"),
 ])
 def test_a_thread_operation_the_kit_or_the_thread_refuses_is_the_explorers_fault(kit, ops, words):
     sim, robot = sim_at(kit=kit)
@@ -285,6 +287,20 @@ def test_replay_diverges_on_a_missing_or_false_rewind_or_a_wrong_thread_signatur
     tampered[0]["signature"] = "[3,A,A,T-1]"
     with pytest.raises(Diverged, match="signature"):
         replay_records(tampered, cost)
+
+
+@pytest.mark.parametrize("change, words", [
+    (dict(kind="vertex"), "a thread op (tie, untie, leave, take, knot, rewind) has kind"),
+    (dict(exit=0), "a thread op takes no exit"),
+    (dict(op="leave"), "a direction (a relative exit) only on a tie"),
+    (dict(count=2), "only a knot takes a count"),
+])
+def test_a_trace_with_a_malformed_thread_op_is_bad_input(change, words):
+    trace = explore(generate("lattice-hole", rows=3, cols=3, seed=1), lighthouse="thread").trace
+    assert [r["op"] for r in trace if r["event"] == "op"] == ["tie", "leave"]
+    trace[1].update(change)  # the tie
+    with pytest.raises(InvalidInput, match=words.replace("(", r"\(").replace(")", r"\)")):
+        parse_trace(dump_trace(trace))
 
 
 # -- protocol @2 ----------------------------------------------------------------------------------
