@@ -6,6 +6,7 @@ For each family, size and seed, every algorithm maps the same world with the che
 algorithm and size, the median n, m, cost, cost/m and cost/(mn) over the seeds, and on how many worlds each
 movable marker cost less than ``basic`` / ``enh3``, with the median cost ratio.  Families (:data:`FAMILIES`):
 ``lattice-hole`` (k × k lattice, 10% of vertices removed; sizes 4, 6, 8 ≈ n 16, 36, 64),
+``lattice-hole-edges`` (10% of edges removed: n = 16, 36, 64 exactly),
 ``complete-hole`` (K_n, 10% of edges removed; n 8, 12, 16) and ``small-world`` (k = 4, p = 20%; n 16, 36,
 64).  Run::
 
@@ -34,6 +35,7 @@ ALGORITHMS = ("dudek", "dudek-directional", "basic", "enh3")
 
 FAMILIES = {
     "lattice-hole": ((4, 6, 8), lambda k, seed: lattice_hole(k, k, 0.1, "vertices", seed)),
+    "lattice-hole-edges": ((4, 6, 8), lambda k, seed: lattice_hole(k, k, 0.1, "edges", seed)),
     "complete-hole": ((8, 12, 16), lambda n, seed: complete_hole(n, 0.1, seed)),
     "small-world": ((16, 36, 64), lambda n, seed: small_world(n, 4, 0.2, seed)),
 }
