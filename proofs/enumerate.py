@@ -7,14 +7,20 @@ extended-isomorphic (§3.1.3: a vertex bijection plus, at each vertex, a cyclic
 relabelling of its exits; mirror images differ).
 
 * :func:`connected_graphs` lists connected simple graphs up to graph
-  isomorphism: networkx's graph atlas (every graph on ≤ 7 vertices) and, for 8
-  vertices, one-vertex extensions of the 7-vertex graphs deduplicated by
-  isomorphism (every connected graph has a vertex whose removal leaves it
-  connected).
+  isomorphism: networkx's graph atlas for n ≤ 7 and
+  :mod:`topomark.proofs.graphs` (vertex augmentation with a canonical form)
+  for 8 ≤ n ≤ :data:`MAX_VERTICES`.  Decision: the atlas stays for n ≤ 7,
+  although both give the same classes (tests/test_graphs.py), because the
+  atlas fixes the order of graphs and so of worlds, and the census's smallest
+  counterexamples and pinned figures at n ≤ 7 come from that order.
 * :func:`embedded_worlds` gives, per graph, one rotation system of every orbit
   of the graph's automorphism group acting on its ``∏ (deg v - 1)!`` rotation
   systems — exactly the extended-isomorphism classes on that graph, since
-  worlds on non-isomorphic graphs are never extended-isomorphic.
+  worlds on non-isomorphic graphs are never extended-isomorphic.  The
+  representative is the orbit's least rotation system (in product order),
+  found by comparing each with its images: no set of seen systems, so memory
+  stays flat at n = 8 (up to 6^8 rotation systems on one graph).
+  :mod:`topomark.proofs.burnside` counts the same orbits without listing them.
 * :func:`canonical_form` is an independent canonical code of a world with its
   markers (and start, if any): the least code over admissible anchor darts of
   a breadth-first relabelling that starts at the anchor (the standard
@@ -30,13 +36,13 @@ Examples
 from __future__ import annotations
 
 import itertools
-import warnings
 from collections import Counter, deque
 from typing import Iterator
 
 import networkx as nx
 from networkx.algorithms.isomorphism import GraphMatcher
 
+from topomark.proofs.graphs import generate
 from topomark.spec.errors import InvalidInput
 from topomark.spec.signature import signature_at
 from topomark.spec.world import World
@@ -45,7 +51,8 @@ __all__ = ["connected_graphs", "rotation_systems", "embedded_worlds", "canonical
            "ATLAS_MAX_VERTICES", "MAX_VERTICES"]
 
 ATLAS_MAX_VERTICES = 7
-MAX_VERTICES = 8
+MAX_VERTICES = 10
+"""Largest n enumerated: n = 10 at max degree 3 is 62,612 worlds, n = 8 at max degree 4 already 7,149,942."""
 _END = {None: 0, "H": 1, "T": 2}
 
 
@@ -56,34 +63,13 @@ def _atlas(n: int, max_degree: int) -> list[nx.Graph]:
             and max(d for _, d in g.degree()) <= max_degree]
 
 
-def _extend(smaller: list[nx.Graph], max_degree: int) -> list[nx.Graph]:
-    """Connected graphs one vertex larger, up to isomorphism, from all connected smaller ones."""
-    buckets: dict[str, list[nx.Graph]] = {}
-    out: list[nx.Graph] = []
-    for g in smaller:
-        n = g.number_of_nodes()
-        free = [v for v in sorted(g) if g.degree(v) < max_degree]
-        for k in range(1, min(max_degree, len(free)) + 1):
-            for nbrs in itertools.combinations(free, k):
-                h = g.copy()
-                h.add_edges_from((n, v) for v in nbrs)
-                with warnings.catch_warnings():  # networkx 3.5 notes its hash values changed; we only bucket
-                    warnings.simplefilter("ignore", UserWarning)
-                    key = nx.weisfeiler_lehman_graph_hash(h, iterations=3)
-                bucket = buckets.setdefault(key, [])
-                if not any(nx.is_isomorphic(h, other) for other in bucket):
-                    bucket.append(h)
-                    out.append(h)
-    return out
-
-
 def connected_graphs(n: int, max_degree: int) -> list[nx.Graph]:
     """Connected simple graphs on ``n`` vertices (labelled 0..n-1) with max degree ≤ ``max_degree``."""
     if not 1 <= n <= MAX_VERTICES:
         raise InvalidInput(f"graphs are enumerated for 1..{MAX_VERTICES} vertices, not {n}")
     if n <= ATLAS_MAX_VERTICES:
         return _atlas(n, max_degree)
-    return _extend(connected_graphs(n - 1, max_degree), max_degree)
+    return generate(n, max_degree)
 
 
 # -- rotation systems up to automorphism ------------------------------------------
@@ -113,16 +99,33 @@ def _image(rot: tuple[tuple[int, ...], ...], sigma: dict[int, int]) -> tuple[tup
     return tuple(out)
 
 
+def _image_is_smaller(rot: tuple[tuple[int, ...], ...], sigma: list[int], inverse: list[int]) -> bool:
+    """Whether ``_image(rot, sigma) < rot``, comparing vertex by vertex and stopping at the first difference."""
+    for u, mine in enumerate(rot):
+        image = _normal([sigma[w] for w in rot[inverse[u]]])
+        if image != mine:
+            return image < mine
+    return False
+
+
 def _orbit_representatives(g: nx.Graph) -> Iterator[tuple[tuple[int, ...], ...]]:
-    """The first rotation system (in product order) of every Aut(g)-orbit."""
-    autos = _automorphisms(g)
-    seen: set[tuple[tuple[int, ...], ...]] = set()
+    """The least rotation system (in product order) of every Aut(g)-orbit.
+
+    Product order is lexicographic order on the tuples: at each vertex the
+    choices are equal-length tuples in lexicographic order, and images are
+    written the same way (:func:`_normal`).
+    """
+    n = g.number_of_nodes()
+    maps = []
+    for sigma in _automorphisms(g):
+        if any(k != v for k, v in sigma.items()):
+            inverse = [0] * n
+            for k, v in sigma.items():
+                inverse[v] = k
+            maps.append(([sigma[v] for v in range(n)], inverse))
     for rot in rotation_systems(g):
-        if rot in seen:
-            continue
-        orbit = {_image(rot, sigma) for sigma in autos}
-        seen |= orbit
-        yield rot
+        if not any(_image_is_smaller(rot, sigma, inverse) for sigma, inverse in maps):
+            yield rot
 
 
 def _world(rot: tuple[tuple[int, ...], ...]) -> World:

@@ -24,13 +24,20 @@ Why not nauty?  Debian's ``nauty`` is not a Python dependency, and the PyPI
 wheel (``pynauty-prebuilt``) wraps nauty in GPLv3 code while topomark is MIT;
 a pure-Python generator keeps the install as it is.  The counts are checked
 against the atlas for n ≤ 7 (tests/test_graphs.py) and against published
-figures, OEIS A121941 "Number of unlabeled connected simple graphs with n
-nodes of degree 4 or less" (…, 78, 353, 1929, 12207, 89402 for n = 6…10) and
-OEIS A002851 / A006820 (connected cubic / quartic graphs: 5 and 19 cubic on
-8 and 10 vertices, 6 quartic on 8).  For D = 3 this module gives
-1, 2, 6, 10, 29, 64, 194, 531, 1733 for n = 2…10, matching networkx's atlas
-for n ≤ 7 and, for n = 8…10, nauty's count by pynauty certificates (a
-one-off cross-check, not a dependency).
+figures:
+
+* D = 3: 1, 1, 2, 6, 10, 29, 64, 194, 531, 1733 for n = 1…10, given by
+  S. Wolfram, *A New Kind of Science* (2002), notes to chapter 9, section 7,
+  "Trivalent networks" (subnetworks with dangling connections, no self or
+  multiple connections); the cubic ones among them, 5 on 8 and 19 on 10
+  vertices, are OEIS A002851;
+* D = 4: 78, 353, 1929, 12207, 89402 for n = 6…10, OEIS A121941 "Number of
+  unlabeled connected simple graphs with n nodes of degree 4 or less"; the
+  quartic ones, 6 on 8 and 16 on 9 vertices, are OEIS A006820.
+
+All of these were also matched once against nauty (pynauty certificates and
+automorphism group orders for every class, D = 3 to n = 10, D = 4 to n = 9),
+a one-off cross-check, not a dependency.
 
 Examples
 --------

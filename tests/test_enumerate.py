@@ -10,8 +10,10 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from topomark.proofs.enumerate import (_extend, _world, canonical_form, connected_graphs, count_by_size,
-                                       embedded_worlds, rotation_systems)
+from topomark.proofs import graphs
+from topomark.proofs.enumerate import (MAX_VERTICES, _automorphisms, _image, _orbit_representatives, _world,
+                                       canonical_form, connected_graphs, count_by_size, embedded_worlds,
+                                       rotation_systems)
 from topomark.spec.markerclass import MARKER_CLASSES
 from topomark.reference.strategies import relabelled, rotated, worlds
 from topomark.spec.errors import InvalidInput
@@ -39,19 +41,29 @@ def mirror(world: World) -> World:
 
 
 # -- graphs --------------------------------------------------------------------------
-def test_connected_graph_counts_match_oeis():
-    # A001349: connected graphs on n nodes; A112410: connected graphs with max degree <= 3
+def test_connected_graph_counts_match_published_figures():
+    # A001349: connected graphs on n nodes; connected graphs with max degree <= 3: Wolfram, NKS (2002),
+    # notes to ch. 9 sec. 7 "Trivalent networks" (see topomark.proofs.graphs)
     assert [len(connected_graphs(n, n - 1)) for n in range(2, 8)] == [1, 2, 6, 21, 112, 853]
-    assert [len(connected_graphs(n, 3)) for n in range(2, 9)] == [1, 2, 6, 10, 29, 64, 194]
+    assert [len(connected_graphs(n, 3)) for n in range(2, 10)] == [1, 2, 6, 10, 29, 64, 194, 531]
 
 
-def test_one_vertex_extension_agrees_with_the_atlas():
-    for d in (3,):
-        ext = _extend(connected_graphs(6, d), d)
-        atlas = connected_graphs(7, d)
-        assert len(ext) == len(atlas)
-        for g in ext:
-            assert sum(nx.is_isomorphic(g, h) for h in atlas) == 1
+def test_graphs_past_the_atlas_come_from_augmentation():
+    ours = connected_graphs(8, 3)
+    assert [sorted(g.edges) for g in ours] == [sorted(g.edges) for g in graphs.generate(8, 3)]
+    assert all(nx.is_connected(g) and max(d for _, d in g.degree()) <= 3 for g in ours)
+
+
+def test_orbit_representatives_are_the_least_of_their_orbits():
+    """Memory-free choice of representative == the first of every orbit in product order (a seen-set)."""
+    for g in connected_graphs(5, 4) + connected_graphs(6, 3):
+        autos = _automorphisms(g)
+        seen, expected = set(), []
+        for rot in rotation_systems(g):
+            if rot not in seen:
+                seen |= {_image(rot, sigma) for sigma in autos}
+                expected.append(rot)
+        assert list(_orbit_representatives(g)) == expected
 
 
 def test_rotation_system_count_is_product_of_factorials():
@@ -88,7 +100,7 @@ def test_enumeration_is_deterministic_and_validated():
     b = [w.rotation for w in embedded_worlds(5, 3)]
     assert a == b
     with pytest.raises(InvalidInput):
-        list(embedded_worlds(9, 3))
+        list(embedded_worlds(MAX_VERTICES + 1, 3))
     with pytest.raises(InvalidInput):
         list(embedded_worlds(4, 0))
 
