@@ -34,7 +34,8 @@ smallest world that shows it in ``tests/test_movable_marker.py``):
   (L146: "two vertices appear identical to the robot if they have the same
   degree"), at least one unexplored edge (v_u is reached by the unexplored
   e, so e' is unexplored at v_u), neither v_k nor a neighbour of v_k in S
-  (no self-loops, no multi-edges: §3.1.1, L374; L139 "Redundant or self-referential edges are prohibited").  They are visited in the
+  (no self-loops, no multi-edges: L374; L139 "Redundant or
+  self-referential edges are prohibited").  They are visited in the
   preorder of a breadth-first tree of S rooted at v_k (children by exit
   index), each reached by a shortest path in S; every vertex the robot
   passes is looked at, so one passed on the way is not visited again.
