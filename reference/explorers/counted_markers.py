@@ -1,0 +1,208 @@
+"""Mapping with Σ_{k=1}^{n−1} k markers, a unique count per place: Case 3a (Algorithm 6.2), Case 3b and the
+Σ k directional vertex-marker algorithm (thesis §6.2.1 L1562–L1643, Figures 6.6–6.8; §6.2.2 L1902).
+
+The robot is assured Σ_{k=1}^{n−1} k = n(n−1)/2 homogeneous markers and drops a
+*different number* of them at each place it discovers (1, 2, 3, ...), so a
+marked place names itself.  It never uses n or m.
+
+* **Case 3b** (:class:`EdgeCounts`, E-markers, O(m), L1627–L1643): on entering an
+  unmarked v_u (no marked edge) e is a non-loop edge: non-loop augmentation, then
+  "the robot goes back to (non-loop) edge e, dropping a unique number of markers
+  on e" — the i-th non-loop edge gets i markers, so the marked edges form a
+  spanning tree of S.  On entering a v_u with marked edges, the marked edges'
+  counts and relative exits (``[4,A,E3-1,E4-2]``, Figure 6.8) name v_u and the
+  entry edge e' at once: no motion validates anything.  Loop edges and vertices
+  are never marked.  The thesis proves the identification unique (L1631–L1643,
+  Figure 6.8(c) "can *not* happen"); the explorer checks it and reports
+  :class:`~topomark.spec.errors.AlgorithmFailed` if it ever is not.
+* **Case 3a** (:class:`VertexCounts`, undirected V-markers, Algorithm 6.2,
+  O(m·d_max)): the i-th new vertex gets i markers; a marked v_u is known by its
+  count, its back-link by probing its other edges until a known neighbour over
+  an explored edge is sensed (lines 19–35).
+* **Σ k directional V-markers** (:class:`VertexCounts` with ``directional``,
+  O(m), L1902): "the robot drops the markers in such a way that the entry edge is
+  indicated (all the markers dropped at v_u have the same direction)", so every
+  marked place is a directional lighthouse: place and back-link at once.
+
+Decisions, with the thesis lines:
+
+* **Dropping on e costs a trip** (guide §10 #12).  L1627 "the robot goes back to
+  (non-loop) edge e, dropping", and Algorithm 6.6 line 10 "goes back on e, drops
+  i markers on e and back": E-markers are dropped in transit, so Case 3b walks
+  back over e to v_k, drops there on e, and walks back to v_u — two traversals
+  per non-loop edge, purpose ``other``.  (The kernel could drop on e from v_u at
+  no cost; that variant's cost is the measured cost minus ``by_purpose["other"]``,
+  since nothing else changes.)
+* **Σ^{n−1} against Figure 6.6's Σ^{n}** (guide §10 #11).  Both hold, for
+  different kits: L1577 "The algorithm marks each of the n vertices uniquely, so a
+  total of Σ_{k=1}^{n} k V-markers are used", and with exactly Σ_{k=1}^{n−1} k
+  "this vertex must be the last vertex that has not been visited and the robot
+  can leave the vertex blank" (Algorithm 6.2 lines 10–16).  The default kit is the
+  class's Σ_{k=1}^{n−1} k (the last new vertex stays blank, recognised by its
+  blank label afterwards, L1577); with ``--markers`` ≥ Σ_{k=1}^{n} k every vertex
+  is marked, so the vertex algorithms' marker bound is Σ_{k=1}^{n} k.  Same for
+  the directional variant, whose blank last vertex has no direction (guide §10
+  #25): loop edges into it take Algorithm 6.2's probe search, each probe ending
+  at the first neighbour whose directional markers show an explored edge.
+* **Fewer markers than assured.**  Case 3b: the refused drop is the ``failed``
+  outcome.  The vertex algorithms cannot tell the first shortage from the last
+  vertex (the thesis's own rule), so a *second* unmarked place found, or a blank
+  whose degree or neighbours contradict the map, is reported as "out of markers"
+  (AlgorithmFailed) when the robot notices it.
+* Algorithm 6.2 line 21 "for each other edge incident in v_k'": the probes leave
+  by the relative exits 1, 2, ..., deg−1 in turn (clockwise from the entry edge),
+  each failed probe returning at once (line 33, purpose ``retrace``).
+
+Examples
+--------
+>>> sum_to(4)
+10
+"""
+
+from __future__ import annotations
+
+from topomark.spec.errors import AlgorithmFailed
+from topomark.spec.kit import MarkerOp
+from topomark.spec.signature import Signature, signature_at
+
+from .marker_walk import MarkerStep, MarkerWalk
+
+__all__ = ["EdgeCounts", "VertexCounts", "DirectionalVertexCounts", "sum_to"]
+
+
+def sum_to(k: int) -> int:
+    """Σ_{j=1}^{k} j = k(k+1)/2 (0 for k ≤ 0)."""
+    return k * (k + 1) // 2 if k > 0 else 0
+
+
+class EdgeCounts(MarkerWalk):
+    """Case 3b: a unique count of undirected E-markers on each non-loop edge, O(m) (§6.2.1, L1627–L1643)."""
+
+    name = "case-3b"
+
+    def __init__(self, robot, policies=None, observer=None, options=None):
+        super().__init__(robot, policies, observer, options)
+        self.next_count = 1  # markers for the next non-loop edge
+        self.tree: dict[int, tuple] = {}  # count -> (dart, dart) of the marked map edge
+
+    def arrive(self, it: MarkerStep, sig: Signature) -> None:
+        if not sig.edges:  # observation (1): no marked edge at v_u iff v_u is new
+            u = self.non_loop(it, sig)
+            self.mark_tree_edge(it, u)
+        else:
+            self.loop(it, self.identify(it, sig))
+
+    def mark_tree_edge(self, it: MarkerStep, u: int) -> None:
+        """Back over e to v_k, drop the next count on e (relative exit 0 there), and back to v_u (L1627)."""
+        count = self.next_count
+        self.leave((u, 0), "other")
+        self.drop(MarkerOp("edge", exit=0, count=count), it)
+        self.leave(it.edge, "other")
+        self.record_marks()  # v_u now senses the marked e too
+        self.tree[count] = it.joined
+        self.next_count += 1
+
+    def identify(self, it: MarkerStep, sig: Signature) -> tuple[int, int]:
+        """Observation (2): the unexplored dart e' = (v_k', j) whose marks, entered by j, read ``sig``."""
+        matches = set()
+        for p, count, _ in sig.edges:
+            edge = self.tree.get(count)
+            if edge is None:
+                raise AlgorithmFailed(f"iteration {it.number}: {count} markers on an edge at v_u, but no edge of "
+                                      f"the map carries {count}")
+            for x, t in edge:
+                j = (t - p) % self.M.degree(x)
+                if self.M.degree(x) == sig.degree and self.M.arc((x, j)) is None \
+                        and signature_at(self.M, x, j) == sig:
+                    matches.add((x, j))
+        if len(matches) != 1:
+            raise AlgorithmFailed(f"iteration {it.number}: the marked edges at v_u, {sig}, fit "
+                                  f"{len(matches)} unexplored edges of the map {sorted(matches)}, not one "
+                                  "(Figure 6.8(c))")
+        return matches.pop()
+
+
+class VertexCounts(MarkerWalk):
+    """Case 3a, Algorithm 6.2: the i-th new vertex gets i undirected V-markers; back-link by probing, O(m·d_max)."""
+
+    name = "case-3a"
+    directional = False
+
+    def __init__(self, robot, policies=None, observer=None, options=None):
+        super().__init__(robot, policies, observer, options)
+        self.count_of: dict[int, int] = {}  # map vertex -> its marker count (0: the blank last vertex)
+        self.vertex_of: dict[int, int] = {}  # count -> map vertex
+        self.blank: int | None = None  # visitedAllVertices (line 4) once set
+
+    def mark_op(self, count: int) -> MarkerOp:
+        """``count`` markers here, pointing at the entry edge if directional (L1902)."""
+        return MarkerOp("vertex", count=count, direction=0 if self.directional else None)
+
+    def begin(self) -> None:
+        """Lines 1–2: one marker at v0 (pointing at the faced exit, the directional variant)."""
+        self.drop(self.mark_op(1))
+        self.name_vertex(0, 1)
+
+    def name_vertex(self, v: int, count: int) -> None:
+        self.count_of[v] = count
+        self.vertex_of[count] = v
+
+    def arrive(self, it: MarkerStep, sig: Signature) -> None:
+        if sig.vertex_count == 0 and self.blank is None:  # lines 8-16: a new place
+            u = self.non_loop(it, sig)
+            count = len(self.count_of) + 1
+            if self.try_drop(self.mark_op(count), it):  # lines 10-13
+                self.name_vertex(u, count)
+            else:  # lines 14-16: not enough markers, so this is the last new vertex: leave it blank
+                self.blank = u
+                self.name_vertex(u, 0)
+            return
+        place = self.vertex_of.get(sig.vertex_count)  # line 18: the unique count (0: the blank) names v_u
+        if place is None or self.M.degree(place) != sig.degree:
+            raise AlgorithmFailed(f"out of markers (fewer than the assured Σ k): iteration {it.number} senses "
+                                  f"{sig}, which no place of the map shows")
+        if sig.vertex_direction is not None:  # a directional lighthouse: the head points at exit 0 (L1902)
+            self.loop(it, (place, (0 - sig.vertex_direction) % sig.degree))
+        else:
+            self.probe(it, place, sig.degree)
+
+    def probe(self, it: MarkerStep, x: int, degree: int) -> None:
+        """Lines 19–35: traverse the other edges of v_k' = ``x`` until a known neighbour over an explored edge."""
+        for p in range(1, degree):
+            it.probes += 1
+            got = self.robot.move(1, "validation")  # relative exit p: one clockwise from the last edge taken
+            t = self.explored_exit(x, got)
+            if t is not None:  # lines 25-31: e'' is x's exit t, reached by relative exit p; e' is p before it
+                self.loop(it, (x, (t - p) % degree))
+                self.position = self.M.arc((x, t))
+                return
+            self.robot.move(0, "retrace")  # line 33/35: back to v_k'
+        raise AlgorithmFailed(f"out of markers (fewer than the assured Σ k): iteration {it.number}: no edge of "
+                              f"map vertex {x} leads to a known neighbour over an explored edge")
+
+    def explored_exit(self, x: int, sig: Signature) -> int | None:
+        """The exit of ``x`` over an explored edge to the place whose marks the robot now senses, or None."""
+        y = self.vertex_of.get(sig.vertex_count)
+        if sig.vertex_count == 0 and self.blank is None:
+            return None  # line 34: an unmarked place before the blank was left: a new one
+        if y is None or y == x or self.M.degree(y) != sig.degree:
+            raise AlgorithmFailed(f"out of markers (fewer than the assured Σ k): a neighbour of map vertex {x} "
+                                  f"senses {sig}, which no other place of the map shows")
+        if sig.vertex_direction is not None:  # its head names the dart we entered y by
+            far = self.M.arc((y, (0 - sig.vertex_direction) % sig.degree))
+            if far is not None and far[0] != x:
+                raise AlgorithmFailed(f"out of markers (fewer than the assured Σ k): map vertex {y}'s marked "
+                                      f"exit leads to {far[0]}, not to {x}")
+            return None if far is None else far[1]
+        for t in range(self.M.degree(x)):  # line 25: c in s, the counts at the far ends of x's explored edges
+            far = self.M.arc((x, t))
+            if far is not None and far[0] == y:
+                return t
+        return None
+
+
+class DirectionalVertexCounts(VertexCounts):
+    """Σ_{k=1}^{n−1} k directional V-markers, each place a directional lighthouse, O(m) (§6.2.2, L1902)."""
+
+    name = "case-dv-sum"
+    directional = True
