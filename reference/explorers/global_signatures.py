@@ -1,0 +1,113 @@
+"""Validating a loop-closing hypothesis of Algorithm 5.1 against every known vertex: the "global signature"
+(thesis §5.2.2, L1350, L1367–L1369; Algorithm 5.1 lines 17–30).
+
+"For each potential loop closing possibility (hypothesis) … we attempt to
+validate it by computing paths from the hypothesized location of the robot to
+*each* of the known places in M, and then having the robot traverse each of
+the paths. That is, each of the known vertices serves as a 'lighthouse'. …
+For a loop closing hypothesis to be accepted, paths to *all* the
+'lighthouses' must be completed with no signature mismatch" (L1367–L1369).
+
+Decisions:
+
+* **Path overlap** (L1373: "using the technique in Chapter 4, the path
+  overlap is captured in the multiple lighthouse traversals"): the paths to
+  every known vertex are the branches of one breadth-first tree of the
+  hypothesised model M' rooted at the hypothesised place, walked depth-first.
+  Every branch is a shortest path from the hypothesised place to its vertex,
+  exactly the thesis's path, and every vertex on it is sensed as on that path;
+  the walk costs 2(|V_M'| − 1) moves instead of the sum of out-and-back paths.
+  The walk is closed (every edge down is walked back up through the edge the
+  robot entered by), so the robot ends at v_u, and on a mismatch it climbs
+  back up the branch it is on (moving back through the edge it entered by
+  is always possible, whatever the model).
+* **Expected perception** = the degree of each vertex on the path.  L1369
+  adds "the expected entry edge information" at vertices whose neighbour
+  degrees lack rotation equivalence; reading it needs the robot to probe the
+  neighbours (as §5.1 does), which this implementation does not do: it only
+  weakens validation (more hypotheses accepted), never voids the truth.
+* A hypothesis that would make a self-loop or a multi-edge is never formed:
+  §3.1.1 forbids both in a world (the thesis is silent, guide 4 note (d)).
+
+:class:`Walker` keeps the robot's frame: after an excursion the robot is back
+at v_u but has entered it by another edge; ``turn`` is that offset, applied
+to the next motion, so the explorer's motions stay relative to the entry of
+the step (Algorithm 3.1's "re-align to e", §3.3).
+
+This module imports nothing that can see a world.
+"""
+
+from __future__ import annotations
+
+from ..robot import Robot
+from .model_shapes import Shape
+
+__all__ = ["Walker", "validate"]
+
+
+class Walker:
+    """The robot with a logical frame: ``move(k)`` leaves by exit k counted from the logical entry."""
+
+    def __init__(self, robot: Robot, degree: int):
+        self.robot = robot
+        self.degree = degree  # the degree of the vertex the robot stands on
+        self.turn = 0  # the physical entry, counted from the logical entry
+
+    def move(self, k: int, purpose: str) -> int:
+        """Leave by logical exit ``k``; return the degree sensed at the vertex reached (entered: turn 0)."""
+        sig = self.robot.move((k - self.turn) % self.degree, purpose)
+        self.degree, self.turn = sig.degree, 0
+        return sig.degree
+
+
+def validate(walker: Walker, shape: Shape, root: int, entry: int) -> tuple[bool, int]:
+    """Walk a breadth-first tree of ``shape`` from ``root`` (the robot believed there, entered by ``entry``),
+    comparing degrees; return (every degree matched, moves made).  The robot ends where it started."""
+    children = _bfs_children(shape, root)
+    ent = (entry + walker.turn) % shape.degree(root)  # the physical entry, in the shape's exit numbering
+    stack: list[tuple[int, int]] = [(root, 0)]  # (vertex, index of its next child)
+    back: dict[int, int] = {}  # exit of each walked vertex toward its tree parent
+    moves = 0
+    robot = walker.robot
+    while stack:
+        v, k = stack[-1]
+        if k == len(children[v]):
+            stack.pop()
+            if stack:  # up to the parent
+                robot.move((back[v] - ent) % shape.degree(v), "validation")
+                ent = shape.arc((v, back[v]))[1]
+                moves += 1
+            continue
+        stack[-1] = (v, k + 1)
+        y = children[v][k]
+        w, j = shape.arc((v, y))
+        sig = robot.move((y - ent) % shape.degree(v), "validation")
+        moves += 1
+        if sig.degree != shape.degree(w):  # mismatch: back through the entry edge, then up the branch
+            robot.move(0, "retrace")
+            moves += 1
+            ent = y
+            for u, _ in reversed(stack[1:]):
+                robot.move((back[u] - ent) % shape.degree(u), "retrace")
+                ent = shape.arc((u, back[u]))[1]
+                moves += 1
+            walker.turn = (ent - entry) % shape.degree(root)
+            return False, moves
+        back[w] = j
+        ent = j
+        stack.append((w, 0))
+    walker.turn = (ent - entry) % shape.degree(root)
+    return True, moves
+
+
+def _bfs_children(shape: Shape, root: int) -> dict[int, list[int]]:
+    """The exits of each vertex leading to its children in a breadth-first tree of ``shape`` from ``root``."""
+    children: dict[int, list[int]] = {root: []}
+    order = [root]
+    for v in order:
+        for i, x in enumerate(shape.rows[v]):
+            if x is not None and x[0] not in children:
+                children[v].append(i)
+                children[x[0]] = []
+                order.append(x[0])
+    return children
