@@ -1,0 +1,106 @@
+"""§6.2's unique-count marker algorithms (reference/explorers/counted_markers.py, registrations/markers_62.py):
+Case 3a (Algorithm 6.2), Case 3b and Σ k directional vertex markers, each under the checker (pose, I-1, I-2 and
+the marker budget after every step, extended isomorphism with every dropped marker at the end)."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import pytest
+
+from topomark.reference.cli import main
+from topomark.reference.explore import explore
+from topomark.reference.explorers.counted_markers import EdgeCounts, sum_to
+from topomark.reference.generators import generate
+from topomark.reference.registry import REGISTRY, variant
+from topomark.spec.world import Start, World
+
+ALGORITHMS = ("case-3a", "case-3b", "case-dv-sum")
+WORLDS = ("lattice-hole:rows=4,cols=5,seed=1", "random:n=10,fraction=0.3,seed=2", "complete-hole:n=7,seed=1",
+          "small-world:n=12,k=4,p=0.2,seed=3")
+
+
+def world(text: str) -> World:
+    gen, _, params = text.partition(":")
+    return generate(gen, **dict(p.split("=") for p in params.split(",") if p))
+
+
+def used(out) -> int:
+    """Markers lying in the world at the end (the map shows the same, or the isomorphism check fails)."""
+    return sum(m.count for m in out.explorer.S.to_world().markers)
+
+
+@pytest.mark.parametrize("name", ALGORITHMS)
+@pytest.mark.parametrize("text", WORLDS)
+def test_each_algorithm_maps_each_world_with_exactly_the_assured_markers(name, text):
+    w = world(text)
+    out = explore(w, name)
+    assert (out.outcome, out.verified, out.violation) == ("correct", True, None)
+    assert out.checks > 3 * w.m  # pose/I-1/I-2 and the budget after every one of the m iterations
+    assert used(out) == sum_to(w.n - 1) <= REGISTRY[name].marker_bound_fn(w.n, w.m)
+    assert out.marker_operations == {"drop": w.n - 1}
+    assert (out.nonloop_iterations, out.loop_iterations) == (w.n - 1, w.m - w.n + 1)
+    assert out.by_purpose["new"] == w.m
+
+
+@pytest.mark.parametrize("text", WORLDS)
+def test_case_3b_validates_nothing_by_motion_and_pays_two_traversals_per_marked_edge(text):
+    w = world(text)
+    out = explore(w, "case-3b")
+    assert set(out.by_purpose) <= {"new", "other", "travel"}  # L1629: "Physical motion ... is avoided"
+    assert out.by_purpose["other"] == 2 * (w.n - 1)  # back over e and back, Algorithm 6.6 line 10
+
+
+@pytest.mark.parametrize("text", WORLDS)
+def test_directional_vertex_markers_make_every_place_a_lighthouse_when_all_are_marked(text):
+    w = world(text)
+    out = explore(w, "case-dv-sum", options={"markers": sum_to(w.n)})
+    assert out.outcome == "correct" and used(out) == sum_to(w.n) == REGISTRY["case-dv-sum"].marker_bound_fn(w.n, w.m)
+    assert set(out.by_purpose) <= {"new", "travel"}  # place and back-link at once, no probe (L1902)
+
+
+K4 = World(generate("complete", n=4).rotation, (), Start("0", "3"))  # the smallest world re-entering the blank
+
+
+@pytest.mark.parametrize("name", ["case-3a", "case-dv-sum"])
+def test_sigma_n_minus_1_leaves_the_last_vertex_blank_and_sigma_n_marks_it(name):
+    """Guide §10 #11 (L1577 Σ^n used; title and Algorithm 6.2 Σ^{n−1}): with Σ_{k=1}^{n−1} k the last new vertex
+    stays blank and is recognised by its blank label on re-entry; with Σ_{k=1}^{n} k all n are marked."""
+    out = explore(K4, name)
+    ex = out.explorer
+    assert out.outcome == "correct" and used(out) == sum_to(3) and ex.blank == 3
+    entered = [it for it in ex.iterations if it.kind == "loop" and it.joined[1][0] == ex.blank]
+    assert entered and entered[0].signature.vertex_count == 0 and entered[0].probes >= 1
+    full = explore(K4, name, options={"markers": sum_to(4)})
+    assert full.outcome == "correct" and used(full) == sum_to(4) and full.explorer.blank is None
+
+
+@pytest.mark.parametrize("name", ALGORITHMS)
+@pytest.mark.parametrize("text", WORLDS[:2])
+def test_fewer_markers_than_assured_is_the_failed_outcome(name, text):
+    out = explore(world(text), name, options={"markers": 6})
+    assert (out.outcome, out.verified) == ("failed", False)
+    assert "out of markers" in out.reason
+
+
+def test_a_misidentified_loop_edge_is_caught_by_the_checker():
+    class Wrong(EdgeCounts):
+        def identify(self, it, sig):
+            right = super().identify(it, sig)
+            return next((d for d in self.M.unexplored if d != right and d[0] != it.edge[0]), right)
+
+    out = explore(world(WORLDS[0]), variant("wrong-3b", Wrong, like="case-3b"))
+    assert out.outcome == "wrong-map" and out.violation.check in ("I-1", "position")
+
+
+def test_the_cli_runs_case_3b_and_refuses_a_count_below_one(capsys):
+    run = subprocess.run([sys.executable, "-m", "topomark.reference.cli", "explore", "lattice-hole:rows=4,cols=4,seed=2",
+                          "--algorithm", "case-3b", "--json"], capture_output=True, text=True, timeout=120)
+    data = json.loads(run.stdout)
+    assert run.returncode == 0 and (data["outcome"], data["verified"]) == ("correct", True)
+    assert main(["explore", "cycle:n=5", "--algorithm", "case-3b", "--markers", "3", "--json"]) == 1
+    assert json.loads(capsys.readouterr().out)["outcome"] == "failed"
+    assert main(["explore", "cycle:n=5", "--algorithm", "case-3b", "--markers", "0"]) == 2
+    assert "--markers must be an integer >= 1" in capsys.readouterr().err
