@@ -12,7 +12,15 @@ layer (:class:`~topomark.reference.robotlayer.RobotLayer`), and raises
   (:data:`~topomark.reference.explorers.lighthouses.LIGHTHOUSES`) and none
   after them; S = v0 with what the robot sensed there after them recorded
   (:meth:`~topomark.spec.mapstate.PartialMap.mark_as_sensed`), and the
-  recognition table: v0's signature from each entry ↦ that entry;
+  recognition table: v0's perception from each entry ↦ that entry (for a
+  lighthouse recognised by probing, read on S as perceived,
+  :meth:`~topomark.reference.explorers.lighthouses.Lighthouse.perceive`);
+  a lighthouse that moves to establish (Figure 3.21(b)'s script, §5.1/§6.1's
+  walk) makes ``establish`` (and, searching, ``probe``) moves first, v0 is
+  where the robot then stands, and φ is anchored there;
+* ``probe`` moves only after the new edge, for a lighthouse recognised by
+  probing; an iteration's ``signature`` at v0 may be its probed perception
+  of the new move's raw one;
 * every move's ``purpose`` fits the loop body: ``travel`` moves, then exactly
   one ``new`` move whose perception is the iteration's ``signature``, then
   ``validation``/``retrace`` (only in an iteration with hypotheses) and
@@ -25,8 +33,8 @@ layer (:class:`~topomark.reference.robotlayer.RobotLayer`), and raises
   the joins (a non-loop join adds a vertex of the ``signature``'s degree with
   the marks it shows, its other exits join U; a loop join removes e' from U;
   e itself is taken from U) — or U taken from the optional ``unexplored`` —
-  and I-1 and I-2 (§3.4) must hold, φ anchored at the start (map v0 exit 0 ↦
-  the world's start state, as the checker anchors it;
+  and I-1 and I-2 (§3.4) must hold, φ anchored at v0 (map v0 exit 0 ↦
+  the robot's state once v0 is established, as the checker anchors it;
   :class:`~topomark.spec.invariants.IncrementalInvariants`; a wrong join is
   reported before hypothesis records that contradict it);
 * the ``end``: m iterations, U empty, S extended-isomorphic to the world with

@@ -11,7 +11,7 @@ from topomark.spec.errors import InvalidInput
 from topomark.spec.worldfile import dumps_world
 
 from .explore import check_run, explore
-from .explorers.lighthouses import LIGHTHOUSES, lighthouse
+from .explorers.lighthouses import LIGHTHOUSES, configured
 from .registry import REGISTRY, algorithm_spec, parameters
 from .generators import DEFAULT_WORLD
 from .outputs import check_output, write_output
@@ -41,7 +41,12 @@ def register(sub) -> None:
     p.add_argument("--policy", action="append", default=[], metavar="KIND=NAME",
                    help=f"edge={'|'.join(EDGE_POLICIES)}, hypothesis={'|'.join(HYPOTHESIS_POLICIES)}, "
                         f"path={'|'.join(PATH_POLICIES)}; a bare NAME sets the edge policy (repeatable)")
-    p.add_argument("--seed", type=int, help="seed for a random generator")
+    p.add_argument("--seed", type=int, help="seed for a random generator; with a searched lighthouse "
+                                            "(undirected-vertex, undirected-edge) the seed of its random walk")
+    p.add_argument("--walk-limit", metavar="N", help="a searched lighthouse gives up after N walk steps (default 200, "
+                                                     "§5.1's threshold)")
+    p.add_argument("--neighbourhood", metavar="D", help="undirected-vertex: test the neighbours' views to distance D "
+                                                        "(default 1, §5.1)")
     p.add_argument("--no-check", action="store_true", help="skip the per-iteration checks (faster)")
     p.add_argument("--check-mode", default="incremental", choices=("incremental", "full", "both"),
                    help="how I-1/I-2 are evaluated each iteration: per journalled change (default), from scratch, "
@@ -132,13 +137,13 @@ def explore_command(args) -> int:
     for path in (args.trace, args.map):  # before the run: a typo must not cost a long exploration
         if path:
             check_output(path)
+    light, seed = configured(args.lighthouse, args.seed, args.walk_limit, args.neighbourhood)
     if args.world is None:
-        if args.seed is not None:
+        if seed is not None:
             raise InvalidInput("--seed needs a generator: the built-in default world is fixed")
         world, label = DEFAULT_WORLD(), "built-in default world (5x5 lattice, 2 cells removed, seed 1)"
     else:
-        world, label = resolve_world(args.world, args.seed), args.world
-    light = lighthouse(args.lighthouse) if args.lighthouse is not None else None
+        world, label = resolve_world(args.world, seed), args.world
     check_run(world, spec, light, options)  # refused before the trace file is started
     started = time.monotonic()
     ring = RingSink(TAIL + 1)

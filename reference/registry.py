@@ -46,7 +46,10 @@ __all__ = ["AlgorithmSpec", "Parameter", "REGISTRY", "algorithm_spec", "variant"
 
 _ALGORITHM_3_1_CHECKS = ("pose", "I-1", "I-2", "bound-function", "lemma-1", "marker", "iterations", "isomorphism")
 _POLICY_OPTIONS = ("policy edge=nearest|fifo|lifo", "policy hypothesis=fifo|lifo|shortest", "policy path=shortest|dfs",
-                   "lighthouse " + "|".join(LIGHTHOUSES))
+                   "lighthouse " + "|".join(LIGHTHOUSES),
+                   *(f"lighthouse option {o.replace('_', '-')}=N (" + ", ".join(h.name for h in LIGHTHOUSES.values()
+                                                                          if o in h.options) + ")"
+                     for o in ("seed", "walk_limit", "neighbourhood")))
 
 
 _LIGHTHOUSE = LIGHTHOUSES["directional-vertex"].kit

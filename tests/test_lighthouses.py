@@ -3,6 +3,7 @@ Chapter 3–4 algorithm."""
 
 from __future__ import annotations
 
+import copy
 import doctest
 from collections import Counter
 
@@ -10,7 +11,11 @@ import pytest
 
 from topomark.reference.algorithms import ALGORITHMS
 from topomark.reference.explorers import lighthouses as lighthouses_module
+from topomark.reference.explorers import probing as probing_module
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES, Lighthouse
+from topomark.reference.explorers.probing import ProbingRobot
+from topomark.spec.mapstate import PartialMap
+from topomark.spec.signature import Signature
 from topomark.reference.generators import generate, wheel_a, wheel_b
 from topomark.reference.simulator import Simulator
 from topomark.spec.errors import CheckFailure
@@ -127,3 +132,74 @@ def test_an_undirected_vertex_marker_is_no_lighthouse():
 
 def test_docstring_examples():
     assert doctest.testmod(lighthouses_module).failed == 0
+
+
+# -- lighthouses recognised by probing (Figure 3.21(b), §5.1; reference/explorers/probing.py) ------------------
+def _at_v0_from(world: World, light: Lighthouse, neighbour: str):
+    """A robot that established ``light`` at the start v0, then stands at ``neighbour`` and moves into v0."""
+    bare = World(world.rotation, (), world.start)
+    sim = Simulator(bare, bare.start_state(), light.kit)
+    beacon = light.establish(sim.robot(), PartialMap())
+    v0 = sim.state[0]
+    sim.state = (neighbour, 0)
+    sig = sim.robot().move(bare.index(neighbour, v0), "new")
+    return sim, beacon, sig
+
+
+def test_three_undirected_vertex_probes_only_until_it_knows_the_entry_and_faces_it_again():
+    """Figure 3.21(b): from the two-marker neighbour no probe; from another, probes clockwise until one entry
+    is left (entering from '2', the two probes that find no marker rule out the rest), then faces the entry
+    edge again (2 traversals per probe, 2 to face it); the perception is V-r, r the marked neighbour's exit."""
+    world = wheel_a()  # v0 = '0' (degree 4) faces '1': '1' gets the two markers
+    light = LIGHTHOUSES["three-undirected-vertex"]
+    for neighbour, probes in (("1", 0), ("4", 1 * 2 + 2), ("3", 2 * 2 + 2), ("2", 2 * 2 + 2)):
+        sim, beacon, sig = _at_v0_from(world, light, neighbour)
+        assert str(sig) == "[4,V,A]" and sig in beacon.raw
+        state, cost = sim.state, sim.cost
+        got = beacon.recognise(sim.robot(), sig, signature_at(sim.world, neighbour, 0))
+        entry = world.index("0", neighbour)
+        assert got == Signature(4, 1, (0 - entry) % 4) and beacon.table[got] == entry
+        assert sim.state == state and sim.cost - cost == probes and sim.by_purpose["probe"] == probes
+
+
+def test_the_default_lighthouse_pays_nothing_for_probing():
+    """Only a probing lighthouse wraps the robot; the others drive it directly and perceive S itself."""
+    w = WORLDS["random"]()
+    plain = explore(World(w.rotation, (), w.start), "enh3", record=False)
+    assert "probe" not in plain.by_purpose and "establish" not in plain.by_purpose
+    assert plain.explorer.P is plain.explorer.S and not isinstance(plain.explorer.robot, ProbingRobot)
+    probed = explore(World(w.rotation, (), w.start), "enh3", lighthouse="three-undirected-vertex", record=False)
+    assert probed.verified and isinstance(probed.explorer.robot, ProbingRobot)
+    assert probed.by_purpose["establish"] == 2 and probed.cost == sum(probed.by_purpose.values())
+
+
+def test_a_probing_lighthouse_keeps_lemma_1_with_its_probed_perception():
+    """Expected perceptions at v0 carry the probed entry (V-r), so (M, P^E) stay unique (Lemma 1) even where
+    two hypotheses share M; the lemma-1 check runs after every iteration of every algorithm."""
+    w = WORLDS["complete-hole"]()
+    for algorithm in ("basic", "enh1"):
+        out = explore(World(w.rotation, (), w.start), algorithm, lighthouse="three-undirected-vertex")
+        assert out.verified, out.violation
+        at_v0 = [h for r in out.trace if r["event"] == "iteration" for h in r["hypotheses"] if "V-" in h["expected"][-1]]
+        assert at_v0 and all("V-" in h["expected"][-1] and "V2" not in h["expected"][-1] for h in at_v0)
+
+
+def test_replay_rejects_a_probe_move_where_no_probe_belongs():
+    from topomark.reference.replay import replay
+
+    w = WORLDS["complete-hole"]()
+    bare = World(w.rotation, (), w.start)
+    trace = explore(bare, "basic", lighthouse="three-undirected-vertex").trace
+    assert replay(bare, iter(copy.deepcopy(trace))).ok
+    k = next(k for k, r in enumerate(trace) if r["event"] == "move" and r["purpose"] == "travel")
+    bad = copy.deepcopy(trace)
+    bad[k]["purpose"] = "probe"
+    result = replay(bare, iter(bad))
+    assert not result.ok and "probe moves only after the new edge" in result.divergence.expected
+    late = copy.deepcopy(trace)
+    late[k]["purpose"] = "establish"
+    assert "establish moves only before the first iteration" in replay(bare, iter(late)).divergence.expected
+
+
+def test_probing_docstring_examples():
+    assert doctest.testmod(probing_module).failed == 0

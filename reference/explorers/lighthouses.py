@@ -13,9 +13,17 @@ directional-edge           a directional edge marker on exit 0, its head at v0  
 vertex-and-edge            an undirected marker at v0 and one on exit 0                §6.2
 three-undirected-edge      one undirected marker on exit 0, two on exit 1              §6.2
 thread                     a thread of length ε tied at v0, laid out toward exit 0     §6.3.1 (L2028-L2030)
+three-undirected-vertex    one undirected marker at v0, two at the neighbour on        §3.7, Figure 3.21(b)
+                           exit 0 (the robot walks there and back: 2 traversals)
+undirected-vertex          one undirected marker where a random walk finds aperiodic   §5.1 (L1326–L1334)
+                           neighbour degrees D (options seed, walk_limit,
+                           neighbourhood; :mod:`.lighthouse_search`)
+undirected-edge            one undirected edge marker on an edge a random walk finds   §6.1 (L1463–L1470)
+                           with ends of different degrees (options seed, walk_limit)
 =========================  ==========================================================  =====================
 
-A :class:`Lighthouse` drops its markers, then records in S what it senses at
+A :class:`Lighthouse` (a strategy: establish v0, recognise it, give the
+expected perception there) drops its markers, then records in S what it senses at
 v0 (:meth:`~topomark.spec.mapstate.PartialMap.mark_as_sensed`), so the
 expected perceptions P^E of every hypothesis (which read S) include the
 markers "at the incident edges of each visited vertex and the direction of
@@ -33,10 +41,18 @@ Decisions (the thesis is silent):
   which edges; we take the faced exit and the next one clockwise, so a start
   vertex of degree 1 cannot hold this lighthouse (bad input, checked before
   the run).
-* The lighthouses of Figure 3.21(b) (three undirected vertex markers, whose
-  back-link needs "extra traversals looking for the marked neighbors") and of
-  §6.3 (a thread of length ε) are not here yet: the first needs a probing
-  step in validation, the second threads in the robot.
+* Figure 3.21(b) names "three undirected markers, one in a vertex and two in
+  a neighbor vertex" (L874) without saying which neighbour: the faced one.
+  Its back-link needs "extra traversals looking for the marked neighbors", as
+  does §5.1's: for these two *probing* lighthouses the signature sensed at v0
+  is the same from every entry, so the robot probes
+  (:mod:`.probing`) and the perception it then has is written as the thesis
+  writes Figure 3.21's, ``[3,V-1,A]``: a virtual head at v0's exit 0.  The
+  recognition table, P^E and every Chapter 4 technique use that perception;
+  S keeps the true marks (L881).
+* A searched lighthouse's v0 is not the start: after :meth:`Lighthouse.establish`
+  the robot stands at v0, entered by map exit 0, the explorer's believed pose
+  (v0, 0), where the checker anchors φ.
 
 Examples
 --------
@@ -59,7 +75,7 @@ from topomark.spec.signature import Signature, back_link_table, signature_at
 from .lighthouse_search import after_search, search_edge, search_vertex
 from .probing import PerceivedMap, ProbingRobot, identify, perceived
 
-__all__ = ["Lighthouse", "Beacon", "LIGHTHOUSES", "lighthouse"]
+__all__ = ["Lighthouse", "Beacon", "LIGHTHOUSES", "lighthouse", "configured"]
 
 
 @dataclass
@@ -144,7 +160,7 @@ class Lighthouse:
         raw = frozenset(signature_at(S, v0, e) for e in range(S.degree(v0)))
         return Beacon(table, P, recognise or self.recognition(S, v0), raw, walk_steps)
 
-    def placed_ops(self, world, state: tuple) -> Iterator[tuple[tuple, MarkerOp]]:
+    def placed_ops(self, world, state: tuple) -> Iterator[tuple[tuple, MarkerOp | ThreadOp]]:
         """(robot state, op) for each op the start makes, walking the script's motions on ``world`` (anything
         with ``degree`` and ``target``) from ``state``; none for a searched lighthouse (its v0 is not known)."""
         if self.search is not None:
@@ -165,7 +181,10 @@ class Lighthouse:
             if key not in self.options:
                 raise InvalidInput(f"the {self.name} lighthouse takes no option {flag}"
                                    + (f" (it takes {', '.join('--' + o.replace('_', '-') for o in self.options)})"
-                                      if self.options else ""))
+                                      if self.options else "; only a searched lighthouse does: "
+                                      + ", ".join(h.name for h in LIGHTHOUSES.values() if h.options)))
+            if isinstance(value, str) and value.strip().lstrip("-").isdecimal() and value.strip().isascii():
+                value = given[key] = int(value)
             if not isinstance(value, int) or isinstance(value, bool):
                 raise InvalidInput(f"{flag} must be an integer, got {value!r}")
             if key != "seed" and value < 1:
@@ -215,6 +234,24 @@ LIGHTHOUSES: dict[str, Lighthouse] = {h.name: h for h in (
                "a thread of length ε tied at the start vertex, laid out toward the faced exit"),
 )}
 """The lighthouses by name; ``directional-vertex`` is Algorithm 3.1's own and the default."""
+
+
+def configured(name: str | None, seed=None, walk_limit=None, neighbourhood=None) -> tuple[Lighthouse | None, Any]:
+    """The CLI's lighthouse (None: the algorithm's default) with its options, and the seed left for the world.
+
+    Decision: ``--seed`` seeds a searched lighthouse's random walk when the lighthouse takes it (the world's own
+    seed then goes in its generator text, ``lattice-hole:seed=3``); otherwise it stays the generator's seed.
+    """
+    if name is None:
+        if walk_limit is not None or neighbourhood is not None:
+            flag = "--walk-limit" if walk_limit is not None else "--neighbourhood"
+            raise InvalidInput(f"{flag} is an option of a searched lighthouse (--lighthouse "
+                               + "|".join(h.name for h in LIGHTHOUSES.values() if h.options) + ")")
+        return None, seed
+    light = lighthouse(name)
+    walk_seed = "seed" in light.options
+    light = light.with_options(seed=seed if walk_seed else None, walk_limit=walk_limit, neighbourhood=neighbourhood)
+    return light, None if walk_seed else seed
 
 
 def lighthouse(name: str) -> Lighthouse:
