@@ -143,9 +143,11 @@ def _thread_mark(S: PartialMap, k: int, mark: dict) -> None:
               and all(isinstance(e, list) and len(e) == 2 and _int(e[0]) and 0 <= e[0] < d and _int(e[1])
                       and 1 <= e[1] <= _MAX_COUNT for e in edges) and len({e[0] for e in edges}) == len(edges)
               and isinstance(t.get("end", False), bool) and _int(t.get("knots", 0))
-              and 0 <= t.get("knots", 0) <= _MAX_COUNT and S.thread_mark(v) is None)
+              and 0 <= t.get("knots", 0) <= _MAX_COUNT and S.thread_mark(v) is None
+              and (t["tied"] or edges or t.get("end", False) or t.get("knots", 0)))  # something lies there
     if not ok:
-        raise CheckFailure(f"snapshot S.marks[{k}] must be {form} on a vertex of S, its exits < its degree, once")
+        raise CheckFailure(f"snapshot S.marks[{k}] must be {form} on a vertex of S, its exits < its degree, once, "
+                           "showing something")
     tm = ThreadMark(t["tied"], head, tuple(sorted(tuple(e) for e in edges)), t.get("end", False), t.get("knots", 0))
     S.mark_as_sensed(v, Signature(S.degree(v), thread=tm), 0)
 

@@ -3,6 +3,7 @@ thread operations, protocol@2's ``thread`` message, trace@2's thread ops, the ``
 
 from __future__ import annotations
 
+import doctest
 import json
 import sys
 
@@ -21,11 +22,14 @@ from topomark.reference.protocol import Expect, decode, encode
 from topomark.reference.replay import parse_trace
 from topomark.reference.robotlayer import RobotLayer
 from topomark.reference.simulator import Simulator
+from topomark.reference.snapshotwire import map_to_snapshot, snapshot_to_map
 from topomark.reference.wireops import op_from_message, op_to_message
+from topomark.spec import thread as thread_module
 from topomark.spec.errors import CheckFailure, InvalidInput, InvalidWorld
 from topomark.spec.isomorphism import find_isomorphism
 from topomark.spec.kit import THREAD_OPS, Kit, ThreadOp
-from topomark.spec.signature import Signature, back_link_table
+from topomark.spec.mapstate import PartialMap
+from topomark.spec.signature import Signature, back_link_table, signature_at
 from topomark.spec.thread import Thread, ThreadedWorld
 from topomark.spec.world import Start, World
 from topomark.spec.worldfile import dumps_world, load_world, loads_world, schema
@@ -309,6 +313,27 @@ def test_a_trace_with_a_malformed_thread_op_is_bad_input(change, words):
 def test_thread_ops_round_trip_over_the_wire(op):
     msg = decode(encode(op_to_message(op)), Expect(("thread",), 2))
     assert msg["type"] == "thread" and op_from_message(msg, 3) == op
+
+
+def test_a_snapshot_carries_thread_marks_in_protocol_2_only():
+    S = PartialMap()
+    for d in (3, 2):
+        S.add_vertex(d)
+    S.add_edge((0, 0), (1, 0))
+    S.mark_as_sensed(0, Signature.parse("[3,A,A,T-2,S-0]"), 0)
+    S.mark_as_sensed(1, Signature.parse("[2,A,A,S-0,F,K2]"), 0)
+    msg = map_to_snapshot(S, 2)
+    back = snapshot_to_map(msg["S"], msg["U"], 2)
+    assert [str(signature_at(back, v, 0)) for v in back.vertices] == ["[3,A,A,T-2,S-0]", "[2,A,A,S-0,F,K2]"]
+    assert all("thread" not in m for m in map_to_snapshot(S, 1)["S"]["marks"])
+    for bad in [{"vertex": 0, "thread": {"tied": False}}, {"vertex": 0, "thread": {"tied": True, "head": 3}},
+                {"vertex": 1, "thread": {"tied": True, "edges": [[0, 1], [0, 2]]}}]:
+        with pytest.raises(CheckFailure, match="thread mark"):
+            snapshot_to_map({"exits": msg["S"]["exits"], "marks": [bad]}, [], 2)
+
+
+def test_docstring_examples():
+    assert doctest.testmod(thread_module).failed == 0
 
 
 CLIENT = """import json, sys
