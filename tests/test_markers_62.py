@@ -104,3 +104,43 @@ def test_the_cli_runs_case_3b_and_refuses_a_count_below_one(capsys):
     assert json.loads(capsys.readouterr().out)["outcome"] == "failed"
     assert main(["explore", "cycle:n=5", "--algorithm", "case-3b", "--markers", "0"]) == 2
     assert "--markers must be an integer >= 1" in capsys.readouterr().err
+
+
+EXTENSIONS = ("extension-1", "extension-2")
+
+
+@pytest.mark.parametrize("name", EXTENSIONS)
+@pytest.mark.parametrize("text", WORLDS)
+def test_the_extensions_map_each_world_within_their_bound_and_below_case_3b(name, text):
+    w = world(text)
+    out = explore(w, name)
+    assert (out.outcome, out.verified, out.violation) == ("correct", True, None)
+    bound = REGISTRY[name].marker_bound_fn(w.n, w.m)
+    drops = out.marker_operations["drop"]
+    assert used(out) == sum_to(drops) <= bound  # counts 1, 2, ..., one per marked edge
+    assert used(out) < sum_to(w.n - 1)  # fewer than Case 3b's Σ_{k=1}^{n−1} k
+    if name == "extension-1":  # dropped in transit at v_k: no trip
+        assert set(out.by_purpose) <= {"new", "travel"}
+    else:  # Algorithm 6.6 line 10: back on e and back, per marked edge
+        assert drops <= (w.n - 1 + 1) // 2 and out.by_purpose["other"] == 2 * drops
+
+
+def test_extension_2_needs_rule_3_the_naive_extension_maps_k4_wrong():
+    """L1910, Figure 6.15(b)-(c): a loop edge from an unmarked v_k, then closest-first from v_k' leaves v_k
+    unmarked and a later entry takes it for a new place.  K4 from vertex 0 facing 1 is the smallest world found
+    that shows it (every start of K4, the 2x3 and 3x3 lattices tried); with rule (3) it maps correctly."""
+    from topomark.reference.explorers.saving_markers import SavingEdgeCounts
+
+    class Naive(SavingEdgeCounts):
+        come_back = False
+
+    k4 = World(generate("complete", n=4).rotation, (), Start("0", "1"))
+    assert explore(k4, "extension-2").outcome == "correct"
+    out = explore(k4, variant("naive-extension-2", Naive, like="extension-2"))
+    assert out.outcome == "wrong-map" and "two map vertices for one place" in str(out.violation)
+
+
+@pytest.mark.parametrize("name", EXTENSIONS)
+def test_the_extensions_fail_when_short_of_markers(name):
+    out = explore(world(WORLDS[0]), name, options={"markers": 2})
+    assert out.outcome == "failed" and "out of markers" in out.reason

@@ -131,6 +131,7 @@ class MarkerWalk:
         dist, _, parent = bfs(self.M, self.position[0])
         it = MarkerStep(len(self.iterations) + 1, self.choose(dist))
         self.travel_to(it.edge[0], parent)
+        self.depart(it)
         it.signature = self.leave(it.edge, "new")
         self.arrive(it, it.signature)
         self.iterations.append(it)
@@ -144,6 +145,9 @@ class MarkerWalk:
     # -- what a subclass writes ----------------------------------------------------
     def begin(self) -> None:
         """After S ← v0 (the robot at v0, entered by exit 0): the algorithm's first drops, if any."""
+
+    def depart(self, it: MarkerStep) -> None:
+        """At v_k, about to follow e (a drop "during transit on e", Algorithm 6.3 line 6, is made here)."""
 
     def arrive(self, it: MarkerStep, sig: Signature) -> None:
         """The robot has followed e and senses ``sig`` at v_u: augment S (and drop what the algorithm drops)."""
@@ -179,12 +183,11 @@ class MarkerWalk:
     def non_loop(self, it: MarkerStep, sig: Signature) -> int:
         """v_u is new: add it with e as its exit 0, its other exits (clockwise) to U; the robot stands there."""
         u = self.add_vertex(sig.degree)
-        if sig.marked:
-            raise AlgorithmFailed(f"internal: new vertex {u} already shows marks {sig}")
         self.add_edge(it.edge, (u, 0))
         self.M.unexplored.extend((u, i) for i in range(1, sig.degree))
         it.kind, it.joined = "non-loop", (it.edge, (u, 0))
         self.position = (u, 0)
+        self.record_marks()  # a marker dropped on e in transit shows at v_u too
         return u
 
     def loop(self, it: MarkerStep, far: MapDart) -> None:

@@ -13,7 +13,7 @@ stated (only O(m), O(m·d_max)), so none is checked.
 Examples
 --------
 >>> [s.name for s in SPECS]
-['case-3a', 'case-3b', 'case-dv-sum']
+['case-3a', 'case-3b', 'case-dv-sum', 'extension-1', 'extension-2']
 >>> SPECS[1].kit_for(5, 7, {"markers": None}).describe()
 '10 undirected edge markers'
 >>> SPECS[2].kit_for(5, 7, {"markers": 3}).describe()
@@ -26,6 +26,7 @@ from topomark.spec.kit import Kit
 
 from ..algorithmspec import AlgorithmSpec, Parameter
 from ..explorers.counted_markers import DirectionalVertexCounts, EdgeCounts, VertexCounts, sum_to
+from ..explorers.saving_markers import MarkFirstEdges, SavingEdgeCounts, ceil_half
 
 __all__ = ["SPECS"]
 
@@ -35,10 +36,10 @@ MARKERS = Parameter("markers", "how many markers the robot carries (default: wha
 _CHECKS = ("pose", "I-1", "I-2", "marker-budget", "isomorphism")
 
 
-def _count(n: int, options: dict) -> int:
-    """The kit's size: ``--markers`` if given, else the assured Σ_{k=1}^{n−1} k."""
+def _count(n: int, options: dict, assured: int | None = None) -> int:
+    """The kit's size: ``--markers`` if given, else the assured Σ_{k=1}^{n−1} k (or ``assured``)."""
     given = options.get("markers")
-    return sum_to(n - 1) if given is None else given
+    return (sum_to(n - 1) if assured is None else assured) if given is None else given
 
 
 SPECS = (
@@ -61,4 +62,16 @@ SPECS = (
         True, ("markers",), _CHECKS, explorer=DirectionalVertexCounts, uses_lighthouse=False,
         parameters=(MARKERS,), kit_fn=lambda n, m, o: Kit(vertex=_count(n, o), directional=True),
         marker_bound_fn=lambda n, m: sum_to(n), family="robot"),
+    AlgorithmSpec(
+        "extension-1", "§6.2.2 extension-1 of Case 3b (L1914, Figure 6.15, Table 6.2)",
+        Kit(edge=1, directional=True), "O(m)", "Σ_{k=1}^{⌈m/2⌉} k directional E-markers",
+        True, ("markers",), _CHECKS, explorer=MarkFirstEdges, uses_lighthouse=False, parameters=(MARKERS,),
+        kit_fn=lambda n, m, o: Kit(edge=_count(n, o, sum_to(ceil_half(m))), directional=True),
+        marker_bound_fn=lambda n, m: sum_to(ceil_half(m)), family="robot"),
+    AlgorithmSpec(
+        "extension-2", "§6.2.2 extension-2 of Case 3b, Algorithm 6.6 (L1916–L1963, Figure 6.16, Table 6.2)",
+        Kit(edge=1, directional=True), "O(m)", "Σ_{k=1}^{⌈(n−1)/2⌉} k directional E-markers",
+        True, ("markers",), _CHECKS, explorer=SavingEdgeCounts, uses_lighthouse=False, parameters=(MARKERS,),
+        kit_fn=lambda n, m, o: Kit(edge=_count(n, o, sum_to(ceil_half(n - 1))), directional=True),
+        marker_bound_fn=lambda n, m: sum_to(ceil_half(n - 1)), family="robot"),
 )
