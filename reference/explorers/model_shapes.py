@@ -41,7 +41,7 @@ from collections import deque
 
 from topomark.spec.mapstate import MapDart, PartialMap
 
-__all__ = ["Shape", "Model"]
+__all__ = ["Shape", "Model", "walk_equivalent"]
 
 
 class Shape:
@@ -163,3 +163,23 @@ class Model:
 
     def __repr__(self) -> str:
         return f"Model(n={self.shape.n}, edges={self.shape.edges}, open={self.shape.open}, pose={self.pose})"
+
+
+def walk_equivalent(a: Shape, pose_a: MapDart, b: Shape, pose_b: MapDart) -> bool:
+    """No walk tells the completed ``a`` (robot at ``pose_a``) from the completed ``b`` (at ``pose_b``): every
+    motion sequence senses the same degrees in both (a breadth-first search over pairs of robot states, as
+    the Figure 3.4 pair was checked in :mod:`topomark.reference.wheels`)."""
+    start = (pose_a, pose_b)
+    seen = {start}
+    queue = deque([start])
+    while queue:
+        (va, ea), (vb, eb) = queue.popleft()
+        d = a.degree(va)
+        if d != b.degree(vb):
+            return False
+        for k in range(d):
+            pair = (a.arc((va, (ea + k) % d)), b.arc((vb, (eb + k) % d)))
+            if pair not in seen:
+                seen.add(pair)
+                queue.append(pair)
+    return True

@@ -21,6 +21,15 @@ Termination, all decided here since the thesis gives one heuristic only (guide 4
 
 * L1373: a model that is the only completed model for ``--window`` steps
   (default 100, the thesis's example) is returned;
+* a sole live model that is completed is returned at once: the true model
+  is never voided (the ``models`` check asserts it), so it is the truth,
+  and it can only pass from then on — the window rule would return it
+  ``window`` steps later, at more cost and with no more information;
+* every live model completed and no walk telling any two apart
+  (:func:`.model_shapes.walk_equivalent`): no step can ever void one, so the
+  window rule can never fire; :class:`AlgorithmFailed` says so at once
+  (e.g. the Figure 3.4 pair from the centre, every cycle length with no
+  cue: the latter never gets there, its longer cycles still growing);
 * TM complete (the world is a tree: its breadth-first unfolding is finite):
   the sole completed model is returned;
 * ``--max-steps`` / ``--max-models`` reached: :class:`LimitReached` (the
@@ -70,7 +79,7 @@ from topomark.spec.mapstate import MapDart, PartialMap
 
 from ..robot import Robot
 from .global_signatures import Walker, validate
-from .model_shapes import Model, Shape
+from .model_shapes import Model, Shape, walk_equivalent
 from .traversal_map import TraversalMap
 
 __all__ = ["ModelTreeExplorer", "Step", "Closing", "DEFAULTS"]
@@ -136,6 +145,7 @@ class ModelTreeExplorer:
         self.walker: Walker | None = None
         self._tm_pose: MapDart = (0, 0)
         self._sole: tuple[Shape | None, int] = (None, 0)  # the sole completed shape and the step it became so
+        self._checked: tuple[tuple, bool] = ((), False)  # the live shapes last compared walk by walk, and the answer
 
     # -- the explorer contract -------------------------------------------------------
     def start(self) -> None:
@@ -294,8 +304,7 @@ class ModelTreeExplorer:
         if not self.live:
             raise AlgorithmFailed(f"every world model was voided at step {number} (a cue is false for this world)")
         o = self.options
-        cued = o["cue-n"] is not None or o["cue-m"] is not None
-        if cued and len(self.live) == 1 and self.live[0].shape.complete():
+        if len(self.live) == 1 and self.live[0].shape.complete():  # the truth is never voided: this is it
             return self._finish(self.live[0])
         if o["cue-diameter"] is not None and self.tm.explored_depth() >= o["cue-diameter"]:
             shapes = {id(m.shape) for m in self.live}
@@ -303,6 +312,9 @@ class ModelTreeExplorer:
                 return self._finish(self.live[0])
             raise AlgorithmFailed(f"TM explored to depth {o['cue-diameter']} (the diameter cue) with "
                                   f"{len(shapes)} completed models left, which it cannot tell apart")
+        if all(m.shape.complete() for m in self.live) and self._indistinguishable():
+            raise AlgorithmFailed(f"{len(self.live)} completed models are left at step {number} and no walk "
+                                  f"can tell them apart: the world cannot be mapped without a marker or a cue")
         completed = self._completed()
         if len({id(m.shape) for m in completed}) != 1:
             self._sole = (None, number)
@@ -312,6 +324,15 @@ class ModelTreeExplorer:
         if number - self._sole[1] >= o["window"]:
             self._finish(completed[0])
         return None
+
+    def _indistinguishable(self) -> bool:
+        """Every live model (all completed) senses what the first one does on every walk (checked once per set)."""
+        key = tuple(id(m.shape) for m in self.live)
+        if key != self._checked[0]:
+            first = self.live[0]
+            self._checked = (key, all(walk_equivalent(first.shape, first.pose, m.shape, m.pose)
+                                      for m in self.live[1:]))
+        return self._checked[1]
 
     def _tm_complete(self, number: int) -> Step:
         """TM has no unexplored exit: the world is a tree and has been walked whole; its model is returned."""
