@@ -34,7 +34,7 @@ def test_text_listing_names_each_thesis_reference(capsys):
         assert spec.thesis in out
 
 
-@pytest.mark.parametrize("name", list(REGISTRY))
+@pytest.mark.parametrize("name", [n for n, s in REGISTRY.items() if s.deterministic])  # §5.2.2 may not map
 @pytest.mark.parametrize("world", ["lattice-hole:rows=4,cols=4,seed=2", "random:n=7,fraction=0.5,seed=3",
                                    "complete-hole:n=6,seed=1", "wheel-a", "wheel-b"])
 def test_every_registered_algorithm_maps_generated_worlds(name, world):
