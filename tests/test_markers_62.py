@@ -61,19 +61,22 @@ def test_directional_vertex_markers_make_every_place_a_lighthouse_when_all_are_m
     assert set(out.by_purpose) <= {"new", "travel"}  # place and back-link at once, no probe (L1902)
 
 
-K4 = World(generate("complete", n=4).rotation, (), Start("0", "3"))  # the smallest world re-entering the blank
+# K4 without the edge 0-1, started at 1 facing 3: the smallest world whose blank last vertex is re-entered over a
+# loop edge (closest-first, the last vertex explores its own edges first: no 3-vertex world and no start of C4 does)
+K4_E = World({v: tuple(w for w in ns if {v, w} != {"0", "1"}) for v, ns in generate("complete", n=4).rotation.items()},
+             (), Start("1", "3"))
 
 
 @pytest.mark.parametrize("name", ["case-3a", "case-dv-sum"])
 def test_sigma_n_minus_1_leaves_the_last_vertex_blank_and_sigma_n_marks_it(name):
     """Guide §10 #11 (L1577 Σ^n used; title and Algorithm 6.2 Σ^{n−1}): with Σ_{k=1}^{n−1} k the last new vertex
     stays blank and is recognised by its blank label on re-entry; with Σ_{k=1}^{n} k all n are marked."""
-    out = explore(K4, name)
+    out = explore(K4_E, name)
     ex = out.explorer
     assert out.outcome == "correct" and used(out) == sum_to(3) and ex.blank == 3
     entered = [it for it in ex.iterations if it.kind == "loop" and it.joined[1][0] == ex.blank]
     assert entered and entered[0].signature.vertex_count == 0 and entered[0].probes >= 1
-    full = explore(K4, name, options={"markers": sum_to(4)})
+    full = explore(K4_E, name, options={"markers": sum_to(4)})
     assert full.outcome == "correct" and used(full) == sum_to(4) and full.explorer.blank is None
 
 
@@ -125,18 +128,18 @@ def test_the_extensions_map_each_world_within_their_bound_and_below_case_3b(name
         assert drops <= (w.n - 1 + 1) // 2 and out.by_purpose["other"] == 2 * drops
 
 
-def test_extension_2_needs_rule_3_the_naive_extension_maps_k4_wrong():
+def test_extension_2_needs_rule_3_the_naive_extension_maps_k4_minus_an_edge_wrong():
     """L1910, Figure 6.15(b)-(c): a loop edge from an unmarked v_k, then closest-first from v_k' leaves v_k
-    unmarked and a later entry takes it for a new place.  K4 from vertex 0 facing 1 is the smallest world found
-    that shows it (every start of K4, the 2x3 and 3x3 lattices tried); with rule (3) it maps correctly."""
+    unmarked and a later entry takes it for a new place.  K4 without an edge, from vertex 2 facing 0, is the
+    smallest world that shows it (no start of C3 or C4 does); with rule (3) it maps correctly."""
     from topomark.reference.explorers.saving_markers import SavingEdgeCounts
 
     class Naive(SavingEdgeCounts):
         come_back = False
 
-    k4 = World(generate("complete", n=4).rotation, (), Start("0", "1"))
-    assert explore(k4, "extension-2").outcome == "correct"
-    out = explore(k4, variant("naive-extension-2", Naive, like="extension-2"))
+    k4_e = World(K4_E.rotation, (), Start("2", "0"))
+    assert explore(k4_e, "extension-2").outcome == "correct"
+    out = explore(k4_e, variant("naive-extension-2", Naive, like="extension-2"))
     assert out.outcome == "wrong-map" and "two map vertices for one place" in str(out.violation)
 
 
