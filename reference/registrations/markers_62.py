@@ -1,14 +1,16 @@
-"""§6.2's algorithms that give every discovered place a unique count of markers: Case 3a (Algorithm 6.2),
-Case 3b and Σ k directional vertex markers (thesis §6.2.1 L1562–L1643, §6.2.2 L1902; Tables 6.1, 6.2).
+"""§6.2's algorithms that give places a unique count of markers: Case 3a (Algorithm 6.2), Case 3b, Σ k
+directional vertex markers, and Case 3b's extension-1 and extension-2 (Algorithm 6.6) with directional
+E-markers (thesis §6.2.1 L1562–L1643, §6.2.2 L1902–L1963; Tables 6.1, 6.2).
 
 Each is a kit algorithm: by default the robot carries exactly the markers its
-case is assured, Σ_{k=1}^{n−1} k = n(n−1)/2 (computed here from the world; the
-robot never learns n or m), ``--markers K`` gives K instead.  The marker bound
-checked after every step is the thesis's: Σ_{k=1}^{n−1} k for Case 3b (n − 1
-non-loop edges, L1627), Σ_{k=1}^{n} k for the vertex algorithms, which mark
-every vertex when the kit allows (L1577; the decision is in
-:mod:`topomark.reference.explorers.counted_markers`).  No exact cost formula is
-stated (only O(m), O(m·d_max)), so none is checked.
+case is assured — Σ_{k=1}^{n−1} k = n(n−1)/2 for Cases 3a/3b and the directional
+vertex markers, Σ_{k=1}^{⌈m/2⌉} k for extension-1, Σ_{k=1}^{⌈(n−1)/2⌉} k for
+extension-2 — computed here from the world (the robot never learns n or m);
+``--markers K`` gives K instead.  The marker bound checked after every step is
+the thesis's: the same formulas, except Σ_{k=1}^{n} k for the vertex
+algorithms, which mark every vertex when the kit allows (L1577; the decision is
+in :mod:`topomark.reference.explorers.counted_markers`).  No exact cost formula
+is stated (only O(m), O(m·d_max)), so none is checked.
 
 Examples
 --------
