@@ -258,7 +258,8 @@ def world_records(class_name: str, world_id: tuple[int, int, int], world: World,
 
 def run_map(root: str, task: int, class_name: str, max_degree: int, units: list[Unit],
             shards: int) -> dict[str, Any]:
-    """Run map task ``task`` into directory ``root``; returns (and writes) ``{"sizes": {n: [worlds, placements]}}``."""
+    """Run map task ``task`` into directory ``root``; returns (and writes) its ``done`` record:
+    ``{"sizes": {n: [worlds, placements]}, "offsets": shard boundaries in its data file}``."""
     rows: list[tuple] = []
     sizes: dict[int, list[int]] = {}
     for unit in units:
@@ -272,8 +273,7 @@ def run_map(root: str, task: int, class_name: str, max_degree: int, units: list[
     order = np.argsort(where, kind="stable")
     bounds = np.searchsorted(where[order], np.arange(shards + 1))
     path = Path(root)
-    for s in range(shards):
-        write_atomic(map_path(path, task, s), recs[order[bounds[s]:bounds[s + 1]]].tobytes())
-    result = {"sizes": {str(n): v for n, v in sizes.items()}}
+    write_atomic(map_path(path, task), recs[order].tobytes())
+    result = {"sizes": {str(n): v for n, v in sizes.items()}, "offsets": [int(b) for b in bounds]}
     write_json(done_path(path, task), result)
     return result

@@ -90,9 +90,10 @@ def prepare(root: Path, params: dict[str, Any], task_worlds: int, shards: int | 
     return manifest
 
 
-def reduce_shard(root: str, shard: int, tasks: int, min_n: int, max_n: int, all_pairs: bool) -> dict[str, Any]:
-    """Reduce one shard (all map tasks done): write and return its summary."""
-    result = summary(read_shard(Path(root), tasks, shard), min_n, max_n, all_pairs)
+def reduce_shard(root: str, shard: int, slices: list[tuple[int, int, int]], min_n: int, max_n: int,
+                 all_pairs: bool) -> dict[str, Any]:
+    """Reduce one shard from its ``(task, first record, count)`` slices: write and return its summary."""
+    result = summary(read_shard(Path(root), slices), min_n, max_n, all_pairs)
     write_json(reduce_path(Path(root), shard), result)
     return result
 
@@ -111,8 +112,9 @@ def _map_phase(ex: Executor, root: Path, manifest: dict[str, Any], progress: Pro
         progress.done(todo[i][1], sum(w for w, _ in result["sizes"].values()))
 
 
-def _reduce_phase(ex: Executor, root: Path, manifest: dict[str, Any], all_pairs: bool) -> list[dict[str, Any]]:
-    p, tasks = manifest["params"], len(manifest["tasks"])
+def _reduce_phase(ex: Executor, root: Path, manifest: dict[str, Any], done: list[dict[str, Any]],
+                  all_pairs: bool) -> list[dict[str, Any]]:
+    p = manifest["params"]
     out: dict[int, dict[str, Any]] = {}
     calls, which = [], []
     for s in range(manifest["shards"]):
@@ -120,18 +122,19 @@ def _reduce_phase(ex: Executor, root: Path, manifest: dict[str, Any], all_pairs:
         if part is not None and (not all_pairs or "pairs" in part):
             out[s] = part
         else:
-            calls.append((reduce_shard, (str(root), s, tasks, p["min_n"], p["max_vertices"], all_pairs)))
+            slices = [(t, d["offsets"][s], d["offsets"][s + 1] - d["offsets"][s]) for t, d in enumerate(done)]
+            calls.append((reduce_shard, (str(root), s, slices, p["min_n"], p["max_vertices"], all_pairs)))
             which.append(s)
     for i, result in ex.run(calls):
         out[which[i]] = result
     return [out[s] for s in sorted(out)]
 
 
-def _rows(manifest: dict[str, Any], total: dict[str, Any], root: Path) -> tuple[SizeRow, ...]:
+def _rows(manifest: dict[str, Any], total: dict[str, Any], done: list[dict[str, Any]]) -> tuple[SizeRow, ...]:
     p = manifest["params"]
     sizes: dict[int, list[int]] = {}
-    for t in range(len(manifest["tasks"])):
-        for n, (w, pl) in read_json(done_path(root, t))["sizes"].items():
+    for d in done:
+        for n, (w, pl) in d["sizes"].items():
             tally = sizes.setdefault(int(n), [0, 0])
             tally[0] += w
             tally[1] += pl
@@ -160,8 +163,9 @@ def sharded_census(class_name: str, max_vertices: int, max_degree: int, root: st
         bar = Progress(manifest["estimated_worlds"], progress)
         _map_phase(ex, path, manifest, bar)
         bar.finish()
-        total = merge_summaries(_reduce_phase(ex, path, manifest, verify_all))
-    rows = _rows(manifest, total, path)
+        done = [read_json(done_path(path, t)) for t in range(len(manifest["tasks"]))]
+        total = merge_summaries(_reduce_phase(ex, path, manifest, done, verify_all))
+    rows = _rows(manifest, total, done)
 
     def rebuild(member: list[int]):
         n, _, gi, ri, k = member

@@ -9,14 +9,16 @@ not by the number of worlds.
 On-disk format (``topomark/census-shards@1``), all in one directory::
 
     manifest.json          the census parameters, S and the task list (written once, atomically)
-    map-T-S.bin            records of map task T falling in shard S (little-endian, RECORD dtype)
-    map-T.done.json        task T finished: {"sizes": {n: [worlds, placements]}} — written last
+    map-T.bin              records of map task T (little-endian, RECORD dtype), ordered by shard
+    map-T.done.json        task T finished: {"sizes": {n: [worlds, placements]}, "offsets": [S + 1 ints]}
+                           (shard S's records are records offsets[S] .. offsets[S+1]-1); written last
     reduce-S.json          the summary of shard S (see :func:`summary`)
 
-Every file is written to ``NAME.tmp-PID`` and renamed, so a file that exists
-is complete; a task without its ``done`` file is redone from scratch (its
-shard files are overwritten) and a shard without its ``reduce`` file is
-reduced again.  That is what makes a killed census resumable.
+One data file per task (not per task and shard) keeps the file count at 2 per
+task when S is in the hundreds.  Every file is written to ``NAME.tmp-PID`` and
+renamed, so a file that exists is complete; a task without its ``done`` file
+is redone from scratch (its data file is overwritten) and a shard without its
+``reduce`` file is reduced again.  That is what makes a killed census resumable.
 
 A record is one member of a language class: ``d0, d1`` the 128-bit language
 digest, ``mask`` a bit per world size n seen in the class, ``n, m`` the
@@ -163,8 +165,8 @@ def merge_summaries(parts: Iterable[dict[str, Any]]) -> dict[str, Any]:
 
 
 # -- files ------------------------------------------------------------------------------
-def map_path(root: Path, task: int, shard: int) -> Path:
-    return root / f"map-{task}-{shard}.bin"
+def map_path(root: Path, task: int) -> Path:
+    return root / f"map-{task}.bin"
 
 
 def done_path(root: Path, task: int) -> Path:
@@ -191,7 +193,8 @@ def read_json(path: Path) -> Any:
     return json.loads(path.read_text())
 
 
-def read_shard(root: Path, tasks: int, shard: int) -> np.ndarray:
-    """Every map task's records of one shard (all tasks must be done)."""
-    parts = [np.fromfile(map_path(root, t, shard), RECORD) for t in range(tasks)]
+def read_shard(root: Path, slices: list[tuple[int, int, int]]) -> np.ndarray:
+    """One shard's records: ``(task, first record, count)`` per map task (all tasks done)."""
+    parts = [np.fromfile(map_path(root, t), RECORD, count=count, offset=first * RECORD.itemsize)
+             for t, first, count in slices if count]
     return np.concatenate(parts) if parts else np.zeros(0, RECORD)

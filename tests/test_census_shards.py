@@ -43,7 +43,7 @@ def _code(world: World) -> tuple:
     return language_code(mach, minimise(mach), mach.index[world.start_state()])
 
 
-@settings(max_examples=80, deadline=None)
+@settings(max_examples=40, deadline=None)
 @given(worlds(2, 5, max_degree=3, markers="any", with_start=True),
        worlds(2, 5, max_degree=3, markers="any", with_start=True))
 def test_anchored_digest_equal_iff_language_code_equal(a, b):
@@ -51,7 +51,7 @@ def test_anchored_digest_equal_iff_language_code_equal(a, b):
     assert _digest(a) == _digest(a.with_start(a.start))  # deterministic
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=25, deadline=None)
 @given(worlds(2, 6, max_degree=4, markers="any", with_start=True))
 def test_anchored_digest_equal_iff_code_equal_within_a_world(w):
     """Starts of one world (where automorphisms make several anchors tie)."""
@@ -97,9 +97,9 @@ def test_sharded_census_equals_in_memory(class_name, tmp_path):
 
 
 def test_sharded_degree_four(tmp_path):
-    """n <= 5 at max degree 4: the 5-vertex edge-marker counterexample, and no undirected-vertex row changes."""
-    for name in ("undirected-edge", "undirected-vertex"):
-        assert sharded_census(name, 5, 4, tmp_path / name, task_worlds=40, shards=5) == census(name, 5, 4)
+    """n <= 5 at max degree 4 (K5's 7,776 rotation systems split over units): the 5-vertex edge-marker pair."""
+    result = sharded_census("undirected-edge", 5, 4, tmp_path, task_worlds=40, shards=5)
+    assert result == census("undirected-edge", 5, 4) and result.smallest_counterexample[0].n == 5
 
 
 def test_sharded_verify_all(tmp_path):
@@ -113,8 +113,8 @@ def test_interrupted_census_resumes_from_finished_tasks(tmp_path, monkeypatch):
     calls: list[int] = []
 
     def dying(root, task, *args):
-        if len(calls) == 3:  # the fourth task is killed halfway: one shard file written, no done file
-            (tmp_path / f"map-{task}-0.bin").write_bytes(b"garbage, never read")
+        if len(calls) == 3:  # the fourth task is killed halfway: a data file written, no done file
+            (tmp_path / f"map-{task}.bin").write_bytes(b"garbage, never read")
             raise KeyboardInterrupt
         calls.append(task)
         return real(root, task, *args)
