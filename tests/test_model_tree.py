@@ -20,11 +20,12 @@ from topomark.reference.explore import explore
 from topomark.reference.explorers.model_shapes import Shape
 from topomark.reference.explorers.model_tree import ModelTreeExplorer
 from topomark.reference.explorers.traversal_map import TraversalMap
-from topomark.reference.registrations.model_tree import check_cues
+from topomark.reference.registrations.model_tree import check_cues, summary, write_models
 from topomark.reference.registry import algorithm_spec, variant
 from topomark.spec.errors import InvalidInput
 from topomark.spec.isomorphism import find_isomorphism
 from topomark.spec.world import World
+from topomark.spec.worldfile import world_from_json
 
 
 def _run(world: World, **options):
@@ -90,8 +91,8 @@ def test_the_figure_3_4_wheels_keep_both_completed_models():
     assert glob.outcome == loc.outcome == "failed" and "no walk can tell them apart" in glob.reason
     assert len(glob.explorer.live) == 6  # thesis: "only six world models become completed"
     done = [S.to_world() for S in glob.explorer.completed_models]
-    assert any(find_isomorphism(S, a, markers=False) for S in done)
-    assert any(find_isomorphism(S, b, markers=False) for S in done)
+    assert [bool(find_isomorphism(S, a, markers=False)) for S in done] == [False] * 5 + [True]  # Fig. 5.3: (f)
+    assert bool(find_isomorphism(done[2], b, markers=False))  # one incorrect model is Figure 3.4(b)
     assert len(done) < len(loc.explorer.completed_models)  # global signatures keep fewer (thesis: 6 vs > 50)
     planar = _run(a, **{"cue-n": 5, "cue-planar": "yes"})
     flat = [S.to_world() for S in planar.explorer.completed_models]
@@ -169,3 +170,13 @@ def test_registration_and_cli():
                           "model-tree", "--cue-n", "5", "--json"], capture_output=True, text=True, timeout=120)
     data = json.loads(run.stdout)
     assert run.returncode == 0 and (data["outcome"], data["verified"]) == ("correct", True)
+
+
+def test_the_cli_fields_and_the_completed_models_as_world_files(tmp_path):
+    """What ``--json`` and ``--models DIR`` report (the CLI wires these two helpers)."""
+    world = generators.cycle(5)
+    out = _run(world, **{"max-steps": 6})
+    assert summary(out.explorer, world) == {"completed_models": 4, "peak_models": 5, "true_world_completed": True}
+    paths = write_models(out.explorer, tmp_path / "models")
+    assert [world_from_json(json.loads(p.read_text())).n for p in paths] == [3, 4, 5, 6]
+    assert not summary(out.explorer, generators.cycle(7))["true_world_completed"]

@@ -15,6 +15,11 @@ n and m and refuses a false ``--cue-n``/``--cue-m`` before anything runs;
 :func:`check_cues` also checks ``--cue-diameter`` and ``--cue-planar``
 against a world, for a caller that has the world (the CLI).
 
+For the CLI (issue 11 item 4-5): :func:`summary` gives the ``--json`` fields
+``completed_models``, ``peak_models`` and ``true_world_completed``;
+:func:`write_models` writes every completed model, in completion order, as
+world files (``--models DIR``).
+
 Examples
 --------
 >>> spec = SPECS[0]
@@ -26,13 +31,17 @@ Examples
 
 from __future__ import annotations
 
+from pathlib import Path
+
 from topomark.spec.errors import InvalidInput
+from topomark.spec.isomorphism import anchored
 from topomark.spec.kit import Kit
+from topomark.spec.worldfile import dumps_world
 
 from ..algorithmspec import AlgorithmSpec, Parameter
 from ..explorers.model_tree import DEFAULTS, ModelTreeExplorer
 
-__all__ = ["SPECS", "PARAMETERS", "check_cues"]
+__all__ = ["SPECS", "PARAMETERS", "check_cues", "summary", "write_models"]
 
 PARAMETERS = (
     Parameter("signatures", "global: validate each loop closing against every known vertex (§5.2.2); local: accept "
@@ -86,6 +95,28 @@ def _diameter(world) -> int:
                     queue.append(w)
         best = max(best, max(dist.values()))
     return best
+
+
+def summary(explorer, world) -> dict:
+    """The model tree's counts for ``--json``: how many models became completed, the most live at once, and
+    whether the true world (anchored at the start, as the checker anchors it) is among the completed ones."""
+    start = world.start_state()
+    true = any(S.n == world.n and anchored(S, world, (0, 0), start, markers=False, partial=False)
+               for S in explorer.completed_models)
+    return {"completed_models": len(explorer.completed_models), "peak_models": explorer.peak_models,
+            "true_world_completed": true}
+
+
+def write_models(explorer, directory: str | Path) -> list[Path]:
+    """Every completed model, in completion order, as ``model-0001.json`` … in ``directory`` (created)."""
+    out = Path(directory)
+    out.mkdir(parents=True, exist_ok=True)
+    paths = []
+    for k, S in enumerate(explorer.completed_models, 1):
+        path = out / f"model-{k:04d}.json"
+        path.write_text(dumps_world(S.to_world(start=(0, 0))))
+        paths.append(path)
+    return paths
 
 
 SPECS = (
