@@ -155,7 +155,7 @@ class AlgorithmSpec:
         ``lighthouses`` the strategies a lighthouse algorithm runs with."""
         out = {"name": self.name, "thesis": self.thesis, "kit": self.kit.to_json(), "bound": self.bound,
                "markers": self.markers, "deterministic": self.deterministic, "options": list(self.options),
-               "checks": list(self.checks), "family": self.family,
+               "checks": list(self.checks), "family": self.family, "kit_from_world": self.kit_fn is not None,
                "parameters": {p.name: {"help": p.help, "default": p.default} for p in self.parameters}}
         if self.uses_lighthouse:
             out["lighthouses"] = {h.name: {"thesis": h.thesis, "kit": h.kit.to_json()} for h in LIGHTHOUSES.values()}

@@ -1,8 +1,10 @@
 """``topomark algorithms [--json]``: the registered algorithms, their thesis references, kits and bounds.
 
 The JSON form is a list of objects with ``name``, ``thesis``, ``kit``,
-``bound``, ``markers``, ``deterministic``, ``options`` and ``checks``
-(:meth:`topomark.reference.registry.AlgorithmSpec.to_json`).
+``bound``, ``markers``, ``deterministic``, ``options``, ``checks``,
+``family``, ``parameters``, ``kit_from_world`` and, for the lighthouse
+algorithms, ``lighthouses``
+(:meth:`topomark.reference.algorithmspec.AlgorithmSpec.to_json`).
 """
 
 from __future__ import annotations
@@ -29,7 +31,10 @@ def algorithms_command(args) -> int:
     width = max(len(s.name) for s in specs)
     for s in specs:
         print(f"{s.name:<{width}}  {s.thesis}")
-        print(f"{'':<{width}}  kit: {s.kit.describe()}; markers: {s.markers}; "
-              f"bound: {s.bound or 'none stated in the thesis'}")
+        kit = f"computed from n and m ({s.markers})" if s.kit_fn is not None else s.kit.describe()
+        lighthouse = "; lighthouse: any (--lighthouse)" if s.uses_lighthouse else ""
+        print(f"{'':<{width}}  kit: {kit}{lighthouse}; bound: {s.bound or 'none stated in the thesis'}")
+        if s.parameters:
+            print(f"{'':<{width}}  options: " + ", ".join(f"--{p.name} (default {p.default})" for p in s.parameters))
     print(f"\nchecks: " + "; ".join(f"{k} = {v}" for k, v in CHECKS.items()))
     return 0
