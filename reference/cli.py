@@ -36,6 +36,7 @@ COMMAND_MODULES = (
     "topomark.reference.cmd_algorithms",
     "topomark.proofs.cli_distinguish",
     "topomark.proofs.cli_search",
+    "topomark.proofs.cli_count",
 )
 
 

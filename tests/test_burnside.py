@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import itertools
+import json
 import math
 
 import pytest
@@ -71,3 +72,29 @@ def test_burnside_equals_enumeration(max_vertices, max_degree):
 def test_bad_input(args):
     with pytest.raises(InvalidInput):
         burnside.count_by_size(*args)
+
+
+# -- topomark census-count -----------------------------------------------------------------
+def test_cli_prints_both_counts(capsys):
+    from topomark.reference.cli import main
+    assert main(["census-count", "--max-vertices", "6", "--max-degree", "3", "--enumerate", "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert [(r["n"], r["graphs"], r["worlds"], r["enumerated"]) for r in data["rows"]] == \
+        [(2, 1, 1, 1), (3, 2, 2, 2), (4, 6, 9, 9), (5, 10, 22, 22), (6, 29, 95, 95)]
+    assert main(["census-count", "--max-vertices", "5", "--max-degree", "4", "--min-vertices", "5"]) == 0
+    assert capsys.readouterr().out.splitlines()[-2].split() == ["5", "21", "275"]
+
+
+@pytest.mark.parametrize("argv", [
+    ["--max-vertices", "1", "--max-degree", "3"],
+    ["--max-vertices", "13", "--max-degree", "3"],
+    ["--max-vertices", "11", "--max-degree", "3", "--enumerate"],
+    ["--max-vertices", "5", "--max-degree", "0"],
+    ["--max-vertices", "5", "--max-degree", "3", "--min-vertices", "6"],
+    ["--max-vertices", "five", "--max-degree", "3"],
+    ["--max-degree", "3"],
+])
+def test_cli_rejects_bad_options(argv, capsys):
+    from topomark.reference.cli import main
+    assert main(["census-count", *argv]) == 2
+    assert capsys.readouterr().err.startswith("topomark: error:")

@@ -1,0 +1,95 @@
+"""``topomark census-count``: how many embedded worlds the census will meet, per n (thesis §3.1.1, §3.1.3).
+
+``topomark census-count --max-vertices N --max-degree D`` prints, for each n
+from 2 (or ``--min-vertices``) to N, the number of connected graphs with max
+degree ≤ D (:mod:`topomark.proofs.graphs`) and of embedded worlds on them up
+to extended isomorphism (mirror images distinct, no start, no markers), counted
+by Burnside's lemma (:mod:`topomark.proofs.burnside`) without listing a world —
+so it predicts the size of a census before the census runs.  ``--enumerate``
+also lists the worlds (:mod:`topomark.proofs.enumerate`) and checks that both
+counts agree (exit 3 if they do not: a bug in topomark).
+
+Exit 0 on success, 2 on bad input (one message), 3 if the two counts differ.
+
+Examples
+--------
+``topomark census-count --max-vertices 8 --max-degree 4`` ends with
+``8  1929  7149942``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+
+from topomark.proofs import burnside, enumerate as enumeration, graphs
+from topomark.spec.errors import InvalidInput, TopomarkFault
+from topomark.spec.world import MAX_DEGREE
+
+__all__ = ["register", "count_command", "validate_args"]
+
+
+def register(sub) -> None:
+    p = sub.add_parser(
+        "census-count", help="how many embedded worlds there are per size (Burnside's lemma)",
+        description="Count connected graphs of max degree D and the embedded worlds on them (up to extended "
+                    "isomorphism) for every size up to N, by Burnside's lemma over each graph's automorphism "
+                    "group, without enumerating the worlds. Exit 0 on success, 2 on bad input, 3 if "
+                    "--enumerate finds a different count.")
+    p.add_argument("--max-vertices", type=int, required=True, metavar="N",
+                   help=f"largest world size, 2..{graphs.MAX_VERTICES} (time grows fast with D: n = 9 at D = 4 "
+                        "takes about a minute)")
+    p.add_argument("--max-degree", type=int, required=True, metavar="D", help="largest vertex degree, >= 1")
+    p.add_argument("--min-vertices", type=int, default=2, metavar="M", help="smallest world size (default 2)")
+    p.add_argument("--enumerate", action="store_true",
+                   help=f"also list the worlds and check the counts agree (N <= {enumeration.MAX_VERTICES}; slow)")
+    p.add_argument("--json", action="store_true", help="machine-readable output")
+    p.set_defaults(handler=count_command)
+
+
+def validate_args(args: argparse.Namespace) -> None:
+    """Precise messages for options argparse cannot check."""
+    if args.max_vertices < 2:
+        raise InvalidInput(f"--max-vertices must be at least 2 (a world has two or more vertices), "
+                           f"not {args.max_vertices}")
+    if args.max_vertices > graphs.MAX_VERTICES:
+        raise InvalidInput(f"--max-vertices {args.max_vertices} is too large: graphs are generated for at most "
+                           f"{graphs.MAX_VERTICES} vertices")
+    if args.enumerate and args.max_vertices > enumeration.MAX_VERTICES:
+        raise InvalidInput(f"--enumerate lists worlds of at most {enumeration.MAX_VERTICES} vertices, "
+                           f"not {args.max_vertices}")
+    if not 2 <= args.min_vertices <= args.max_vertices:
+        raise InvalidInput(f"--min-vertices must be between 2 and --max-vertices ({args.max_vertices}), "
+                           f"not {args.min_vertices}")
+    if args.max_degree < 1:
+        raise InvalidInput(f"--max-degree must be at least 1, not {args.max_degree}")
+    if args.max_degree > MAX_DEGREE:
+        raise InvalidInput(f"--max-degree {args.max_degree} is larger than any world's degree can be "
+                           f"(at most {MAX_DEGREE:,}, topomark.spec.world.MAX_DEGREE)")
+
+
+def count_command(args: argparse.Namespace) -> int:
+    validate_args(args)
+    degree = min(args.max_degree, args.max_vertices - 1)  # a larger bound changes nothing
+    worlds = burnside.count_by_size(args.max_vertices, degree, args.min_vertices)
+    rows = [{"n": n, "graphs": graphs.count(n, degree), "worlds": w} for n, w in worlds.items()]
+    if args.enumerate:
+        listed = enumeration.count_by_size(args.max_vertices, degree, args.min_vertices)
+        if listed != worlds:
+            raise TopomarkFault(f"Burnside's lemma counts {worlds} embedded worlds but the enumeration "
+                                f"lists {listed}")
+        for row in rows:
+            row["enumerated"] = listed[row["n"]]
+    total = sum(row["worlds"] for row in rows)
+    if args.json:
+        print(json.dumps({"max_degree": args.max_degree, "rows": rows, "total_worlds": total,
+                          "method": "burnside" + ("+enumeration" if args.enumerate else "")},
+                         indent=1, sort_keys=True))
+        return 0
+    lines = [f"embedded worlds up to extended isomorphism (mirror images distinct), max degree <= {args.max_degree}"
+             + (", checked by enumeration" if args.enumerate else ""),
+             f"{'n':>3}  {'graphs':>8}  {'worlds':>12}"]
+    lines += [f"{row['n']:>3}  {row['graphs']:>8}  {row['worlds']:>12}" for row in rows]
+    lines.append(f"total {total} worlds")
+    print("\n".join(lines))
+    return 0
