@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import doctest
 import itertools
 import json
 import math
@@ -98,3 +99,7 @@ def test_cli_rejects_bad_options(argv, capsys):
     from topomark.reference.cli import main
     assert main(["census-count", *argv]) == 2
     assert capsys.readouterr().err.startswith("topomark: error:")
+
+
+def test_docstring_examples():
+    assert doctest.testmod(burnside).failed == 0
