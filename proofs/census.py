@@ -25,6 +25,11 @@ sizes can be indistinguishable (Figure 3.3), so classes span all sizes ≤ N;
 the table gives, per n, counts for worlds of exactly n vertices and
 cumulative counts over all worlds of ≤ n vertices.
 
+:func:`census` is the in-memory census (every digest in one dict, merged
+serially): simple, and the reference the sharded census
+(:func:`topomark.proofs.census_run.sharded_census`, used by ``topomark
+census``) is compared with in ``tests/test_census_shards.py``.
+
 Examples
 --------
 >>> r = census("none", 4, 3)

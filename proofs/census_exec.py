@@ -24,6 +24,7 @@ Examples
 from __future__ import annotations
 
 import contextlib
+import logging
 import time
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from typing import Any, Callable, Iterator
@@ -78,8 +79,9 @@ def _distributed():
 def _dask(jobs: int, scheduler: str) -> Iterator[Executor]:
     distributed = _distributed()
     if scheduler == "local":
-        with distributed.LocalCluster(n_workers=jobs, threads_per_worker=1, dashboard_address=None) as cluster, \
-                distributed.Client(cluster) as client:
+        with distributed.LocalCluster(n_workers=jobs, threads_per_worker=1, dashboard_address=None,
+                                      silence_logs=logging.CRITICAL) as cluster, \
+                distributed.Client(cluster) as client:  # silenced: workers log a closed scheduler on shutdown
             yield _Dask(client)
         return
     try:
