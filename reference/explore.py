@@ -73,12 +73,16 @@ class Outcome:
     claimed: str = "correct"
     reason: str | None = None
     kit: str = ""
+    walk_steps: int | None = None  # a lighthouse algorithm: the steps of the walk that found v0 (§5.1, §6.1)
+    lighthouse_at: str | None = None  # a lighthouse algorithm: the world vertex v0 is (the truth; the robot never knows)
 
     def summary(self) -> dict[str, Any]:
         out = {k: getattr(self, k) for k in (
             "n", "m", "cost", "verified", "iterations", "loop_iterations", "nonloop_iterations", "hypotheses",
             "hypotheses_rejected", "hypotheses_confirmed", "checks", "by_purpose", "upper_bound", "lighthouse",
             "marker_operations", "outcome", "claimed", "reason")}
+        if self.lighthouse is not None:
+            out.update(walk_steps=self.walk_steps, lighthouse_at=self.lighthouse_at)
         out["cost_per_m"] = round(self.cost / self.m, 3)
         if self.violation is not None:
             out["violation"] = self.violation.to_json()
@@ -185,8 +189,12 @@ def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: 
             progress(_explored(explorer), world.m, sim.cost)
 
     explorer = spec.factory(sim.robot(), policies, observer, run.light if spec.uses_lighthouse else run.options)
-    violation, stopped = _drive(explorer, checker)
+    started: list = []  # the robot's true state once the explorer has started (v0, for a lighthouse algorithm)
+    violation, stopped = _drive(explorer, checker, lambda: started.append(sim.state))
     outcome = _outcome(world, sim, explorer, checker, violation, trace, tally, spec, stopped)
+    if spec.uses_lighthouse:
+        outcome.walk_steps = getattr(getattr(explorer, "beacon", None), "walk_steps", 0)
+        outcome.lighthouse_at = started[0][0] if started else None
     if emit:
         emit({"event": "end", "cost": sim.cost, "verified": outcome.verified,
               "violation": violation.to_json() if violation else None})
@@ -236,11 +244,13 @@ def _explored(explorer) -> int:
     return S.explored_edges() if S is not None else 0
 
 
-def _drive(explorer, checker: Checker | None) -> tuple[Any, AlgorithmStopped | OutOfMarkers | None]:
+def _drive(explorer, checker: Checker | None, on_started: Callable[[], None] = lambda: None
+           ) -> tuple[Any, AlgorithmStopped | OutOfMarkers | None]:
     """The explorer contract: ``start``, then ``step`` until ``done``; the checker after the start and at the
     end.  Returns the first violation (or None) and how the algorithm stopped early (or None)."""
     try:
         explorer.start()
+        on_started()
         if checker is not None:
             checker.after_start(explorer)
         while not explorer.done():

@@ -167,3 +167,12 @@ def test_the_cli_prints_both_outcomes_and_refuses_a_lighthouse_for_no_algorithm(
                          capture_output=True, text=True, timeout=120)
     data = json.loads(run.stdout)
     assert run.returncode == 0 and (data["outcome"], data["claimed"]) == ("correct", "correct")
+
+
+def test_a_searched_lighthouse_reports_its_walk_and_where_v0_is_in_the_world():
+    out = explore(generators.lattice_hole(4, 4, 0.1, "vertices", 2), "basic", lighthouse="undirected-vertex")
+    data = out.summary()
+    assert data["outcome"] == "correct" and isinstance(data["walk_steps"], int)
+    assert data["lighthouse_at"] in generators.lattice_hole(4, 4, 0.1, "vertices", 2).vertices
+    stuck = explore(generators.cycle(4), "basic", lighthouse="undirected-vertex").summary()
+    assert (stuck["outcome"], stuck["lighthouse_at"]) == ("failed", None) and "walk" in stuck["reason"]
