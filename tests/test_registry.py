@@ -20,8 +20,10 @@ REQUIRED = {"name", "thesis", "kit", "bound", "markers", "deterministic", "optio
 def test_json_lists_every_explorer_with_the_required_fields(capsys):
     assert main(["algorithms", "--json"]) == 0
     listed = json.loads(capsys.readouterr().out)
-    assert [a["name"] for a in listed] == list(algorithms.ALGORITHMS)
+    assert [a["name"] for a in listed] == list(REGISTRY)
+    assert set(algorithms.ALGORITHMS) <= set(REGISTRY)  # Algorithm 3.1's family, and every other registered one
     for entry in listed:
+        assert ("lighthouses" in entry) == (entry["name"] in algorithms.ALGORITHMS)
         assert REQUIRED <= set(entry), entry["name"]
         assert entry["thesis"].startswith("§")
         assert set(entry["checks"]) <= set(CHECKS)
