@@ -3,7 +3,13 @@
 :mod:`topomark.proofs.enumerate` lists one world per extended-isomorphism
 class: per connected graph G (no start, no markers, mirror images distinct),
 one rotation system per orbit of Aut(G) acting on G's ``∏ (deg v - 1)!``
-rotation systems by ``(σR)_{σ(v)} = σ ∘ R_v ∘ σ⁻¹``.  This module counts
+rotation systems by ``(σR)_{σ(v)} = σ ∘ R_v ∘ σ⁻¹``.  What is counted
+(thesis L415, L449): two worlds are the same when extended-isomorphic, a graph
+isomorphism that keeps at every vertex the order of the exits "labelled
+starting from different reference edges" under "the same pre-defined
+enumeration rule" — so a rotation, never a reversal: a mirror image is another
+world unless the two are isomorphic.  No start and no markers: the census
+adds those per world.  This module counts
 the same orbits a second, independent way (its graphs and automorphism groups
 come from :mod:`topomark.proofs.graphs`, not from the atlas or networkx's
 matcher):
