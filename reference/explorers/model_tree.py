@@ -186,10 +186,10 @@ class ModelTreeExplorer:
         self._apply_cues_after(record)
         self.peak_models = max(self.peak_models, len(self.live))
         record.live, record.completed = len(self.live), self._completed_count()
-        self._terminate(number)
         self.iterations.append(record)
-        if self.observer is not None:
+        if self.observer is not None:  # the models check sees this step's models before any stop
             self.observer(self, record)
+        self._terminate(number)
         return record
 
     # -- lines 1-2: TM -----------------------------------------------------------------
