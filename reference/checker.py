@@ -91,7 +91,7 @@ class Checker:
     def after_start(self, explorer) -> None:
         """The lighthouse is established: the world now carries its markers; anchor φ at the believed pose."""
         self.world = self.sim.world
-        self.markers = self.sim.world.markers
+        self.markers = _marks(self.sim.world)
         self.anchor = (explorer.position, self.sim.state)
         if self.checks & {"pose", "I-1", "I-2"}:
             self.check_state(explorer, 0)
@@ -108,8 +108,9 @@ class Checker:
                 "bound function", "t = |E_G| - |E_S|", f"0 <= t < {self.t_prev}", str(t)))
             self.t_prev = t
         if "marker" in self.checks:  # nothing dropped, moved or picked up after the lighthouse
-            self._ok(n, None if self.sim.world.markers == self.markers else Violation(
-                "immovable marker", "world markers", str(self.markers), str(self.sim.world.markers)))
+            now = _marks(self.sim.world)
+            self._ok(n, None if now == self.markers else Violation(
+                "immovable marker", "world markers and thread", str(self.markers), str(now)))
         if self.checks & {"pose", "I-1", "I-2"}:
             self.check_state(explorer, n)
         self.check_kit_use(explorer, n)
@@ -185,3 +186,8 @@ class Checker:
         for kind, want in (("non-loop", world.n - 1), ("loop", world.m - world.n + 1)):
             self._ok(n, None if kinds.count(kind) == want else Violation(
                 "iteration count", f"{kind} iterations", str(want), str(kinds.count(kind))))
+
+
+def _marks(world) -> tuple:
+    """What the ``marker`` check keeps still: the world's markers and its thread (§6.3), if any."""
+    return world.markers, getattr(world, "thread", None)

@@ -93,9 +93,10 @@ def prepare_world(world: World, lighthouse: Lighthouse = LIGHTHOUSES["directiona
                   algorithm: str = "basic") -> tuple[World, tuple[str, int]]:
     """The world without markers and the start state, checked against the lighthouse (§3.3, §6.1, §6.2).
 
-    A world file may already carry the markers the robot would drop at the
-    start (the lighthouse's, where the robot drops them); any other marker,
-    or a part of them, is bad input for this algorithm.
+    A world file may already carry the markers (and the thread) the robot
+    would drop at the start (the lighthouse's, where the robot drops them);
+    any other marker or thread, or a part of them, is bad input for this
+    algorithm.
     """
     state = world.start_state()
     v0, facing = state
@@ -103,10 +104,17 @@ def prepare_world(world: World, lighthouse: Lighthouse = LIGHTHOUSES["directiona
     if bare.degree(v0) < lighthouse.min_degree:
         raise InvalidInput(f"the {lighthouse.name} lighthouse needs a start vertex of degree >= "
                            f"{lighthouse.min_degree}; the start vertex {v0!r} has degree {bare.degree(v0)}")
-    if world.markers:
+    thread = getattr(world, "thread", None)
+    if world.markers or thread is not None:
         layer = MarkerLayer(bare)
         for place, op in lighthouse.placed_ops(bare, state):  # where the robot does each (Figure 3.21(b) moves)
             apply_op(layer, place, op)
+        if thread is not None and getattr(layer.world(), "thread", None) != thread:
+            raise InvalidInput(f"the {algorithm} algorithm with the {lighthouse.name} lighthouse cannot use the "
+                               f"thread in the world file: only {lighthouse.drops}, at the start vertex {v0!r}, "
+                               f"may be there")
+        if not world.markers:
+            return bare, state
         expected = {_place(m): m for m in layer.markers()}
         for marker in world.markers:
             _expect_marker(marker, expected.get(_place(marker)), world, lighthouse, algorithm, v0, facing)
@@ -231,9 +239,10 @@ def _setup(world: World, spec: AlgorithmSpec, lighthouse: "str | Lighthouse | No
         name = lighthouse if isinstance(lighthouse, str) else lighthouse.name
         raise InvalidInput(f"the algorithm {spec.name} takes no lighthouse (given {name!r}): it carries its own kit, "
                            f"{spec.kit.describe()}")
-    if world.markers:
+    if world.markers or getattr(world, "thread", None) is not None:
+        what = f"{len(world.markers)} marker(s)" if world.markers else "a thread"
         raise InvalidInput(f"the algorithm {spec.name} drops its own markers: the world file must carry none "
-                           f"(it carries {len(world.markers)})")
+                           f"(it carries {what})")
     kit = spec.kit_for(world.n, world.m, opts)
     return _Run(World(world.rotation, (), world.start), world.start_state(), kit, None, opts)
 

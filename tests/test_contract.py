@@ -176,3 +176,19 @@ def test_a_searched_lighthouse_reports_its_walk_and_where_v0_is_in_the_world():
     assert data["lighthouse_at"] in generators.lattice_hole(4, 4, 0.1, "vertices", 2).vertices
     stuck = explore(generators.cycle(4), "basic", lighthouse="undirected-vertex").summary()
     assert (stuck["outcome"], stuck["lighthouse_at"]) == ("failed", None) and "walk" in stuck["reason"]
+
+
+def test_a_thread_in_the_world_file_must_be_the_lighthouses_own():
+    from topomark.spec.thread import Thread, ThreadedWorld
+    base = generators.lattice(3, 3)
+    v0, facing = base.start_state()
+    own = ThreadedWorld(base.rotation, (), base.start, Thread((v0,), base.neighbour(v0, facing), True, ()))
+    assert explore(own, "basic", lighthouse="thread").verified  # the thread the robot ties there: accepted
+    other = ThreadedWorld(base.rotation, (), base.start,
+                          Thread((v0,), base.neighbour(v0, (facing + 1) % base.degree(v0)), True, ()))
+    with pytest.raises(InvalidInput, match="cannot use the thread in the world file"):
+        explore(other, "basic", lighthouse="thread")
+    with pytest.raises(InvalidInput, match="directional-vertex lighthouse cannot use the thread"):
+        explore(own, "basic")
+    with pytest.raises(InvalidInput, match="must carry none \\(it carries a thread\\)"):
+        explore(own, "dudek")
