@@ -134,7 +134,7 @@ def test_provider_is_standalone():
     assert mods <= {"json", "sys"}, mods
 
 
-@pytest.mark.parametrize("name", ["directional-edge", "vertex-and-edge"])
+@pytest.mark.parametrize("name", ["directional-edge", "vertex-and-edge", "thread"])
 def test_a_drive_trace_of_any_lighthouse_replays(tmp_path, name, capsys):
     """drive records trace@2 for a lighthouse other than Algorithm 3.1's, and replay verifies it."""
     from topomark.reference.explorers.lighthouses import LIGHTHOUSES

@@ -16,7 +16,9 @@ neighbours clockwise (a simple graph: no loops or parallel edges here); the
 robot starts at ``start.at`` facing ``start.facing`` (default: the first
 vertex, facing its exit 0).  With ``--protocol 2`` the hello offers ``--kit``
 (default ``{"directional-vertex": 1}``) and the explorer may drop and pick up
-vertex and edge markers as that kit allows.
+vertex and edge markers as that kit allows, and use a thread of length ε
+(``{"thread": 0}``: tie, leave, take, untie — enough for the ``thread``
+lighthouse; a longer thread is refused with a message saying so).
 """
 import json
 import sys
@@ -39,6 +41,8 @@ class World:
         self.held = {"vertex": kit.get(self.word() + "-vertex", 0), "edge": kit.get(self.word() + "-edge", 0)}
         self.vmark = {}  # vertex -> [count, absolute exit pointed at or None]
         self.emark = {}  # frozenset of the edge's two darts -> [count, head vertex or None]
+        self.tied = None  # a thread of length ε (the only one this example knows): [vertex, absolute exit or None]
+        self.end = "held"  # where its free end is: "held", or the vertex it was left at
 
     def word(self):
         return "directional" if self.directional else "undirected"
@@ -63,12 +67,19 @@ class World:
             if em:
                 end = "" if em[1] is None else ("-H" if em[1] == self.here else "-T")
                 items.append("E" + (str(em[0]) if em[0] > 1 else "") + "-%d" % p + end)
-        return "[%d,%s,%s]" % (d, vpart, ",".join(items) or "A")
+        thread = []
+        if self.tied and self.tied[0] == self.here:
+            thread.append("T" + ("" if self.tied[1] is None else "-%d" % ((self.tied[1] - self.entry) % d)))
+        if self.end == self.here:
+            thread.append("F")
+        return "[%s]" % ",".join([str(d), vpart, ",".join(items) or "A"] + thread)
 
     def move(self, motion):
         d = self.degree()
         if not 0 <= motion < d:
             return "motion %s does not exist at degree %d" % (motion, d)
+        if self.tied and self.end == "held":
+            return "the thread would run out: the kit's thread has length 0 (ε)"
         there = self.rot[self.here][(self.entry + motion) % d]
         self.here, self.entry = there, self.rot[there].index(self.here)
         return None
@@ -103,6 +114,25 @@ class World:
         return None
 
 
+    def thread(self, msg):
+        """An @2 thread operation, for a thread of length ε (l = 0, §6.3 L2028) only; returns why refused, or None."""
+        op, d = msg.get("op"), self.degree()
+        if self.kit.get("thread") != 0:
+            return "this example provider knows only a thread of length ε (kit {\"thread\": 0})"
+        if op == "tie" and not self.tied and self.end == "held":
+            direction = msg.get("direction")
+            self.tied = [self.here, None if direction is None else (self.entry + direction) % d]
+        elif op == "leave" and self.end == "held":
+            self.end = self.here
+        elif op == "take" and self.end == self.here:
+            self.end = "held"
+        elif op == "untie" and self.tied and self.tied[0] == self.here and self.end == "held":
+            self.tied = None
+        else:
+            return "thread operation %s is not possible here" % json.dumps(msg)
+        return None
+
+
 def main(argv):
     path, options = argv[0], dict(zip(argv[1::2], argv[2::2]))
     version = int(options.get("--protocol", "1"))
@@ -121,6 +151,8 @@ def main(argv):
                    world.operate({"type": "drop", "kind": "vertex", "direction": msg["direction"]}))
         elif msg["type"] in ("drop", "pick_up") and version == 2:
             why = world.operate(msg)
+        elif msg["type"] == "thread" and version == 2:
+            why = world.thread(msg)
         elif msg["type"] == "map":
             send({"type": "bye"})
             return 0
