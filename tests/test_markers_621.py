@@ -11,7 +11,9 @@ import json
 from dataclasses import replace
 
 import pytest
+from hypothesis import given, settings
 
+from families import family_worlds
 from topomark.reference import generators as g
 from topomark.reference.cli import main
 from topomark.reference.explore import explore
@@ -56,6 +58,15 @@ def test_each_algorithm_maps_each_world_within_its_marker_and_cost_bounds(name, 
     assert (out.nonloop_iterations, out.loop_iterations) == (w.n - 1, w.m - w.n + 1)
     assert out.by_purpose["new"] == w.m and out.by_purpose["retrace"] == w.m - w.n + 1  # back to v_k first
     assert w.m <= out.cost <= spec.bound_for(w.n, w.m)
+
+
+@settings(max_examples=20, deadline=None)
+@given(family_worlds(small=True))
+def test_every_family_world_is_mapped_within_each_marker_bound(w):
+    for name in ALGORITHMS:
+        out = explore(w, name, record=False)
+        assert out.outcome == "correct", (name, out.violation, out.reason)
+        assert used(out) <= REGISTRY[name].marker_bound_fn(w.n, w.m)
 
 
 @pytest.mark.parametrize("name", ALGORITHMS)
