@@ -49,7 +49,8 @@ Decisions where the thesis is silent:
 * **Which edge.** "A closest edge" (line 4) is, with the robot at the
   thread's end, an unexplored exit of the current vertex (distance 0); the
   lowest-numbered one.
-* The robot never needs to be told n or m.
+* The robot never needs to be told n or m; the ``edge`` policy does not apply (closest-first is the
+  algorithm, L2046).
 
 Cost purposes: ``new`` (over e), ``retrace`` (back over e, every rewind),
 ``validation`` (the searches), ``other`` (back to v_u for the free end),
@@ -145,6 +146,17 @@ class ThreadWalker:
     def tie(self) -> None:
         self.robot.operate(TIE)
         self.tied, self.laid, self.held = self.position[0], [], True
+
+    def leave_and_return(self, it: ThreadIteration) -> None:
+        """Leave the free end at v_u and go back over e to v_k (not holding it, the move lays nothing)."""
+        self.robot.operate(LEAVE)
+        self.held = False
+        self.robot.move(0, "retrace")
+        self.position = it.edge
+
+    def take(self) -> None:
+        self.robot.operate(TAKE)
+        self.held = True
 
     def untie(self) -> None:
         self.robot.operate(UNTIE)
@@ -260,10 +272,7 @@ class ThreadExplorer(ThreadWalker):
             self.rewind()
             return self.loop_augment(it, hyps[0])
         it.how = "thread search"
-        self.robot.operate(LEAVE)
-        self.held = False
-        self.robot.move(0, "retrace")
-        self.position = (vk, i)
+        self.leave_and_return(it)
         found = None
         for d in reversed(self.laid[:-1]):  # line 7: back along the thread from v_k toward v_s
             self.walk([self.S.arc(d)], "validation")
@@ -276,8 +285,7 @@ class ThreadExplorer(ThreadWalker):
             raise CheckFailure(Violation("thread search", f"iteration {it.number}", "v_u on the thread",
                                          "no vertex with one more thread-marked edge",
                                          "the explorer's own map is inconsistent"))
-        self.robot.operate(TAKE)
-        self.held = True
+        self.take()
         self.rewind()
         self.loop_augment(it, found)
 
@@ -297,29 +305,21 @@ class ThreadExplorer(ThreadWalker):
             it.how = "new"
             return self.non_loop_augment(it, sig.degree)
         it.how = "off-thread search"
-        self.robot.operate(LEAVE)
-        self.held = False
-        self.robot.move(0, "retrace")
-        self.position = (vk, i)
+        self.leave_and_return(it)
 
         def free_end(w: int, entry: int, seen: Signature) -> bool:
             return seen.thread is not None and seen.thread.end
 
-        found = None
         for target in it.candidates:
             found = self.walk_to(target, "validation", free_end)
-            if found is not None:
-                break
-        self.robot.operate(TAKE) if found is not None else None
-        if found is not None:
-            w, entry, seen = found
-            self.held = True
-            self.rewind()
-            return self.loop_augment(it, (w, next(iter(_sensed_edges(seen, entry)))))
+            if found is not None:  # v_k' = v_u: the thread's one edge there is e'
+                w, entry, seen = found
+                self.take()
+                self.rewind()
+                return self.loop_augment(it, (w, next(iter(_sensed_edges(seen, entry)))))
         self.walk_to(vk, "other")  # v_u is new: back to it for the free end
         self.robot.move((i - self.position[1]) % self.S.degree(vk), "other")
-        self.robot.operate(TAKE)
-        self.held = True
+        self.take()
         self.non_loop_augment(it, sig.degree)
 
     def settle(self) -> None:
