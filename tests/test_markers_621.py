@@ -158,6 +158,12 @@ def test_the_cli_explores_with_each_and_reports_running_out(name, capsys):
     assert json.loads(capsys.readouterr().out)["outcome"] == "failed"
 
 
+def test_a_marker_count_below_one_is_bad_input(capsys):
+    for bad in ("0", "-3", "two"):
+        assert main(["explore", "cycle:n=4", "--algorithm", "case-1a", "--markers", bad]) == 2
+        assert "--markers must be an integer >= 1" in capsys.readouterr().err
+
+
 @pytest.mark.parametrize("module", [edge_footprints, closest_first, markers_621])
 def test_docstring_examples(module):
     assert doctest.testmod(module).failed == 0
