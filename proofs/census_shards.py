@@ -145,10 +145,14 @@ def summary(recs: np.ndarray, min_n: int, max_n: int, all_pairs: bool = False) -
         "languages": [int(np.count_nonzero(masks >> np.uint32(n) & 1)) for n in ns],
         "languages_upto": [int(np.count_nonzero(masks & np.uint32((1 << (n + 1)) - 1))) for n in ns],
         "ambiguous_upto": [int(np.count_nonzero(second_n <= n)) for n in ns]}
-    pairs = [[_member(recs[a]), _member(recs[b])] for a, b in zip(starts[amb], second[amb])]
-    out["pair"] = min(pairs, key=_pair_key) if pairs else None
+    firsts, seconds = recs[starts[amb]], recs[second[amb]]
+    out["pair"] = None
+    if len(firsts):  # the least by _pair_key; np.lexsort's last key is the primary one
+        keys = [seconds[f] for f in ("k", "ri", "gi")] + [firsts[f] for f in ("k", "ri", "gi", "m", "n")]
+        best = np.lexsort(keys + [seconds["m"], seconds["n"]])[0]
+        out["pair"] = [_member(firsts[best]), _member(seconds[best])]
     if all_pairs:
-        out["pairs"] = pairs
+        out["pairs"] = [[_member(a), _member(b)] for a, b in zip(firsts, seconds)]
     return out
 
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 import json
 import time
 
+import numpy as np
 import pytest
 from hypothesis import given, settings
 
@@ -20,7 +21,7 @@ from topomark.proofs.census_language import start_digests
 from topomark.proofs.census_map import (_graphs, _iso_key, _layouts, _marker_key, marked, rotation_count,
                                         unit_worlds, world_at)
 from topomark.proofs.census_run import sharded_census
-from topomark.proofs.census_shards import done_path, reduce_path
+from topomark.proofs.census_shards import RECORD, _pair_key, combine, done_path, reduce_path, summary
 from topomark.proofs.enumerate import _image, _orbit_representatives, _world, canonical_form
 from topomark.reference.cli import main
 from topomark.reference.strategies import worlds
@@ -88,6 +89,20 @@ def test_marked_and_iso_keys_agree_with_spec(class_name):
                     iso = _iso_key((n, gi, ri), _marker_key(markers), autos)
                     assert keys.setdefault(iso, canonical_form(slow)) == canonical_form(slow)
                 assert len(set(keys.values())) == len(keys)
+
+
+def test_shard_summary_picks_the_least_pair_and_combine_is_associative():
+    rng = np.random.default_rng(7)
+    recs = np.zeros(3000, RECORD)
+    for f in ("d0", "d1", "i0", "i1"):
+        recs[f] = rng.integers(0, 40, len(recs))  # few digests and iso keys: many ambiguous classes
+    for f, hi in (("n", 8), ("m", 12), ("gi", 4), ("ri", 9), ("k", 50)):
+        recs[f] = rng.integers(2 if f == "n" else 0, hi, len(recs))
+    recs["mask"] = 1 << recs["n"].astype(np.uint32)
+    whole = summary(recs, 2, 7, all_pairs=True)
+    assert whole["pairs"] and whole["pair"] == min(whole["pairs"], key=_pair_key)
+    halves = combine(np.concatenate([combine(recs[:1700]), combine(recs[1700:])]))
+    assert summary(halves, 2, 7, all_pairs=True) == whole
 
 
 # -- sharded = in memory ----------------------------------------------------------------
