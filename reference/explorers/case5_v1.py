@@ -1,0 +1,110 @@
+"""§6.2.1 Case 5, Version-1 (Algorithm 6.4): k > 3 undirected V-markers, their number not known relative to the
+world — Case 3a's unique counts while they last (phase I), then Algorithm 3.1's hypotheses with the closest
+marked place as lighthouse (phase II) (thesis L1708–L1724, listing L1728–L1768).
+
+* **Phase I** (lines 1–15): the i-th place discovered gets i markers, so a
+  marked place names itself; a marked v_u is known by its count and its
+  back-link is found by probing its other edges until a known neighbour over an
+  explored edge is sensed (Algorithm 6.2 lines 19–35, reused from
+  :class:`~topomark.reference.explorers.counted_markers.VertexCounts`).
+* **Phase II** (lines 16–35): the first unmarked place the robot cannot mark
+  ("does not have sufficient markers to uniquely mark the vertex", L1716) ends
+  phase I.  A marked v_u is still validated by probing (L1720 "as in phase-I");
+  an unmarked v_u is tested against every unexplored dart at an *unmarked*
+  known end of its degree (:mod:`.case5_phase2`), each hypothesis driving the
+  robot from v_k' to the marked place v_l closest to v_k' and on to a marked
+  neighbour v_n of v_l (lines 21–24).  Reaching v_n by the expected exit of v_l
+  fixes the entry edge at v_l (no multi-edges), so the embedded path is unique
+  (L1722).
+
+Decisions, with the thesis lines (each tested in ``tests/test_markers_case5.py``):
+
+* **Algorithm 6.4's counter** (guide §10 #15): line 1 drops one marker at v0,
+  line 3 sets i ← 1 and line 15 increments only after line 13's drop, so the
+  first place discovered would get one marker too — the same label as v0,
+  which contradicts "the unique marker count identifies v_u" (L1716).  We
+  follow Algorithm 6.2 (Case 3a, which Version-1 says it combines, L1716): v0
+  gets 1 and the j-th new place j + 1 (i ← 2 at line 3).  The literal counter
+  maps the triangle wrongly (the test's smallest world).
+* **Where phase I ends.**  Line 12 "if the robot has at least i markers" is the
+  robot trying the drop (the kernel's robot counts nothing; the simulator
+  refuses a drop the kit cannot cover before anything changes,
+  :mod:`.marker_walk`).  At that first refusal every known place is marked, so
+  line 17's H is empty and v_u joins S unmarked at once (line 35) — no motion.
+  Later unmarked places are not offered a drop again (line 12 with the same i
+  would refuse again: i only grows on a drop).
+* **Probing in phase II** (line 8, guide's note): a probe that reaches an
+  *unmarked* neighbour learns nothing (it may be new or a phase-II place), so
+  the robot retraces and tries the next edge; the probe ends at the first
+  *marked* neighbour over an explored edge.  One exists: every marked place
+  other than v0 has its discoverer (marked) as a neighbour over an explored
+  edge, and v0 has the second place (marked whenever K ≥ 3).
+* **Lighthouse and neighbour** (lines 21–22): v_l is the marked place nearest
+  v_k' in S (ties: the lower map vertex), reached by a shortest path of S (its
+  inner places are unmarked, else one of them would be nearer); v_n is v_l's
+  marked neighbour by the lowest explored exit — never on that path.
+* "K > 3" (L1708) is the parameter's minimum; Version-1 itself would run from
+  K = 3 (v0 and the second place marked).
+
+Examples
+--------
+>>> VertexCountsThenLighthouse.name
+'case-5-v1'
+"""
+
+from __future__ import annotations
+
+from topomark.spec.errors import AlgorithmFailed
+from topomark.spec.mapstate import MapDart
+from topomark.spec.signature import Signature
+
+from ..policies import bfs
+from .case5_phase2 import PhaseTwo
+from .counted_markers import VertexCounts
+from .marker_walk import MarkerStep
+
+__all__ = ["VertexCountsThenLighthouse"]
+
+
+class VertexCountsThenLighthouse(PhaseTwo, VertexCounts):
+    """Algorithm 6.4: unique V-marker counts (phase I), then hypotheses with the nearest marked lighthouse."""
+
+    name = "case-5-v1"
+
+    def __init__(self, robot, policies=None, observer=None, options=None):
+        super().__init__(robot, policies, observer, options)
+        self.phase = 1
+        self.phase_two_from: int | None = None  # the iteration that ended phase I
+
+    def arrive(self, it: MarkerStep, sig: Signature) -> None:
+        if sig.vertex_count:  # lines 7-10: the count names v_u; its back-link by probing
+            place = self.vertex_of.get(sig.vertex_count)
+            if place is None or self.M.degree(place) != sig.degree:
+                raise AlgorithmFailed(f"iteration {it.number} senses {sig}, which no marked place of the map shows")
+            self.probe(it, place, sig.degree)
+        elif self.phase == 1:  # lines 11-15
+            u = self.non_loop(it, sig)
+            count = len(self.count_of) + 1
+            if self.try_drop(self.mark_op(count), it):
+                self.name_vertex(u, count)
+            else:  # line 16 at the first refusal: every known place is marked, H is empty, line 35
+                self.phase, self.phase_two_from = 2, it.number
+        else:  # lines 16-35
+            self.phase_two(it, sig)
+
+    def lighthouse_path(self, v: int) -> list[MapDart]:
+        """Lines 21–24: a shortest path of S from v_k' = ``v`` to the nearest marked v_l, then to v_n."""
+        dist, _, parent = bfs(self.M, v)
+        marked = [x for x in self.count_of if x in dist]
+        if not marked:
+            raise AlgorithmFailed(f"no marked place is connected to map vertex {v}")
+        light = min(marked, key=lambda x: (dist[x], x))
+        path, x = [], light
+        while x != v:
+            path.append(parent[x])
+            x = parent[x][0]
+        path.reverse()
+        for t, far in enumerate(self.M.links(light)):
+            if far is not None and far[0] in self.count_of:
+                return path + [(light, t)]
+        raise AlgorithmFailed(f"the lighthouse {light} has no marked neighbour over an explored edge")

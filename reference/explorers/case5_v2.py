@@ -1,0 +1,164 @@
+"""§6.2.1 Case 5, Version-2 (Algorithm 6.5): k > 3 undirected V-E-markers, their number not known relative to
+the world — Case 1b's footprint search with a double-marked lighthouse while markers last (phase I), then
+Algorithm 3.1's hypotheses with v0 as the directional lighthouse (phase II) (thesis L1726, L1770, listing
+L1776–L1817).
+
+* **Line 1**: two markers at v0 and two on one of its edges, e0 (the exit the
+  robot faces).  v0 is the only place with two markers and e0 the only edge with
+  two, so entering v0 tells the entry edge by where e0 lies relative to it.
+* **Phase I** (lines 5–13, 29–33): as Case 1b
+  (:class:`~topomark.reference.explorers.edge_footprints.VertexEdgeFootprints`):
+  an unmarked v_u is new and gets one marker; a one-marker v_u is known — one
+  marker on e, back to v_k, search S for the place with one more marked edge.
+* **Phase II** (lines 14–28, 34–37), once the pool is empty: a one- or
+  zero-marker v_u is tested against every unexplored dart whose known end shows
+  v_u's signature, each hypothesis driving the robot along a shortest path of S
+  to v0 (:mod:`.case5_phase2`); the two markers on e0 sensed at v0 fix the
+  entry, so the path is unique.
+
+Decisions, with the thesis lines (each tested in ``tests/test_markers_case5.py``):
+
+* **Line 23** (guide §10 #16): "case P and P^E do not match throughout →
+  confirm hypothesis" repeats line 21's condition; it must be "match
+  throughout" (Algorithm 6.4 line 29, Algorithm 3.1).  We confirm on a full
+  match; "exit for loop" is the inner while loop.  The literal line would
+  confirm a hypothesis that line 21 has already rejected, and never one that
+  matched — on the smallest world where phase II must close a loop (the
+  triangle with K = 4) it maps wrongly; ours maps it.
+* **Line 28** (guide): a one-marker v_u is always a phase-I place, so the
+  non-loop branch after rejecting every hypothesis cannot be reached in a
+  correct run; it is kept as Algorithm 3.1's non-loop augmentation (the checker
+  would report the wrong map if it ever were).
+* **The entry edge at v0** (L1770 "traversing edges in v0 looking for the edge
+  with two markers"): under §6.1's sensing the robot senses the markers on
+  v0's edges from v0 (``[d,V2,E2-p]``), so it reads the entry at once, no
+  traversal.
+* **Crossing e0 itself.**  e0 carries two markers and no loop marker is ever
+  added to it: following e0 from v0 to a known place, the place is the far end
+  of e0 (the only other place showing two markers on an edge), so loop
+  augmentation needs no drop and no search; from the far end to v0 line 5
+  applies.  (A third marker on e0 would break the search's "one more marked
+  edge", L1512.)
+* **The pool.**  The thesis's markers are one homogeneous pool (L1474); the
+  kernel's kit counts vertex and edge markers apart, so the kit holds K of
+  each and the robot keeps the pool of K itself (``options["markers"]``: the
+  robot knows what it carries, only not how it compares with the world,
+  L1710): "if the robot has one or more markers" (lines 9, 31) is K minus the
+  markers dropped.  With the default kit (``markers`` not given) the kit is
+  exactly the split phase I spends and the pool is unbounded.
+* **Signature, not only the count** (lines 15–16, 35–36 say "contains one
+  marker [no marker] and has the same degree"): H holds the darts whose known
+  end shows v_u's whole signature, loop-edge markers included — the signature
+  of §3.1.1/§6.1 the robot senses; the true e' always shows it.
+
+Examples
+--------
+>>> VertexEdgeThenLighthouse.name
+'case-5-v2'
+"""
+
+from __future__ import annotations
+
+from topomark.spec.errors import AlgorithmFailed
+from topomark.spec.kit import MarkerOp
+from topomark.spec.mapstate import MapDart
+from topomark.spec.signature import Signature
+
+from ..policies import bfs
+from .case5_phase2 import PhaseTwo
+from .edge_footprints import FootprintSearch, VertexEdgeFootprints
+from .marker_walk import MarkerStep
+
+__all__ = ["VertexEdgeThenLighthouse", "E0"]
+
+E0: MapDart = (0, 0)
+"""The double-marked edge e0, as v0's map exit: the exit the robot faces at the start."""
+
+
+class VertexEdgeThenLighthouse(PhaseTwo, VertexEdgeFootprints):
+    """Algorithm 6.5: Case 1b's search with a double-marked v0 and e0 (phase I), then hypotheses to v0."""
+
+    name = "case-5-v2"
+
+    def __init__(self, robot, policies=None, observer=None, options=None):
+        super().__init__(robot, policies, observer, options)
+        self.pool = self.options.get("markers")  # K, or None: the default kit, enough for phase I
+        self.phase_two_from: int | None = None  # the first iteration that found the pool empty
+
+    def left(self) -> int | None:
+        """Markers left in the pool (None: not counted, the default kit)."""
+        return None if self.pool is None else self.pool - self.dropped
+
+    def has_markers(self, it: MarkerStep) -> bool:
+        """Lines 9 and 31: "if the robot has one or more markers"; the first no ends phase I."""
+        if self.left() is None or self.left() > 0:
+            return True
+        if self.phase_two_from is None:
+            self.phase_two_from = it.number
+        return False
+
+    def begin(self) -> None:
+        """Line 1: two markers at v0, two on the edge it faces (e0)."""
+        self.drop(MarkerOp("vertex", count=2))
+        self.drop(MarkerOp("edge", exit=0, count=2))
+
+    def arrive(self, it: MarkerStep, sig: Signature) -> None:
+        it.candidates, it.found = [], None
+        if it.edge == E0:  # e0 from v0: its far end, if known, shows the other end of e0
+            far = self.far_end_of_e0()
+            if far is not None:
+                self.loop(it, far)
+                return
+        if sig.vertex_count == 2:  # lines 5-7: v0, entered at the exit e0 lies p before
+            p = next(p for p, count, _ in sig.edges if count == 2)
+            self.loop(it, (0, (0 - p) % sig.degree))
+        elif sig.vertex_count == 1:  # lines 8-28
+            if self.has_markers(it):
+                self.validate(it, sig)  # lines 10-13: the footprint search of Case 1
+            else:
+                self.phase_two(it, sig)
+        elif self.has_markers(it):  # lines 31-33
+            self.non_loop(it, sig)
+            self.drop(MarkerOp("vertex"), it)
+        else:  # lines 34-37
+            self.phase_two(it, sig)
+
+    def non_loop(self, it: MarkerStep, sig: Signature) -> int:
+        u = super().non_loop(it, sig)
+        self.show_e0(u)
+        return u
+
+    def join_new(self, it: MarkerStep, sig: Signature, heading: int) -> None:
+        super().join_new(it, sig, heading)
+        self.show_e0(self.position[0])
+
+    def show_e0(self, u: int) -> None:
+        """e0's two markers lay there from the start (line 1), so the checker's S shows them at e0's far end as
+        soon as that place joins S (later marks reach S at termination, :meth:`MarkerWalk.finish`)."""
+        for dm in self.M.dart_marks(u):
+            if dm.count == 2:
+                self.S.mark_as_sensed(u, Signature(self.M.degree(u), edges=((dm.exit, 2, None),)), 0)
+
+    def far_end_of_e0(self) -> MapDart | None:
+        """The dart of e0 at its far end, if S knows that place (it shows two markers on that exit)."""
+        for v in self.M.vertices:
+            if v != 0:
+                for dm in self.M.dart_marks(v):
+                    if dm.count == 2:
+                        return (v, dm.exit)
+        return None
+
+    def mark_loop_edge(self, it: MarkerStep, sig: Signature) -> bool:
+        """Line 11: one marker on e (the pool has one: :meth:`has_markers` said so)."""
+        return FootprintSearch.mark_loop_edge(self, it, sig)
+
+    def lighthouse_path(self, v: int) -> list[MapDart]:
+        """A shortest path of S from v_k' = ``v`` to v0 (L1770: v0 is the directional lighthouse)."""
+        _, _, parent = bfs(self.M, v)
+        if 0 not in parent:
+            raise AlgorithmFailed(f"internal: v0 is not connected to map vertex {v}")
+        path, x = [], 0
+        while x != v:
+            path.append(parent[x])
+            x = parent[x][0]
+        return path[::-1]
