@@ -16,6 +16,11 @@ drop markers (Algorithm 6.6 line 10: "goes back on e, drops i markers on e and
 back"); ``validation`` / ``retrace`` — back-link probes and their returns
 (Algorithm 6.2 lines 21–35).
 
+Decision (a gap in the kernel's checker): the map the checker reads, ``S``,
+shows the markers dropped after start only at termination; the algorithm works
+on its own map ``M``, which records every drop as sensed (:meth:`MarkerWalk.finish`
+says why and how to switch it off).
+
 Decision (the kernel's robot cannot count what it carries): "if the robot has
 enough markers" (Algorithm 6.2 line 10) is the robot trying the drop — the
 simulator refuses a drop the kit cannot cover *before* anything changes
@@ -67,6 +72,7 @@ class MarkerWalk:
     """S, U and the believed pose, with the loop of §6.2; subclasses write :meth:`arrive` (and :meth:`begin`)."""
 
     name = "marker-walk"
+    marks_at_end = True  # S shows M's marks only at termination (see finish()); False: S is M
 
     def __init__(self, robot, policies: Policies | None = None, observer=None, options: dict | None = None):
         self.robot = robot
@@ -74,7 +80,7 @@ class MarkerWalk:
         self.observer = observer
         self.options = dict(options or {})
         self.M = PartialMap()  # the algorithm's map: S with every marker dropped, recorded as sensed
-        self.S = PartialMap()  # S as the checker reads it: M's vertices, edges and U; M's marks at termination
+        self.S = PartialMap() if self.marks_at_end else self.M  # what the checker reads (see finish())
         self.S.unexplored = self.M.unexplored  # one U
         self.position: MapDart = (0, 0)  # believed (map vertex, entry exit); exit 0 of v0 is the faced exit
         self.iterations: list[MarkerStep] = []
@@ -94,7 +100,7 @@ class MarkerWalk:
     def finish_start(self) -> None:
         """The marks dropped by :meth:`begin` are in the world the checker snapshots after start: S shows them."""
         sig = signature_at(self.M, 0, 0)
-        if sig.marked:
+        if sig.marked and self.S is not self.M:
             self.S.mark_as_sensed(0, sig, 0)
 
     def done(self) -> bool:
@@ -114,9 +120,11 @@ class MarkerWalk:
         U (checked by ``pose``, ``I-1``, ``I-2`` after every step) and receives
         M's marks at termination, where ``isomorphism`` compares them with every
         marker in the world.  The marks dropped at start (before the snapshot) are
-        in S from the start.
+        in S from the start.  Once the checker compares with the world as it is
+        now (``Checker.sim.world``), ``marks_at_end = False`` makes S the map M
+        itself, marks recorded as they are dropped.
         """
-        if self._finished:
+        if self._finished or self.S is self.M:
             return
         self._finished = True
         for v in self.M.vertices:
@@ -200,11 +208,13 @@ class MarkerWalk:
         self.position = far
 
     def add_vertex(self, degree: int) -> int:
-        self.S.add_vertex(degree)
+        if self.S is not self.M:
+            self.S.add_vertex(degree)
         return self.M.add_vertex(degree)
 
     def add_edge(self, a: MapDart, b: MapDart) -> None:
-        self.S.add_edge(a, b)
+        if self.S is not self.M:
+            self.S.add_edge(a, b)
         self.M.add_edge(a, b)
 
     # -- markers --------------------------------------------------------------------
