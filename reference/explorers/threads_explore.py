@@ -114,7 +114,8 @@ class ThreadWalker:
         self.policies = policies or Policies()
         self.observer = observer
         self.options = options or {}
-        self.length: int | None = self.options.get("thread-length")
+        length = self.options.get("thread-length")  # an integer, or "n": not told (Algorithm 6.7's default)
+        self.length: int | None = length if isinstance(length, int) else None
         self.S = PartialMap()
         self.position: MapDart = (0, 0)
         self.iterations: list[ThreadIteration] = []

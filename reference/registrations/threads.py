@@ -82,12 +82,13 @@ def explore_bound(n: int, m: int) -> int:
 
 
 LENGTH = Parameter("thread-length", "the thread's length L in edges (an integer >= 1); the robot knows it",
-                   default=None, minimum=1)
+                   default="n", minimum=1)
+"""``thread-circumference``'s option: not given ("n"), the kit holds n edges and the robot is not told."""
 
 
 def _circumference_kit(n: int, m: int, opts: dict) -> Kit:
-    length = opts.get("thread-length")
-    return Kit(thread=n if length is None else length)
+    length = opts.get("thread-length", "n")
+    return Kit(thread=n if length in ("n", None) else length)
 
 
 _ROBOT = dict(uses_lighthouse=False, marker_bound_fn=lambda n, m: 0, family="robot")
