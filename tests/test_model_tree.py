@@ -180,3 +180,17 @@ def test_the_cli_fields_and_the_completed_models_as_world_files(tmp_path):
     paths = write_models(out.explorer, tmp_path / "models")
     assert [world_from_json(json.loads(p.read_text())).n for p in paths] == [3, 4, 5, 6]
     assert not summary(out.explorer, generators.cycle(7))["true_world_completed"]
+
+
+def test_the_entry_edge_check_rejects_more_loop_closings():
+    """L1369: at vertices whose neighbour degrees have no proper rotation onto themselves the robot also checks
+    its entry edge (by visiting the neighbours), so fewer wrong loop closings are accepted."""
+    world = generators.random_graph(7, 0.7, 0)
+    runs = {ec: _run(world, **{"cue-n": 7, "entry-check": ec}) for ec in ("yes", "no")}
+
+    def accepted(out):
+        return sum(h.outcome == "case 3" for it in out.explorer.iterations for h in it.hypotheses)
+    assert runs["yes"].outcome == runs["no"].outcome == "correct"
+    assert accepted(runs["yes"]) < accepted(runs["no"]) and runs["yes"].explorer.peak_models < \
+        runs["no"].explorer.peak_models
+    assert runs["yes"].by_purpose.get("probe", 0) > 0 and "probe" not in runs["no"].by_purpose

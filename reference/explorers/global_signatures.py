@@ -21,11 +21,14 @@ Decisions:
   robot entered by), so the robot ends at v_u, and on a mismatch it climbs
   back up the branch it is on (moving back through the edge it entered by
   is always possible, whatever the model).
-* **Expected perception** = the degree of each vertex on the path.  L1369
-  adds "the expected entry edge information" at vertices whose neighbour
-  degrees lack rotation equivalence; reading it needs the robot to probe the
-  neighbours (as §5.1 does), which this implementation does not do: it only
-  weakens validation (more hypotheses accepted), never voids the truth.
+* **Expected perception** = the degree of each vertex on the path and, with
+  ``entry_check`` (``--entry-check yes``, the default), "the expected entry
+  edge information" (L1369) at each vertex whose neighbours are all known in
+  M' and whose neighbour degree list D has no proper rotation onto itself
+  (:func:`shows_entry`, §5.1's test): the thesis does not say how it is read
+  (guide 4 note (e)); here the robot visits every neighbour out and back
+  (moves tagged ``probe``, as §5.1's probing) and compares each degree with
+  M''s at that exit counted from the expected entry.
 * A hypothesis that would make a self-loop or a multi-edge is never formed:
   §3.1.1 forbids both in a world (the thesis is silent, guide 4 note (d)).
 
@@ -42,7 +45,7 @@ from __future__ import annotations
 from ..robot import Robot
 from .model_shapes import Shape
 
-__all__ = ["Walker", "validate"]
+__all__ = ["Walker", "validate", "shows_entry"]
 
 
 class Walker:
@@ -60,16 +63,19 @@ class Walker:
         return sig.degree
 
 
-def validate(walker: Walker, shape: Shape, root: int, entry: int) -> tuple[bool, int]:
+def validate(walker: Walker, shape: Shape, root: int, entry: int, entry_check: bool = False) -> tuple[bool, int]:
     """Walk a breadth-first tree of ``shape`` from ``root`` (the robot believed there, entered by ``entry``),
-    comparing degrees; return (every degree matched, moves made).  The robot ends where it started."""
+    comparing degrees (and, with ``entry_check``, the entry edge where :func:`shows_entry`); return (every
+    perception matched, moves made).  The robot ends where it started."""
     children = _bfs_children(shape, root)
     ent = (entry + walker.turn) % shape.degree(root)  # the physical entry, in the shape's exit numbering
     stack: list[tuple[int, int]] = [(root, 0)]  # (vertex, index of its next child)
     back: dict[int, int] = {}  # exit of each walked vertex toward its tree parent
-    moves = 0
-    robot = walker.robot
-    while stack:
+    robot, moves = walker.robot, 0
+    ok = True
+    if entry_check and shows_entry(shape, root):
+        ok, ent, moves = _probe(robot, shape, root, ent)
+    while stack and ok:
         v, k = stack[-1]
         if k == len(children[v]):
             stack.pop()
@@ -85,19 +91,44 @@ def validate(walker: Walker, shape: Shape, root: int, entry: int) -> tuple[bool,
         moves += 1
         if sig.degree != shape.degree(w):  # mismatch: back through the entry edge, then up the branch
             robot.move(0, "retrace")
-            moves += 1
-            ent = y
-            for u, _ in reversed(stack[1:]):
-                robot.move((back[u] - ent) % shape.degree(u), "retrace")
-                ent = shape.arc((u, back[u]))[1]
-                moves += 1
-            walker.turn = (ent - entry) % shape.degree(root)
-            return False, moves
-        back[w] = j
-        ent = j
+            ent, moves, ok = y, moves + 1, False
+            break
+        back[w], ent = j, j
         stack.append((w, 0))
+        if entry_check and shows_entry(shape, w):
+            ok, ent, probed = _probe(robot, shape, w, ent)
+            moves += probed
+    if not ok:  # up the branch the robot is on, by the edges it came down
+        for u, _ in reversed(stack[1:]):
+            robot.move((back[u] - ent) % shape.degree(u), "retrace")
+            ent = shape.arc((u, back[u]))[1]
+            moves += 1
     walker.turn = (ent - entry) % shape.degree(root)
-    return True, moves
+    return ok, moves
+
+
+def shows_entry(shape: Shape, v: int) -> bool:
+    """L1369: ``v``'s neighbours are all known and their degree list D has no proper rotation onto itself,
+    so the robot entering ``v`` can tell its entry edge by visiting them (§5.1's test)."""
+    row = shape.rows[v]
+    if any(x is None for x in row):
+        return False
+    D = tuple(shape.degree(x[0]) for x in row)
+    return all(D[r:] + D[:r] != D for r in range(1, len(D)))
+
+
+def _probe(robot, shape: Shape, v: int, ent: int) -> tuple[bool, int, int]:
+    """Visit every neighbour of ``v`` out and back, comparing degrees (the entry edge, L1369); return (all
+    matched, the entry the robot is back at ``v`` by, moves made)."""
+    d = shape.degree(v)
+    moves = 0
+    for x in range(d):
+        sig = robot.move((x - ent) % d, "probe")
+        robot.move(0, "probe")
+        ent, moves = x, moves + 2
+        if sig.degree != shape.degree(shape.arc((v, x))[0]):
+            return False, ent, moves
+    return True, ent, moves
 
 
 def _bfs_children(shape: Shape, root: int) -> dict[int, list[int]]:

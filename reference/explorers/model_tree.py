@@ -15,7 +15,8 @@ The robot carries nothing (an empty kit) and senses only degrees.  Each step
    walking to every known vertex of the hypothesised model, meets no
    mismatch (:mod:`.global_signatures`); ``--signatures local`` accepts every
    degree-matching one without moving (L1367's "simplest approach", the
-   thesis's comparison of L1421).
+   thesis's comparison of L1421); ``--entry-check yes`` (default) adds the
+   entry-edge information of L1369 to the global validation.
 
 Termination, all decided here since the thesis gives one heuristic only (guide 4, L1373):
 
@@ -84,7 +85,7 @@ from .traversal_map import TraversalMap
 
 __all__ = ["ModelTreeExplorer", "Step", "Closing", "DEFAULTS"]
 
-DEFAULTS = {"signatures": "global", "window": 100, "max-models": 10000, "max-steps": 2000,
+DEFAULTS = {"signatures": "global", "entry-check": "yes", "window": 100, "max-models": 10000, "max-steps": 2000,
             "cue-n": None, "cue-m": None, "cue-diameter": None, "cue-planar": "no"}
 """The options and their defaults (the registration's parameters carry the same)."""
 
@@ -254,7 +255,7 @@ class ModelTreeExplorer:
             if self.options["signatures"] == "local":
                 closing.outcome = "local"
             else:
-                ok, closing.moves = validate(self.walker, child, w, hyp[1])
+                ok, closing.moves = validate(self.walker, child, w, hyp[1], self.options["entry-check"] == "yes")
                 closing.outcome = "case 3" if ok else "case 2"
                 if not ok:
                     continue

@@ -47,6 +47,9 @@ PARAMETERS = (
     Parameter("signatures", "global: validate each loop closing against every known vertex (§5.2.2); local: accept "
               "every degree-matching one (L1367, the thesis's comparison)", DEFAULTS["signatures"], None,
               ("global", "local")),
+    Parameter("entry-check", "global signatures: at each vertex whose neighbours are known and whose neighbour "
+              "degrees have no proper rotation onto themselves, visit the neighbours to check the entry edge (L1369)",
+              DEFAULTS["entry-check"], None, ("yes", "no")),
     Parameter("window", "return a model once it has been the only completed model for this many steps (L1373)",
               DEFAULTS["window"], 1),
     Parameter("max-models", "cap on live models: past it the run ends with the limit outcome", DEFAULTS["max-models"],
@@ -122,7 +125,7 @@ def write_models(explorer, directory: str | Path) -> list[Path]:
 SPECS = (
     AlgorithmSpec(
         "model-tree", "§5.2.2, Algorithm 5.1", Kit(), None, "0", False,
-        ("signatures global|local", "window=N", "max-models=N", "max-steps=N", "cue-n=N", "cue-m=M",
+        ("signatures global|local", "entry-check yes|no", "window=N", "max-models=N", "max-steps=N", "cue-n=N", "cue-m=M",
          "cue-diameter=D", "cue-planar=yes|no"),
         ("models", "marker-budget", "isomorphism"),
         explorer=ModelTreeExplorer, uses_lighthouse=False, parameters=PARAMETERS, kit_fn=_kit,
