@@ -1,9 +1,9 @@
 """The census's map: languages of every placement on a slice of the worlds (thesis §3.2, §3.3, §3.7, §6.1).
 
-A *unit* is ``(n, gi, lo, hi)``: the rotation systems of graph ``gi`` of
+A *unit* is ``(n, gi, c, C)``: the rotation systems of graph ``gi`` of
 :func:`topomark.proofs.enumerate.connected_graphs` (n, D) whose *rank* — index
 in the product order of :func:`topomark.proofs.enumerate.rotation_systems` —
-lies in ``lo..hi-1``, of which the unit keeps the orbit representatives (the
+is ``c`` modulo ``C``, of which the unit keeps the orbit representatives (the
 least system of each Aut-orbit, decided from the system alone, so a graph
 with many rotation systems splits into independent units).  A world is named
 by ``(n, gi, rank)``; at fixed n that order is the enumeration's order.
@@ -32,7 +32,7 @@ Examples
 >>> units = [u for t in plan(4, 3, 2, task_worlds=5) for u, _ in t]
 >>> sorted(units)[:3]
 [(2, 0, 0, 1), (3, 0, 0, 1), (3, 1, 0, 1)]
->>> [rank for rank, _, _ in unit_worlds((4, 5, 0, 16), 3)]  # K4: 16 rotation systems, 3 worlds
+>>> [rank for rank, _, _ in unit_worlds((4, 5, 0, 1), 3)]  # K4: 16 rotation systems, 3 worlds
 [0, 1, 5]
 """
 
@@ -58,7 +58,7 @@ from topomark.spec.world import World
 __all__ = ["Unit", "plan", "estimate", "rotation_count", "run_map", "unit_worlds", "world_at", "world_records",
            "marked"]
 
-Unit = tuple[int, int, int, int]  # (n, graph index, first rank, end rank)
+Unit = tuple[int, int, int, int]  # (n, graph index, c, C): the ranks c, c + C, c + 2C, ...
 
 
 @lru_cache(maxsize=None)
@@ -87,10 +87,9 @@ def plan(max_vertices: int, max_degree: int, min_vertices: int = 2,
         for gi, g in enumerate(_graphs(n, max_degree)):
             est = estimate(g, len(_autos(n, max_degree, gi)))
             chunks = -(-est // task_worlds)
-            ranks = rotation_count(n, max_degree, gi)
             for c in range(chunks):
                 share = est // chunks + (c < est % chunks)
-                current.append(((n, gi, ranks * c // chunks, ranks * (c + 1) // chunks), share))
+                current.append(((n, gi, c, chunks), share))
                 size += share
                 if size >= task_worlds:
                     tasks.append(current)
@@ -162,28 +161,22 @@ def _stabiliser(digits: list[int], actions: list[tuple]) -> tuple[dict[int, int]
 
 
 def unit_worlds(unit: Unit, max_degree: int) -> Iterator[tuple[int, World, tuple[dict[int, int], ...]]]:
-    """(rank, world, automorphisms of the world) for the orbit representatives with rank in the unit's range.
+    """(rank, world, automorphisms of the world) for the orbit representatives of the unit's ranks.
 
     A representative is the least rotation system of its Aut-orbit in
     product order, the one :func:`topomark.proofs.enumerate.embedded_worlds`
     lists; deciding it needs only the system itself, so a graph's ranks split
-    into units that run anywhere (``tests/test_census_shards.py`` checks the
+    into units that run anywhere — by residue, not by range, because the
+    representatives crowd at small ranks (``tests/test_census_shards.py`` checks the
     representatives against ``enumerate._orbit_representatives``).
     """
-    n, gi, lo, hi = unit
+    n, gi, c, step = unit
     choices, radices, actions = _graph_data(n, max_degree, gi)
-    digits = _digits(lo, radices)
-    for rank in range(lo, hi):
+    for rank in range(c, math.prod(radices), step):
+        digits = _digits(rank, radices)
         fixing = _stabiliser(digits, actions)
         if fixing is not None:
             yield rank, _world(tuple(choices[v][d] for v, d in enumerate(digits))), fixing
-        v = n - 1
-        while v >= 0:  # the next rank: an odometer, the last vertex fastest
-            digits[v] += 1
-            if digits[v] < radices[v]:
-                break
-            digits[v] = 0
-            v -= 1
 
 
 def world_at(n: int, max_degree: int, gi: int, rank: int) -> World:
