@@ -52,7 +52,6 @@ from topomark.proofs.census import _layouts, _marker_key, machine, minimise
 from topomark.proofs.census_language import start_digests
 from topomark.proofs.census_shards import combine, done_path, map_path, records, shard_of, write_atomic, write_json
 from topomark.proofs.enumerate import _automorphisms, _world, connected_graphs
-from topomark.spec.marker import VertexMarker
 from topomark.spec.world import World
 
 __all__ = ["Unit", "plan", "estimate", "rotation_count", "run_map", "unit_worlds", "world_at", "world_records",
