@@ -31,7 +31,8 @@ __all__ = ["write_report", "by_world"]
 NAME = "lighthouses"
 SHORT = {"directional-vertex": "dir. vertex", "directional-edge": "dir. edge", "vertex-and-edge": "vertex + edge",
          "three-undirected-edge": "3 undirected edge", "three-undirected-vertex": "3 undirected vertex",
-         "undirected-vertex": "undir. vertex (walk)", "undirected-edge": "undir. edge (walk)", "thread": "thread ε"}
+         "undirected-vertex": "undir. vertex (walk)", "undirected-edge": "undir. edge (walk)", "thread": "thread ε",
+         "local-pair": "no marker, pair (§5.2.1 A)", "local-degree-list": "no marker, D list (§5.2.1 B)"}
 
 THESIS = [
     "## What the thesis says, and what it does not measure", "",

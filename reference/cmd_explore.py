@@ -47,6 +47,8 @@ def register(sub) -> None:
                                                      "§5.1's threshold)")
     p.add_argument("--neighbourhood", metavar="D", help="undirected-vertex: test the neighbours' views to distance D "
                                                         "(default 1, §5.1)")
+    p.add_argument("--threshold", metavar="N", help="local-pair, local-degree-list: the least-seen candidate must "
+                                                    "be seen fewer than N times (default: the walk's observations, §5.2.1)")
     p.add_argument("--no-check", action="store_true", help="skip the per-iteration checks (faster)")
     p.add_argument("--check-mode", default="incremental", choices=("incremental", "full", "both"),
                    help="how I-1/I-2 are evaluated each iteration: per journalled change (default), from scratch, "
@@ -137,7 +139,7 @@ def explore_command(args) -> int:
     for path in (args.trace, args.map):  # before the run: a typo must not cost a long exploration
         if path:
             check_output(path)
-    light, seed = configured(args.lighthouse, args.seed, args.walk_limit, args.neighbourhood)
+    light, seed = configured(args.lighthouse, args.seed, args.walk_limit, args.neighbourhood, args.threshold)
     if args.world is None:
         if seed is not None:
             raise InvalidInput("--seed needs a generator: the built-in default world is fixed")

@@ -49,7 +49,7 @@ _POLICY_OPTIONS = ("policy edge=nearest|fifo|lifo", "policy hypothesis=fifo|lifo
                    "lighthouse " + "|".join(LIGHTHOUSES),
                    *(f"lighthouse option {o.replace('_', '-')}=N (" + ", ".join(h.name for h in LIGHTHOUSES.values()
                                                                           if o in h.options) + ")"
-                     for o in ("seed", "walk_limit", "neighbourhood")))
+                     for o in ("seed", "walk_limit", "neighbourhood", "threshold")))
 
 
 _LIGHTHOUSE = LIGHTHOUSES["directional-vertex"].kit

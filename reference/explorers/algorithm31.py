@@ -226,8 +226,8 @@ class LighthouseExplorer:
             v, i = dart
             match = shows.get(v)
             if match is None:
-                match = self.S.degree(v) == sig.degree and signature_at(self.S, v, i) == sig
-                if not depends_on_entry(self.S, v):
+                match = self.S.degree(v) == sig.degree and signature_at(self.P, v, i) == sig  # P: a virtual v0
+                if not depends_on_entry(self.P, v):
                     shows[v] = match
             if not match:
                 continue

@@ -20,6 +20,12 @@ undirected-vertex          one undirected marker where a random walk finds aperi
                            neighbourhood; :mod:`.lighthouse_search`)
 undirected-edge            one undirected edge marker on an edge a random walk finds   §6.1 (L1463–L1470)
                            with ends of different degrees (options seed, walk_limit)
+local-pair                 nothing: v0 is where a random walk saw its least-seen pair  §5.2.1 scheme A (L1344)
+                           of adjacent degrees (options seed, walk_limit, threshold;
+                           :mod:`.local_lighthouses`)
+local-degree-list          nothing: v0 is where a random walk saw its least-seen       §5.2.1 scheme B (L1346)
+                           aperiodic neighbour degree list, rotations merged (options
+                           seed, walk_limit, neighbourhood, threshold)
 =========================  ==========================================================  =====================
 
 A :class:`Lighthouse` (a strategy: establish v0, recognise it, give the
@@ -53,6 +59,11 @@ Decisions (the thesis is silent):
 * A searched lighthouse's v0 is not the start: after :meth:`Lighthouse.establish`
   the robot stands at v0, entered by map exit 0, the explorer's believed pose
   (v0, 0), where the checker anchors φ.
+* The two marker-less lighthouses of §5.2.1 are probing ones with nothing
+  sensed at v0: every vertex of v0's degree is probed, and v0's perception
+  is written with a virtual head (:class:`~.local_lighthouses.VirtualMap`,
+  the lighthouse's ``perceiver``).  They may choose a place that is not
+  unique; the run then ends ``wrong-map`` or ``failed`` (L1346).
 
 Examples
 --------
@@ -73,6 +84,7 @@ from topomark.spec.mapstate import PartialMap
 from topomark.spec.signature import Signature, back_link_table, signature_at
 
 from .lighthouse_search import after_search, search_edge, search_vertex
+from .local_lighthouses import VirtualMap, search_degree_list, search_pair
 from .probing import PerceivedMap, ProbingRobot, identify, perceived
 
 __all__ = ["Lighthouse", "Beacon", "LIGHTHOUSES", "lighthouse", "configured"]
@@ -86,7 +98,9 @@ class Beacon:
     and back-link); ``perceived`` is S as the explorer perceives it (S itself,
     or S with v0's virtual head for a probing lighthouse); ``recognise`` and
     ``raw`` (v0's own signatures) make the robot probe on meeting v0;
-    ``walk_steps`` counts the random walk that found v0 (§5.1, §6.1).
+    ``walk_steps`` counts the random walk that found v0 (§5.1, §6.1);
+    ``prober(robot, recognise, raw)`` makes the probing robot (§5.2.1's
+    also checks each new edge's arrival at v0).
     """
 
     table: dict[Signature, int]
@@ -94,10 +108,11 @@ class Beacon:
     recognise: Callable | None = None
     raw: frozenset = frozenset()
     walk_steps: int = 0
+    prober: Callable = ProbingRobot
 
     def robot(self, robot):
         """The robot the explorer drives: ``robot`` itself, or one that probes at v0 (:class:`ProbingRobot`)."""
-        return robot if self.recognise is None else ProbingRobot(robot, self.recognise, self.raw)
+        return robot if self.recognise is None else self.prober(robot, self.recognise, self.raw)
 
 
 @dataclass(frozen=True)
@@ -108,8 +123,11 @@ class Lighthouse:
     robot moves while establishing (Figure 3.21(b)); ``recognition(S, v0)``
     gives the probing recogniser of a lighthouse whose back-link needs probes
     (None: v0's signatures from its entries differ); ``search`` finds and
-    establishes v0 by a random walk (§5.1, §6.1), with ``seed``,
-    ``walk_limit`` and ``neighbourhood`` (the ``options`` it takes).
+    establishes v0 by a random walk (§5.1, §6.1, §5.2.1), with ``seed``,
+    ``walk_limit``, ``neighbourhood`` and ``threshold`` (the ``options`` it
+    takes; ``threshold`` None: the walk's number of observations);
+    ``perceiver`` makes S as perceived for a probing lighthouse (default
+    :class:`PerceivedMap`).
     """
 
     name: str
@@ -125,6 +143,14 @@ class Lighthouse:
     seed: int = 0
     walk_limit: int = 200
     neighbourhood: int = 1
+    threshold: int | None = None
+    perceiver: Callable | None = None
+
+    @property
+    def certain(self) -> bool:
+        """Whether v0 surely gives explicit place and back-link information, or the run fails: every lighthouse
+        with a marker; not the marker-less ones of §5.2.1, whose place may repeat in the world (L1344, L1346)."""
+        return self.kit != Kit()
 
     @property
     def probing(self) -> bool:
@@ -133,7 +159,7 @@ class Lighthouse:
 
     def perceive(self, S):
         """S as the explorer perceives it: v0 with its virtual head if recognising it probes, else S itself."""
-        return PerceivedMap(S) if self.probing else S
+        return (self.perceiver or PerceivedMap)(S) if self.probing else S
 
     def establish(self, robot, S: PartialMap) -> Beacon:
         """Set up v0 = map vertex 0 (the robot stands at the start, facing exit 0; a search walks first) and
@@ -173,8 +199,8 @@ class Lighthouse:
                 yield (v, entry), item
 
     def with_options(self, **given) -> "Lighthouse":
-        """This lighthouse with ``seed``, ``walk_limit`` or ``neighbourhood`` set (None: unchanged); bad input
-        names the option."""
+        """This lighthouse with ``seed``, ``walk_limit``, ``neighbourhood`` or ``threshold`` set (None:
+        unchanged); bad input names the option."""
         given = {k: v for k, v in given.items() if v is not None}
         for key, value in given.items():
             flag = "--" + key.replace("_", "-")
@@ -228,6 +254,14 @@ LIGHTHOUSES: dict[str, Lighthouse] = {h.name: h for h in (
     Lighthouse("undirected-edge", "§6.1, Figure 6.2", Kit(edge=1), (_edge(0),),
                "one undirected edge marker, dropped on an edge a random walk found with ends of different degrees",
                search=search_edge, options=("seed", "walk_limit")),
+    Lighthouse("local-pair", "§5.2.1, scheme A (L1344)", Kit(), (),
+               "nothing: v0 is a place where a random walk saw its least-seen pair of adjacent degrees",
+               recognition=after_search, search=search_pair, options=("seed", "walk_limit", "threshold"),
+               perceiver=VirtualMap),
+    Lighthouse("local-degree-list", "§5.2.1, scheme B (L1346)", Kit(), (),
+               "nothing: v0 is a place where a random walk saw its least-seen aperiodic neighbour degree list",
+               recognition=after_search, search=search_degree_list,
+               options=("seed", "walk_limit", "neighbourhood", "threshold"), perceiver=VirtualMap),
     # §6.3.1 L2028-L2030: tied at v0, laid out toward the faced exit, its free end left there; the robot senses
     # "whether the thread is present at the vertex and the direction of the thread": T-p and F (spec.signature).
     Lighthouse("thread", "§6.3.1 (L2028-L2030)", Kit(thread=0), (ThreadOp("tie", direction=0), ThreadOp("leave")),
@@ -236,21 +270,25 @@ LIGHTHOUSES: dict[str, Lighthouse] = {h.name: h for h in (
 """The lighthouses by name; ``directional-vertex`` is Algorithm 3.1's own and the default."""
 
 
-def configured(name: str | None, seed=None, walk_limit=None, neighbourhood=None) -> tuple[Lighthouse | None, Any]:
+def configured(name: str | None, seed=None, walk_limit=None, neighbourhood=None,
+               threshold=None) -> tuple[Lighthouse | None, Any]:
     """The CLI's lighthouse (None: the algorithm's default) with its options, and the seed left for the world.
 
     Decision: ``--seed`` seeds a searched lighthouse's random walk when the lighthouse takes it (the world's own
     seed then goes in its generator text, ``lattice-hole:seed=3``); otherwise it stays the generator's seed.
     """
     if name is None:
-        if walk_limit is not None or neighbourhood is not None:
-            flag = "--walk-limit" if walk_limit is not None else "--neighbourhood"
+        given = [f for f, v in (("--walk-limit", walk_limit), ("--neighbourhood", neighbourhood),
+                                ("--threshold", threshold)) if v is not None]
+        if given:
+            flag = given[0]
             raise InvalidInput(f"{flag} is an option of a searched lighthouse (--lighthouse "
                                + "|".join(h.name for h in LIGHTHOUSES.values() if h.options) + ")")
         return None, seed
     light = lighthouse(name)
     walk_seed = "seed" in light.options
-    light = light.with_options(seed=seed if walk_seed else None, walk_limit=walk_limit, neighbourhood=neighbourhood)
+    light = light.with_options(seed=seed if walk_seed else None, walk_limit=walk_limit, neighbourhood=neighbourhood,
+                               threshold=threshold)
     return light, None if walk_seed else seed
 
 
