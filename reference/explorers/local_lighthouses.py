@@ -42,13 +42,23 @@ v0's recognised perception is written as a directional lighthouse's,
 checker compares the map with the world as it is.
 
 Neither scheme can guarantee the lighthouse's place (both) nor its back-link
-(scheme A) (L1344, L1346).  Then, as the thesis lists (L1346), the run ends
-``failed`` (no candidate, or the least count not below the threshold:
-:class:`~topomark.spec.errors.AlgorithmFailed`), ``correct``, or with a
-wrong loop closing — the checker, which sees the truth, stops the run at the
-first wrong join and judges it ``wrong-map`` (exit 1).  "Without additional
-information about the world … we cannot determine whether it is a correct
-model or not" (L1346): the algorithm itself claims ``correct``.
+(scheme A) (L1344, L1346).  The outcomes are the thesis's list (L1346):
+
+* ``failed`` — "No potential lighthouse may be identified": no candidate in
+  the walk, or the least count not below the threshold; or the algorithm
+  "detects some signature inconsistencies (due to wrong loop closing)": a
+  new edge arrives at v0 by an entry already explored
+  (:class:`LocalProbingRobot`).  Both raise
+  :class:`~topomark.spec.errors.AlgorithmFailed`, the reason given.
+* ``correct`` — "The selected lighthouse happens to be unique and the
+  back-link information is also explicit" (the truth side:
+  :func:`topomark.reference.local_places.unique_place`).
+* ``wrong-map`` — "terminates with an incorrect world model", or would
+  "never terminate": the checker, which sees the truth, stops the run at the
+  first wrong join (exit 1).  "Without additional information about the world
+  … we cannot determine whether it is a correct model or not": the algorithm
+  itself claims ``correct``.  (Unchecked, ``--no-check``, such a run may end
+  with a wrong map or, if S never closes, not end.)
 
 Decisions (the thesis is silent, L1344–L1346; see also the guide's notes):
 
@@ -78,8 +88,12 @@ Decisions (the thesis is silent, L1344–L1346; see also the guide's notes):
   Unlike §5.1, recognising needs *every* neighbour (the place itself is only
   known from its list), except that it stops at the first disagreement.
 * Probes during the walk and at recognition are ``probe`` moves (cost), as
-  for §5.1; a walk that ends nowhere ("never terminates", L1346) is stopped
-  by the checker at its first wrong join.
+  for §5.1.
+* The smallest worlds where a run maps wrong (networkx's atlas, planar
+  embeddings, every start, seeds 0–2, walk 50; tests/test_local_lighthouses.py):
+  scheme B, K4 minus an edge (its two degree-3 vertices both show (2, 3, 2));
+  scheme A, a 5-vertex, 6-edge world whose only degree-2 vertex has two
+  neighbours of degree 3 (the back-link depends on the entry).
 
 Examples
 --------
