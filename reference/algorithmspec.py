@@ -111,6 +111,9 @@ class AlgorithmSpec:
     marker_bound_fn: Callable[[int, int], int] | None = None  # the stated marker bound, for ``marker-budget``
     family: str = "algorithm-3.1"  # the trace@2 family its traces are written in
     own: bool = True  # topomark's registered explorer (False for ``registry.variant``: an explorer under test)
+    check_world: Callable[[Any, dict], None] | None = None  # refuse options false for the world (e.g. §5.3 cues)
+    summary_fn: Callable[[Any, Any], dict] | None = None  # (explorer, world) ↦ the algorithm's own --json fields
+    write_models: Callable[[Any, str], list] | None = None  # (explorer, dir): ``explore --models DIR``
 
     def __post_init__(self) -> None:
         unknown = set(self.checks) - set(CHECKS)

@@ -14,7 +14,7 @@ from .explore import check_run, explore
 from .explorers.lighthouses import LIGHTHOUSES, configured
 from .registry import REGISTRY, algorithm_spec, parameters
 from .generators import DEFAULT_WORLD
-from .outputs import check_output, write_output
+from .outputs import check_output, check_output_dir, guarded, write_output
 from .policies import EDGE_POLICIES, HYPOTHESIS_POLICIES, PATH_POLICIES, Policies
 from .tracesink import FileSink, RingSink, TeeSink
 from .worldarg import resolve_world
@@ -55,6 +55,8 @@ def register(sub) -> None:
                         "or both (they must agree); the final verdict is always from scratch")
     p.add_argument("--trace", metavar="FILE", help="write the JSON Lines trace here")
     p.add_argument("--map", metavar="FILE", help="write the final map (world format, marker included)")
+    p.add_argument("--models", metavar="DIR", help="write every completed model as a world file, in completion order "
+                                                   "(model-0001.json, ...; algorithms that keep models: model-tree)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     p.set_defaults(handler=explore_command)
@@ -112,19 +114,25 @@ class _Progress:
         self.stream.flush()
 
 
-def _table(o, started: float) -> str:
+def _table(o, started: float, lighthouse: bool = True) -> str:
+    """The report's table; a kit algorithm's has its steps and its own counts where Algorithm 3.1's has
+    iterations and hypotheses."""
     rows = [
         ("n", o.n), ("m", o.m), ("cost (edge traversals)", o.cost), ("cost / m", f"{o.cost / o.m:.2f}"),
-        ("upper bound (3.1)+(3.2)", o.upper_bound),
-        ("  travel to v_k", o.by_purpose.get("travel", 0)), ("  new edges", o.by_purpose.get("new", 0)),
-        ("  validation", o.by_purpose.get("validation", 0)), ("  retrace", o.by_purpose.get("retrace", 0)),
-        ("  expansion (Chapter 4 signatures)", o.by_purpose.get("expansion", 0)),
+        ("upper bound (3.1)+(3.2)" if lighthouse else "cost bound (registry)",
+         o.upper_bound if o.upper_bound is not None else "none stated"),
+        *((f"  {purpose}", count) for purpose, count in o.by_purpose.items()),
         ("marker operations (not cost, §3.1.2)",
          ", ".join(f"{op.replace('_', ' ')}: {n}" for op, n in o.marker_operations.items()) or "none"),
-        ("iterations (non-loop + loop)", f"{o.iterations} ({o.nonloop_iterations} + {o.loop_iterations})"),
-        ("hypotheses (rejected / confirmed)", f"{o.hypotheses} ({o.hypotheses_rejected} / {o.hypotheses_confirmed})"),
-        ("checks passed", o.checks), ("wall time", f"{time.monotonic() - started:.2f} s"),
     ]
+    if lighthouse:
+        rows += [("iterations (non-loop + loop)", f"{o.iterations} ({o.nonloop_iterations} + {o.loop_iterations})"),
+                 ("hypotheses (rejected / confirmed)",
+                  f"{o.hypotheses} ({o.hypotheses_rejected} / {o.hypotheses_confirmed})")]
+    else:
+        rows += [("steps", o.iterations), *((key.replace("_", " "), value) for key, value in o.extra.items())]
+    rows += [("outcome (claimed / judged)", f"{o.claimed} / {o.outcome}"), ("checks passed", o.checks),
+             ("wall time", f"{time.monotonic() - started:.2f} s")]
     width = max(len(k) for k, _ in rows)
     return "\n".join(f"{k:<{width}}  {v}" for k, v in rows)
 
@@ -139,6 +147,10 @@ def explore_command(args) -> int:
     for path in (args.trace, args.map):  # before the run: a typo must not cost a long exploration
         if path:
             check_output(path)
+    if args.models is not None:
+        if spec.write_models is None:
+            raise InvalidInput(f"--models: the algorithm {spec.name} keeps no models (model-tree does)")
+        check_output_dir(args.models)
     light, seed = configured(args.lighthouse, args.seed, args.walk_limit, args.neighbourhood, args.threshold)
     if args.world is None:
         if seed is not None:
@@ -157,6 +169,8 @@ def explore_command(args) -> int:
     S = getattr(outcome.explorer, "S", None)
     if args.map and outcome.violation is None and S is not None and S.complete():
         write_output(args.map, dumps_world(S.to_world()))
+    if args.models is not None:
+        guarded(args.models, lambda: spec.write_models(outcome.explorer, args.models))
     last = ring.records[:-1]  # the records before the end record
     data = {"world": label, "policies": policies.to_json(), "algorithm": args.algorithm, **outcome.summary(),
             "checked": not args.no_check}
@@ -178,7 +192,7 @@ def _print_report(args, spec, label: str, policies, outcome, started: float, tai
     setup = f"lighthouse {outcome.lighthouse}" if spec.uses_lighthouse else f"kit: {outcome.kit}"
     print(f"explored {label} with {spec.thesis} ({args.algorithm}; {setup}; policies "
           + ", ".join(f"{k}={v}" for k, v in policies.to_json().items()) + ")")
-    print(_table(outcome, started))
+    print(_table(outcome, started, spec.uses_lighthouse))
     if outcome.violation is not None:
         print(f"VIOLATION: {outcome.violation}")
         print("the trace up to that point (last events; --trace FILE keeps all of it):")

@@ -75,6 +75,7 @@ class Outcome:
     kit: str = ""
     walk_steps: int | None = None  # a lighthouse algorithm: the steps of the walk that found v0 (§5.1, §6.1)
     lighthouse_at: str | None = None  # a lighthouse algorithm: the world vertex v0 is (the truth; the robot never knows)
+    extra: dict[str, Any] = field(default_factory=dict)  # the algorithm's own counts (its registry's summary_fn)
 
     def summary(self) -> dict[str, Any]:
         out = {k: getattr(self, k) for k in (
@@ -83,6 +84,7 @@ class Outcome:
             "marker_operations", "outcome", "claimed", "reason")}
         if self.lighthouse is not None:
             out.update(walk_steps=self.walk_steps, lighthouse_at=self.lighthouse_at)
+        out.update(self.extra)
         out["cost_per_m"] = round(self.cost / self.m, 3)
         if self.violation is not None:
             out["violation"] = self.violation.to_json()
@@ -200,6 +202,8 @@ def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: 
     started: list = []  # the robot's true state once the explorer has started (v0, for a lighthouse algorithm)
     violation, stopped = _drive(explorer, checker, lambda: started.append(sim.state))
     outcome = _outcome(world, sim, explorer, checker, violation, trace, tally, spec, stopped)
+    if spec.summary_fn is not None:
+        outcome.extra = spec.summary_fn(explorer, world)
     if spec.uses_lighthouse:
         outcome.walk_steps = getattr(getattr(explorer, "beacon", None), "walk_steps", 0)
         outcome.lighthouse_at = started[0][0] if started else None
@@ -244,6 +248,8 @@ def _setup(world: World, spec: AlgorithmSpec, lighthouse: "str | Lighthouse | No
         raise InvalidInput(f"the algorithm {spec.name} drops its own markers: the world file must carry none "
                            f"(it carries {what})")
     kit = spec.kit_for(world.n, world.m, opts)
+    if spec.check_world is not None:
+        spec.check_world(world, opts)
     return _Run(World(world.rotation, (), world.start), world.start_state(), kit, None, opts)
 
 

@@ -104,7 +104,7 @@ def summary(explorer, world) -> dict:
     """The model tree's counts for ``--json``: how many models became completed, the most live at once, and
     whether the true world (anchored at the start, as the checker anchors it) is among the completed ones."""
     start = world.start_state()
-    true = any(S.n == world.n and anchored(S, world, (0, 0), start, markers=False, partial=False)
+    true = any(S.n == world.n and anchored(S, world, (0, 0), start, markers=False, partial=False).isomorphic
                for S in explorer.completed_models)
     return {"completed_models": len(explorer.completed_models), "peak_models": explorer.peak_models,
             "true_world_completed": true}
@@ -129,5 +129,6 @@ SPECS = (
          "cue-diameter=D", "cue-planar=yes|no"),
         ("models", "marker-budget", "isomorphism"),
         explorer=ModelTreeExplorer, uses_lighthouse=False, parameters=PARAMETERS, kit_fn=_kit,
-        marker_bound_fn=lambda n, m: 0, family="robot"),
+        marker_bound_fn=lambda n, m: 0, family="robot", check_world=check_cues, summary_fn=summary,
+        write_models=write_models),
 )
