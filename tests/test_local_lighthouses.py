@@ -127,6 +127,24 @@ def test_a_repeated_local_signature_gives_a_wrong_map_exit_1(tmp_path, capsys, n
     assert data["lighthouse_at"] == sim.state[0] and "violation" in data
 
 
+@pytest.mark.parametrize("figure", [g.wheel_a, g.wheel_b], ids=["3.4a", "3.4b"])
+def test_figure_3_4_is_never_mapped(figure):
+    """L1346-L1348: "this approach may generate a wrong world model on the two graphs shown in Figure 3.4 … none of
+    the nodes contains both explicit place and back-link information": from every start, seeds 0-1 (walk 60),
+    neither scheme maps either world; scheme B returns a wrong map from the centre with seed 0 (a loop join of a
+    corner onto itself), scheme A fails (a corner seen again by an explored entry)."""
+    world = bare(figure())
+    for name in LOCAL:
+        for v in world.vertices:
+            for seed in range(2):
+                w = world.with_start(Start(v, world.rotation[v][0]))
+                light = LIGHTHOUSES[name].with_options(seed=seed, walk_limit=60)
+                out = explore(w, "basic", lighthouse=light, record=False)
+                assert out.outcome in ("wrong-map", "failed"), (name, v, seed)
+    assert explore(world.with_start(Start("0", world.rotation["0"][0])), "basic", lighthouse="local-degree-list",
+                   record=False).outcome == "wrong-map"
+
+
 def test_no_smaller_world_gives_a_wrong_map():
     """Every connected graph of networkx's atlas before the two worlds above (scheme A: up to 5 vertices and 5
     edges; scheme B: up to 4 vertices and 4 edges), every start, seeds 0-2, walk 50: correct or failed."""

@@ -255,11 +255,11 @@ LIGHTHOUSES: dict[str, Lighthouse] = {h.name: h for h in (
                "one undirected edge marker, dropped on an edge a random walk found with ends of different degrees",
                search=search_edge, options=("seed", "walk_limit")),
     Lighthouse("local-pair", "§5.2.1, scheme A (L1344)", Kit(), (),
-               "nothing: v0 is a place where a random walk saw its least-seen pair of adjacent degrees",
+               "no marker (§5.2.1: v0 is where a random walk saw its least-seen pair of adjacent degrees)",
                recognition=after_search, search=search_pair, options=("seed", "walk_limit", "threshold"),
                perceiver=VirtualMap),
     Lighthouse("local-degree-list", "§5.2.1, scheme B (L1346)", Kit(), (),
-               "nothing: v0 is a place where a random walk saw its least-seen aperiodic neighbour degree list",
+               "no marker (§5.2.1: v0 is where a random walk saw its least-seen aperiodic neighbour list)",
                recognition=after_search, search=search_degree_list,
                options=("seed", "walk_limit", "neighbourhood", "threshold"), perceiver=VirtualMap),
     # §6.3.1 L2028-L2030: tied at v0, laid out toward the faced exit, its free end left there; the robot senses

@@ -171,7 +171,7 @@ class VirtualMap(PerceivedMap):
 
 
 def _face_back(robot, d: int, f: int) -> None:
-    """After probing, out by relative exit ``f``'s complement and back: the robot faces its entry edge again."""
+    """After probing (the robot faces relative exit ``f``): out by the entry edge and back, to face it again."""
     if f:
         robot.move((-f) % d, "probe")
         robot.move(0, "probe")
