@@ -144,11 +144,12 @@ class Checker:
 
     def check_state(self, explorer, n: int) -> None:
         S, anchor = explorer.S, self.anchor
+        self.world = self.sim.world  # markers dropped during the run are part of the world from then on
         if self.incremental is None:
             self.incremental = IncrementalInvariants(S, self.world, anchor)
         phi = None
         if self.mode in ("incremental", "both"):
-            quick = self.incremental.update()
+            quick = self.incremental.rebase(self.world) or self.incremental.update()
             if self.mode == "incremental":
                 self._ok(n, quick)
                 phi = self.incremental

@@ -214,6 +214,19 @@ class IncrementalInvariants:
         v, i = dart
         return (self.f[v], (i + self.r[v]) % self.degrees[v])
 
+    def rebase(self, world: World) -> Violation | None:
+        """Markers dropped or picked up since the last update (§6.2: "markers dropped during a run are part of
+        the world from then on"): judge against ``world`` from now on, and re-check the marks of every place
+        already mapped — S must show what now lies there."""
+        if world is self.world:
+            return None
+        self.world = world
+        for v in self.f:
+            bad = self._marks(v)
+            if bad is not None:
+                return bad
+        return None
+
     def _edge(self, a: MapDart, b: MapDart) -> Violation | None:
         if a[0] not in self.f:
             a, b = b, a

@@ -140,7 +140,8 @@ def test_extension_2_needs_rule_3_the_naive_extension_maps_k4_minus_an_edge_wron
     k4_e = World(K4_E.rotation, (), Start("2", "0"))
     assert explore(k4_e, "extension-2").outcome == "correct"
     out = explore(k4_e, variant("naive-extension-2", Naive, like="extension-2"))
-    assert out.outcome == "wrong-map" and "two map vertices for one place" in str(out.violation)
+    # I-1 fails: with the world's live markers the checker sees first that a marked place is mapped unmarked
+    assert out.outcome == "wrong-map" and out.violation.check == "I-1"
 
 
 @pytest.mark.parametrize("name", EXTENSIONS)

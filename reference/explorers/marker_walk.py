@@ -72,7 +72,7 @@ class MarkerWalk:
     """S, U and the believed pose, with the loop of §6.2; subclasses write :meth:`arrive` (and :meth:`begin`)."""
 
     name = "marker-walk"
-    marks_at_end = True  # S shows M's marks only at termination (see finish()); False: S is M
+    marks_at_end = False  # S shows M's marks only at termination (see finish()); False: S is M
 
     def __init__(self, robot, policies: Policies | None = None, observer=None, options: dict | None = None):
         self.robot = robot
