@@ -248,8 +248,8 @@ class IncrementalInvariants:
         self.open_map.difference_update((a, b))
         return None
 
-    def update(self) -> Violation | None:
-        """Consume the journal since the last update; the first I-1 or I-2 violation, or None."""
+    def update(self, check_u: bool = True) -> Violation | None:
+        """Consume the journal since the last update; the first I-1 or (``check_u``) I-2 violation, or None."""
         S, journal = self.S, self.S.journal
         for op in journal[self.pos:]:
             self.pos += 1
@@ -267,7 +267,7 @@ class IncrementalInvariants:
         if len(self.f) != S.n:
             lost = next(v for v in S.vertices if v not in self.f)
             return Violation("I-1", f"map vertex {lost}", "connected to v0 through explored edges", "not connected")
-        return self._check_u()
+        return self._check_u() if check_u else None
 
     def _check_u(self) -> Violation | None:
         U = self.S.unexplored

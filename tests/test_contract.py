@@ -192,3 +192,19 @@ def test_a_thread_in_the_world_file_must_be_the_lighthouses_own():
         explore(own, "basic")
     with pytest.raises(InvalidInput, match="must carry none \\(it carries a thread\\)"):
         explore(own, "dudek")
+
+
+@pytest.mark.parametrize("mode", ["incremental", "full"])
+def test_i2_is_checked_only_where_the_algorithm_names_it(mode):
+    """An explorer whose U is not the unexplored edges (here: always empty) is judged on I-1 and its pose alone
+    when its entry leaves I-2 out — and caught by I-2 when it names it."""
+    class NoU(_Models):
+        def step(self):
+            super().step()
+    from dataclasses import replace
+    spec = replace(_spec(("pose", "I-1")), explorer=NoU)
+    out = explore(generators.cycle(5), spec, check_mode=mode)
+    assert out.violation is not None and out.violation.check != "I-2"  # the one-vertex map fails at the end only
+    assert out.violation.check == "extended isomorphism"
+    named = explore(generators.cycle(5), replace(spec, checks=("pose", "I-1", "I-2", "isomorphism")), check_mode=mode)
+    assert named.violation.check == "I-2"
