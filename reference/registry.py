@@ -75,7 +75,13 @@ def _registered() -> dict[str, AlgorithmSpec]:
             if spec.name in found:
                 raise ValueError(f"algorithm {spec.name!r} is registered twice ({info.name})")
             found[spec.name] = spec
-    return found
+    return dict(sorted(found.items(), key=lambda item: _section(item[1].thesis)))
+
+
+def _section(thesis: str) -> tuple[int, ...]:
+    """``"§6.2.1 Case 3a, ..."`` ↦ (6, 2, 1): the listing follows the thesis (a stable sort keeps module order)."""
+    head = thesis.lstrip("§").split()[0].rstrip(",")
+    return tuple(int(part) for part in head.split(".") if part.isdigit())
 
 
 REGISTRY: dict[str, AlgorithmSpec] = {
