@@ -20,10 +20,10 @@ undirected-vertex          one undirected marker where a random walk finds aperi
                            neighbourhood; :mod:`.lighthouse_search`)
 undirected-edge            one undirected edge marker on an edge a random walk finds   §6.1 (L1463–L1470)
                            with ends of different degrees (options seed, walk_limit)
-local-pair                 nothing: v0 is where a random walk saw its least-seen pair  §5.2.1 scheme A (L1344)
+local-pair                 nothing: v0 is where a random walk saw its least-seen pair  §5.2.1 A (L1344)
                            of adjacent degrees (options seed, walk_limit, threshold;
                            :mod:`.local_lighthouses`)
-local-degree-list          nothing: v0 is where a random walk saw its least-seen       §5.2.1 scheme B (L1346)
+local-degree-list          nothing: v0 is where a random walk saw its least-seen       §5.2.1 B (L1346)
                            aperiodic neighbour degree list, rotations merged (options
                            seed, walk_limit, neighbourhood, threshold)
 =========================  ==========================================================  =====================
