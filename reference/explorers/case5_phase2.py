@@ -116,7 +116,7 @@ class PhaseTwo:
                     h.outcome = "case 2" if step == len(h.motions) - 1 else "case 1"
                     break
             h.perceived = tuple(perceived)
-            if h.outcome == "untested":  # case 3: matched throughout (Algorithm 6.5 line 23, corrected)
+            if h.outcome == "untested" and self.confirms(h):  # matched throughout (Algorithm 6.5 line 23, corrected)
                 h.outcome = "case 3"
                 self.loop(it, h.dart)
                 self.position = h.arrival
@@ -135,6 +135,11 @@ class PhaseTwo:
         if sig.marked:  # a marked edge at an unmarked place (Version-2: e0, or a loop edge of phase I)
             self.M.mark_as_sensed(u, sig, 0)
         self.position = (u, heading)
+
+    def confirms(self, h: Hypothesis) -> bool:
+        """Whether a hypothesis whose perceptions matched P^E throughout is confirmed: yes (Algorithm 6.4
+        line 29; Algorithm 6.5 line 23 read literally, "do not match throughout", would never confirm one)."""
+        return True
 
     def retrace(self, done: list[int], degrees: list[int]) -> None:
         """The reverse of the motions ``done`` (Algorithm 3.1 line 17): 0, then −l mod deg, back to v_u."""

@@ -25,7 +25,8 @@ Decisions, with the thesis lines (each tested in ``tests/test_markers_case5.py``
   which contradicts "the unique marker count identifies v_u" (L1716).  We
   follow Algorithm 6.2 (Case 3a, which Version-1 says it combines, L1716): v0
   gets 1 and the j-th new place j + 1 (i ← 2 at line 3).  The literal counter
-  maps the triangle wrongly (the test's smallest world).
+  cannot map the triangle, the smallest world with a loop edge: the loop edge's
+  far end shows one marker, the label of two places (the ``failed`` outcome).
 * **Where phase I ends.**  Line 12 "if the robot has at least i markers" is the
   robot trying the drop (the kernel's robot counts nothing; the simulator
   refuses a drop the kit cannot cover before anything changes,
@@ -84,13 +85,17 @@ class VertexCountsThenLighthouse(PhaseTwo, VertexCounts):
             self.probe(it, place, sig.degree)
         elif self.phase == 1:  # lines 11-15
             u = self.non_loop(it, sig)
-            count = len(self.count_of) + 1
+            count = self.next_count()
             if self.try_drop(self.mark_op(count), it):
                 self.name_vertex(u, count)
             else:  # line 16 at the first refusal: every known place is marked, H is empty, line 35
                 self.phase, self.phase_two_from = 2, it.number
         else:  # lines 16-35
             self.phase_two(it, sig)
+
+    def next_count(self) -> int:
+        """i at line 13: v0 has 1, the j-th place discovered gets j + 1 (the counter decision above)."""
+        return len(self.count_of) + 1
 
     def lighthouse_path(self, v: int) -> list[MapDart]:
         """Lines 21–24: a shortest path of S from v_k' = ``v`` to the nearest marked v_l, then to v_n."""

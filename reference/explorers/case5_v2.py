@@ -23,8 +23,11 @@ Decisions, with the thesis lines (each tested in ``tests/test_markers_case5.py``
   throughout" (Algorithm 6.4 line 29, Algorithm 3.1).  We confirm on a full
   match; "exit for loop" is the inner while loop.  The literal line would
   confirm a hypothesis that line 21 has already rejected, and never one that
-  matched — on the smallest world where phase II must close a loop (the
-  triangle with K = 4) it maps wrongly; ours maps it.
+  matched.  On the smallest world where phase II must close a loop by a
+  hypothesis — the paw (a triangle with a pendant edge, 4 places) entered from
+  the pendant's free end with K = 4 — the literal reading adds the triangle's
+  first place twice (the checker's ``wrong-map``); ours maps it (and every
+  world of ≤ 5 places and degree ≤ 4 from every start, K = 4).
 * **Line 28** (guide): a one-marker v_u is always a phase-I place, so the
   non-loop branch after rejecting every hypothesis cannot be reached in a
   correct run; it is kept as Algorithm 3.1's non-loop augmentation (the checker
@@ -134,7 +137,10 @@ class VertexEdgeThenLighthouse(PhaseTwo, VertexEdgeFootprints):
 
     def show_e0(self, u: int) -> None:
         """e0's two markers lay there from the start (line 1), so the checker's S shows them at e0's far end as
-        soon as that place joins S (later marks reach S at termination, :meth:`MarkerWalk.finish`)."""
+        soon as that place joins S, when S shows marks only at termination (``marks_at_end``,
+        :meth:`MarkerWalk.finish`); otherwise S is M, which has them already."""
+        if self.S is self.M:
+            return
         for dm in self.M.dart_marks(u):
             if dm.count == 2:
                 self.S.mark_as_sensed(u, Signature(self.M.degree(u), edges=((dm.exit, 2, None),)), 0)
