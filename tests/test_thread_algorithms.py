@@ -15,7 +15,7 @@ from topomark.reference.explore import explore
 from topomark.reference.explorers import threads_carried, threads_explore, threads_knots
 from topomark.reference.policies import Policies
 from topomark.reference.registrations import threads
-from topomark.reference.registry import algorithm_spec
+from topomark.reference.registry import algorithm_spec, variant
 from topomark.reference.simulator import Simulator
 from topomark.spec.signature import Signature
 from topomark.spec.world import Start, World
@@ -86,6 +86,21 @@ def test_the_circumference_search_finds_worlds_that_run_out():
     found = bench_threads.search_circumference(40, seed=1)
     assert found["ran_out"] > 0 and found["never_longer_than_path_bound"]
     assert found["smallest"]["c"] < found["smallest"]["n"]
+
+
+class Unshown(threads_knots.KnotThreadExplorer):
+    """Lays the thread but never shows it in S."""
+
+    def show_thread(self) -> None:
+        pass
+
+
+def test_s_shows_the_thread_between_steps_and_a_map_that_does_not_is_caught():
+    out = explore(generators.cycle(4), "thread-knots")
+    assert out.outcome == "correct" and out.explorer.S.thread_marks == {}  # all rewound and untied at the end
+    hidden = explore(generators.cycle(4), variant("unshown", Unshown, like="thread-knots"))
+    assert hidden.outcome == "wrong-map" and hidden.violation.check == "I-1" and hidden.violation.where.startswith(
+        "map vertex 0")
 
 
 def test_the_carried_thread_is_the_directional_movable_marker():

@@ -35,8 +35,10 @@ that is not fully explored and the thread is shorter than l; when it reaches
 v_s fully explored, it unties the thread there, walks S to the closest not
 fully explored (frontier) vertex (**ours**: the choice is open, L2096) and
 ties the thread again there (line 21).  When U is empty the thread is all
-rewound and untied, so the final world carries no thread and S shows none
-(the thread is the robot's working state, never recorded in S).
+rewound and untied, so the final world carries no thread and S shows none.
+Between steps S shows the thread where it lies (``show_thread``: the robot
+laid every edge of it, so its record says what it would sense at each place;
+the checker compares that with the world after every step).
 
 Decisions where the thesis is silent:
 
@@ -71,7 +73,7 @@ from typing import Callable
 from topomark.spec.errors import AlgorithmFailed, CheckFailure, Violation
 from topomark.spec.kit import ThreadOp
 from topomark.spec.mapstate import MapDart, PartialMap
-from topomark.spec.signature import Signature
+from topomark.spec.signature import Signature, ThreadMark
 
 from ..policies import Policies, bfs
 from .movable_marker import MovableMarkerExplorer
@@ -122,6 +124,7 @@ class ThreadWalker:
         self.tied: int | None = None
         self.laid: list[MapDart] = []
         self.held = True
+        self.knots: dict[int, int] = {}  # position along ``laid`` ↦ knots tied there (thread-knots)
 
     # -- the explorer contract ----------------------------------------------------------
     def start(self) -> None:
@@ -138,15 +141,42 @@ class ThreadWalker:
 
     def finish(self, it: ThreadIteration) -> ThreadIteration:
         it.laid, it.tied = len(self.laid), self.tied
+        self.show_thread()
         self.iterations.append(it)
         if self.observer is not None:
             self.observer(self, it)
         return it
 
     # -- the thread ----------------------------------------------------------------------
+    def show_thread(self) -> None:
+        """S shows the thread where it lies now, from the robot's record of it (it laid every edge of it), so
+        S and the world agree between steps (the checker judges S against the live world): each map vertex's
+        :class:`ThreadMark` set, and cleared where the thread was rewound."""
+        now: dict[int, ThreadMark] = {}
+        if self.tied is not None:
+            walk, edges = self.on_thread(), self.thread_edges()
+            knots: Counter = Counter()
+            for pos, k in self.knots.items():
+                knots[walk[pos]] += k
+            end = walk[-1] if not self.held else None
+            now = {v: ThreadMark(v == self.tied, None, tuple(sorted(edges.get(v, Counter()).items())), v == end,
+                                 knots[v]) for v in walk}
+        S = self.S
+        for v in set(S.thread_marks) | set(now):
+            if S.thread_marks.get(v) != now.get(v):
+                if v in now:
+                    S.mark_as_sensed(v, Signature(S.degree(v), thread=now[v]), 0)  # absolute exits: entry 0
+                else:
+                    del S.thread_marks[v]
+                    S.journal.append(("mark", v))  # PartialMap has no unmark: journal it as mark_as_sensed does
+
+    def knot(self, count: int) -> None:
+        self.robot.operate(ThreadOp("knot", count=count))
+        self.knots[len(self.laid)] = self.knots.get(len(self.laid), 0) + count
+
     def tie(self) -> None:
         self.robot.operate(TIE)
-        self.tied, self.laid, self.held = self.position[0], [], True
+        self.tied, self.laid, self.held, self.knots = self.position[0], [], True, {}
 
     def leave_and_return(self, it: ThreadIteration) -> None:
         """Leave the free end at v_u and go back over e to v_k (not holding it, the move lays nothing)."""
@@ -161,7 +191,7 @@ class ThreadWalker:
 
     def untie(self) -> None:
         self.robot.operate(UNTIE)
-        self.tied, self.held = None, True
+        self.tied, self.held, self.knots = None, True, {}
 
     def open_exit(self, v: int) -> int | None:
         """The lowest unexplored exit of ``v`` (the closest edge, the robot standing there), or None."""
@@ -184,6 +214,7 @@ class ThreadWalker:
     def rewind(self, purpose: str = "retrace") -> None:
         """Move back along the last laid edge, picking it up; the robot enters its near end by that edge."""
         self.robot.rewind(purpose)
+        self.knots.pop(len(self.laid), None)  # knots beyond the rewound point come up with it (spec.thread)
         self.position = self.laid.pop()
 
     def on_thread(self, upto: int | None = None) -> list[int]:

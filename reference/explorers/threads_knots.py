@@ -52,7 +52,6 @@ Examples
 from __future__ import annotations
 
 from topomark.spec.errors import CheckFailure, Violation
-from topomark.spec.kit import ThreadOp
 from topomark.spec.signature import Signature
 
 from .threads_explore import ThreadIteration, ThreadWalker
@@ -69,7 +68,7 @@ class KnotThreadExplorer(ThreadWalker):
         """Lay the thread along the closest unexplored edge; knots name v_u; rewind out of explored places."""
         if self.tied is None:
             self.tie()
-            self.robot.operate(ThreadOp("knot", count=1))  # v0 = map vertex 0
+            self.knot(1)  # v0 = map vertex 0
         vk = self.position[0]
         i = self.open_exit(vk)
         self.S.unexplored.remove((vk, i))
@@ -78,7 +77,7 @@ class KnotThreadExplorer(ThreadWalker):
         if not sig.thread.knots:
             it.how = "new"
             self.non_loop_augment(it, sig.degree)
-            self.robot.operate(ThreadOp("knot", count=self.position[0] + 1))
+            self.knot(self.position[0] + 1)
         else:
             w = sig.thread.knots - 1
             self.check_knots(it, w, sig)
