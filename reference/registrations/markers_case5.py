@@ -30,9 +30,11 @@ knows how many markers it carries, only not how that compares with the world
 
 Case 0 is registered as *not deterministic* in the thesis's sense of the word
 (an algorithm that always maps the world, L1375): "this approach does not work
-in general" (L1491).  It runs, and on the certified pair of worlds in
-``tests/test_markers_case5.py`` it returns the same map for both, so one of the
-two runs is the checker's ``wrong-map``.
+in general" (L1491).  It runs, and on the certified pairs of worlds in
+``tests/vectors/case0/`` (K4 with two embeddings; K4 against a 5-place world,
+found by search over every embedded world of ≤ 5 places and degree ≤ 4 from
+every start) it senses exactly the same and returns the same map, so one run is
+the checker's ``wrong-map`` (``tests/test_markers_case5.py`` certifies them).
 
 Examples
 --------
