@@ -202,11 +202,7 @@ def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: 
     started: list = []  # the robot's true state once the explorer has started (v0, for a lighthouse algorithm)
     violation, stopped = _drive(explorer, checker, lambda: started.append(sim.state))
     outcome = _outcome(world, sim, explorer, checker, violation, trace, tally, spec, stopped)
-    if spec.summary_fn is not None:
-        outcome.extra = spec.summary_fn(explorer, world)
-    if spec.uses_lighthouse:
-        outcome.walk_steps = getattr(getattr(explorer, "beacon", None), "walk_steps", 0)
-        outcome.lighthouse_at = started[0][0] if started else None
+    _algorithm_counts(outcome, spec, explorer, world, started[0] if started else None)
     if emit:
         emit({"event": "end", "cost": sim.cost, "verified": outcome.verified,
               "violation": violation.to_json() if violation else None})
@@ -335,6 +331,16 @@ def _outcome(world: World, sim: Simulator, explorer, checker: Checker | None, vi
         upper_bound=bound, lighthouse=None if light is None else light.name,
         marker_operations=dict(sorted(sim.operations.items())), explorer=explorer, trace=trace, violation=violation,
         outcome=judged, claimed=claimed, reason=stopped.reason if stopped else None, kit=sim.kit.describe())
+
+
+def _algorithm_counts(outcome: Outcome, spec: AlgorithmSpec, explorer, world: World, v0_state) -> None:
+    """What only some algorithms have: their own counts (the registry's ``summary_fn``), and for a lighthouse
+    algorithm the walk that found v0 (§5.1, §6.1) and the world vertex v0 is."""
+    if spec.summary_fn is not None:
+        outcome.extra = spec.summary_fn(explorer, world)
+    if spec.uses_lighthouse:
+        outcome.walk_steps = getattr(getattr(explorer, "beacon", None), "walk_steps", 0)
+        outcome.lighthouse_at = v0_state[0] if v0_state else None
 
 
 def dump_trace(trace: list[dict]) -> str:
