@@ -183,6 +183,8 @@ def explore_command(args) -> int:
         _print_report(args, spec, label, policies, outcome, started, tail)
     if outcome.violation is not None and args.json:
         print(f"topomark: check failed: {outcome.violation}", file=sys.stderr)
+    if outcome.violation is not None:  # even unchecked: the explorer's own map refused what it found
+        return 1
     return 0 if outcome.outcome == "correct" or (args.no_check and outcome.claimed == "correct") else 1
 
 
