@@ -34,7 +34,10 @@ is an experiment too), ``table-4.1`` ... ``table-4.8``, ``tables`` (all of
 4.1-4.8: lattice-hole and complete-hole with every enhancement),
 ``policies`` (edge-selection policies side by side, basic and enh3),
 ``lighthouses`` (the lighthouses of §3.3, §6.1 and §6.2 side by side, basic
-and enh3: :mod:`~topomark.reference.bench_lighthouses`), ``all``.
+and enh3: :mod:`~topomark.reference.bench_lighthouses`), ``all``; and §6.2's
+marker algorithms (kit algorithms, :mod:`~topomark.reference.bench_table6`):
+``table-6.1`` (with Figures 6.11, 6.12), ``table-6.2`` (Figures 6.17, 6.18),
+``figure-6.13`` and ``section-6.2`` (all three; not part of ``all``).
 
 Runs go to ``DIR/runs.csv`` keyed by (experiment = family, size, seed,
 algorithm, edge policy, lighthouse); a restarted sweep skips keys already there.  Each
@@ -63,7 +66,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from . import bench_lighthouses, bench_report
+from . import bench_lighthouses, bench_report, bench_table6
 from .bench_plan import (EXPERIMENTS, FAMILIES, HEAVY_GRAPHS, HEAVY_MAX_SIZE, Experiment, Part, Run, fits,
                          is_heavy, plan, world_for)
 from .bench_report import latest, reduction, summarize
@@ -79,6 +82,8 @@ def write_report(experiment: str, out: Path, wall: float | None = None, plots: b
     """Generate ``out/EXPERIMENT.md`` (and plots) from ``out/runs.csv``; ``all`` also writes ``lighthouses.md``."""
     if experiment == "lighthouses":
         return bench_lighthouses.write_report(out, wall, plots)
+    if experiment in bench_table6.REPORTS:
+        return bench_table6.write_report(experiment, out, wall, plots)
     if experiment == "all":
         bench_lighthouses.write_report(out, None, plots)
     return bench_report.write_report(experiment, out, wall, plots)

@@ -9,6 +9,15 @@ worlds.  A lighthouse that needs a start vertex of degree >= 2
 (``three-undirected-edge``, §6.2) is not planned on a world whose drawn start
 has degree 1: that world is *skipped* for that lighthouse (never re-drawn, which
 would compare different starts), and the lighthouse report counts the skips.
+
+A part lists algorithms and *option sets*: each option set is a canonical
+string ``name=value[,name=value]`` (``""`` = the algorithm's defaults), part of
+a run's key, resolved against the world when the run starts
+(:func:`resolve_options`): a name the algorithm takes (``markers=4``) is passed
+as is; a *derived* option of :data:`DERIVED_OPTIONS` (``marked-fraction=0.25``)
+computes the algorithm's options from the world.  A kit algorithm (one that
+carries its own kit, §6.2) runs with no lighthouse: its runs are planned with
+:data:`NO_LIGHTHOUSE` whatever the part's lighthouses.
 """
 
 from __future__ import annotations
@@ -23,12 +32,17 @@ from topomark.spec.world import Start, World
 
 from . import generators as g
 from . import thesis_figures as tf
+from .explorers.counted_markers import sum_to
 from .explorers.lighthouses import LIGHTHOUSES
+from .registry import algorithm_spec
 
 __all__ = ["FAMILIES", "EXPERIMENTS", "Experiment", "Part", "Run", "plan", "world_for", "is_heavy", "fits",
-           "HEAVY_GRAPHS", "HEAVY_MAX_SIZE", "DEFAULT_LIGHTHOUSE", "LIGHTHOUSE_ALGS", "LIGHTHOUSE_COMPLETE_SIZES"]
+           "HEAVY_GRAPHS", "HEAVY_MAX_SIZE", "DEFAULT_LIGHTHOUSE", "LIGHTHOUSE_ALGS", "LIGHTHOUSE_COMPLETE_SIZES",
+           "NO_LIGHTHOUSE", "DERIVED_OPTIONS", "resolve_options", "option_set", "marked_fraction_markers",
+           "TABLE_61_ALGS", "TABLE_62_ALGS", "FRACTIONS", "FIGURE_613_SIZES"]
 
 DEFAULT_LIGHTHOUSE = "directional-vertex"
+NO_LIGHTHOUSE = "none"  # the lighthouse column of a kit algorithm's run (it carries its own kit)
 HEAVY_GRAPHS = 5
 HEAVY_MAX_SIZE = 55
 
@@ -93,6 +107,7 @@ class Part:
     sizes: tuple[int, ...] | None = None  # None: the family's sizes
     policies: tuple[str, ...] = ("nearest",)
     lighthouses: tuple[str, ...] = (DEFAULT_LIGHTHOUSE,)
+    options: tuple[str, ...] = ("",)  # option sets (module docstring); "" = the algorithm's defaults
 
 
 @dataclass(frozen=True)
@@ -136,6 +151,25 @@ EXPERIMENTS["lighthouses"] = Experiment(
     "lighthouses", (Part("lattice-hole", LIGHTHOUSE_ALGS, lighthouses=tuple(LIGHTHOUSES)),
                     Part("complete-hole", LIGHTHOUSE_ALGS, LIGHTHOUSE_COMPLETE_SIZES, lighthouses=tuple(LIGHTHOUSES))),
     "The lighthouses of §3.3, §6.1 and §6.2 side by side (lattice-hole and complete-hole worlds)")
+TABLE_61_ALGS = ("case-1a", "case-1b", "case-2", "case-3a", "case-3b", "case-4", "case-4-mn", "case-5-v1",
+                 "case-5-v2", "case-0")
+TABLE_62_ALGS = ("case-dv-sum", "extension-1", "extension-2", "case-3b")  # case-3b: the undirected original
+FRACTIONS = ("0", "0.1", "0.25", "0.5", "0.75", "1")
+FIGURE_613_SIZES = {"lattice-hole": (72, 90, 108, 152, 202), "complete-hole": (24, 28, 32, 36, 40)}
+EXPERIMENTS["table-6.1"] = Experiment(
+    "table-6.1", tuple(Part(f, TABLE_61_ALGS) for f in ("lattice-hole", "complete-hole")),
+    "Table 6.1 and Figures 6.11, 6.12: §6.2.1's undirected marker algorithms, measured")
+EXPERIMENTS["table-6.2"] = Experiment(
+    "table-6.2", tuple(Part(f, TABLE_62_ALGS) for f in ("lattice-hole", "complete-hole")),
+    "Table 6.2 and Figures 6.17, 6.18: §6.2.2's directional marker algorithms, measured")
+EXPERIMENTS["figure-6.13"] = Experiment(
+    "figure-6.13", tuple(p for f, sizes in FIGURE_613_SIZES.items() for p in (
+        Part(f, ("case-5-v1",), sizes, options=tuple(f"marked-fraction={x}" for x in FRACTIONS)),
+        Part(f, ("basic", "case-3a"), sizes))),
+    "Figure 6.13: Version-1 (Algorithm 6.4) with different fractions of uniquely marked vertices")
+EXPERIMENTS["section-6.2"] = Experiment(
+    "section-6.2", EXPERIMENTS["table-6.1"].parts + EXPERIMENTS["table-6.2"].parts + EXPERIMENTS["figure-6.13"].parts,
+    "§6.2: every marker algorithm of Tables 6.1 and 6.2 and Figures 6.11-6.13, 6.17, 6.18")
 EXPERIMENTS["all"] = Experiment("all", EXPERIMENTS["figure-3.10"].parts + EXPERIMENTS["figure-3.11"].parts
                                 + EXPERIMENTS["figure-3.12"].parts + EXPERIMENTS["tables"].parts
                                 + EXPERIMENTS["policies"].parts + EXPERIMENTS["lighthouses"].parts,
@@ -150,10 +184,55 @@ class Run:
     algorithm: str
     policy: str = "nearest"
     lighthouse: str = DEFAULT_LIGHTHOUSE
+    options: str = ""  # an option set (module docstring)
 
     @property
-    def key(self) -> tuple[str, str, str, str, str, str]:
-        return (self.family, str(self.size), str(self.seed), self.algorithm, self.policy, self.lighthouse)
+    def key(self) -> tuple[str, str, str, str, str, str, str]:
+        return (self.family, str(self.size), str(self.seed), self.algorithm, self.policy, self.lighthouse,
+                self.options)
+
+
+def marked_fraction_markers(world: World, algorithm: str, value: str) -> dict:
+    """``marked-fraction=f`` for Case 5 Version-1 (Figure 6.13): the K that uniquely marks ⌊f·n⌋ places.
+
+    Version-1 gives v0 one marker and the j-th new place j + 1 until a drop is refused
+    (:mod:`~topomark.reference.explorers.case5_v1`), so K = Σ_{i=1}^{p} i marks exactly p places.  The
+    thesis gives no fractions and no K (guide §6.9: "The fraction values are not given"); we give
+    K = max(4, Σ_{i=1}^{⌊f·n⌋} i).  K ≥ 4 is the algorithm's least kit ("k > 3", L1708), which marks 2
+    places: "0%" is that least kit (2 of n places marked), and 100% is Σ_{i=1}^{n} i (every place).
+    """
+    if algorithm != "case-5-v1":
+        raise InvalidInput(f"marked-fraction is defined for case-5-v1 only (given for {algorithm})")
+    f = float(value)
+    if not 0 <= f <= 1:
+        raise InvalidInput(f"marked-fraction must be in [0, 1] (given {value})")
+    return {"markers": max(4, sum_to(int(f * world.n + 1e-9)))}
+
+
+DERIVED_OPTIONS: dict[str, Callable[[World, str, str], dict]] = {"marked-fraction": marked_fraction_markers}
+"""A derived option's name ↦ (world, algorithm, value) → the algorithm's options."""
+
+
+def option_set(options: str) -> list[tuple[str, str]]:
+    """The (name, value) pairs of a canonical option set ``name=value[,name=value]`` (``""``: none)."""
+    pairs = []
+    for item in filter(None, options.split(",")):
+        name, sep, value = item.partition("=")
+        if not sep or not name:
+            raise InvalidInput(f"option set {options!r}: {item!r} is not name=value")
+        pairs.append((name, value))
+    return pairs
+
+
+def resolve_options(options: str, world: World, algorithm: str) -> dict:
+    """The options ``explore`` gets for a run with this option set on this world."""
+    out: dict = {}
+    for name, value in option_set(options):
+        if name in DERIVED_OPTIONS:
+            out.update(DERIVED_OPTIONS[name](world, algorithm, value))
+        else:
+            out[name] = value
+    return out
 
 
 def world_for(family: str, size: int, seed: int) -> World:
@@ -174,6 +253,8 @@ def _start_degree(family: str, size: int, seed: int) -> int:
 
 def fits(family: str, size: int, seed: int, lighthouse: str) -> bool:
     """Whether the lighthouse can be dropped at the start drawn for this world (its start-degree condition)."""
+    if lighthouse == NO_LIGHTHOUSE:
+        return True
     need = LIGHTHOUSES[lighthouse].min_degree
     return need <= 1 or _start_degree(family, size, seed) >= need
 
@@ -197,9 +278,10 @@ def plan(experiment: str, graphs: int = 30, sizes: list[int] | None = None,
                 count = graphs
                 if is_heavy(part.family, alg):
                     count = min(graphs, heavy_graphs) if size <= heavy_max_size else 0
+                lights = part.lighthouses if algorithm_spec(alg).uses_lighthouse else (NO_LIGHTHOUSE,)
                 for seed in range(count):
-                    runs.update(Run(part.family, size, seed, alg, pol, lh) for pol in part.policies
-                                for lh in part.lighthouses if fits(part.family, size, seed, lh))
+                    runs.update(Run(part.family, size, seed, alg, pol, lh, opt) for pol in part.policies
+                                for lh in lights for opt in part.options if fits(part.family, size, seed, lh))
     return sorted(runs, key=lambda r: (r.seed, -_weight(r), r))
 
 

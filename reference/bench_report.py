@@ -17,7 +17,7 @@ import statistics
 from pathlib import Path
 
 from . import thesis_figures as tf
-from .bench_plan import DEFAULT_LIGHTHOUSE, EXPERIMENTS, FAMILIES, Experiment, Part, is_heavy
+from .bench_plan import DEFAULT_LIGHTHOUSE, EXPERIMENTS, FAMILIES, NO_LIGHTHOUSE, Experiment, Part, is_heavy
 from .runstore import read_runs, row_key, write_atomic
 
 __all__ = ["write_report", "summarize", "latest", "reduction", "lighthouse_of", "run_totals", "plot_lines"]
@@ -105,7 +105,8 @@ def _between_bounds(rows: list[dict], quote: bool) -> str:
 def _in_experiment(exp: Experiment, row: dict) -> bool:
     """Whether a CSV row is one of the runs ``exp`` plans (any seed): the CSV may hold other experiments' runs."""
     return any(row["experiment"] == p.family and row["algorithm"] in p.algorithms
-               and (row.get("policy") or "nearest") in p.policies and lighthouse_of(row) in p.lighthouses
+               and (row.get("policy") or "nearest") in p.policies
+               and lighthouse_of(row) in p.lighthouses + (NO_LIGHTHOUSE,) and (row.get("options") or "") in p.options
                and (p.sizes is None or int(row["size"]) in p.sizes) for p in exp.parts)
 
 

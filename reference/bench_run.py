@@ -5,6 +5,15 @@ records the world (n, m), the cost split by purpose, the explorer's counters,
 the bounds, the wall and CPU time, whether it was checked and verified, and
 the algorithm, edge policy and lighthouse it ran with.  Runs already in the
 file (same key, :func:`~topomark.reference.runstore.row_key`) are skipped.
+
+A kit algorithm (§6.2: it carries its own markers, no lighthouse) runs with its
+option set resolved against the world
+(:func:`~topomark.reference.bench_plan.resolve_options`); its row adds the
+outcome (correct / wrong-map / failed / limit), the markers used — the sum of
+the counts the simulator dropped, as its ``op`` events say (:class:`DropCount`)
+— the algorithm's stated marker bound for this n and m (``marker_bound``), the
+cost bound of its registry entry (``upper_bound``, empty if it states none) and
+the world's largest degree (``d_max``, for O(m·d_max)).
 """
 
 from __future__ import annotations
@@ -14,33 +23,53 @@ import sys
 import time
 from pathlib import Path
 
-from .bench_plan import Run, world_for
-from .bounds import expression_3_3, upper_bound
+from .bench_plan import Run, resolve_options, world_for
+from .bounds import expression_3_3
 from .explore import explore
 from .policies import Policies
+from .registry import algorithm_spec
 from .runstore import Appender, locked, read_runs, rewrite, row_key
 
-__all__ = ["run_one", "run_sweep", "Progress"]
+__all__ = ["run_one", "run_sweep", "Progress", "DropCount"]
+
+
+class DropCount:
+    """A trace sink that keeps only the markers dropped (less those picked up): the sum of the ``count`` of the
+    simulator's ``op`` records (``spec/trace.md``), i.e. the markers lying in the world at the end."""
+
+    def __init__(self) -> None:
+        self.markers = 0
+
+    def emit(self, record: dict) -> None:
+        if record.get("event") == "op" and record.get("op") in ("drop", "pick_up"):
+            self.markers += record.get("count", 1) * (1 if record["op"] == "drop" else -1)
 
 
 def run_one(run: Run, check: bool = True) -> dict:
     t, cpu = time.perf_counter(), time.process_time()
     world = world_for(run.family, run.size, run.seed)
     row = {"experiment": run.family, "size": run.size, "seed": run.seed, "algorithm": run.algorithm,
-           "policy": run.policy, "lighthouse": run.lighthouse, "n": world.n, "m": world.m, "checked": check, "error": ""}
+           "policy": run.policy, "lighthouse": run.lighthouse, "options": run.options, "n": world.n, "m": world.m,
+           "d_max": max(world.degree(v) for v in world.vertices), "checked": check, "error": ""}
+    drops = None
     try:
-        out = explore(world, run.algorithm, Policies(edge=run.policy), check=check, record=False,
-                      keep_hypotheses=False, lighthouse=run.lighthouse)
+        spec = algorithm_spec(run.algorithm)
+        kwargs = {"lighthouse": run.lighthouse} if spec.uses_lighthouse else {"sink": (drops := DropCount())}
+        out = explore(world, spec, Policies(edge=run.policy), check=check, record=False, keep_hypotheses=False,
+                      options=resolve_options(run.options, world, run.algorithm) or None, **kwargs)
     except Exception as exc:  # a crashed run is recorded, never silently dropped
-        row.update(cost="", verified=False, error=f"{type(exc).__name__}: {exc}")
+        row.update(cost="", verified=False, outcome="error", error=f"{type(exc).__name__}: {exc}")
         return row
     stats = getattr(out.explorer, "stats", {})
-    row.update(cost=out.cost, cost_per_m=round(out.cost / world.m, 3), verified=out.verified,
-               hypotheses=out.hypotheses, upper_bound=upper_bound(world.n, world.m),
+    row.update(cost=out.cost, cost_per_m=round(out.cost / world.m, 3), verified=out.verified, outcome=out.outcome,
+               hypotheses=out.hypotheses, upper_bound="" if out.upper_bound is None else out.upper_bound,
                expression_3_3=round(float(expression_3_3(world.n, world.m))),
                seconds=round(time.perf_counter() - t, 3), cpu_seconds=round(time.process_time() - cpu, 3),
-               error="" if out.violation is None else str(out.violation))
-    for p in ("travel", "new", "validation", "retrace", "expansion"):
+               error=str(out.violation) if out.violation is not None else out.reason or "")
+    if drops is not None:
+        row.update(markers_used=drops.markers, marker_bound=spec.marker_bound_fn(world.n, world.m)
+                   if spec.marker_bound_fn else "")
+    for p in ("travel", "new", "validation", "retrace", "expansion", "other"):
         row[p] = out.by_purpose.get(p, 0)
     for s in ("pruned", "rejected_without_motion", "overlap_saved", "recorded"):
         row[s] = stats.get(s, 0)

@@ -1,4 +1,5 @@
-"""``topomark bench``: the thesis's experiments (Figures 3.10-3.12, Tables 4.1-4.8, the lighthouses), checked and resumable."""
+"""``topomark bench``: the thesis's experiments (Figures 3.10-3.12, Tables 4.1-4.8, the lighthouses, Tables 6.1-6.2
+and Figures 6.11-6.13, 6.17, 6.18), checked and resumable."""
 
 from __future__ import annotations
 
@@ -15,7 +16,8 @@ __all__ = ["register"]
 
 def register(sub) -> None:
     p = sub.add_parser(
-        "bench", help="run a thesis experiment (figures 3.10-3.12, tables 4.1-4.8, lighthouses) and write CSV + report",
+        "bench", help="run a thesis experiment (figures 3.10-3.12, tables 4.1-4.8, lighthouses, tables 6.1-6.2) and "
+             "write CSV + report",
         description="Run EXPERIMENT over fixed-seed worlds, every run checked (invariants after every iteration, "
                     "final isomorphism) unless --no-check; append each run to DIR/runs.csv (a restarted sweep "
                     "skips finished runs; one sweep at a time per DIR) and write DIR/EXPERIMENT.md and plots. "

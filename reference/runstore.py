@@ -16,8 +16,11 @@ This module keeps that file sound when runs are killed or started twice:
   and the line.  :func:`rewrite` then writes the repaired rows back
   atomically (a sweep does this under the lock).
 * A file written before a column of :data:`DEFAULTS` existed (``policy``,
-  ``lighthouse``) reads with that column's default value, and a sweep
-  rewrites it with the current columns before appending to it.
+  ``lighthouse``, ``options``) reads with that column's default value, and a
+  sweep rewrites it with the current columns before appending to it; a column
+  that is not part of a run's key (``outcome``, ``markers_used``,
+  ``marker_bound``, ``d_max``, ``other``: added for §6.2's kit algorithms) reads
+  as missing (empty when rewritten).
 """
 
 from __future__ import annotations
@@ -42,24 +45,27 @@ except ImportError:  # pragma: no cover - not on the platforms topomark supports
 
 __all__ = ["CSV_FIELDS", "DEFAULTS", "Runs", "read_runs", "rewrite", "row_key", "locked", "Appender", "write_atomic"]
 
-CSV_FIELDS = ("experiment", "size", "seed", "algorithm", "policy", "lighthouse", "n", "m", "cost", "cost_per_m", "verified",
-              "checked", "travel", "new", "validation", "retrace", "expansion", "hypotheses", "pruned",
+CSV_FIELDS = ("experiment", "size", "seed", "algorithm", "policy", "lighthouse", "options", "n", "m", "d_max", "cost",
+              "cost_per_m", "verified", "checked", "outcome", "markers_used", "marker_bound", "travel", "new",
+              "validation", "retrace", "expansion", "other", "hypotheses", "pruned",
               "rejected_without_motion", "overlap_saved", "recorded", "upper_bound", "expression_3_3", "seconds",
               "cpu_seconds", "error")
 REQUIRED = ("experiment", "size", "seed", "algorithm", "cost", "checked", "verified", "error")
 INTEGERS = ("size", "seed")
 NUMBERS = ("n", "m", "cost", "cost_per_m", "travel", "new", "validation", "retrace", "expansion", "hypotheses",
-           "upper_bound", "expression_3_3", "seconds", "cpu_seconds")
+           "upper_bound", "expression_3_3", "seconds", "cpu_seconds", "d_max", "markers_used", "marker_bound", "other")
 
 
-DEFAULTS = {"policy": "nearest", "lighthouse": "directional-vertex"}
+DEFAULTS = {"policy": "nearest", "lighthouse": "directional-vertex", "options": ""}
 """Columns added after the first runs files were written, and the value a row without them ran with."""
 
 
-def row_key(row: dict) -> tuple[str, str, str, str, str, str]:
-    """(family, size, seed, algorithm, edge policy, lighthouse): what a restarted sweep matches finished runs by."""
+def row_key(row: dict) -> tuple[str, str, str, str, str, str, str]:
+    """(family, size, seed, algorithm, edge policy, lighthouse, option set): what a restarted sweep matches
+    finished runs by."""
     return (row["experiment"], str(row["size"]), str(row["seed"]), row["algorithm"],
-            row.get("policy") or DEFAULTS["policy"], row.get("lighthouse") or DEFAULTS["lighthouse"])
+            row.get("policy") or DEFAULTS["policy"], row.get("lighthouse") or DEFAULTS["lighthouse"],
+            row.get("options") or DEFAULTS["options"])
 
 
 def _note(message: str) -> None:
