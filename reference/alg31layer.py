@@ -262,6 +262,8 @@ class Algorithm31Layer:
             diverge(it, "a join of two open darts of S", str(exc))
 
     def end(self, rec: dict) -> None:
+        if "outcome" in rec:  # the run stopped (failed, limit) before it had a map: nothing to judge beyond the moves
+            return
         S = self.ready("end", "the end", "a marker drop and m iterations", "no drop")
         world = self.world
         if self.iterations != world.m:

@@ -204,8 +204,11 @@ def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: 
     outcome = _outcome(world, sim, explorer, checker, violation, trace, tally, spec, stopped)
     _algorithm_counts(outcome, spec, explorer, world, started[0] if started else None)
     if emit:
-        emit({"event": "end", "cost": sim.cost, "verified": outcome.verified,
-              "violation": violation.to_json() if violation else None})
+        end = {"event": "end", "cost": sim.cost, "verified": outcome.verified,
+               "violation": violation.to_json() if violation else None}
+        if stopped is not None:  # trace@2 only: trace@1 runs (Algorithm 3.1's own lighthouse) never stop early
+            end.update(outcome=stopped.outcome, reason=stopped.reason)
+        emit(end)
     return outcome
 
 

@@ -155,6 +155,8 @@ def replay(world: World, records: Iterable[dict[str, Any]], source: str = "<trac
                           "the trace claims a failure but replay finds none")
         return ReplayResult(False, f"line {line}: {false}", r.robot.steps, r.iterations, false, line, layers=r.layers)
     note = "" if rec["verified"] else " (the recorder did not judge the run: verified false, no violation)"
+    if "outcome" in rec:
+        return ReplayResult(True, _stopped(r, rec), r.robot.steps, r.iterations, layers=r.layers)
     return ReplayResult(True, _verified(r) + note, r.robot.steps, r.iterations, layers=r.layers)
 
 
@@ -169,6 +171,13 @@ def _verified(r: _Replay) -> str:
     return (f"{steps} traversals{ops}, {r.iterations} iterations, every perception matches the world, every "
             f"purpose and hypothesis record holds, Lemma 1, I-1/I-2 held after every iteration, the map is "
             f"extended-isomorphic{layers}")
+
+
+def _stopped(r: _Replay, end: dict) -> str:
+    """A run that stopped before it had a map (trace@2 ``end.outcome``): what replay verified up to there."""
+    layers = " and the algorithm-3.1 layer's records" if r.algorithm is not None else ""
+    return (f"{r.robot.steps} traversals and {_ops(r.robot.ops)}, every perception and signature matches the world"
+            f"{layers}; the run stopped before it had a map: {end['outcome']} ({end['reason']})")
 
 
 def _ops(k: int) -> str:

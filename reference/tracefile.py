@@ -53,6 +53,8 @@ MAX_LINE_BYTES = 64 << 20
 OUTCOMES = ("case 1", "case 2", "case 3", "untested")
 REJECTED_BY = ("motion", "overlap", "map")
 AUGMENTATIONS = ("loop", "non-loop")
+STOPPED = ("failed", "limit")
+"""trace@2's ``end.outcome``: the run stopped before it had a map (spec.errors.OUTCOMES), ``end.reason`` says why."""
 
 _I, _N, _S, _B, _O, _L, _D = "integer", "natural", "string", "boolean", "object", "list", "dart"
 _SIG, _SIGS, _INTS, _DARTS, _JOIN = "signature", "signatures", "integers", "darts", "join"
@@ -73,7 +75,8 @@ EVENTS_2: dict[str, Schema] = {
     "header": ({"format": _S, "family": _S, "algorithm": _S, "policies": _O, "lighthouse": _S_OR_NULL, "kit": _O,
                 "n": _I, "m": _I}, {}),
     "op": ({"step": _N, "op": OPS, "kind": KINDS, "count": _POS, "signature": _SIG}, {"exit": _N, "direction": _DIR}),
-    **{k: v for k, v in EVENTS.items() if k not in ("header", "drop")},
+    **{k: v for k, v in EVENTS.items() if k not in ("header", "drop", "end")},
+    "end": ({"cost": _I, "verified": _B, "violation": _OBJ_OR_NULL}, {"outcome": STOPPED, "reason": _S}),
 }
 HYPOTHESIS: Schema = ({"dart": _D, "motions": _INTS, "expected": _SIGS, "outcome": OUTCOMES, "perceived": _SIGS},
                       {"rejected_by": REJECTED_BY})
@@ -165,6 +168,10 @@ def _check_record(rec: Any, where: str, table: dict[str, Schema], allowed: tuple
             _check_object(h, HYPOTHESIS, f"iteration.hypotheses[{k}]", f"iteration.hypotheses[{k}]", where)
         if "enhancement" in rec:
             _check_object(rec["enhancement"], ENHANCEMENT, "iteration.enhancement", "iteration.enhancement", where)
+    elif event == "end" and ("outcome" in rec) != ("reason" in rec) or "outcome" in rec and (
+            rec["verified"] or rec["violation"] is not None):
+        raise InvalidInput(f"{where}: end.outcome and end.reason come together (the run stopped, and why), on an end "
+                           f"neither verified nor a violation")
     elif event == "end" and rec["violation"] is not None:
         _check_object(rec["violation"], VIOLATION, "end.violation", "end.violation", where)
         if rec["verified"]:

@@ -208,3 +208,18 @@ def test_i2_is_checked_only_where_the_algorithm_names_it(mode):
     assert out.violation.check == "extended isomorphism"
     named = explore(generators.cycle(5), replace(spec, checks=("pose", "I-1", "I-2", "isomorphism")), check_mode=mode)
     assert named.violation.check == "I-2"
+
+
+def test_a_stopped_runs_trace_replays_up_to_where_it_stopped(tmp_path):
+    from topomark.reference.replay import replay
+    from topomark.reference.tracefile import parse_trace
+    from topomark.reference.explore import dump_trace
+    world = generators.lattice(3, 3)
+    out = explore(world, "case-3b", options={"markers": 2})
+    assert out.outcome == "failed" and out.trace[-1]["outcome"] == "failed" and out.trace[-1]["reason"] == out.reason
+    text = dump_trace(out.trace)
+    result = replay(world, parse_trace(text))
+    assert result.ok and "stopped before it had a map: failed (out of markers" in result.message
+    bad = text.replace('"outcome":"failed",', "")  # a reason with no outcome: the end contradicts itself
+    with pytest.raises(InvalidInput, match="end.outcome and end.reason come together"):
+        replay(world, parse_trace(bad))
