@@ -172,8 +172,12 @@ def test_repository_layout_matches_the_packages():
     meta = tomllib.loads((ROOT / "pyproject.toml").read_text())
     dirs = meta["tool"]["setuptools"]["package-dir"]
     assert dirs == {"topomark.spec": "spec", "topomark.reference": "reference",
-                    "topomark.reference.explorers": "reference/explorers", "topomark.proofs": "proofs"}
+                    "topomark.reference.explorers": "reference/explorers",
+                    "topomark.reference.registrations": "reference/registrations", "topomark.proofs": "proofs"}
     assert sorted(meta["tool"]["setuptools"]["packages"]) == sorted(dirs)
+    folders = {str(p.parent.relative_to(ROOT)) for top in ("spec", "reference", "proofs")
+               for p in (ROOT / top).rglob("__init__.py") if "examples" not in p.parts}
+    assert folders == set(dirs.values())  # a new package folder must be declared, or a wheel would miss it
     for d in dirs.values():
         assert (ROOT / d / "__init__.py").is_file()
     assert meta["project"]["scripts"]["topomark"] == "topomark.reference.cli:main"
