@@ -155,6 +155,18 @@ def check_invariants(S: PartialMap, world: World, anchor: Anchor) -> Violation |
     return check_I2(S, world, phi.witness)
 
 
+def _changed_places(a: World, b: World) -> set[str] | None:
+    """The world vertices whose marks (vertex, edge, thread) differ between ``a`` and ``b``, two states of one
+    run's world (same rotation); None when the rotations differ (then every place must be re-checked)."""
+    if a.rotation is not b.rotation and a.rotation != b.rotation:
+        return None
+    out: set[str] = set()
+    for da, db in ((a._vmarks, b._vmarks), (a._dmarks, b._dmarks),
+                   (getattr(a, "thread_marks", None) or {}, getattr(b, "thread_marks", None) or {})):
+        out.update(x for x, _ in da.items() ^ db.items())
+    return out
+
+
 class IncrementalInvariants:
     """I-1 and I-2 checked per change of S, for long runs (§3.4).
 
@@ -220,8 +232,9 @@ class IncrementalInvariants:
         already mapped — S must show what now lies there."""
         if world is self.world:
             return None
+        changed = _changed_places(self.world, world)
         self.world = world
-        for v in self.f:
+        for v in self.f if changed is None else [self.inv[x] for x in changed if x in self.inv]:
             bad = self._marks(v)
             if bad is not None:
                 return bad

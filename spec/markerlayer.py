@@ -52,7 +52,7 @@ from typing import Iterator
 from .errors import InvalidInput
 from .kit import MarkerOp, ThreadOp
 from .marker import EdgeMarker, Marker, VertexMarker
-from .thread import Thread, ThreadedWorld, ThreadMark, ThreadState
+from .thread import ThreadedWorld, ThreadMark, ThreadState
 from .world import DartMark, VertexMark, World
 
 __all__ = ["MarkerLayer", "apply_op"]
@@ -195,11 +195,11 @@ class MarkerLayer:
     def world(self) -> World:
         """A :class:`World` with the current markers (built once per change, on demand)."""
         if self._world is None:
-            thread = Thread.of(self.base, self.thread)
-            if thread is None:
+            if self.thread.tied is None:
                 self._world = World(self.base.rotation, tuple(self.markers()), self.base.start)
-            else:
-                self._world = ThreadedWorld(self.base.rotation, tuple(self.markers()), self.base.start, thread)
+            else:  # a snapshot, not re-validated: this layer's operations keep the world and the thread valid
+                self._world = ThreadedWorld.of_layer(self.base, tuple(self.markers()), self._vmarks, self._dmarks,
+                                                     self.thread)
         return self._world
 
 

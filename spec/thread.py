@@ -108,9 +108,14 @@ def unshifted(mark: ThreadMark, entry: int, degree: int) -> ThreadMark:
 class ThreadState:
     """The thread of one run: ``tied`` (vertex or None), ``head`` (absolute exit there or None),
     ``laid`` (darts laid from the tied vertex, in order), ``held`` (the robot holds the free end),
-    ``knots`` (position along ``laid`` ↦ knots tied there)."""
+    ``knots`` (position along ``laid`` ↦ knots tied there).
 
-    __slots__ = ("tied", "head", "laid", "held", "knots", "_marks")
+    Its marks (:meth:`marks`) are kept up to date as it changes, not rebuilt: a lay or a rewind touches
+    the two ends of one edge, a knot, a leave or a take the free end's vertex, so each change recomputes
+    the :class:`ThreadMark` of those vertices only (from per-vertex counts of laid edges, walk visits and
+    knots).  Change the thread only through :meth:`apply`, :meth:`pull` and :meth:`restore`."""
+
+    __slots__ = ("tied", "head", "laid", "held", "knots", "_walk", "_visits", "_edges", "_knot_at", "_marks")
 
     def __init__(self) -> None:
         self.tied: str | None = None
@@ -118,7 +123,11 @@ class ThreadState:
         self.laid: list[tuple[str, int]] = []
         self.held = True
         self.knots: dict[int, int] = {}
-        self._marks: dict[str, ThreadMark] | None = {}
+        self._walk: list[str] = []  # the laid walk's vertices, from the tied one
+        self._visits: dict[str, int] = {}  # vertex -> times the walk passes it
+        self._edges: dict[str, dict[int, int]] = {}  # vertex -> exit -> times the thread lies along it
+        self._knot_at: dict[str, int] = {}  # vertex -> knots tied there
+        self._marks: dict[str, ThreadMark] = {}
 
     def end_vertex(self, world: World) -> str | None:
         """Where the free end is (at the robot when held): the laid walk's last vertex."""
@@ -137,29 +146,29 @@ class ThreadState:
             _need(self.tied is None, f"the thread is already tied at a vertex; untie it before tying it at {v!r}")
             if op.direction is not None and not (_int(op.direction) and 0 <= op.direction < d):
                 raise InvalidInput(f"thread direction {op.direction!r} is not an exit of a vertex of degree {d}")
-            self.tied, self.head = v, None if op.direction is None else (entry + op.direction) % d
-            self.laid, self.held, self.knots = [], True, {}
+            self.restore(world, v, None if op.direction is None else (entry + op.direction) % d, (), True, {})
         elif kind == "untie":
             _need(self.tied == v and not self.laid, "untie needs the robot at the tied vertex with the whole "
                                                     "thread rewound to it")
-            self.tied, self.head, self.held, self.knots = None, None, True, {}
+            self.restore(world, None, None, (), True, {})
         elif kind == "leave":
             _need(self.tied is not None and self.held, "leave needs a tied thread whose free end the robot holds")
             self.held = False
+            self._touch(self._walk[-1])
         elif kind == "take":
             _need(self.tied is not None and not self.held and self.end_vertex(world) == v,
                   f"take needs the thread's free end lying at {v!r}, where the robot is")
             self.held = True
+            self._touch(v)
         elif kind == "knot":
             _need(self.tied is not None and self.held, "a knot is tied on a tied thread whose free end the robot holds")
             if not (_int(op.count) and op.count >= 1):
                 raise InvalidInput(f"a knot count must be a positive integer, got {op.count!r}")
-            self.knots[len(self.laid)] = self.knots.get(len(self.laid), 0) + op.count
+            self._knot(len(self.laid), op.count)
         elif kind == "rewind":
             raise InvalidInput("rewind moves the robot: it is a move back along the thread (Robot.rewind)")
         else:
             raise InvalidInput(f"unknown thread operation {kind!r}")
-        self._marks = None
 
     def rewind_exit(self, world: World, state: tuple[str, int]) -> int:
         """The motion that rewinds the last laid edge from ``state``; InvalidInput if there is none."""
@@ -179,43 +188,77 @@ class ThreadState:
         v, entry = state
         dart = (v, (entry + motion) % world.degree(v))
         if self.laid and world.target(self.laid[-1]) == dart:
-            self.knots.pop(len(self.laid), None)
-            self.laid.pop()
-            self._marks = None
+            k = self.knots.pop(len(self.laid), None)
+            if k:
+                self._knot_at[self._walk[-1]] -= k
+            self._unlay(world)
             return True
         if len(self.laid) >= length:
             what = "l = ε: it is only long enough to be tied" if length == 0 else f"{len(self.laid)} edges laid"
             raise InvalidInput(f"the thread would run out: the kit's thread has length {length or 'ε'} ({what}); "
                                "rewind or leave the free end first")
-        self.laid.append(dart)
-        self._marks = None
+        self._lay(world, dart)
         return False
 
     def marks(self, world: World) -> dict[str, ThreadMark]:
-        """Every vertex the thread touches ↦ its :class:`ThreadMark` (recomputed after a change)."""
-        if self._marks is None:
-            self._marks = _marks(world, self.tied, self.head, self.laid, not self.held, self.knots)
+        """Every vertex the thread touches ↦ its :class:`ThreadMark` (kept up to date; do not mutate it)."""
         return self._marks
 
+    def restore(self, world: World, tied: str | None, head: int | None, laid: Iterable[tuple[str, int]],
+                held: bool, knots: dict[int, int]) -> None:
+        """Set the whole thread at once (tie, untie, a thread read from a file) and build its marks."""
+        self.tied, self.head, self.laid, self.held, self.knots = tied, head, [], True, {}
+        self._marks.clear()  # in place: holders of marks() see the thread as it is now
+        self._walk, self._visits, self._edges, self._knot_at = [], {}, {}, {}
+        if tied is None:
+            return
+        self._walk.append(tied)
+        self._visits[tied] = 1
+        for dart in laid:
+            self._lay(world, dart)
+        for pos, k in knots.items():
+            self._knot(pos, k)
+        self.held = held
+        self._touch(tied, self._walk[-1])
 
-def _marks(world: World, tied, head, laid, end_left: bool, knots: dict[int, int]) -> dict[str, ThreadMark]:
-    if tied is None:
-        return {}
-    edges: dict[str, dict[int, int]] = {}
-    walk = [tied]
-    for v, i in laid:
-        w, j = world.target((v, i))
-        for x, e in ((v, i), (w, j)):
-            edges.setdefault(x, {})[e] = edges.setdefault(x, {}).get(e, 0) + 1
-        walk.append(w)
-    knot_at: dict[str, int] = {}
-    for pos, k in knots.items():
-        knot_at[walk[pos]] = knot_at.get(walk[pos], 0) + k
-    out = {}
-    for v in set(walk):
-        out[v] = ThreadMark(v == tied, head if v == tied else None, tuple(sorted(edges.get(v, {}).items())),
-                            end_left and v == walk[-1], knot_at.get(v, 0))
-    return out
+    # -- keeping the marks: each change recomputes the ThreadMark of the vertices it touches ----
+    def _lay(self, world: World, dart: tuple[str, int]) -> None:
+        w, j = world.target(dart)
+        self.laid.append(dart)
+        self._walk.append(w)
+        self._visits[w] = self._visits.get(w, 0) + 1
+        for x, e in (dart, (w, j)):
+            at = self._edges.setdefault(x, {})
+            at[e] = at.get(e, 0) + 1
+        self._touch(dart[0], w)
+
+    def _unlay(self, world: World) -> None:
+        dart = self.laid.pop()
+        w = self._walk.pop()
+        self._visits[w] -= 1
+        for x, e in (dart, world.target(dart)):
+            at = self._edges[x]
+            at[e] -= 1
+            if not at[e]:
+                del at[e]
+        self._touch(dart[0], w)
+
+    def _knot(self, pos: int, count: int) -> None:
+        self.knots[pos] = self.knots.get(pos, 0) + count
+        v = self._walk[pos]
+        self._knot_at[v] = self._knot_at.get(v, 0) + count
+        self._touch(v)
+
+    def _touch(self, *vertices: str) -> None:
+        end = self._walk[-1] if not self.held else None
+        for v in vertices:
+            if not self._visits.get(v):
+                self._marks.pop(v, None)
+                continue
+            edges = self._edges.get(v)
+            self._marks[v] = ThreadMark(v == self.tied, self.head if v == self.tied else None,
+                                        tuple(sorted(edges.items())) if edges else (), v == end,
+                                        self._knot_at.get(v, 0))
 
 
 def _need(cond: bool, why: str) -> None:
@@ -239,23 +282,24 @@ class Thread:
 
     def state(self, world: World) -> ThreadState:
         """The :class:`ThreadState` this thread is in ``world``; InvalidWorld-style InvalidInput if it does not fit."""
-        t = ThreadState()
         v0 = self.walk[0]
         _need(v0 in world.rotation, f"thread tied at {v0!r}, which is not a vertex")
-        t.tied = v0
+        head = None
         if self.points_to is not None:
             _need(self.points_to in world.rotation[v0], f"thread at {v0!r} points to {self.points_to!r}, "
                                                          f"not a neighbour")
-            t.head = world.index(v0, self.points_to)
+            head = world.index(v0, self.points_to)
+        laid = []
         for a, b in zip(self.walk, self.walk[1:]):
             _need(b in world.rotation.get(a, ()), f"thread laid from {a!r} to {b!r}, which is not an edge")
-            t.laid.append((a, world.index(a, b)))
-        t.held = not self.end_left
+            laid.append((a, world.index(a, b)))
+        knots: dict[int, int] = {}
         for pos, k in self.knots:
             _need(_int(pos) and 0 <= pos < len(self.walk) and _int(k) and k >= 1,
                   f"thread knot [{pos!r}, {k!r}]: a position 0..{len(self.walk) - 1} and a count >= 1")
-            t.knots[pos] = t.knots.get(pos, 0) + k
-        t._marks = None
+            knots[pos] = knots.get(pos, 0) + k
+        t = ThreadState()
+        t.restore(world, v0, head, laid, not self.end_left, knots)
         return t
 
     @classmethod
@@ -269,16 +313,45 @@ class Thread:
 
 
 class ThreadedWorld(World):
-    """A :class:`World` with a laid :class:`Thread` in it; :meth:`thread_mark` is what lies at ``v``."""
+    """A :class:`World` with a laid :class:`Thread` in it; :meth:`thread_mark` is what lies at ``v``.
 
-    __slots__ = ("thread", "thread_marks")
+    Built from a rotation and a :class:`Thread` (a file, a map), it is validated like any world.
+    :meth:`of_layer` is the marker layer's snapshot of a run (:meth:`MarkerLayer.world`): the layer's
+    own operations keep the world valid, so nothing is re-validated and the :class:`Thread` in world
+    names is made only when asked for (:attr:`thread`)."""
+
+    __slots__ = ("_thread", "_snapshot", "thread_marks")
 
     def __init__(self, rotation, markers: Iterable[Marker] = (), start: Start | None = None,
                  thread: Thread | None = None):
         super().__init__(rotation, markers, start)
-        self.thread = thread
+        self._thread, self._snapshot = thread, None
         state = thread.state(self) if thread is not None else ThreadState()
         self.thread_marks = state.marks(self)
+
+    @classmethod
+    def of_layer(cls, base: World, markers: tuple[Marker, ...], vmarks: dict, dmarks: dict,
+                 state: ThreadState) -> "ThreadedWorld":
+        """A snapshot of a run: ``base``'s rotation and start, the layer's markers (``vmarks``/``dmarks``
+        in :class:`World`'s form, already checked by the layer) and its tied thread ``state`` — copied,
+        never re-validated (the layer's operations keep every invariant of §3.1.1 and of the thread)."""
+        w = cls.__new__(cls)
+        w.rotation, w._index, w.start = base.rotation, base._index, base.start
+        w.markers, w._vmarks, w._dmarks = markers, dict(vmarks), dict(dmarks)
+        w._thread = None
+        w._snapshot = (base, state.tied, state.head, tuple(state.laid), state.held, tuple(sorted(state.knots.items())))
+        w.thread_marks = dict(state.marks(base))
+        return w
+
+    @property
+    def thread(self) -> Thread | None:
+        """The laid thread in world names."""
+        if self._thread is None and self._snapshot is not None:
+            base, tied, head, laid, held, knots = self._snapshot
+            walk = (tied,) + tuple(base.target(d)[0] for d in laid)
+            self._thread = Thread(walk, None if head is None else base.neighbour(tied, head), not held, knots)
+            self._snapshot = None
+        return self._thread
 
     def thread_mark(self, v: str) -> ThreadMark | None:
         return self.thread_marks.get(v)

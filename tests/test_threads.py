@@ -9,7 +9,7 @@ import sys
 
 import jsonschema
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import example, given, settings, strategies as st
 
 from topomark.reference.algorithms import ALGORITHMS
 from topomark.reference.cli import main
@@ -146,8 +146,9 @@ def test_a_rewind_with_nothing_laid_is_refused():
         robot.rewind()
 
 
-WORLDS = st.sampled_from([generate("random", n=6, fraction=0.5, seed=s) for s in range(3)]
-                         + [generate("lattice-hole", rows=3, cols=3, seed=1)])
+WORLDS_LIST = [generate("random", n=6, fraction=0.5, seed=s) for s in range(3)] + [
+    generate("lattice-hole", rows=3, cols=3, seed=1)]
+WORLDS = st.sampled_from(WORLDS_LIST)
 
 
 @settings(max_examples=60, deadline=None)
@@ -179,6 +180,52 @@ def test_the_laid_thread_is_always_a_walk_from_the_tied_end_no_longer_than_the_k
         marks = sim.layer.thread.marks(world)
         assert sum(k for m in marks.values() for _, k in m.edges) == 2 * len(t.laid)
         assert [v for v, m in marks.items() if m.end] == ([] if t.held else [at])
+
+
+def _marks_rebuilt(world, t) -> dict:
+    """The thread's marks computed from scratch from its walk (what the incremental ones must equal)."""
+    if t.tied is None:
+        return {}
+    walk, edges, knots = [t.tied], {}, {}
+    for v, i in t.laid:
+        w, j = world.target((v, i))
+        for x, e in ((v, i), (w, j)):
+            edges.setdefault(x, {}).setdefault(e, 0)
+            edges[x][e] += 1
+        walk.append(w)
+    for pos, k in t.knots.items():
+        knots[walk[pos]] = knots.get(walk[pos], 0) + k
+    return {v: thread_module.ThreadMark(v == t.tied, t.head if v == t.tied else None,
+                                        tuple(sorted(edges.get(v, {}).items())), not t.held and v == walk[-1],
+                                        knots.get(v, 0)) for v in walk}
+
+
+@settings(max_examples=80, deadline=None)
+@given(WORLDS, st.integers(0, 4), st.lists(st.tuples(st.sampled_from(["move", "move", "rewind", "leave", "take",
+                                                                       "knot", "tie", "untie"]), st.integers(0, 9)),
+                                           max_size=40))
+@example(WORLDS_LIST[0], 2, [("tie", 0), ("move", 0), ("knot", 0), ("rewind", 0), ("move", 0), ("leave", 0)])
+def test_the_thread_marks_kept_per_change_equal_marks_rebuilt_and_the_layer_world_a_validated_one(world, length,
+                                                                                                  script):
+    sim = Simulator(world, world.start_state(), Kit(thread=length))
+    robot = sim.robot()
+    for what, k in script:
+        try:
+            if what == "move":
+                robot.move(k % world.degree(sim.state[0]))
+            elif what == "rewind":
+                robot.rewind()
+            else:
+                robot.operate(ThreadOp(what, direction=k % world.degree(sim.state[0]) if what == "tie" and k % 2
+                                       else None))
+        except CheckFailure:
+            pass
+        t = sim.layer.thread
+        assert sim.layer.thread_marks == _marks_rebuilt(world, t)
+        snapshot = sim.layer.world()  # the layer's unvalidated snapshot equals a world built (and validated) anew
+        built = ThreadedWorld(world.rotation, (), world.start, Thread.of(world, t)) if t.tied else World(
+            world.rotation, (), world.start)
+        assert snapshot == built and getattr(snapshot, "thread_marks", {}) == getattr(built, "thread_marks", {})
 
 
 # -- the world and map files ---------------------------------------------------------------------
