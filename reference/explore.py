@@ -204,12 +204,18 @@ def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: 
     outcome = _outcome(world, sim, explorer, checker, violation, trace, tally, spec, stopped)
     _algorithm_counts(outcome, spec, explorer, world, started[0] if started else None)
     if emit:
-        end = {"event": "end", "cost": sim.cost, "verified": outcome.verified,
-               "violation": violation.to_json() if violation else None}
-        if stopped is not None:  # trace@2 only: trace@1 runs (Algorithm 3.1's own lighthouse) never stop early
-            end.update(outcome=stopped.outcome, reason=stopped.reason)
-        emit(end)
+        emit(end_record(outcome))
     return outcome
+
+
+def end_record(outcome: Outcome) -> dict:
+    """The trace's last record; a run that stopped early (trace@2 only: Algorithm 3.1's own lighthouse never
+    stops) says how and why."""
+    end = {"event": "end", "cost": outcome.cost, "verified": outcome.verified,
+           "violation": outcome.violation.to_json() if outcome.violation else None}
+    if outcome.claimed != "correct":
+        end.update(outcome=outcome.claimed, reason=outcome.reason)
+    return end
 
 
 @dataclass(frozen=True)
