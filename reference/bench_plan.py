@@ -180,6 +180,33 @@ EXPERIMENTS["all"] = Experiment("all", EXPERIMENTS["figure-3.10"].parts + EXPERI
                                 "Every experiment", tuple(tf.TABLE_SOURCES))
 
 
+# Chapter 5 (issue 11; report :mod:`~topomark.reference.bench_chapter5`): §5.1/§6.1 and §5.2.1's lighthouses on the
+# Chapter 3 families; Algorithm 5.1 on small worlds (lattice-hole up to 5x5, random up to 12 vertices) and Figure 3.4.
+SMALL_GRIDS = {8: (3, 3), 11: (3, 4), 14: (4, 4), 18: (4, 5), 23: (5, 5)}  # n of a grid with 10% of vertices removed
+FAMILIES.update({f.name: f for f in (
+    Family("small-lattice-hole", tuple(SMALL_GRIDS), lambda n, s: g.lattice_hole(
+        *SMALL_GRIDS[n], 0.1, "vertices", _seed("small-lattice-hole", n, s)), "§5.2.2",
+        note="3x3, 3x4, 4x4, 4x5, 5x5 grids with 10% of their vertices removed (kept connected), n = size"),
+    Family("small-random-40", (6, 8, 10, 12), lambda n, s: g.random_graph(n, 0.4, _seed("small-random-40", n, s)),
+           "§5.2.2", note="random connected graphs with 40% of all vertex pairs as edges"),
+    Family("figure-3.4a", (5,), lambda n, s: g.wheel_a(), "Figure 3.4(a)", random_graph=False,
+           note="the planar wheel; the worlds differ only in the start"),
+    Family("figure-3.4b", (5,), lambda n, s: g.wheel_b(), "Figure 3.4(b)", random_graph=False,
+           note="the twisted (genus-1) wheel; the worlds differ only in the start"),
+)})
+CHAPTER_5_FAMILIES = ("lattice-hole", "random-20", "random-40", "small-world-k2-p10", "small-world-k4-p20")
+SEARCHED = ("directional-vertex", "undirected-vertex", "undirected-edge", "local-pair", "local-degree-list")
+WALK_SEEDS = ("seed=1", "seed=2")  # §5.2.1's further walks on each world (the default walk is seed 0)
+MODEL_TREE_OPTIONS = ("cue=n", "max-models=1000")  # n cue; none (then it ends at the cap, L1373's window never met)
+EXPERIMENTS["chapter-5"] = Experiment("chapter-5", tuple(
+    [Part(f, ("basic",), lighthouses=SEARCHED) for f in CHAPTER_5_FAMILIES + ("figure-3.4a", "figure-3.4b")]
+    + [Part(f, ("basic",), lighthouses=SEARCHED[3:], options=WALK_SEEDS) for f in CHAPTER_5_FAMILIES]
+    + [Part(f, ("model-tree",), options=MODEL_TREE_OPTIONS) for f in ("small-lattice-hole", "small-random-40")]
+    + [Part(f, ("model-tree",), options=MODEL_TREE_OPTIONS + ("cue=n,signatures=local",))
+       for f in ("figure-3.4a", "figure-3.4b")]),
+    "Chapter 5: mapping with less marker information (§5.1, §6.1, §5.2.1, Algorithm 5.1)")
+
+
 @dataclass(frozen=True, order=True)
 class Run:
     family: str
@@ -215,6 +242,16 @@ def marked_fraction_markers(world: World, algorithm: str, value: str) -> dict:
 
 DERIVED_OPTIONS: dict[str, Callable[[World, str, str], dict]] = {"marked-fraction": marked_fraction_markers}
 """A derived option's name ↦ (world, algorithm, value) → the algorithm's options."""
+
+
+def true_cue(world: World, algorithm: str, value: str) -> dict:
+    """``cue=n`` / ``cue=m`` for Algorithm 5.1 (§5.3): the cue ``cue-n`` / ``cue-m`` with the world's true count."""
+    if algorithm != "model-tree" or value not in ("n", "m"):
+        raise InvalidInput(f"cue=n|m is defined for model-tree only (given cue={value} for {algorithm})")
+    return {f"cue-{value}": world.n if value == "n" else world.m}
+
+
+DERIVED_OPTIONS["cue"] = true_cue
 
 
 def option_set(options: str) -> list[tuple[str, str]]:

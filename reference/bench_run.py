@@ -14,6 +14,12 @@ the counts the simulator dropped, as its ``op`` events say (:class:`DropCount`)
 — the algorithm's stated marker bound for this n and m (``marker_bound``), the
 cost bound of its registry entry (``upper_bound``, empty if it states none) and
 the world's largest degree (``d_max``, for O(m·d_max)).
+
+Chapter 5 (:mod:`~topomark.reference.bench_chapter5`): a lighthouse algorithm's
+option set sets its searched lighthouse's options (``seed=1``: the walk's
+seed), and a row records :data:`CHAPTER_5_COLUMNS` where the run has them — the
+walk's steps and the world vertex v0 became, and Algorithm 5.1's completed and
+peak models and whether the true world is among the completed ones.
 """
 
 from __future__ import annotations
@@ -27,10 +33,13 @@ from .bench_plan import Run, resolve_options, world_for
 from .bounds import expression_3_3
 from .explore import explore
 from .policies import Policies
+from .explorers.lighthouses import lighthouse
 from .registry import algorithm_spec
 from .runstore import Appender, locked, read_runs, rewrite, row_key
 
-__all__ = ["run_one", "run_sweep", "Progress", "DropCount"]
+__all__ = ["run_one", "run_sweep", "Progress", "DropCount", "CHAPTER_5_COLUMNS"]
+
+CHAPTER_5_COLUMNS = ("walk_steps", "lighthouse_at", "completed_models", "peak_models", "true_world_completed")
 
 
 class DropCount:
@@ -54,9 +63,14 @@ def run_one(run: Run, check: bool = True) -> dict:
     drops = None
     try:
         spec = algorithm_spec(run.algorithm)
-        kwargs = {"lighthouse": run.lighthouse} if spec.uses_lighthouse else {"sink": (drops := DropCount())}
+        options = resolve_options(run.options, world, run.algorithm)
+        kwargs = {"sink": (drops := DropCount())}
+        if spec.uses_lighthouse:  # a lighthouse algorithm's option set is its searched lighthouse's (seed=1)
+            kwargs = {"lighthouse": lighthouse(run.lighthouse).with_options(
+                **{k.replace("-", "_"): v for k, v in options.items()}) if options else run.lighthouse}
+            options = {}
         out = explore(world, spec, Policies(edge=run.policy), check=check, record=False, keep_hypotheses=False,
-                      options=resolve_options(run.options, world, run.algorithm) or None, **kwargs)
+                      options=options or None, **kwargs)
     except Exception as exc:  # a crashed run is recorded, never silently dropped
         row.update(cost="", verified=False, outcome="error", error=f"{type(exc).__name__}: {exc}")
         return row
@@ -66,7 +80,9 @@ def run_one(run: Run, check: bool = True) -> dict:
                expression_3_3=round(float(expression_3_3(world.n, world.m))),
                seconds=round(time.perf_counter() - t, 3), cpu_seconds=round(time.process_time() - cpu, 3),
                error=str(out.violation) if out.violation is not None else out.reason or "")
-    if drops is not None:
+    summary = out.summary()  # Chapter 5: the walk that found v0, where it is; the model tree's counts
+    row.update({k: summary[k] for k in CHAPTER_5_COLUMNS if summary.get(k) is not None})
+    if drops is not None and not spec.uses_lighthouse:
         row.update(markers_used=drops.markers, marker_bound=spec.marker_bound_fn(world.n, world.m)
                    if spec.marker_bound_fn else "")
     for p in ("travel", "new", "validation", "retrace", "expansion", "other"):
