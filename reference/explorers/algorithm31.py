@@ -94,6 +94,28 @@ class Iteration:
                 "joined": [list(d) for d in self.joined] if self.joined else None, "by_marker": self.by_marker}
 
 
+def walk_hypothesis(robot: Robot, h: Hypothesis, degree: int, heading: int) -> tuple[list[int], list[int]]:
+    """Execute h's motions M from v_u (lines 11-16), comparing each perception with P^E; stop at the first
+    mismatch, which makes h case 1 (before the end of M) or case 2 (at its end); record what was perceived.
+
+    ``heading`` is the robot's entry edge at v_u counted from e (a rejected hypothesis's retrace leaves it
+    there), so the first motion is turned by it.  Returns the motions done and the degrees passed, for the
+    retrace (line 17).
+    """
+    done, degrees, perceived = [], [degree], []
+    for step, (motion, want) in enumerate(zip(h.motions, h.expected)):
+        physical = (motion - heading) % degree if step == 0 else motion
+        got = robot.move(physical, "validation")
+        done.append(physical)
+        degrees.append(got.degree)
+        perceived.append(got)
+        if got != want:
+            h.outcome = "case 2" if step == len(h.motions) - 1 else "case 1"
+            break
+    h.perceived = tuple(perceived)
+    return done, degrees
+
+
 class LighthouseExplorer:
     """Algorithm 3.1 on a robot; ``observer(explorer, iteration)`` runs after every iteration."""
 
@@ -268,17 +290,7 @@ class LighthouseExplorer:
         it.hypotheses = self.hypotheses(it, sig)
         heading = 0  # the physical entry edge, counted from e (e = exit 0 of v_u)
         for h in it.hypotheses:
-            done, degrees, perceived = [], [sig.degree], []
-            for step, (motion, want) in enumerate(zip(h.motions, h.expected)):
-                physical = (motion - heading) % sig.degree if step == 0 else motion
-                got = self.robot.move(physical, "validation")
-                done.append(physical)
-                degrees.append(got.degree)
-                perceived.append(got)
-                if got != want:
-                    h.outcome = "case 2" if step == len(h.motions) - 1 else "case 1"
-                    break
-            h.perceived = tuple(perceived)
+            done, degrees = walk_hypothesis(self.robot, h, sig.degree, heading)
             if h.outcome == "untested":
                 h.outcome = "case 3"
                 return h, heading

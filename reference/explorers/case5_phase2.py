@@ -37,8 +37,7 @@ from topomark.spec.errors import AlgorithmFailed
 from topomark.spec.mapstate import MapDart, PartialMap
 from topomark.spec.signature import Signature, signature_at
 
-from ..policies import bfs
-from .algorithm31 import Hypothesis
+from .algorithm31 import Hypothesis, walk_hypothesis
 from .marker_walk import MarkerStep
 
 __all__ = ["PhaseTwo", "expected_walk", "PhaseStep"]
@@ -70,18 +69,7 @@ def expected_walk(M: PartialMap, dart: MapDart, path: list[MapDart]) -> Hypothes
 class PhaseTwo:
     """Mixin for a :class:`MarkerWalk`: Algorithm 3.1's hypothesis test with a lighthouse path per version."""
 
-    def step(self) -> MarkerStep:
-        """One iteration of the §6.2 loop (:meth:`MarkerWalk.step`), recorded with its phase-II hypotheses."""
-        dist, _, parent = bfs(self.M, self.position[0])
-        it = PhaseStep(len(self.iterations) + 1, self.choose(dist))
-        self.travel_to(it.edge[0], parent)
-        self.depart(it)
-        it.signature = self.leave(it.edge, "new")
-        self.arrive(it, it.signature)
-        self.iterations.append(it)
-        if self.observer is not None:
-            self.observer(self, it)
-        return it
+    step_type = PhaseStep  # :meth:`MarkerWalk.step`'s record, with its phase-II hypotheses
 
     def lighthouse_path(self, v: int) -> list[MapDart]:
         """The darts of S from v_k' = ``v`` to a place recognised with its back-link (a simple path)."""
@@ -105,17 +93,7 @@ class PhaseTwo:
         it.hypotheses = self.hypotheses(it, sig)
         heading = 0  # the robot's entry edge at v_u, counted from e (e is v_u's exit 0 if v_u is new)
         for h in it.hypotheses:
-            done, degrees, perceived = [], [sig.degree], []
-            for step, (motion, want) in enumerate(zip(h.motions, h.expected)):
-                physical = (motion - heading) % sig.degree if step == 0 else motion
-                got = self.robot.move(physical, "validation")
-                done.append(physical)
-                degrees.append(got.degree)
-                perceived.append(got)
-                if got != want:
-                    h.outcome = "case 2" if step == len(h.motions) - 1 else "case 1"
-                    break
-            h.perceived = tuple(perceived)
+            done, degrees = walk_hypothesis(self.robot, h, sig.degree, heading)
             if h.outcome == "untested" and self.confirms(h):  # matched throughout (Algorithm 6.5 line 23, corrected)
                 h.outcome = "case 3"
                 self.loop(it, h.dart)

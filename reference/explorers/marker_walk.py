@@ -72,6 +72,7 @@ class MarkerWalk:
     """S, U and the believed pose, with the loop of §6.2; subclasses write :meth:`arrive` (and :meth:`begin`)."""
 
     name = "marker-walk"
+    step_type: type = MarkerStep  # the record of one iteration (a subclass may record more)
     marks_at_end = False  # S shows M's marks only at termination (see finish()); False: S is M
 
     def __init__(self, robot, policies: Policies | None = None, observer=None, options: dict | None = None):
@@ -137,7 +138,7 @@ class MarkerWalk:
     def step(self) -> MarkerStep:
         """One iteration: remove e = (v_k, v_u) from U, walk S to v_k, follow e, then :meth:`arrive`."""
         dist, _, parent = bfs(self.M, self.position[0])
-        it = MarkerStep(len(self.iterations) + 1, self.choose(dist))
+        it = self.step_type(len(self.iterations) + 1, self.choose(dist))
         self.travel_to(it.edge[0], parent)
         self.depart(it)
         it.signature = self.leave(it.edge, "new")
