@@ -20,7 +20,7 @@ from collections import deque
 from topomark.spec.errors import InvalidInput
 from topomark.spec.mapstate import MapDart, PartialMap
 
-__all__ = ["EDGE_POLICIES", "HYPOTHESIS_POLICIES", "PATH_POLICIES", "Policies", "bfs", "tree_to_v0"]
+__all__ = ["EDGE_POLICIES", "HYPOTHESIS_POLICIES", "PATH_POLICIES", "Policies", "bfs", "bfs_preorder", "tree_to_v0"]
 
 EDGE_POLICIES = ("nearest", "fifo", "lifo")
 HYPOTHESIS_POLICIES = ("fifo", "lifo", "shortest")
@@ -79,6 +79,21 @@ def bfs(S: PartialMap, root: int) -> tuple[dict[int, int], dict[int, int], dict[
                 parent[t[0]] = (v, i)
                 todo.append(t[0])
     return dist, toward, parent
+
+
+def bfs_preorder(S: PartialMap, root: int) -> list[int]:
+    """The vertices of :func:`bfs`'s tree of S in preorder (children by the exit their parent reaches them by):
+    the order in which a robot walking that tree depth-first from ``root`` first meets them."""
+    _, _, parent = bfs(S, root)
+    children: dict[int, list[int]] = {}
+    for child, (up, _exit) in sorted(parent.items(), key=lambda kv: kv[1][1]):
+        children.setdefault(up, []).append(child)
+    order, todo = [], [root]
+    while todo:
+        v = todo.pop()
+        order.append(v)
+        todo.extend(reversed(children.get(v, ())))
+    return order
 
 
 def _dfs(S: PartialMap, root: int) -> dict[int, int]:

@@ -78,7 +78,7 @@ from topomark.spec.kit import MarkerOp
 from topomark.spec.mapstate import MapDart, PartialMap
 from topomark.spec.signature import Signature, signature_at
 
-from ..policies import bfs
+from ..policies import bfs, bfs_preorder
 from .marker_walk import MarkerStep, MarkerWalk
 
 __all__ = ["marks_key", "FootprintSearch", "EdgeFootprints", "VertexEdgeFootprints", "DoubleMarkedEdges"]
@@ -172,17 +172,8 @@ class FootprintSearch(MarkerWalk):
         M = self.M
         near = {vk} | {t[0] for t in M.links(vk) if t is not None}
         open_at = {v for v, _ in M.unexplored}
-        _, _, parent = bfs(M, vk)
-        children: dict[int, list[int]] = {}
-        for child, (up, exit_) in sorted(parent.items(), key=lambda kv: kv[1][1]):
-            children.setdefault(up, []).append(child)
-        order, todo = [], [vk]
-        while todo:
-            v = todo.pop()
-            if v not in near and v in open_at and M.degree(v) == degree and map_key(M, v) == key:
-                order.append(v)
-            todo.extend(reversed(children.get(v, ())))
-        return order
+        return [v for v in bfs_preorder(M, vk)
+                if v not in near and v in open_at and M.degree(v) == degree and map_key(M, v) == key]
 
     def walk_looking(self, target: int, looked: set[int]) -> tuple[int, int, int] | None:
         """Walk a shortest path of S to ``target``, sensing every vertex entered; at the first one showing a

@@ -86,7 +86,7 @@ from topomark.spec.kit import MarkerOp
 from topomark.spec.mapstate import MapDart, PartialMap
 from topomark.spec.signature import Signature
 
-from ..policies import Policies, bfs
+from ..policies import Policies, bfs, bfs_preorder
 from ..robot import Robot
 
 __all__ = ["MarkerIteration", "MovableMarkerExplorer", "DirectionalMovableMarkerExplorer"]
@@ -180,17 +180,7 @@ class MovableMarkerExplorer:
         S = self.S
         near = {vk} | {t[0] for t in S.links(vk) if t is not None}
         open_at = {v for v, _ in S.unexplored}
-        _, _, parent = bfs(S, vk)
-        children: dict[int, list[int]] = {}
-        for child, (up, exit_) in sorted(parent.items(), key=lambda kv: kv[1][1]):
-            children.setdefault(up, []).append(child)
-        order, todo = [], [vk]
-        while todo:
-            v = todo.pop()
-            if v not in near and v in open_at and S.degree(v) == degree:
-                order.append(v)
-            todo.extend(reversed(children.get(v, ())))
-        return order
+        return [v for v in bfs_preorder(S, vk) if v not in near and v in open_at and S.degree(v) == degree]
 
     def search(self, candidates: list[int]) -> tuple[int, Signature] | None:
         """Visit the candidates until the marker is seen; where (the robot stands there) and what it sensed."""
