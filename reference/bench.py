@@ -37,7 +37,10 @@ is an experiment too), ``table-4.1`` ... ``table-4.8``, ``tables`` (all of
 and enh3: :mod:`~topomark.reference.bench_lighthouses`), ``all``; and §6.2's
 marker algorithms (kit algorithms, :mod:`~topomark.reference.bench_table6`):
 ``table-6.1`` (with Figures 6.11, 6.12), ``table-6.2`` (Figures 6.17, 6.18),
-``figure-6.13`` and ``section-6.2`` (all three; not part of ``all``).
+``figure-6.13`` and ``section-6.2`` (all three; not part of ``all``); and §6.3's
+threads with §2.3.1's movable markers (:mod:`~topomark.reference.bench_table63`,
+which also defines the ``lattice-edge-hole`` family): ``table-6.3`` (with Figure
+6.23), ``figure-6.24``, ``comparison`` and ``section-6.3`` (all three; not part of ``all``).
 
 Runs go to ``DIR/runs.csv`` keyed by (experiment = family, size, seed,
 algorithm, edge policy, lighthouse); a restarted sweep skips keys already there.  Each
@@ -66,7 +69,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from . import bench_lighthouses, bench_report, bench_table6
+from . import bench_lighthouses, bench_report, bench_table6, bench_table63  # 6.3 registers its runs
 from .bench_plan import (EXPERIMENTS, FAMILIES, HEAVY_GRAPHS, HEAVY_MAX_SIZE, Experiment, Part, Run, fits,
                          is_heavy, plan, world_for)
 from .bench_report import latest, reduction, summarize
@@ -84,6 +87,8 @@ def write_report(experiment: str, out: Path, wall: float | None = None, plots: b
         return bench_lighthouses.write_report(out, wall, plots)
     if experiment in bench_table6.REPORTS:
         return bench_table6.write_report(experiment, out, wall, plots)
+    if experiment in bench_table63.REPORTS:
+        return bench_table63.write_report(experiment, out, wall, plots)
     if experiment == "all":
         bench_lighthouses.write_report(out, None, plots)
     return bench_report.write_report(experiment, out, wall, plots)

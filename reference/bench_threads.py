@@ -1,18 +1,12 @@
-"""Measurements of the thread algorithms of §6.3 (Table 6.3, Figures 6.23 and 6.24) and the search that decides
-whether a thread of length c(G) suffices for Algorithm 6.7 (guide §8.3, §10 item 26).
+"""Whether a thread of length c(G) suffices for Algorithm 6.7 (guide §8.3, §10 item 26): the search.
 
-``python3 -m topomark.reference.bench_threads search [--worlds N]`` — Algorithm 6.7 given exactly
+``python3 -m topomark.reference.bench_threads [--worlds N] [--json]`` — Algorithm 6.7 given exactly
 ``--thread-length c(G)`` (computed here, by search, for small worlds) on N generated worlds with a cycle, at
 random starts: how many run out of thread, and the smallest that does.
 
-``python3 -m topomark.reference.bench_threads table [--sizes 4,6,8]`` — cost, cost/m and cost/(mn) of every
-thread class on k×k lattices and lattice-hole worlds (10% of edges removed), as Figure 6.23.
-
-``python3 -m topomark.reference.bench_threads lengths [--worlds 5] [--size 20]`` — Figure 6.24 in small:
-Algorithm 6.8 on size×size lattices with 10% of edges removed, l = 1, 2, 4, ... up to the first l ≥ n.
-
-Every run is checked (the outcome is the checker's); ``--json`` prints the rows as JSON.  Speed is
-measured and printed, never asserted.
+Every run is checked (the outcome is the checker's).  The measurements of Table 6.3 and Figures 6.23 and 6.24
+are the bench's (``topomark bench table-6.3``, ``figure-6.24``, ``comparison``:
+:mod:`~topomark.reference.bench_table63`).
 
 Examples
 --------
@@ -26,7 +20,6 @@ from __future__ import annotations
 import argparse
 import json
 import random
-import statistics
 import sys
 import time
 
@@ -36,12 +29,11 @@ from topomark.spec.world import Start, World
 from . import generators as g
 from .explore import explore
 
-__all__ = ["circumference", "longest_path_from", "search_circumference", "table", "lengths", "CIRCUMFERENCE_LIMIT"]
+__all__ = ["circumference", "longest_path_from", "search_circumference", "CIRCUMFERENCE_LIMIT"]
 
 CIRCUMFERENCE_LIMIT = 40
 """The largest world (vertices) whose circumference is computed: the search is exponential."""
 
-THREADS = ("thread-carried", "thread-circumference", "thread-knots", "thread-explore")
 
 
 def _longest(world: World, start: str, closing: bool, within: set[str] | None = None) -> int:
@@ -125,75 +117,14 @@ def search_circumference(count: int = 200, seed: int = 0) -> dict:
                                                 for r in rows)}
 
 
-def _run(w: World, name: str, **kw) -> dict:
-    t = time.perf_counter()
-    out = explore(w, name, record=False, **kw)
-    if out.outcome != "correct":
-        raise RuntimeError(f"{name} on a world of {w.n} vertices: {out.outcome} {out.violation or out.reason}")
-    return {"cost": out.cost, "cost/m": round(out.cost / w.m, 3), "cost/mn": round(out.cost / (w.m * w.n), 4),
-            "bound": out.upper_bound, "seconds": round(time.perf_counter() - t, 2)}
-
-
-def table(sizes=(4, 6, 8), worlds: int = 3, fixed: bool = True) -> list[dict]:
-    """Figure 6.23: every thread class on k×k lattices and lattice-hole worlds (10% of edges removed)."""
-    rows = []
-    for k in sizes:
-        kinds = [("lattice", g.lattice(k, k))] + [("lattice-hole", g.lattice_hole(k, k, 0.1, "edges", s))
-                                                   for s in range(worlds)]
-        for kind, w in kinds:
-            runs = {name: _run(w, name) for name in THREADS}
-            runs["thread-explore"]["l"] = 2
-            if fixed:
-                runs["fixed-thread (Algorithm 3.1)"] = _run(w, "basic", lighthouse="thread")
-            for name, r in runs.items():
-                rows.append({"world": kind, "size": k, "n": w.n, "m": w.m, "algorithm": name, **r})
-    return rows
-
-
-def lengths(worlds: int = 5, size: int = 20) -> list[dict]:
-    """Figure 6.24 in small: Algorithm 6.8's cost against l on size×size lattices, 10% of edges removed."""
-    ws = [g.lattice_hole(size, size, 0.1, "edges", s) for s in range(worlds)]
-    ls, l = [], 1
-    while True:
-        ls.append(l)
-        if l >= size * size:
-            break
-        l *= 2
-    rows = []
-    for l in ls:
-        costs = [explore(w, "thread-explore", options={"thread-length": l}, record=False) for w in ws]
-        if any(o.outcome != "correct" for o in costs):
-            raise RuntimeError(f"thread-explore l={l}: {[o.outcome for o in costs]}")
-        c = [o.cost for o in costs]
-        rows.append({"l": l, "mean_cost": round(statistics.mean(c), 1), "sd": round(statistics.pstdev(c), 1),
-                     "mean_cost/m": round(statistics.mean(o.cost / ws[k].m for k, o in enumerate(costs)), 2),
-                     "costs": c})
-    return rows
-
-
 def main(argv=None) -> int:
     p = argparse.ArgumentParser(prog="bench_threads", description=__doc__.split("\n\n")[0])
-    p.add_argument("what", choices=("search", "table", "lengths"))
-    p.add_argument("--worlds", type=int, default=None)
-    p.add_argument("--size", type=int, default=20)
-    p.add_argument("--sizes", default="4,6,8")
-    p.add_argument("--no-fixed", action="store_true", help="leave out Algorithm 3.1 with the fixed thread")
+    p.add_argument("--worlds", type=int, default=200)
     p.add_argument("--json", action="store_true")
     a = p.parse_args(argv)
     t = time.perf_counter()
-    if a.what == "search":
-        out = search_circumference(a.worlds or 200)
-    elif a.what == "table":
-        out = table(tuple(int(x) for x in a.sizes.split(",")), a.worlds or 3, not a.no_fixed)
-    else:
-        out = lengths(a.worlds or 5, a.size)
-    if a.json:
-        print(json.dumps(out, sort_keys=True))
-    elif isinstance(out, list):
-        for row in out:
-            print("  ".join(f"{k}={v}" for k, v in row.items()))
-    else:
-        print(json.dumps(out, indent=1, sort_keys=True))
+    out = search_circumference(a.worlds)
+    print(json.dumps(out, sort_keys=True) if a.json else json.dumps(out, indent=1, sort_keys=True))
     print(f"# {time.perf_counter() - t:.0f} s", file=sys.stderr)
     return 0
 
