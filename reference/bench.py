@@ -40,7 +40,9 @@ marker algorithms (kit algorithms, :mod:`~topomark.reference.bench_table6`):
 ``figure-6.13`` and ``section-6.2`` (all three; not part of ``all``); and §6.3's
 threads with §2.3.1's movable markers (:mod:`~topomark.reference.bench_table63`,
 which also defines the ``lattice-edge-hole`` family): ``table-6.3`` (with Figure
-6.23), ``figure-6.24``, ``comparison`` and ``section-6.3`` (all three; not part of ``all``).
+6.23), ``figure-6.24``, ``comparison`` and ``section-6.3`` (all three; not part of ``all``);
+``chapter-5`` (§5.1, §6.1, §5.2.1 and Algorithm 5.1 on the Chapter 3 families, small worlds and
+Figure 3.4: :mod:`~topomark.reference.bench_chapter5`; not part of ``all``).
 
 Runs go to ``DIR/runs.csv`` keyed by (experiment = family, size, seed,
 algorithm, edge policy, lighthouse); a restarted sweep skips keys already there.  Each
@@ -69,7 +71,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from . import bench_lighthouses, bench_report, bench_table6, bench_table63  # 6.3 registers its runs
+from . import bench_chapter5, bench_lighthouses, bench_report, bench_table6, bench_table63  # 6.3 registers its runs
 from .bench_plan import (EXPERIMENTS, FAMILIES, HEAVY_GRAPHS, HEAVY_MAX_SIZE, Experiment, Part, Run, fits,
                          is_heavy, plan, world_for)
 from .bench_report import latest, reduction, summarize
@@ -85,6 +87,8 @@ def write_report(experiment: str, out: Path, wall: float | None = None, plots: b
     """Generate ``out/EXPERIMENT.md`` (and plots) from ``out/runs.csv``; ``all`` also writes ``lighthouses.md``."""
     if experiment == "lighthouses":
         return bench_lighthouses.write_report(out, wall, plots)
+    if experiment == bench_chapter5.NAME:
+        return bench_chapter5.write_report(out, wall, plots)
     if experiment in bench_table6.REPORTS:
         return bench_table6.write_report(experiment, out, wall, plots)
     if experiment in bench_table63.REPORTS:
