@@ -242,8 +242,9 @@ def _model_verdict(runs: dict) -> list[str]:
     if not bare and not cue:
         return []
     steps = [int(m.group(1)) for k, v in runs.items() if k[0] in MODEL_FAMILIES[:2] and k[3] == "max-models=1000"
-             for r in v.values() if (m := re.search(r"at step (\d+)", r.get("error") or ""))]
-    at = f" (at step {min(steps)}-{max(steps)}, median {statistics.median(steps):.0f})" if steps else ""
+             for r in v.values() if (m := re.search(r"max-models \d+ exceeded at step (\d+)", r.get("error") or ""))]
+    at = f" ({len(steps)} at the model cap, at step {min(steps)}-{max(steps)}, median " \
+         f"{statistics.median(steps):.0f}; {bare.count('limit') - len(steps)} at the step cap)" if steps else ""
     return [f"Held? Without a cue (as the thesis ran): {bare.count('correct')} of {len(bare)} runs terminated by the "
             f"window and returned the correct model; {bare.count('limit')} reached the cap{at} — **"
             + ("held" if bare and bare.count("correct") == len(bare) else "not held") + "** on these worlds. Why "
@@ -252,6 +253,9 @@ def _model_verdict(runs: dict) -> list[str]:
             "branch is never voided (a tree unfolding is consistent with every walk), and its descendants close "
             "loops into ever new completed and incomplete models: the live models pass the cap sooner than "
             "the window of 100 steps could elapse (our reading of the counts above, not traced model by model). "
+            "Where the worlds have a single cycle (the 6-vertex random worlds), the live models stay few but every "
+            "longer cycle is as consistent, so a new completed model keeps appearing and the run reaches the step "
+            "cap instead (as tests/test_model_tree.py shows on a cycle). "
             "With the n cue: "
             f"{cue.count('correct')} of {len(cue)} correct, {cue.count('failed')} failed (completed models no walk "
             f"can tell apart), {cue.count('wrong-map')} wrong maps.", ""]
