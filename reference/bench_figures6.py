@@ -28,7 +28,7 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
-from .bench_plan import FRACTIONS
+from .bench_plan import FIGURE_613_SIZES, FRACTIONS
 from .bench_table6 import mean, num
 
 __all__ = ["findings", "figure_613", "plots", "marked_places", "means"]
@@ -216,6 +216,13 @@ def figure_613(exp, g: dict) -> list[str]:
     return lines + ["Version-2 (\"Similar results were observed\", text only) is not swept here.", ""]
 
 
+def _within(experiment: str, fam: str, pts: dict[int, float]) -> dict[int, float]:
+    """Figure 6.13's points at its own sizes only (case-3a and m also run at table-6.1's larger sizes)."""
+    if experiment != "figure-6.13":
+        return pts
+    return {s: v for s, v in pts.items() if s in FIGURE_613_SIZES.get(fam, ())}
+
+
 def plots(experiment: str, g: dict, out: Path) -> list[Path] | None:
     """Log-scale cost (and marker) plots per family; None without matplotlib."""
     try:
@@ -237,7 +244,7 @@ def plots(experiment: str, g: dict, out: Path) -> list[Path] | None:
             series = {}
             for a in algs:
                 name, _, f = a.partition("@")
-                pts = means(g, fam, name, column, f"marked-fraction={f}" if f else "")
+                pts = _within(experiment, fam, means(g, fam, name, column, f"marked-fraction={f}" if f else ""))
                 if pts:
                     series[f"{name} {float(f):.0%} marked" if f else name] = pts
             if not series:
@@ -245,7 +252,7 @@ def plots(experiment: str, g: dict, out: Path) -> list[Path] | None:
             fig, ax = plt.subplots(figsize=(6, 4.2))
             m = {}
             for pts in (means(g, fam, a.partition("@")[0], "m") for a in algs):
-                m.update(pts)
+                m.update(_within(experiment, fam, pts))
             if column == "cost" and m:
                 ax.plot(sorted(m), [m[s] for s in sorted(m)], "k:", lw=1, label="lower bound m")
             for label, pts in series.items():
