@@ -196,7 +196,7 @@ class MarkerLayer:
         """A :class:`World` with the current markers (built once per change, on demand)."""
         if self._world is None:
             if self.thread.tied is None:
-                self._world = World(self.base.rotation, tuple(self.markers()), self.base.start)
+                self._world = World.of_layer(self.base, tuple(self.markers()), self._vmarks, self._dmarks)
             else:  # a snapshot, not re-validated: this layer's operations keep the world and the thread valid
                 self._world = ThreadedWorld.of_layer(self.base, tuple(self.markers()), self._vmarks, self._dmarks,
                                                      self.thread)

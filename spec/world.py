@@ -151,6 +151,17 @@ class World:
         self._dmarks = {v: tuple(sorted(ms, key=lambda d: d.exit)) for v, ms in self._dmarks.items()}
         self._check_start()
 
+    @classmethod
+    def of_layer(cls, base: "World", markers: tuple[Marker, ...], vmarks: dict, dmarks: dict) -> "World":
+        """A snapshot of a run's marker layer (:meth:`topomark.spec.markerlayer.MarkerLayer.world`): ``base``'s
+        rotation and start with the layer's markers, ``vmarks``/``dmarks`` already in this class's form and
+        checked by the layer's own operations — copied, never re-validated (a marker dropped mid-run would
+        otherwise rebuild and re-check the whole world, O(n + m) per drop)."""
+        w = cls.__new__(cls)
+        w.rotation, w._index, w.start = base.rotation, base._index, base.start
+        w.markers, w._vmarks, w._dmarks = markers, dict(vmarks), dict(dmarks)
+        return w
+
     # -- validation (§3.1.1) -------------------------------------------------
     def _check_rotation(self) -> None:
         rot = self.rotation

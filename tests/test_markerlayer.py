@@ -104,3 +104,28 @@ def test_a_movable_marker_goes_down_and_comes_back_uncounted_as_cost():
     assert sim.world.markers == () and sim.held["vertex"] == 1
     assert sim.cost == 2 and dict(sim.operations) == {"drop": 1, "pick_up": 1}
     assert [e["op"] for e in sim.events] == ["drop", "pick_up"] and [e["step"] for e in sim.events] == [0, 2]
+
+
+@pytest.mark.parametrize("algorithm", ["case-1a", "case-3b", "case-dv-sum", "extension-2", "dudek"])
+def test_the_layers_snapshot_is_the_validated_world(algorithm):
+    """MarkerLayer.world() copies the layer's marks without re-validating them (World.of_layer): after every
+    drop of a whole run they are what a world built and checked from the same markers has."""
+    from topomark.reference import generators
+    from topomark.reference.explore import explore
+    from topomark.spec.world import World
+    checked = []
+
+    class Watch(Simulator):
+        def operate(self, op):
+            super().operate(op)
+            snap = self.world
+            full = World(snap.rotation, snap.markers, snap.start)
+            checked.append(all(snap.vertex_mark(v) == full.vertex_mark(v) and snap.dart_marks(v) == full.dart_marks(v)
+                               for v in full.vertices))
+    import topomark.reference.explore as ex
+    real, ex.Simulator = ex.Simulator, Watch
+    try:
+        assert explore(generators.complete_hole(6, 0.2, 3), algorithm, record=False).outcome == "correct"
+    finally:
+        ex.Simulator = real
+    assert checked and all(checked)
