@@ -1,0 +1,80 @@
+"""A measured slice of the census at n = 8, max degree 4, on a local Dask cluster (§3.7's census; issue 14).
+
+Speed is measured here and reported in the README ("Results past n = 7"), never asserted by a test.
+
+Plans the n = 8 map tasks exactly as ``topomark census`` does (census_map.plan, task_worlds=2000,
+min_vertices=8, default shard count for the whole n <= 8 plan), picks K tasks at random (seeded: a
+uniform sample of tasks ~ a uniform sample of worlds), runs them with census_map.run_map on a
+distributed.LocalCluster of 2 single-thread workers, then reduces every shard of the slice with
+census_run.reduce_shard; per task it records CPU seconds, wall, worlds, placements, records and the
+worker's peak RSS, as JSON lines on standard output.
+
+Example (the README's figures)::
+
+    python -m topomark.proofs.bench_census directional-vertex 4 14 /tmp/slice-dv
+"""
+import json
+import os
+import random
+import resource
+import sys
+import time
+from pathlib import Path
+
+from topomark.proofs.census_map import plan, run_map
+from topomark.proofs.census_run import default_shards, reduce_shard
+from topomark.proofs.census_shards import RECORD, map_path
+
+__all__ = ["timed_map", "timed_reduce", "main"]
+
+
+def timed_map(root, t, cls, units, shards):
+    """census_map.run_map of one task, with its CPU time, wall time, sizes and the worker's peak RSS."""
+    c0, w0 = time.process_time(), time.perf_counter()
+    res = run_map(root, t, cls, 4, units, shards)
+    recs = os.path.getsize(map_path(Path(root), t)) // RECORD.itemsize
+    return {"task": t, "cpu": time.process_time() - c0, "wall": time.perf_counter() - w0,
+            "worlds": sum(w for w, _ in res["sizes"].values()),
+            "placements": sum(p for _, p in res["sizes"].values()), "records": recs,
+            "rss_gb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1e6, "offsets": res["offsets"]}
+
+
+def timed_reduce(root, s, slices):
+    """census_run.reduce_shard of one shard of the slice, with its CPU time."""
+    c0 = time.process_time()
+    res = reduce_shard(root, s, slices, 8, 8, False)
+    return {"shard": s, "cpu": time.process_time() - c0, "ambiguous": res["ambiguous_upto"][-1],
+            "rss_gb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1e6}
+
+
+def main():
+    """Plan, sample K map tasks (seeded), map them and reduce every shard on a 2-worker local Dask cluster."""
+    cls, k, seed, root = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), sys.argv[4]
+    os.makedirs(root, exist_ok=True)
+    t0 = time.perf_counter()
+    tasks = plan(8, 4, 8, 2000)
+    shards = default_shards(sum(e for t in plan(8, 4, 2, 2000) for _, e in t))
+    pick = sorted(random.Random(seed).sample(range(len(tasks)), k))
+    print(json.dumps({"class": cls, "tasks_n8": len(tasks), "shards": shards, "picked": pick,
+                      "est_worlds_n8": sum(e for t in tasks for _, e in t),
+                      "plan_s": round(time.perf_counter() - t0, 1)}), flush=True)
+    import distributed
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, dashboard_address=None) as cluster, \
+            distributed.Client(cluster) as client:
+        futs = [client.submit(timed_map, root, i, cls, [tuple(u) for u, _ in tasks[t]], shards, pure=False)
+                for i, t in enumerate(pick)]
+        done = [f.result() for f in futs]
+        for d, t in zip(done, pick):
+            print(json.dumps({"map": {**{k_: v for k_, v in d.items() if k_ != "offsets"}, "plan_task": t}}), flush=True)
+        rfuts = [client.submit(timed_reduce, root, s,
+                               [(i, d["offsets"][s], d["offsets"][s + 1] - d["offsets"][s]) for i, d in enumerate(done)],
+                               pure=False) for s in range(shards)]
+        red = [f.result() for f in rfuts]
+    print(json.dumps({"reduce": {"shards": shards, "cpu": round(sum(r["cpu"] for r in red), 2),
+                                 "ambiguous": sum(r["ambiguous"] for r in red),
+                                 "max_rss_gb": max(r["rss_gb"] for r in red)},
+                      "wall_total_s": round(time.perf_counter() - t0, 1)}), flush=True)
+
+
+if __name__ == "__main__":
+    main()
