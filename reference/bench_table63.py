@@ -23,7 +23,7 @@ algorithms measure on the bench's worlds, and say whether it held:
 
 Sizes (the thesis gives none for Figure 6.23): 90, 202 and 360 — the 10×10, 15×15 and 20×20 grids (a size labels
 the grid as in the ``lattice`` family); Figure 6.24 is size 360.  The experiments and the ``lattice-edge-hole``
-family are registered in :mod:`~topomark.reference.bench_plan`'s tables when this module is imported
+family are registered by :mod:`~topomark.reference.bench_plan63` (imported here).
 (:mod:`~topomark.reference.bench` imports it).
 
 Examples
@@ -37,25 +37,17 @@ True
 from __future__ import annotations
 
 import statistics
-from dataclasses import dataclass
 from pathlib import Path
 
-from . import generators as g
-from .bench_plan import EXPERIMENTS, FAMILIES, GRIDS, NO_LIGHTHOUSE, Experiment, Family, Part, _seed
+from .bench_plan import EXPERIMENTS, NO_LIGHTHOUSE
+from .bench_plan63 import (CLASSES, COMPARED, COST_F, EDGE_HOLE, FIGURE_624_SIZE, IMMOVABLE, LENGTHS, MOVABLE,
+                          REPORTS, SIZES, ThreadClass)
 from .bench_report import latest, plot_lines, run_totals
 from .bench_table6 import SLOPE_TOLERANCE, slope
 from .runstore import read_runs, write_atomic
 
 __all__ = ["CLASSES", "ThreadClass", "TABLE_63", "LENGTHS", "SIZES", "COMPARED", "REPORTS", "write_report",
            "groups", "cost_f"]
-
-EDGE_HOLE = "lattice-edge-hole"
-SIZES = (90, 202, 360)
-FIGURE_624_SIZE = 360
-LENGTHS = (1, 2, 4, 8, 16, 32, 64, 128, 256, 512)
-COMPARED = ("dudek", "dudek-directional", "basic", "enh3", "case-3b", "case-dv-sum", "extension-2", "thread-knots",
-            "thread-circumference")
-MOVABLE, IMMOVABLE = ("dudek", "dudek-directional"), ("basic", "enh3")
 
 TABLE_63 = """| Length of thread | Need for retying | Upper bounds |
 |---|---|---|
@@ -69,66 +61,6 @@ SUMMARY_L2212 = ("\"Given the simplest form of thread, deterministic mapping is 
                  "the thread the lower the cost.\" (L2212)")
 
 
-@dataclass(frozen=True)
-class ThreadClass:
-    """A row of Table 6.3 and the run that measures it: algorithm, lighthouse, option set, cost bound f."""
-
-    name: str
-    row: str  # the first column of Table 6.3
-    algorithm: str
-    lighthouse: str
-    options: str
-    bound: str  # "m²n", "mn", "m"
-
-
-CLASSES = (
-    ThreadClass("fixed ε", "a very short thread l = ε (no retying)", "basic", "thread", "", "m²n"),
-    ThreadClass("carried ε", "(l = ε) (retying)", "thread-carried", NO_LIGHTHOUSE, "", "mn"),
-    ThreadClass("explore-explore l=8", "an arbitrary length thread l < c(G)", "thread-explore", NO_LIGHTHOUSE,
-                "thread-length=8", "mn"),
-    ThreadClass("l = c(G)", "a long thread l = c(G)", "thread-circumference", NO_LIGHTHOUSE, "", "mn"),
-    ThreadClass("l ≫ m, knots", "a very long thread l ≫ m", "thread-knots", NO_LIGHTHOUSE, "", "m"),
-)
-COST_F = {"m²n": lambda n, m: m * m * n, "mn": lambda n, m: m * n, "m": lambda n, m: m}
-
-
-def _lattice_edge_hole(size: int, seed: int):
-    rows, cols = GRIDS[size]
-    return g.lattice_hole(rows, cols, 0.1, "edges", _seed(EDGE_HOLE, size, seed))
-
-
-def _parts(family: str, sizes: tuple[int, ...]) -> tuple[Part, ...]:
-    by_options: dict[tuple[str, str], list[str]] = {}
-    for c in CLASSES:
-        by_options.setdefault((c.lighthouse, c.options), []).append(c.algorithm)
-    return tuple(Part(family, tuple(algs), sizes, lighthouses=(lh,), options=(opt,))  # a kit algorithm's is ignored
-                 for (lh, opt), algs in by_options.items())
-
-
-def _register() -> None:
-    """The family and the experiments, in :mod:`~topomark.reference.bench_plan`'s tables."""
-    FAMILIES[EDGE_HOLE] = Family(
-        EDGE_HOLE, tuple(GRIDS), _lattice_edge_hole, "Figures 6.23(b), 6.24",
-        note="the grids of the lattice family (size 90 = 10x10, 202 = 15x15, 360 = 20x20, ...) with 10% of their "
-             "edges removed at random (kept connected), so n = rows x cols")
-    EXPERIMENTS["table-6.3"] = Experiment(
-        "table-6.3", _parts("lattice", SIZES) + _parts(EDGE_HOLE, SIZES),
-        "Table 6.3 and Figure 6.23: every thread class on lattices and lattices with 10% of the edges removed")
-    EXPERIMENTS["figure-6.24"] = Experiment(
-        "figure-6.24", (Part(EDGE_HOLE, ("thread-explore",), (FIGURE_624_SIZE,),
-                             options=tuple(f"thread-length={n}" for n in LENGTHS)),
-                        Part(EDGE_HOLE, ("thread-circumference", "thread-knots"), (FIGURE_624_SIZE,))),
-        "Figure 6.24: explore-explore (Algorithm 6.8) on 20x20 lattices with 10% of the edges removed, cost against l")
-    EXPERIMENTS["comparison"] = Experiment(
-        "comparison", (Part("lattice-hole", COMPARED, SIZES),),
-        "Movable and immovable markers and threads on the same lattice-hole worlds (§2.3.1, Chapter 3, §6.2, §6.3)")
-    EXPERIMENTS["section-6.3"] = Experiment(
-        "section-6.3", tuple(p for n in ("table-6.3", "figure-6.24", "comparison") for p in EXPERIMENTS[n].parts),
-        "§6.3 and §2.3.1: Table 6.3, Figures 6.23 and 6.24, and the comparison of movable and immovable markers")
-
-
-_register()
-REPORTS = ("table-6.3", "figure-6.24", "comparison", "section-6.3")
 
 
 def groups(rows: list[dict]) -> dict[tuple[str, str, str, str, int], list[dict]]:
