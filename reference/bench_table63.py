@@ -23,15 +23,8 @@ algorithms measure on the bench's worlds, and say whether it held:
 
 Sizes (the thesis gives none for Figure 6.23): 90, 202 and 360 — the 10×10, 15×15 and 20×20 grids (a size labels
 the grid as in the ``lattice`` family); Figure 6.24 is size 360.  The experiments and the ``lattice-edge-hole``
-family are registered by :mod:`~topomark.reference.bench_plan63` (imported here).
-(:mod:`~topomark.reference.bench` imports it).
-
-Examples
---------
->>> [c.name for c in CLASSES]
-['fixed ε', 'carried ε', 'explore-explore l=8', 'l = c(G)', 'l ≫ m, knots']
->>> LENGTHS[-1] >= 400 > LENGTHS[-2]
-True
+family are registered by :mod:`~topomark.reference.bench_plan63` (imported here; its examples show the classes
+and lengths).
 """
 
 from __future__ import annotations

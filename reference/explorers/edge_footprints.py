@@ -179,12 +179,7 @@ class FootprintSearch(MarkerWalk):
         """Walk a shortest path of S to ``target``, sensing every vertex entered; at the first one showing a
         marked edge S does not show, stop: (that vertex, the marked exit, the entry)."""
         _, _, parent = bfs(self.M, self.position[0])
-        path = []
-        x = target
-        while x != self.position[0]:
-            path.append(parent[x])
-            x = parent[x][0]
-        for dart in reversed(path):
+        for dart in self.path_to(target, parent):
             sig = self.leave(dart, "validation")
             v, entry = self.position
             looked.add(v)

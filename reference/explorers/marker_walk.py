@@ -178,14 +178,18 @@ class MarkerWalk:
         self.position = far if far is not None else (-1, -1)
         return sig
 
-    def travel_to(self, target: int, parent: dict[int, MapDart]) -> None:
-        """Walk S from the believed position to ``target`` along the BFS tree ``parent`` rooted there."""
+    def path_to(self, target: int, parent: dict[int, MapDart]) -> list[MapDart]:
+        """The darts of S from the believed position to ``target`` along the BFS tree ``parent`` rooted there."""
         path = []
         x = target
         while x != self.position[0]:
             path.append(parent[x])
             x = parent[x][0]
-        for dart in reversed(path):
+        return path[::-1]
+
+    def travel_to(self, target: int, parent: dict[int, MapDart]) -> None:
+        """Walk S from the believed position to ``target`` along the BFS tree ``parent`` rooted there."""
+        for dart in self.path_to(target, parent):
             self.leave(dart, "travel")
 
     # -- augmentation ---------------------------------------------------------------
