@@ -120,7 +120,7 @@ class Checker:
         if "marker-budget" in self.checks:
             world = self.sim.world
             bound = self.spec.marker_bound_fn(world.n, world.m)
-            used = sum(m.count for m in world.markers)
+            used = self.sim.layer.lying  # the sum of the counts of world.markers, kept per change
             self._ok(n, None if used <= bound else Violation(
                 "marker budget", "world markers", f"at most {bound} (the algorithm's stated bound)", str(used)))
         if "models" in self.checks:

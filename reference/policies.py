@@ -47,8 +47,9 @@ class Policies:
             k = 0
         elif self.edge == "lifo":
             k = len(U) - 1
-        else:
-            k = min(range(len(U)), key=lambda x: (dist[U[x][0]], x))
+        else:  # the closest known end, the first listed among equals
+            ds = [dist[v] for v, _ in U]
+            k = ds.index(min(ds))
         return U.pop(k)
 
     def order_hypotheses(self, hypotheses: list, lengths: list[int]) -> list:
@@ -64,8 +65,19 @@ def bfs(S: PartialMap, root: int) -> tuple[dict[int, int], dict[int, int], dict[
     """Breadth-first over S's explored edges, exits scanned in index order.
 
     Returns per reached vertex its distance from ``root``, the exit that leads
-    one step toward ``root``, and the parent dart (parent, exit) it was reached by.
+    one step toward ``root``, and the parent dart (parent, exit) it was reached by.  The last search of each
+    map is kept (S only grows: its journal's length names its state), so asking again before S changes is
+    free; callers read the result and never mutate it.
     """
+    key = (len(S.journal), root)
+    memo = getattr(S, "_bfs_memo", None)
+    if memo is not None and memo[0] == key:
+        return memo[1]
+    S._bfs_memo = (key, _bfs(S, root))
+    return S._bfs_memo[1]
+
+
+def _bfs(S: PartialMap, root: int) -> tuple[dict[int, int], dict[int, int], dict[int, MapDart]]:
     dist, toward, parent = {root: 0}, {}, {}
     todo = deque([root])
     links = S.links

@@ -64,7 +64,7 @@ class MarkerLayer:
     """Mutable markers over ``world``'s rotation; starts with the world's own markers."""
 
     __slots__ = ("base", "_vmarks", "_emarks", "_dmarks", "_world", "degree", "target", "neighbour", "thread",
-                 "thread_marks")
+                 "thread_marks", "_vobjects", "_eobjects", "lying")
 
     def __init__(self, world: World):
         self.base = world
@@ -80,7 +80,15 @@ class MarkerLayer:
                 self._emarks.setdefault(key, ((v, dm.exit), dm.count, dm.end))
         self._dmarks: dict[str, tuple[DartMark, ...]] = {v: world.dart_marks(v) for v in world.vertices
                                                          if world.dart_marks(v)}
-        self._world: World | None = world
+        # place -> the Marker lying there, kept per change so a snapshot is O(markers) at C speed, not a rebuild
+        self._vobjects: dict[str, VertexMarker] = {}
+        self._eobjects: dict[frozenset, EdgeMarker] = {}
+        self.lying = 0  # the number of markers now lying in the world (the sum of the counts of markers())
+        for v in self._vmarks:
+            self._place_changed(v)
+        for key in self._emarks:
+            self._place_changed(key)
+        self._world: World | None = world  # after _place_changed, which forgets the snapshot
         thread = getattr(world, "thread", None)
         self.thread = ThreadState() if thread is None else thread.state(world)
         self.thread_marks = self.thread.marks(world)  # vertex -> ThreadMark, what signature_at reads
@@ -111,9 +119,32 @@ class MarkerLayer:
         finally:
             self.thread_marks = self.thread.marks(self.base)
 
+    def _place_changed(self, place) -> None:
+        """Rebuild the one :class:`Marker` at ``place`` (a vertex, or an edge's frozenset) after a change.
+
+        ``_vobjects``/``_eobjects`` keep the order of ``_vmarks``/``_emarks`` (a count change keeps a place's
+        position, a place emptied and marked again goes last, as in those dicts)."""
+        self._world = None
+        if isinstance(place, str):
+            mark, objects = self._vmarks.get(place), self._vobjects
+            obj = None if mark is None else VertexMarker(
+                place, mark.count, None if mark.head is None else self.base.neighbour(place, mark.head))
+        else:
+            entry, objects, obj = self._emarks.get(place), self._eobjects, None
+            if entry is not None:
+                (v, exit), count, end = entry
+                w = self.base.neighbour(v, exit)
+                obj = EdgeMarker((v, w), count, None if end is None else (v if end == "H" else w))
+        old = objects.get(place)
+        self.lying += (obj.count if obj else 0) - (old.count if old else 0)
+        if obj is None:
+            objects.pop(place, None)
+        else:
+            objects[place] = obj
+
     def _refresh(self, v: str, exit: int) -> None:
         """Recompute the dart marks at both ends of the edge at exit ``exit`` of ``v`` after a change."""
-        self._world = None
+        self._place_changed(frozenset((v, self.base.neighbour(v, exit))))
         for x in (v, self.base.neighbour(v, exit)):
             marks = self._darts(x)
             if marks:
@@ -139,7 +170,7 @@ class MarkerLayer:
             raise InvalidInput(f"vertex {v!r} already holds markers {_vertex_words(old.head)}; a marker "
                                f"{_vertex_words(head)} cannot join them")
         self._vmarks[v] = VertexMark(count + (old.count if old else 0), head)
-        self._world = None
+        self._place_changed(v)
 
     def drop_edge(self, v: str, exit: int, count: int, end: str | None) -> None:
         """Add ``count`` markers on the edge at exit ``exit`` of ``v``; ``end`` is "H"/"T" as seen from ``v``."""
@@ -167,7 +198,7 @@ class MarkerLayer:
             del self._vmarks[v]
         else:
             self._vmarks[v] = VertexMark(old.count - count, old.head)
-        self._world = None
+        self._place_changed(v)
 
     def pick_up_edge(self, v: str, exit: int, count: int) -> None:
         """Take ``count`` markers from the edge at exit ``exit`` of ``v``."""
@@ -186,19 +217,19 @@ class MarkerLayer:
     # -- the world as it is now ------------------------------------------------
     def markers(self) -> Iterator[Marker]:
         """The markers now lying in the world, vertex markers then edge markers, in the order first placed."""
-        for v, mark in self._vmarks.items():
-            yield VertexMarker(v, mark.count, None if mark.head is None else self.base.neighbour(v, mark.head))
-        for (v, exit), count, end in self._emarks.values():
-            w = self.base.neighbour(v, exit)
-            yield EdgeMarker((v, w), count, None if end is None else (v if end == "H" else w))
+        yield from self._vobjects.values()
+        yield from self._eobjects.values()
+
+    def _snapshot(self) -> tuple[Marker, ...]:
+        return tuple(self._vobjects.values()) + tuple(self._eobjects.values())
 
     def world(self) -> World:
         """A :class:`World` with the current markers (built once per change, on demand)."""
         if self._world is None:
             if self.thread.tied is None:
-                self._world = World.of_layer(self.base, tuple(self.markers()), self._vmarks, self._dmarks)
+                self._world = World.of_layer(self.base, self._snapshot(), self._vmarks, self._dmarks)
             else:  # a snapshot, not re-validated: this layer's operations keep the world and the thread valid
-                self._world = ThreadedWorld.of_layer(self.base, tuple(self.markers()), self._vmarks, self._dmarks,
+                self._world = ThreadedWorld.of_layer(self.base, self._snapshot(), self._vmarks, self._dmarks,
                                                      self.thread)
         return self._world
 

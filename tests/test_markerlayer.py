@@ -109,7 +109,8 @@ def test_a_movable_marker_goes_down_and_comes_back_uncounted_as_cost():
 @pytest.mark.parametrize("algorithm", ["case-1a", "case-3b", "case-dv-sum", "extension-2", "dudek"])
 def test_the_layers_snapshot_is_the_validated_world(algorithm):
     """MarkerLayer.world() copies the layer's marks without re-validating them (World.of_layer): after every
-    drop of a whole run they are what a world built and checked from the same markers has."""
+    drop of a whole run they are what a world built and checked from the same markers has, and the layer's
+    running count (``lying``, what the marker-budget check reads) is the sum of their counts."""
     from topomark.reference import generators
     from topomark.reference.explore import explore
     from topomark.spec.world import World
@@ -121,7 +122,7 @@ def test_the_layers_snapshot_is_the_validated_world(algorithm):
             snap = self.world
             full = World(snap.rotation, snap.markers, snap.start)
             checked.append(all(snap.vertex_mark(v) == full.vertex_mark(v) and snap.dart_marks(v) == full.dart_marks(v)
-                               for v in full.vertices))
+                               for v in full.vertices) and self.layer.lying == sum(m.count for m in full.markers))
     import topomark.reference.explore as ex
     real, ex.Simulator = ex.Simulator, Watch
     try:
