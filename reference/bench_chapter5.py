@@ -14,7 +14,8 @@ figure with numbers; guide §§2-4).  The ``chapter-5`` experiment
   random up to 12 vertices) and on Figure 3.4, with the n cue (``cue=n``) and
   with none (``max-models=1000``: without a cue no run on these worlds ever
   met the termination window of L1373, so every one ends at the cap — a cap of
-  1000 live models keeps that to seconds): outcomes, completed and peak
+  1000 live models keeps most to seconds; those runs take at most
+  ``UNCUED_MODEL_TREE_GRAPHS`` worlds per size): outcomes, completed and peak
   models, cost and time, and peak models and time against n.
 
 This report puts beside each statement of the thesis (quoted, with its line)
@@ -43,7 +44,7 @@ from topomark.spec.isomorphism import find_isomorphism
 from topomark.spec.world import World
 
 from . import generators as g
-from .bench_plan import CHAPTER_5_FAMILIES, EXPERIMENTS, FAMILIES
+from .bench_plan import CHAPTER_5_FAMILIES, EXPERIMENTS, FAMILIES, UNCUED_MODEL_TREE_GRAPHS
 from .bench_report import latest, lighthouse_of, plot_lines, run_totals
 from .runstore import read_runs, write_atomic
 
@@ -210,7 +211,9 @@ def _model_rows(runs: dict, fam: str, opt: str, size: int) -> list[dict]:
 def _model_section(runs: dict) -> list[str]:
     lines = ["## Algorithm 5.1 (§5.2.2): the model tree, on small worlds", "", f"Thesis: {QUOTES['5.2.2']}", "",
              "Option sets: `cue=n` gives the true n (§5.3's first cue: models over n vertices rejected, exploration "
-             "ends when every model has n vertices); `max-models=1000` is no cue, capped at 1000 live models. "
+             "ends when every model has n vertices); `max-models=1000` is no cue, capped at 1000 live models, on at most "
+             f"{UNCUED_MODEL_TREE_GRAPHS} worlds per size (every such run ends at a cap; one on a 6-cycle costs about "
+             "200 CPU-s). "
              "Completed/peak models: mean and max over the worlds; true world completed: runs whose completed "
              "models include the world.", "",
              "| family | size | options | worlds | mean n | correct | wrong map | failed | limit "

@@ -14,8 +14,8 @@ import pytest
 
 from topomark.reference import bench
 from topomark.reference.bench_chapter5 import figure_3_4, write_report
-from topomark.reference.bench_plan import (CHAPTER_5_FAMILIES, EXPERIMENTS, FAMILIES, SEARCHED, Run, plan,
-                                           resolve_options, world_for)
+from topomark.reference.bench_plan import (CHAPTER_5_FAMILIES, EXPERIMENTS, FAMILIES, SEARCHED,
+                                           UNCUED_MODEL_TREE_GRAPHS, Run, plan, resolve_options, world_for)
 from topomark.spec.errors import InvalidInput
 
 MT = ("model-tree", "nearest", "none")
@@ -33,6 +33,19 @@ def test_the_plan_covers_the_chapter_3_families_the_small_worlds_and_figure_3_4(
     assert {s for f, s in model if f == "small-random-40"} == {6, 8, 10, 12}
     assert max(world_for("small-lattice-hole", s, 0).n for f, s in model if f == "small-lattice-hole") <= 25
     assert world_for("figure-3.4a", 5, 3).markers == ()  # the wheel's marker is stripped
+
+
+def test_uncued_model_tree_runs_take_at_most_their_part_s_worlds_per_size():
+    """Uncued Algorithm 5.1 always ends at a cap (~200 CPU-s on a 6-cycle): Part.graphs caps its worlds a size,
+    while the cued runs and every other part get the --graphs asked for."""
+    runs = plan("chapter-5", graphs=7)
+    for fam in ("small-lattice-hole", "small-random-40"):
+        for size in FAMILIES[fam].sizes:
+            seeds = {o: {r.seed for r in runs if r.family == fam and r.size == size and r.options == o}
+                     for o in ("cue=n", "max-models=1000")}
+            assert seeds == {"cue=n": set(range(7)), "max-models=1000": set(range(UNCUED_MODEL_TREE_GRAPHS))}
+    assert UNCUED_MODEL_TREE_GRAPHS < 7 and len({r.seed for r in runs if r.family == "lattice-hole"}) == 7
+    assert {r.seed for r in plan("chapter-5", graphs=2) if r.options == "max-models=1000"} == {0, 1}
 
 
 def test_the_cue_option_gives_the_true_count_and_only_to_the_model_tree():
