@@ -40,7 +40,7 @@ from topomark.spec.signature import Signature, signature_at
 from .algorithm31 import Hypothesis, walk_hypothesis
 from .marker_walk import MarkerStep
 
-__all__ = ["PhaseTwo", "expected_walk", "PhaseStep"]
+__all__ = ["PhaseTwo", "expected_walk", "path_walk", "PhaseStep"]
 
 
 class PhaseStep(MarkerStep):
@@ -52,18 +52,35 @@ class PhaseStep(MarkerStep):
         return out
 
 
-def expected_walk(M: PartialMap, dart: MapDart, path: list[MapDart]) -> Hypothesis:
+def expected_walk(M: PartialMap, dart: MapDart, path: list[MapDart],
+                  walk: tuple[tuple[int, ...], tuple[Signature, ...], MapDart] | None = None) -> Hypothesis:
     """h' = ``dart`` = (v_k', i') with the motions that follow ``path`` (darts of S, the first at v_k') when the
-    robot stands at v_k' entered by i', and the signatures S says it will sense (P^E)."""
+    robot stands at v_k' entered by i', and the signatures S says it will sense (P^E).
+
+    Only the first motion depends on i': the rest of the walk (``walk``, :func:`path_walk` of ``path``) is the
+    same for every dart at v_k', so :meth:`PhaseTwo.hypotheses` computes it once per vertex."""
     v, entry = dart
+    if not path:
+        return Hypothesis(dart, (), (), dart)
+    if path[0][0] != v:
+        raise AlgorithmFailed(f"internal: the path {path} is not a walk of S from {dart}")
+    rest, expected, arrival = walk or path_walk(M, path)
+    return Hypothesis(dart, ((path[0][1] - entry) % M.degree(v),) + rest, expected, arrival)
+
+
+def path_walk(M: PartialMap, path: list[MapDart]) -> tuple[tuple[int, ...], tuple[Signature, ...], MapDart]:
+    """Along ``path`` (darts of S, non-empty): the motions after the first, the signatures sensed after each
+    move, and the dart of arrival."""
     motions, expected = [], []
+    v, entry = path[0][0], None
     for x, exit_ in path:
         if x != v:
-            raise AlgorithmFailed(f"internal: the path {path} is not a walk of S from {dart}")
-        motions.append((exit_ - entry) % M.degree(x))
+            raise AlgorithmFailed(f"internal: the path {path} is not a walk of S")
+        if entry is not None:
+            motions.append((exit_ - entry) % M.degree(x))
         v, entry = M.arc((x, exit_))
         expected.append(signature_at(M, v, entry))
-    return Hypothesis(dart, tuple(motions), tuple(expected), (v, entry))
+    return tuple(motions), tuple(expected), (v, entry)
 
 
 class PhaseTwo:
@@ -78,14 +95,15 @@ class PhaseTwo:
     def hypotheses(self, it: MarkerStep, sig: Signature) -> list[Hypothesis]:
         """H: unexplored darts (v_k' ≠ v_k) whose known end, entered by them, shows ``sig`` (same signature:
         marks and degree, Algorithm 6.4 lines 17–18, Algorithm 6.5 lines 15–16, 35–36)."""
-        found, paths = [], {}
+        found, paths = [], {}  # v_k' -> (its lighthouse path, the walk along it)
         for dart in self.M.unexplored:
             v, i = dart
             if v == it.edge[0] or self.M.degree(v) != sig.degree or signature_at(self.M, v, i) != sig:
                 continue
             if v not in paths:
-                paths[v] = self.lighthouse_path(v)
-            found.append(expected_walk(self.M, dart, paths[v]))
+                path = self.lighthouse_path(v)
+                paths[v] = path, (path_walk(self.M, path) if path else None)
+            found.append(expected_walk(self.M, dart, *paths[v]))
         return found
 
     def phase_two(self, it: MarkerStep, sig: Signature) -> None:
