@@ -46,6 +46,8 @@ class DropCount:
     """A trace sink that keeps only the markers dropped (less those picked up): the sum of the ``count`` of the
     simulator's ``op`` records (``spec/trace.md``), i.e. the markers lying in the world at the end."""
 
+    events = frozenset({"op"})  # explore makes no move or iteration record for this sink
+
     def __init__(self) -> None:
         self.markers = 0
 

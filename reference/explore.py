@@ -170,14 +170,16 @@ def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: 
         sink = ListSink()
     trace = sink.records if isinstance(sink, ListSink) else []
     emit = sink.emit if sink is not None else None
+    wanted = getattr(sink, "events", None)  # the record kinds the sink takes (tracesink's docstring); None: all
+    emit_move = emit if wanted is None or "move" in wanted else None
     tally = _Tally()
     if emit:
         emit(trace_header(spec.name, policies, run.light, world, run.kit, spec.family))
     layer = FAMILIES[spec.family].events
 
     def on_move(motion, purpose, sig, true_state):
-        if emit:
-            emit({"event": "move", "step": sim.cost, "motion": motion, "perception": str(sig),
+        if emit_move:
+            emit_move({"event": "move", "step": sim.cost, "motion": motion, "perception": str(sig),
                   "purpose": purpose})
 
     def on_op(event):
@@ -188,7 +190,7 @@ def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: 
     checker = Checker(sim, check_mode, spec.checks, spec) if check else None
 
     def observer(explorer, it):
-        if emit and "iteration" in layer:
+        if emit and "iteration" in layer and (wanted is None or "iteration" in wanted):
             emit({"event": "iteration", **it.to_json()})
         tally.add(it)  # counted before the check: an iteration that fails it is in explorer.iterations too
         if checker is not None:

@@ -7,7 +7,11 @@ only what its caller asked for: a long exploration written with
 records in memory, and without ``--trace`` nothing but the last few records
 (for a violation's diagnostic) is kept.
 
-A sink is anything with ``emit(record)``; :func:`trace_line` is the one
+A sink is anything with ``emit(record)``; one that wants only some kinds of
+record says so with an ``events`` attribute (a set of ``event`` names: the
+header and end records always come), and explore then does not make the
+others — a counting sink on a long run skips formatting every move.
+:func:`trace_line` is the one
 serialisation (keys sorted, no whitespace), so a streamed file is byte-for-byte
 what :func:`~topomark.reference.explore.dump_trace` makes of the same records.
 """

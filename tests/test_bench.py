@@ -125,3 +125,25 @@ def test_thesis_figures_are_transcribed_with_their_sources():
 def test_bad_input_exits_2():
     assert main(["bench", "no-such-experiment"]) == 2
     assert main(["bench", "tables", "--graphs", "0"]) == 2
+
+
+def test_a_sink_that_wants_only_op_records_gets_them_all_and_nothing_else():
+    """A sink's ``events`` (tracesink): explore skips the move and iteration records it does not want, and the
+    op records it gets are those of the whole trace; the bench's DropCount then counts the markers lying."""
+    from topomark.reference import generators
+    from topomark.reference.bench_run import DropCount
+    from topomark.reference.explore import explore
+    from topomark.reference.tracesink import ListSink
+
+    class Ops(ListSink):
+        events = frozenset({"op"})
+
+    world = generators.complete_hole(7, 0.2, 1)
+    full, some, count = ListSink(), Ops(), DropCount()
+    for sink in (full, some, count):
+        out = explore(world, "case-1a", sink=sink)
+        assert out.outcome == "correct"
+    kinds = {r["event"] for r in full.records}
+    assert {"move", "op", "header", "end"} <= kinds
+    assert some.records == [r for r in full.records if r["event"] in ("header", "op", "end")]
+    assert count.markers == sum(r["count"] for r in full.records if r["event"] == "op") > 0
