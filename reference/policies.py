@@ -16,11 +16,12 @@
 from __future__ import annotations
 
 from collections import deque
+from typing import Container
 
 from topomark.spec.errors import InvalidInput
 from topomark.spec.mapstate import MapDart, PartialMap
 
-__all__ = ["EDGE_POLICIES", "HYPOTHESIS_POLICIES", "PATH_POLICIES", "Policies", "bfs", "bfs_preorder", "tree_to_v0"]
+__all__ = ["EDGE_POLICIES", "HYPOTHESIS_POLICIES", "PATH_POLICIES", "Policies", "bfs", "bfs_preorder", "nearest", "tree_to_v0"]
 
 EDGE_POLICIES = ("nearest", "fifo", "lifo")
 HYPOTHESIS_POLICIES = ("fifo", "lifo", "shortest")
@@ -91,6 +92,29 @@ def _bfs(S: PartialMap, root: int) -> tuple[dict[int, int], dict[int, int], dict
                 parent[t[0]] = (v, i)
                 todo.append(t[0])
     return dist, toward, parent
+
+
+def nearest(S: PartialMap, root: int, wanted: Container[int]) -> tuple[int | None, dict[int, MapDart]]:
+    """The vertex of ``wanted`` nearest ``root`` in S (the least-numbered among the nearest; None if none is
+    reached) and the parent darts of :func:`bfs` from ``root``, the search stopped after that vertex's layer —
+    the same parents, for every vertex it reached, at a fraction of a whole search when the vertex is near."""
+    if root in wanted:
+        return root, {}
+    dist, parent, layer, d = {root: 0}, {}, [root], 0
+    links = S.links
+    while layer:
+        d, found, following = d + 1, [], []
+        for v in layer:
+            for i, t in enumerate(links(v)):
+                if t is not None and t[0] not in dist:
+                    dist[t[0]], parent[t[0]] = d, (v, i)
+                    following.append(t[0])
+                    if t[0] in wanted:
+                        found.append(t[0])
+        if found:
+            return min(found), parent
+        layer = following
+    return None, parent
 
 
 def bfs_preorder(S: PartialMap, root: int) -> list[int]:

@@ -199,3 +199,22 @@ def test_docstring_examples(module):
     import doctest
     import importlib
     assert doctest.testmod(importlib.import_module(f"topomark.reference.{module}")).failed == 0
+
+
+def test_nearest_agrees_with_a_whole_breadth_first_search():
+    """policies.nearest (Case 5's lighthouse paths) stops the search after the nearest wanted vertex's layer:
+    the vertex is the least-numbered at the least distance of a whole bfs, and its parents are bfs's."""
+    import random
+    from topomark.reference import generators
+    from topomark.reference.explore import explore
+    from topomark.reference.policies import bfs, nearest
+    out = explore(generators.lattice_hole(5, 6, 0.1, "vertices", 2), "basic", record=False)
+    S = out.explorer.S
+    rng = random.Random(5)
+    for _ in range(200):
+        root, wanted = rng.randrange(S.n), set(rng.sample(range(S.n), rng.randint(1, 4)))
+        dist, _, parent = bfs(S, root)
+        light, some = nearest(S, root, wanted)
+        assert light == min(wanted, key=lambda x: (dist[x], x))
+        assert all(parent[x] == some[x] for x in some) and (light == root or light in some)
+    assert nearest(S, 0, ()) == (None, bfs(S, 0)[2])

@@ -59,7 +59,7 @@ from topomark.spec.errors import AlgorithmFailed
 from topomark.spec.mapstate import MapDart
 from topomark.spec.signature import Signature
 
-from ..policies import bfs
+from ..policies import nearest
 from .case5_phase2 import PhaseTwo
 from .counted_markers import VertexCounts
 from .marker_walk import MarkerStep
@@ -99,11 +99,9 @@ class VertexCountsThenLighthouse(PhaseTwo, VertexCounts):
 
     def lighthouse_path(self, v: int) -> list[MapDart]:
         """Lines 21–24: a shortest path of S from v_k' = ``v`` to the nearest marked v_l, then to v_n."""
-        dist, _, parent = bfs(self.M, v)
-        marked = [x for x in self.count_of if x in dist]
-        if not marked:
+        light, parent = nearest(self.M, v, self.count_of)  # the least-numbered among the nearest marked
+        if light is None:
             raise AlgorithmFailed(f"no marked place is connected to map vertex {v}")
-        light = min(marked, key=lambda x: (dist[x], x))
         path, x = [], light
         while x != v:
             path.append(parent[x])

@@ -67,7 +67,7 @@ from topomark.spec.kit import MarkerOp
 from topomark.spec.mapstate import MapDart
 from topomark.spec.signature import Signature
 
-from ..policies import bfs
+from ..policies import nearest
 from .case5_phase2 import PhaseTwo
 from .edge_footprints import FootprintSearch, VertexEdgeFootprints
 from .marker_walk import MarkerStep
@@ -160,8 +160,8 @@ class VertexEdgeThenLighthouse(PhaseTwo, VertexEdgeFootprints):
 
     def lighthouse_path(self, v: int) -> list[MapDart]:
         """A shortest path of S from v_k' = ``v`` to v0 (L1770: v0 is the directional lighthouse)."""
-        _, _, parent = bfs(self.M, v)
-        if 0 not in parent:
+        reached, parent = nearest(self.M, v, (0,))
+        if reached is None:
             raise AlgorithmFailed(f"internal: v0 is not connected to map vertex {v}")
         path, x = [], 0
         while x != v:
