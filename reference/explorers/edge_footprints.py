@@ -99,6 +99,7 @@ class FootprintSearch(MarkerWalk):
 
     name = "footprints"
     loop_markers = 1  # markers on a loop edge (Cases 1a, 1b, 2, 4: one)
+    loop_head: str | None = None  # a loop marker's end at v_u ("H"/"T", §6.2.2 L1891); None: undirected
 
     def is_new(self, sig: Signature) -> bool:
         """v_u has not been visited (E-marker algorithms: no other marked edge, L1497)."""
@@ -149,7 +150,7 @@ class FootprintSearch(MarkerWalk):
     def mark_loop_edge(self, it: MarkerStep, sig: Signature) -> bool:
         """Drop the loop marker on e from v_u (position unknown: the world changes, S learns it at both
         ends later); False if the step is finished without a search."""
-        self.robot.operate(MarkerOp("edge", exit=0, count=self.loop_markers))
+        self.robot.operate(MarkerOp("edge", exit=0, count=self.loop_markers, direction=self.loop_head))
         self.dropped += self.loop_markers
         it.dropped += self.loop_markers
         return True
@@ -217,10 +218,11 @@ class VertexEdgeFootprints(FootprintSearch):
     extension (L1508–L1521, Figure 6.5)."""
 
     name = "case-1b"
+    vertex_head: int | None = None  # a V-marker's exit relative to the entry (§6.2.2 L1891); None: undirected
 
     def begin(self) -> None:
         """"Initially the robot drops a marker at its starting vertex v_0" (L1510)."""
-        self.drop(MarkerOp("vertex"))
+        self.drop(MarkerOp("vertex", direction=self.vertex_head))
 
     def is_new(self, sig: Signature) -> bool:
         """"if v_u does not contain a marker then v_u has not been visited before" (L1510)."""
@@ -231,7 +233,7 @@ class VertexEdgeFootprints(FootprintSearch):
 
     def on_new(self, it: MarkerStep, u: int, count: int) -> None:
         """A marker at v_u; refused, this is the last iteration (L1512): v_u must have no other edge."""
-        if not self.try_drop(MarkerOp("vertex"), it) and (self.M.degree(u) != 1 or self.M.unexplored):
+        if not self.try_drop(MarkerOp("vertex", direction=self.vertex_head), it) and (self.M.degree(u) != 1 or self.M.unexplored):
             raise AlgorithmFailed(f"out of markers at iteration {it.number}: the new vertex cannot be marked and "
                                   f"exploration is not over ({len(self.M.unexplored)} unexplored edges)")
 

@@ -1,0 +1,111 @@
+"""The O(mn) footprint searches improved with directional markers: *edgeINFO* (thesis §6.2.2, L1891–L1898,
+Figure 6.14): Case 1b with m + 1 directional V-E-markers (``case-1b-edgeinfo``).
+
+The loop, the drops' places, the search and the m extension are Case 1b's
+(:class:`~topomark.reference.explorers.edge_footprints.VertexEdgeFootprints`,
+L1508–L1521); only the markers' directions and the candidate filter differ.
+"Assume that when the robot drops a V-marker at a vertex, it drops the marker
+in such a way that the marker head points toward one of the exits (edges), and
+that when it drops an E-marker on an edge, it drops the marker in such a way
+that the marker head points toward one of the end vertices" (L1891).  On a
+marked v_u the robot reads edgeINFO, the presence/absence (and, "enriched",
+the head/tail) of E-markers on the edges of v_u "enumerated starting from the
+edge pointed to by the directional V-marker" (L1891), and a known vertex is
+"potentially confusing" — a candidate to visit — "only if ... 1) the 1st edge
+on the *right* of the edge pointed by the V-marker, which corresponds to the
+entry edge, must be an unexplored edge, 2) it has [the same] edgeINFO" (L1898).
+
+Decisions, with the thesis lines (each shown in ``tests/test_markers_622.py``):
+
+* **Which exit a V-marker points at** (L1891 leaves it open; guide §7 NOTE):
+  the edge the robot entered by when it dropped it (``direction=0``), at v0
+  the exit it faces (the map's exit 0).  A robot entering that vertex later
+  by exit j senses ``V-((head − j) mod deg)``.
+* **Which end an E-marker's head points at** (L1891 leaves it open): v_u,
+  the vertex the robot stands at when it drops the loop marker (``"H"``);
+  so the loop edge e = e' reads ``E-p-H`` at v_k' and ``E-p-T`` at v_k.
+  The thesis's example reads "incoming (P_H)" (L1898); with this convention
+  every loop edge is incoming at the vertex found by the search.  Its
+  (P_T, A, P_H, A) from ``[4,V-1,E-1-H,E-3-T]`` (L1896/L1898, guide §10
+  #20) is inconsistent with "incoming (P_H)"; here edgeINFO is read from
+  the signature as :func:`~topomark.spec.signature.signature_at` defines
+  it, so the question does not arise.
+* **The candidate test, made exact** (generalising L1898 as the guide's NOTE
+  does): a directional V-marker fixes an absolute frame at every vertex, so
+  conditions 1) and 2), and the enriched edgeINFO, say together that a
+  known vertex w can be v_u only through a dart (w, j) with j unexplored in
+  S and ``signature_at(S, w, j)`` equal to what the robot sensed at v_u on
+  arrival (before it drops the marker on e, so e's own new marker is not in
+  the comparison, as in every footprint search, Algorithm 6.3 line 7).  S
+  shows every marker in the world at that moment (all were dropped by the
+  robot and recorded), and unexplored edges carry none, so the true v_k'
+  always passes: the filter never excludes it.  For a marked vertex the
+  V-marker allows at most one such j.  On top of Case 1b's filter (degree,
+  c, an unexplored edge, not v_k or its neighbours) this one only removes
+  candidates.  :func:`matching_darts` needs no V-marker (it compares
+  whole signatures from every unexplored entry), so it serves an E-only
+  algorithm as well.
+* **A unique candidate is still visited** (L1898: "is not potentially
+  confusing and thus does not need to be visited" excludes only the
+  vertices that fail; the potentially confusing ones are searched as in
+  Case 1b, L1506): the search validates the back-link by the footprint
+  itself — the marker on e seen where S shows none — and never trusts a
+  match alone.  The cost gained is the candidates not walked to.
+* **Cost**: fewer candidates, visited in Case 1b's order, so in practice a
+  shorter search; not a theorem — the search stops where v_k' is first
+  *passed*, and a skipped candidate's path could have passed it earlier.
+  The bound stays Case 1b's O(mn) (L1891: "the cost bound remains
+  unchanged"), the markers its m + 1 (n V + m − n + 1 E, all directional).
+
+Examples
+--------
+>>> from topomark.spec.mapstate import PartialMap
+>>> M = PartialMap(); M.add_vertex(3)
+0
+>>> M.unexplored.extend([(0, 1), (0, 2)]); M.mark_vertex(0, 1, 0)  # V-marker at v0 pointing at exit 0
+>>> matching_darts(M, 0, Signature(3, 1, 2))  # entered by exit 1, the head is 2 exits clockwise
+[1]
+>>> matching_darts(M, 0, Signature(3, 1, 0))  # that would be entry 0, which S knows
+[]
+"""
+
+from __future__ import annotations
+
+from topomark.spec.mapstate import PartialMap
+from topomark.spec.signature import Signature, signature_at
+
+from .edge_footprints import VertexEdgeFootprints
+from .marker_walk import MarkerStep
+
+__all__ = ["matching_darts", "EdgeInfoFootprints"]
+
+
+def matching_darts(M: PartialMap, w: int, sensed: Signature, exits: list[int] | None = None) -> list[int]:
+    """The unexplored exits j of map vertex ``w`` (``exits`` if the caller has them) by which a robot would sense
+    ``sensed`` at ``w`` (S's marks)."""
+    if exits is None:
+        exits = [j for v, j in M.unexplored if v == w]
+    return [j for j in exits if signature_at(M, w, j) == sensed]
+
+
+class EdgeInfoFootprints(VertexEdgeFootprints):
+    """Case 1b with directional V-E-markers: candidates must match edgeINFO from the entry (L1891–L1898)."""
+
+    name = "case-1b-edgeinfo"
+    vertex_head = 0  # each V-marker points at the edge the robot entered by
+    loop_head = "H"  # each loop E-marker's head points at v_u, where the robot drops it
+
+    _sensed: Signature | None = None
+
+    def search(self, it: MarkerStep, key: tuple[int, ...], degree: int) -> tuple[int, int, int]:
+        """Case 1b's search; the candidates are filtered by what was sensed at v_u (``it.signature``)."""
+        self._sensed = it.signature
+        return super().search(it, key, degree)
+
+    def candidates(self, vk: int, key: tuple[int, ...], degree: int) -> list[int]:
+        """Case 1b's candidates that are potentially confusing by edgeINFO: some unexplored entry matches."""
+        exits: dict[int, list[int]] = {}
+        for v, j in self.M.unexplored:
+            exits.setdefault(v, []).append(j)
+        return [w for w in super().candidates(vk, key, degree)
+                if matching_darts(self.M, w, self._sensed, exits[w])]

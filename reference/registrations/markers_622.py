@@ -1,0 +1,47 @@
+"""§6.2.2's enhancements of the O(mn) footprint searches with *directional* markers: edgeINFO (thesis
+L1891–L1898, Figure 6.14).  Explorer: :mod:`topomark.reference.explorers.edge_info`.
+
+============================  ==========================================  ===========================  =============
+algorithm                     thesis                                      kit (default)                marker bound
+============================  ==========================================  ===========================  =============
+case-1b-edgeinfo              Case 1b, m + 1 directional V-E (L1891)      n V + m − n + 1 E, directed  m + 1
+============================  ==========================================  ===========================  =============
+
+The bound is Case 1b's (:func:`~topomark.reference.registrations.markers_621.footprints_bound`,
+ours, exact for the explorer): "the cost bound remains unchanged" (L1891), and
+the search only walks to fewer candidates.  The kit is Case 1b's split, all
+markers directional; ``--markers K`` gives K of each kind, as for ``case-1b``.
+
+Examples
+--------
+>>> [s.name for s in SPECS]
+['case-1b-edgeinfo']
+>>> SPECS[0].kit_for(4, 4, {"markers": None}).describe()  # the 4-cycle
+'4 directional vertex markers, 1 directional edge marker'
+>>> SPECS[0].bound_for(3, 3) == footprints_bound(3, 3)
+True
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+from topomark.spec.kit import Kit
+
+from ..explorers.edge_info import EdgeInfoFootprints
+from .markers_621 import _case_1b_kit, _spec, footprints_bound
+
+__all__ = ["SPECS"]
+
+
+def _directional_1b_kit(n: int, m: int, options: dict) -> Kit:
+    """Case 1b's kit (n V + m − n + 1 E, or ``--markers K`` of each kind), every marker directional (L1891)."""
+    return replace(_case_1b_kit(n, m, options), directional=True)
+
+
+SPECS = (
+    replace(_spec("case-1b-edgeinfo", "§6.2.2 Case 1b with directional V-E-markers, edgeINFO (L1891–L1898, "
+                  "Figure 6.14)", "m + 1 directional V-E-markers, split n V + (m − n + 1) E (as case-1b)",
+                  EdgeInfoFootprints, _directional_1b_kit, lambda n, m: m + 1, "L1891"),
+            kit=Kit(edge=1, directional=True)),
+)

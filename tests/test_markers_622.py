@@ -1,0 +1,125 @@
+"""§6.2.2's edgeINFO improvement of Case 1b with directional V-E-markers (reference/explorers/edge_info.py,
+registrations/markers_622.py).  Every run is checked (pose, I-1, I-2 and the marker budget after every step,
+extended isomorphism with every dropped — directional — marker at the end); each test adds what it proves.
+The decisions are shown on the smallest worlds that show them."""
+
+from __future__ import annotations
+
+import doctest
+import json
+
+import pytest
+
+from topomark.reference import generators as g
+from topomark.reference.cli import main
+from topomark.reference.explore import explore
+from topomark.reference.explorers import edge_info
+from topomark.reference.registrations import markers_622
+from topomark.reference.registry import REGISTRY
+from topomark.spec.signature import signature_at
+
+NAME = "case-1b-edgeinfo"
+WORLDS = {
+    "lattice-hole 4x5": lambda: g.lattice_hole(4, 5, 0.1, "vertices", 1),
+    "lattice-hole 3x4": lambda: g.lattice_hole(3, 4, 0.1, "vertices", 2),
+    "complete-hole 7 s1": lambda: g.complete_hole(7, 0.1, 1),
+    "complete-hole 7 s3": lambda: g.complete_hole(7, 0.1, 3),
+    "complete-hole 6 s3": lambda: g.complete_hole(6, 0.1, 3),
+    "random 9": lambda: g.random_graph(9, 0.4, 2),
+    "K6": lambda: g.complete(6),
+}
+
+
+def used(out) -> int:
+    """Markers lying in the world at the end, as the final map shows them (else the isomorphism fails)."""
+    return sum(m.count for m in out.explorer.S.to_world().markers)
+
+
+@pytest.fixture(scope="module")
+def runs():
+    """Each world explored once by case-1b and once by case-1b-edgeinfo."""
+    out = {}
+    for label, make in WORLDS.items():
+        w = make()
+        out[label] = (w, explore(w, "case-1b"), explore(w, NAME))
+    return out
+
+
+@pytest.mark.parametrize("label", list(WORLDS))
+def test_each_run_is_correct_within_its_marker_and_cost_bounds_and_never_costs_more_than_case_1b(runs, label):
+    w, plain, directed = runs[label]
+    spec = REGISTRY[NAME]
+    assert (directed.outcome, directed.verified, directed.violation) == ("correct", True, None)
+    assert used(directed) == directed.explorer.dropped == w.m + 1 <= spec.marker_bound_fn(w.n, w.m)
+    assert all(m.directional for m in directed.explorer.S.to_world().markers)  # every marker directional
+    assert w.m <= directed.cost <= plain.cost <= spec.bound_for(w.n, w.m)
+    # the same edges in the same order: only the search differs, and its candidates are a subset of case-1b's
+    one, two = plain.explorer.iterations, directed.explorer.iterations
+    assert [it.joined for it in one] == [it.joined for it in two]
+    assert all(set(b.candidates) <= set(a.candidates) for a, b in zip(one, two))
+    assert all(it.found in it.candidates for it in two if it.kind == "loop" and it.candidates)
+
+
+def test_edgeinfo_is_strictly_cheaper_on_complete_hole_worlds(runs):
+    """complete-hole n=6 seed 3 (42 → 41, the smallest generated world where the cost drops), n=7 seeds 1, 3."""
+    costs = {label: (runs[label][1].cost, runs[label][2].cost) for label in runs}
+    assert costs["complete-hole 6 s3"][1] < costs["complete-hole 6 s3"][0]
+    assert costs["complete-hole 7 s1"][1] < costs["complete-hole 7 s1"][0]
+    assert sum(b for _, b in costs.values()) < sum(a for a, _ in costs.values())
+
+
+def test_direction_convention_on_the_triangle():
+    """L1891 leaves the exit and the end open.  Decided: each V-marker points at the edge the robot entered by
+    when it dropped it (v0: the faced exit, map exit 0; a new vertex: map exit 0 = e), the loop marker's head
+    at v_u = v_k' (H there, T at v_k).  The triangle: v0 → v1 → v2, the loop edge back to v0 (found at v0)."""
+    out = explore(g.cycle(3), NAME)
+    assert out.outcome == "correct" and out.verified
+    S = out.explorer.S
+    assert [S.vertex_mark(v).head for v in S.vertices] == [0, 0, 0]
+    (loop,) = [it for it in out.explorer.iterations if it.kind == "loop"]
+    (vk, i), (found, j) = loop.joined
+    assert found == 0 and [dm.end for dm in S.dart_marks(found)] == ["H"] and S.dart_marks(found)[0].exit == j
+    assert [dm.end for dm in S.dart_marks(vk)] == ["T"] and S.dart_marks(vk)[0].exit == i
+    # what the robot sensed at v_u on arrival is what S says it senses at v_k' entered by e', less e's marker
+    assert str(loop.signature) == "[2,V-1,A]" and signature_at(S, found, j).vertex_direction == 1
+
+
+def test_a_unique_candidate_is_still_visited():
+    """L1898 spares only the vertices that fail the conditions; the triangle's one candidate, v0, is visited
+    anyway (back to v2 over e, then v2 → v1 → v0: the footprint on e is seen there)."""
+    out = explore(g.cycle(3), NAME)
+    (loop,) = [it for it in out.explorer.iterations if it.kind == "loop"]
+    assert loop.candidates == [0] and loop.found == 0
+    assert (out.by_purpose["retrace"], out.by_purpose["validation"]) == (1, 2)
+
+
+def test_edgeinfo_excludes_a_candidate_case_1b_visits_on_k6(runs):
+    """K6, iteration 13: case-1b's candidates are v3 and v4 (degree 5, c = 2); the robot senses
+    [5,V-1,E-3-T,E-4-H] and only v3 reads that from an unexplored entry (L1898's conditions 1 and 2, enriched)."""
+    w, plain, directed = runs["K6"]
+    a, b = plain.explorer.iterations[12], directed.explorer.iterations[12]
+    assert (a.candidates, b.candidates, str(b.signature)) == ([3, 4], [3], "[5,V-1,E-3-T,E-4-H]")
+    assert b.found == 3
+    M = directed.explorer.S
+    # v4 passes Case 1b's test (two single-marked edges), but no entry of it reads what was sensed
+    assert edge_info.matching_darts(M, 4, b.signature) == []
+
+
+def test_the_cli_runs_it_and_refuses_zero_markers(capsys):
+    assert main(["explore", "complete-hole:n=6,seed=3", "--algorithm", NAME, "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert (data["outcome"], data["verified"], data["cost"]) == ("correct", True, 41)
+    assert main(["explore", "cycle:n=4", "--algorithm", NAME, "--markers", "0"]) == 2
+    assert "--markers must be an integer >= 1" in capsys.readouterr().err
+    assert main(["explore", "cycle:n=4", "--algorithm", NAME, "--markers", "1", "--json"]) == 1
+    assert json.loads(capsys.readouterr().out)["outcome"] == "failed"
+
+
+def test_it_is_listed_after_the_621_algorithms(capsys):
+    names = list(REGISTRY)
+    assert names.index(NAME) > max(names.index(n) for n in ("case-1b", "case-2", "case-4-mn", "case-5-v2"))
+
+
+@pytest.mark.parametrize("module", [edge_info, markers_622])
+def test_docstring_examples(module):
+    assert doctest.testmod(module).failed == 0
