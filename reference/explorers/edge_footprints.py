@@ -233,7 +233,8 @@ class VertexEdgeFootprints(FootprintSearch):
 
     def on_new(self, it: MarkerStep, u: int, count: int) -> None:
         """A marker at v_u; refused, this is the last iteration (L1512): v_u must have no other edge."""
-        if not self.try_drop(MarkerOp("vertex", direction=self.vertex_head), it) and (self.M.degree(u) != 1 or self.M.unexplored):
+        marked = self.try_drop(MarkerOp("vertex", direction=self.vertex_head), it)
+        if not marked and (self.M.degree(u) != 1 or self.M.unexplored):
             raise AlgorithmFailed(f"out of markers at iteration {it.number}: the new vertex cannot be marked and "
                                   f"exploration is not over ({len(self.M.unexplored)} unexplored edges)")
 
