@@ -1,7 +1,7 @@
-"""§6.2.2's edgeINFO improvement of Case 1b with directional V-E-markers (reference/explorers/edge_info.py,
-registrations/markers_622.py).  Every run is checked (pose, I-1, I-2 and the marker budget after every step,
-extended isomorphism with every dropped — directional — marker at the end); each test adds what it proves.
-The decisions are shown on the smallest worlds that show them."""
+"""§6.2.2's edgeINFO improvement of Case 1b with directional V-E-markers and of Case 2 with directional
+E-markers (reference/explorers/edge_info.py, registrations/markers_622.py).  Every run is checked (pose, I-1,
+I-2 and the marker budget after every step, extended isomorphism with every dropped — directional — marker at
+the end); each test adds what it proves.  The decisions are shown on the smallest worlds that show them."""
 
 from __future__ import annotations
 
@@ -19,6 +19,8 @@ from topomark.reference.registry import REGISTRY
 from topomark.spec.signature import signature_at
 
 NAME = "case-1b-edgeinfo"
+BASE = {NAME: "case-1b", "case-2-edgeinfo": "case-2"}  # each improved algorithm and the one it improves
+USES = {NAME: lambda n, m: m + 1, "case-2-edgeinfo": lambda n, m: m + n - 1}  # L1510, L1529: exactly
 WORLDS = {
     "lattice-hole 4x5": lambda: g.lattice_hole(4, 5, 0.1, "vertices", 1),
     "lattice-hole 3x4": lambda: g.lattice_hole(3, 4, 0.1, "vertices", 2),
@@ -36,21 +38,29 @@ def used(out) -> int:
 
 
 @pytest.fixture(scope="module")
-def runs():
-    """Each world explored once by case-1b and once by case-1b-edgeinfo."""
+def all_runs():
+    """Each world explored by each improved algorithm and by the one it improves: (world, plain, directed)."""
     out = {}
     for label, make in WORLDS.items():
         w = make()
-        out[label] = (w, explore(w, "case-1b"), explore(w, NAME))
+        for name, base in BASE.items():
+            out[label, name] = (w, explore(w, base), explore(w, name))
     return out
 
 
+@pytest.fixture(scope="module")
+def runs(all_runs):
+    return {label: all_runs[label, NAME] for label in WORLDS}
+
+
+@pytest.mark.parametrize("name", list(BASE))
 @pytest.mark.parametrize("label", list(WORLDS))
-def test_each_run_is_correct_within_its_marker_and_cost_bounds_and_never_costs_more_than_case_1b(runs, label):
-    w, plain, directed = runs[label]
-    spec = REGISTRY[NAME]
+def test_each_run_is_correct_within_its_marker_and_cost_bounds_and_never_costs_more_than_its_base(all_runs, label,
+                                                                                                 name):
+    w, plain, directed = all_runs[label, name]
+    spec = REGISTRY[name]
     assert (directed.outcome, directed.verified, directed.violation) == ("correct", True, None)
-    assert used(directed) == directed.explorer.dropped == w.m + 1 <= spec.marker_bound_fn(w.n, w.m)
+    assert used(directed) == directed.explorer.dropped == USES[name](w.n, w.m) <= spec.marker_bound_fn(w.n, w.m)
     assert all(m.directional for m in directed.explorer.S.to_world().markers)  # every marker directional
     assert w.m <= directed.cost <= plain.cost <= spec.bound_for(w.n, w.m)
     # the same edges in the same order: only the search differs, and its candidates are a subset of case-1b's
@@ -60,12 +70,26 @@ def test_each_run_is_correct_within_its_marker_and_cost_bounds_and_never_costs_m
     assert all(it.found in it.candidates for it in two if it.kind == "loop" and it.candidates)
 
 
-def test_edgeinfo_is_strictly_cheaper_on_complete_hole_worlds(runs):
-    """complete-hole n=6 seed 3 (42 → 41, the smallest generated world where the cost drops), n=7 seeds 1, 3."""
-    costs = {label: (runs[label][1].cost, runs[label][2].cost) for label in runs}
-    assert costs["complete-hole 6 s3"][1] < costs["complete-hole 6 s3"][0]
-    assert costs["complete-hole 7 s1"][1] < costs["complete-hole 7 s1"][0]
-    assert sum(b for _, b in costs.values()) < sum(a for a, _ in costs.values())
+def test_edgeinfo_is_strictly_cheaper_on_complete_hole_worlds(all_runs):
+    """complete-hole n=6 seed 3 (42 → 41 for both, the smallest generated world where the cost drops); for
+    case-1b also n=7 seed 1 (62 → 61)."""
+    costs = {key: (plain.cost, directed.cost) for key, (_, plain, directed) in all_runs.items()}
+    for name in BASE:
+        assert costs["complete-hole 6 s3", name][1] < costs["complete-hole 6 s3", name][0]
+    assert costs["complete-hole 7 s1", NAME][1] < costs["complete-hole 7 s1", NAME][0]
+
+
+def test_case_2_edgeinfo_points_every_head_at_v_u_on_the_triangle():
+    """Case 2 (L1898 "in a similar manner"): the two markers on a non-loop edge and the one on the loop edge all
+    have their head at v_u — the new vertex, or v_k' found by the search (H there, T at the other end)."""
+    out = explore(g.cycle(3), "case-2-edgeinfo")
+    assert out.outcome == "correct" and out.verified and used(out) == 5
+    S = out.explorer.S
+    for it in out.explorer.iterations:
+        (vk, i), (u, j) = it.joined
+        here = {dm.exit: (dm.count, dm.end) for dm in S.dart_marks(u)}[j]
+        there = {dm.exit: (dm.count, dm.end) for dm in S.dart_marks(vk)}[i]
+        assert (here, there) == (((2, "H"), (2, "T")) if it.kind == "non-loop" else ((1, "H"), (1, "T")))
 
 
 def test_direction_convention_on_the_triangle():
@@ -113,11 +137,14 @@ def test_the_cli_runs_it_and_refuses_zero_markers(capsys):
     assert "--markers must be an integer >= 1" in capsys.readouterr().err
     assert main(["explore", "cycle:n=4", "--algorithm", NAME, "--markers", "1", "--json"]) == 1
     assert json.loads(capsys.readouterr().out)["outcome"] == "failed"
+    assert main(["explore", "cycle:n=4", "--algorithm", "case-2-edgeinfo", "--markers", "0"]) == 2
+    assert "--markers must be an integer >= 1" in capsys.readouterr().err
 
 
-def test_it_is_listed_after_the_621_algorithms(capsys):
+def test_they_are_listed_after_the_621_algorithms():
     names = list(REGISTRY)
-    assert names.index(NAME) > max(names.index(n) for n in ("case-1b", "case-2", "case-4-mn", "case-5-v2"))
+    for name in BASE:
+        assert names.index(name) > max(names.index(n) for n in ("case-1b", "case-2", "case-4-mn", "case-5-v2"))
 
 
 @pytest.mark.parametrize("module", [edge_info, markers_622])

@@ -1,9 +1,13 @@
 """The O(mn) footprint searches improved with directional markers: *edgeINFO* (thesis §6.2.2, L1891–L1898,
-Figure 6.14): Case 1b with m + 1 directional V-E-markers (``case-1b-edgeinfo``).
+Figure 6.14): Case 1b with m + 1 directional V-E-markers (``case-1b-edgeinfo``) and Case 2 (Algorithm 6.1)
+with m + n directional E-markers (``case-2-edgeinfo``): "The other $O(mn)$ algorithms can be improved in a
+similar manner" (L1898).
 
 The loop, the drops' places, the search and the m extension are Case 1b's
 (:class:`~topomark.reference.explorers.edge_footprints.VertexEdgeFootprints`,
-L1508–L1521); only the markers' directions and the candidate filter differ.
+L1508–L1521) or Case 2's (``DoubleMarkedEdges``, L1523–L1554); only the
+markers' directions (the hooks ``vertex_head`` / ``loop_head`` there) and the
+candidate filter (:class:`EdgeInfoFilter`) differ.
 "Assume that when the robot drops a V-marker at a vertex, it drops the marker
 in such a way that the marker head points toward one of the exits (edges), and
 that when it drops an E-marker on an edge, it drops the marker in such a way
@@ -45,6 +49,16 @@ Decisions, with the thesis lines (each shown in ``tests/test_markers_622.py``):
   candidates.  :func:`matching_darts` needs no V-marker (it compares
   whole signatures from every unexplored entry), so it serves an E-only
   algorithm as well.
+* **Case 2: anchored at the entry** (L1898 "in a similar manner"; guide §7
+  NOTE and §10 #21: without a V-marker "a rotation-invariant comparison
+  would be needed"): a candidate dart (w, j) passes iff j is unexplored and
+  S's marks at w read from entry j are the marks sensed at v_u relative to
+  its entry — :func:`matching_darts` tries every unexplored entry of w, which
+  is that rotation-invariant comparison.  Every E-marker's head is at v_u
+  (the two on a non-loop e point at the new vertex, the loop one at v_k').
+  Observation: the marked edges' *positions* relative to the entry are
+  sensed even with undirected markers; the heads and (Case 1b) the V-marker's
+  fixing of j are what the directional markers add.
 * **A unique candidate is still visited** (L1898: "is not potentially
   confusing and thus does not need to be visited" excludes only the
   vertices that fail; the potentially confusing ones are searched as in
@@ -55,7 +69,8 @@ Decisions, with the thesis lines (each shown in ``tests/test_markers_622.py``):
   shorter search; not a theorem — the search stops where v_k' is first
   *passed*, and a skipped candidate's path could have passed it earlier.
   The bound stays Case 1b's O(mn) (L1891: "the cost bound remains
-  unchanged"), the markers its m + 1 (n V + m − n + 1 E, all directional).
+  unchanged"), the markers its m + 1 (n V + m − n + 1 E, all directional);
+  Case 2's likewise (m + n − 1 used, L1529).
 
 Examples
 --------
@@ -71,13 +86,14 @@ Examples
 
 from __future__ import annotations
 
+from topomark.spec.kit import MarkerOp
 from topomark.spec.mapstate import PartialMap
 from topomark.spec.signature import Signature, signature_at
 
-from .edge_footprints import VertexEdgeFootprints
+from .edge_footprints import DoubleMarkedEdges, FootprintSearch, VertexEdgeFootprints
 from .marker_walk import MarkerStep
 
-__all__ = ["matching_darts", "EdgeInfoFootprints"]
+__all__ = ["matching_darts", "EdgeInfoFilter", "EdgeInfoFootprints", "DoubleMarkedEdgeInfo"]
 
 
 def matching_darts(M: PartialMap, w: int, sensed: Signature, exits: list[int] | None = None) -> list[int]:
@@ -88,24 +104,42 @@ def matching_darts(M: PartialMap, w: int, sensed: Signature, exits: list[int] | 
     return [j for j in exits if signature_at(M, w, j) == sensed]
 
 
-class EdgeInfoFootprints(VertexEdgeFootprints):
-    """Case 1b with directional V-E-markers: candidates must match edgeINFO from the entry (L1891–L1898)."""
+class EdgeInfoFilter(FootprintSearch):
+    """The footprint search with edgeINFO: a candidate must read, from some unexplored entry, exactly what the
+    robot sensed at v_u (L1898, generalised; module docstring)."""
 
-    name = "case-1b-edgeinfo"
-    vertex_head = 0  # each V-marker points at the edge the robot entered by
     loop_head = "H"  # each loop E-marker's head points at v_u, where the robot drops it
-
     _sensed: Signature | None = None
 
     def search(self, it: MarkerStep, key: tuple[int, ...], degree: int) -> tuple[int, int, int]:
-        """Case 1b's search; the candidates are filtered by what was sensed at v_u (``it.signature``)."""
+        """The footprint search; the candidates are filtered by what was sensed at v_u (``it.signature``)."""
         self._sensed = it.signature
         return super().search(it, key, degree)
 
     def candidates(self, vk: int, key: tuple[int, ...], degree: int) -> list[int]:
-        """Case 1b's candidates that are potentially confusing by edgeINFO: some unexplored entry matches."""
+        """The case's own candidates that are potentially confusing by edgeINFO: some unexplored entry matches."""
         exits: dict[int, list[int]] = {}
         for v, j in self.M.unexplored:
             exits.setdefault(v, []).append(j)
         return [w for w in super().candidates(vk, key, degree)
                 if matching_darts(self.M, w, self._sensed, exits[w])]
+
+
+class EdgeInfoFootprints(EdgeInfoFilter, VertexEdgeFootprints):
+    """Case 1b with directional V-E-markers: candidates must match edgeINFO from the entry (L1891–L1898)."""
+
+    name = "case-1b-edgeinfo"
+    vertex_head = 0  # each V-marker points at the edge the robot entered by
+
+
+class DoubleMarkedEdgeInfo(EdgeInfoFilter, DoubleMarkedEdges):
+    """Case 2 (Algorithm 6.1) with directional E-markers, heads at v_u: "The other O(mn) algorithms can be
+    improved in a similar manner" (L1898); anchored at the entry (module docstring)."""
+
+    name = "case-2-edgeinfo"
+
+    def drop_on_entry(self, it: MarkerStep, count: int) -> None:
+        """The two markers on a non-loop e, head at v_u (the new vertex, where they are dropped), tail at v_k."""
+        self.drop(MarkerOp("edge", exit=0, count=count, direction="H"), it)
+        v, i = it.edge
+        self.M.mark_as_sensed(v, Signature(self.M.degree(v), edges=((i, count, "T"),)), 0)

@@ -5,17 +5,19 @@ L1891–L1898, Figure 6.14).  Explorer: :mod:`topomark.reference.explorers.edge_
 algorithm                     thesis                                      kit (default)                marker bound
 ============================  ==========================================  ===========================  =============
 case-1b-edgeinfo              Case 1b, m + 1 directional V-E (L1891)      n V + m − n + 1 E, directed  m + 1
+case-2-edgeinfo               Case 2, m + n directional E (L1898)         m + n E, directed            m + n − 1
 ============================  ==========================================  ===========================  =============
 
 The bound is Case 1b's (:func:`~topomark.reference.registrations.markers_621.footprints_bound`,
 ours, exact for the explorer): "the cost bound remains unchanged" (L1891), and
 the search only walks to fewer candidates.  The kit is Case 1b's split, all
-markers directional; ``--markers K`` gives K of each kind, as for ``case-1b``.
+markers directional; ``--markers K`` gives K of each kind, as for ``case-1b``.  ``case-2-edgeinfo``
+is ``case-2`` (kit m + n, m + n − 1 used, L1529) with directional E-markers.
 
 Examples
 --------
 >>> [s.name for s in SPECS]
-['case-1b-edgeinfo']
+['case-1b-edgeinfo', 'case-2-edgeinfo']
 >>> SPECS[0].kit_for(4, 4, {"markers": None}).describe()  # the 4-cycle
 '4 directional vertex markers, 1 directional edge marker'
 >>> SPECS[0].bound_for(3, 3) == footprints_bound(3, 3)
@@ -28,8 +30,8 @@ from dataclasses import replace
 
 from topomark.spec.kit import Kit
 
-from ..explorers.edge_info import EdgeInfoFootprints
-from .markers_621 import _case_1b_kit, _spec, footprints_bound
+from ..explorers.edge_info import DoubleMarkedEdgeInfo, EdgeInfoFootprints
+from .markers_621 import _case_1b_kit, _given, _spec, footprints_bound
 
 __all__ = ["SPECS"]
 
@@ -43,5 +45,9 @@ SPECS = (
     replace(_spec("case-1b-edgeinfo", "§6.2.2 Case 1b with directional V-E-markers, edgeINFO (L1891–L1898, "
                   "Figure 6.14)", "m + 1 directional V-E-markers, split n V + (m − n + 1) E (as case-1b)",
                   EdgeInfoFootprints, _directional_1b_kit, lambda n, m: m + 1, "L1891"),
+            kit=Kit(edge=1, directional=True)),
+    replace(_spec("case-2-edgeinfo", "§6.2.2 Case 2 (Algorithm 6.1) with directional E-markers, edgeINFO anchored at "
+                  "the entry (L1898)", "m + n directional E-markers (m + n − 1 used, L1529)", DoubleMarkedEdgeInfo,
+                  lambda n, m, o: Kit(edge=_given(o, m + n), directional=True), lambda n, m: m + n - 1, "L1898"),
             kit=Kit(edge=1, directional=True)),
 )
