@@ -336,7 +336,7 @@ class ThreadedWorld(World):
         in :class:`World`'s form, already checked by the layer) and its tied thread ``state`` — copied,
         never re-validated (the layer's operations keep every invariant of §3.1.1 and of the thread)."""
         w = cls.__new__(cls)
-        w.rotation, w._index, w.start = base.rotation, base._index, base.start
+        w.rotation, w._index, w.start, w._m = base.rotation, base._index, base.start, base.m
         w.markers, w._vmarks, w._dmarks = markers, dict(vmarks), dict(dmarks)
         w._thread = None
         w._snapshot = (base, state.tied, state.head, tuple(state.laid), state.held, tuple(sorted(state.knots.items())))

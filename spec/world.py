@@ -130,7 +130,7 @@ class World:
     start : where the robot starts, or None.
     """
 
-    __slots__ = ("rotation", "markers", "start", "_index", "_vmarks", "_dmarks")
+    __slots__ = ("rotation", "markers", "start", "_index", "_vmarks", "_dmarks", "_m")
 
     def __init__(
         self,
@@ -158,7 +158,7 @@ class World:
         checked by the layer's own operations — copied, never re-validated (a marker dropped mid-run would
         otherwise rebuild and re-check the whole world, O(n + m) per drop)."""
         w = cls.__new__(cls)
-        w.rotation, w._index, w.start = base.rotation, base._index, base.start
+        w.rotation, w._index, w.start, w._m = base.rotation, base._index, base.start, base.m
         w.markers, w._vmarks, w._dmarks = markers, dict(vmarks), dict(dmarks)
         return w
 
@@ -256,7 +256,10 @@ class World:
 
     @property
     def m(self) -> int:
-        return sum(len(ns) for ns in self.rotation.values()) // 2
+        m = getattr(self, "_m", None)  # counted once: the rotation never changes
+        if m is None:
+            m = self._m = sum(len(ns) for ns in self.rotation.values()) // 2
+        return m
 
     def degree(self, v: str) -> int:
         return len(self.rotation[v])

@@ -86,7 +86,7 @@ from topomark.spec.kit import MarkerOp
 from topomark.spec.mapstate import MapDart, PartialMap
 from topomark.spec.signature import Signature
 
-from ..policies import Policies, bfs, bfs_preorder
+from ..policies import Policies, bfs, bfs_preorder, nearest
 from ..robot import Robot
 
 __all__ = ["MarkerIteration", "MovableMarkerExplorer", "DirectionalMovableMarkerExplorer"]
@@ -237,7 +237,7 @@ class MovableMarkerExplorer:
 
     def walk_to(self, target: int, purpose: str, looked: set[int] | None = None) -> tuple[int, Signature] | None:
         """Walk a shortest path of S to ``target``; with ``looked``, stop where the marker is seen."""
-        return self.walk(self.path(bfs(self.S, self.position[0])[2], target), purpose, looked)
+        return self.walk(self.path(nearest(self.S, self.position[0], (target,))[1], target), purpose, looked)
 
     def walk(self, path: list[MapDart], purpose: str, looked: set[int] | None = None) -> tuple[int, Signature] | None:
         """Follow ``path`` (darts of S from the believed position); each vertex entered goes into ``looked``,

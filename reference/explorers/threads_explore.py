@@ -75,7 +75,7 @@ from topomark.spec.kit import ThreadOp
 from topomark.spec.mapstate import MapDart, PartialMap
 from topomark.spec.signature import Signature, ThreadMark
 
-from ..policies import Policies, bfs
+from ..policies import Policies, bfs, nearest
 from .movable_marker import MovableMarkerExplorer
 
 __all__ = ["ThreadIteration", "ThreadWalker", "ThreadExplorer", "CircumferenceThreadExplorer"]
@@ -155,12 +155,12 @@ class ThreadWalker:
         now: dict[int, ThreadMark] = {}
         if self.tied is not None:
             walk, edges = self.on_thread(), self.thread_edges()
-            knots: Counter = Counter()
+            knots: dict[int, int] = {}
             for pos, k in self.knots.items():
-                knots[walk[pos]] += k
+                knots[walk[pos]] = knots.get(walk[pos], 0) + k
             end = walk[-1] if not self.held else None
-            now = {v: ThreadMark(v == self.tied, None, tuple(sorted(edges.get(v, Counter()).items())), v == end,
-                                 knots[v]) for v in walk}
+            now = {v: ThreadMark(v == self.tied, None, tuple(sorted(edges.get(v, {}).items())), v == end,
+                                 knots.get(v, 0)) for v in dict.fromkeys(walk)}
         S = self.S
         for v in set(S.thread_marks) | set(now):
             if S.thread_marks.get(v) != now.get(v):
@@ -221,12 +221,14 @@ class ThreadWalker:
         """The thread's vertices in order from the tied one (the laid darts ``laid[:upto]``)."""
         return [self.tied] + [self.S.arc(d)[0] for d in self.laid[:upto]]
 
-    def thread_edges(self, upto: int | None = None) -> dict[int, Counter]:
+    def thread_edges(self, upto: int | None = None) -> dict[int, dict[int, int]]:
         """Map vertex ↦ exit ↦ how often the thread lies along it (``laid[:upto]``, as recorded)."""
-        out: dict[int, Counter] = {}
+        out: dict[int, dict[int, int]] = {}
+        arc = self.S.arc
         for d in self.laid[:upto]:
-            for v, x in (d, self.S.arc(d)):
-                out.setdefault(v, Counter())[x] += 1
+            for v, x in (d, arc(d)):
+                at = out.setdefault(v, {})
+                at[x] = at.get(x, 0) + 1
         return out
 
     def walk(self, path: list[MapDart], purpose: str, stop: Callable[[int, int, Signature], bool] | None = None):
@@ -240,7 +242,8 @@ class ThreadWalker:
         return None
 
     def walk_to(self, target: int, purpose: str, stop=None):
-        return self.walk(MovableMarkerExplorer.path(bfs(self.S, self.position[0])[2], target), purpose, stop)
+        return self.walk(MovableMarkerExplorer.path(nearest(self.S, self.position[0], (target,))[1], target), purpose,
+                         stop)  # bfs's parents, the search stopped at the target's layer
 
     # -- augmentation (§3.1.3) -------------------------------------------------------------
     def loop_augment(self, it: ThreadIteration, far: MapDart) -> None:
@@ -309,7 +312,7 @@ class ThreadExplorer(ThreadWalker):
         for d in reversed(self.laid[:-1]):  # line 7: back along the thread from v_k toward v_s
             self.walk([self.S.arc(d)], "validation")
             w, entry = self.position
-            extra = _sensed_edges(self.robot.sense(), entry) - marks.get(w, Counter())
+            extra = _sensed_edges(self.robot.sense(), entry) - Counter(marks.get(w, {}))
             if w in it.candidates and sum(extra.values()) == 1:
                 found = (w, next(iter(extra)))
                 break
@@ -321,10 +324,10 @@ class ThreadExplorer(ThreadWalker):
         self.rewind()
         self.loop_augment(it, found)
 
-    def _reads(self, w: int, j: int, marks: dict[int, Counter], sig: Signature) -> bool:
+    def _reads(self, w: int, j: int, marks: dict[int, dict[int, int]], sig: Signature) -> bool:
         """Whether w entered by exit j, the thread as recorded plus e at j, senses the thread ``sig`` shows."""
         d = self.S.degree(w)
-        edges = sorted([((x - j) % d, k) for x, k in marks.get(w, Counter()).items()] + [(0, 1)])
+        edges = sorted([((x - j) % d, k) for x, k in marks.get(w, {}).items()] + [(0, 1)])
         t = sig.thread
         return (t.tied, t.head, t.end, t.knots, t.edges) == (w == self.tied, None, False, 0, tuple(edges))
 
