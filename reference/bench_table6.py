@@ -46,7 +46,7 @@ from .bench_report import latest, plot_lines, run_totals
 from .explorers.counted_markers import sum_to
 from .runstore import read_runs, write_atomic
 
-__all__ = ["CLAIMS", "REPORTS", "Claim", "write_report", "groups", "slope", "cost_f", "O_M", "SLOPE_TOLERANCE"]
+__all__ = ["CLAIMS", "EDGEINFO", "REPORTS", "Claim", "write_report", "groups", "slope", "cost_f", "O_M", "SLOPE_TOLERANCE"]
 
 SLOPE_TOLERANCE = 1.1
 O_M = ("case-3b", "case-dv-sum", "extension-1", "extension-2")
@@ -95,10 +95,17 @@ CLAIMS: dict[str, Claim] = {
                                 "| O(m) |", "m", "Σ_{k=1}^{⌊(n−1)/2⌋} k (table; text ⌈(n−1)/2⌉, L1929)",
                          lambda n, m: sum_to((n - 1) // 2), "Σ_{k=1}^{⌈(n−1)/2⌉} k"),
 }
+CLAIMS.update({
+    "case-1b-edgeinfo": Claim("6.2", "| (m) | vertex + edge (V-E-marker) | none | O(mn) | O(mn) |", "mn",
+                              "m + 1 (L1510; m with the extension, L1512)", lambda n, m: m + 1, "m + 1"),
+    "case-2-edgeinfo": Claim("6.2", "| m + n | edge (E-marker) | none | O(mn) | O(mn) |", "mn", "m + n",
+                             lambda n, m: m + n, "m + n − 1 (L1529)"),
+})
 CLAIMS_62_UNDIRECTED = {"case-3b": "| (Σ_{k=1}^{n−1} k) | edge (E-marker) | none | O(m) | O(m) |"}
-NOT_REGISTERED_62 = ("the edgeINFO (directional) variants of the O(mn) algorithms (§7.1 of the guide, L1891–L1898: "
-                     "rows m − ⌊n/2⌋, m, (m), (m) V-E, m + n of Table 6.2's directional column) are not registered "
-                     "in topomark: not measured")
+EDGEINFO = {"case-1b-edgeinfo": "case-1b", "case-2-edgeinfo": "case-2"}  # §6.2.2's edgeINFO variant ↦ its original
+NOT_REGISTERED_62 = ("the edgeINFO (directional) variants of the other O(mn) algorithms (L1898: rows m − ⌊n/2⌋, m "
+                     "and (m) E of Table 6.2's directional column; only (m) V-E and m + n are registered, "
+                     "`case-1b-edgeinfo` and `case-2-edgeinfo`) are not registered in topomark: not measured")
 
 COST_F: dict[str, Callable[[dict], float]] = {
     "m": lambda r: float(r["m"]), "mn": lambda r: float(r["m"]) * float(r["n"]),
@@ -202,7 +209,8 @@ def thesis_rows(table: str, algs: list[str]) -> list[str]:
         body.append(f"| `{a}` {row}" if row.startswith("|") else f"| `{a}` | {row} |" + " |" * (3 if table == "6.1" else 4))
     lines = [f"## Table 6.{table[-1]}: the thesis's rows (verbatim) and the algorithm measuring each", ""] + head + body
     if table == "6.2":
-        lines += ["", "`case-3b` (undirected, Table 6.1) is run as the original the extensions save markers from. "
+        lines += ["", "`case-3b` (undirected, Table 6.1) is run as the original the extensions save markers from; "
+                  "`case-1b` and `case-2` as the originals of their edgeINFO variants. "
                   "Not measured: " + NOT_REGISTERED_62 + ". Table 6.2's rows 1–3 (one, two, three markers) are "
                   "Algorithm 3.1 with a lighthouse: `topomark bench lighthouses`."]
     else:
