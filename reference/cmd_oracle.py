@@ -91,7 +91,8 @@ def _protocol_choice(args) -> tuple[int, Kit | None]:
         raise InvalidInput("--kit needs topomark/protocol@2: give --protocol 2 (or leave --protocol out); "
                            "topomark/protocol@1 knows only the kit {\"directional-vertex\": 1}")
     kit = Kit.from_json(parse_json(args.kit, "--kit"))
-    if max(kit.vertex, kit.edge) > MAX_COUNT or (kit.vertex + kit.edge == 0 and kit.thread is None):
+    counts = (kit.vertex, kit.edge, kit.either)
+    if max(counts) > MAX_COUNT or (sum(counts) == 0 and kit.thread is None):
         raise InvalidInput(f"--kit: give 1..{MAX_COUNT} vertex or edge markers or a thread, got {kit.to_json()}")
     return 2, kit
 

@@ -111,18 +111,20 @@ class _Link:
             kit = Kit.from_json(obj)
         except InvalidInput as exc:
             raise ProtocolError("garbage", f"hello.kit: {clip(str(exc), 300)}") from None
-        held = {"vertex": 0, "edge": 0}
+        held = {"vertex": 0, "edge": 0, "either": 0}  # dropped so far: each kind's own, the pool (Kit.draw)
         for op in self.light.ops:
             if op.kind == "thread":  # §6.3: the kit must have a thread
                 why = kit.thread_refusal()
                 if why is not None:
                     raise ProtocolError("protocol", f"the {self.light.name} lighthouse needs a thread: {why}")
                 continue
-            why = kit.refusal(op.kind, op.direction is not None, op.count, held[op.kind])
+            why = kit.refusal(op.kind, op.direction is not None, op.count, held[op.kind], held["either"])
             if why is not None:
                 raise ProtocolError("protocol", f"the {self.light.name} lighthouse ({self.light.kit.describe()}) "
                                                 f"cannot be dropped with the provider's kit: {why}")
-            held[op.kind] += op.count
+            own, pooled = kit.draw(op.kind, op.count, held[op.kind])
+            held[op.kind] += own
+            held["either"] += pooled
 
     def _signature(self, text: str) -> Signature:
         try:

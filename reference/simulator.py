@@ -40,6 +40,10 @@ class Simulator:
     in :attr:`events`; ``op_listener`` (optional) is called with each such
     event as it happens, so moves and marker operations reach a trace in the
     order the robot did them (``spec/trace.md``, trace@2's robot layer).
+    :attr:`held` is what the robot still carries: each kind's own markers and
+    the kit's vertex-or-edge pool (``"either"``, §6.2.1 Case 1b); a drop draws
+    on its kind's own first, then on the pool (:meth:`Kit.draw`), and running
+    out of both is :class:`~topomark.spec.errors.OutOfMarkers`.
 
     Threads (§6.3, :mod:`topomark.spec.thread`): a :class:`ThreadOp` is gated
     by the kit's thread like a marker operation; holding the free end of a
@@ -53,7 +57,7 @@ class Simulator:
         self.layer = MarkerLayer(world)
         self.state = state
         self.kit = kit if isinstance(kit, Kit) else Kit.from_json(kit or {})
-        self.held = Counter({"vertex": self.kit.vertex, "edge": self.kit.edge})
+        self.held = Counter({"vertex": self.kit.vertex, "edge": self.kit.edge, "either": self.kit.either})
         self.cost = 0
         self.by_purpose: Counter[str] = Counter()
         self.operations: Counter[str] = Counter()
@@ -128,7 +132,8 @@ class Simulator:
         if isinstance(op, ThreadOp):
             reason = self.kit.thread_refusal()
         elif not op.pick_up:
-            reason = self.kit.refusal(op.kind, directional, op.count, self.kit.count(op.kind) - self.held[op.kind])
+            reason = self.kit.refusal(op.kind, directional, op.count, self.kit.count(op.kind) - self.held[op.kind],
+                                      self.kit.either - self.held["either"])
         elif not self.kit.movable:
             reason = f"the kit ({self.kit.describe()}) holds immovable markers: none may be picked up"
         else:
@@ -139,13 +144,19 @@ class Simulator:
             except InvalidInput as exc:
                 reason = str(exc)
         if reason is not None:
-            out = not isinstance(op, ThreadOp) and not op.pick_up and self.kit.count(op.kind) and self.held[op.kind] < op.count \
+            out = not isinstance(op, ThreadOp) and not op.pick_up and self.kit.count(op.kind) + self.kit.either \
+                and self.held[op.kind] + self.held["either"] < op.count \
                 and directional == self.kit.directional  # issue 12: running out is a named outcome, not a crash
             raise (OutOfMarkers if out else CheckFailure)(Violation(
                 "marker kit", where, "an operation the kit allows", json.dumps(op.to_json()), reason))
         if isinstance(op, ThreadOp):
             return self._log(op)
-        self.held[op.kind] += op.count if op.pick_up else -op.count
+        if op.pick_up:  # never from a pool: a kit with one is never movable (spec/kit.py)
+            self.held[op.kind] += op.count
+        else:  # the kind's own markers first, then the pool (Kit.draw)
+            own, pooled = self.kit.draw(op.kind, op.count, self.kit.count(op.kind) - self.held[op.kind])
+            self.held[op.kind] -= own
+            self.held["either"] -= pooled
         self._log(op)
         if op.kind == "vertex" and not op.pick_up:
             v, entry = self.state

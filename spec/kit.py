@@ -2,7 +2,9 @@
 §6.1–6.3, §2.3.1).
 
 A :class:`Kit` is what the robot is given before it sets out: how many vertex
-markers and edge markers, whether they are directional, whether they may be
+markers and edge markers, how many markers it may drop at a vertex *or* on an
+edge as it needs (``either``: §6.2.1 Case 1b's pool of m + 1 homogeneous
+V-E-markers, L1508–L1521), whether they are directional, whether they may be
 picked up again (the movable marker of Dudek et al., §2.3.1), and a thread of
 some length (§6.3).  A :class:`MarkerOp` is one operation as the robot states
 it, relative to its entry edge.  The simulator refuses any operation the kit
@@ -15,6 +17,15 @@ undirected — every marker class of the thesis is homogeneous in that respect
 (Figure 3.21, §6.1, §6.2) — and a thread's length is in edges, 0 meaning the
 thesis's l = ε (tied at v0, never laid along an edge; §6.3).
 
+Decision (L1510, L1512, footnote 16: "exactly 1 marker is dropped (either on
+the vertex or on the edge …)"; the thesis counts Case 1b's markers as one
+homogeneous pool): a drop is drawn from its kind's own markers first, then
+from the pool (:meth:`Kit.draw`), so a kit without a pool behaves exactly as
+before; running out of both is the simulator's ``OutOfMarkers``.  A pool is
+never movable (bad input): no thesis algorithm picks pooled markers up — the
+movable marker is Dudek et al.'s single one (§2.3.1) — and so no rule is
+needed for which count a picked-up pooled marker returns to.
+
 This module imports nothing that can see a world: explorers may use it.
 
 Examples
@@ -25,6 +36,13 @@ Examples
 True
 >>> Kit(vertex=1).refusal("edge", directional=False, count=1, held=0)
 'the kit (1 undirected vertex marker) has no edge marker'
+>>> pool = Kit(either=2)
+>>> pool.to_json(), Kit.from_json(pool.to_json()) == pool, pool.describe()
+({'undirected-either': 2}, True, '2 undirected vertex-or-edge markers')
+>>> pool.refusal("edge", directional=False, count=1, held=0, pooled=2)
+'the kit (2 undirected vertex-or-edge markers) holds 0 edge and 2 vertex-or-edge marker(s): none left, 1 asked for'
+>>> Kit(vertex=1, either=2).draw("vertex", count=2, held=0)  # the kind's own first, then the pool
+(1, 1)
 >>> MarkerOp("edge", exit=2, direction="H").to_json()
 {'op': 'drop', 'kind': 'edge', 'count': 1, 'exit': 2, 'direction': 'H'}
 >>> ThreadOp("tie", direction=0).to_json()
@@ -45,11 +63,14 @@ __all__ = ["Kit", "MarkerOp", "ThreadOp", "THREAD_OPS"]
 
 @dataclass(frozen=True)
 class Kit:
-    """What the robot carries: ``vertex`` vertex markers, ``edge`` edge markers, optionally a thread.
+    """What the robot carries: ``vertex`` vertex markers, ``edge`` edge markers, ``either`` markers it may
+    drop at a vertex or on an edge, optionally a thread.
 
-    ``directional`` applies to every marker of the kit; ``movable`` means a
-    dropped marker may be picked up again; ``thread`` is a thread length in
-    edges (0 for l = ε) or ``None`` for no thread.
+    ``directional`` applies to every marker of the kit, the pool's included;
+    ``movable`` means a dropped marker may be picked up again (never with a
+    pool, see the module docstring); ``thread`` is a thread length in edges
+    (0 for l = ε) or ``None`` for no thread; ``either`` (last, so positional
+    kits read as before) is the pool, drawn after the kind's own count.
     """
 
     vertex: int = 0
@@ -57,39 +78,51 @@ class Kit:
     directional: bool = False
     movable: bool = False
     thread: int | None = None
+    either: int = 0
 
     def __post_init__(self) -> None:
-        for name in ("vertex", "edge"):
+        for name in ("vertex", "edge", "either"):
             value = getattr(self, name)
             if not isinstance(value, int) or isinstance(value, bool) or value < 0:
                 raise InvalidInput(f"kit: {name} markers must be a non-negative integer, got {value!r}")
         if self.thread is not None and (not isinstance(self.thread, int) or self.thread < 0):
             raise InvalidInput(f"kit: thread length must be a non-negative integer, got {self.thread!r}")
+        if self.movable and self.either:
+            raise InvalidInput("kit: vertex-or-edge markers cannot be movable (no thesis algorithm picks a pooled "
+                               "marker up; §2.3.1's movable marker is a single one)")
 
     def count(self, kind: str) -> int:
-        """How many markers of ``kind`` (``"vertex"`` or ``"edge"``) the kit holds."""
+        """How many markers of ``kind`` (``"vertex"`` or ``"edge"``) the kit holds, its pool (``either``) apart."""
         return {"vertex": self.vertex, "edge": self.edge}[kind]
+
+    def draw(self, kind: str, count: int, held: int) -> tuple[int, int]:
+        """How a drop of ``count`` markers of ``kind``, ``held`` of its own already dropped, is drawn:
+        (from the kind's own markers, from the pool) — its own first."""
+        own = max(0, min(count, self.count(kind) - held))
+        return own, count - own
 
     def describe(self) -> str:
         word = "directional" if self.directional else "undirected"
         movable = " movable" if self.movable else ""
         parts = [f"{n} {word}{movable} {kind} marker{'s' if n != 1 else ''}"
-                 for kind, n in (("vertex", self.vertex), ("edge", self.edge)) if n]
+                 for kind, n in (("vertex", self.vertex), ("edge", self.edge), ("vertex-or-edge", self.either)) if n]
         if self.thread is not None:
             parts.append("a thread of length ε" if self.thread == 0 else f"a thread of length {self.thread}")
         return ", ".join(parts) or "no marker"
 
-    def refusal(self, kind: str, directional: bool, count: int, held: int) -> str | None:
-        """Why dropping ``count`` markers of ``kind`` is not allowed with ``held`` already dropped, or None."""
+    def refusal(self, kind: str, directional: bool, count: int, held: int, pooled: int = 0) -> str | None:
+        """Why dropping ``count`` markers of ``kind`` is not allowed, or None: ``held`` of the kind's own
+        markers and ``pooled`` of the pool already dropped."""
         have = self.count(kind)
-        if have == 0:
+        if have + self.either == 0:
             return f"the kit ({self.describe()}) has no {kind} marker"
         if directional != self.directional:
             want = "directional" if self.directional else "undirected"
             return f"the kit ({self.describe()}) holds {want} markers only"
-        if held + count > have:
-            left = have - held
-            return f"the kit ({self.describe()}) holds {have} {kind} marker(s): {left or 'none'} left, {count} asked for"
+        left = max(0, have - held) + self.either - pooled
+        if count > left:
+            holds = f"{have} {kind}" if not self.either else f"{have} {kind} and {self.either} vertex-or-edge"
+            return f"the kit ({self.describe()}) holds {holds} marker(s): {left or 'none'} left, {count} asked for"
         return None
 
     def thread_refusal(self) -> str | None:
@@ -99,7 +132,8 @@ class Kit:
     def to_json(self) -> dict[str, Any]:
         """The kit as the protocol's ``hello.markers`` object, e.g. ``{"directional-vertex": 1}``."""
         word = "directional" if self.directional else "undirected"
-        out: dict[str, Any] = {f"{word}-{k}": n for k, n in (("vertex", self.vertex), ("edge", self.edge)) if n}
+        out: dict[str, Any] = {f"{word}-{k}": n for k, n in (("vertex", self.vertex), ("edge", self.edge),
+                                                             ("either", self.either)) if n}
         if self.movable:
             out["movable"] = True
         if self.thread is not None:
@@ -117,7 +151,7 @@ class Kit:
             word, _, kind = key.partition("-")
             if key in ("movable", "thread"):
                 continue
-            if word not in ("directional", "undirected") or kind not in ("vertex", "edge"):
+            if word not in ("directional", "undirected") or kind not in ("vertex", "edge", "either"):
                 raise InvalidInput(f"kit: unknown key {key!r}")
             words.add(word)
             counts[kind] = value
@@ -127,7 +161,7 @@ class Kit:
         if not isinstance(movable, bool):
             raise InvalidInput(f"kit: movable must be true or false, got {movable!r}")
         return cls(counts.get("vertex", 0), counts.get("edge", 0), words == {"directional"}, movable,
-                   obj.get("thread"))
+                   obj.get("thread"), counts.get("either", 0))
 
 
 @dataclass(frozen=True)
