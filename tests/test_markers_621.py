@@ -73,7 +73,7 @@ def test_every_family_world_is_mapped_within_each_marker_bound(w):
 def test_one_marker_fewer_than_a_run_drops_is_the_failed_outcome(name):
     w = world(WORLDS[0])
     full = used(explore(w, name))
-    short = full - 1 if name != "case-1b" else w.n - 1  # case-1b: --markers K is K of each kind
+    short = full - 1 if name != "case-1b" else full - 2  # case-1b: m (one fewer) still maps it (L1512)
     out = explore(w, name, options={"markers": short})
     assert (out.outcome, out.claimed, out.verified) == ("failed", "failed", False)
     assert "out of markers" in out.reason
@@ -147,6 +147,25 @@ def test_case_1b_with_m_markers_finishes_the_last_iteration_without_a_search():
     chain = explore(g.chain(3), replace(spec, kit_fn=lambda n, m, o: Kit(vertex=n - 1)))
     assert chain.outcome == "correct" and used(chain) == 2
     assert explore(g.cycle(4), "case-1b", options={"markers": 3}).outcome == "failed"  # short earlier: failed
+
+
+@pytest.mark.parametrize("text", WORLDS[:2] + ("complete-hole:n=5,seed=1",))
+def test_case_1b_draws_its_markers_from_one_pool(text):
+    """L1510, footnote 16: m + 1 homogeneous markers, each dropped at a vertex or on an edge as needed, so the
+    default kit is one pool of m + 1 — spent as n at the vertices and m − n + 1 on the loop edges; with m (the
+    extension, L1512) the map is still correct; with m − 1 the robot runs out before the last iteration."""
+    w = world(text)
+    assert REGISTRY["case-1b"].kit_for(w.n, w.m, {"markers": None}) == Kit(either=w.m + 1)
+    full = explore(w, "case-1b")
+    assert (full.outcome, full.verified) == ("correct", True) and used(full) == w.m + 1
+    marks = full.explorer.S.to_world().markers
+    assert sum(m.count for m in marks if hasattr(m, "at")) == w.n  # a V-marker at every vertex
+    assert sum(m.count for m in marks if hasattr(m, "between")) == w.m - w.n + 1  # an E-marker on every loop edge
+    extended = explore(w, "case-1b", options={"markers": w.m})
+    assert (extended.outcome, extended.verified, extended.violation) == ("correct", True, None)
+    assert used(extended) == w.m and extended.cost <= full.cost
+    short = explore(w, "case-1b", options={"markers": w.m - 1})
+    assert (short.outcome, short.claimed) == ("failed", "failed") and "out of markers" in short.reason
 
 
 @pytest.mark.parametrize("name", ALGORITHMS)

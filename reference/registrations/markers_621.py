@@ -13,7 +13,7 @@ one, as a formula:
 algorithm     Table 6.1 / title                      kit (default)      marker bound checked
 ============  ====================================  =================  ==========================
 case-1a       m E-markers (L1506)                   m                  m
-case-1b       m + 1, extendable to m (L1510, L1512)  n V + m − n + 1 E  m + 1
+case-1b       m + 1, extendable to m (L1510, L1512)  m + 1 V-or-E pool  m + 1
 case-2        m + n (L1523), text m + n − 1 (L1529)  m + n              m + n − 1
 case-4        m − ⌊n/2⌋ (L1640, L1663)              m − ⌊(n−1)/2⌋      m − ⌊(n−1)/2⌋
 case-4-mn     m (L1665)                             m + [n even]       m + [n even]
@@ -21,13 +21,15 @@ case-4-mn     m (L1665)                             m + [n even]       m + [n ev
 
 The Case 4 counts are corrected (the decision and its proof are in
 :mod:`~topomark.reference.explorers.closest_first`).  Case 1b's markers are
-one homogeneous pool in the thesis, dropped at vertices or on edges; the
-kernel's kit counts vertex and edge markers apart and has no such pool, so
-its default kit is the split its m + 1 are spent in, and ``--markers K``
-gives K of *each* kind (the marker bound m + 1 still caps the total).  Its
-m-marker extension (L1512) runs when the last iteration's drop is refused
-(:mod:`~topomark.reference.explorers.edge_footprints`; shown in the tests
-with a kit one short in that iteration's kind).
+one homogeneous pool, each dropped "either on the vertex or on the edge"
+as the robot needs (L1510, footnote 16), so its kit is exactly that: a pool
+of m + 1 vertex-or-edge markers (``Kit(either=m + 1)``, drawn as
+:meth:`~topomark.spec.kit.Kit.draw` says), and ``--markers K`` a pool of K.
+The robot is "assured that it has at least m markers" in the extension
+(L1512): with ``--markers m`` the last iteration's drop is refused and that
+iteration's edge(s) in U are processed with no further motion
+(:mod:`~topomark.reference.explorers.edge_footprints`); with fewer the run
+ends ``failed`` (out of markers before the last iteration).
 
 The thesis states O(mn) for all five (L1506, L1517, L1529, L1642) with no
 constant.  :func:`footprints_bound` is **ours**, the exact worst case of
@@ -42,7 +44,7 @@ Examples
 >>> [s.name for s in SPECS]
 ['case-1a', 'case-1b', 'case-2', 'case-4', 'case-4-mn']
 >>> [s.kit_for(4, 4, {"markers": None}).describe() for s in SPECS]  # the 4-cycle
-['4 undirected edge markers', '4 undirected vertex markers, 1 undirected edge marker', '8 undirected edge markers', \
+['4 undirected edge markers', '5 undirected vertex-or-edge markers', '8 undirected edge markers', \
 '3 undirected edge markers', '5 undirected edge markers']
 >>> footprints_bound(3, 3)  # the triangle: two non-loop steps, one loop step
 12
@@ -88,10 +90,9 @@ def _given(options: dict, assured: int) -> int:
 
 
 def _case_1b_kit(n: int, m: int, options: dict) -> Kit:
-    """Case 1b's m + 1 split as it spends them, n V-markers and m − n + 1 E-markers; ``--markers K``: K of each
-    kind (the kernel's kit counts the kinds apart; see the module docstring)."""
-    given = options.get("markers")
-    return Kit(vertex=n, edge=m - n + 1) if given is None else Kit(vertex=given, edge=given)
+    """Case 1b's m + 1 homogeneous V-E-markers as one pool, each dropped at a vertex or on an edge (L1510,
+    footnote 16); ``--markers K``: a pool of K (L1512: m suffices)."""
+    return Kit(either=_given(options, m + 1))
 
 
 _BOUND = "O(mn) ({}); bound_fn: ours, exact for our explorer"
@@ -108,7 +109,7 @@ SPECS = (
     _spec("case-1a", "§6.2.1 Case 1a, m E-markers (L1497–L1506, Figure 6.4; footprints [18])", "m undirected E-markers",
           EdgeFootprints, lambda n, m, o: Kit(edge=_given(o, m)), lambda n, m: m, "L1506"),
     _spec("case-1b", "§6.2.1 Case 1b, m + 1 V-E-markers, extendable to m (L1508–L1521, Figure 6.5)",
-          "m + 1 undirected V-E-markers, split n V + (m − n + 1) E (m with the extension, L1512)", VertexEdgeFootprints, _case_1b_kit,
+          "m + 1 undirected V-E-markers, one pool (m with the extension, L1512)", VertexEdgeFootprints, _case_1b_kit,
           lambda n, m: m + 1, "L1510"),
     _spec("case-2", "§6.2.1 Case 2, Algorithm 6.1, m + n E-markers (L1523–L1554)",
           "m + n undirected E-markers (m + n − 1 used, L1529)", DoubleMarkedEdges,

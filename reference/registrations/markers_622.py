@@ -4,14 +4,14 @@ L1891–L1898, Figure 6.14).  Explorer: :mod:`topomark.reference.explorers.edge_
 ============================  ==========================================  ===========================  =============
 algorithm                     thesis                                      kit (default)                marker bound
 ============================  ==========================================  ===========================  =============
-case-1b-edgeinfo              Case 1b, m + 1 directional V-E (L1891)      n V + m − n + 1 E, directed  m + 1
+case-1b-edgeinfo              Case 1b, m + 1 directional V-E (L1891)      m + 1 V-or-E pool, directed  m + 1
 case-2-edgeinfo               Case 2, m + n directional E (L1898)         m + n E, directed            m + n − 1
 ============================  ==========================================  ===========================  =============
 
 The bound is Case 1b's (:func:`~topomark.reference.registrations.markers_621.footprints_bound`,
 ours, exact for the explorer): "the cost bound remains unchanged" (L1891), and
-the search only walks to fewer candidates.  The kit is Case 1b's split, all
-markers directional; ``--markers K`` gives K of each kind, as for ``case-1b``.  ``case-2-edgeinfo``
+the search only walks to fewer candidates.  The kit is Case 1b's pool, all
+markers directional; ``--markers K`` gives a pool of K, as for ``case-1b``.  ``case-2-edgeinfo``
 is ``case-2`` (kit m + n, m + n − 1 used, L1529) with directional E-markers.
 
 Examples
@@ -19,7 +19,7 @@ Examples
 >>> [s.name for s in SPECS]
 ['case-1b-edgeinfo', 'case-2-edgeinfo']
 >>> SPECS[0].kit_for(4, 4, {"markers": None}).describe()  # the 4-cycle
-'4 directional vertex markers, 1 directional edge marker'
+'5 directional vertex-or-edge markers'
 >>> SPECS[0].bound_for(3, 3) == footprints_bound(3, 3)
 True
 """
@@ -37,13 +37,13 @@ __all__ = ["SPECS"]
 
 
 def _directional_1b_kit(n: int, m: int, options: dict) -> Kit:
-    """Case 1b's kit (n V + m − n + 1 E, or ``--markers K`` of each kind), every marker directional (L1891)."""
+    """Case 1b's kit (a pool of m + 1, or ``--markers K``), every marker directional (L1891)."""
     return replace(_case_1b_kit(n, m, options), directional=True)
 
 
 SPECS = (
     replace(_spec("case-1b-edgeinfo", "§6.2.2 Case 1b with directional V-E-markers, edgeINFO (L1891–L1898, "
-                  "Figure 6.14)", "m + 1 directional V-E-markers, split n V + (m − n + 1) E (as case-1b)",
+                  "Figure 6.14)", "m + 1 directional V-E-markers, one pool (as case-1b)",
                   EdgeInfoFootprints, _directional_1b_kit, lambda n, m: m + 1, "L1891"),
             kit=Kit(edge=1, directional=True)),
     replace(_spec("case-2-edgeinfo", "§6.2.2 Case 2 (Algorithm 6.1) with directional E-markers, edgeINFO anchored at "
