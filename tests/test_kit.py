@@ -141,3 +141,20 @@ def test_a_kit_without_a_pool_still_refuses_the_other_kind_as_a_violation():
     with pytest.raises(CheckFailure, match="no edge marker") as info:
         _sim(Kit(vertex=1)).operate(MarkerOp("edge", exit=0))
     assert not isinstance(info.value, OutOfMarkers)
+
+
+def test_the_example_provider_draws_a_pool_after_the_kinds_own_markers():
+    """reference/examples/provider.py (what external providers copy) reads the ``*-either`` pool as the
+    simulator does: the kind's own markers first, then the pool, and refuses a drop past both."""
+    import importlib.util
+    from pathlib import Path
+    import topomark.reference as ref
+    path = Path(ref.__file__).parent / "examples" / "provider.py"
+    spec = importlib.util.spec_from_file_location("example_provider", path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    world = {"rotation": {"a": ["b", "c"], "b": ["c", "a"], "c": ["a", "b"]}}
+    w = mod.World(world, {"undirected-vertex": 1, "undirected-either": 1})
+    assert w.operate({"type": "drop", "kind": "vertex"}) is None and w.held["vertex"] == 0 and w.pool == 1
+    assert w.operate({"type": "drop", "kind": "edge", "exit": 1}) is None and w.pool == 0
+    assert w.operate({"type": "drop", "kind": "edge", "exit": 0}) is not None

@@ -39,6 +39,7 @@ class World:
         self.kit = kit
         self.directional = any(k.startswith("directional-") for k in kit)
         self.held = {"vertex": kit.get(self.word() + "-vertex", 0), "edge": kit.get(self.word() + "-edge", 0)}
+        self.pool = kit.get(self.word() + "-either", 0)  # markers for a vertex or an edge, drawn after the kind's own
         self.vmark = {}  # vertex -> [count, absolute exit pointed at or None]
         self.emark = {}  # frozenset of the edge's two darts -> [count, head vertex or None]
         self.tied = None  # a thread of length ε (the only one this example knows): [vertex, absolute exit or None]
@@ -92,7 +93,7 @@ class World:
             return "bad marker operation %s" % json.dumps(msg)
         if pick and not self.kit.get("movable"):
             return "the kit's markers cannot be picked up"
-        if not pick and (self.held[kind] < count or (direction is not None) != self.directional):
+        if not pick and (self.held[kind] + self.pool < count or (direction is not None) != self.directional):
             return "the kit %s does not allow %s" % (json.dumps(self.kit), json.dumps(msg))
         if kind == "vertex":
             place, table = self.here, self.vmark
@@ -110,7 +111,9 @@ class World:
         table[place] = old
         if old[0] == 0:
             del table[place]
-        self.held[kind] += count if pick else -count
+        own = count if pick else min(count, self.held[kind])
+        self.held[kind] += own if pick else -own
+        self.pool -= count - own
         return None
 
 
