@@ -19,8 +19,10 @@ from topomark.reference.registry import REGISTRY
 from topomark.spec.signature import signature_at
 
 NAME = "case-1b-edgeinfo"
-BASE = {NAME: "case-1b", "case-2-edgeinfo": "case-2"}  # each improved algorithm and the one it improves
-USES = {NAME: lambda n, m: m + 1, "case-2-edgeinfo": lambda n, m: m + n - 1}  # L1510, L1529: exactly
+BASE = {NAME: "case-1b", "case-2-edgeinfo": "case-2", "case-1a-edgeinfo": "case-1a", "case-4-edgeinfo": "case-4",
+        "case-4-mn-edgeinfo": "case-4-mn"}  # each improved algorithm and the one it improves
+USES = {NAME: lambda n, m: m + 1, "case-2-edgeinfo": lambda n, m: m + n - 1,  # L1510, L1529, L1506: exactly
+        "case-1a-edgeinfo": lambda n, m: m}  # Case 4 (closest-first): as many as case-4 / case-4-mn, ≤ the bound
 WORLDS = {
     "lattice-hole 4x5": lambda: g.lattice_hole(4, 5, 0.1, "vertices", 1),
     "lattice-hole 3x4": lambda: g.lattice_hole(3, 4, 0.1, "vertices", 2),
@@ -60,10 +62,11 @@ def test_each_run_is_correct_within_its_marker_and_cost_bounds_and_never_costs_m
     w, plain, directed = all_runs[label, name]
     spec = REGISTRY[name]
     assert (directed.outcome, directed.verified, directed.violation) == ("correct", True, None)
-    assert used(directed) == directed.explorer.dropped == USES[name](w.n, w.m) <= spec.marker_bound_fn(w.n, w.m)
+    assert used(directed) == directed.explorer.dropped == used(plain) <= spec.marker_bound_fn(w.n, w.m)
+    assert name not in USES or used(directed) == USES[name](w.n, w.m)
     assert all(m.directional for m in directed.explorer.S.to_world().markers)  # every marker directional
     assert w.m <= directed.cost <= plain.cost <= spec.bound_for(w.n, w.m)
-    # the same edges in the same order: only the search differs, and its candidates are a subset of case-1b's
+    # the same edges in the same order: only the search differs, and its candidates are a subset of the base's
     one, two = plain.explorer.iterations, directed.explorer.iterations
     assert [it.joined for it in one] == [it.joined for it in two]
     assert all(set(b.candidates) <= set(a.candidates) for a, b in zip(one, two))
@@ -71,25 +74,33 @@ def test_each_run_is_correct_within_its_marker_and_cost_bounds_and_never_costs_m
 
 
 def test_edgeinfo_is_strictly_cheaper_on_complete_hole_worlds(all_runs):
-    """complete-hole n=6 seed 3 (42 → 41 for both, the smallest generated world where the cost drops); for
-    case-1b also n=7 seed 1 (62 → 61)."""
+    """complete-hole n=6 seed 3 (42 → 41 for all five, the smallest generated world where the cost drops); for
+    case-1b also n=7 seed 1 (62 → 61), for case-4 also n=7 seed 1 (67 → 66) and, closest-first, lattice-hole 4x5
+    seed 1 (82 → 72 for case-4 and case-4-mn)."""
     costs = {key: (plain.cost, directed.cost) for key, (_, plain, directed) in all_runs.items()}
     for name in BASE:
         assert costs["complete-hole 6 s3", name][1] < costs["complete-hole 6 s3", name][0]
-    assert costs["complete-hole 7 s1", NAME][1] < costs["complete-hole 7 s1", NAME][0]
+    for label, name in (("complete-hole 7 s1", NAME), ("complete-hole 7 s1", "case-4-edgeinfo"),
+                        ("lattice-hole 4x5", "case-4-edgeinfo"), ("lattice-hole 4x5", "case-4-mn-edgeinfo")):
+        assert costs[label, name][1] < costs[label, name][0], (label, name)
 
 
-def test_case_2_edgeinfo_points_every_head_at_v_u_on_the_triangle():
-    """Case 2 (L1898 "in a similar manner"): the two markers on a non-loop edge and the one on the loop edge all
-    have their head at v_u — the new vertex, or v_k' found by the search (H there, T at the other end)."""
-    out = explore(g.cycle(3), "case-2-edgeinfo")
-    assert out.outcome == "correct" and out.verified and used(out) == 5
+@pytest.mark.parametrize("name, counts", [("case-2-edgeinfo", (2, 2, 1)), ("case-1a-edgeinfo", (1, 1, 1)),
+                                          ("case-4-edgeinfo", (1, 0, 1)), ("case-4-mn-edgeinfo", (2, 0, 1))])
+def test_every_e_marker_head_points_at_v_u_on_the_triangle(name, counts):
+    """The E-only variants (L1898 "in a similar manner"): the markers on a non-loop edge and the one on the loop
+    edge all have their head at v_u — the new vertex, or v_k' found by the search (H there, T at the other end).
+    The triangle: v0 → v1 → v2 (non-loop), the loop edge v2 → v0.  Closest-first leaves (v1, v2) blank (rule 3,
+    L1650: v1 already has a marked edge), and a blank edge stays blank at both ends."""
+    out = explore(g.cycle(3), name)
+    assert out.outcome == "correct" and out.verified and used(out) == sum(counts)
     S = out.explorer.S
-    for it in out.explorer.iterations:
+    assert [it.kind for it in out.explorer.iterations] == ["non-loop", "non-loop", "loop"]
+    for it, count in zip(out.explorer.iterations, counts):
         (vk, i), (u, j) = it.joined
-        here = {dm.exit: (dm.count, dm.end) for dm in S.dart_marks(u)}[j]
-        there = {dm.exit: (dm.count, dm.end) for dm in S.dart_marks(vk)}[i]
-        assert (here, there) == (((2, "H"), (2, "T")) if it.kind == "non-loop" else ((1, "H"), (1, "T")))
+        here = {dm.exit: (dm.count, dm.end) for dm in S.dart_marks(u)}.get(j)
+        there = {dm.exit: (dm.count, dm.end) for dm in S.dart_marks(vk)}.get(i)
+        assert (here, there) == (((count, "H"), (count, "T")) if count else (None, None))
 
 
 def test_direction_convention_on_the_triangle():
@@ -137,8 +148,19 @@ def test_the_cli_runs_it_and_refuses_zero_markers(capsys):
     assert "--markers must be an integer >= 1" in capsys.readouterr().err
     assert main(["explore", "cycle:n=4", "--algorithm", NAME, "--markers", "1", "--json"]) == 1
     assert json.loads(capsys.readouterr().out)["outcome"] == "failed"
-    assert main(["explore", "cycle:n=4", "--algorithm", "case-2-edgeinfo", "--markers", "0"]) == 2
-    assert "--markers must be an integer >= 1" in capsys.readouterr().err
+    for name in BASE:
+        assert main(["explore", "cycle:n=4", "--algorithm", name, "--markers", "0"]) == 2, name
+        assert "--markers must be an integer >= 1" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("name, short", [("case-1a-edgeinfo", 3), ("case-4-edgeinfo", 2), ("case-4-mn-edgeinfo", 4)])
+def test_the_e_only_variants_need_their_originals_markers_on_the_4_cycle(capsys, name, short):
+    """The kit and the count are the originals' (m; m − ⌊(n−1)/2⌋ = 3, not the stated m − ⌊n/2⌋ = 2, L1663;
+    m + [n even] = 5, L1665): one marker fewer runs out, the ``failed`` outcome (exit 1)."""
+    assert main(["explore", "cycle:n=4", "--algorithm", name, "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["outcome"] == "correct"
+    assert main(["explore", "cycle:n=4", "--algorithm", name, "--markers", str(short), "--json"]) == 1
+    assert json.loads(capsys.readouterr().out)["outcome"] == "failed"
 
 
 def test_they_are_listed_after_the_621_algorithms():

@@ -1,11 +1,16 @@
 """The O(mn) footprint searches improved with directional markers: *edgeINFO* (thesis §6.2.2, L1891–L1898,
 Figure 6.14): Case 1b with m + 1 directional V-E-markers (``case-1b-edgeinfo``) and Case 2 (Algorithm 6.1)
 with m + n directional E-markers (``case-2-edgeinfo``): "The other $O(mn)$ algorithms can be improved in a
-similar manner" (L1898).
+similar manner" (L1898) — also Case 1a with m directional E-markers (``case-1a-edgeinfo``, Figure 6.17's
+"directional marker version of the m E-marker algorithm", L1965) and the two closest-first extensions of
+Case 4 (``case-4-edgeinfo``, ``case-4-mn-edgeinfo``; L1891 names them among the algorithms that "can be
+improved with directional markers so cost is reduced, although the cost bound remains unchanged").
 
 The loop, the drops' places, the search and the m extension are Case 1b's
 (:class:`~topomark.reference.explorers.edge_footprints.VertexEdgeFootprints`,
-L1508–L1521) or Case 2's (``DoubleMarkedEdges``, L1523–L1554); only the
+L1508–L1521), Case 2's (``DoubleMarkedEdges``, L1523–L1554), Case 1a's
+(``EdgeFootprints``, L1497–L1506) or Case 4's
+(:mod:`~topomark.reference.explorers.closest_first`, L1640–L1699); only the
 markers' directions (the hooks ``vertex_head`` / ``loop_head`` there) and the
 candidate filter (:class:`EdgeInfoFilter`) differ.
 "Assume that when the robot drops a V-marker at a vertex, it drops the marker
@@ -58,7 +63,24 @@ Decisions, with the thesis lines (each shown in ``tests/test_markers_622.py``):
   (the two on a non-loop e point at the new vertex, the loop one at v_k').
   Observation: the marked edges' *positions* relative to the entry are
   sensed even with undirected markers; the heads and (Case 1b) the V-marker's
-  fixing of j are what the directional markers add.
+  fixing of j are what the directional markers add.  Case 1a's one marker
+  on a non-loop e is dropped the same way (head at v_u): one rule,
+  :meth:`EdgeInfoFilter.drop_on_entry`, for every E-marker on a non-loop e.
+* **Case 4 (closest-first): the filter applies as it is** (L1891 lists "the
+  extension algorithm of the E-marker algorithm which requires a maximum of
+  m − ⌊n/2⌋ markers" and "the extension algorithm of
+  it which requires a maximum of m markers" among those improved; L1898 "in
+  a similar manner").  Its search is the footprint search (Algorithm 6.3
+  lines 14–24; ``ClosestFirst`` inherits ``search`` and ``candidates``); what
+  it changes — the edge chosen closest-first (rule 1, L1648) and a non-loop
+  edge left blank when v_k has a marked edge (rule 3, L1650) — does not touch
+  the filter's premise: the robot drops every marker and S records it, a
+  blank edge carries none in the world nor in S, an unexplored edge none, so
+  S's marks at the true v_k' read from e' are what was sensed at v_u.  Rule 3
+  reads "v_k has a marked edge" from S, whatever the heads.  After a search
+  the robot stands at the same v_k' as the undirected version, so the
+  closest-first choice, and the edge order, are the same
+  (``tests/test_markers_622.py``).  Anchored at the entry, as Case 2.
 * **A unique candidate is still visited** (L1898: "is not potentially
   confusing and thus does not need to be visited" excludes only the
   vertices that fail; the potentially confusing ones are searched as in
@@ -70,7 +92,9 @@ Decisions, with the thesis lines (each shown in ``tests/test_markers_622.py``):
   *passed*, and a skipped candidate's path could have passed it earlier.
   The bound stays Case 1b's O(mn) (L1891: "the cost bound remains
   unchanged"), the markers its m + 1 (n V + m − n + 1 E, all directional);
-  Case 2's likewise (m + n − 1 used, L1529).
+  Case 2's likewise (m + n − 1 used, L1529), Case 1a's (m, L1506) and Case
+  4's (the corrected m − ⌊(n−1)/2⌋ and m + [n even], L1663, L1665): the
+  drops are the original's, only their heads are added.
 
 Examples
 --------
@@ -82,6 +106,8 @@ Examples
 [1]
 >>> matching_darts(M, 0, Signature(3, 1, 0))  # that would be entry 0, which S knows
 []
+>>> [c.name for c in (EdgeFootprintsEdgeInfo, ClosestFirstEdgeInfo, ClosestFirstDoubleEdgeInfo)]
+['case-1a-edgeinfo', 'case-4-edgeinfo', 'case-4-mn-edgeinfo']
 """
 
 from __future__ import annotations
@@ -90,10 +116,12 @@ from topomark.spec.kit import MarkerOp
 from topomark.spec.mapstate import PartialMap
 from topomark.spec.signature import Signature, signature_at
 
-from .edge_footprints import DoubleMarkedEdges, FootprintSearch, VertexEdgeFootprints
+from .closest_first import ClosestFirst, ClosestFirstDouble
+from .edge_footprints import DoubleMarkedEdges, EdgeFootprints, FootprintSearch, VertexEdgeFootprints
 from .marker_walk import MarkerStep
 
-__all__ = ["matching_darts", "EdgeInfoFilter", "EdgeInfoFootprints", "DoubleMarkedEdgeInfo"]
+__all__ = ["matching_darts", "EdgeInfoFilter", "EdgeInfoFootprints", "DoubleMarkedEdgeInfo", "EdgeFootprintsEdgeInfo",
+           "ClosestFirstEdgeInfo", "ClosestFirstDoubleEdgeInfo"]
 
 
 def matching_darts(M: PartialMap, w: int, sensed: Signature, exits: list[int] | None = None) -> list[int]:
@@ -124,6 +152,12 @@ class EdgeInfoFilter(FootprintSearch):
         return [w for w in super().candidates(vk, key, degree)
                 if matching_darts(self.M, w, self._sensed, exits[w])]
 
+    def drop_on_entry(self, it: MarkerStep, count: int) -> None:
+        """The marker(s) on a non-loop e, head at v_u (the new vertex, where they are dropped), tail at v_k."""
+        self.drop(MarkerOp("edge", exit=0, count=count, direction="H"), it)
+        v, i = it.edge
+        self.M.mark_as_sensed(v, Signature(self.M.degree(v), edges=((i, count, "T"),)), 0)
+
 
 class EdgeInfoFootprints(EdgeInfoFilter, VertexEdgeFootprints):
     """Case 1b with directional V-E-markers: candidates must match edgeINFO from the entry (L1891–L1898)."""
@@ -138,8 +172,21 @@ class DoubleMarkedEdgeInfo(EdgeInfoFilter, DoubleMarkedEdges):
 
     name = "case-2-edgeinfo"
 
-    def drop_on_entry(self, it: MarkerStep, count: int) -> None:
-        """The two markers on a non-loop e, head at v_u (the new vertex, where they are dropped), tail at v_k."""
-        self.drop(MarkerOp("edge", exit=0, count=count, direction="H"), it)
-        v, i = it.edge
-        self.M.mark_as_sensed(v, Signature(self.M.degree(v), edges=((i, count, "T"),)), 0)
+
+class EdgeFootprintsEdgeInfo(EdgeInfoFilter, EdgeFootprints):
+    """Case 1a (m E-markers) with directional E-markers, heads at v_u, anchored at the entry: Figure 6.17's
+    "directional marker version of the m E-marker algorithm" (L1965)."""
+
+    name = "case-1a-edgeinfo"
+
+
+class ClosestFirstEdgeInfo(EdgeInfoFilter, ClosestFirst):
+    """Case 4 (Algorithm 6.3, closest-first, m − ⌊(n−1)/2⌋ markers) with directional E-markers (L1891, L1898)."""
+
+    name = "case-4-edgeinfo"
+
+
+class ClosestFirstDoubleEdgeInfo(EdgeInfoFilter, ClosestFirstDouble):
+    """The closest-first extension of Case 2 (L1665) with directional E-markers (L1891, L1898)."""
+
+    name = "case-4-mn-edgeinfo"

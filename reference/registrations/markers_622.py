@@ -6,18 +6,27 @@ algorithm                     thesis                                      kit (d
 ============================  ==========================================  ===========================  =============
 case-1b-edgeinfo              Case 1b, m + 1 directional V-E (L1891)      m + 1 V-or-E pool, directed  m + 1
 case-2-edgeinfo               Case 2, m + n directional E (L1898)         m + n E, directed            m + n − 1
+case-1a-edgeinfo              Case 1a, m directional E (L1898, L1965)     m E, directed                m
+case-4-edgeinfo               Case 4, m − ⌊n/2⌋ directional E (L1898)     m − ⌊(n−1)/2⌋ E, directed    m − ⌊(n−1)/2⌋
+case-4-mn-edgeinfo            Case 4-mn, m directional E (L1898)          m + [n even] E, directed     m + [n even]
 ============================  ==========================================  ===========================  =============
 
 The bound is Case 1b's (:func:`~topomark.reference.registrations.markers_621.footprints_bound`,
 ours, exact for the explorer): "the cost bound remains unchanged" (L1891), and
 the search only walks to fewer candidates.  The kit is Case 1b's pool, all
 markers directional; ``--markers K`` gives a pool of K, as for ``case-1b``.  ``case-2-edgeinfo``
-is ``case-2`` (kit m + n, m + n − 1 used, L1529) with directional E-markers.
+is ``case-2`` (kit m + n, m + n − 1 used, L1529) with directional E-markers; ``case-1a-edgeinfo``,
+``case-4-edgeinfo`` and ``case-4-mn-edgeinfo`` are ``case-1a``, ``case-4`` and ``case-4-mn`` (their kits, their
+checked marker bounds — Case 4's corrected, :mod:`~topomark.reference.explorers.closest_first` — and options:
+Case 4 chooses closest-first whatever the edge policy) with directional E-markers.  Every E-only variant anchors
+edgeINFO at the entry, as ``case-2-edgeinfo`` (:mod:`~topomark.reference.explorers.edge_info`).
 
 Examples
 --------
 >>> [s.name for s in SPECS]
-['case-1b-edgeinfo', 'case-2-edgeinfo']
+['case-1b-edgeinfo', 'case-2-edgeinfo', 'case-1a-edgeinfo', 'case-4-edgeinfo', 'case-4-mn-edgeinfo']
+>>> SPECS[3].kit_for(4, 4, {"markers": None}).describe()  # the 4-cycle: m − ⌊(n−1)/2⌋ = 3
+'3 directional edge markers'
 >>> SPECS[0].kit_for(4, 4, {"markers": None}).describe()  # the 4-cycle
 '5 directional vertex-or-edge markers'
 >>> SPECS[0].bound_for(3, 3) == footprints_bound(3, 3)
@@ -30,8 +39,9 @@ from dataclasses import replace
 
 from topomark.spec.kit import Kit
 
-from ..explorers.edge_info import DoubleMarkedEdgeInfo, EdgeInfoFootprints
-from .markers_621 import _case_1b_kit, _given, _spec, footprints_bound
+from ..explorers.edge_info import (ClosestFirstDoubleEdgeInfo, ClosestFirstEdgeInfo, DoubleMarkedEdgeInfo,
+                                   EdgeFootprintsEdgeInfo, EdgeInfoFootprints)
+from .markers_621 import _OPTIONS, _case_1b_kit, _given, _spec, case_4_markers, case_4_mn_markers, footprints_bound
 
 __all__ = ["SPECS"]
 
@@ -49,5 +59,21 @@ SPECS = (
     replace(_spec("case-2-edgeinfo", "§6.2.2 Case 2 (Algorithm 6.1) with directional E-markers, edgeINFO anchored at "
                   "the entry (L1898)", "m + n directional E-markers (m + n − 1 used, L1529)", DoubleMarkedEdgeInfo,
                   lambda n, m, o: Kit(edge=_given(o, m + n), directional=True), lambda n, m: m + n - 1, "L1898"),
+            kit=Kit(edge=1, directional=True)),
+    replace(_spec("case-1a-edgeinfo", "§6.2.2 Case 1a with directional E-markers, edgeINFO anchored at the entry "
+                  "(L1898; Figure 6.17, L1965)", "m directional E-markers (as case-1a)", EdgeFootprintsEdgeInfo,
+                  lambda n, m, o: Kit(edge=_given(o, m), directional=True), lambda n, m: m, "L1898"),
+            kit=Kit(edge=1, directional=True)),
+    replace(_spec("case-4-edgeinfo", "§6.2.2 Case 4 (Algorithm 6.3, closest-first) with directional E-markers, "
+                  "edgeINFO anchored at the entry (L1898)", "m − ⌊(n−1)/2⌋ directional E-markers (as case-4; stated "
+                  "m − ⌊n/2⌋, L1663)", ClosestFirstEdgeInfo,
+                  lambda n, m, o: Kit(edge=_given(o, case_4_markers(n, m)), directional=True), case_4_markers,
+                  "L1898", _OPTIONS),
+            kit=Kit(edge=1, directional=True)),
+    replace(_spec("case-4-mn-edgeinfo", "§6.2.2 Case 4, the closest-first extension of Case 2, with directional "
+                  "E-markers, edgeINFO anchored at the entry (L1898)", "m + [n even] directional E-markers (as "
+                  "case-4-mn; stated m, L1665)", ClosestFirstDoubleEdgeInfo,
+                  lambda n, m, o: Kit(edge=_given(o, case_4_mn_markers(n, m)), directional=True), case_4_mn_markers,
+                  "L1898", _OPTIONS),
             kit=Kit(edge=1, directional=True)),
 )
