@@ -134,6 +134,14 @@ EDGEINFO_QUOTES = {
                        "algorithm which has lower cost than the undirected version\" (L1965–L1979)",
     "case-1b-edgeinfo": "the m V-E-marker algorithm (Case 1b) \"can be improved as follows … so cost is reduced, "
                         "although the cost bound remains unchanged\" (L1891; Figure 6.17 plots no V-E version)",
+    "case-1a-edgeinfo": "\"The directional marker version of the m E-marker algorithm has lower cost than the "
+                        "undirected version algorithm.\" (L1965)",
+    "case-4-edgeinfo": "the extension of the E-marker algorithm with m − ⌊n/2⌋ markers (Case 4) \"can be improved with "
+                       "directional markers so cost is reduced, although the cost bound remains unchanged\" (L1891; "
+                       "Figure 6.17 plots no closest-first version)",
+    "case-4-mn-edgeinfo": "the extension of the m + n E-marker algorithm with m markers (Case 4) \"can be improved "
+                          "with directional markers so cost is reduced, although the cost bound remains unchanged\" "
+                          "(L1891; Figure 6.17 plots no closest-first version)",
 }
 
 
@@ -155,9 +163,7 @@ def _fig_617_618(fam: str, g: dict) -> list[str]:
         lines += _finding(EDGEINFO_QUOTES[directional] + f" ({directional} against {original})",
                           f"mean cost ratio per size (lower: < 1): {_ratio_text(r)}",
                           all(v < 1 for v in r.values()) if r else None)
-    lines += ["* The m E-marker algorithm's directional version (Case 1a with edgeINFO) is not registered: not "
-              "measured.", "",
-              f"### Figure 6.18 ({fam}): markers used by the extensions", "",
+    lines += ["", f"### Figure 6.18 ({fam}): markers used by the extensions", "",
               "| size | case-3b (Σ^{n−1}) | extension-1 | ÷ case-3b | cost ÷ case-3b | extension-2 | ÷ case-3b | "
               "cost ÷ case-3b |", "|---:|---:|---:|---:|---:|---:|---:|---:|"]
     for s in sorted(u["case-3b"]):

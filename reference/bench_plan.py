@@ -159,7 +159,8 @@ EXPERIMENTS["lighthouses"] = Experiment(
 TABLE_61_ALGS = ("case-1a", "case-1b", "case-2", "case-3a", "case-3b", "case-4", "case-4-mn", "case-5-v1",
                  "case-5-v2", "case-0")
 TABLE_62_ALGS = ("case-dv-sum", "extension-1", "extension-2", "case-3b",  # case-3b: the undirected original
-                 "case-1b-edgeinfo", "case-1b", "case-2-edgeinfo", "case-2")  # §6.2.2's edgeINFO and their originals
+                 "case-1b-edgeinfo", "case-1b", "case-2-edgeinfo", "case-2",  # §6.2.2's edgeINFO and their originals
+                 "case-1a-edgeinfo", "case-1a", "case-4-edgeinfo", "case-4", "case-4-mn-edgeinfo", "case-4-mn")
 FRACTIONS = ("0", "0.1", "0.25", "0.5", "0.75", "1")
 FIGURE_613_SIZES = {"lattice-hole": (72, 90, 108, 152, 202), "complete-hole": (24, 28, 32, 36, 40)}
 EXPERIMENTS["table-6.1"] = Experiment(

@@ -100,12 +100,16 @@ CLAIMS.update({
                               "m + 1 (L1510; m with the extension, L1512)", lambda n, m: m + 1, "m + 1"),
     "case-2-edgeinfo": Claim("6.2", "| m + n | edge (E-marker) | none | O(mn) | O(mn) |", "mn", "m + n",
                              lambda n, m: m + n, "m + n − 1 (L1529)"),
+    "case-1a-edgeinfo": Claim("6.2", "| (m) | edge (E-marker) | none | O(mn) | O(mn) |", "mn", "m",
+                              lambda n, m: m, "m"),
+    "case-4-edgeinfo": Claim("6.2", "| m − ⌊n/2⌋ | edge (E-marker) | closest-first | O(mn) | O(mn) |", "mn",
+                             "m − ⌊n/2⌋", lambda n, m: m - n // 2, "m − ⌊(n−1)/2⌋ (L1663 corrected)"),
+    "case-4-mn-edgeinfo": Claim("6.2", "| m | edge (E-marker) | closest-first | O(mn) | O(mn) |", "mn", "m",
+                                lambda n, m: m, "m + [n even] (L1665 corrected)"),
 })
 CLAIMS_62_UNDIRECTED = {"case-3b": "| (Σ_{k=1}^{n−1} k) | edge (E-marker) | none | O(m) | O(m) |"}
-EDGEINFO = {"case-1b-edgeinfo": "case-1b", "case-2-edgeinfo": "case-2"}  # §6.2.2's edgeINFO variant ↦ its original
-NOT_REGISTERED_62 = ("the edgeINFO (directional) variants of the other O(mn) algorithms (L1898: rows m − ⌊n/2⌋, m "
-                     "and (m) E of Table 6.2's directional column; only (m) V-E and m + n are registered, "
-                     "`case-1b-edgeinfo` and `case-2-edgeinfo`) are not registered in topomark: not measured")
+EDGEINFO = {"case-1b-edgeinfo": "case-1b", "case-2-edgeinfo": "case-2", "case-1a-edgeinfo": "case-1a",
+            "case-4-edgeinfo": "case-4", "case-4-mn-edgeinfo": "case-4-mn"}  # §6.2.2's edgeINFO variant ↦ its original
 
 COST_F: dict[str, Callable[[dict], float]] = {
     "m": lambda r: float(r["m"]), "mn": lambda r: float(r["m"]) * float(r["n"]),
@@ -210,8 +214,8 @@ def thesis_rows(table: str, algs: list[str]) -> list[str]:
     lines = [f"## Table 6.{table[-1]}: the thesis's rows (verbatim) and the algorithm measuring each", ""] + head + body
     if table == "6.2":
         lines += ["", "`case-3b` (undirected, Table 6.1) is run as the original the extensions save markers from; "
-                  "`case-1b` and `case-2` as the originals of their edgeINFO variants. "
-                  "Not measured: " + NOT_REGISTERED_62 + ". Table 6.2's rows 1–3 (one, two, three markers) are "
+                  + ", ".join(f"`{o}`" for o in EDGEINFO.values()) + " as the originals of their edgeINFO variants. "
+                  "Table 6.2's rows 1–3 (one, two, three markers) are "
                   "Algorithm 3.1 with a lighthouse: `topomark bench lighthouses`."]
     else:
         lines += ["", "Table 6.1's rows 1–3 (one marker: N/A; 2 V-E and 3 markers: O(m²n)) are Algorithm 3.1 with "
