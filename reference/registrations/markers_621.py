@@ -99,8 +99,10 @@ _BOUND = "O(mn) ({}); bound_fn: ours, exact for our explorer"
 _OPTIONS = ("markers",)
 
 
-def _spec(name, thesis, markers, explorer, kit_fn, marker_bound_fn, cites, options=_OPTIONS + ("policy edge",)):
-    return AlgorithmSpec(name, thesis, Kit(edge=1), _BOUND.format(cites), markers, True, options, CHECKS,
+def _spec(name, thesis, markers, explorer, kit_fn, marker_bound_fn, cites, options=_OPTIONS + ("policy edge",),
+          kind=Kit(edge=1)):
+    """``kind``: the kind of marker the kit holds (the registry's ``kit``; the counts come from ``kit_fn``)."""
+    return AlgorithmSpec(name, thesis, kind, _BOUND.format(cites), markers, True, options, CHECKS,
                          bound_fn=footprints_bound, explorer=explorer, uses_lighthouse=False, parameters=(MARKERS,),
                          kit_fn=kit_fn, marker_bound_fn=marker_bound_fn, family="robot")
 
@@ -110,7 +112,7 @@ SPECS = (
           EdgeFootprints, lambda n, m, o: Kit(edge=_given(o, m)), lambda n, m: m, "L1506"),
     _spec("case-1b", "§6.2.1 Case 1b, m + 1 V-E-markers, extendable to m (L1508–L1521, Figure 6.5)",
           "m + 1 undirected V-E-markers, one pool (m with the extension, L1512)", VertexEdgeFootprints, _case_1b_kit,
-          lambda n, m: m + 1, "L1510"),
+          lambda n, m: m + 1, "L1510", kind=Kit(either=1)),
     _spec("case-2", "§6.2.1 Case 2, Algorithm 6.1, m + n E-markers (L1523–L1554)",
           "m + n undirected E-markers (m + n − 1 used, L1529)", DoubleMarkedEdges,
           lambda n, m, o: Kit(edge=_given(o, m + n)), lambda n, m: m + n - 1, "L1529"),

@@ -55,7 +55,7 @@ SPECS = (
     replace(_spec("case-1b-edgeinfo", "§6.2.2 Case 1b with directional V-E-markers, edgeINFO (L1891–L1898, "
                   "Figure 6.14)", "m + 1 directional V-E-markers, one pool (as case-1b)",
                   EdgeInfoFootprints, _directional_1b_kit, lambda n, m: m + 1, "L1891"),
-            kit=Kit(edge=1, directional=True)),
+            kit=Kit(either=1, directional=True)),
     replace(_spec("case-2-edgeinfo", "§6.2.2 Case 2 (Algorithm 6.1) with directional E-markers, edgeINFO anchored at "
                   "the entry (L1898)", "m + n directional E-markers (m + n − 1 used, L1529)", DoubleMarkedEdgeInfo,
                   lambda n, m, o: Kit(edge=_given(o, m + n), directional=True), lambda n, m: m + n - 1, "L1898"),
