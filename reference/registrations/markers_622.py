@@ -51,29 +51,28 @@ def _directional_1b_kit(n: int, m: int, options: dict) -> Kit:
     return replace(_case_1b_kit(n, m, options), directional=True)
 
 
+def _edge_only(name: str, thesis: str, markers: str, explorer, count, bound, options=_OPTIONS + ("policy edge",)):
+    """An E-only variant: ``count(n, m)`` directional E-markers by default (``--markers K``: K), ``bound`` checked."""
+    return _spec(name, thesis, markers, explorer,
+                 lambda n, m, o: Kit(edge=_given(o, count(n, m)), directional=True), bound, "L1898", options,
+                 kind=Kit(edge=1, directional=True))
+
+
 SPECS = (
-    replace(_spec("case-1b-edgeinfo", "§6.2.2 Case 1b with directional V-E-markers, edgeINFO (L1891–L1898, "
-                  "Figure 6.14)", "m + 1 directional V-E-markers, one pool (as case-1b)",
-                  EdgeInfoFootprints, _directional_1b_kit, lambda n, m: m + 1, "L1891"),
-            kit=Kit(either=1, directional=True)),
-    replace(_spec("case-2-edgeinfo", "§6.2.2 Case 2 (Algorithm 6.1) with directional E-markers, edgeINFO anchored at "
-                  "the entry (L1898)", "m + n directional E-markers (m + n − 1 used, L1529)", DoubleMarkedEdgeInfo,
-                  lambda n, m, o: Kit(edge=_given(o, m + n), directional=True), lambda n, m: m + n - 1, "L1898"),
-            kit=Kit(edge=1, directional=True)),
-    replace(_spec("case-1a-edgeinfo", "§6.2.2 Case 1a with directional E-markers, edgeINFO anchored at the entry "
-                  "(L1898; Figure 6.17, L1965)", "m directional E-markers (as case-1a)", EdgeFootprintsEdgeInfo,
-                  lambda n, m, o: Kit(edge=_given(o, m), directional=True), lambda n, m: m, "L1898"),
-            kit=Kit(edge=1, directional=True)),
-    replace(_spec("case-4-edgeinfo", "§6.2.2 Case 4 (Algorithm 6.3, closest-first) with directional E-markers, "
-                  "edgeINFO anchored at the entry (L1898)", "m − ⌊(n−1)/2⌋ directional E-markers (as case-4; stated "
-                  "m − ⌊n/2⌋, L1663)", ClosestFirstEdgeInfo,
-                  lambda n, m, o: Kit(edge=_given(o, case_4_markers(n, m)), directional=True), case_4_markers,
-                  "L1898", _OPTIONS),
-            kit=Kit(edge=1, directional=True)),
-    replace(_spec("case-4-mn-edgeinfo", "§6.2.2 Case 4, the closest-first extension of Case 2, with directional "
-                  "E-markers, edgeINFO anchored at the entry (L1898)", "m + [n even] directional E-markers (as "
-                  "case-4-mn; stated m, L1665)", ClosestFirstDoubleEdgeInfo,
-                  lambda n, m, o: Kit(edge=_given(o, case_4_mn_markers(n, m)), directional=True), case_4_mn_markers,
-                  "L1898", _OPTIONS),
-            kit=Kit(edge=1, directional=True)),
+    _spec("case-1b-edgeinfo", "§6.2.2 Case 1b with directional V-E-markers, edgeINFO (L1891–L1898, Figure 6.14)",
+          "m + 1 directional V-E-markers, one pool (as case-1b)", EdgeInfoFootprints, _directional_1b_kit,
+          lambda n, m: m + 1, "L1891", kind=Kit(either=1, directional=True)),
+    _edge_only("case-2-edgeinfo", "§6.2.2 Case 2 (Algorithm 6.1) with directional E-markers, edgeINFO anchored at "
+               "the entry (L1898)", "m + n directional E-markers (m + n − 1 used, L1529)", DoubleMarkedEdgeInfo,
+               lambda n, m: m + n, lambda n, m: m + n - 1),
+    _edge_only("case-1a-edgeinfo", "§6.2.2 Case 1a with directional E-markers, edgeINFO anchored at the entry "
+               "(L1898; Figure 6.17, L1965)", "m directional E-markers (as case-1a)", EdgeFootprintsEdgeInfo,
+               lambda n, m: m, lambda n, m: m),
+    _edge_only("case-4-edgeinfo", "§6.2.2 Case 4 (Algorithm 6.3, closest-first) with directional E-markers, "
+               "edgeINFO anchored at the entry (L1898)", "m − ⌊(n−1)/2⌋ directional E-markers (as case-4; stated "
+               "m − ⌊n/2⌋, L1663)", ClosestFirstEdgeInfo, case_4_markers, case_4_markers, _OPTIONS),
+    _edge_only("case-4-mn-edgeinfo", "§6.2.2 Case 4, the closest-first extension of Case 2, with directional "
+               "E-markers, edgeINFO anchored at the entry (L1898)", "m + [n even] directional E-markers (as "
+               "case-4-mn; stated m, L1665)", ClosestFirstDoubleEdgeInfo, case_4_mn_markers, case_4_mn_markers,
+               _OPTIONS),
 )
