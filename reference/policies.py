@@ -21,7 +21,7 @@ from typing import Container
 from topomark.spec.errors import InvalidInput
 from topomark.spec.mapstate import MapDart, PartialMap
 
-__all__ = ["EDGE_POLICIES", "HYPOTHESIS_POLICIES", "PATH_POLICIES", "Policies", "bfs", "bfs_preorder", "nearest", "tree_to_v0"]
+__all__ = ["EDGE_POLICIES", "HYPOTHESIS_POLICIES", "PATH_POLICIES", "Policies", "bfs", "bfs_preorder", "nearest", "parents_toward", "tree_to_v0"]
 
 EDGE_POLICIES = ("nearest", "fifo", "lifo")
 HYPOTHESIS_POLICIES = ("fifo", "lifo", "shortest")
@@ -41,15 +41,28 @@ class Policies:
     def to_json(self) -> dict[str, str]:
         return {"edge": self.edge, "hypothesis": self.hypothesis, "path": self.path}
 
+    def reach(self, S: PartialMap, root: int) -> tuple[dict[int, int], dict[int, MapDart]]:
+        """What :meth:`choose_edge` and the walk to its choice need from the robot at ``root``: :func:`bfs`'s
+        distances and parent darts — for ``nearest`` only through the first layer holding an end listed in U
+        (every vertex as close as the nearest end is reached, with bfs's parents), else the whole search (also
+        for a subclass that chooses its own way)."""
+        if self.edge == "nearest" and type(self).choose_edge is Policies.choose_edge:
+            _, dist, parent = _layers(S, root, {v for v, _ in S.unexplored})
+            return dist, parent
+        dist, _, parent = bfs(S, root)
+        return dist, parent
+
     def choose_edge(self, S: PartialMap, dist: dict[int, int]) -> MapDart:
-        """Remove and return the next e from U; ``dist`` holds distances in S from the robot."""
+        """Remove and return the next e from U; ``dist`` holds distances in S from the robot, for ``nearest``
+        at least to every vertex as close as the nearest end listed in U (:meth:`reach`)."""
         U = S.unexplored
         if self.edge == "fifo":
             k = 0
         elif self.edge == "lifo":
             k = len(U) - 1
-        else:  # the closest known end, the first listed among equals
-            ds = [dist[v] for v, _ in U]
+        else:  # the closest known end, the first listed among equals (an end not reached is farther)
+            far = len(dist)
+            ds = [dist.get(v, far) for v, _ in U]
             k = ds.index(min(ds))
         return U.pop(k)
 
@@ -98,9 +111,17 @@ def nearest(S: PartialMap, root: int, wanted: Container[int]) -> tuple[int | Non
     """The vertex of ``wanted`` nearest ``root`` in S (the least-numbered among the nearest; None if none is
     reached) and the parent darts of :func:`bfs` from ``root``, the search stopped after that vertex's layer —
     the same parents, for every vertex it reached, at a fraction of a whole search when the vertex is near."""
-    if root in wanted:
-        return root, {}
+    found, _, parent = _layers(S, root, wanted)
+    return (min(found) if found else None), parent
+
+
+def _layers(S: PartialMap, root: int, wanted: Container[int]) -> tuple[list[int], dict[int, int], dict[int, MapDart]]:
+    """:func:`bfs` layer by layer from ``root``, stopped after the first layer holding a vertex of ``wanted``:
+    those vertices, and the distances and parents of every vertex reached (bfs's, as the queue meets the
+    layers in the same order)."""
     dist, parent, layer, d = {root: 0}, {}, [root], 0
+    if root in wanted:
+        return [root], dist, parent
     links = S.links
     while layer:
         d, found, following = d + 1, [], []
@@ -112,9 +133,27 @@ def nearest(S: PartialMap, root: int, wanted: Container[int]) -> tuple[int | Non
                     if t[0] in wanted:
                         found.append(t[0])
         if found:
-            return min(found), parent
+            return found, dist, parent
         layer = following
-    return None, parent
+    return [], dist, parent
+
+
+def parents_toward(S: PartialMap, root: int, target: int) -> dict[int, MapDart]:
+    """:func:`bfs`'s parent darts from ``root``, enough to walk to ``target``: the kept search if S and the
+    root are unchanged since, else bfs's queue stopped once it meets ``target`` (the same parents)."""
+    memo = getattr(S, "_bfs_memo", None)
+    if memo is not None and memo[0] == (len(S.journal), root):
+        return memo[1][2]
+    seen, parent, todo = {root}, {}, deque([root])
+    links = S.links
+    while todo and target not in seen:  # bfs's queue, stopped when it meets the target
+        v = todo.popleft()
+        for i, t in enumerate(links(v)):
+            if t is not None and t[0] not in seen:
+                seen.add(t[0])
+                parent[t[0]] = (v, i)
+                todo.append(t[0])
+    return parent
 
 
 def bfs_preorder(S: PartialMap, root: int) -> list[int]:

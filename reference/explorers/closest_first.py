@@ -42,7 +42,6 @@ Examples
 
 from __future__ import annotations
 
-from topomark.spec.mapstate import MapDart
 
 from ..policies import Policies
 from .edge_footprints import DoubleMarkedEdges, EdgeFootprints
@@ -58,9 +57,7 @@ class ClosestFirst(EdgeFootprints):
 
     name = "case-4"
 
-    def choose(self, dist: dict[int, int]) -> MapDart:
-        """Rule (1): closest first, whatever edge policy was given."""
-        return NEAREST.choose_edge(self.M, dist)
+    edge_policy = NEAREST  # rule (1): closest first, whatever edge policy was given
 
     def non_loop_markers(self, vk: int) -> int:
         """Rule (3), Algorithm 6.3 lines 5–6: one marker on e if v_k has no marked edge, else none."""
@@ -72,9 +69,7 @@ class ClosestFirstDouble(DoubleMarkedEdges):
 
     name = "case-4-mn"
 
-    def choose(self, dist: dict[int, int]) -> MapDart:
-        """Rule (1): closest first, whatever edge policy was given."""
-        return NEAREST.choose_edge(self.M, dist)
+    edge_policy = NEAREST  # rule (1): closest first, whatever edge policy was given
 
     def non_loop_markers(self, vk: int) -> int:
         """Two markers on e if v_k has no marked edge, else none (L1665)."""

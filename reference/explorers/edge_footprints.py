@@ -78,7 +78,7 @@ from topomark.spec.kit import MarkerOp
 from topomark.spec.mapstate import MapDart, PartialMap
 from topomark.spec.signature import Signature, signature_at
 
-from ..policies import bfs, bfs_preorder
+from ..policies import bfs_preorder, parents_toward
 from .marker_walk import MarkerStep, MarkerWalk
 
 __all__ = ["marks_key", "FootprintSearch", "EdgeFootprints", "VertexEdgeFootprints", "DoubleMarkedEdges"]
@@ -172,14 +172,16 @@ class FootprintSearch(MarkerWalk):
         """Known vertices that could be v_u, in the preorder of a breadth-first tree of S rooted at v_k."""
         M = self.M
         near = {vk} | {t[0] for t in M.links(vk) if t is not None}
-        open_at = {v for v, _ in M.unexplored}
-        return [v for v in bfs_preorder(M, vk)
-                if v not in near and v in open_at and M.degree(v) == degree and map_key(M, v) == key]
+        eligible = {v for v, _ in M.unexplored if v not in near}
+        eligible = {v for v in eligible if M.degree(v) == degree and map_key(M, v) == key}
+        if len(eligible) < 2:  # S is connected: the tree's order matters only between two or more
+            return list(eligible)
+        return [v for v in bfs_preorder(M, vk) if v in eligible]
 
     def walk_looking(self, target: int, looked: set[int]) -> tuple[int, int, int] | None:
         """Walk a shortest path of S to ``target``, sensing every vertex entered; at the first one showing a
         marked edge S does not show, stop: (that vertex, the marked exit, the entry)."""
-        _, _, parent = bfs(self.M, self.position[0])
+        parent = parents_toward(self.M, self.position[0], target)
         for dart in self.path_to(target, parent):
             sig = self.leave(dart, "validation")
             v, entry = self.position

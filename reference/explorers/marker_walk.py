@@ -44,7 +44,7 @@ from topomark.spec.kit import MarkerOp
 from topomark.spec.mapstate import MapDart, PartialMap
 from topomark.spec.signature import Signature, signature_at
 
-from ..policies import Policies, bfs
+from ..policies import Policies
 
 __all__ = ["MarkerStep", "MarkerWalk"]
 
@@ -137,8 +137,8 @@ class MarkerWalk:
 
     def step(self) -> MarkerStep:
         """One iteration: remove e = (v_k, v_u) from U, walk S to v_k, follow e, then :meth:`arrive`."""
-        dist, _, parent = bfs(self.M, self.position[0])
-        it = self.step_type(len(self.iterations) + 1, self.choose(dist))
+        dist, parent = self.edge_policy.reach(self.M, self.position[0])
+        it = self.step_type(len(self.iterations) + 1, self.edge_policy.choose_edge(self.M, dist))
         self.travel_to(it.edge[0], parent)
         self.depart(it)
         it.signature = self.leave(it.edge, "new")
@@ -162,9 +162,10 @@ class MarkerWalk:
         """The robot has followed e and senses ``sig`` at v_u: augment S (and drop what the algorithm drops)."""
         raise NotImplementedError
 
-    def choose(self, dist: dict[int, int]) -> MapDart:
-        """Remove e from U: the edge policy's choice (``nearest``: the closest known end first)."""
-        return self.policies.choose_edge(self.M, dist)
+    @property
+    def edge_policy(self) -> Policies:
+        """Which e leaves U: the edge policy given (``nearest``: the closest known end first)."""
+        return self.policies
 
     # -- motion -----------------------------------------------------------------
     def leave(self, dart: MapDart, purpose: str) -> Signature:
