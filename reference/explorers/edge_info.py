@@ -129,7 +129,23 @@ def matching_darts(M: PartialMap, w: int, sensed: Signature, exits: list[int] | 
     ``sensed`` at ``w`` (S's marks)."""
     if exits is None:
         exits = [j for v, j in M.unexplored if v == w]
-    return [j for j in exits if signature_at(M, w, j) == sensed]
+    if sensed.degree != M.degree(w):
+        return []
+    could = _entries_reading_first(M, w, sensed)
+    return [j for j in exits if (could is None or j in could) and signature_at(M, w, j) == sensed]
+
+
+def _entries_reading_first(M: PartialMap, w: int, sensed: Signature) -> set[int] | None:
+    """The entries j of ``w`` from which the first relative direction in ``sensed`` (the V-marker's head, else
+    its first E-marker) is read as sensed (§3.1.1: exit x reads (x − j) mod deg); None if it has none.  Only
+    these can read all of ``sensed``: a shortcut past most entries, never a test in its own right."""
+    d, mark = M.degree(w), M.vertex_mark(w)
+    if sensed.vertex_direction is not None:
+        return set() if mark is None or mark.head is None else {(mark.head - sensed.vertex_direction) % d}
+    if not sensed.edges:
+        return None
+    p, count, end = sensed.edges[0]
+    return {(dm.exit - p) % d for dm in M.dart_marks(w) if dm.count == count and dm.end == end}
 
 
 class EdgeInfoFilter(FootprintSearch):
@@ -146,11 +162,13 @@ class EdgeInfoFilter(FootprintSearch):
 
     def candidates(self, vk: int, key: tuple[int, ...], degree: int) -> list[int]:
         """The case's own candidates that are potentially confusing by edgeINFO: some unexplored entry matches."""
+        found = super().candidates(vk, key, degree)
+        if not found:
+            return found
         exits: dict[int, list[int]] = {}
         for v, j in self.M.unexplored:
             exits.setdefault(v, []).append(j)
-        return [w for w in super().candidates(vk, key, degree)
-                if matching_darts(self.M, w, self._sensed, exits[w])]
+        return [w for w in found if matching_darts(self.M, w, self._sensed, exits[w])]
 
     def drop_on_entry(self, it: MarkerStep, count: int) -> None:
         """The marker(s) on a non-loop e, head at v_u (the new vertex, where they are dropped), tail at v_k."""
