@@ -60,6 +60,10 @@ __all__ = ["MarkerLayer", "apply_op"]
 _FLIP = {"H": "T", "T": "H", None: None}
 
 
+def _exit(mark: DartMark) -> int:
+    return mark.exit
+
+
 class MarkerLayer:
     """Mutable markers over ``world``'s rotation; starts with the world's own markers."""
 
@@ -143,23 +147,22 @@ class MarkerLayer:
             objects[place] = obj
 
     def _refresh(self, v: str, exit: int) -> None:
-        """Recompute the dart marks at both ends of the edge at exit ``exit`` of ``v`` after a change."""
-        self._place_changed(frozenset((v, self.base.neighbour(v, exit))))
-        for x in (v, self.base.neighbour(v, exit)):
-            marks = self._darts(x)
-            if marks:
-                self._dmarks[x] = marks
-            else:
-                self._dmarks.pop(x, None)
-
-    def _darts(self, v: str) -> tuple[DartMark, ...]:
-        out = []
-        for i, w in enumerate(self.base.rotation[v]):
-            entry = self._emarks.get(frozenset((v, w)))
+        """Redo the dart mark of the edge at exit ``exit`` of ``v`` at both its ends after a change (the world is
+        simple: the edge is that one exit at each end); the other dart marks there stay, in exit order."""
+        w, j = self.base.target((v, exit))
+        key = frozenset((v, w))
+        self._place_changed(key)
+        entry = self._emarks.get(key)
+        for x, i in ((v, exit), (w, j)):
+            marks = [dm for dm in self._dmarks.get(x, ()) if dm.exit != i]
             if entry is not None:
                 (tail, _), count, end = entry
-                out.append(DartMark(i, count, end if tail == v else _FLIP[end]))
-        return tuple(out)
+                marks.append(DartMark(i, count, end if tail == x else _FLIP[end]))
+                marks.sort(key=_exit)
+            if marks:
+                self._dmarks[x] = tuple(marks)
+            else:
+                self._dmarks.pop(x, None)
 
     # -- operations ----------------------------------------------------------
     def drop_vertex(self, v: str, count: int, head: int | None) -> None:

@@ -46,12 +46,26 @@ def test_drops_then_pick_ups_restore_the_world(data):
         if data.draw(st.booleans()):
             op = MarkerOp("vertex", count=data.draw(st.integers(1, 3)))
         else:
-            op = MarkerOp("edge", exit=data.draw(st.integers(0, w.degree(v) - 1)), count=data.draw(st.integers(1, 3)))
-        apply_op(layer, (v, entry), op)
+            op = MarkerOp("edge", exit=data.draw(st.integers(0, w.degree(v) - 1)), count=data.draw(st.integers(1, 3)),
+                          direction=data.draw(st.sampled_from((None, "H", "T"))))
+        try:
+            apply_op(layer, (v, entry), op)
+        except InvalidInput:  # markers pointing another way than those already there: refused, nothing changed
+            _marks_as_built(layer, w)
+            continue
         ops.append(((v, entry), op))
+        _marks_as_built(layer, w)
     for state, op in reversed(ops):
         apply_op(layer, state, MarkerOp(op.kind, op.exit, op.direction, op.count, pick_up=True))
+        _marks_as_built(layer, w)
     assert layer.world().markers == ()
+
+
+def _marks_as_built(layer: MarkerLayer, w: World) -> None:
+    """The layer's marks, kept per change, are those of a world built and validated from its markers."""
+    built = World(w.rotation, tuple(layer.markers()))
+    assert all(layer.vertex_mark(x) == built.vertex_mark(x) and layer.dart_marks(x) == built.dart_marks(x)
+               for x in w.vertices)
 
 
 @pytest.mark.parametrize("first, second", [
