@@ -21,7 +21,8 @@ from typing import Container
 from topomark.spec.errors import InvalidInput
 from topomark.spec.mapstate import MapDart, PartialMap
 
-__all__ = ["EDGE_POLICIES", "HYPOTHESIS_POLICIES", "PATH_POLICIES", "Policies", "bfs", "bfs_preorder", "nearest", "parents_toward", "tree_to_v0"]
+__all__ = ["EDGE_POLICIES", "HYPOTHESIS_POLICIES", "PATH_POLICIES", "Policies", "bfs", "bfs_preorder", "in_preorder",
+           "nearest", "open_ends_beyond", "parents_toward", "tree_to_v0"]
 
 EDGE_POLICIES = ("nearest", "fifo", "lifo")
 HYPOTHESIS_POLICIES = ("fifo", "lifo", "shortest")
@@ -41,28 +42,29 @@ class Policies:
     def to_json(self) -> dict[str, str]:
         return {"edge": self.edge, "hypothesis": self.hypothesis, "path": self.path}
 
-    def reach(self, S: PartialMap, root: int) -> tuple[dict[int, int], dict[int, MapDart]]:
-        """What :meth:`choose_edge` and the walk to its choice need from the robot at ``root``: :func:`bfs`'s
-        distances and parent darts — for ``nearest`` only through the first layer holding an end listed in U
-        (every vertex as close as the nearest end is reached, with bfs's parents), else the whole search (also
-        for a subclass that chooses its own way)."""
+    def next_edge(self, S: PartialMap, root: int) -> tuple[MapDart, dict[int, MapDart]]:
+        """Remove the next e from U (:meth:`choose_edge`, the robot at ``root``) and return it with the parent
+        darts of :func:`bfs` from ``root`` that lead to its end.  For ``nearest`` the search stops after the
+        first layer holding an end listed in U: e is the first entry of U with an end in that layer (the same
+        choice and parents as a whole search); other policies, and a subclass that chooses its own way, search
+        the whole map."""
         if self.edge == "nearest" and type(self).choose_edge is Policies.choose_edge:
-            _, dist, parent = _layers(S, root, {v for v, _ in S.unexplored})
-            return dist, parent
+            U = S.unexplored
+            found, _, parent = _layers(S, root, {v for v, _ in U})
+            ends = set(found)
+            return U.pop(next(k for k, (v, _) in enumerate(U) if v in ends)), parent
         dist, _, parent = bfs(S, root)
-        return dist, parent
+        return self.choose_edge(S, dist), parent
 
     def choose_edge(self, S: PartialMap, dist: dict[int, int]) -> MapDart:
-        """Remove and return the next e from U; ``dist`` holds distances in S from the robot, for ``nearest``
-        at least to every vertex as close as the nearest end listed in U (:meth:`reach`)."""
+        """Remove and return the next e from U; ``dist`` holds distances in S from the robot."""
         U = S.unexplored
         if self.edge == "fifo":
             k = 0
         elif self.edge == "lifo":
             k = len(U) - 1
-        else:  # the closest known end, the first listed among equals (an end not reached is farther)
-            far = len(dist)
-            ds = [dist.get(v, far) for v, _ in U]
+        else:  # the closest known end, the first listed among equals
+            ds = [dist[v] for v, _ in U]
             k = ds.index(min(ds))
         return U.pop(k)
 
@@ -154,6 +156,21 @@ def parents_toward(S: PartialMap, root: int, target: int) -> dict[int, MapDart]:
                 parent[t[0]] = (v, i)
                 todo.append(t[0])
     return parent
+
+
+def open_ends_beyond(S: PartialMap, vk: int) -> set[int]:
+    """The ends listed in U other than ``vk`` and its neighbours in S: the known vertices a new edge from
+    ``vk`` could reach (not v_k, S has no self-loop; not a neighbour, S has no multi-edge)."""
+    near = {vk} | {t[0] for t in S.links(vk) if t is not None}
+    return {v for v, _ in S.unexplored if v not in near}
+
+
+def in_preorder(S: PartialMap, root: int, chosen: set[int]) -> list[int]:
+    """The vertices of ``chosen`` in :func:`bfs_preorder` from ``root`` (S is connected, so fewer than two
+    need no search)."""
+    if len(chosen) < 2:
+        return list(chosen)
+    return [v for v in bfs_preorder(S, root) if v in chosen]
 
 
 def bfs_preorder(S: PartialMap, root: int) -> list[int]:

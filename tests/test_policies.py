@@ -12,7 +12,8 @@ import pytest
 
 from topomark.reference import generators
 from topomark.reference.explorers.edge_info import matching_darts
-from topomark.reference.policies import Policies, bfs, parents_toward
+from topomark.reference.policies import (Policies, bfs, bfs_preorder, in_preorder, open_ends_beyond,
+                                         parents_toward)
 from topomark.spec.mapstate import PartialMap
 from topomark.spec.signature import Signature, signature_at
 from topomark.spec.world import DartMark
@@ -58,7 +59,7 @@ def maps():
 
 
 @pytest.mark.parametrize("edge", ["nearest", "fifo", "lifo"])
-def test_reach_chooses_and_walks_as_a_whole_search(edge):
+def test_next_edge_chooses_and_walks_as_a_whole_search(edge):
     policy, runs = Policies(edge=edge), 0
     for S, rng in maps():
         if not S.unexplored:
@@ -66,24 +67,32 @@ def test_reach_chooses_and_walks_as_a_whole_search(edge):
         root = rng.randrange(S.n)
         dist, _, parent = bfs(S, root)
         whole = list(S.unexplored)
-        S.unexplored[:] = whole
         expected = policy.choose_edge(S, dist)
         S.unexplored[:] = whole
-        some_dist, some_parent = policy.reach(S, root)
-        assert policy.choose_edge(S, some_dist) == expected
+        edge_, some_parent = policy.next_edge(S, root)
+        assert edge_ == expected and S.unexplored == [d for d in whole if d != expected]
         x = expected[0]
         while x != root:  # the walk to the chosen end uses bfs's parents all the way
             assert some_parent[x] == parent[x]
             x = parent[x][0]
-        assert all(dist[v] == d for v, d in some_dist.items())
         runs += 1
     assert runs > 20
 
 
-def test_reach_searches_less_than_a_whole_search_when_an_end_is_near():
+def test_next_edge_searches_no_further_than_the_nearest_end():
     S, _ = next(maps())
     root = S.unexplored[0][0]
-    assert Policies().reach(S, root) == ({root: 0}, {})
+    first = S.unexplored[0]
+    assert Policies().next_edge(S, root) == (first, {})
+
+
+def test_candidates_in_preorder_are_the_preorder_filtered():
+    for S, rng in maps():
+        root = rng.randrange(S.n)
+        chosen = set(rng.sample(range(S.n), rng.randint(0, min(4, S.n))))
+        assert in_preorder(S, root, chosen) == [v for v in bfs_preorder(S, root) if v in chosen]
+        near = {root} | {t[0] for t in S.links(root) if t is not None}
+        assert open_ends_beyond(S, root) == {v for v, _ in S.unexplored} - near
 
 
 def test_parents_toward_are_the_whole_searchs_parents_on_the_path():

@@ -78,7 +78,7 @@ from topomark.spec.kit import MarkerOp
 from topomark.spec.mapstate import MapDart, PartialMap
 from topomark.spec.signature import Signature, signature_at
 
-from ..policies import bfs_preorder, parents_toward
+from ..policies import in_preorder, open_ends_beyond, parents_toward
 from .marker_walk import MarkerStep, MarkerWalk
 
 __all__ = ["marks_key", "FootprintSearch", "EdgeFootprints", "VertexEdgeFootprints", "DoubleMarkedEdges"]
@@ -171,12 +171,8 @@ class FootprintSearch(MarkerWalk):
     def candidates(self, vk: int, key: tuple[int, ...], degree: int) -> list[int]:
         """Known vertices that could be v_u, in the preorder of a breadth-first tree of S rooted at v_k."""
         M = self.M
-        near = {vk} | {t[0] for t in M.links(vk) if t is not None}
-        eligible = {v for v, _ in M.unexplored if v not in near}
-        eligible = {v for v in eligible if M.degree(v) == degree and map_key(M, v) == key}
-        if len(eligible) < 2:  # S is connected: the tree's order matters only between two or more
-            return list(eligible)
-        return [v for v in bfs_preorder(M, vk) if v in eligible]
+        return in_preorder(M, vk, {v for v in open_ends_beyond(M, vk)
+                                   if M.degree(v) == degree and map_key(M, v) == key})
 
     def walk_looking(self, target: int, looked: set[int]) -> tuple[int, int, int] | None:
         """Walk a shortest path of S to ``target``, sensing every vertex entered; at the first one showing a

@@ -137,8 +137,8 @@ class MarkerWalk:
 
     def step(self) -> MarkerStep:
         """One iteration: remove e = (v_k, v_u) from U, walk S to v_k, follow e, then :meth:`arrive`."""
-        dist, parent = self.edge_policy.reach(self.M, self.position[0])
-        it = self.step_type(len(self.iterations) + 1, self.edge_policy.choose_edge(self.M, dist))
+        edge, parent = self.edge_policy.next_edge(self.M, self.position[0])
+        it = self.step_type(len(self.iterations) + 1, edge)
         self.travel_to(it.edge[0], parent)
         self.depart(it)
         it.signature = self.leave(it.edge, "new")

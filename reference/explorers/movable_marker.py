@@ -86,7 +86,7 @@ from topomark.spec.kit import MarkerOp
 from topomark.spec.mapstate import MapDart, PartialMap
 from topomark.spec.signature import Signature
 
-from ..policies import Policies, bfs, bfs_preorder, nearest
+from ..policies import Policies, in_preorder, nearest, open_ends_beyond
 from ..robot import Robot
 
 __all__ = ["MarkerIteration", "MovableMarkerExplorer", "DirectionalMovableMarkerExplorer"]
@@ -148,8 +148,8 @@ class MovableMarkerExplorer:
 
     def step(self) -> MarkerIteration:
         """One step of L148: take e from U, follow it, resolve v_u with the marker, augment S."""
-        dist, _, parent = bfs(self.S, self.position[0])
-        it = MarkerIteration(len(self.iterations) + 1, self.policies.choose_edge(self.S, dist))
+        edge, parent = self.policies.next_edge(self.S, self.position[0])
+        it = MarkerIteration(len(self.iterations) + 1, edge)
         vk, i = it.edge
         self.walk(self.path(parent, vk), "travel")
         it.signature = sig = self.robot.move((i - self.position[1]) % self.S.degree(vk), "new")
@@ -178,9 +178,7 @@ class MovableMarkerExplorer:
     def candidates(self, vk: int, degree: int) -> list[int]:
         """The known vertices that could be v_u, in the preorder of a breadth-first tree of S rooted at v_k."""
         S = self.S
-        near = {vk} | {t[0] for t in S.links(vk) if t is not None}
-        open_at = {v for v, _ in S.unexplored}
-        return [v for v in bfs_preorder(S, vk) if v not in near and v in open_at and S.degree(v) == degree]
+        return in_preorder(S, vk, {v for v in open_ends_beyond(S, vk) if S.degree(v) == degree})
 
     def search(self, candidates: list[int]) -> tuple[int, Signature] | None:
         """Visit the candidates until the marker is seen; where (the robot stands there) and what it sensed."""
