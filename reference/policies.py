@@ -146,15 +146,23 @@ def parents_toward(S: PartialMap, root: int, target: int) -> dict[int, MapDart]:
     memo = getattr(S, "_bfs_memo", None)
     if memo is not None and memo[0] == (len(S.journal), root):
         return memo[1][2]
+    return _parents_until(S, root, {target})
+
+
+def _parents_until(S: PartialMap, root: int, wanted: set[int]) -> dict[int, MapDart]:
+    """:func:`bfs`'s queue from ``root``, stopped once it has met every vertex of ``wanted`` (or S is exhausted):
+    the parent dart of each vertex met, bfs's (the queue meets them in the same order)."""
     seen, parent, todo = {root}, {}, deque([root])
+    left = len(wanted - seen)
     links = S.links
-    while todo and target not in seen:  # bfs's queue, stopped when it meets the target
+    while todo and left:
         v = todo.popleft()
         for i, t in enumerate(links(v)):
             if t is not None and t[0] not in seen:
                 seen.add(t[0])
                 parent[t[0]] = (v, i)
                 todo.append(t[0])
+                left -= t[0] in wanted
     return parent
 
 
@@ -166,11 +174,20 @@ def open_ends_beyond(S: PartialMap, vk: int) -> set[int]:
 
 
 def in_preorder(S: PartialMap, root: int, chosen: set[int]) -> list[int]:
-    """The vertices of ``chosen`` in :func:`bfs_preorder` from ``root`` (S is connected, so fewer than two
-    need no search)."""
+    """The vertices of ``chosen`` in :func:`bfs_preorder` from ``root``: a vertex's place in that preorder is its
+    path's exits from the root, compared as sequences (children go by exit; an ancestor, a prefix, first), so
+    bfs's queue need only run until it has met them all (S is connected: fewer than two need no search)."""
     if len(chosen) < 2:
         return list(chosen)
-    return [v for v in bfs_preorder(S, root) if v in chosen]
+    parent = _parents_until(S, root, chosen)
+
+    def exits_from_root(v: int) -> list[int]:  # preorder is the order of these, compared as sequences
+        path = []
+        while v != root:
+            v, i = parent[v]
+            path.append(i)
+        return path[::-1]
+    return sorted(chosen, key=exits_from_root)
 
 
 def bfs_preorder(S: PartialMap, root: int) -> list[int]:

@@ -165,9 +165,10 @@ class EdgeInfoFilter(FootprintSearch):
         found = super().candidates(vk, key, degree)
         if not found:
             return found
-        exits: dict[int, list[int]] = {}
+        exits: dict[int, list[int]] = {w: [] for w in found}  # each candidate's entries listed in U
         for v, j in self.M.unexplored:
-            exits.setdefault(v, []).append(j)
+            if v in exits:
+                exits[v].append(j)
         return [w for w in found if matching_darts(self.M, w, self._sensed, exits[w])]
 
     def drop_on_entry(self, it: MarkerStep, count: int) -> None:
