@@ -163,7 +163,8 @@ def _changed_places(a: World, b: World) -> set[str] | None:
     out: set[str] = set()
     for da, db in ((a._vmarks, b._vmarks), (a._dmarks, b._dmarks),
                    (getattr(a, "thread_marks", None) or {}, getattr(b, "thread_marks", None) or {})):
-        out.update(x for x, _ in da.items() ^ db.items())
+        # a place's marks carried over unchanged are the same object in both (is): compared only otherwise
+        out.update(x for x in da.keys() | db.keys() if da.get(x) is not db.get(x) and da.get(x) != db.get(x))
     return out
 
 

@@ -239,3 +239,38 @@ def test_detached_map_vertex():
 def test_empty_map():
     v = check_I1(PartialMap(), WORLD, ((0, 0), ("a", 0)))
     assert_violation(v, "I-1", where="S", found="an empty map")
+
+
+def test_changed_places_are_the_places_whose_marks_differ():
+    """_changed_places (the checker's rebase after a drop) against a place-by-place comparison, over a run of
+    random drops and pick-ups on one layer (each snapshot shares the unchanged places' marks with the last)."""
+    import random
+
+    from topomark.reference.generators import lattice_hole
+    from topomark.spec.invariants import _changed_places
+    from topomark.spec.markerlayer import MarkerLayer
+
+    base = World(lattice_hole(3, 4, seed=2).rotation)
+    layer, rng, changed = MarkerLayer(base), random.Random(3), 0
+    before = layer.world()
+    for _ in range(200):
+        v = rng.choice(base.vertices)
+        if rng.random() < 0.3 and layer.vertex_mark(v):
+            layer.pick_up_vertex(v, 1)
+        elif rng.random() < 0.5:
+            layer.drop_vertex(v, 1, None if layer.vertex_mark(v) is None else layer.vertex_mark(v).head)
+        elif layer.dart_marks(v) and rng.random() < 0.5:
+            layer.pick_up_edge(v, layer.dart_marks(v)[0].exit, 1)
+        else:
+            exit_ = rng.randrange(base.degree(v))
+            same = [dm.end for dm in layer.dart_marks(v) if dm.exit == exit_]
+            layer.drop_edge(v, exit_, 1, same[0] if same else rng.choice((None, "H", "T")))
+        after = layer.world()
+        differ = {x for x in base.vertices if (before.vertex_mark(x), before.dart_marks(x))
+                  != (after.vertex_mark(x), after.dart_marks(x))}
+        assert _changed_places(before, after) == differ
+        changed += len(differ)
+        before = after
+    assert changed > 200
+    rebuilt = World(base.rotation, after.markers)  # equal marks in other objects: not a change
+    assert _changed_places(after, rebuilt) == set()
