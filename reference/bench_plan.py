@@ -284,8 +284,10 @@ def resolve_options(options: str, world: World, algorithm: str) -> dict:
     return out
 
 
+@functools.lru_cache(maxsize=8)
 def world_for(family: str, size: int, seed: int) -> World:
-    """The world of (family, size, seed), with a start drawn from the seed."""
+    """The world of (family, size, seed), with a start drawn from the seed.  Kept for the next runs (a sweep
+    runs every algorithm on one world in turn; a World is never changed: a run's markers lie in its own layer)."""
     fam = FAMILIES[family]
     world = fam.build(size, seed)
     rng = random.Random(_seed(family + "/start", size, seed))

@@ -33,6 +33,30 @@ def test_worlds_are_fixed_by_seed_and_shared_by_every_algorithm_of_a_row():
     assert len({frozenset(v) for v in by_alg.values()}) == 1 and len(by_alg["basic"]) == 4
 
 
+def test_a_kept_world_is_unchanged_by_every_algorithm_run_on_it():
+    """world_for keeps its last worlds for the next runs of a sweep: no run may change one (rotation, markers,
+    start), whatever it drops, lays or places as a lighthouse."""
+    import copy
+    import json
+    from topomark.reference.explore import explore
+    names = [a["name"] for a in json.loads(_algorithms_json())]
+    w = bench.world_for("complete-hole", 24, 1)
+    before = (copy.deepcopy(w.rotation), w.markers, w.start, w.n, w.m)
+    for name in names:
+        explore(w, name, options={"cue-n": w.n} if name == "model-tree" else None, record=False)
+        assert (w.rotation, w.markers, w.start, w.n, w.m) == before, name
+    assert bench.world_for("complete-hole", 24, 1) is w and len(names) > 30
+
+
+def _algorithms_json() -> str:
+    import contextlib
+    import io
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        assert main(["algorithms", "--json"]) == 0
+    return out.getvalue()
+
+
 def test_plan_covers_every_table_and_caps_the_quartic_row():
     runs = bench.plan("tables", graphs=30, heavy_graphs=2, heavy_max_size=40)
     keys = {(r.family, r.algorithm) for r in runs}
