@@ -17,7 +17,7 @@ from topomark.spec.errors import CheckFailure, InvalidInput, OutOfMarkers, Viola
 from topomark.spec.kit import Kit, MarkerOp, ThreadOp
 from topomark.spec.marker import VertexMarker
 from topomark.spec.markerlayer import MarkerLayer, apply_op
-from topomark.spec.robot import State, sense, step
+from topomark.spec.robot import State, step
 from topomark.spec.signature import Signature
 from topomark.spec.world import World
 
@@ -94,7 +94,7 @@ class Simulator:
                                              "a move the thread allows", f"motion {motion}", str(exc))) from None
         self.cost += 1
         self.by_purpose[purpose] += 1
-        sig = sense(self.layer, self.state)
+        sig = self.layer.sensed(self.state)
         if self.listener is not None:
             self.listener(motion, purpose, sig, self.state)
         if rewound:
@@ -117,13 +117,13 @@ class Simulator:
 
     def _log(self, op: MarkerOp | ThreadOp) -> None:
         self.operations[op.op if isinstance(op, ThreadOp) else "pick_up" if op.pick_up else "drop"] += 1
-        event = {"step": self.cost, **op.to_json(), "signature": str(sense(self.layer, self.state))}
+        event = {"step": self.cost, **op.to_json(), "signature": str(self.layer.sensed(self.state))}
         self.events.append(event)
         if self.op_listener is not None:
             self.op_listener(event)
 
     def _sense(self) -> Signature:
-        return sense(self.layer, self.state)
+        return self.layer.sensed(self.state)
 
     def operate(self, op: MarkerOp | ThreadOp) -> None:
         """Carry out a marker or thread operation, gated by the kit; a refused one is the explorer's fault."""

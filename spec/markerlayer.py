@@ -52,6 +52,7 @@ from typing import Iterator
 from .errors import InvalidInput
 from .kit import MarkerOp, ThreadOp
 from .marker import EdgeMarker, Marker, VertexMarker
+from .signature import Signature, signature_at
 from .thread import ThreadedWorld, ThreadMark, ThreadState
 from .world import DartMark, VertexMark, World
 
@@ -68,7 +69,7 @@ class MarkerLayer:
     """Mutable markers over ``world``'s rotation; starts with the world's own markers."""
 
     __slots__ = ("base", "_vmarks", "_emarks", "_dmarks", "_world", "degree", "target", "neighbour", "thread",
-                 "thread_marks", "_vobjects", "_eobjects", "lying")
+                 "thread_marks", "_vobjects", "_eobjects", "lying", "_sensed")
 
     def __init__(self, world: World):
         self.base = world
@@ -88,6 +89,7 @@ class MarkerLayer:
         self._vobjects: dict[str, VertexMarker] = {}
         self._eobjects: dict[frozenset, EdgeMarker] = {}
         self.lying = 0  # the number of markers now lying in the world (the sum of the counts of markers())
+        self._sensed: dict[str, dict[int, Signature]] = {}  # v -> entry -> what is sensed there, until v changes
         for v in self._vmarks:
             self._place_changed(v)
         for key in self._emarks:
@@ -117,18 +119,40 @@ class MarkerLayer:
         True if it rewinds an edge; a lay beyond ``length`` edges is refused before the robot moves."""
         if self.thread.tied is None or not self.thread.held:
             return False
-        self._world = None
+        self._forget()
         try:
             return self.thread.pull(self.base, state, motion, length)
         finally:
             self.thread_marks = self.thread.marks(self.base)
+
+    def sensed(self, state: tuple[str, int]) -> Signature:
+        """What a robot in ``state`` = (vertex, entry) senses: :func:`~topomark.spec.robot.sense` of this layer,
+        kept until the marks or the thread at that vertex change (the simulator's robot senses once per move)."""
+        v, entry = state
+        at = self._sensed.get(v)
+        if at is None:
+            at = self._sensed[v] = {}
+        sig = at.get(entry)
+        if sig is None:
+            sig = at[entry] = signature_at(self, v, entry)
+        return sig
+
+    def _forget(self, *vertices: str) -> None:
+        """After a change at ``vertices`` (none named: the thread, anywhere): the world snapshot and what was
+        sensed there are stale."""
+        self._world = None
+        if vertices:
+            for v in vertices:
+                self._sensed.pop(v, None)
+        else:
+            self._sensed.clear()
 
     def _place_changed(self, place) -> None:
         """Rebuild the one :class:`Marker` at ``place`` (a vertex, or an edge's frozenset) after a change.
 
         ``_vobjects``/``_eobjects`` keep the order of ``_vmarks``/``_emarks`` (a count change keeps a place's
         position, a place emptied and marked again goes last, as in those dicts)."""
-        self._world = None
+        self._forget(*([place] if isinstance(place, str) else place))
         if isinstance(place, str):
             mark, objects = self._vmarks.get(place), self._vobjects
             obj = None if mark is None else VertexMarker(
@@ -240,7 +264,7 @@ class MarkerLayer:
 def apply_op(layer: MarkerLayer, state: tuple[str, int], op: MarkerOp | ThreadOp) -> None:
     """Carry out ``op`` by a robot in ``state`` = (vertex, entry); refusals are InvalidInput naming why."""
     if isinstance(op, ThreadOp):
-        layer._world = None
+        layer._forget()
         try:
             return layer.thread.apply(layer.base, state, op, 0)
         finally:

@@ -62,10 +62,12 @@ def test_drops_then_pick_ups_restore_the_world(data):
 
 
 def _marks_as_built(layer: MarkerLayer, w: World) -> None:
-    """The layer's marks, kept per change, are those of a world built and validated from its markers."""
+    """The layer's marks, kept per change, are those of a world built and validated from its markers; what
+    it keeps as sensed is what that world shows."""
     built = World(w.rotation, tuple(layer.markers()))
     assert all(layer.vertex_mark(x) == built.vertex_mark(x) and layer.dart_marks(x) == built.dart_marks(x)
                for x in w.vertices)
+    assert all(layer.sensed((x, e)) == sense(built, (x, e)) for x in w.vertices for e in range(w.degree(x)))
 
 
 @pytest.mark.parametrize("first, second", [
@@ -144,3 +146,28 @@ def test_the_layers_snapshot_is_the_validated_world(algorithm):
     finally:
         ex.Simulator = real
     assert checked and all(checked)
+
+
+@pytest.mark.parametrize("algorithm", ["case-2", "case-5-v2", "dudek", "thread-explore", "thread-knots",
+                                       "thread-carried"])
+def test_what_the_robot_senses_is_what_the_layer_shows_now(algorithm):
+    """The layer keeps what was sensed per vertex until its marks or the thread change (MarkerLayer.sensed):
+    after every move of a whole run — drops, pick-ups, a thread laid and rewound — the signature the robot
+    got is the one computed afresh from the layer."""
+    from topomark.reference import generators
+    from topomark.reference.explore import explore
+    from topomark.spec.signature import signature_at
+    checked = []
+
+    class Watch(Simulator):
+        def _move(self, motion, purpose):
+            sig = super()._move(motion, purpose)
+            checked.append(sig == signature_at(self.layer, *self.state))
+            return sig
+    import topomark.reference.explore as ex
+    real, ex.Simulator = ex.Simulator, Watch
+    try:
+        assert explore(generators.complete_hole(6, 0.2, 3), algorithm, record=False).outcome == "correct"
+    finally:
+        ex.Simulator = real
+    assert len(checked) > 20 and all(checked)
