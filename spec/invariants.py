@@ -200,6 +200,7 @@ class IncrementalInvariants:
         self.pos = 0
         self._anchor = (v0, x0, (k0 - i0))
         self.S = S
+        self._passed: tuple[int, World | None, set[int]] = (-1, None, set())  # _marks_once's (S, world, passed)
 
     def _map_vertex(self, v: int, x: str, r: int) -> Violation | None:
         d = self.degrees.get(v)
@@ -212,7 +213,20 @@ class IncrementalInvariants:
         self.f[v], self.r[v], self.inv[x] = x, r % d, v
         self.open.update((x, k) for k in range(d))
         self.open_map.update((v, i) for i in range(d))
-        return self._marks(v)
+        return self._marks_once(v)
+
+    def _marks_once(self, v: int) -> Violation | None:
+        """:meth:`_marks`, skipped for a vertex that passed it since S (its journal's length) and the world
+        last changed: the same S and world give the same verdict."""
+        length, world, passed = self._passed
+        if length != len(self.S.journal) or world is not self.world:
+            self._passed = length, world, passed = len(self.S.journal), self.world, set()
+        if v in passed:
+            return None
+        bad = self._marks(v)
+        if bad is None:
+            passed.add(v)
+        return bad
 
     def _marks(self, v: int) -> Violation | None:
         from .isomorphism import _describe_marks, _marks_at
@@ -236,7 +250,7 @@ class IncrementalInvariants:
         changed = _changed_places(self.world, world)
         self.world = world
         for v in self.f if changed is None else [self.inv[x] for x in changed if x in self.inv]:
-            bad = self._marks(v)
+            bad = self._marks_once(v)
             if bad is not None:
                 return bad
         return None
@@ -275,7 +289,7 @@ class IncrementalInvariants:
             elif op[0] == "edge":
                 bad = self._edge(op[1], op[2])
             elif op[1] in self.f:
-                bad = self._marks(op[1])
+                bad = self._marks_once(op[1])
             if bad is not None:
                 return bad
         if len(self.f) != S.n:

@@ -182,6 +182,21 @@ def test_incremental_I2_agrees_with_the_full_check(fault):
     assert quick.update() is None and check_invariants(S, WORLD, anchor(S)) is None
 
 
+def test_incremental_marks_are_checked_again_after_S_or_the_world_changes():
+    """A vertex whose marks passed is not re-checked while S and the world stay as they were; a mark added to
+    S, or a marker dropped in the world, there is checked (and here fails)."""
+    S = three_edges()
+    quick = IncrementalInvariants(S, WORLD, anchor(S))
+    assert quick.update() is None and quick.rebase(WORLD) is None
+    S.mark_vertex(3)                  # c has no marker
+    assert_violation(quick.update(), "I-1", where="map vertex 3", found="1 vertex marker(s)")
+    S = three_edges()
+    quick = IncrementalInvariants(S, WORLD, anchor(S))
+    assert quick.update() is None
+    dropped = WORLD.with_markers(WORLD.markers + (VertexMarker("c"),))
+    assert_violation(quick.rebase(dropped), "I-1", where="map vertex 3", expected="1 vertex marker(s)")
+
+
 # -- I-1 ---------------------------------------------------------------------------
 def test_wrongly_joined_edge():
     """The edge a-d is joined to b (map vertex 1) instead of a new vertex."""
