@@ -164,7 +164,8 @@ def _changed_places(a: World, b: World) -> set[str] | None:
     for da, db in ((a._vmarks, b._vmarks), (a._dmarks, b._dmarks),
                    (getattr(a, "thread_marks", None) or {}, getattr(b, "thread_marks", None) or {})):
         # a place's marks carried over unchanged are the same object in both (is): compared only otherwise
-        out.update(x for x in da.keys() | db.keys() if da.get(x) is not db.get(x) and da.get(x) != db.get(x))
+        out.update(x for x, mark in db.items() if da.get(x) is not mark and da.get(x) != mark)
+        out.update(da.keys() - db.keys())
     return out
 
 

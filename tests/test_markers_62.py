@@ -148,3 +148,23 @@ def test_extension_2_needs_rule_3_the_naive_extension_maps_k4_minus_an_edge_wron
 def test_the_extensions_fail_when_short_of_markers(name):
     out = explore(world(WORLDS[0]), name, options={"markers": 2})
     assert out.outcome == "failed" and "out of markers" in out.reason
+
+
+@pytest.mark.parametrize("algorithm", ["case-1a", "case-1b", "case-2-edgeinfo", "case-4", "case-5-v2",
+                                       "case-3a", "extension-2"])
+def test_the_signatures_a_marker_walk_keeps_are_what_its_map_shows(algorithm, monkeypatch):
+    """MarkerWalk.map_signature keeps M's signatures until M records a mark at the vertex: every one it returns
+    over a whole run is the one computed afresh from M."""
+    from topomark.reference import generators
+    from topomark.reference.explore import explore
+    from topomark.reference.explorers.marker_walk import MarkerWalk
+    from topomark.spec.signature import signature_at
+    kept, checked = MarkerWalk.map_signature, []
+
+    def map_signature(self, v, entry):
+        sig = kept(self, v, entry)
+        checked.append(sig == signature_at(self.M, v, entry))
+        return sig
+    monkeypatch.setattr(MarkerWalk, "map_signature", map_signature)
+    assert explore(generators.complete_hole(7, 0.2, 3), algorithm, record=False).outcome == "correct"
+    assert len(checked) > 10 and all(checked)

@@ -182,7 +182,7 @@ class FootprintSearch(MarkerWalk):
             sig = self.leave(dart, "validation")
             v, entry = self.position
             looked.add(v)
-            extra = set(sig.edges) - set(signature_at(self.M, v, entry).edges)
+            extra = set(sig.edges) - set(self.map_signature(v, entry).edges)
             if extra:
                 (p, count, _), = extra
                 j = (entry + p) % self.M.degree(v)

@@ -87,6 +87,8 @@ class MarkerWalk:
         self.iterations: list[MarkerStep] = []
         self.dropped = 0  # markers dropped so far
         self._finished = False
+        self._shown: dict[int, dict[int, Signature]] = {}  # map_signature's: v -> entry -> signature
+        self._shown_upto = 0  # how much of M's journal _shown has taken in
 
     # -- the explorer contract ---------------------------------------------------
     def start(self) -> None:
@@ -240,10 +242,26 @@ class MarkerWalk:
             return False
         return True
 
+    def map_signature(self, v: int, entry: int) -> Signature:
+        """What M says a robot entering ``v`` by ``entry`` senses (:func:`signature_at` of M), kept until M's
+        journal records a mark at ``v`` (M only grows, and a vertex's signature changes only with its marks)."""
+        journal, shown = self.M.journal, self._shown
+        for k in range(self._shown_upto, len(journal)):
+            if journal[k][0] == "mark":
+                shown.pop(journal[k][1], None)
+        self._shown_upto = len(journal)
+        at = shown.get(v)
+        if at is None:
+            at = shown[v] = {}
+        sig = at.get(entry)
+        if sig is None:
+            sig = at[entry] = signature_at(self.M, v, entry)
+        return sig
+
     def record_marks(self) -> None:
         """Record at the believed position the marks the robot senses there that S does not show yet."""
         v, entry = self.position
-        sensed, known = self.robot.sense(), signature_at(self.M, v, entry)
+        sensed, known = self.robot.sense(), self.map_signature(v, entry)
         if sensed == known:
             return
         have = {x for x, _, _ in known.edges}
