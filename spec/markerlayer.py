@@ -52,7 +52,7 @@ from typing import Iterator
 from .errors import InvalidInput
 from .kit import MarkerOp, ThreadOp
 from .marker import EdgeMarker, Marker, VertexMarker
-from .signature import Signature, signature_at
+from .signature import KeptSignatures, Signature
 from .thread import ThreadedWorld, ThreadMark, ThreadState
 from .world import DartMark, VertexMark, World
 
@@ -89,7 +89,7 @@ class MarkerLayer:
         self._vobjects: dict[str, VertexMarker] = {}
         self._eobjects: dict[frozenset, EdgeMarker] = {}
         self.lying = 0  # the number of markers now lying in the world (the sum of the counts of markers())
-        self._sensed: dict[str, dict[int, Signature]] = {}  # v -> entry -> what is sensed there, until v changes
+        self._sensed = KeptSignatures()  # what is sensed at each vertex, until it changes there
         for v in self._vmarks:
             self._place_changed(v)
         for key in self._emarks:
@@ -128,24 +128,13 @@ class MarkerLayer:
     def sensed(self, state: tuple[str, int]) -> Signature:
         """What a robot in ``state`` = (vertex, entry) senses: :func:`~topomark.spec.robot.sense` of this layer,
         kept until the marks or the thread at that vertex change (the simulator's robot senses once per move)."""
-        v, entry = state
-        at = self._sensed.get(v)
-        if at is None:
-            at = self._sensed[v] = {}
-        sig = at.get(entry)
-        if sig is None:
-            sig = at[entry] = signature_at(self, v, entry)
-        return sig
+        return self._sensed.get(self, state[0], state[1])
 
     def _forget(self, *vertices: str) -> None:
         """After a change at ``vertices`` (none named: the thread, anywhere): the world snapshot and what was
         sensed there are stale."""
         self._world = None
-        if vertices:
-            for v in vertices:
-                self._sensed.pop(v, None)
-        else:
-            self._sensed.clear()
+        self._sensed.forget(vertices or None)
 
     def _place_changed(self, place) -> None:
         """Rebuild the one :class:`Marker` at ``place`` (a vertex, or an edge's frozenset) after a change.

@@ -49,13 +49,13 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
-from typing import Protocol
+from typing import Any, Callable, Protocol
 
 from .errors import InvalidInput, Violation
 from .thread import ThreadMark, shifted
 from .world import MAX_DEGREE, DartMark, VertexMark
 
-__all__ = ["Signature", "signature_at", "depends_on_entry", "back_link_table", "Marked"]
+__all__ = ["Signature", "signature_at", "depends_on_entry", "KeptSignatures", "reads_as", "back_link_table", "Marked"]
 
 
 class Marked(Protocol):
@@ -247,6 +247,49 @@ def depends_on_entry(g: Marked, v) -> bool:
     tm = thread_marks.get(v) if thread_marks else None
     return ((mark is not None and mark.head is not None) or bool(g.dart_marks(v))
             or (tm is not None and (tm.head is not None or bool(tm.edges))))
+
+
+class KeptSignatures:
+    """:func:`signature_at` of one world or map, kept per vertex and entry until its owner :meth:`forget`\ s the
+    vertex (its marks or thread changed) — for a caller that asks the same places again and again."""
+
+    __slots__ = ("_at",)
+
+    def __init__(self) -> None:
+        self._at: dict = {}  # v -> entry -> Signature
+
+    def get(self, g: Marked, v, entry: int) -> Signature:
+        at = self._at.get(v)
+        if at is None:
+            at = self._at[v] = {}
+        sig = at.get(entry)
+        if sig is None:
+            sig = at[entry] = signature_at(g, v, entry)
+        return sig
+
+    def forget(self, vertices=None) -> None:
+        """Drop what was kept at ``vertices`` (None: everywhere)."""
+        if vertices is None:
+            self._at.clear()
+        else:
+            for v in vertices:
+                self._at.pop(v, None)
+
+
+def reads_as(g: Marked, sig: Signature) -> Callable[[Any, int], bool]:
+    """``reads(v, entry)``: whether a robot entering ``v`` by ``entry`` senses ``sig`` in ``g`` — asked of every
+    unexplored dart; a vertex whose signature is the same from every entry (:func:`depends_on_entry`) is
+    compared once."""
+    same: dict = {}
+
+    def reads(v, entry: int) -> bool:
+        match = same.get(v)
+        if match is None:
+            match = g.degree(v) == sig.degree and signature_at(g, v, entry) == sig
+            if not depends_on_entry(g, v):
+                same[v] = match
+        return match
+    return reads
 
 
 def back_link_table(g: Marked, v, where: str) -> tuple[dict[Signature, int], Violation | None]:

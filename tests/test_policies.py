@@ -133,3 +133,20 @@ def test_matching_darts_are_the_entries_that_read_what_was_sensed():
             assert matching_darts(S, w, sensed, exits) == expected
             hits += bool(expected)
     assert hits > 50
+
+
+def test_reads_as_is_the_signature_comparison_asked_per_dart():
+    """spec.signature.reads_as (the hypotheses' filter) against signature_at compared afresh at every dart."""
+    from topomark.spec.signature import reads_as
+    hits = 0
+    for S, rng in maps():
+        S = marked(S, rng)
+        v = rng.randrange(S.n)
+        sensed = signature_at(S, v, rng.randrange(S.degree(v)))
+        reads = reads_as(S, sensed)
+        for w in S.vertices:
+            for j in range(S.degree(w)):
+                expected = S.degree(w) == sensed.degree and signature_at(S, w, j) == sensed
+                assert reads(w, j) == expected
+                hits += expected
+    assert hits > 20

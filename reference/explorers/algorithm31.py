@@ -48,7 +48,7 @@ from typing import Callable
 
 from topomark.spec.errors import CheckFailure, Violation
 from topomark.spec.mapstate import MapDart, PartialMap
-from topomark.spec.signature import Signature, depends_on_entry, signature_at
+from topomark.spec.signature import Signature, reads_as, signature_at
 
 from ..policies import Policies, bfs, tree_to_v0
 from ..robot import Robot
@@ -242,16 +242,11 @@ class LighthouseExplorer:
         found, lengths = [], []
         toward: dict[int, int] | None = None
         tails: dict[int, tuple] = {}
-        shows: dict[int, bool] = {it.edge[0]: False}  # per vertex whose signature is the same from every entry
+        reads = reads_as(self.P, sig)  # P: S with a virtual v0
         make = self.hypothesis_type
         for dart in self.S.unexplored:
             v, i = dart
-            match = shows.get(v)
-            if match is None:
-                match = self.S.degree(v) == sig.degree and signature_at(self.P, v, i) == sig  # P: a virtual v0
-                if not depends_on_entry(self.P, v):
-                    shows[v] = match
-            if not match:
+            if v == it.edge[0] or not reads(v, i):
                 continue
             if toward is None:
                 toward = tree_to_v0(self.S, self.policies)

@@ -35,7 +35,7 @@ from __future__ import annotations
 
 from topomark.spec.errors import AlgorithmFailed
 from topomark.spec.mapstate import MapDart, PartialMap
-from topomark.spec.signature import Signature, depends_on_entry, signature_at
+from topomark.spec.signature import Signature, reads_as, signature_at
 
 from .algorithm31 import Hypothesis, walk_hypothesis
 from .marker_walk import MarkerStep
@@ -96,14 +96,10 @@ class PhaseTwo:
         """H: unexplored darts (v_k' ≠ v_k) whose known end, entered by them, shows ``sig`` (same signature:
         marks and degree, Algorithm 6.4 lines 17–18, Algorithm 6.5 lines 15–16, 35–36)."""
         found, paths = [], {}  # v_k' -> (its lighthouse path, the walk along it)
-        same: dict[int, bool | None] = {}  # v -> whether it shows sig from every entry; None: ask per entry
+        reads = reads_as(self.M, sig)
         for dart in self.M.unexplored:
             v, i = dart
-            if v == it.edge[0] or self.M.degree(v) != sig.degree:
-                continue
-            if v not in same:
-                same[v] = None if depends_on_entry(self.M, v) else signature_at(self.M, v, i) == sig
-            if not (same[v] if same[v] is not None else signature_at(self.M, v, i) == sig):
+            if v == it.edge[0] or not reads(v, i):
                 continue
             if v not in paths:
                 path = self.lighthouse_path(v)

@@ -42,7 +42,7 @@ from typing import Any
 from topomark.spec.errors import AlgorithmFailed, OutOfMarkers
 from topomark.spec.kit import MarkerOp
 from topomark.spec.mapstate import MapDart, PartialMap
-from topomark.spec.signature import Signature, signature_at
+from topomark.spec.signature import KeptSignatures, Signature, signature_at
 
 from ..policies import Policies
 
@@ -87,7 +87,7 @@ class MarkerWalk:
         self.iterations: list[MarkerStep] = []
         self.dropped = 0  # markers dropped so far
         self._finished = False
-        self._shown: dict[int, dict[int, Signature]] = {}  # map_signature's: v -> entry -> signature
+        self._shown = KeptSignatures()  # map_signature's
         self._shown_upto = 0  # how much of M's journal _shown has taken in
 
     # -- the explorer contract ---------------------------------------------------
@@ -245,18 +245,10 @@ class MarkerWalk:
     def map_signature(self, v: int, entry: int) -> Signature:
         """What M says a robot entering ``v`` by ``entry`` senses (:func:`signature_at` of M), kept until M's
         journal records a mark at ``v`` (M only grows, and a vertex's signature changes only with its marks)."""
-        journal, shown = self.M.journal, self._shown
-        for k in range(self._shown_upto, len(journal)):
-            if journal[k][0] == "mark":
-                shown.pop(journal[k][1], None)
+        journal = self.M.journal
+        self._shown.forget([op[1] for op in journal[self._shown_upto:] if op[0] == "mark"])
         self._shown_upto = len(journal)
-        at = shown.get(v)
-        if at is None:
-            at = shown[v] = {}
-        sig = at.get(entry)
-        if sig is None:
-            sig = at[entry] = signature_at(self.M, v, entry)
-        return sig
+        return self._shown.get(self.M, v, entry)
 
     def record_marks(self) -> None:
         """Record at the believed position the marks the robot senses there that S does not show yet."""
