@@ -250,8 +250,8 @@ def depends_on_entry(g: Marked, v) -> bool:
 
 
 class KeptSignatures:
-    """:func:`signature_at` of one world or map, kept per vertex and entry until its owner :meth:`forget`\ s the
-    vertex (its marks or thread changed) — for a caller that asks the same places again and again."""
+    """:func:`signature_at` of one world or map, kept per vertex and entry until its owner forgets the vertex
+    (:meth:`forget`: its marks or thread changed) — for a caller that asks the same places again and again."""
 
     __slots__ = ("_at",)
 
