@@ -46,13 +46,13 @@ class Policies:
         """Remove the next e from U (:meth:`choose_edge`, the robot at ``root``) and return it with the parent
         darts of :func:`bfs` from ``root`` that lead to its end.  For ``nearest`` the search stops after the
         first layer holding an end listed in U: e is the first entry of U with an end in that layer (the same
-        choice and parents as a whole search); other policies, and a subclass that chooses its own way, search
-        the whole map."""
+        choice and parents as a whole search; U keeps its ends and answers which entry comes first, see
+        :class:`~topomark.spec.unexplored.Unexplored`); other policies, and a subclass that chooses its own way,
+        search the whole map."""
         if self.edge == "nearest" and type(self).choose_edge is Policies.choose_edge:
             U = S.unexplored
-            found, _, parent = _layers(S, root, {v for v, _ in U})
-            ends = set(found)
-            return U.pop(next(k for k, (v, _) in enumerate(U) if v in ends)), parent
+            found, _, parent = _layers(S, root, U.ends())
+            return U.pop(U.first_at(found)), parent
         dist, _, parent = bfs(S, root)
         return self.choose_edge(S, dist), parent
 
@@ -170,7 +170,7 @@ def open_ends_beyond(S: PartialMap, vk: int) -> set[int]:
     """The ends listed in U other than ``vk`` and its neighbours in S: the known vertices a new edge from
     ``vk`` could reach (not v_k, S has no self-loop; not a neighbour, S has no multi-edge)."""
     near = {vk} | {t[0] for t in S.links(vk) if t is not None}
-    return {v for v, _ in S.unexplored if v not in near}
+    return {v for v in S.unexplored.ends() if v not in near}
 
 
 def in_preorder(S: PartialMap, root: int, chosen: set[int]) -> list[int]:

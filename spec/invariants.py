@@ -36,6 +36,7 @@ from collections import Counter
 from .errors import Violation, TopomarkFault
 from .isomorphism import IsoResult, Witness, anchored
 from .mapstate import MapDart, PartialMap
+from .unexplored import Unexplored
 from .world import Dart, World
 
 __all__ = ["Anchor", "correspondence", "check_I1", "check_I2", "check_invariants", "lighthouse_anchor",
@@ -181,8 +182,13 @@ class IncrementalInvariants:
     world vertex not yet in G_s, with the same degree and marks.  I-2 is then
     a set comparison of U with the maintained preimage under φ of the
     unexplored world darts leaving G_s (U must list each exactly once); on a
-    mismatch :func:`check_I2` names the fault.  Each update costs
-    O(change + |U|) instead of O(n + m).
+    mismatch :func:`check_I2` names the fault.  U is counted from its record of
+    entries added and removed (:class:`~topomark.spec.unexplored.Unexplored`),
+    as S is from its journal, so each update costs O(change) instead of
+    O(n + m).  Like S's journal, the record is written by U's own list methods:
+    an explorer that goes round them (``list.append(U, x)``) is caught when U's
+    length disagrees, and one that also keeps the length (``list.__setitem__``)
+    only by ``check_mode="full"`` or ``"both"``, which count U whole.
 
     Equivalence with :func:`check_I1`/:func:`check_I2` on append-only maps is
     tested on every explorer run in ``tests/test_checker.py``; the final
@@ -202,6 +208,8 @@ class IncrementalInvariants:
         self._anchor = (v0, x0, (k0 - i0))
         self.S = S
         self._passed: tuple[int, World | None, set[int]] = (-1, None, set())  # _marks_once's (S, world, passed)
+        self._u = None  # the U last counted (_count_u), how much of its record was taken in, and the counts
+        self._u_seen, self._u_len, self._u_count, self._u_off = 0, 0, Counter(), set()
 
     def _map_vertex(self, v: int, x: str, r: int) -> Violation | None:
         d = self.degrees.get(v)
@@ -214,6 +222,7 @@ class IncrementalInvariants:
         self.f[v], self.r[v], self.inv[x] = x, r % d, v
         self.open.update((x, k) for k in range(d))
         self.open_map.update((v, i) for i in range(d))
+        self._recount([(v, i) for i in range(d)])
         return self._marks_once(v)
 
     def _marks_once(self, v: int) -> Violation | None:
@@ -275,6 +284,7 @@ class IncrementalInvariants:
         self.open.discard((x, k))
         self.open.discard((y, j))
         self.open_map.difference_update((a, b))
+        self._recount((a, b))
         return None
 
     def update(self, check_u: bool = True) -> Violation | None:
@@ -299,14 +309,46 @@ class IncrementalInvariants:
         return self._check_u() if check_u else None
 
     def _check_u(self) -> Violation | None:
-        U = self.S.unexplored
+        """I-2 holds iff U lists each open dart exactly once: no dart is listed a number of times other than
+        its membership of ``open_map`` (:meth:`_count_u`); else :func:`check_I2` names the fault."""
         try:
-            listed = set(U)
+            if self._count_u():
+                return None
         except TypeError:  # an entry that is not a dart at all
-            return self._diagnose_u()
-        if len(listed) == len(U) and listed == self.open_map:
-            return None  # U lists each open dart exactly once: I-2 holds
+            pass
+        self._u = None  # U is counted whole at the next look (its record may have gone round U)
         return self._diagnose_u()
+
+    def _count_u(self) -> bool:
+        """Take in U's changes since the last look (a new U object: all of it); True if no dart is off.
+
+        The count is the checker's own, from U's record of entries added and removed
+        (:attr:`~topomark.spec.unexplored.Unexplored.changes`); U's length must agree with it."""
+        U = self.S.unexplored
+        if not isinstance(U, Unexplored):  # not kept by the spec's list: count it whole
+            listed = set(U)
+            return len(listed) == len(U) and listed == self.open_map
+        if U is not self._u:
+            self._u, self._u_seen, self._u_count, self._u_off = U, len(U.changes), Counter(U), set()
+            self._u_len = len(U)
+            self._recount(list(self._u_count) + list(self.open_map))
+        else:
+            for sign, dart in U.changes[self._u_seen:]:
+                self._u_count[dart] += sign
+                self._u_len += sign
+                self._recount((dart,))
+            self._u_seen = len(U.changes)
+        return not self._u_off and self._u_len == len(U)
+
+    def _recount(self, darts) -> None:
+        """Note whether each of ``darts`` is listed in U as often as it is open (once, or never)."""
+        if self._u is None:
+            return
+        for dart in darts:
+            if self._u_count[dart] != (dart in self.open_map):
+                self._u_off.add(dart)
+            else:
+                self._u_off.discard(dart)
 
     def _diagnose_u(self) -> Violation:
         """U is not the open darts listed once: name the fault as the full predicate does."""

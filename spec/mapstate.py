@@ -6,7 +6,8 @@ degree, because the robot sensed it; each exit either leads to a known
 ``(vertex, entry)`` of S or is still *unexplored*.  U is kept as an explicit,
 ordered list of darts so that an explorer that forgets to remove an entry (or
 adds one twice) is caught by invariant I-2 (§3.4) rather than hidden by a
-derived value.
+derived value; the list keeps count of its ends and of its changes
+(:mod:`topomark.spec.unexplored`).
 
 Marks in S mirror markers in the world in exit indices: the directional
 lighthouse of §3.3 at v0 is ``mark_vertex(0, head=h)``.
@@ -30,6 +31,7 @@ from typing import Iterator
 from .errors import require
 from .marker import EdgeMarker, VertexMarker
 from .thread import Thread, ThreadedWorld, unshifted, walk_from_marks
+from .unexplored import Unexplored
 from .world import DartMark, Start, VertexMark, World
 
 __all__ = ["PartialMap", "MapDart"]
@@ -47,7 +49,17 @@ class PartialMap:
         self._vmarks: dict[int, VertexMark] = {}
         self._dmarks: dict[int, tuple[DartMark, ...]] = {}
         self.thread_marks: dict = {}  # map vertex -> spec.thread.ThreadMark (absolute exits), §6.3
-        self.unexplored: list[MapDart] = []
+        self._unexplored = Unexplored()
+
+    @property
+    def unexplored(self) -> Unexplored:
+        """U (:class:`~topomark.spec.unexplored.Unexplored`, a list).  Assigning a list makes U a copy of it;
+        assigning another map's U shares it."""
+        return self._unexplored
+
+    @unexplored.setter
+    def unexplored(self, entries) -> None:
+        self._unexplored = entries if isinstance(entries, Unexplored) else Unexplored(entries)
 
     # -- building ------------------------------------------------------------
     def add_vertex(self, degree: int) -> int:

@@ -166,6 +166,8 @@ U_FAULTS = {
     "bad vertex": lambda U: U.append((9, 0)),
     "duplicate for missing": lambda U: U.__setitem__(U.index((2, 1)), (3, 1)),
     "not a dart": lambda U: U.append([0, 0]),
+    "added past U's record": lambda U: list.append(U, (3, 1)),  # U's length then disagrees with its record
+    "removed past U's record": lambda U: list.remove(U, (2, 1)),
 }
 
 
@@ -178,7 +180,27 @@ def test_incremental_I2_agrees_with_the_full_check(fault):
     full = check_invariants(S, WORLD, anchor(S))
     assert isinstance(full, Violation) and full.check == "I-2"
     assert quick.update() == full
+    S.unexplored = three_edges().unexplored  # a new U is counted whole
+    assert quick.update() is None and check_invariants(S, WORLD, anchor(S)) is None
+    U_FAULTS[fault](S.unexplored)
+    assert quick.update() == full
     S.unexplored[:] = three_edges().unexplored
+    assert quick.update() is None and check_invariants(S, WORLD, anchor(S)) is None
+
+
+def test_incremental_I2_sees_a_new_vertex_s_exits_left_out_of_U():
+    """S gains b (map exit 1 of v0) but U is not given b's other exit: I-2 fails, the incremental check reports
+    it as the full one does (the open darts a new vertex brings are counted, not only U's changes)."""
+    S = start_map()
+    quick = IncrementalInvariants(S, WORLD, anchor(S))
+    assert quick.update() is None
+    v1 = S.add_vertex(2)
+    S.add_edge((0, 1), (v1, 1))
+    S.unexplored.remove((0, 1))
+    full = check_invariants(S, WORLD, anchor(S))
+    assert_violation(full, "I-2", found="none")
+    assert quick.update() == full
+    S.unexplored.append((v1, 0))
     assert quick.update() is None and check_invariants(S, WORLD, anchor(S)) is None
 
 
