@@ -124,16 +124,16 @@ def _layers(S: PartialMap, root: int, wanted: Container[int]) -> tuple[list[int]
     dist, parent, layer, d = {root: 0}, {}, [root], 0
     if root in wanted:
         return [root], dist, parent
-    links = S.links
+    joined = S.joined
     while layer:
         d, found, following = d + 1, [], []
         for v in layer:
-            for i, t in enumerate(links(v)):
-                if t is not None and t[0] not in dist:
-                    dist[t[0]], parent[t[0]] = d, (v, i)
-                    following.append(t[0])
-                    if t[0] in wanted:
-                        found.append(t[0])
+            for i, w in joined(v):
+                if w not in dist:
+                    dist[w], parent[w] = d, (v, i)
+                    following.append(w)
+                    if w in wanted:
+                        found.append(w)
         if found:
             return found, dist, parent
         layer = following
@@ -150,19 +150,23 @@ def parents_toward(S: PartialMap, root: int, target: int) -> dict[int, MapDart]:
 
 
 def _parents_until(S: PartialMap, root: int, wanted: set[int]) -> dict[int, MapDart]:
-    """:func:`bfs`'s queue from ``root``, stopped once it has met every vertex of ``wanted`` (or S is exhausted):
-    the parent dart of each vertex met, bfs's (the queue meets them in the same order)."""
+    """:func:`bfs`'s queue from ``root``, stopped as it meets the last vertex of ``wanted`` (or S is exhausted):
+    the parent dart of each vertex met, bfs's (the queue meets them in the same order; a vertex met has its
+    tree path's vertices met before it)."""
     seen, parent, todo = {root}, {}, deque([root])
     left = len(wanted - seen)
-    links = S.links
+    joined = S.joined
     while todo and left:
         v = todo.popleft()
-        for i, t in enumerate(links(v)):
-            if t is not None and t[0] not in seen:
-                seen.add(t[0])
-                parent[t[0]] = (v, i)
-                todo.append(t[0])
-                left -= t[0] in wanted
+        for i, w in joined(v):
+            if w not in seen:
+                seen.add(w)
+                parent[w] = (v, i)
+                todo.append(w)
+                if w in wanted:
+                    left -= 1
+                    if not left:
+                        return parent
     return parent
 
 

@@ -26,6 +26,7 @@ Examples
 
 from __future__ import annotations
 
+from bisect import insort
 from typing import Iterator
 
 from .errors import require
@@ -44,6 +45,7 @@ class PartialMap:
 
     def __init__(self) -> None:
         self._adj: list[list[MapDart | None]] = []
+        self._joined: list[list[tuple[int, int]]] = []  # per vertex: (exit, neighbour) of each explored exit
         self.journal: list[tuple] = []  # ("vertex", v, degree) | ("edge", a, b) | ("mark", v): S only grows
         self.edge_count = 0
         self._vmarks: dict[int, VertexMark] = {}
@@ -65,6 +67,7 @@ class PartialMap:
     def add_vertex(self, degree: int) -> int:
         require(degree >= 1, f"a map vertex needs degree >= 1, got {degree}")
         self._adj.append([None] * degree)
+        self._joined.append([])
         self.journal.append(("vertex", len(self._adj) - 1, degree))
         return len(self._adj) - 1
 
@@ -76,6 +79,8 @@ class PartialMap:
             require(self._adj[v][i] is None, f"dart {(v, i)} of the map is already joined")
         self._adj[a[0]][a[1]] = b
         self._adj[b[0]][b[1]] = a
+        insort(self._joined[a[0]], (a[1], b[0]))
+        insort(self._joined[b[0]], (b[1], a[0]))
         self.edge_count += 1
         self.journal.append(("edge", a, b))
 
@@ -128,6 +133,11 @@ class PartialMap:
         """
         return self._adj[v]
 
+    def joined(self, v: int) -> list[tuple[int, int]]:
+        """``(exit, neighbour)`` for each explored exit of ``v``, in index order: :meth:`links` without its
+        unexplored exits or entry indices, for the tightest loops; read it, never mutate it."""
+        return self._joined[v]
+
     def neighbour(self, dart: MapDart) -> MapDart | None:
         """The reverse dart that ``dart`` is joined to, or None if unexplored."""
         return self._adj[dart[0]][dart[1]]
@@ -161,6 +171,7 @@ class PartialMap:
     def copy(self) -> "PartialMap":
         other = PartialMap()
         other._adj = [list(row) for row in self._adj]
+        other._joined = [list(row) for row in self._joined]
         other._vmarks = dict(self._vmarks)
         other._dmarks = dict(self._dmarks)
         other.thread_marks = dict(self.thread_marks)

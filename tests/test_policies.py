@@ -150,3 +150,12 @@ def test_reads_as_is_the_signature_comparison_asked_per_dart():
                 assert reads(w, j) == expected
                 hits += expected
     assert hits > 20
+
+
+def test_joined_is_links_without_the_open_exits():
+    """The searches read S.joined(v); it must be S.links(v)'s explored exits with their neighbours, in exit
+    order, however S was built (edges added in any order) and in a copy of S."""
+    for S, _ in maps():
+        for T in (S, S.copy()):
+            for v in T.vertices:
+                assert T.joined(v) == [(i, t[0]) for i, t in enumerate(T.links(v)) if t is not None]
