@@ -9,7 +9,8 @@ O(|U|), and |U| grows to about 2m on a complete world, so O(m²) over a run:
 * which map vertices have an entry in U (the nearest-first choice of line 5, §3.3; the candidates of the §6.2
   footprint searches) — :meth:`Unexplored.ends`;
 * which entry, first in U's order, has its end in a given set (the nearest-first tie-break) —
-  :meth:`Unexplored.first_at`;
+  :meth:`Unexplored.first_at`; and which entries, in U's order, leave a few given vertices (the candidates'
+  entries of edgeINFO, §6.2.2; the hypotheses of Algorithm 3.1 and Case 5's phase II) — :meth:`Unexplored.at`;
 * does U list every open dart exactly once (I-2, the checker) — answered by the checker from
   :attr:`Unexplored.changes`, the entries added and removed, in order, which it counts for itself.
 
@@ -24,8 +25,8 @@ Examples
 >>> U = Unexplored([(0, 0), (0, 1), (0, 2)])
 >>> U.extend([(1, 1), (1, 2)]); U.pop(1)
 (0, 1)
->>> sorted(U.ends()), U.first_at({1}), U.first_at({2})
-([0, 1], 2, None)
+>>> sorted(U.ends()), U.first_at({1}), U.first_at({2}), U.at([1, 0])
+([0, 1], 2, None, [(0, 0), (0, 2), (1, 1), (1, 2)])
 >>> U.remove((0, 0)); U.remove((0, 2)); sorted(U.ends())
 [1]
 >>> U.changes[-2:]
@@ -35,9 +36,14 @@ Examples
 from __future__ import annotations
 
 from bisect import bisect_left
+from itertools import chain
 from typing import Any, Iterable, KeysView
 
 __all__ = ["Unexplored"]
+
+
+def _first(pair: tuple) -> Any:
+    return pair[0]
 
 
 def _end(entry: Any) -> int | None:
@@ -48,7 +54,7 @@ def _end(entry: Any) -> int | None:
 
 
 class Unexplored(list):
-    """U: a list of map darts that keeps, per end vertex, the stamps of its entries in U's order."""
+    """U: a list of map darts that keeps, per end vertex, its entries by stamp in U's order."""
 
     __slots__ = ("_stamps", "_by_end", "_next", "changes")
 
@@ -56,7 +62,7 @@ class Unexplored(list):
         super().__init__()
         self.changes: list[tuple[int, Any]] = []  # (+1, entry) added, (-1, entry) removed, in order
         self._stamps: list[int] = []  # one per entry, increasing along U
-        self._by_end: dict[int, list[int]] = {}  # end vertex -> its entries' stamps, increasing
+        self._by_end: dict[int, dict[int, Any]] = {}  # end vertex -> {stamp: entry}, stamps increasing
         self._next = 0
         self.extend(entries)
 
@@ -71,8 +77,16 @@ class Unexplored(list):
     def first_at(self, ends: Iterable[int]) -> int | None:
         """The index of U's first entry whose end is in ``ends``; None if there is none."""
         by_end = self._by_end
-        stamps = [by_end[v][0] for v in ends if v in by_end]
+        stamps = [next(iter(by_end[v])) for v in ends if v in by_end]
         return bisect_left(self._stamps, min(stamps)) if stamps else None
+
+    def at(self, ends: Iterable[int]) -> list:
+        """The entries whose end is in ``ends`` (each vertex once), in U's order."""
+        by_end = self._by_end
+        mine = [by_end[v] for v in dict.fromkeys(ends) if v in by_end]
+        if len(mine) == 1:
+            return list(mine[0].values())
+        return [entry for _, entry in sorted(chain.from_iterable(d.items() for d in mine), key=_first)]
 
     # -- changes kept incrementally ---------------------------------------------
     def append(self, entry: Any) -> None:
@@ -80,7 +94,7 @@ class Unexplored(list):
         self._stamps.append(self._next)
         v = _end(entry)
         if v is not None:
-            self._by_end.setdefault(v, []).append(self._next)
+            self._by_end.setdefault(v, {})[self._next] = entry
         self._next += 1
         self.changes.append((1, entry))
 
@@ -98,7 +112,7 @@ class Unexplored(list):
         v = _end(entry)
         if v is not None:
             mine = self._by_end[v]
-            del mine[bisect_left(mine, stamp)]
+            del mine[stamp]
             if not mine:
                 del self._by_end[v]
         self.changes.append((-1, entry))
@@ -132,7 +146,7 @@ class Unexplored(list):
         for stamp, entry in enumerate(self):
             v = _end(entry)
             if v is not None:
-                self._by_end.setdefault(v, []).append(stamp)
+                self._by_end.setdefault(v, {})[stamp] = entry
         self._next = len(self)
 
     def insert(self, index: int, entry: Any) -> None:

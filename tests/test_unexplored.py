@@ -93,6 +93,8 @@ def test_U_answers_as_a_pass_over_it_would(start, changes, asked):
         assert U.first_at(asked) == first_at_by_pass(U, asked)
         for v in U.ends():
             assert U.first_at({v}) == first_at_by_pass(U, {v})
+            assert U.at([v]) == [x for x in U if is_dart(x) and x[0] == v]
+        assert U.at(sorted(asked, reverse=True)) == [x for x in U if is_dart(x) and x[0] in asked]
     replayed: Counter = Counter()
     for sign, entry in U.changes:
         replayed[repr(entry)] += sign
@@ -124,3 +126,10 @@ def test_a_map_keeps_U_as_an_Unexplored_and_shares_one_given():
 def test_an_entry_that_is_not_a_dart_is_kept_but_is_no_vertex_s(bad):
     U = Unexplored([bad, (3, 1)])
     assert U == [bad, (3, 1)] and set(U.ends()) == {3} and U.first_at({3}) == 1
+
+
+def test_docstring_examples():
+    import doctest
+
+    from topomark.spec import unexplored
+    assert doctest.testmod(unexplored).failed == 0

@@ -244,9 +244,10 @@ class LighthouseExplorer:
         tails: dict[int, tuple] = {}
         reads = reads_as(self.P, sig)  # P: S with a virtual v0
         make = self.hypothesis_type
-        for dart in self.S.unexplored:
+        U = self.S.unexplored  # in U's order, the entries at places of v_u's degree (reads compares it first)
+        for dart in U.at([v for v in U.ends() if v != it.edge[0] and self.P.degree(v) == sig.degree]):
             v, i = dart
-            if v == it.edge[0] or not reads(v, i):
+            if not reads(v, i):
                 continue
             if toward is None:
                 toward = tree_to_v0(self.S, self.policies)

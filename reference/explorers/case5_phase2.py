@@ -97,9 +97,10 @@ class PhaseTwo:
         marks and degree, Algorithm 6.4 lines 17–18, Algorithm 6.5 lines 15–16, 35–36)."""
         found, paths = [], {}  # v_k' -> (its lighthouse path, the walk along it)
         reads = reads_as(self.M, sig)
-        for dart in self.M.unexplored:
+        U = self.M.unexplored  # in U's order, the entries at places of v_u's degree (reads compares it first)
+        for dart in U.at([v for v in U.ends() if v != it.edge[0] and self.M.degree(v) == sig.degree]):
             v, i = dart
-            if v == it.edge[0] or not reads(v, i):
+            if not reads(v, i):
                 continue
             if v not in paths:
                 path = self.lighthouse_path(v)

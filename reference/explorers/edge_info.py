@@ -128,7 +128,7 @@ def matching_darts(M: PartialMap, w: int, sensed: Signature, exits: list[int] | 
     """The unexplored exits j of map vertex ``w`` (``exits`` if the caller has them) by which a robot would sense
     ``sensed`` at ``w`` (S's marks)."""
     if exits is None:
-        exits = [j for v, j in M.unexplored if v == w]
+        exits = [j for _, j in M.unexplored.at([w])]
     if sensed.degree != M.degree(w):
         return []
     could = _entries_reading_first(M, w, sensed)
@@ -165,11 +165,7 @@ class EdgeInfoFilter(FootprintSearch):
         found = super().candidates(vk, key, degree)
         if not found:
             return found
-        exits: dict[int, list[int]] = {w: [] for w in found}  # each candidate's entries listed in U
-        for v, j in self.M.unexplored:
-            if v in exits:
-                exits[v].append(j)
-        return [w for w in found if matching_darts(self.M, w, self._sensed, exits[w])]
+        return [w for w in found if matching_darts(self.M, w, self._sensed)]
 
     def drop_on_entry(self, it: MarkerStep, count: int) -> None:
         """The marker(s) on a non-loop e, head at v_u (the new vertex, where they are dropped), tail at v_k."""

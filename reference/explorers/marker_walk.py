@@ -208,9 +208,10 @@ class MarkerWalk:
 
     def loop(self, it: MarkerStep, far: MapDart) -> None:
         """v_u is the known place of dart ``far`` = e' (entered by it): add e/e' and remove e' from U."""
-        if far not in self.M.unexplored:
-            raise AlgorithmFailed(f"internal: e' = {far} identified at iteration {it.number} is not in U")
-        self.M.unexplored.remove(far)
+        try:
+            self.M.unexplored.remove(far)
+        except ValueError:
+            raise AlgorithmFailed(f"internal: e' = {far} identified at iteration {it.number} is not in U") from None
         self.add_edge(it.edge, far)
         it.kind, it.joined = "loop", (it.edge, far)
         self.position = far
