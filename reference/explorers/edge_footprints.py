@@ -182,7 +182,8 @@ class FootprintSearch(MarkerWalk):
             sig = self.leave(dart, "validation")
             v, entry = self.position
             looked.add(v)
-            extra = set(sig.edges) - set(self.map_signature(v, entry).edges)
+            shown = self.map_signature(v, entry).edges
+            extra = set(sig.edges) - set(shown) if sig.edges != shown else ()  # (the same edges: nothing more)
             if extra:
                 (p, count, _), = extra
                 j = (entry + p) % self.M.degree(v)
