@@ -312,10 +312,11 @@ class IncrementalInvariants:
         """I-2 holds iff U lists each open dart exactly once: no dart is listed a number of times other than
         its membership of ``open_map`` (:meth:`_count_u`); else :func:`check_I2` names the fault."""
         try:
-            if self._count_u():
-                return None
+            counted = self._count_u()
         except TypeError:  # an entry that is not a dart at all
-            pass
+            counted = False
+        if counted:
+            return None
         self._u = None  # U is counted whole at the next look (its record may have gone round U)
         return self._diagnose_u()
 

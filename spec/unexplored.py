@@ -1,10 +1,10 @@
 """U, the unexplored darts, as an ordered list that keeps count of what it holds (thesis §3.1.3, §3.4).
 
-Algorithm 3.1 keeps U as an explicit list (line 1: "U ← the edges of v0"; line 5: "remove an edge e from U";
-lines 17–18 add a new vertex's other edges, line 22 removes e'), so that an explorer which forgets an entry,
-or lists one twice, is caught by invariant I-2 rather than hidden by a derived value
-(:mod:`topomark.spec.mapstate`).  Three questions are asked of U every iteration, and each was a pass over it —
-O(|U|), and |U| grows to about 2m on a complete world, so O(m²) over a run:
+Algorithm 3.1 keeps U as an explicit list (line 3: "U ← incident edges in v_0"; line 5: "remove an unexplored
+edge e from U"; line 8: H from U's edges; line 25: "remove e' from U"; line 28: "add other edges in v_u to U"),
+so that an explorer which forgets an entry, or lists one twice, is caught by invariant I-2 rather than hidden
+by a derived value (:mod:`topomark.spec.mapstate`).  Three questions are asked of U every iteration, and each
+was a pass over it — O(|U|), and |U| grows to about 2m on a complete world, so O(m²) over a run:
 
 * which map vertices have an entry in U (the nearest-first choice of line 5, §3.3; the candidates of the §6.2
   footprint searches) — :meth:`Unexplored.ends`;
