@@ -173,7 +173,7 @@ def _parents_until(S: PartialMap, root: int, wanted: set[int]) -> dict[int, MapD
 def open_ends_beyond(S: PartialMap, vk: int) -> set[int]:
     """The ends listed in U other than ``vk`` and its neighbours in S: the known vertices a new edge from
     ``vk`` could reach (not v_k, S has no self-loop; not a neighbour, S has no multi-edge)."""
-    near = {vk} | {t[0] for t in S.links(vk) if t is not None}
+    near = {vk} | {w for _, w in S.joined(vk)}
     return {v for v in S.unexplored.ends() if v not in near}
 
 

@@ -54,7 +54,7 @@ from ..policies import Policies, bfs, tree_to_v0
 from ..robot import Robot
 from .lighthouses import LIGHTHOUSES, Lighthouse
 
-__all__ = ["Hypothesis", "Iteration", "LighthouseExplorer", "V0"]
+__all__ = ["Hypothesis", "Iteration", "LighthouseExplorer", "V0", "hypothesis_darts"]
 
 V0 = 0
 
@@ -92,6 +92,14 @@ class Iteration:
         return {"iteration": self.number, "edge": list(self.edge), "signature": str(self.signature),
                 "hypotheses": [h.to_json() for h in self.hypotheses], "augmentation": self.kind,
                 "joined": [list(d) for d in self.joined] if self.joined else None, "by_marker": self.by_marker}
+
+
+def hypothesis_darts(S: PartialMap, g, sig: Signature, vk: int) -> list[MapDart]:
+    """The darts e' = (v_k', i) of U, in U's order, with v_k' ≠ ``vk`` and whose known end, entered by them, reads
+    ``sig`` in ``g`` (S as perceived): line 8's H.  Only the entries at places of ``sig``'s degree are looked at
+    (:meth:`~topomark.spec.unexplored.Unexplored.at`), which ``reads_as`` would reject first anyway."""
+    U, reads = S.unexplored, reads_as(g, sig)
+    return [d for d in U.at([v for v in U.ends() if v != vk and g.degree(v) == sig.degree]) if reads(*d)]
 
 
 def walk_hypothesis(robot: Robot, h: Hypothesis, degree: int, heading: int) -> tuple[list[int], list[int]]:
@@ -242,13 +250,9 @@ class LighthouseExplorer:
         found, lengths = [], []
         toward: dict[int, int] | None = None
         tails: dict[int, tuple] = {}
-        reads = reads_as(self.P, sig)  # P: S with a virtual v0
         make = self.hypothesis_type
-        U = self.S.unexplored  # in U's order, the entries at places of v_u's degree (reads compares it first)
-        for dart in U.at([v for v in U.ends() if v != it.edge[0] and self.P.degree(v) == sig.degree]):
+        for dart in hypothesis_darts(self.S, self.P, sig, it.edge[0]):  # P: S with a virtual v0
             v, i = dart
-            if not reads(v, i):
-                continue
             if toward is None:
                 toward = tree_to_v0(self.S, self.policies)
             motions, expected, arrival = self._tail(v, toward, tails)

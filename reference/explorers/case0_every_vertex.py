@@ -33,6 +33,7 @@ from topomark.spec.errors import AlgorithmFailed
 from topomark.spec.kit import MarkerOp
 from topomark.spec.signature import Signature, signature_at
 
+from ..policies import open_ends_beyond
 from .marker_walk import MarkerStep, MarkerWalk
 
 __all__ = ["EveryVertexMarked"]
@@ -52,9 +53,8 @@ class EveryVertexMarked(MarkerWalk):
             self.non_loop(it, sig)
             self.drop(MarkerOp("vertex"), it)
             return
-        vk = it.edge[0]
-        near = {vk} | {t[0] for t in self.M.links(vk) if t is not None}
-        fits = [d for d in self.M.unexplored if d[0] not in near and signature_at(self.M, *d) == sig]
+        beyond = open_ends_beyond(self.M, it.edge[0])  # U's entries at places other than v_k and its neighbours
+        fits = [d for d in self.M.unexplored.at(beyond) if signature_at(self.M, *d) == sig]
         if not fits:
             raise AlgorithmFailed(f"iteration {it.number}: v_u shows {sig}, but no unexplored edge of the map "
                                   "leads from a known place that shows it")

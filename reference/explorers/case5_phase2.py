@@ -35,9 +35,9 @@ from __future__ import annotations
 
 from topomark.spec.errors import AlgorithmFailed
 from topomark.spec.mapstate import MapDart, PartialMap
-from topomark.spec.signature import Signature, reads_as, signature_at
+from topomark.spec.signature import Signature, signature_at
 
-from .algorithm31 import Hypothesis, walk_hypothesis
+from .algorithm31 import Hypothesis, hypothesis_darts, walk_hypothesis
 from .marker_walk import MarkerStep
 
 __all__ = ["PhaseTwo", "expected_walk", "path_walk", "PhaseStep"]
@@ -96,12 +96,8 @@ class PhaseTwo:
         """H: unexplored darts (v_k' ≠ v_k) whose known end, entered by them, shows ``sig`` (same signature:
         marks and degree, Algorithm 6.4 lines 17–18, Algorithm 6.5 lines 15–16, 35–36)."""
         found, paths = [], {}  # v_k' -> (its lighthouse path, the walk along it)
-        reads = reads_as(self.M, sig)
-        U = self.M.unexplored  # in U's order, the entries at places of v_u's degree (reads compares it first)
-        for dart in U.at([v for v in U.ends() if v != it.edge[0] and self.M.degree(v) == sig.degree]):
+        for dart in hypothesis_darts(self.M, self.M, sig, it.edge[0]):
             v, i = dart
-            if not reads(v, i):
-                continue
             if v not in paths:
                 path = self.lighthouse_path(v)
                 paths[v] = path, (path_walk(self.M, path) if path else None)

@@ -162,10 +162,7 @@ class EdgeInfoFilter(FootprintSearch):
 
     def candidates(self, vk: int, key: tuple[int, ...], degree: int) -> list[int]:
         """The case's own candidates that are potentially confusing by edgeINFO: some unexplored entry matches."""
-        found = super().candidates(vk, key, degree)
-        if not found:
-            return found
-        return [w for w in found if matching_darts(self.M, w, self._sensed)]
+        return [w for w in super().candidates(vk, key, degree) if matching_darts(self.M, w, self._sensed)]
 
     def drop_on_entry(self, it: MarkerStep, count: int) -> None:
         """The marker(s) on a non-loop e, head at v_u (the new vertex, where they are dropped), tail at v_k."""
