@@ -8,7 +8,7 @@ caption and checked against it (``tests/test_figures.py``):
   gives C3, C4, C5 (the figure shows three).
 * Figure 3.4 (§3.2.2): the wheel W4, planar and "twisted" (all corner rotations
   reversed, genus 1), an undirected marker at the centre ``"0"`` —
-  :func:`topomark.reference.generators.wheel_pair`.  ``M = (x,1,2,2,1)`` gives
+  :func:`topomark.proofs.wheels.wheel_pair`.  ``M = (x,1,2,2,1)`` gives
   ``([3,A,A] x4, [4,V,A])`` on both.
 * Figure 3.6 (§3.3): the same with a directional marker, start facing its head:
   ``M = (0,1,2,2,1)`` ends ``[4,V-3,A]`` on the planar wheel and ``[4,V-1,A]``
@@ -43,6 +43,7 @@ from collections import defaultdict
 from typing import Iterator, Sequence
 
 from topomark.proofs.enumerate import embedded_worlds
+from topomark.proofs.wheels import wheel_pair, wheel_pair_directional
 from topomark.spec.markerclass import marker_class
 from topomark.spec.errors import InvalidInput
 from topomark.spec.isomorphism import find_isomorphism
@@ -97,8 +98,6 @@ def figure_3_3_cycles() -> tuple[World, World, World]:
 
 
 def _wheels(directional: bool) -> tuple[World, World]:
-    from topomark.reference.generators import wheel_pair, wheel_pair_directional
-
     return wheel_pair_directional() if directional else wheel_pair()
 
 

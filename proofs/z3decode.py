@@ -26,8 +26,8 @@ from topomark.spec.robot import sense, step
 from topomark.spec.signature import Signature
 from topomark.spec.world import Start, World
 
-from .z3pair import _PairEncoding
-from .z3world import _WorldVars
+from topomark.proofs.z3pair import _PairEncoding
+from topomark.proofs.z3world import _WorldVars
 
 __all__ = ["decode_pair", "reachable_relation", "covering_walk", "recheck"]
 
@@ -144,7 +144,7 @@ def _path_to_new(a, b, cur, missing):
 
 def recheck(marker: str, a: World, b: World, relation: frozenset) -> None:
     """Re-check a decoded pair with the specification's predicates; CheckFailure if anything fails."""
-    from . import bisim
+    from topomark.proofs import bisim
 
     cls = MARKER_CLASSES[marker]
     for name, w in (("A", a), ("B", b)):

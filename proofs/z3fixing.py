@@ -19,9 +19,9 @@ import z3
 from topomark.spec.marker import EdgeMarker
 from topomark.spec.world import World
 
-from .z3formula import _not
-from .z3pair import _PairEncoding
-from .z3world import _WorldVars
+from topomark.proofs.z3formula import _not
+from topomark.proofs.z3pair import _PairEncoding
+from topomark.proofs.z3world import _WorldVars
 
 __all__ = ["canonical_labelling", "pair_is_model"]
 

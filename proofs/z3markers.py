@@ -15,12 +15,7 @@ indistinguishability relation of :mod:`topomark.proofs.z3pair` requires.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
-from .z3formula import _and, _iff, _not, _or
-
-if TYPE_CHECKING:
-    from .z3world import _WorldVars
+from topomark.proofs.z3formula import _and, _iff, _not, _or
 
 __all__: list[str] = []  # internal to the z3search modules
 
@@ -88,7 +83,7 @@ class _MarkerVars:
         return out
 
 
-def _sig_equal(a: _WorldVars, p: tuple[int, int], bw: _WorldVars, q: tuple[int, int]):
+def _sig_equal(a: _MarkerVars, p: tuple[int, int], bw: _MarkerVars, q: tuple[int, int]):
     """Expression: the signature at A-state p equals the one at B-state q."""
     parts = [_iff(a.deg[p[0]][d], bw.deg[q[0]][d]) for d in range(1, a.D + 1)]
     for fa, fb in zip(a.features(*p), bw.features(*q)):

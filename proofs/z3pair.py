@@ -53,9 +53,9 @@ from __future__ import annotations
 import itertools
 from typing import Iterator
 
-from .z3formula import _and, _Builder, _iff, _lit, _not, _or
-from .z3markers import _sig_equal
-from .z3world import NULL, _WorldVars
+from topomark.proofs.z3formula import _and, _Builder, _iff, _lit, _not, _or
+from topomark.proofs.z3markers import _sig_equal
+from topomark.proofs.z3world import NULL, _WorldVars
 
 __all__: list[str] = []  # internal to the z3search modules
 

@@ -69,12 +69,12 @@ import z3
 from topomark.spec.errors import CheckFailure, InvalidInput
 from topomark.spec.markerclass import marker_class
 
-from .z3decode import covering_walk, decode_pair, reachable_relation, recheck
-from .z3fixing import canonical_labelling, pair_is_model
-from .z3formula import _Builder  # noqa: F401 - re-exported for tests/test_z3search.py
-from .z3pair import _PairEncoding
-from .z3results import ProofReport, SearchResult, SizeCheck, relation_to_json
-from .z3world import _WorldVars  # noqa: F401 - re-exported for tests/test_z3search.py
+from topomark.proofs.z3decode import covering_walk, decode_pair, reachable_relation, recheck
+from topomark.proofs.z3fixing import canonical_labelling, pair_is_model
+from topomark.proofs.z3formula import _Builder  # noqa: F401 - re-exported for tests/test_z3search.py
+from topomark.proofs.z3pair import _PairEncoding
+from topomark.proofs.z3results import ProofReport, SearchResult, SizeCheck, relation_to_json
+from topomark.proofs.z3world import _WorldVars  # noqa: F401 - re-exported for tests/test_z3search.py
 
 __all__ = [
     "SearchResult", "ProofReport", "SizeCheck", "search", "prove", "size_pairs", "decode_pair",

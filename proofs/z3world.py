@@ -32,8 +32,8 @@ pseudo-Boolean equation.
 
 from __future__ import annotations
 
-from .z3formula import _Builder, _iff, _lit, _not, _or
-from .z3markers import _MarkerVars
+from topomark.proofs.z3formula import _Builder, _iff, _lit, _not, _or
+from topomark.proofs.z3markers import _MarkerVars
 
 __all__: list[str] = []  # internal to the z3search modules
 

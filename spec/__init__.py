@@ -20,13 +20,13 @@ module             concept (thesis section)
 Everything else in topomark uses these predicates and restates none of them.
 """
 
-from .errors import CheckFailure, InvalidInput, InvalidWorld, Violation
-from .isomorphism import IsoResult, Witness, find_isomorphism, verify_witness
-from .marker import EdgeMarker, VertexMarker
-from .robot import perceive, sense, step
-from .signature import Signature, signature_at
-from .world import Start, World
-from .worldfile import dumps_world, load_world, loads_world, save_world
+from topomark.spec.errors import CheckFailure, InvalidInput, InvalidWorld, Violation
+from topomark.spec.isomorphism import IsoResult, Witness, find_isomorphism, verify_witness
+from topomark.spec.marker import EdgeMarker, VertexMarker
+from topomark.spec.robot import perceive, sense, step
+from topomark.spec.signature import Signature, signature_at
+from topomark.spec.world import Start, World
+from topomark.spec.worldfile import dumps_world, load_world, loads_world, save_world
 
 __all__ = [
     "CheckFailure", "InvalidInput", "InvalidWorld", "Violation",

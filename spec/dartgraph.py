@@ -22,9 +22,9 @@ from __future__ import annotations
 import networkx as nx
 from networkx.algorithms.isomorphism import DiGraphMatcher
 
-from .errors import Violation
-from .isomorphism import IsoResult, Witness
-from .signature import signature_at
+from topomark.spec.errors import Violation
+from topomark.spec.isomorphism import IsoResult, Witness
+from topomark.spec.signature import signature_at
 
 __all__ = ["dart_graph", "find_isomorphism_nx"]
 

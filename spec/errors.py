@@ -142,7 +142,7 @@ class AlgorithmStopped(TopomarkError):
     """An explorer stops before it has a map.  Not a fault of topomark, and not bad input: an outcome.
 
     Raised by an explorer (through the robot interface it knows only what it sensed); the driver
-    (:func:`topomark.reference.explore.explore`) turns it into the run's outcome, :attr:`outcome`, with
+    (:func:`topomark.reference.run.explore.explore`) turns it into the run's outcome, :attr:`outcome`, with
     :attr:`reason` in words.
     """
 

@@ -33,11 +33,11 @@ from __future__ import annotations
 
 from collections import Counter
 
-from .errors import Violation, TopomarkFault
-from .isomorphism import IsoResult, Witness, anchored
-from .mapstate import MapDart, PartialMap
-from .unexplored import Unexplored
-from .world import Dart, World
+from topomark.spec.errors import Violation, TopomarkFault
+from topomark.spec.isomorphism import IsoResult, Witness, anchored
+from topomark.spec.mapstate import MapDart, PartialMap
+from topomark.spec.unexplored import Unexplored
+from topomark.spec.world import Dart, World
 
 __all__ = ["Anchor", "correspondence", "check_I1", "check_I2", "check_invariants", "lighthouse_anchor",
            "explored_world_darts", "explored_subgraph", "IncrementalInvariants", "check_lemma1"]
@@ -239,7 +239,7 @@ class IncrementalInvariants:
         return bad
 
     def _marks(self, v: int) -> Violation | None:
-        from .isomorphism import _describe_marks, _marks_at
+        from topomark.spec.isomorphism import _describe_marks, _marks_at
         x = self.f[v]
         ma, mb = _marks_at(self.S, v, self.r[v]), _marks_at(self.world, x, 0)
         if ma != mb:

@@ -35,8 +35,8 @@ from collections import Counter, deque
 from dataclasses import dataclass
 from typing import Any, Hashable
 
-from .errors import Violation
-from .signature import signature_at
+from topomark.spec.errors import Violation
+from topomark.spec.signature import signature_at
 
 __all__ = ["Witness", "IsoResult", "anchored", "find_isomorphism", "verify_witness", "local_class"]
 

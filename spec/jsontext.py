@@ -43,7 +43,7 @@ import stat
 from pathlib import Path
 from typing import Any, BinaryIO, Callable
 
-from .errors import InvalidInput
+from topomark.spec.errors import InvalidInput
 
 __all__ = ["MAX_DEPTH", "MAX_INT_DIGITS", "MAX_FILE_BYTES", "parse_json", "check_depth", "open_regular_file",
            "read_text_file"]

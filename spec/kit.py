@@ -56,7 +56,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
-from .errors import InvalidInput
+from topomark.spec.errors import InvalidInput
 
 __all__ = ["Kit", "MarkerOp", "ThreadOp", "THREAD_OPS"]
 

@@ -29,11 +29,11 @@ from __future__ import annotations
 from bisect import insort
 from typing import Iterator
 
-from .errors import require
-from .marker import EdgeMarker, VertexMarker
-from .thread import Thread, ThreadedWorld, unshifted, walk_from_marks
-from .unexplored import Unexplored
-from .world import DartMark, Start, VertexMark, World
+from topomark.spec.errors import require
+from topomark.spec.marker import EdgeMarker, VertexMarker
+from topomark.spec.thread import Thread, ThreadedWorld, unshifted, walk_from_marks
+from topomark.spec.unexplored import Unexplored
+from topomark.spec.world import DartMark, Start, VertexMark, World
 
 __all__ = ["PartialMap", "MapDart"]
 

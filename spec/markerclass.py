@@ -33,10 +33,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Callable, Iterator
 
-from .errors import InvalidInput
-from .kit import Kit
-from .marker import EdgeMarker, Marker, VertexMarker
-from .world import Start, World
+from topomark.spec.errors import InvalidInput
+from topomark.spec.kit import Kit
+from topomark.spec.marker import EdgeMarker, Marker, VertexMarker
+from topomark.spec.world import Start, World
 
 __all__ = ["MarkerClass", "MARKER_CLASSES", "marker_class"]
 

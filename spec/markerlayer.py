@@ -49,12 +49,12 @@ from __future__ import annotations
 
 from typing import Iterator
 
-from .errors import InvalidInput
-from .kit import MarkerOp, ThreadOp
-from .marker import EdgeMarker, Marker, VertexMarker
-from .signature import KeptSignatures, Signature
-from .thread import ThreadedWorld, ThreadMark, ThreadState
-from .world import DartMark, VertexMark, World
+from topomark.spec.errors import InvalidInput
+from topomark.spec.kit import MarkerOp, ThreadOp
+from topomark.spec.marker import EdgeMarker, Marker, VertexMarker
+from topomark.spec.signature import KeptSignatures, Signature
+from topomark.spec.thread import ThreadedWorld, ThreadMark, ThreadState
+from topomark.spec.world import DartMark, VertexMark, World
 
 __all__ = ["MarkerLayer", "apply_op"]
 

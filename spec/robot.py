@@ -25,9 +25,9 @@ from __future__ import annotations
 
 from typing import Iterable, Sequence
 
-from .errors import InvalidInput
-from .signature import Signature, signature_at
-from .world import World
+from topomark.spec.errors import InvalidInput
+from topomark.spec.signature import Signature, signature_at
+from topomark.spec.world import World
 
 __all__ = ["State", "exit_of", "step", "run", "perceive", "sense"]
 

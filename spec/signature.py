@@ -51,9 +51,9 @@ import re
 from dataclasses import dataclass
 from typing import Any, Callable, Protocol
 
-from .errors import InvalidInput, Violation
-from .thread import ThreadMark, shifted
-from .world import MAX_DEGREE, DartMark, VertexMark
+from topomark.spec.errors import InvalidInput, Violation
+from topomark.spec.thread import ThreadMark, shifted
+from topomark.spec.world import MAX_DEGREE, DartMark, VertexMark
 
 __all__ = ["Signature", "signature_at", "depends_on_entry", "KeptSignatures", "reads_as", "back_link_table", "Marked"]
 

@@ -74,10 +74,10 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Iterable, NamedTuple
 
-from .errors import InvalidInput
-from .kit import ThreadOp
-from .marker import Marker
-from .world import Start, World
+from topomark.spec.errors import InvalidInput
+from topomark.spec.kit import ThreadOp
+from topomark.spec.marker import Marker
+from topomark.spec.world import Start, World
 
 __all__ = ["ThreadMark", "ThreadState", "Thread", "ThreadedWorld", "shifted"]
 

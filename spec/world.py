@@ -27,8 +27,8 @@ from collections import Counter, deque
 from dataclasses import dataclass
 from typing import Iterable, Iterator, Mapping, Sequence
 
-from .errors import InvalidWorld, require_input
-from .marker import EdgeMarker, Marker, VertexMarker
+from topomark.spec.errors import InvalidWorld, require_input
+from topomark.spec.marker import EdgeMarker, Marker, VertexMarker
 
 __all__ = ["World", "Start", "Dart", "VertexMark", "DartMark", "MAX_VERTICES", "MAX_EDGES", "MAX_DEGREE", "MAX_NAME_LENGTH",
            "check_size"]

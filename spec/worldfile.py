@@ -56,12 +56,12 @@ from importlib import resources
 from pathlib import Path
 from typing import Any
 
-from .errors import InvalidWorld
-from .jsontext import parse_json, read_text_file
-from .errors import InvalidInput
-from .marker import EdgeMarker, VertexMarker
-from .thread import Thread, ThreadedWorld
-from .world import Start, World, check_size
+from topomark.spec.errors import InvalidWorld
+from topomark.spec.jsontext import parse_json, read_text_file
+from topomark.spec.errors import InvalidInput
+from topomark.spec.marker import EdgeMarker, VertexMarker
+from topomark.spec.thread import Thread, ThreadedWorld
+from topomark.spec.world import Start, World, check_size
 
 __all__ = ["FORMAT", "MAX_WORLD_BYTES", "schema", "world_from_json", "world_to_json", "marker_to_json",
            "loads_world", "dumps_world", "load_world", "save_world"]

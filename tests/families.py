@@ -4,8 +4,8 @@ from __future__ import annotations
 
 from hypothesis import strategies as st
 
-from topomark.reference import generators as g
-from topomark.reference.strategies import worlds
+from topomark.reference.worlds import generators as g
+from topomark.reference.worlds.strategies import worlds
 from topomark.spec.world import Start, World
 
 

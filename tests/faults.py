@@ -4,7 +4,7 @@ Each is a :class:`~topomark.reference.explorers.algorithm31.LighthouseExplorer` 
 overriding the smallest method that contains the mistake.  They use only the
 robot interface (motions, perceptions, the marker drop): none of them peeks
 at the world.  ``tests/test_seeded_faults.py`` checks that the checker
-(:class:`~topomark.reference.checker.Checker`) catches every one.
+(:class:`~topomark.reference.run.checker.Checker`) catches every one.
 """
 
 from __future__ import annotations

@@ -7,8 +7,8 @@ import csv
 
 import pytest
 
-from topomark.reference import bench, thesis_figures as tf
-from topomark.reference.cli import main
+from topomark.reference.bench import experiments as bench, thesis_figures as tf
+from topomark.reference.cli.main import main
 
 
 def test_lattice_hole_sizes_are_the_thesis_sizes():
@@ -38,7 +38,7 @@ def test_a_kept_world_is_unchanged_by_every_algorithm_run_on_it():
     start), whatever it drops, lays or places as a lighthouse."""
     import copy
     import json
-    from topomark.reference.explore import explore
+    from topomark.reference.run.explore import explore
     names = [a["name"] for a in json.loads(_algorithms_json())]
     w = bench.world_for("complete-hole", 24, 1)
     before = (copy.deepcopy(w.rotation), w.markers, w.start, w.n, w.m)
@@ -154,10 +154,10 @@ def test_bad_input_exits_2():
 def test_a_sink_that_wants_only_op_records_gets_them_all_and_nothing_else():
     """A sink's ``events`` (tracesink): explore skips the move and iteration records it does not want, and the
     op records it gets are those of the whole trace; the bench's DropCount then counts the markers lying."""
-    from topomark.reference import generators
-    from topomark.reference.bench_run import DropCount
-    from topomark.reference.explore import explore
-    from topomark.reference.tracesink import ListSink
+    from topomark.reference.worlds import generators
+    from topomark.reference.bench.runs import DropCount
+    from topomark.reference.run.explore import explore
+    from topomark.reference.trace.sink import ListSink
 
     class Ops(ListSink):
         events = frozenset({"op"})

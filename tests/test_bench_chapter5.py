@@ -12,9 +12,9 @@ import csv
 
 import pytest
 
-from topomark.reference import bench
-from topomark.reference.bench_chapter5 import figure_3_4, write_report
-from topomark.reference.bench_plan import (CHAPTER_5_FAMILIES, EXPERIMENTS, FAMILIES, SEARCHED,
+from topomark.reference.bench import experiments as bench
+from topomark.reference.bench.reports.chapter5 import figure_3_4, write_report
+from topomark.reference.bench.plan import (CHAPTER_5_FAMILIES, EXPERIMENTS, FAMILIES, SEARCHED,
                                            UNCUED_MODEL_TREE_GRAPHS, Run, plan, resolve_options, world_for)
 from topomark.spec.errors import InvalidInput
 
@@ -101,5 +101,5 @@ def test_figure_3_4_from_the_centre_six_global_models_against_many_more_local():
 def test_docstring_examples():
     import doctest
 
-    from topomark.reference import bench_chapter5
+    from topomark.reference.bench.reports import chapter5 as bench_chapter5
     assert doctest.testmod(bench_chapter5).failed == 0

@@ -4,13 +4,13 @@ from __future__ import annotations
 
 import csv
 
-from topomark.reference import bench, bench_plan
-from topomark.reference.cli import main
-from topomark.reference.explore import explore
-from topomark.reference.bench_lighthouses import SHORT
-from topomark.reference.bench_plan import CERTAIN_LIGHTHOUSES as LIGHTHOUSES
+from topomark.reference.bench import experiments as bench, plan as bench_plan
+from topomark.reference.cli.main import main
+from topomark.reference.run.explore import explore
+from topomark.reference.bench.reports.lighthouses import SHORT
+from topomark.reference.bench.plan import CERTAIN_LIGHTHOUSES as LIGHTHOUSES
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES as ALL
-from topomark.reference.runstore import CSV_FIELDS, read_runs
+from topomark.reference.bench.run_store import CSV_FIELDS, read_runs
 
 OLD_FIELDS = [f for f in CSV_FIELDS if f != "lighthouse"]  # runs.csv as written before the column existed
 

@@ -7,13 +7,13 @@ import csv
 
 import pytest
 
-from topomark.reference import bench, bench_plan
-from topomark.reference.bench_figures6 import marked_places
-from topomark.reference.bench_table6 import CLAIMS, slope
-from topomark.reference.cli import main
+from topomark.reference.bench import experiments as bench, plan as bench_plan
+from topomark.reference.bench.reports.section62_figures import marked_places
+from topomark.reference.bench.reports.section62 import CLAIMS, slope
+from topomark.reference.cli.main import main
 from topomark.reference.explorers.counted_markers import sum_to
-from topomark.reference.registry import algorithm_spec
-from topomark.reference.runstore import read_runs
+from topomark.reference.algorithms.registry import algorithm_spec
+from topomark.reference.bench.run_store import read_runs
 from topomark.spec.errors import InvalidInput
 
 # runs.csv's columns before the kit algorithms' columns existed (and before the lighthouse column)

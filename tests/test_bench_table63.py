@@ -6,10 +6,12 @@ from __future__ import annotations
 
 import csv
 
-from topomark.reference import bench_plan, bench_table63 as b63
-from topomark.reference.bench_plan import NO_LIGHTHOUSE, Experiment, Part
-from topomark.reference.cli import main
-from topomark.reference.runstore import CSV_FIELDS
+from topomark.reference.bench import plan as bench_plan
+
+from topomark.reference.bench.reports import section63 as b63
+from topomark.reference.bench.plan import NO_LIGHTHOUSE, Experiment, Part
+from topomark.reference.cli.main import main
+from topomark.reference.bench.run_store import CSV_FIELDS
 
 
 def _sweep(tmp_path, experiment: str, *sizes: str) -> tuple[int, list[dict], str]:

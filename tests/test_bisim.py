@@ -20,8 +20,8 @@ from hypothesis import strategies as st
 from topomark.proofs.bisim import (Distinction, bisimulation, check_relation, distinguishing_sequence,
                                    indistinguishable, is_counterexample)
 from topomark.proofs.figures import cycle_world, figure_3_3, figure_3_4, figure_3_6, figure_6_1a, figure_6_1b
-from topomark.reference.cli import main
-from topomark.reference.strategies import relabelled, rotated, worlds
+from topomark.reference.cli.main import main
+from topomark.reference.worlds.strategies import relabelled, rotated, worlds
 from topomark.spec.errors import InvalidInput
 from topomark.spec.robot import perceive, sense, step
 from topomark.spec.world import Start, World

@@ -9,7 +9,7 @@ from hypothesis import strategies as st
 from topomark.proofs import figures
 from topomark.proofs.bisim import distinguishing_sequence
 from topomark.proofs.bmc import shortest_by_bmc
-from topomark.reference.strategies import worlds
+from topomark.reference.worlds.strategies import worlds
 from topomark.spec.robot import perceive
 
 

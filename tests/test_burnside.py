@@ -77,7 +77,7 @@ def test_bad_input(args):
 
 # -- topomark census-count -----------------------------------------------------------------
 def test_cli_prints_both_counts(capsys):
-    from topomark.reference.cli import main
+    from topomark.reference.cli.main import main
     assert main(["census-count", "--max-vertices", "6", "--max-degree", "3", "--enumerate", "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
     assert [(r["n"], r["graphs"], r["worlds"], r["enumerated"]) for r in data["rows"]] == \
@@ -96,7 +96,7 @@ def test_cli_prints_both_counts(capsys):
     ["--max-degree", "3"],
 ])
 def test_cli_rejects_bad_options(argv, capsys):
-    from topomark.reference.cli import main
+    from topomark.reference.cli.main import main
     assert main(["census-count", *argv]) == 2
     assert capsys.readouterr().err.startswith("topomark: error:")
 

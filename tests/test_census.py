@@ -13,8 +13,8 @@ from topomark.proofs.census import census, language_code, machine, minimise, pla
 from topomark.proofs.enumerate import count_by_size, embedded_worlds
 from topomark.proofs.figures import figure_3_4, figure_3_21a, figure_6_1a
 from topomark.spec.markerclass import MARKER_CLASSES
-from topomark.reference.cli import main
-from topomark.reference.strategies import worlds
+from topomark.reference.cli.main import main
+from topomark.reference.worlds.strategies import worlds
 from topomark.spec.isomorphism import find_isomorphism
 from topomark.spec.world import Start, World
 

@@ -23,8 +23,8 @@ from topomark.proofs.census_map import (_graphs, _iso_key, _layouts, _marker_key
 from topomark.proofs.census_run import sharded_census
 from topomark.proofs.census_shards import RECORD, _pair_key, combine, done_path, reduce_path, summary
 from topomark.proofs.enumerate import _image, _orbit_representatives, _world, canonical_form
-from topomark.reference.cli import main
-from topomark.reference.strategies import worlds
+from topomark.reference.cli.main import main
+from topomark.reference.worlds.strategies import worlds
 from topomark.spec.errors import InvalidInput
 from topomark.spec.markerclass import MARKER_CLASSES
 from topomark.spec.robot import sense

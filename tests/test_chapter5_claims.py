@@ -1,6 +1,6 @@
 """What Chapter 5 states about the Figure 3.4 worlds, reproduced and compared (issue 11 item 6).
 
-The two wheels of Figure 3.4 (:func:`~topomark.reference.generators.wheel_pair`,
+The two wheels of Figure 3.4 (:func:`~topomark.reference.worlds.generators.wheel_pair`,
 guide Appendix A) carry an undirected marker at the centre; every run here
 strips it (the robot brings its own kit, or none).  Each test quotes the
 thesis line it reproduces; where our number differs, the docstring says why
@@ -23,8 +23,8 @@ import time
 
 import pytest
 
-from topomark.reference import generators as g
-from topomark.reference.explore import explore
+from topomark.reference.worlds import generators as g
+from topomark.reference.run.explore import explore
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES
 from topomark.spec.isomorphism import find_isomorphism
 from topomark.spec.world import Start, World

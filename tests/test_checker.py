@@ -10,9 +10,9 @@ import pytest
 from hypothesis import given, settings
 
 from families import family_worlds
-from topomark.reference import algorithms as explore_mod
-from topomark.reference import generators as g
-from topomark.reference.explore import explore
+from topomark.reference.algorithms import explorer_classes as explore_mod
+from topomark.reference.worlds import generators as g
+from topomark.reference.run.explore import explore
 from topomark.reference.explorers.algorithm31 import LighthouseExplorer
 from topomark.spec.invariants import correspondence, explored_subgraph, lighthouse_anchor
 from topomark.spec.marker import VertexMarker
@@ -108,8 +108,9 @@ def test_checks_survive_python_O():
     code = (
         f"import sys; sys.path.insert(0, {str(Path(__file__).parent)!r})\n"
         "from faults_min import KeepsLoopDartInU\n"
-        "from topomark.reference import algorithms, generators\n"
-        "from topomark.reference.explore import explore\n"
+        "from topomark.reference.algorithms import explorer_classes as algorithms\n"
+        "from topomark.reference.worlds import generators\n"
+        "from topomark.reference.run.explore import explore\n"
         "algorithms.ALGORITHMS['basic'] = KeepsLoopDartInU\n"
         "print(explore(generators.cycle(5)).violation.check)\n"
     )

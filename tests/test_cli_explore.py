@@ -9,11 +9,11 @@ import sys
 import pytest
 
 from faults_min import KeepsLoopDartInU
-from topomark.reference import algorithms
-from topomark.reference.cli import main
+from topomark.reference.algorithms import explorer_classes as algorithms
+from topomark.reference.cli.main import main
 from topomark.spec.isomorphism import find_isomorphism
 from topomark.spec.worldfile import load_world, save_world
-from topomark.reference import generators as g
+from topomark.reference.worlds import generators as g
 from topomark.spec.marker import VertexMarker
 from topomark.spec.world import Start, World
 
@@ -94,7 +94,7 @@ def test_violation_exits_1_with_diagnostic_and_trace(capsys, monkeypatch):
 
 
 def test_console_script_runs_in_a_subprocess():
-    proc = subprocess.run([sys.executable, "-m", "topomark.reference.cli", "explore", "complete:n=5", "--json"],
+    proc = subprocess.run([sys.executable, "-m", "topomark.reference.cli.main", "explore", "complete:n=5", "--json"],
                           capture_output=True, text=True, timeout=120)
     assert proc.returncode == 0, proc.stderr
     assert json.loads(proc.stdout)["verified"] is True
@@ -102,7 +102,7 @@ def test_console_script_runs_in_a_subprocess():
 
 def test_undirected_marker_world_is_refused_in_a_subprocess():
     """Figure 3.4's wheel carries an undirected marker: not the basic algorithm's marker class."""
-    proc = subprocess.run([sys.executable, "-m", "topomark.reference.cli", "explore", "wheel-b"],
+    proc = subprocess.run([sys.executable, "-m", "topomark.reference.cli.main", "explore", "wheel-b"],
                           capture_output=True, text=True, timeout=120)
     assert proc.returncode == 2 and "Traceback" not in proc.stderr
     assert '{"kind": "vertex", "at": "0", "count": 1}' in proc.stderr

@@ -9,9 +9,9 @@ import sys
 
 import pytest
 
-from topomark.reference import generators as g
-from topomark.reference.cli import main
-from topomark.reference.strategies import relabelled, rotated
+from topomark.reference.worlds import generators as g
+from topomark.reference.cli.main import main
+from topomark.reference.worlds.strategies import relabelled, rotated
 from topomark.spec.marker import VertexMarker
 from topomark.spec.world import World
 from topomark.spec.worldfile import load_world, save_world
@@ -24,7 +24,7 @@ def run(capsys, *argv):
 
 
 def run_process(*argv, cwd):
-    return subprocess.run([sys.executable, "-m", "topomark.reference.cli", *argv], cwd=cwd,
+    return subprocess.run([sys.executable, "-m", "topomark.reference.cli.main", *argv], cwd=cwd,
                           capture_output=True, text=True, timeout=120)
 
 

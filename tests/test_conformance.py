@@ -10,15 +10,15 @@ from pathlib import Path
 import jsonschema
 import pytest
 
-from topomark.reference import conformance
-from topomark.reference import generators as g
-from topomark.reference.cli import main
-from topomark.reference.external import Limits
+from topomark.reference.oracle import conformance
+from topomark.reference.worlds import generators as g
+from topomark.reference.cli.main import main
+from topomark.reference.oracle.run_external import Limits
 from topomark.spec.errors import InvalidInput
 from topomark.spec.world import Start
 
 ROOT = Path(__file__).resolve().parents[1]
-CLIENT = [sys.executable, str(ROOT / "reference" / "examples" / "client.py")]
+CLIENT = [sys.executable, str(ROOT / "reference" / "oracle" / "examples" / "client.py")]
 WRONG = str(Path(__file__).resolve().parent / "clients" / "wrong_client.py")
 
 

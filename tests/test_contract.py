@@ -15,10 +15,10 @@ import sys
 
 import pytest
 
-from topomark.reference import generators
-from topomark.reference.algorithmspec import AlgorithmSpec, Parameter
-from topomark.reference.explore import explore
-from topomark.reference.registry import algorithm_spec
+from topomark.reference.worlds import generators
+from topomark.reference.algorithms.algorithm_spec import AlgorithmSpec, Parameter
+from topomark.reference.run.explore import explore
+from topomark.reference.algorithms.registry import algorithm_spec
 from topomark.spec.errors import InvalidInput, LimitReached, TopomarkFault
 from topomark.spec.kit import Kit, MarkerOp
 from topomark.spec.mapstate import PartialMap
@@ -163,7 +163,7 @@ def test_algorithm_3_1_reports_the_correct_outcome():
 
 
 def test_the_cli_prints_both_outcomes_and_refuses_a_lighthouse_for_no_algorithm():
-    run = subprocess.run([sys.executable, "-m", "topomark.reference.cli", "explore", "cycle:n=4", "--json"],
+    run = subprocess.run([sys.executable, "-m", "topomark.reference.cli.main", "explore", "cycle:n=4", "--json"],
                          capture_output=True, text=True, timeout=120)
     data = json.loads(run.stdout)
     assert run.returncode == 0 and (data["outcome"], data["claimed"]) == ("correct", "correct")
@@ -211,9 +211,9 @@ def test_i2_is_checked_only_where_the_algorithm_names_it(mode):
 
 
 def test_a_stopped_runs_trace_replays_up_to_where_it_stopped(tmp_path):
-    from topomark.reference.replay import replay
-    from topomark.reference.tracefile import parse_trace
-    from topomark.reference.explore import dump_trace
+    from topomark.reference.replay.replay import replay
+    from topomark.reference.trace.reader import parse_trace
+    from topomark.reference.trace.records import dump_trace
     world = generators.lattice(3, 3)
     out = explore(world, "case-3b", options={"markers": 2})
     assert out.outcome == "failed" and out.trace[-1]["outcome"] == "failed" and out.trace[-1]["reason"] == out.reason

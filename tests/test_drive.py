@@ -9,17 +9,18 @@ from pathlib import Path
 
 import pytest
 
-from topomark.reference import generators as g
-from topomark.reference.cli import main
-from topomark.reference.drive import drive
-from topomark.reference.explore import dump_trace, explore
-from topomark.reference.policies import Policies
-from topomark.reference.replay import parse_trace, replay
+from topomark.reference.worlds import generators as g
+from topomark.reference.cli.main import main
+from topomark.reference.oracle.drive import drive
+from topomark.reference.run.explore import explore
+from topomark.reference.trace.records import dump_trace
+from topomark.reference.explorers.policies import Policies
+from topomark.reference.replay.replay import parse_trace, replay
 from topomark.spec.world import Start
 from topomark.spec.worldfile import dumps_world
 
 ROOT = Path(__file__).resolve().parents[1]
-PROVIDER = str(ROOT / "reference" / "examples" / "provider.py")
+PROVIDER = str(ROOT / "reference" / "oracle" / "examples" / "provider.py")
 
 
 def provider(path: Path) -> list[str]:

@@ -9,14 +9,15 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from families import family_worlds
-from topomark.reference import generators as g
-from topomark.reference.algorithms import ALGORITHMS
-from topomark.reference.cli import main
+from topomark.reference.worlds import generators as g
+from topomark.reference.algorithms.explorer_classes import ALGORITHMS
+from topomark.reference.cli.main import main
 from topomark.reference.explorers.compositions import ENHANCEMENTS
-from topomark.reference.registry import variant
+from topomark.reference.algorithms.registry import variant
 from topomark.reference.explorers.enhanced import Enhancement, EnhancedExplorer
-from topomark.reference.explore import dump_trace, explore
-from topomark.reference.policies import EDGE_POLICIES, HYPOTHESIS_POLICIES, PATH_POLICIES, Policies
+from topomark.reference.run.explore import explore
+from topomark.reference.trace.records import dump_trace
+from topomark.reference.explorers.policies import EDGE_POLICIES, HYPOTHESIS_POLICIES, PATH_POLICIES, Policies
 from topomark.spec.world import Start, World
 
 NAMES = ["enh1", "enh2", "enh3", "enh4", "enh5-d1", "enh5-d2", "enh3+4", "enh3+5"]

@@ -15,7 +15,7 @@ from topomark.proofs.enumerate import (MAX_VERTICES, _automorphisms, _image, _or
                                        canonical_form, connected_graphs, count_by_size, embedded_worlds,
                                        rotation_systems)
 from topomark.spec.markerclass import MARKER_CLASSES
-from topomark.reference.strategies import relabelled, rotated, worlds
+from topomark.reference.worlds.strategies import relabelled, rotated, worlds
 from topomark.spec.errors import InvalidInput
 from topomark.spec.isomorphism import anchored, find_isomorphism
 from topomark.spec.world import World

@@ -9,10 +9,11 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from families import family_worlds
-from topomark.reference import generators as g
-from topomark.reference.bounds import expression_3_1, expression_3_2, upper_bound
-from topomark.reference.explore import dump_trace, explore
-from topomark.reference.policies import EDGE_POLICIES, HYPOTHESIS_POLICIES, PATH_POLICIES, Policies
+from topomark.reference.worlds import generators as g
+from topomark.reference.algorithms.bounds import expression_3_1, expression_3_2, upper_bound
+from topomark.reference.run.explore import explore
+from topomark.reference.trace.records import dump_trace
+from topomark.reference.explorers.policies import EDGE_POLICIES, HYPOTHESIS_POLICIES, PATH_POLICIES, Policies
 from topomark.spec.errors import InvalidInput
 from topomark.spec.isomorphism import find_isomorphism
 from topomark.spec.marker import EdgeMarker, VertexMarker

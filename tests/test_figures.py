@@ -8,7 +8,7 @@ from topomark.proofs.bisim import bisimulation, check_relation, distinguishing_s
 from topomark.proofs.figures import (FIGURES, PRISM_MOTIONS, PRISM_PLANAR, PRISM_TWISTED, figure_3_3,
                                      figure_3_3_cycles, figure_3_4, figure_3_6, figure_3_21a, figure_3_21b,
                                      figure_6_1a, figure_6_1b, search_pairs)
-from topomark.reference.generators import wheel_pair
+from topomark.reference.worlds.generators import wheel_pair
 from topomark.spec.isomorphism import find_isomorphism
 from topomark.spec.robot import perceive, run
 from topomark.spec.world import World

@@ -1,4 +1,4 @@
-"""Tests of topomark.reference.generators and topomark.reference.strategies."""
+"""Tests of topomark.reference.worlds.generators and topomark.reference.worlds.strategies."""
 
 from __future__ import annotations
 
@@ -12,8 +12,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from topomark.reference import generators as g
-from topomark.reference.strategies import relabelled, rotated, worlds
+from topomark.reference.worlds import generators as g
+from topomark.reference.worlds.strategies import relabelled, rotated, worlds
 from topomark.spec.errors import InvalidInput, InvalidWorld
 from topomark.spec.marker import EdgeMarker, VertexMarker
 from topomark.spec.world import Start, World

@@ -20,11 +20,11 @@ hang), stdin from ``/dev/null``, its own session (killed as a group after
 A fresh interpreter costs about a second here (networkx and z3 imports) and the
 table has a few hundred rows, so by default each invocation is forked from a
 *zygote*: a clean ``python3`` (not pytest) that has imported
-``topomark.reference.cli`` once and, per request, forks a child that sets the
+``topomark.reference.cli.main`` once and, per request, forks a child that sets the
 limit, redirects 0/1/2, and runs ``sys.exit(main(argv))`` -- exactly what the
 ``topomark`` entry point does after its imports, including normal interpreter
 shutdown.  ``TOPOMARK_HOSTILE_FRESH=1`` runs every case in a fresh
-``python3 -m topomark.reference.cli`` via ``subprocess`` + ``preexec_fn``
+``python3 -m topomark.reference.cli.main`` via ``subprocess`` + ``preexec_fn``
 instead (slower, same assertions); :func:`test_zygote_agrees_with_a_fresh_interpreter`
 checks a few rows both ways on every run.
 
@@ -57,8 +57,8 @@ from hypothesis import strategies as st
 from topomark.spec.errors import CheckFailure, InvalidInput
 
 REPO = Path(__file__).resolve().parent.parent
-CLIENT = REPO / "reference" / "examples" / "client.py"
-PROVIDER = REPO / "reference" / "examples" / "provider.py"
+CLIENT = REPO / "reference" / "oracle" / "examples" / "client.py"
+PROVIDER = REPO / "reference" / "oracle" / "examples" / "provider.py"
 
 MEMORY_LIMIT = 2 << 30   # RLIMIT_AS per invocation (see the module docstring)
 TIMEOUT = 60.0           # hang guard per invocation (generous: a healthy case takes well under 2 s)
@@ -74,7 +74,7 @@ MAX_STDOUT_CHARS = 64_000
 _ZYGOTE_SRC = r"""
 import json, os, resource, sys
 req_fd, resp_fd = int(sys.argv[1]), int(sys.argv[2])
-from topomark.reference.cli import build_parser, main
+from topomark.reference.cli.main import build_parser, main
 build_parser()  # imports every command module once, before any fork
 resp = os.fdopen(resp_fd, "w", buffering=1)
 req = os.fdopen(req_fd, "r")
@@ -186,7 +186,7 @@ class _Zygote:
 def _run_fresh(argv: list[str], cwd: Path, out: Path, err: Path, timeout: float) -> int | None:
     env = {k: v for k, v in os.environ.items() if k != "TOPOMARK_DEBUG"}
     with open(out, "wb") as fo, open(err, "wb") as fe:
-        proc = subprocess.Popen([sys.executable, "-m", "topomark.reference.cli", *argv], cwd=cwd,
+        proc = subprocess.Popen([sys.executable, "-m", "topomark.reference.cli.main", *argv], cwd=cwd,
                                 stdin=subprocess.DEVNULL, stdout=fo, stderr=fe, env=env,
                                 preexec_fn=_limit_memory, start_new_session=True)
         try:
@@ -900,7 +900,7 @@ def test_fuzz_world_loader(corpus, data):
 @given(data=st.data())
 def test_fuzz_trace_parser_and_replay(corpus, data):
     """parse_trace then replay, with one line replaced: a result, InvalidInput (2) or CheckFailure (1) only."""
-    from topomark.reference.replay import parse_trace, replay
+    from topomark.reference.replay.replay import parse_trace, replay
     from topomark.spec.worldfile import load_world
     lines = corpus.trace.read_bytes().splitlines()
     k = data.draw(st.integers(0, len(lines) - 1), label="line index")
@@ -929,7 +929,7 @@ _VALID_MESSAGES = [b'{"type":"move","motion":1}', b'{"type":"drop","direction":0
                       st.text(max_size=200)))
 def test_fuzz_protocol_decode(line):
     """decode: a message dict, or ProtocolError; nothing else, and a short message."""
-    from topomark.reference.protocol import ProtocolError, decode
+    from topomark.reference.oracle.protocol import ProtocolError, decode
     text = line.decode("utf-8", "replace") if isinstance(line, bytes) else line
     try:
         assert isinstance(decode(text), dict)
@@ -940,7 +940,7 @@ def test_fuzz_protocol_decode(line):
 
 @pytest.mark.parametrize("item", list(PROTOCOL_LINES))
 def test_protocol_decode_refuses_corpus_line(item):
-    from topomark.reference.protocol import ProtocolError, decode
+    from topomark.reference.oracle.protocol import ProtocolError, decode
     text = PROTOCOL_LINES[item].decode("utf-8", "replace")
     if item == "big-int":  # well-formed (a move to a far exit): decode may accept it; the game refuses it
         try:

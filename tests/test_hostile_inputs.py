@@ -21,22 +21,22 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from topomark.reference import conformance
-from topomark.reference import generators as g
+from topomark.reference.oracle import conformance
+from topomark.reference.worlds import generators as g
 from topomark.spec.errors import InvalidInput, InvalidWorld
 from topomark.spec.signature import Signature
 from topomark.spec.world import MAX_DEGREE, MAX_EDGES, MAX_VERTICES, World, check_size
 from topomark.spec.worldfile import dumps_world, load_world, loads_world
 
 ROOT = Path(__file__).resolve().parents[1]
-CLIENT = [sys.executable, str(ROOT / "reference" / "examples" / "client.py")]
+CLIENT = [sys.executable, str(ROOT / "reference" / "oracle" / "examples" / "client.py")]
 TIMEOUT = 60  # a hang guard only
 DIGITS_4400 = "9" * 4400
 VALID = dumps_world(g.cycle(4))
 
 
 def cli(*argv, cwd=None, prelude: str = "") -> subprocess.CompletedProcess:
-    code = f"import sys\n{prelude}\nfrom topomark.reference.cli import main\nsys.exit(main(sys.argv[1:]))"
+    code = f"import sys\n{prelude}\nfrom topomark.reference.cli.main import main\nsys.exit(main(sys.argv[1:]))"
     return subprocess.run([sys.executable, "-c", code, *map(str, argv)], cwd=cwd, capture_output=True,
                           text=True, timeout=TIMEOUT)
 

@@ -12,12 +12,13 @@ from pathlib import Path
 
 import pytest
 
-from topomark.reference import generators as g
-from topomark.reference import runstore
-from topomark.reference.cmd_explore import _Progress
-from topomark.reference.explore import dump_trace, explore
-from topomark.reference.worldarg import resolve_world
-from topomark.reference.tracesink import FileSink, ListSink, RingSink, TeeSink
+from topomark.reference.worlds import generators as g
+from topomark.reference.bench import run_store as runstore
+from topomark.reference.cli.cmd_explore import _Progress
+from topomark.reference.run.explore import explore
+from topomark.reference.trace.records import dump_trace
+from topomark.reference.worlds.argument import resolve_world
+from topomark.reference.trace.sink import FileSink, ListSink, RingSink, TeeSink
 from topomark.spec.errors import InvalidInput
 
 SMALL = "lattice:rows=3,cols=3"
@@ -25,7 +26,7 @@ BENCH = ["bench", "random-20", "--graphs", "3", "--sizes", "15", "20", "--jobs",
 
 
 def cli(*argv, timeout=300):
-    return subprocess.run([sys.executable, "-m", "topomark.reference.cli", *map(str, argv)],
+    return subprocess.run([sys.executable, "-m", "topomark.reference.cli.main", *map(str, argv)],
                           capture_output=True, text=True, timeout=timeout)
 
 
@@ -118,8 +119,8 @@ def test_violation_shows_the_last_records_without_keeping_the_trace(tmp_path):
         import sys
         sys.path.insert(0, {str(Path(__file__).parent)!r})
         from faults_min import KeepsLoopDartInU
-        from topomark.reference import algorithms
-        from topomark.reference.cli import main
+        from topomark.reference.algorithms import explorer_classes as algorithms
+        from topomark.reference.cli.main import main
         algorithms.ALGORITHMS["basic"] = KeepsLoopDartInU
         sys.exit(main(["explore", "lattice:rows=3,cols=3", "--json", "--trace", {str(tmp_path / 't.jsonl')!r}]))
     """)
@@ -159,7 +160,7 @@ PEAK = textwrap.dedent("""
 def test_checked_exploration_without_trace_keeps_memory_small():
     """Measured: 50 MB peak for lattice-hole 30x30, checked (368 MB when the trace and every iteration's
     hypotheses were kept; 4.9 GB at 60x60).  2x headroom."""
-    proc = subprocess.run([sys.executable, "-c", PEAK, sys.executable, "-m", "topomark.reference.cli", "explore",
+    proc = subprocess.run([sys.executable, "-c", PEAK, sys.executable, "-m", "topomark.reference.cli.main", "explore",
                            "lattice-hole:rows=30,cols=30", "--json"], capture_output=True, text=True, timeout=600)
     code, peak_kb = map(int, proc.stdout.split())
     assert code == 0, proc.stderr
@@ -178,7 +179,7 @@ def _check_csv(path: Path) -> list[list[str]]:
 
 
 def test_concurrent_bench_on_one_directory_never_corrupts(tmp_path):
-    argv = [sys.executable, "-m", "topomark.reference.cli", *BENCH, "--out", str(tmp_path)]
+    argv = [sys.executable, "-m", "topomark.reference.cli.main", *BENCH, "--out", str(tmp_path)]
     procs = [subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True) for _ in range(2)]
     results = [(p.wait(timeout=300), p.stderr.read()) for p in procs]
     for code, err in results:

@@ -18,9 +18,9 @@ from pathlib import Path
 
 import pytest
 
-from topomark.reference.cli import main
-from topomark.reference.peer import TAIL_CHARS, TAIL_LINES, _Tail
-from topomark.reference.protocol import ProtocolError, decode
+from topomark.reference.cli.main import main
+from topomark.reference.oracle.peer import TAIL_CHARS, TAIL_LINES, _Tail
+from topomark.reference.oracle.protocol import ProtocolError, decode
 
 SLACK = 12.0  # seconds beyond --timeout a verdict may take (a hang guard, not a speed claim)
 
@@ -97,7 +97,7 @@ def hostile(tmp_path: Path, kind: str, *extra: str) -> tuple[list[str], Path]:
 
 def topomark(*args: str, timeout: float) -> tuple[subprocess.CompletedProcess, float]:
     started = time.monotonic()
-    proc = subprocess.run([sys.executable, "-m", "topomark.reference.cli", *args], capture_output=True, text=True,
+    proc = subprocess.run([sys.executable, "-m", "topomark.reference.cli.main", *args], capture_output=True, text=True,
                           timeout=timeout + 60)  # a hang guard far beyond the assertion below
     return proc, time.monotonic() - started
 
@@ -204,7 +204,7 @@ def test_a_stderr_flood_without_newlines_costs_bounded_memory_and_gets_a_verdict
             "print('RSS', resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)\n"
             "sys.exit(p.returncode)\n")
     started = time.monotonic()
-    proc = subprocess.run([sys.executable, "-c", code, sys.executable, "-m", "topomark.reference.cli",
+    proc = subprocess.run([sys.executable, "-c", code, sys.executable, "-m", "topomark.reference.cli.main",
                            "run-external", "cycle:n=4", "--message-timeout", "5", "--timeout", "8", "--", *cmd],
                           capture_output=True, text=True, timeout=120)
     assert time.monotonic() - started < 8 + SLACK
@@ -230,7 +230,7 @@ def test_the_stderr_tail_is_bounded_in_lines_and_characters():
 @pytest.mark.parametrize("signum", [signal.SIGTERM, signal.SIGHUP])
 def test_a_signal_to_topomark_kills_the_program_and_exits_128_plus_signum(tmp_path, signum):
     cmd, pids = hostile(tmp_path, "ignore-term")
-    proc = subprocess.Popen([sys.executable, "-m", "topomark.reference.cli", "run-external", "cycle:n=4",
+    proc = subprocess.Popen([sys.executable, "-m", "topomark.reference.cli.main", "run-external", "cycle:n=4",
                              "--message-timeout", "100", "--timeout", "100", "--", *cmd],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     try:

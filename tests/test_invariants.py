@@ -283,7 +283,7 @@ def test_changed_places_are_the_places_whose_marks_differ():
     random drops and pick-ups on one layer (each snapshot shares the unchanged places' marks with the last)."""
     import random
 
-    from topomark.reference.generators import lattice_hole
+    from topomark.reference.worlds.generators import lattice_hole
     from topomark.spec.invariants import _changed_places
     from topomark.spec.markerlayer import MarkerLayer
 

@@ -12,8 +12,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from topomark.reference import generators as g
-from topomark.reference.strategies import relabelled, rotated, worlds
+from topomark.reference.worlds import generators as g
+from topomark.reference.worlds.strategies import relabelled, rotated, worlds
 from topomark.spec.dartgraph import find_isomorphism_nx
 from topomark.spec.errors import Violation
 from topomark.spec.isomorphism import Witness, anchored, find_isomorphism, verify_witness

@@ -29,7 +29,7 @@ def test_every_class_kit_round_trips_through_the_protocol_form(name):
 @pytest.mark.parametrize("name", sorted(MARKER_CLASSES))
 def test_a_class_places_exactly_its_kit(name):
     """Every placement carries as many vertex and edge markers as the class's kit, of its directionality."""
-    from topomark.reference.generators import wheel_a
+    from topomark.reference.worlds.generators import wheel_a
     cls = MARKER_CLASSES[name]
     for world in cls.placements(wheel_a()):
         vertex = sum(m.count for m in world.markers if hasattr(m, "at"))
@@ -114,7 +114,7 @@ def test_a_pool_of_two_serves_one_vertex_and_one_edge_drop_and_refuses_a_third()
 
 
 def _sim(kit):
-    from topomark.reference.simulator import Simulator
+    from topomark.reference.run.simulator import Simulator
     from topomark.spec.world import Start, World
     return Simulator(World({"a": ["b", "c"], "b": ["c", "a"], "c": ["a", "b"]}, start=Start("a", "b")),
                      ("a", 0), kit)
@@ -144,12 +144,12 @@ def test_a_kit_without_a_pool_still_refuses_the_other_kind_as_a_violation():
 
 
 def test_the_example_provider_draws_a_pool_after_the_kinds_own_markers():
-    """reference/examples/provider.py (what external providers copy) reads the ``*-either`` pool as the
+    """reference/oracle/examples/provider.py (what external providers copy) reads the ``*-either`` pool as the
     simulator does: the kind's own markers first, then the pool, and refuses a drop past both."""
     import importlib.util
     from pathlib import Path
     import topomark.reference as ref
-    path = Path(ref.__file__).parent / "examples" / "provider.py"
+    path = Path(ref.__file__).parent / "oracle" / "examples" / "provider.py"
     spec = importlib.util.spec_from_file_location("example_provider", path)
     mod = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(mod)

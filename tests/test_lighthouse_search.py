@@ -9,15 +9,15 @@ import json
 
 import pytest
 
-from topomark.reference import generators as g
-from topomark.reference.algorithms import ALGORITHMS
-from topomark.reference.cli import main
-from topomark.reference.explore import explore
+from topomark.reference.worlds import generators as g
+from topomark.reference.algorithms.explorer_classes import ALGORITHMS
+from topomark.reference.cli.main import main
+from topomark.reference.run.explore import explore
 from topomark.reference.explorers import lighthouse_search
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES
 from topomark.reference.explorers.probing import aperiodic, identify
-from topomark.reference.replay import replay
-from topomark.reference.simulator import Simulator
+from topomark.reference.replay.replay import replay
+from topomark.reference.run.simulator import Simulator
 from topomark.spec.errors import AlgorithmFailed
 from topomark.spec.isomorphism import find_isomorphism
 from topomark.spec.world import Start, World

@@ -10,15 +10,15 @@ from collections import Counter
 
 import pytest
 
-from topomark.reference.algorithms import ALGORITHMS
+from topomark.reference.algorithms.explorer_classes import ALGORITHMS
 from topomark.reference.explorers import lighthouses as lighthouses_module
 from topomark.reference.explorers import probing as probing_module
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES, Lighthouse
 from topomark.reference.explorers.probing import ProbingRobot
 from topomark.spec.mapstate import PartialMap
 from topomark.spec.signature import Signature
-from topomark.reference.generators import generate, wheel_a, wheel_b
-from topomark.reference.simulator import Simulator
+from topomark.reference.worlds.generators import generate, wheel_a, wheel_b
+from topomark.reference.run.simulator import Simulator
 from topomark.spec.errors import CheckFailure
 from topomark.spec.isomorphism import find_isomorphism
 from topomark.spec.kit import Kit, MarkerOp, ThreadOp
@@ -26,9 +26,9 @@ from topomark.spec.signature import signature_at
 from topomark.spec.marker import EdgeMarker, VertexMarker
 from topomark.spec.world import World
 from topomark.spec.worldfile import dumps_world, load_world
-from topomark.reference.cli import main
-from topomark.reference.explore import explore
-from topomark.reference.local_places import unique_place
+from topomark.reference.cli.main import main
+from topomark.reference.run.explore import explore
+from topomark.reference.run.local_places import unique_place
 
 WORLDS = {
     "lattice-hole": lambda: generate("lattice-hole", rows=4, cols=5, seed=3),
@@ -43,7 +43,7 @@ WORLDS = {
 @functools.cache
 def _holds(world: str, name: str) -> bool:
     """Whether the lighthouse must map the world: always, but §5.2.1's only where the place they chose is unique
-    (L1344, L1346; reference/local_places.py).  Elsewhere any outcome but a crash (tests/test_local_lighthouses.py)."""
+    (L1344, L1346; reference/run/local_places.py).  Elsewhere any outcome but a crash (tests/test_local_lighthouses.py)."""
     light = LIGHTHOUSES[name]
     if light.certain:
         return True
@@ -211,7 +211,7 @@ def test_a_probing_lighthouse_keeps_lemma_1_with_its_probed_perception():
 
 
 def test_replay_rejects_a_probe_move_where_no_probe_belongs():
-    from topomark.reference.replay import replay
+    from topomark.reference.replay.replay import replay
 
     w = WORLDS["complete-hole"]()
     bare = World(w.rotation, (), w.start)

@@ -12,19 +12,19 @@ import networkx as nx
 import pytest
 from networkx.generators.atlas import graph_atlas_g
 
-from topomark.reference import generators as g
-from topomark.reference import local_places
-from topomark.reference.algorithms import ALGORITHMS
-from topomark.reference.cli import main
-from topomark.reference.embedding import from_networkx
-from topomark.reference.explore import explore
+from topomark.reference.worlds import generators as g
+from topomark.reference.run import local_places
+from topomark.reference.algorithms.explorer_classes import ALGORITHMS
+from topomark.reference.cli.main import main
+from topomark.reference.worlds.embedding import from_networkx
+from topomark.reference.run.explore import explore
 from topomark.reference.explorers import local_lighthouses
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES
 from topomark.reference.explorers.local_lighthouses import first_of_degree, matches_list
 from topomark.reference.explorers.probing import aperiodic
-from topomark.reference.local_places import neighbour_views, unique_place
-from topomark.reference.replay import replay
-from topomark.reference.simulator import Simulator
+from topomark.reference.run.local_places import neighbour_views, unique_place
+from topomark.reference.replay.replay import replay
+from topomark.reference.run.simulator import Simulator
 from topomark.spec.errors import AlgorithmFailed
 from topomark.spec.kit import Kit
 from topomark.spec.world import Start, World

@@ -6,8 +6,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from topomark.reference.generators import lattice_hole, wheel_a
-from topomark.reference.simulator import Simulator
+from topomark.reference.worlds.generators import lattice_hole, wheel_a
+from topomark.reference.run.simulator import Simulator
 from topomark.spec.errors import CheckFailure, InvalidInput
 from topomark.spec.kit import Kit, MarkerOp
 from topomark.spec.markerlayer import MarkerLayer, apply_op
@@ -127,8 +127,8 @@ def test_the_layers_snapshot_is_the_validated_world(algorithm):
     """MarkerLayer.world() copies the layer's marks without re-validating them (World.of_layer): after every
     drop of a whole run they are what a world built and checked from the same markers has, and the layer's
     running count (``lying``, what the marker-budget check reads) is the sum of their counts."""
-    from topomark.reference import generators
-    from topomark.reference.explore import explore
+    from topomark.reference.worlds import generators
+    from topomark.reference.run.explore import explore
     from topomark.spec.world import World
     checked = []
 
@@ -139,7 +139,7 @@ def test_the_layers_snapshot_is_the_validated_world(algorithm):
             full = World(snap.rotation, snap.markers, snap.start)
             checked.append(all(snap.vertex_mark(v) == full.vertex_mark(v) and snap.dart_marks(v) == full.dart_marks(v)
                                for v in full.vertices) and self.layer.lying == sum(m.count for m in full.markers))
-    import topomark.reference.explore as ex
+    import topomark.reference.run.explore as ex
     real, ex.Simulator = ex.Simulator, Watch
     try:
         assert explore(generators.complete_hole(6, 0.2, 3), algorithm, record=False).outcome == "correct"
@@ -154,8 +154,8 @@ def test_what_the_robot_senses_is_what_the_layer_shows_now(algorithm):
     """The layer keeps what was sensed per vertex until its marks or the thread change (MarkerLayer.sensed):
     after every move of a whole run — drops, pick-ups, a thread laid and rewound — the signature the robot
     got is the one computed afresh from the layer."""
-    from topomark.reference import generators
-    from topomark.reference.explore import explore
+    from topomark.reference.worlds import generators
+    from topomark.reference.run.explore import explore
     from topomark.spec.signature import signature_at
     checked = []
 
@@ -164,7 +164,7 @@ def test_what_the_robot_senses_is_what_the_layer_shows_now(algorithm):
             sig = super()._move(motion, purpose)
             checked.append(sig == signature_at(self.layer, *self.state))
             return sig
-    import topomark.reference.explore as ex
+    import topomark.reference.run.explore as ex
     real, ex.Simulator = ex.Simulator, Watch
     try:
         assert explore(generators.complete_hole(6, 0.2, 3), algorithm, record=False).outcome == "correct"

@@ -10,11 +10,11 @@ import sys
 
 import pytest
 
-from topomark.reference.cli import main
-from topomark.reference.explore import explore
+from topomark.reference.cli.main import main
+from topomark.reference.run.explore import explore
 from topomark.reference.explorers.counted_markers import EdgeCounts, sum_to
-from topomark.reference.generators import generate
-from topomark.reference.registry import REGISTRY, variant
+from topomark.reference.worlds.generators import generate
+from topomark.reference.algorithms.registry import REGISTRY, variant
 from topomark.spec.world import Start, World
 
 ALGORITHMS = ("case-3a", "case-3b", "case-dv-sum")
@@ -99,7 +99,7 @@ def test_a_misidentified_loop_edge_is_caught_by_the_checker():
 
 
 def test_the_cli_runs_case_3b_and_refuses_a_count_below_one(capsys):
-    run = subprocess.run([sys.executable, "-m", "topomark.reference.cli", "explore", "lattice-hole:rows=4,cols=4,seed=2",
+    run = subprocess.run([sys.executable, "-m", "topomark.reference.cli.main", "explore", "lattice-hole:rows=4,cols=4,seed=2",
                           "--algorithm", "case-3b", "--json"], capture_output=True, text=True, timeout=120)
     data = json.loads(run.stdout)
     assert run.returncode == 0 and (data["outcome"], data["verified"]) == ("correct", True)
@@ -155,8 +155,8 @@ def test_the_extensions_fail_when_short_of_markers(name):
 def test_the_signatures_a_marker_walk_keeps_are_what_its_map_shows(algorithm, monkeypatch):
     """MarkerWalk.map_signature keeps M's signatures until M records a mark at the vertex: every one it returns
     over a whole run is the one computed afresh from M."""
-    from topomark.reference import generators
-    from topomark.reference.explore import explore
+    from topomark.reference.worlds import generators
+    from topomark.reference.run.explore import explore
     from topomark.reference.explorers.marker_walk import MarkerWalk
     from topomark.spec.signature import signature_at
     kept, checked = MarkerWalk.map_signature, []

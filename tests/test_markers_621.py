@@ -14,14 +14,14 @@ import pytest
 from hypothesis import given, settings
 
 from families import family_worlds
-from topomark.reference import generators as g
-from topomark.reference.cli import main
-from topomark.reference.explore import explore
+from topomark.reference.worlds import generators as g
+from topomark.reference.cli.main import main
+from topomark.reference.run.explore import explore
 from topomark.reference.explorers import closest_first, edge_footprints
-from topomark.reference.generators import generate
-from topomark.reference.policies import Policies
-from topomark.reference.registrations import markers_621
-from topomark.reference.registry import REGISTRY
+from topomark.reference.worlds.generators import generate
+from topomark.reference.explorers.policies import Policies
+from topomark.reference.algorithms.registrations import markers_621
+from topomark.reference.algorithms.registry import REGISTRY
 from topomark.spec.kit import Kit
 from topomark.spec.world import World
 

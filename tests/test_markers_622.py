@@ -10,12 +10,12 @@ import json
 
 import pytest
 
-from topomark.reference import generators as g
-from topomark.reference.cli import main
-from topomark.reference.explore import explore
+from topomark.reference.worlds import generators as g
+from topomark.reference.cli.main import main
+from topomark.reference.run.explore import explore
 from topomark.reference.explorers import edge_info
-from topomark.reference.registrations import markers_622
-from topomark.reference.registry import REGISTRY
+from topomark.reference.algorithms.registrations import markers_622
+from topomark.reference.algorithms.registry import REGISTRY
 from topomark.spec.signature import signature_at
 
 NAME = "case-1b-edgeinfo"

@@ -12,14 +12,14 @@ from pathlib import Path
 import pytest
 
 from topomark.proofs.enumerate import embedded_worlds
-from topomark.reference.cli import main
-from topomark.reference.explore import explore
+from topomark.reference.cli.main import main
+from topomark.reference.run.explore import explore
 from topomark.reference.explorers.case5_v1 import VertexCountsThenLighthouse
 from topomark.reference.explorers.case5_v2 import E0, VertexEdgeThenLighthouse
 from topomark.reference.explorers.counted_markers import sum_to
-from topomark.reference.generators import generate
-from topomark.reference.policies import Policies
-from topomark.reference.registry import REGISTRY, variant
+from topomark.reference.worlds.generators import generate
+from topomark.reference.explorers.policies import Policies
+from topomark.reference.algorithms.registry import REGISTRY, variant
 from topomark.spec.isomorphism import find_isomorphism
 from topomark.spec.world import Start, World
 from topomark.spec.worldfile import world_from_json
@@ -193,7 +193,7 @@ def test_case_0_candidates_are_what_the_strategy_cannot_tell_apart():
     assert loops and len(loops[0].candidates) == 3
 
 
-@pytest.mark.parametrize("module", ["registrations.markers_case5", "explorers.case5_v1", "explorers.case5_v2",
+@pytest.mark.parametrize("module", ["algorithms.registrations.markers_case5", "explorers.case5_v1", "explorers.case5_v2",
                                     "explorers.case5_phase2", "explorers.case0_every_vertex"])
 def test_docstring_examples(module):
     import doctest
@@ -205,9 +205,9 @@ def test_nearest_agrees_with_a_whole_breadth_first_search():
     """policies.nearest (Case 5's lighthouse paths) stops the search after the nearest wanted vertex's layer:
     the vertex is the least-numbered at the least distance of a whole bfs, and its parents are bfs's."""
     import random
-    from topomark.reference import generators
-    from topomark.reference.explore import explore
-    from topomark.reference.policies import bfs, nearest
+    from topomark.reference.worlds import generators
+    from topomark.reference.run.explore import explore
+    from topomark.reference.explorers.policies import bfs, nearest
     out = explore(generators.lattice_hole(5, 6, 0.1, "vertices", 2), "basic", record=False)
     S = out.explorer.S
     rng = random.Random(5)

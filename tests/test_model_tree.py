@@ -15,13 +15,13 @@ from dataclasses import replace
 
 import pytest
 
-from topomark.reference import generators
-from topomark.reference.explore import explore
+from topomark.reference.worlds import generators
+from topomark.reference.run.explore import explore
 from topomark.reference.explorers.model_shapes import Shape
 from topomark.reference.explorers.model_tree import ModelTreeExplorer
 from topomark.reference.explorers.traversal_map import TraversalMap
-from topomark.reference.registrations.model_tree import check_cues, summary, write_models
-from topomark.reference.registry import algorithm_spec, variant
+from topomark.reference.algorithms.registrations.model_tree import check_cues, summary, write_models
+from topomark.reference.algorithms.registry import algorithm_spec, variant
 from topomark.spec.errors import InvalidInput
 from topomark.spec.isomorphism import find_isomorphism
 from topomark.spec.world import World
@@ -166,7 +166,7 @@ def test_registration_and_cli():
     assert (spec.thesis, spec.deterministic, spec.family, spec.uses_lighthouse) == (
         "§5.2.2, Algorithm 5.1", False, "robot", False)
     assert spec.checks == ("models", "marker-budget", "isomorphism") and spec.marker_bound_fn(9, 9) == 0
-    run = subprocess.run([sys.executable, "-m", "topomark.reference.cli", "explore", "cycle:n=5", "--algorithm",
+    run = subprocess.run([sys.executable, "-m", "topomark.reference.cli.main", "explore", "cycle:n=5", "--algorithm",
                           "model-tree", "--cue-n", "5", "--json"], capture_output=True, text=True, timeout=120)
     data = json.loads(run.stdout)
     assert run.returncode == 0 and (data["outcome"], data["verified"]) == ("correct", True)

@@ -14,13 +14,14 @@ import pytest
 from hypothesis import given, settings
 
 from families import family_worlds
-from topomark.reference import bench_movable, generators
-from topomark.reference.cli import main
-from topomark.reference.explore import explore
+from topomark.reference.bench.measure import movable as bench_movable
+from topomark.reference.worlds import generators
+from topomark.reference.cli.main import main
+from topomark.reference.run.explore import explore
 from topomark.reference.explorers import movable_marker
 from topomark.reference.explorers.movable_marker import MovableMarkerExplorer
-from topomark.reference.registrations import movable
-from topomark.reference.registry import algorithm_spec, variant
+from topomark.reference.algorithms.registrations import movable
+from topomark.reference.algorithms.registry import algorithm_spec, variant
 from topomark.spec.world import World
 
 ALGORITHMS = ("dudek", "dudek-directional")

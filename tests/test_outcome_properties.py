@@ -13,7 +13,7 @@ from __future__ import annotations
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from topomark.reference.explore import explore
+from topomark.reference.run.explore import explore
 from topomark.spec.dartgraph import find_isomorphism_nx
 from topomark.spec.errors import OUTCOMES
 from topomark.spec.world import World

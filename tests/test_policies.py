@@ -1,4 +1,4 @@
-"""The searches that serve the edge policy and the walks (reference/policies.py) against a whole breadth-first
+"""The searches that serve the edge policy and the walks (reference/explorers/policies.py) against a whole breadth-first
 search, and edgeINFO's matching entries against their definition, on partial maps part-way explored.
 
 The shortcuts (a search stopped at the nearest end in U, or at the walk's target; entries anchored at the first
@@ -10,9 +10,9 @@ import random
 
 import pytest
 
-from topomark.reference import generators
+from topomark.reference.worlds import generators
 from topomark.reference.explorers.edge_info import matching_darts
-from topomark.reference.policies import (Policies, bfs, bfs_preorder, in_preorder, open_ends_beyond,
+from topomark.reference.explorers.policies import (Policies, bfs, bfs_preorder, in_preorder, open_ends_beyond,
                                          parents_toward)
 from topomark.spec.mapstate import PartialMap
 from topomark.spec.signature import Signature, signature_at

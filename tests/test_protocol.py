@@ -12,11 +12,12 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from topomark.spec.kit import MarkerOp
-from topomark.reference import generators as g
-from topomark.reference.cli import main
-from topomark.reference.explore import explore
-from topomark.reference.external import REASONS, Limits, run_external
-from topomark.reference.protocol import ProtocolError, decode, map_to_snapshot, snapshot_to_map
+from topomark.reference.worlds import generators as g
+from topomark.reference.cli.main import main
+from topomark.reference.run.explore import explore
+from topomark.reference.oracle.run_external import REASONS, Limits, run_external
+from topomark.reference.oracle.protocol import ProtocolError, decode
+from topomark.reference.oracle.snapshot_wire import map_to_snapshot, snapshot_to_map
 from topomark.spec.errors import CheckFailure, InvalidInput
 from topomark.spec.invariants import check_invariants, lighthouse_anchor
 from topomark.spec.marker import VertexMarker
@@ -24,7 +25,7 @@ from topomark.spec.world import Start, World
 from topomark.spec.worldfile import dumps_world
 
 ROOT = Path(__file__).resolve().parents[1]
-CLIENT = str(ROOT / "reference" / "examples" / "client.py")
+CLIENT = str(ROOT / "reference" / "oracle" / "examples" / "client.py")
 WRONG = str(Path(__file__).resolve().parent / "clients" / "wrong_client.py")
 TRIANGLE = World({"a": ["b", "c"], "b": ["c", "a"], "c": ["a", "b"]}, (), Start("a", "b"))
 
@@ -95,7 +96,7 @@ darts = st.one_of(st.none(), st.lists(st.integers(-1, 4), min_size=2, max_size=2
        st.lists(darts, max_size=5))
 def test_any_snapshot_is_judged_never_crashes(exits, marks, U):
     """Whatever a program sends as a snapshot, the world side gives a verdict (or accepts it) - no exception."""
-    from topomark.reference.external import _Fail, _Session
+    from topomark.reference.oracle.run_external import _Fail, _Session
 
     class Quiet:
         def send(self, msg, timeout=None):

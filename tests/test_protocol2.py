@@ -11,15 +11,15 @@ from pathlib import Path
 
 import pytest
 
-from topomark.reference import generators as g
-from topomark.reference.cli import main
-from topomark.reference.drive import drive
-from topomark.reference.explore import explore
+from topomark.reference.worlds import generators as g
+from topomark.reference.cli.main import main
+from topomark.reference.oracle.drive import drive
+from topomark.reference.run.explore import explore
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES
-from topomark.reference.external import START_ANCHOR, run_external
-from topomark.reference.protocol import Expect, ProtocolError, decode
-from topomark.reference.snapshotwire import map_to_snapshot, snapshot_to_map
-from topomark.reference.wireops import op_from_message, op_to_message
+from topomark.reference.oracle.run_external import START_ANCHOR, run_external
+from topomark.reference.oracle.protocol import Expect, ProtocolError, decode
+from topomark.reference.oracle.snapshot_wire import map_to_snapshot, snapshot_to_map
+from topomark.reference.oracle.marker_messages import op_from_message, op_to_message
 from topomark.spec.errors import CheckFailure
 from topomark.spec.kit import Kit, MarkerOp
 from topomark.spec.mapstate import PartialMap
@@ -27,7 +27,7 @@ from topomark.spec.world import DartMark, Start, World
 from topomark.spec.worldfile import dumps_world
 
 ROOT = Path(__file__).resolve().parents[1]
-EXAMPLES = ROOT / "reference" / "examples"
+EXAMPLES = ROOT / "reference" / "oracle" / "examples"
 CLIENT, CLIENT2, PROVIDER = (str(EXAMPLES / name) for name in ("client.py", "client2.py", "provider.py"))
 EDGE_KIT = Kit(edge=1, directional=True)
 TRIANGLE = World({"a": ["b", "c"], "b": ["c", "a"], "c": ["a", "b"]}, (), Start("a", "b"))

@@ -1,4 +1,4 @@
-"""The algorithm registry (reference/registry.py) and ``topomark algorithms``."""
+"""The algorithm registry (reference/algorithms/registry.py) and ``topomark algorithms``."""
 
 from __future__ import annotations
 
@@ -7,11 +7,11 @@ import json
 
 import pytest
 
-from topomark.reference import algorithms, bounds, registry
-from topomark.reference.cli import main
-from topomark.reference.explore import explore
-from topomark.reference.generators import generate
-from topomark.reference.registry import CHECKS, REGISTRY
+from topomark.reference.algorithms import explorer_classes as algorithms, bounds, registry
+from topomark.reference.cli.main import main
+from topomark.reference.run.explore import explore
+from topomark.reference.worlds.generators import generate
+from topomark.reference.algorithms.registry import CHECKS, REGISTRY
 from topomark.spec.world import World
 
 REQUIRED = {"name", "thesis", "kit", "bound", "markers", "deterministic", "options", "checks"}

@@ -7,12 +7,13 @@ import json
 import pytest
 
 from faults import FAULTS
-from topomark.reference import algorithms
-from topomark.reference import generators as g
-from topomark.reference.cli import main
-from topomark.reference.explore import dump_trace, explore
-from topomark.reference.policies import Policies
-from topomark.reference.replay import parse_trace, replay
+from topomark.reference.algorithms import explorer_classes as algorithms
+from topomark.reference.worlds import generators as g
+from topomark.reference.cli.main import main
+from topomark.reference.run.explore import explore
+from topomark.reference.trace.records import dump_trace
+from topomark.reference.explorers.policies import Policies
+from topomark.reference.replay.replay import parse_trace, replay
 from topomark.spec.errors import InvalidInput
 from topomark.spec.world import Start, World
 from topomark.spec.worldfile import dumps_world

@@ -15,11 +15,13 @@ import os
 import pytest
 
 from faults import FAULTS
-from topomark.reference import algorithms, tracefile
-from topomark.reference import generators as g
-from topomark.reference.cli import main
-from topomark.reference.explore import dump_trace, explore
-from topomark.reference.policies import Policies
+from topomark.reference.algorithms import explorer_classes as algorithms
+from topomark.reference.trace import reader as tracefile
+from topomark.reference.worlds import generators as g
+from topomark.reference.cli.main import main
+from topomark.reference.run.explore import explore
+from topomark.reference.trace.records import dump_trace
+from topomark.reference.explorers.policies import Policies
 from topomark.spec.invariants import check_lemma1
 from topomark.spec.signature import Signature
 from topomark.spec.world import Start

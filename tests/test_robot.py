@@ -6,8 +6,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from topomark.reference import generators as g
-from topomark.reference.strategies import worlds
+from topomark.reference.worlds import generators as g
+from topomark.reference.worlds.strategies import worlds
 from topomark.spec.errors import InvalidInput
 from topomark.spec.marker import VertexMarker
 from topomark.spec.robot import exit_of, perceive, run, sense, step

@@ -11,7 +11,7 @@ Three layers:
 3. **a property**: within the test budget hypothesis finds a world from the
    thesis's families on which the checker catches each fault.
 
-"Caught" means the :class:`~topomark.reference.checker.Checker` reported a
+"Caught" means the :class:`~topomark.reference.run.checker.Checker` reported a
 violation naming the iteration, not that the faulty explorer tripped over
 its own bookkeeping or crashed.
 """
@@ -26,8 +26,8 @@ from hypothesis import HealthCheck, Phase, find, settings
 
 from faults import FAULTS
 from families import family_worlds
-from topomark.reference import algorithms
-from topomark.reference.explore import explore
+from topomark.reference.algorithms import explorer_classes as algorithms
+from topomark.reference.run.explore import explore
 from topomark.spec.world import Start, World
 
 # (rotation, start) literals; the comment is (n, m).  Found by hypothesis.find over
@@ -150,7 +150,7 @@ if __name__ == "__main__":  # re-run the one-off witness search (minutes): pytho
     import json
     import random
 
-    from topomark.reference.strategies import worlds
+    from topomark.reference.worlds.strategies import worlds
 
     for name, cls in FAULTS.items():
         best = None

@@ -6,7 +6,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from topomark.reference.strategies import worlds
+from topomark.reference.worlds.strategies import worlds
 from topomark.spec.errors import InvalidInput
 from topomark.spec.marker import EdgeMarker, VertexMarker
 from topomark.spec.signature import Signature, depends_on_entry, signature_at

@@ -14,18 +14,18 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from families import family_worlds
-from topomark.reference.algorithms import ALGORITHMS
-from topomark.reference.registry import variant
-from topomark.reference.explore import explore
+from topomark.reference.algorithms.explorer_classes import ALGORITHMS
+from topomark.reference.algorithms.registry import variant
+from topomark.reference.run.explore import explore
 from topomark.reference.explorers.algorithm31 import LighthouseExplorer
 from topomark.reference.explorers.compositions import ENHANCEMENTS, EXPLORERS
 from topomark.reference.explorers.enhanced import EnhancedExplorer, Enhancement, Technique
 from topomark.reference.explorers.expansion import ExpandedSignaturesOfCurrentPlace, ExpandedSignaturesOfNewVertices
 from topomark.reference.explorers.overlap import OverlapStage1, OverlapStage2
 from topomark.reference.explorers.tracing import ExecutedPathsOnS, ExecutedPathsOnSAndUnknownPlaces
-from topomark.reference.generators import generate
-from topomark.reference.policies import EDGE_POLICIES, HYPOTHESIS_POLICIES, PATH_POLICIES, Policies
-from topomark.reference.simulator import Simulator
+from topomark.reference.worlds.generators import generate
+from topomark.reference.explorers.policies import EDGE_POLICIES, HYPOTHESIS_POLICIES, PATH_POLICIES, Policies
+from topomark.reference.run.simulator import Simulator
 from topomark.spec.world import World
 
 policies = st.builds(Policies, st.sampled_from(EDGE_POLICIES), st.sampled_from(HYPOTHESIS_POLICIES),

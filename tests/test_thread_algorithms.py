@@ -1,4 +1,4 @@
-"""The thread algorithms of §6.3 (reference/explorers/threads_*.py, reference/registrations/threads.py):
+"""The thread algorithms of §6.3 (reference/explorers/threads_*.py, reference/algorithms/registrations/threads.py):
 carried l = ε (L2032–L2036), Algorithm 6.7 (l = c(G)), the knot thread (l ≫ m, Figure 6.20) and Algorithm 6.8
 (explore-explore, --thread-length)."""
 
@@ -9,14 +9,16 @@ import doctest
 import pytest
 from hypothesis import given, settings
 
-from topomark.reference import bench_threads, generators
-from topomark.reference.cli import main
-from topomark.reference.explore import explore
+from topomark.reference.bench.measure import thread_length as bench_threads
+
+from topomark.reference.worlds import generators
+from topomark.reference.cli.main import main
+from topomark.reference.run.explore import explore
 from topomark.reference.explorers import threads_carried, threads_explore, threads_knots
-from topomark.reference.policies import Policies
-from topomark.reference.registrations import threads
-from topomark.reference.registry import algorithm_spec, variant
-from topomark.reference.simulator import Simulator
+from topomark.reference.explorers.policies import Policies
+from topomark.reference.algorithms.registrations import threads
+from topomark.reference.algorithms.registry import algorithm_spec, variant
+from topomark.reference.run.simulator import Simulator
 from topomark.spec.signature import Signature
 from topomark.spec.world import Start, World
 

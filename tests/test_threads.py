@@ -11,19 +11,20 @@ import jsonschema
 import pytest
 from hypothesis import example, given, settings, strategies as st
 
-from topomark.reference.algorithms import ALGORITHMS
-from topomark.reference.cli import main
-from topomark.reference.divergence import Diverged
-from topomark.reference.explore import dump_trace, explore
+from topomark.reference.algorithms.explorer_classes import ALGORITHMS
+from topomark.reference.cli.main import main
+from topomark.reference.replay.divergence import Diverged
+from topomark.reference.run.explore import explore
+from topomark.reference.trace.records import dump_trace
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES
-from topomark.reference.external import run_external
-from topomark.reference.generators import generate
-from topomark.reference.protocol import Expect, decode, encode
-from topomark.reference.replay import parse_trace
-from topomark.reference.robotlayer import RobotLayer
-from topomark.reference.simulator import Simulator
-from topomark.reference.snapshotwire import map_to_snapshot, snapshot_to_map
-from topomark.reference.wireops import op_from_message, op_to_message
+from topomark.reference.oracle.run_external import run_external
+from topomark.reference.worlds.generators import generate
+from topomark.reference.oracle.protocol import Expect, decode, encode
+from topomark.reference.replay.replay import parse_trace
+from topomark.reference.replay.robot_layer import RobotLayer
+from topomark.reference.run.simulator import Simulator
+from topomark.reference.oracle.snapshot_wire import map_to_snapshot, snapshot_to_map
+from topomark.reference.oracle.marker_messages import op_from_message, op_to_message
 from topomark.spec import thread as thread_module
 from topomark.spec.errors import CheckFailure, InvalidInput, InvalidWorld
 from topomark.spec.isomorphism import find_isomorphism

@@ -14,14 +14,15 @@ import json
 
 import pytest
 
-from topomark.reference import generators as g
-from topomark.reference.algorithms import ALGORITHMS
-from topomark.reference.cli import main
-from topomark.reference.explore import dump_trace, explore
+from topomark.reference.worlds import generators as g
+from topomark.reference.algorithms.explorer_classes import ALGORITHMS
+from topomark.reference.cli.main import main
+from topomark.reference.run.explore import explore
+from topomark.reference.trace.records import dump_trace
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES
-from topomark.reference.replay import parse_trace, replay
-from topomark.reference.robotlayer import marker_op
-from topomark.reference.simulator import Simulator
+from topomark.reference.replay.replay import parse_trace, replay
+from topomark.reference.replay.robot_layer import marker_op
+from topomark.reference.run.simulator import Simulator
 from topomark.spec.kit import Kit, MarkerOp
 from topomark.spec.world import Start, World
 from topomark.spec.worldfile import dumps_world

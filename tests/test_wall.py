@@ -1,11 +1,11 @@
-"""The wall between explorer and truth is structural (issue: the reference explorer).
+"""The wall between explorer and truth is structural.
 
 Every module in ``reference/explorers/`` (found by listing the folder, so a
-new explorer is covered without editing this file) and the two interface
-modules it is handed (the robot and the policies) may import only the spec's
-signature, map-state, kit and error modules, each other, and the robot and
-policy modules; never the world, the simulator, the checker or anything that
-can reach the truth.
+new explorer is covered without editing this file; the robot interface and
+the policies it is handed live there too) may import only the spec's
+signature, map-state, kit and error modules and each other; never the world,
+the simulator, the checker or anything that can reach the truth.  The layering
+of the whole package is tested in ``tests/test_layers.py``.
 """
 
 from __future__ import annotations
@@ -15,19 +15,17 @@ from pathlib import Path
 
 import pytest
 
-from topomark.reference import generators
-from topomark.reference.robot import Robot
-from topomark.reference.simulator import Simulator
+from topomark.reference.worlds import generators
+from topomark.reference.explorers.robot import Robot
+from topomark.reference.run.simulator import Simulator
 
-REFERENCE = Path(__file__).resolve().parents[1] / "reference"
-EXPLORERS = REFERENCE / "explorers"
-INTERFACE_MODULES = ["robot.py", "policies.py"]  # what explorers are handed: the robot, the open choices
-EXPLORER_MODULES = INTERFACE_MODULES + sorted(f"explorers/{p.name}" for p in EXPLORERS.glob("*.py"))
-SIBLINGS = {f".{p.stem}" for p in EXPLORERS.glob("*.py") if p.stem != "__init__"}  # any module of the folder
+ROOT = Path(__file__).resolve().parents[1]
+EXPLORERS = ROOT / "reference" / "explorers"
+EXPLORER_MODULES = sorted(p.name for p in EXPLORERS.glob("*.py"))
+SIBLINGS = {f"topomark.reference.explorers.{p.stem}" for p in EXPLORERS.glob("*.py") if p.stem != "__init__"}
 ALLOWED = {
     "__future__", "dataclasses", "typing", "collections",
     "topomark.spec.signature", "topomark.spec.mapstate", "topomark.spec.errors", "topomark.spec.kit",
-    ".policies", "..policies", "..robot",
 } | SIBLINGS
 
 
@@ -43,14 +41,15 @@ def imports(path: Path) -> set[str]:
 
 @pytest.mark.parametrize("name", EXPLORER_MODULES)
 def test_explorer_modules_import_nothing_that_sees_the_world(name):
-    bad = imports(REFERENCE / name) - ALLOWED
-    assert not bad, f"{name} imports {bad}"
+    bad = imports(EXPLORERS / name) - ALLOWED
+    assert not bad, f"explorers/{name} imports {bad}"
 
 
 def test_the_contract_rejects_a_forbidden_import(tmp_path):
     sneaky = tmp_path / "sneaky.py"
-    sneaky.write_text("from .simulator import Simulator\nimport topomark.spec.world\n")
-    assert imports(sneaky) - ALLOWED == {".simulator", "topomark.spec.world"}
+    sneaky.write_text("from .simulator import Simulator\nimport topomark.spec.world\n"
+                      "from topomark.reference.run.checker import Checker\n")
+    assert imports(sneaky) - ALLOWED == {".simulator", "topomark.spec.world", "topomark.reference.run.checker"}
 
 
 def test_robot_exposes_only_motions_perception_and_markers():

@@ -8,8 +8,8 @@ import jsonschema
 import pytest
 from hypothesis import given, settings
 
-from topomark.reference import generators as g
-from topomark.reference.strategies import worlds
+from topomark.reference.worlds import generators as g
+from topomark.reference.worlds.strategies import worlds
 from topomark.spec.errors import InvalidWorld
 from topomark.spec.marker import EdgeMarker, VertexMarker
 from topomark.spec.world import Start, World

@@ -13,7 +13,7 @@ from topomark.proofs.bench_z3 import language_key
 from topomark.proofs.drawing import clockwise_ok, layout, pair_svg, save_pair
 from topomark.proofs.enumerate import embedded_worlds
 from topomark.spec.markerclass import MARKER_CLASSES
-from topomark.reference.cli import main
+from topomark.reference.cli.main import main
 from topomark.spec.errors import CheckFailure, InvalidInput
 from topomark.spec.isomorphism import find_isomorphism
 from topomark.spec.robot import perceive

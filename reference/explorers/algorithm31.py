@@ -32,7 +32,7 @@ hook                 where in the listing                                       
 ``after_join``       after line 25 or 28 (and the marker's join): S augmented        Alg. 4.3 lines 36–37 (T)
 ===================  ==============================================================  ==========================
 
-The explorer sees only a :class:`~topomark.reference.robot.Robot`.  It keeps
+The explorer sees only a :class:`~topomark.reference.explorers.robot.Robot`.  It keeps
 the iteration records the checker and the trace read.
 
 References
@@ -50,9 +50,9 @@ from topomark.spec.errors import CheckFailure, Violation
 from topomark.spec.mapstate import MapDart, PartialMap
 from topomark.spec.signature import Signature, reads_as, signature_at
 
-from ..policies import Policies, bfs, tree_to_v0
-from ..robot import Robot
-from .lighthouses import LIGHTHOUSES, Lighthouse
+from topomark.reference.explorers.policies import Policies, bfs, tree_to_v0
+from topomark.reference.explorers.robot import Robot
+from topomark.reference.explorers.lighthouses import LIGHTHOUSES, Lighthouse
 
 __all__ = ["Hypothesis", "Iteration", "LighthouseExplorer", "V0", "hypothesis_darts"]
 

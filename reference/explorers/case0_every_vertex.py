@@ -33,8 +33,8 @@ from topomark.spec.errors import AlgorithmFailed
 from topomark.spec.kit import MarkerOp
 from topomark.spec.signature import Signature, signature_at
 
-from ..policies import open_ends_beyond
-from .marker_walk import MarkerStep, MarkerWalk
+from topomark.reference.explorers.policies import open_ends_beyond
+from topomark.reference.explorers.marker_walk import MarkerStep, MarkerWalk
 
 __all__ = ["EveryVertexMarked"]
 

@@ -37,8 +37,8 @@ from topomark.spec.errors import AlgorithmFailed
 from topomark.spec.mapstate import MapDart, PartialMap
 from topomark.spec.signature import Signature, signature_at
 
-from .algorithm31 import Hypothesis, hypothesis_darts, walk_hypothesis
-from .marker_walk import MarkerStep
+from topomark.reference.explorers.algorithm31 import Hypothesis, hypothesis_darts, walk_hypothesis
+from topomark.reference.explorers.marker_walk import MarkerStep
 
 __all__ = ["PhaseTwo", "expected_walk", "path_walk", "PhaseStep"]
 

@@ -59,10 +59,10 @@ from topomark.spec.errors import AlgorithmFailed
 from topomark.spec.mapstate import MapDart
 from topomark.spec.signature import Signature
 
-from ..policies import nearest
-from .case5_phase2 import PhaseTwo
-from .counted_markers import VertexCounts
-from .marker_walk import MarkerStep
+from topomark.reference.explorers.policies import nearest
+from topomark.reference.explorers.case5_phase2 import PhaseTwo
+from topomark.reference.explorers.counted_markers import VertexCounts
+from topomark.reference.explorers.marker_walk import MarkerStep
 
 __all__ = ["VertexCountsThenLighthouse"]
 

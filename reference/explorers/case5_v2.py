@@ -67,10 +67,10 @@ from topomark.spec.kit import MarkerOp
 from topomark.spec.mapstate import MapDart
 from topomark.spec.signature import Signature
 
-from ..policies import nearest
-from .case5_phase2 import PhaseTwo
-from .edge_footprints import FootprintSearch, VertexEdgeFootprints
-from .marker_walk import MarkerStep
+from topomark.reference.explorers.policies import nearest
+from topomark.reference.explorers.case5_phase2 import PhaseTwo
+from topomark.reference.explorers.edge_footprints import FootprintSearch, VertexEdgeFootprints
+from topomark.reference.explorers.marker_walk import MarkerStep
 
 __all__ = ["VertexEdgeThenLighthouse", "E0"]
 

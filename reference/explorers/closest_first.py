@@ -43,8 +43,8 @@ Examples
 from __future__ import annotations
 
 
-from ..policies import Policies
-from .edge_footprints import DoubleMarkedEdges, EdgeFootprints
+from topomark.reference.explorers.policies import Policies
+from topomark.reference.explorers.edge_footprints import DoubleMarkedEdges, EdgeFootprints
 
 __all__ = ["ClosestFirst", "ClosestFirstDouble", "NEAREST"]
 

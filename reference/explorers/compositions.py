@@ -26,10 +26,10 @@ Algorithm 3.1 itself (:class:`~topomark.reference.explorers.algorithm31.Lighthou
 
 from __future__ import annotations
 
-from .enhanced import EnhancedExplorer, Enhancement
-from .expansion import ExpandedSignaturesOfCurrentPlace, ExpandedSignaturesOfNewVertices
-from .overlap import OverlapStage1, OverlapStage2
-from .tracing import ExecutedPathsOnS, ExecutedPathsOnSAndUnknownPlaces
+from topomark.reference.explorers.enhanced import EnhancedExplorer, Enhancement
+from topomark.reference.explorers.expansion import ExpandedSignaturesOfCurrentPlace, ExpandedSignaturesOfNewVertices
+from topomark.reference.explorers.overlap import OverlapStage1, OverlapStage2
+from topomark.reference.explorers.tracing import ExecutedPathsOnS, ExecutedPathsOnSAndUnknownPlaces
 
 __all__ = ["ENHANCEMENTS", "EXPLORERS"]
 

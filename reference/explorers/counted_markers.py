@@ -65,7 +65,7 @@ from topomark.spec.errors import AlgorithmFailed
 from topomark.spec.kit import MarkerOp
 from topomark.spec.signature import Signature, signature_at
 
-from .marker_walk import MarkerStep, MarkerWalk
+from topomark.reference.explorers.marker_walk import MarkerStep, MarkerWalk
 
 __all__ = ["EdgeCounts", "VertexCounts", "DirectionalVertexCounts", "sum_to"]
 

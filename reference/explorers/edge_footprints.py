@@ -78,8 +78,8 @@ from topomark.spec.kit import MarkerOp
 from topomark.spec.mapstate import MapDart, PartialMap
 from topomark.spec.signature import Signature, signature_at
 
-from ..policies import in_preorder, open_ends_beyond, parents_toward
-from .marker_walk import MarkerStep, MarkerWalk
+from topomark.reference.explorers.policies import in_preorder, open_ends_beyond, parents_toward
+from topomark.reference.explorers.marker_walk import MarkerStep, MarkerWalk
 
 __all__ = ["marks_key", "FootprintSearch", "EdgeFootprints", "VertexEdgeFootprints", "DoubleMarkedEdges"]
 

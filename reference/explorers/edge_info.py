@@ -116,9 +116,9 @@ from topomark.spec.kit import MarkerOp
 from topomark.spec.mapstate import PartialMap
 from topomark.spec.signature import Signature, signature_at
 
-from .closest_first import ClosestFirst, ClosestFirstDouble
-from .edge_footprints import DoubleMarkedEdges, EdgeFootprints, FootprintSearch, VertexEdgeFootprints
-from .marker_walk import MarkerStep
+from topomark.reference.explorers.closest_first import ClosestFirst, ClosestFirstDouble
+from topomark.reference.explorers.edge_footprints import DoubleMarkedEdges, EdgeFootprints, FootprintSearch, VertexEdgeFootprints
+from topomark.reference.explorers.marker_walk import MarkerStep
 
 __all__ = ["matching_darts", "EdgeInfoFilter", "EdgeInfoFootprints", "DoubleMarkedEdgeInfo", "EdgeFootprintsEdgeInfo",
            "ClosestFirstEdgeInfo", "ClosestFirstDoubleEdgeInfo"]

@@ -47,10 +47,10 @@ from topomark.spec.errors import CheckFailure, Violation
 from topomark.spec.mapstate import MapDart
 from topomark.spec.signature import Signature
 
-from .algorithm31 import Hypothesis, Iteration, LighthouseExplorer
-from .execution_trie import ExecutionTrie
-from .lighthouses import LIGHTHOUSES
-from .records import Record, graft, migrate, record_trie
+from topomark.reference.explorers.algorithm31 import Hypothesis, Iteration, LighthouseExplorer
+from topomark.reference.explorers.execution_trie import ExecutionTrie
+from topomark.reference.explorers.lighthouses import LIGHTHOUSES
+from topomark.reference.explorers.records import Record, graft, migrate, record_trie
 
 __all__ = ["Technique", "Enhancement", "EnhancedHypothesis", "EnhancedIteration", "EnhancedExplorer"]
 

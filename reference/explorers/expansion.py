@@ -36,9 +36,9 @@ from dataclasses import dataclass
 
 from topomark.spec.signature import signature_at
 
-from .enhanced import Technique
-from .execution_trie import ExecutionTrie, TrieNode
-from .tracing import ExecutedPathsOnSAndUnknownPlaces
+from topomark.reference.explorers.enhanced import Technique
+from topomark.reference.explorers.execution_trie import ExecutionTrie, TrieNode
+from topomark.reference.explorers.tracing import ExecutedPathsOnSAndUnknownPlaces
 
 __all__ = ["ExpandedSignaturesOfNewVertices", "ExpandedSignaturesOfCurrentPlace", "expand"]
 

@@ -42,8 +42,8 @@ This module imports nothing that can see a world.
 
 from __future__ import annotations
 
-from ..robot import Robot
-from .model_shapes import Shape
+from topomark.reference.explorers.robot import Robot
+from topomark.reference.explorers.model_shapes import Shape
 
 __all__ = ["Walker", "validate", "shows_entry"]
 

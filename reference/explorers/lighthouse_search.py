@@ -59,7 +59,7 @@ from topomark.spec.errors import AlgorithmFailed, CheckFailure, Violation
 from topomark.spec.kit import MarkerOp
 from topomark.spec.mapstate import PartialMap
 
-from .probing import aperiodic, identify, perceived, views_around
+from topomark.reference.explorers.probing import aperiodic, identify, perceived, views_around
 
 __all__ = ["SplitMix", "search_vertex", "search_edge", "after_search"]
 

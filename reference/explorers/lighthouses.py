@@ -83,9 +83,9 @@ from topomark.spec.kit import Kit, MarkerOp, ThreadOp
 from topomark.spec.mapstate import PartialMap
 from topomark.spec.signature import Signature, back_link_table, signature_at
 
-from .lighthouse_search import after_search, search_edge, search_vertex
-from .local_lighthouses import VirtualMap, search_degree_list, search_pair
-from .probing import PerceivedMap, ProbingRobot, identify, perceived
+from topomark.reference.explorers.lighthouse_search import after_search, search_edge, search_vertex
+from topomark.reference.explorers.local_lighthouses import VirtualMap, search_degree_list, search_pair
+from topomark.reference.explorers.probing import PerceivedMap, ProbingRobot, identify, perceived
 
 __all__ = ["Lighthouse", "Beacon", "LIGHTHOUSES", "lighthouse", "configured"]
 

@@ -52,7 +52,7 @@ Neither scheme can guarantee the lighthouse's place (both) nor its back-link
   :class:`~topomark.spec.errors.AlgorithmFailed`, the reason given.
 * ``correct`` — "The selected lighthouse happens to be unique and the
   back-link information is also explicit" (the truth side:
-  :func:`topomark.reference.local_places.unique_place`).
+  :func:`topomark.reference.run.local_places.unique_place`).
 * ``wrong-map`` — "terminates with an incorrect world model", or would
   "never terminate": the checker, which sees the truth, stops the run at the
   first wrong join (exit 1).  "Without additional information about the world
@@ -114,8 +114,8 @@ from topomark.spec.errors import AlgorithmFailed
 from topomark.spec.mapstate import PartialMap
 from topomark.spec.signature import Signature
 
-from .lighthouse_search import SplitMix
-from .probing import PerceivedMap, ProbingRobot, VirtualHead, aperiodic, view_here, views_around
+from topomark.reference.explorers.lighthouse_search import SplitMix
+from topomark.reference.explorers.probing import PerceivedMap, ProbingRobot, VirtualHead, aperiodic, view_here, views_around
 
 __all__ = ["search_pair", "search_degree_list", "first_of_degree", "matches_list", "canonical", "least_seen",
            "virtual", "VirtualMap", "LocalProbingRobot"]

@@ -44,7 +44,7 @@ from topomark.spec.kit import MarkerOp
 from topomark.spec.mapstate import MapDart, PartialMap
 from topomark.spec.signature import KeptSignatures, Signature, signature_at
 
-from ..policies import Policies
+from topomark.reference.explorers.policies import Policies
 
 __all__ = ["MarkerStep", "MarkerWalk"]
 

@@ -168,7 +168,7 @@ class Model:
 def walk_equivalent(a: Shape, pose_a: MapDart, b: Shape, pose_b: MapDart) -> bool:
     """No walk tells the completed ``a`` (robot at ``pose_a``) from the completed ``b`` (at ``pose_b``): every
     motion sequence senses the same degrees in both (a breadth-first search over pairs of robot states, as
-    the Figure 3.4 pair was checked in :mod:`topomark.reference.wheels`)."""
+    the Figure 3.4 pair was checked in :mod:`topomark.proofs.wheels`)."""
     start = (pose_a, pose_b)
     seen = {start}
     queue = deque([start])

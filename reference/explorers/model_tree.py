@@ -78,10 +78,10 @@ from typing import Callable
 from topomark.spec.errors import AlgorithmFailed, LimitReached, TopomarkFault
 from topomark.spec.mapstate import MapDart, PartialMap
 
-from ..robot import Robot
-from .global_signatures import Walker, validate
-from .model_shapes import Model, Shape, walk_equivalent
-from .traversal_map import TraversalMap
+from topomark.reference.explorers.robot import Robot
+from topomark.reference.explorers.global_signatures import Walker, validate
+from topomark.reference.explorers.model_shapes import Model, Shape, walk_equivalent
+from topomark.reference.explorers.traversal_map import TraversalMap
 
 __all__ = ["ModelTreeExplorer", "Step", "Closing", "DEFAULTS"]
 

@@ -53,7 +53,7 @@ smallest world that shows it in ``tests/test_movable_marker.py``):
   needs no test (when the others failed it is e', and crossing it reaches
   v_k, where the marker must be picked up anyway).
 
-Cost accounting (the robot's purposes, :data:`~topomark.reference.robot.PURPOSES`):
+Cost accounting (the robot's purposes, :data:`~topomark.reference.explorers.robot.PURPOSES`):
 
 ==============  =================================================================
 ``travel``      walking S to v_k (as Algorithm 3.1's line 6)
@@ -86,8 +86,8 @@ from topomark.spec.kit import MarkerOp
 from topomark.spec.mapstate import MapDart, PartialMap
 from topomark.spec.signature import Signature
 
-from ..policies import Policies, in_preorder, nearest, open_ends_beyond
-from ..robot import Robot
+from topomark.reference.explorers.policies import Policies, in_preorder, nearest, open_ends_beyond
+from topomark.reference.explorers.robot import Robot
 
 __all__ = ["MarkerIteration", "MovableMarkerExplorer", "DirectionalMovableMarkerExplorer"]
 

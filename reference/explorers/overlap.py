@@ -24,8 +24,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .enhanced import Technique
-from .execution_trie import common_prefix
+from topomark.reference.explorers.enhanced import Technique
+from topomark.reference.explorers.execution_trie import common_prefix
 
 __all__ = ["OverlapStage1", "OverlapStage2"]
 

@@ -32,7 +32,7 @@ from topomark.spec.errors import CheckFailure, Violation
 from topomark.spec.mapstate import MapDart, PartialMap
 from topomark.spec.signature import Signature, signature_at
 
-from .execution_trie import ExecutionTrie, TrieNode
+from topomark.reference.explorers.execution_trie import ExecutionTrie, TrieNode
 
 __all__ = ["Record", "record_trie", "migrate", "graft"]
 

@@ -48,7 +48,7 @@ from topomark.spec.kit import MarkerOp
 from topomark.spec.mapstate import MapDart
 from topomark.spec.signature import Signature, signature_at
 
-from .marker_walk import MarkerStep, MarkerWalk
+from topomark.reference.explorers.marker_walk import MarkerStep, MarkerWalk
 
 __all__ = ["SavingEdgeCounts", "MarkFirstEdges", "ceil_half"]
 

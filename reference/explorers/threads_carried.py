@@ -44,7 +44,7 @@ from topomark.spec.errors import TopomarkFault
 from topomark.spec.kit import MarkerOp, ThreadOp
 from topomark.spec.signature import Signature
 
-from .movable_marker import DirectionalMovableMarkerExplorer
+from topomark.reference.explorers.movable_marker import DirectionalMovableMarkerExplorer
 
 __all__ = ["ThreadAsMarker", "CarriedThreadExplorer"]
 

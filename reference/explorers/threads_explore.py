@@ -75,8 +75,8 @@ from topomark.spec.kit import ThreadOp
 from topomark.spec.mapstate import MapDart, PartialMap
 from topomark.spec.signature import Signature, ThreadMark
 
-from ..policies import Policies, bfs, nearest
-from .movable_marker import MovableMarkerExplorer
+from topomark.reference.explorers.policies import Policies, bfs, nearest
+from topomark.reference.explorers.movable_marker import MovableMarkerExplorer
 
 __all__ = ["ThreadIteration", "ThreadWalker", "ThreadExplorer", "CircumferenceThreadExplorer"]
 

@@ -54,7 +54,7 @@ from __future__ import annotations
 from topomark.spec.errors import CheckFailure, Violation
 from topomark.spec.signature import Signature
 
-from .threads_explore import ThreadIteration, ThreadWalker
+from topomark.reference.explorers.threads_explore import ThreadIteration, ThreadWalker
 
 __all__ = ["KnotThreadExplorer"]
 

@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 from topomark.spec.signature import signature_at
 
-from .enhanced import Technique
+from topomark.reference.explorers.enhanced import Technique
 
 __all__ = ["ExecutedPathsOnS", "ExecutedPathsOnSAndUnknownPlaces"]
 

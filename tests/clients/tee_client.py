@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
-"""Runs reference/examples/client.py and appends the whole session to the file argv[1] (for doc tests)."""
+"""Runs reference/oracle/examples/client.py and appends the whole session to the file argv[1] (for doc tests)."""
 import subprocess
 import sys
 import threading
 from pathlib import Path
 
-CLIENT = Path(__file__).resolve().parents[2] / "reference" / "examples" / "client.py"
+CLIENT = Path(__file__).resolve().parents[2] / "reference" / "oracle" / "examples" / "client.py"
 log = open(sys.argv[1], "w")
 child = subprocess.Popen([sys.executable, str(CLIENT)], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
 lock = threading.Lock()

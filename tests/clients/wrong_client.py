@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Deliberately wrong protocol clients, built on reference/examples/client.py: ``wrong_client.py FAULT``.
+"""Deliberately wrong protocol clients, built on reference/oracle/examples/client.py: ``wrong_client.py FAULT``.
 
 Explorer faults (the program speaks the protocol correctly but maps wrongly):
   trust-first   accepts the first hypothesis without validating it
@@ -16,7 +16,7 @@ import time
 from pathlib import Path
 
 spec = importlib.util.spec_from_file_location(
-    "client", Path(__file__).resolve().parents[2] / "reference" / "examples" / "client.py")
+    "client", Path(__file__).resolve().parents[2] / "reference" / "oracle" / "examples" / "client.py")
 client = importlib.util.module_from_spec(spec)
 spec.loader.exec_module(client)
 FAULT = sys.argv[1]

@@ -1,0 +1,165 @@
+"""What the registry records of one algorithm: :class:`AlgorithmSpec`, its :class:`Parameter` options, and the
+checks (:data:`CHECKS`) the checker may apply to it.
+
+An algorithm of the thesis is registered once, with its section and listing,
+the marker kit it needs (:mod:`topomark.spec.kit`), its cost bound and marker
+bound *as the thesis states them* (``None`` where it states none), the
+options it takes and the checks that apply.  Two shapes of algorithm exist:
+
+* **lighthouse algorithms** (``uses_lighthouse=True``: Algorithm 3.1 and the
+  Chapter 4 enhancements) establish v0 with any lighthouse strategy
+  (:mod:`topomark.reference.explorers.lighthouses`); the kit is the
+  lighthouse's; the explorer is built as ``cls(robot, policies, observer,
+  lighthouse)``;
+* **kit algorithms** (everything else: markers dropped all through the
+  exploration, §6.2; movable markers, §2.3.1; threads, §6.3; no marker,
+  §5.2) are given the kit ``kit_for(n, m, options)`` — the simulator computes
+  it from the world, the robot never learns n or m (§6.2.0, L1474) — and are
+  built as ``cls(robot, policies, observer, options)``.
+
+Every explorer keeps the contract of
+:func:`topomark.reference.run.explore.explore`: ``start()``, then ``step()``
+until ``done()``; ``S`` and ``position`` (its map and believed pose) where
+the ``pose``/``I-*``/``isomorphism`` checks apply; ``models()`` where the
+``models`` check applies; it may raise
+:class:`~topomark.spec.errors.AlgorithmFailed` or
+:class:`~topomark.spec.errors.LimitReached` to stop with a reason.
+
+Examples
+--------
+>>> p = Parameter("markers", "how many markers the robot carries", minimum=1)
+>>> p.parse("3")
+3
+>>> p.parse("0")
+Traceback (most recent call last):
+...
+topomark.spec.errors.InvalidInput: --markers must be an integer >= 1, got '0'
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, Callable
+
+from topomark.spec.errors import InvalidInput
+from topomark.spec.kit import Kit
+
+from topomark.reference.explorers.lighthouses import LIGHTHOUSES
+
+__all__ = ["AlgorithmSpec", "Parameter", "CHECKS"]
+
+CHECKS: dict[str, str] = {
+    "pose": "the explorer's believed position is the robot's true state (φ anchored at the believed pose)",
+    "I-1": "S is extended-isomorphic to the subgraph of G it maps onto (§3.4, I-1)",
+    "I-2": "U holds exactly the unexplored edges at known vertices, with their exit indices (§3.4, I-2)",
+    "bound-function": "t = |E_G| − |E_S| decreases by one per iteration (§3.4)",
+    "lemma-1": "each hypothesis's (M, P^E) is unique (§3.4, Lemma 1)",
+    "marker": "no marker is dropped, moved or picked up after the lighthouse is established (the kit itself is "
+              "enforced by the simulator)",
+    "marker-budget": "never more markers in the world than the algorithm's stated marker bound for this n and m",
+    "models": "the true world survives among the explorer's live models: one of them maps into it, its pose on "
+              "the robot's true state (§5.2.2)",
+    "iterations": "n − 1 non-loop and m − n + 1 loop iterations (§3.1.3)",
+    "isomorphism": "the final map is extended-isomorphic to the world, markers included (§3.1.3)",
+}
+"""Every check the checker knows, by name, with the condition it states."""
+
+
+@dataclass(frozen=True)
+class Parameter:
+    """An option of a kit algorithm (``topomark explore --NAME VALUE``): an integer ≥ ``minimum`` unless
+    ``choices`` names the allowed words."""
+
+    name: str
+    help: str
+    default: Any = None
+    minimum: int | None = 0
+    choices: tuple[str, ...] = ()
+
+    def parse(self, value: Any) -> Any:
+        """``value`` (a string from the command line, or already typed) checked; bad input names the option."""
+        if self.choices:
+            if value not in self.choices:
+                raise InvalidInput(f"--{self.name} must be one of {', '.join(self.choices)}, got {value!r}")
+            return value
+        text = str(value).strip()
+        if isinstance(value, bool) or not (text.isascii() and text.lstrip("-").isdigit()) or len(text) > 18:
+            raise InvalidInput(f"--{self.name} must be an integer >= {self.minimum}, got {value!r}")
+        number = int(text)
+        if self.minimum is not None and number < self.minimum:
+            raise InvalidInput(f"--{self.name} must be an integer >= {self.minimum}, got {value!r}")
+        return number
+
+
+@dataclass(frozen=True)
+class AlgorithmSpec:
+    """One registered algorithm (see the module docstring for the two shapes and the explorer contract)."""
+
+    name: str
+    thesis: str
+    kit: Kit
+    bound: str | None
+    markers: str
+    deterministic: bool
+    options: tuple[str, ...]
+    checks: tuple[str, ...]
+    bound_fn: Callable[[int, int], int] | None = None
+    explorer: type | None = None  # the explorer class; None: Algorithm 3.1's family, looked up at call time
+    uses_lighthouse: bool = True
+    parameters: tuple[Parameter, ...] = ()
+    kit_fn: Callable[[int, int, dict], Kit] | None = None  # the kit for a world of n, m (kit algorithms)
+    marker_bound_fn: Callable[[int, int], int] | None = None  # the stated marker bound, for ``marker-budget``
+    family: str = "algorithm-3.1"  # the trace@2 family its traces are written in
+    own: bool = True  # topomark's registered explorer (False for ``registry.variant``: an explorer under test)
+    check_world: Callable[[Any, dict], None] | None = None  # refuse options false for the world (e.g. §5.3 cues)
+    summary_fn: Callable[[Any, Any], dict] | None = None  # (explorer, world) ↦ the algorithm's own --json fields
+    write_models: Callable[[Any, str], list] | None = None  # (explorer, dir): ``explore --models DIR``
+
+    def __post_init__(self) -> None:
+        unknown = set(self.checks) - set(CHECKS)
+        if unknown:
+            raise ValueError(f"algorithm {self.name}: unknown checks {sorted(unknown)}")
+        if "isomorphism" not in self.checks:  # the outcome is judged on the final map, whatever else is checked
+            raise ValueError(f"algorithm {self.name}: every algorithm's final map is checked ('isomorphism')")
+
+    @property
+    def factory(self) -> Callable[..., Any]:
+        """The explorer class (a registered Algorithm 3.1 one is looked up at call time, so a test may
+        substitute a faulty one)."""
+        if self.explorer is not None:
+            return self.explorer
+        from topomark.reference.algorithms import explorer_classes as algorithms
+        return algorithms.ALGORITHMS[self.name]
+
+    def bound_for(self, n: int, m: int) -> int | None:
+        """The cost bound evaluated on a world of n vertices and m edges, or None if the thesis states none."""
+        return None if self.bound_fn is None else self.bound_fn(n, m)
+
+    def kit_for(self, n: int, m: int, options: dict) -> Kit:
+        """The kit a kit algorithm is given on a world of n vertices and m edges (its ``kit`` if fixed)."""
+        return self.kit if self.kit_fn is None else self.kit_fn(n, m, options)
+
+    def parse_options(self, given: dict[str, Any]) -> dict[str, Any]:
+        """``given`` (name ↦ value, None meaning not given) checked against :attr:`parameters`, defaults filled
+        in; an option this algorithm does not take is bad input naming both."""
+        known = {p.name: p for p in self.parameters}
+        out = {p.name: p.default for p in self.parameters}
+        for name, value in given.items():
+            if value is None:
+                continue
+            if name not in known:
+                takes = ", ".join(f"--{p}" for p in known) or "none"
+                raise InvalidInput(f"the algorithm {self.name} takes no option --{name} (its options: {takes})")
+            out[name] = known[name].parse(value)
+        return out
+
+    def to_json(self) -> dict[str, Any]:
+        """The listing of ``topomark algorithms --json``; ``kit`` is the default lighthouse's (or the fixed kit),
+        ``lighthouses`` the strategies a lighthouse algorithm runs with."""
+        out = {"name": self.name, "thesis": self.thesis, "kit": self.kit.to_json(), "bound": self.bound,
+               "markers": self.markers, "deterministic": self.deterministic, "options": list(self.options),
+               "checks": list(self.checks), "family": self.family, "kit_from_world": self.kit_fn is not None,
+               "parameters": {p.name: {"help": p.help, "default": p.default} for p in self.parameters}}
+        if self.uses_lighthouse:
+            out["lighthouses"] = {h.name: {"thesis": h.thesis, "kit": h.kit.to_json()} for h in LIGHTHOUSES.values()}
+        return out

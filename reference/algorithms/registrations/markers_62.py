@@ -1,0 +1,79 @@
+"""§6.2's algorithms that give places a unique count of markers: Case 3a (Algorithm 6.2), Case 3b, Σ k
+directional vertex markers, and Case 3b's extension-1 and extension-2 (Algorithm 6.6) with directional
+E-markers (thesis §6.2.1 L1562–L1643, §6.2.2 L1902–L1963; Tables 6.1, 6.2).
+
+Each is a kit algorithm: by default the robot carries exactly the markers its
+case is assured — Σ_{k=1}^{n−1} k = n(n−1)/2 for Cases 3a/3b and the directional
+vertex markers, Σ_{k=1}^{⌈m/2⌉} k for extension-1, Σ_{k=1}^{⌈(n−1)/2⌉} k for
+extension-2 — computed here from the world (the robot never learns n or m);
+``--markers K`` gives K instead.  The marker bound checked after every step is
+the thesis's: the same formulas, except Σ_{k=1}^{n} k for the vertex
+algorithms, which mark every vertex when the kit allows (L1577; the decision is
+in :mod:`topomark.reference.explorers.counted_markers`).  No exact cost formula
+is stated (only O(m), O(m·d_max)), so none is checked.
+
+Examples
+--------
+>>> [s.name for s in SPECS]
+['case-3a', 'case-3b', 'case-dv-sum', 'extension-1', 'extension-2']
+>>> SPECS[1].kit_for(5, 7, {"markers": None}).describe()
+'10 undirected edge markers'
+>>> SPECS[2].kit_for(5, 7, {"markers": 3}).describe()
+'3 directional vertex markers'
+"""
+
+from __future__ import annotations
+
+from topomark.spec.kit import Kit
+
+from topomark.reference.algorithms.algorithm_spec import AlgorithmSpec, Parameter
+from topomark.reference.explorers.counted_markers import DirectionalVertexCounts, EdgeCounts, VertexCounts, sum_to
+from topomark.reference.explorers.saving_markers import MarkFirstEdges, SavingEdgeCounts, ceil_half
+
+__all__ = ["SPECS"]
+
+MARKERS = Parameter("markers", "how many markers the robot carries (default: what its case is assured, "
+                               "from n and m)", None, minimum=1)
+
+_CHECKS = ("pose", "I-1", "I-2", "marker-budget", "isomorphism")
+
+
+def _count(n: int, options: dict, assured: int | None = None) -> int:
+    """The kit's size: ``--markers`` if given, else the assured Σ_{k=1}^{n−1} k (or ``assured``)."""
+    given = options.get("markers")
+    return (sum_to(n - 1) if assured is None else assured) if given is None else given
+
+
+SPECS = (
+    AlgorithmSpec(
+        "case-3a", "§6.2.1 Case 3a, Algorithm 6.2 (L1562–L1620, Figure 6.6)",
+        Kit(vertex=1), "O(m·d_max)", "Σ_{k=1}^{n−1} k undirected V-markers (Σ_{k=1}^{n} k if the kit allows)",
+        True, ("markers",), _CHECKS, explorer=VertexCounts, uses_lighthouse=False,
+        parameters=(MARKERS,), kit_fn=lambda n, m, o: Kit(vertex=_count(n, o)),
+        marker_bound_fn=lambda n, m: sum_to(n), family="robot"),
+    AlgorithmSpec(
+        "case-3b", "§6.2.1 Case 3b (L1577, L1627–L1643, Figures 6.7, 6.8)",
+        Kit(edge=1), "O(m)", "Σ_{k=1}^{n−1} k undirected E-markers",
+        True, ("markers",), _CHECKS, explorer=EdgeCounts, uses_lighthouse=False,
+        parameters=(MARKERS,), kit_fn=lambda n, m, o: Kit(edge=_count(n, o)),
+        marker_bound_fn=lambda n, m: sum_to(n - 1), family="robot"),
+    AlgorithmSpec(
+        "case-dv-sum", "§6.2.2 Σ_{k=1}^{n−1} k directional V-markers (L1902, Table 6.2)",
+        Kit(vertex=1, directional=True), "O(m)",
+        "Σ_{k=1}^{n−1} k directional V-markers (Σ_{k=1}^{n} k if the kit allows)",
+        True, ("markers",), _CHECKS, explorer=DirectionalVertexCounts, uses_lighthouse=False,
+        parameters=(MARKERS,), kit_fn=lambda n, m, o: Kit(vertex=_count(n, o), directional=True),
+        marker_bound_fn=lambda n, m: sum_to(n), family="robot"),
+    AlgorithmSpec(
+        "extension-1", "§6.2.2 extension-1 of Case 3b (L1914, Figure 6.15, Table 6.2)",
+        Kit(edge=1, directional=True), "O(m)", "Σ_{k=1}^{⌈m/2⌉} k directional E-markers",
+        True, ("markers",), _CHECKS, explorer=MarkFirstEdges, uses_lighthouse=False, parameters=(MARKERS,),
+        kit_fn=lambda n, m, o: Kit(edge=_count(n, o, sum_to(ceil_half(m))), directional=True),
+        marker_bound_fn=lambda n, m: sum_to(ceil_half(m)), family="robot"),
+    AlgorithmSpec(
+        "extension-2", "§6.2.2 extension-2 of Case 3b, Algorithm 6.6 (L1916–L1963, Figure 6.16, Table 6.2)",
+        Kit(edge=1, directional=True), "O(m)", "Σ_{k=1}^{⌈(n−1)/2⌉} k directional E-markers",
+        True, ("markers",), _CHECKS, explorer=SavingEdgeCounts, uses_lighthouse=False, parameters=(MARKERS,),
+        kit_fn=lambda n, m, o: Kit(edge=_count(n, o, sum_to(ceil_half(n - 1))), directional=True),
+        marker_bound_fn=lambda n, m: sum_to(ceil_half(n - 1)), family="robot"),
+)

@@ -1,0 +1,125 @@
+"""§6.2.1's undirected algorithms that use about m markers and search S for footprints: Case 1a, Case 1b,
+Case 2 (Algorithm 6.1) and the two closest-first extensions of Case 4 (Algorithm 6.3 and the extension of
+Case 2) (thesis L1493–L1554, L1640–L1699; Table 6.1).  Explorers:
+:mod:`topomark.reference.explorers.edge_footprints` and :mod:`topomark.reference.explorers.closest_first`.
+
+Each is a kit algorithm: by default the robot carries exactly the markers its
+case is assured — computed here from n and m, the robot never learns them —
+and ``--markers K`` gives K instead (running out is the ``failed`` outcome).
+The marker bound checked after every step (``marker-budget``) is the stated
+one, as a formula:
+
+============  ====================================  =================  ==========================
+algorithm     Table 6.1 / title                      kit (default)      marker bound checked
+============  ====================================  =================  ==========================
+case-1a       m E-markers (L1506)                   m                  m
+case-1b       m + 1, extendable to m (L1510, L1512)  m + 1 V-or-E pool  m + 1
+case-2        m + n (L1523), text m + n − 1 (L1529)  m + n              m + n − 1
+case-4        m − ⌊n/2⌋ (L1640, L1663)              m − ⌊(n−1)/2⌋      m − ⌊(n−1)/2⌋
+case-4-mn     m (L1665)                             m + [n even]       m + [n even]
+============  ====================================  =================  ==========================
+
+The Case 4 counts are corrected (the decision and its proof are in
+:mod:`~topomark.reference.explorers.closest_first`).  Case 1b's markers are
+one homogeneous pool, each dropped "either on the vertex or on the edge"
+as the robot needs (L1510, footnote 16), so its kit is exactly that: a pool
+of m + 1 vertex-or-edge markers (``Kit(either=m + 1)``, drawn as
+:meth:`~topomark.spec.kit.Kit.draw` says), and ``--markers K`` a pool of K.
+The robot is "assured that it has at least m markers" in the extension
+(L1512): with ``--markers m`` the last iteration's drop is refused and that
+iteration's edge(s) in U are processed with no further motion
+(:mod:`~topomark.reference.explorers.edge_footprints`); with fewer the run
+ends ``failed`` (out of markers before the last iteration).
+
+The thesis states O(mn) for all five (L1506, L1517, L1529, L1642) with no
+constant.  :func:`footprints_bound` is **ours**, the exact worst case of
+these explorers: a non-loop step walks S (≤ n − 2, S has ≤ n − 1 vertices)
+and follows e (1); a loop step walks S (≤ n − 1), follows e and comes back
+(2), and searches the candidates in the preorder of a breadth-first tree of
+S rooted at v_k, each by a shortest path, at most the tree's Euler tour
+2(n − 1): (n − 1)² + (m − n + 1)(3n − 1) in all.
+
+Examples
+--------
+>>> [s.name for s in SPECS]
+['case-1a', 'case-1b', 'case-2', 'case-4', 'case-4-mn']
+>>> [s.kit_for(4, 4, {"markers": None}).describe() for s in SPECS]  # the 4-cycle
+['4 undirected edge markers', '5 undirected vertex-or-edge markers', '8 undirected edge markers', \
+'3 undirected edge markers', '5 undirected edge markers']
+>>> footprints_bound(3, 3)  # the triangle: two non-loop steps, one loop step
+12
+"""
+
+from __future__ import annotations
+
+from topomark.spec.kit import Kit
+
+from topomark.reference.algorithms.algorithm_spec import AlgorithmSpec, Parameter
+from topomark.reference.explorers.closest_first import ClosestFirst, ClosestFirstDouble
+from topomark.reference.explorers.edge_footprints import DoubleMarkedEdges, EdgeFootprints, VertexEdgeFootprints
+
+__all__ = ["SPECS", "footprints_bound", "case_4_markers", "case_4_mn_markers"]
+
+MARKERS = Parameter("markers", "how many markers the robot carries (default: what its case is assured, "
+                               "from n and m)", None, minimum=1)
+
+CHECKS = ("pose", "I-1", "I-2", "marker-budget", "isomorphism")
+"""S and U as Algorithm 3.1 keeps them after every step (U: exactly the unexplored edges at known vertices),
+the marker bound after every step, the final map with every marker dropped."""
+
+
+def footprints_bound(n: int, m: int) -> int:
+    """Our exact worst-case cost of these explorers (module docstring): (n − 1)² + (m − n + 1)(3n − 1)."""
+    return (n - 1) ** 2 + (m - n + 1) * (3 * n - 1)
+
+
+def case_4_markers(n: int, m: int) -> int:
+    """Algorithm 6.3's count, corrected: (m − n + 1) loop edges + ⌈(n−1)/2⌉ non-loop edges = m − ⌊(n−1)/2⌋."""
+    return m - (n - 1) // 2
+
+
+def case_4_mn_markers(n: int, m: int) -> int:
+    """The extension of Case 2, corrected: (m − n + 1) + 2⌈(n−1)/2⌉ = m, or m + 1 for even n."""
+    return m - n + 1 + 2 * (n // 2)
+
+
+def _given(options: dict, assured: int) -> int:
+    """The kit's size: ``--markers`` if given, else what the case is assured."""
+    given = options.get("markers")
+    return assured if given is None else given
+
+
+def _case_1b_kit(n: int, m: int, options: dict) -> Kit:
+    """Case 1b's m + 1 homogeneous V-E-markers as one pool, each dropped at a vertex or on an edge (L1510,
+    footnote 16); ``--markers K``: a pool of K (L1512: m suffices)."""
+    return Kit(either=_given(options, m + 1))
+
+
+_BOUND = "O(mn) ({}); bound_fn: ours, exact for our explorer"
+_OPTIONS = ("markers",)
+
+
+def _spec(name, thesis, markers, explorer, kit_fn, marker_bound_fn, cites, options=_OPTIONS + ("policy edge",),
+          kind=Kit(edge=1)):
+    """``kind``: the kind of marker the kit holds (the registry's ``kit``; the counts come from ``kit_fn``)."""
+    return AlgorithmSpec(name, thesis, kind, _BOUND.format(cites), markers, True, options, CHECKS,
+                         bound_fn=footprints_bound, explorer=explorer, uses_lighthouse=False, parameters=(MARKERS,),
+                         kit_fn=kit_fn, marker_bound_fn=marker_bound_fn, family="robot")
+
+
+SPECS = (
+    _spec("case-1a", "§6.2.1 Case 1a, m E-markers (L1497–L1506, Figure 6.4; footprints [18])", "m undirected E-markers",
+          EdgeFootprints, lambda n, m, o: Kit(edge=_given(o, m)), lambda n, m: m, "L1506"),
+    _spec("case-1b", "§6.2.1 Case 1b, m + 1 V-E-markers, extendable to m (L1508–L1521, Figure 6.5)",
+          "m + 1 undirected V-E-markers, one pool (m with the extension, L1512)", VertexEdgeFootprints, _case_1b_kit,
+          lambda n, m: m + 1, "L1510", kind=Kit(either=1)),
+    _spec("case-2", "§6.2.1 Case 2, Algorithm 6.1, m + n E-markers (L1523–L1554)",
+          "m + n undirected E-markers (m + n − 1 used, L1529)", DoubleMarkedEdges,
+          lambda n, m, o: Kit(edge=_given(o, m + n)), lambda n, m: m + n - 1, "L1529"),
+    _spec("case-4", "§6.2.1 Case 4, Algorithm 6.3, closest-first (L1640–L1699, Figure 6.9)",
+          "m − ⌊(n−1)/2⌋ undirected E-markers (stated m − ⌊n/2⌋, L1663: one short for even n)", ClosestFirst,
+          lambda n, m, o: Kit(edge=_given(o, case_4_markers(n, m))), case_4_markers, "L1642", _OPTIONS),
+    _spec("case-4-mn", "§6.2.1 Case 4, the closest-first extension of Case 2 (L1665)",
+          "m + [n even] undirected E-markers (stated m, L1665: one short for even n)", ClosestFirstDouble,
+          lambda n, m, o: Kit(edge=_given(o, case_4_mn_markers(n, m))), case_4_mn_markers, "L1642", _OPTIONS),
+)

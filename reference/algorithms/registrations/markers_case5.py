@@ -1,0 +1,104 @@
+"""§6.2.1 Case 5 — k > 3 undirected markers, their number not known relative to the world: Version-1
+(Algorithm 6.4) and Version-2 (Algorithm 6.5) — and Case 0, the plausible strategy shown to fail (thesis
+L1489–L1491, Figure 6.3; L1708–L1817; Table 6.1 row "unknown k > 3").  Explorers:
+:mod:`topomark.reference.explorers.case5_v1`, :mod:`~topomark.reference.explorers.case5_v2`,
+:mod:`~topomark.reference.explorers.case5_phase2` (phase II, shared) and
+:mod:`~topomark.reference.explorers.case0_every_vertex`.
+
+==========  ==========================================  ==========================  =====================
+algorithm   kit (``--markers K``; default)               marker bound checked        cost (thesis)
+==========  ==========================================  ==========================  =====================
+case-5-v1   K undirected V-markers; Σ_{k=1}^{n} k        Σ_{k=1}^{n} k               O(m²n); O(m·d_max)
+                                                                                     with every place marked
+case-5-v2   one pool of K undirected markers; m + 4      m + 4                       O(m²n); O(mn) with
+                                                                                     every place and loop
+                                                                                     edge marked
+case-0      n undirected V-markers                       n                           none: it fails (L1491)
+==========  ==========================================  ==========================  =====================
+
+Defaults (the thesis gives none: in Case 5 the robot is *not* assured a count,
+L1710): K is what lets phase I run to the end — Σ_{k=1}^{n} k for Version-1
+("sufficient markers to mark each visited vertex", L1724) and m + 4 for
+Version-2 (2 at v0, 2 on one of its edges, 1 at each other place, 1 on each
+loop edge but the double-marked one: "sufficient markers to mark each vertex and
+loop edge", L1770).  ``--markers`` is at least 4 ("k > 3", L1708; Version-2's
+line 1 drops four).  Version-2's K is one pool for vertices and edges (the
+thesis's markers are homogeneous, L1474): the kernel's kit counts the two kinds
+apart, so the kit holds K of each and the robot itself keeps the pool — it
+knows how many markers it carries, only not how that compares with the world
+(L1710) — never dropping more than K in all (tested).
+
+Case 0 is registered as *not deterministic* in the thesis's sense of the word
+(an algorithm that always maps the world, L1375): "this approach does not work
+in general" (L1491).  It runs, and on the certified pairs of worlds in
+``tests/vectors/case0/`` (K4 with two embeddings; K4 against a 5-place world,
+found by search over every embedded world of ≤ 5 places and degree ≤ 4 from
+every start) it senses exactly the same and returns the same map, so one run is
+the checker's ``wrong-map`` (``tests/test_markers_case5.py`` certifies them).
+
+Examples
+--------
+>>> [s.name for s in SPECS]
+['case-5-v1', 'case-5-v2', 'case-0']
+>>> SPECS[0].kit_for(4, 5, {"markers": None}).describe()
+'10 undirected vertex markers'
+>>> SPECS[1].kit_for(4, 5, {"markers": None}).describe()
+'5 undirected vertex markers, 4 undirected edge markers'
+>>> SPECS[1].kit_for(4, 5, {"markers": 6}).describe()
+'6 undirected vertex markers, 6 undirected edge markers'
+"""
+
+from __future__ import annotations
+
+from topomark.spec.kit import Kit
+
+from topomark.reference.algorithms.algorithm_spec import AlgorithmSpec, Parameter
+from topomark.reference.explorers.case0_every_vertex import EveryVertexMarked
+from topomark.reference.explorers.case5_v1 import VertexCountsThenLighthouse
+from topomark.reference.explorers.case5_v2 import VertexEdgeThenLighthouse
+from topomark.reference.explorers.counted_markers import sum_to
+
+__all__ = ["SPECS", "v2_markers"]
+
+MARKERS = Parameter("markers", "how many markers the robot carries, K > 3 (default: enough for phase I to the end, "
+                               "from n and m)", None, minimum=4)
+
+CHECKS = ("pose", "I-1", "I-2", "marker-budget", "isomorphism")
+
+
+def v2_markers(n: int, m: int) -> int:
+    """Version-2 with every place and loop edge marked: 2 + 2 + (n − 1) + (m − n + 1) at most = m + 4."""
+    return m + 4
+
+
+def _v1_kit(n: int, m: int, options: dict) -> Kit:
+    given = options.get("markers")
+    return Kit(vertex=sum_to(n) if given is None else given)
+
+
+def _v2_kit(n: int, m: int, options: dict) -> Kit:
+    """Default: the split m + 4 is spent in (n + 1 V, m − n + 3 E); ``--markers K``: K of each, the robot keeping
+    the pool of K itself (module docstring)."""
+    given = options.get("markers")
+    return Kit(vertex=n + 1, edge=m - n + 3) if given is None else Kit(vertex=given, edge=given)
+
+
+SPECS = (
+    AlgorithmSpec(
+        "case-5-v1", "§6.2.1 Case 5 Version-1, Algorithm 6.4 (L1716–L1724, L1728–L1768)",
+        Kit(vertex=1), "O(m²n) (L1724; O(m·d_max) when every place is marked)",
+        "K > 3 undirected V-markers, any K (Σ_{k=1}^{n} k mark every place)", True, ("markers",), CHECKS,
+        explorer=VertexCountsThenLighthouse, uses_lighthouse=False, parameters=(MARKERS,), kit_fn=_v1_kit,
+        marker_bound_fn=lambda n, m: sum_to(n), family="robot"),
+    AlgorithmSpec(
+        "case-5-v2", "§6.2.1 Case 5 Version-2, Algorithm 6.5 (L1726, L1770, L1776–L1817)",
+        Kit(vertex=1, edge=1), "O(m²n) (Table 6.1; O(mn) when every place and loop edge is marked, L1770)",
+        "K > 3 undirected V-E-markers, any K, one pool (m + 4 mark every place and loop edge)", True,
+        ("markers",), CHECKS, explorer=VertexEdgeThenLighthouse, uses_lighthouse=False, parameters=(MARKERS,),
+        kit_fn=_v2_kit, marker_bound_fn=v2_markers, family="robot"),
+    AlgorithmSpec(
+        "case-0", "§6.2.1 Case 0, n markers, one per visited vertex: fails (L1489–L1491, Figure 6.3)",
+        Kit(vertex=1), None, "n undirected V-markers", False, (), CHECKS,
+        explorer=EveryVertexMarked, uses_lighthouse=False, kit_fn=lambda n, m, o: Kit(vertex=n),
+        marker_bound_fn=lambda n, m: n, family="robot"),
+)

@@ -1,0 +1,134 @@
+"""Registration of Algorithm 5.1, marker-less mapping with a tree of world models (thesis §5.2.2, §5.3).
+
+One algorithm, ``model-tree``: an empty kit (no marker), no cost bound and no
+marker bound stated by the thesis (the marker budget is 0), not
+deterministic (L1375: "the algorithm is still not deterministic … we cannot
+determine which world model is the correct one").  The explorer is
+:class:`~topomark.reference.explorers.model_tree.ModelTreeExplorer`.
+
+Checks: ``models`` (the true world survives among the live models after
+every step; topomark's own explorer voiding it is exit 3), ``marker-budget``
+(0 markers) and ``isomorphism`` (the returned model against the world).
+
+Cues are prior knowledge, so a false one is bad input: the kit function sees
+n and m and refuses a false ``--cue-n``/``--cue-m`` before anything runs;
+:func:`check_cues` also checks ``--cue-diameter`` and ``--cue-planar``
+against a world, for a caller that has the world (the CLI).
+
+For the CLI (issue 11 item 4-5): :func:`summary` gives the ``--json`` fields
+``completed_models``, ``peak_models`` and ``true_world_completed``;
+:func:`write_models` writes every completed model, in completion order, as
+world files (``--models DIR``).
+
+Examples
+--------
+>>> spec = SPECS[0]
+>>> spec.name, spec.thesis, spec.kit.describe(), spec.deterministic
+('model-tree', '§5.2.2, Algorithm 5.1', 'no marker', False)
+>>> spec.parse_options({"signatures": "local"})["window"]
+100
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from topomark.spec.errors import InvalidInput
+from topomark.spec.isomorphism import anchored
+from topomark.spec.kit import Kit
+from topomark.spec.worldfile import dumps_world
+
+from topomark.reference.algorithms.algorithm_spec import AlgorithmSpec, Parameter
+from topomark.reference.explorers.model_tree import DEFAULTS, ModelTreeExplorer
+
+__all__ = ["SPECS", "PARAMETERS", "check_cues", "summary", "write_models"]
+
+PARAMETERS = (
+    Parameter("signatures", "global: validate each loop closing against every known vertex (§5.2.2); local: accept "
+              "every degree-matching one (L1367, the thesis's comparison)", DEFAULTS["signatures"], None,
+              ("global", "local")),
+    Parameter("entry-check", "global signatures: at each vertex whose neighbours are known and whose neighbour "
+              "degrees have no proper rotation onto themselves, visit the neighbours to check the entry edge (L1369)",
+              DEFAULTS["entry-check"], None, ("yes", "no")),
+    Parameter("window", "return a model once it has been the only completed model for this many steps (L1373)",
+              DEFAULTS["window"], 1),
+    Parameter("max-models", "cap on live models: past it the run ends with the limit outcome", DEFAULTS["max-models"],
+              1),
+    Parameter("max-steps", "cap on steps (TM edges explored): past it the run ends with the limit outcome",
+              DEFAULTS["max-steps"], 1),
+    Parameter("cue-n", "cue (§5.3): the world has this many vertices", None, 1),
+    Parameter("cue-m", "cue (§5.3): the world has this many edges", None, 1),
+    Parameter("cue-diameter", "cue (§5.3): the world's diameter", None, 1),
+    Parameter("cue-planar", "cue (§5.3): the world is planar (a genus-0 embedding)", DEFAULTS["cue-planar"], None,
+              ("yes", "no")),
+)
+
+
+def _kit(n: int, m: int, options: dict) -> Kit:
+    """No marker; a false n or m cue is refused here, where n and m are known (before anything runs)."""
+    for name, true in (("cue-n", n), ("cue-m", m)):
+        given = options.get(name)
+        if given is not None and given != true:
+            raise InvalidInput(f"--{name} {given} is false for this world ({name[4:]} = {true}): a cue is prior "
+                               f"knowledge of the world")
+    return Kit()
+
+
+def check_cues(world, options: dict) -> None:
+    """Refuse, as bad input, any cue in ``options`` that is false for ``world`` (n, m, diameter, planarity)."""
+    _kit(world.n, world.m, options)
+    D = options.get("cue-diameter")
+    if D is not None:
+        true = _diameter(world)
+        if true != D:
+            raise InvalidInput(f"--cue-diameter {D} is false for this world (diameter = {true})")
+    if options.get("cue-planar") == "yes" and world.genus() != 0:
+        raise InvalidInput(f"--cue-planar yes is false for this world (its embedding has genus {world.genus()})")
+
+
+def _diameter(world) -> int:
+    best = 0
+    for source in world.vertices:
+        dist = {source: 0}
+        queue = [source]
+        for v in queue:
+            for w in world.rotation[v]:
+                if w not in dist:
+                    dist[w] = dist[v] + 1
+                    queue.append(w)
+        best = max(best, max(dist.values()))
+    return best
+
+
+def summary(explorer, world) -> dict:
+    """The model tree's counts for ``--json``: how many models became completed, the most live at once, and
+    whether the true world (anchored at the start, as the checker anchors it) is among the completed ones."""
+    start = world.start_state()
+    true = any(S.n == world.n and anchored(S, world, (0, 0), start, markers=False, partial=False).isomorphic
+               for S in explorer.completed_models)
+    return {"completed_models": len(explorer.completed_models), "peak_models": explorer.peak_models,
+            "true_world_completed": true}
+
+
+def write_models(explorer, directory: str | Path) -> list[Path]:
+    """Every completed model, in completion order, as ``model-0001.json`` … in ``directory`` (created)."""
+    out = Path(directory)
+    out.mkdir(parents=True, exist_ok=True)
+    paths = []
+    for k, S in enumerate(explorer.completed_models, 1):
+        path = out / f"model-{k:04d}.json"
+        path.write_text(dumps_world(S.to_world(start=(0, 0))))
+        paths.append(path)
+    return paths
+
+
+SPECS = (
+    AlgorithmSpec(
+        "model-tree", "§5.2.2, Algorithm 5.1", Kit(), None, "0", False,
+        ("signatures global|local", "entry-check yes|no", "window=N", "max-models=N", "max-steps=N", "cue-n=N", "cue-m=M",
+         "cue-diameter=D", "cue-planar=yes|no"),
+        ("models", "marker-budget", "isomorphism"),
+        explorer=ModelTreeExplorer, uses_lighthouse=False, parameters=PARAMETERS, kit_fn=_kit,
+        marker_bound_fn=lambda n, m: 0, family="robot", check_world=check_cues, summary_fn=summary,
+        write_models=write_models),
+)

@@ -1,0 +1,65 @@
+"""Registrations of the single movable marker algorithms of §2.3.1: Dudek et al. [24, 26] and the directional
+variant [27] (explorers in :mod:`topomark.reference.explorers.movable_marker`).
+
+Both carry one vertex marker that may be picked up (``Kit(vertex=1, movable=True)``, directional for the
+variant), so the marker bound is 1 on every world.  The thesis states the cost bound O(mn) (L150: "the main
+cost ... is $O(mn) \\leq O(n^3)$"; L177 for the directional variant: "still $O(mn)$ but the constant is
+expected to be reduced") with no constant; :func:`dudek_bound` and :func:`directional_bound` are **ours**:
+exact worst-case bounds of our explorers, derived per step with n_s ≤ n known vertices (distances in S are
+at most n_s − 1; a vertex of a simple graph has at most n − 1 exits, one of them explored once it is a
+candidate):
+
+* walk S to v_k ≤ n − 1, follow e 1, come back over e 1;
+* place validation: the candidates in the preorder of a breadth-first tree rooted at v_k, each by a shortest
+  path of S (never longer than the tree path), so the walk from v_k through them *and back to v_k* is at
+  most the tree's Euler tour, 2(n_s − 1);
+* non-loop (n − 1 steps, n_s ≤ n − 1): that walk back to v_k and over e once more to fetch the marker —
+  in all ≤ (n_s − 1) + 2 + 2(n_s − 1) + 1 = 3n_s ≤ 3n − 3 (a step with no candidate costs ≤ n_s);
+* loop (m − n + 1 steps, n_s ≤ n): the search stops at v_k', ≤ 2(n − 1); directional ≤ 3n − 1 (nothing
+  more); undirected adds the back-link search, to v_k and back ≤ 2(n − 1), and at most n − 2 unexplored
+  exits at v_k' tried (out and back, the last only out) ≤ 2n − 5 — in all ≤ 7n − 8.
+
+Examples
+--------
+>>> dudek_bound(2, 1), directional_bound(2, 1)  # one edge: no loop step; the single non-loop step costs 1
+(3, 3)
+>>> dudek_bound(16, 24) <= 8 * 16 * 24 and directional_bound(16, 24) <= 4 * 16 * 24
+True
+"""
+
+from __future__ import annotations
+
+from topomark.spec.kit import Kit
+
+from topomark.reference.algorithms.algorithm_spec import AlgorithmSpec
+from topomark.reference.explorers.movable_marker import DirectionalMovableMarkerExplorer, MovableMarkerExplorer
+
+__all__ = ["SPECS", "dudek_bound", "directional_bound"]
+
+CHECKS = ("pose", "I-1", "I-2", "bound-function", "marker-budget", "iterations", "isomorphism")
+"""U is exactly the unexplored edges at known vertices between steps (I-2), one edge joins S per step
+(bound-function: t = m − |E_S| falls by one) and the steps are n − 1 non-loop and m − n + 1 loop ones."""
+
+
+def dudek_bound(n: int, m: int) -> int:
+    """Our exact worst-case cost of ``dudek`` (module docstring): 3(n − 1)² + (m − n + 1)(7n − 8)."""
+    return 3 * (n - 1) ** 2 + (m - n + 1) * (7 * n - 8)
+
+
+def directional_bound(n: int, m: int) -> int:
+    """Our exact worst-case cost of ``dudek-directional``: 3(n − 1)² + (m − n + 1)(3n − 1)."""
+    return 3 * (n - 1) ** 2 + (m - n + 1) * (3 * n - 1)
+
+
+_OPTIONS = ("policy edge=nearest|fifo|lifo",)
+_BOUND = "O(mn) (§2.3.1, L150); bound_fn: ours, exact for our explorer"
+
+SPECS = (
+    AlgorithmSpec("dudek", "§2.3.1, Dudek et al. [24, 26]", Kit(vertex=1, movable=True), _BOUND, "1", True,
+                  _OPTIONS, CHECKS, bound_fn=dudek_bound, explorer=MovableMarkerExplorer, uses_lighthouse=False,
+                  marker_bound_fn=lambda n, m: 1, family="robot"),
+    AlgorithmSpec("dudek-directional", "§2.3.1, Dudek et al. [24, 26]; directional variant [27] (L177)",
+                  Kit(vertex=1, directional=True, movable=True), _BOUND, "1", True, _OPTIONS, CHECKS,
+                  bound_fn=directional_bound, explorer=DirectionalMovableMarkerExplorer, uses_lighthouse=False,
+                  marker_bound_fn=lambda n, m: 1, family="robot"),
+)

@@ -1,0 +1,115 @@
+"""Registrations of the thread algorithms of §6.3 (Table 6.3; explorers in
+:mod:`topomark.reference.explorers.threads_carried`, :mod:`~topomark.reference.explorers.threads_explore` and
+:mod:`~topomark.reference.explorers.threads_knots`).
+
+The fixed l = ε thread (Table 6.3's first row, O(m²n)) is Algorithm 3.1 with the ``thread`` lighthouse
+(``topomark explore W --lighthouse thread``), registered with the lighthouses.  Here:
+
+===================== ============ ================ ==================================================
+name                  thread       Table 6.3        cost bound (bound_fn: ours, exact for our explorer)
+===================== ============ ================ ==================================================
+thread-carried        ε (0)        ε, retied, O(mn) :func:`directional_bound` (it is that explorer)
+thread-circumference  n (or L)     c(G), O(mn)      :func:`circumference_bound`
+thread-knots          m + 1        l ≫ m, O(m)      :func:`knots_bound` = 4m − 2n + 2
+thread-explore        L (default 2) l < c(G), O(mn) :func:`explore_bound`
+===================== ============ ================ ==================================================
+
+Decisions:
+
+* **l = c(G).**  A kit is computed from n, m and the options only (``AlgorithmSpec.kit_fn``): the
+  simulator cannot give the kit c(G) itself, and the robot may not know the world.  And c(G) is not
+  enough (guide §8.3's doubt, decided by search, ``reference/bench/measure/thread_length.py``): Algorithm 6.7's
+  thread is a simple path from v0 plus one loop edge, which a world with a path from v0 longer than its
+  longest cycle exceeds — the smallest is the triangle with a pendant start (c(G) = 3, 4 edges laid;
+  ``tests/test_thread_algorithms.py``).  So ``thread-circumference`` is given **n** edges — at least
+  c(G) and at least the n − 1 edges of a longest simple path plus the loop edge, so it never runs out
+  — unless ``--thread-length L`` is given, and then it is given L and stops with the failed outcome
+  "out of thread" if L is reached.
+* **l ≫ m** is m + 1 (the most the knot explorer ever lays; the simulator refuses more).
+* **Algorithm 6.9 (explore-merge) is left out.**  It "merges the two partial maps S_1 and S_2 using the
+  merging algorithm described in [59, 61]" (L2150), which this thesis does not give (and its
+  bibliography is lost, guide §10 item 28): how a vertex of S_i is disambiguated against S_B ("using
+  some marking aid ... the thread could be used as a movable (directional) marker", L2150), what it
+  costs and when the merged map is complete are all in [59, 61].  A merge of our own would be a new
+  algorithm, not the thesis's; Algorithm 6.8 (``thread-explore``) covers the same thread class.
+* The robot is never told n or m (§6.2.0, L1474); only ``thread-explore`` (and ``thread-circumference``
+  when given ``--thread-length``) knows its thread's length, as L2096 assumes.
+
+Bounds (ours: the thesis gives O(·) only), derived in the explorer modules:
+
+* Algorithm 6.7: n − 1 tree edges laid and rewound once each; a loop step lays e, and either rewinds it
+  at once or goes back over e, walks the thread back (≤ n − 1) and rewinds e: ≤ n + 2.
+* Algorithm 6.8: every step lays e once and every laid edge is rewound once (2m); a step's search is at
+  most the thread (n) or the movable marker search, to v_k and through the candidates and back
+  (2(n − 1)), then back over e (≤ 2n); each retie walks ≤ n − 1, at most n of them.
+
+Examples
+--------
+>>> circumference_bound(3, 3), knots_bound(3, 3), explore_bound(3, 3)
+(9, 8, 30)
+"""
+
+from __future__ import annotations
+
+from topomark.spec.kit import Kit
+
+from topomark.reference.algorithms.algorithm_spec import AlgorithmSpec, Parameter
+from topomark.reference.explorers.threads_carried import CarriedThreadExplorer
+from topomark.reference.explorers.threads_explore import CircumferenceThreadExplorer, ThreadExplorer
+from topomark.reference.explorers.threads_knots import KnotThreadExplorer
+from topomark.reference.algorithms.registrations.movable import directional_bound
+
+__all__ = ["SPECS", "circumference_bound", "knots_bound", "explore_bound", "directional_bound"]
+
+CHECKS = ("pose", "I-1", "I-2", "bound-function", "marker-budget", "iterations", "isomorphism")
+"""One edge joins S per step (n − 1 non-loop, m − n + 1 loop); U is the unexplored edges at known
+vertices and the pose is the robot's between steps; no marker is ever dropped (a thread is no marker)."""
+
+
+def circumference_bound(n: int, m: int) -> int:
+    """Our bound for Algorithm 6.7: 2(n − 1) + (m − n + 1)(n + 2)."""
+    return 2 * (n - 1) + (m - n + 1) * (n + 2)
+
+
+def knots_bound(n: int, m: int) -> int:
+    """Our exact worst case for the knot thread: 2m + 2(m − n + 1) = 4m − 2n + 2."""
+    return 4 * m - 2 * n + 2
+
+
+def explore_bound(n: int, m: int) -> int:
+    """Our bound for Algorithm 6.8: 2m + 2nm + n(n − 1)."""
+    return 2 * m + 2 * n * m + n * (n - 1)
+
+
+LENGTH = Parameter("thread-length", "the thread's length L in edges (an integer >= 1); the robot knows it",
+                   default="n", minimum=1)
+"""``thread-circumference``'s option: not given ("n"), the kit holds n edges and the robot is not told."""
+
+
+def _circumference_kit(n: int, m: int, opts: dict) -> Kit:
+    length = opts.get("thread-length", "n")
+    return Kit(thread=n if length in ("n", None) else length)
+
+
+_ROBOT = dict(uses_lighthouse=False, marker_bound_fn=lambda n, m: 0, family="robot")
+_O_MN = "O(mn) (Table 6.3); bound_fn: ours"
+
+SPECS = (
+    AlgorithmSpec("thread-carried", "§6.3.1, l = ε thread carried and retied (L2032–L2036)", Kit(thread=0),
+                  _O_MN, "no marker; a thread of length ε", True, (), CHECKS, bound_fn=directional_bound,
+                  explorer=CarriedThreadExplorer, **_ROBOT),
+    AlgorithmSpec("thread-circumference", "§6.3.2, Algorithm 6.7 (L2038–L2075; l = c(G), given n: see the docstring)",
+                  Kit(thread=0), _O_MN, "no marker; a thread of n edges (--thread-length: L)", True,
+                  ("thread-length L (default n; reaching L is the failed outcome 'out of thread')",), CHECKS,
+                  bound_fn=circumference_bound, explorer=CircumferenceThreadExplorer,
+                  parameters=(LENGTH,), kit_fn=_circumference_kit, **_ROBOT),
+    AlgorithmSpec("thread-knots", "§6.3.2, l ≫ m thread with knots (L2077–L2086, Figure 6.20)", Kit(thread=0),
+                  "O(m) (Table 6.3); bound_fn: ours, exact worst case", "no marker; a thread of m + 1 edges", True, (),
+                  CHECKS, bound_fn=knots_bound, explorer=KnotThreadExplorer,
+                  kit_fn=lambda n, m, opts: Kit(thread=m + 1), **_ROBOT),
+    AlgorithmSpec("thread-explore", "§6.3.3, Algorithm 6.8 (L2088–L2141; l < c(G), explore-explore)", Kit(thread=2), _O_MN,
+                  "no marker; a thread of --thread-length edges", True, ("thread-length L (default 2, Figure 6.21)",),
+                  CHECKS, bound_fn=explore_bound, explorer=ThreadExplorer,
+                  parameters=(Parameter("thread-length", LENGTH.help, default=2, minimum=1),),
+                  kit_fn=lambda n, m, opts: Kit(thread=opts["thread-length"]), **_ROBOT),
+)

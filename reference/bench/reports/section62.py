@@ -1,0 +1,359 @@
+"""Tables 6.1 and 6.2 measured: the reports of ``topomark bench table-6.1``, ``table-6.2``, ``figure-6.13``, ``section-6.2``.
+
+The thesis's Tables 6.1 and 6.2 (§6.2, L1472–L1993; quoted verbatim in
+:data:`CLAIMS`) state, per class of markers, a marker count and an asymptotic
+cost bound; its Figures 6.11–6.13, 6.17 and 6.18 are lost, only their captions
+and the prose findings remain (guide §§6.9, 7.4, 11).  These reports put
+beside each claim what the kit algorithms (:mod:`~topomark.reference.algorithms.registrations`)
+measure on the bench's lattice-hole and complete-hole worlds
+(:mod:`~topomark.reference.bench.plan`), and say whether it held:
+
+* **maps** — every world mapped correctly (the checked outcome ``correct``);
+* **markers** — the markers used (the sum of counts dropped, max and mean) never
+  above the thesis's stated count for that n and m, and never above the bound the
+  registry checks after every drop (the two differ where the thesis is
+  corrected: Case 3a's Σ^{n}, Case 4's ⌊(n−1)/2⌋, extension's ceilings);
+* **cost** — an asymptotic bound cannot be checked on finite worlds; ours is the
+  test "cost grows no faster than the bound's function f": the least-squares
+  slope of log(mean cost) against log(mean f) over the sizes is ≤ 1.1
+  (:data:`SLOPE_TOLERANCE`), where f is m, mn, m·d_max or m²n.  The O(mn)
+  algorithms report cost/(mn), the O(m) ones cost/m.
+
+The O(m) algorithms (Case 3b, Σ k directional V-markers, extension-1/2) get the
+breakdown of cost/m the issue asks for — new edges (exactly m), trips made to
+drop markers (purpose ``other``), travel between frontier edges — and every
+lattice-hole world above 3m is listed.  The figures' findings and plots are
+:mod:`~topomark.reference.bench.reports.section62_figures`'s.
+
+Examples
+--------
+>>> CLAIMS["case-3b"].cost, CLAIMS["case-3b"].stated(5, 7)
+('m', 10)
+>>> slope([(10, 100), (20, 200), (40, 400)])
+1.0
+"""
+
+from __future__ import annotations
+
+import math
+import statistics
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Callable
+
+from topomark.reference.bench.plan import EXPERIMENTS, FAMILIES, NO_LIGHTHOUSE
+from topomark.reference.bench.reports.kit import latest, mean, num, plot_lines, report_head, sd
+from topomark.reference.bench.reports.section62_figures import EDGEINFO
+from topomark.reference.explorers.counted_markers import sum_to
+from topomark.reference.bench.run_store import read_runs, write_atomic
+
+__all__ = ["CLAIMS", "REPORTS", "Claim", "write_report", "groups", "slope", "cost_f", "O_M", "SLOPE_TOLERANCE"]
+
+SLOPE_TOLERANCE = 1.1
+O_M = ("case-3b", "case-dv-sum", "extension-1", "extension-2")
+
+
+@dataclass(frozen=True)
+class Claim:
+    """One algorithm's row of Table 6.1 / 6.2: the row verbatim, its cost bound, the marker count it states."""
+
+    table: str
+    row: str  # the thesis's row, verbatim (guide §6.10 / §7.5)
+    cost: str | None  # "m", "mn", "m·d_max", "m²n"; None: no bound (Case 0 fails)
+    stated_text: str
+    stated: Callable[[int, int], int] | None  # the thesis's count for (n, m); None: not a count (Case 5)
+    checked_text: str  # the bound the registry checks after every drop
+
+
+T61 = "| {} | {} | {} | {} |"
+CLAIMS: dict[str, Claim] = {
+    "case-1a": Claim("6.1", T61.format("(m)", "edge (E-marker)", "none", "O(mn)"), "mn", "m",
+                     lambda n, m: m, "m"),
+    "case-1b": Claim("6.1", T61.format("(m)", "vertex + edge (V-E-marker)", "none", "O(mn)"), "mn",
+                     "m + 1 (L1510; m with the extension, L1512)", lambda n, m: m + 1, "m + 1"),
+    "case-2": Claim("6.1", T61.format("m + n", "edge (E-marker)", "none", "O(mn)"), "mn", "m + n",
+                    lambda n, m: m + n, "m + n − 1 (L1529)"),
+    "case-3a": Claim("6.1", T61.format("Σ_{k=1}^{n−1} k", "vertex (V-marker)", "none", "O(m·d_max)"), "m·d_max",
+                     "Σ_{k=1}^{n−1} k", lambda n, m: sum_to(n - 1), "Σ_{k=1}^{n} k (L1577, Figure 6.6)"),
+    "case-3b": Claim("6.1", T61.format("(Σ_{k=1}^{n−1} k)", "edge (E-marker)", "none", "O(m)"), "m",
+                     "Σ_{k=1}^{n−1} k", lambda n, m: sum_to(n - 1), "Σ_{k=1}^{n−1} k"),
+    "case-4": Claim("6.1", T61.format("m − ⌊n/2⌋", "edge (E-marker)", "closest-first", "O(mn)"), "mn",
+                    "m − ⌊n/2⌋", lambda n, m: m - n // 2, "m − ⌊(n−1)/2⌋ (L1663 corrected)"),
+    "case-4-mn": Claim("6.1", T61.format("m", "edge (E-marker)", "closest-first", "O(mn)"), "mn", "m",
+                       lambda n, m: m, "m + [n even] (L1665 corrected)"),
+    "case-5-v1": Claim("6.1", T61.format("unknown k > 3", "vertex, edge, or vertex+edge", "none", "O(m²n)"), "m²n",
+                       "k > 3, not known relative to the world", None, "Σ_{k=1}^{n} k (K given: any)"),
+    "case-5-v2": Claim("6.1", T61.format("unknown k > 3", "vertex, edge, or vertex+edge", "none", "O(m²n)"), "m²n",
+                       "k > 3, not known relative to the world", None, "m + 4"),
+    "case-0": Claim("6.1", "Case 0 (not a row): \"this approach does not work in general\" (L1491)", None,
+                    "n", lambda n, m: n, "n"),
+    "case-dv-sum": Claim("6.2", "| Σ_{k=1}^{n−1} k | vertex (V-marker) | none | O(m·d_max) | O(m) |", "m",
+                         "Σ_{k=1}^{n−1} k", lambda n, m: sum_to(n - 1), "Σ_{k=1}^{n} k"),
+    "extension-1": Claim("6.2", "| Σ_{k=1}^{⌊m/2⌋} k | edge (E-marker) | closest-first | O(mn)* | O(m) |", "m",
+                         "Σ_{k=1}^{⌊m/2⌋} k (table; text ⌈m/2⌉, L1910)", lambda n, m: sum_to(m // 2),
+                         "Σ_{k=1}^{⌈m/2⌉} k"),
+    "extension-2": Claim("6.2", "| Σ_{k=1}^{⌊(n−1)/2⌋} k | edge (E-marker) | closest-first + 'back to v_k' | O(mn)* "
+                                "| O(m) |", "m", "Σ_{k=1}^{⌊(n−1)/2⌋} k (table; text ⌈(n−1)/2⌉, L1929)",
+                         lambda n, m: sum_to((n - 1) // 2), "Σ_{k=1}^{⌈(n−1)/2⌉} k"),
+}
+CLAIMS.update({
+    "case-1b-edgeinfo": Claim("6.2", "| (m) | vertex + edge (V-E-marker) | none | O(mn) | O(mn) |", "mn",
+                              "m + 1 (L1510; m with the extension, L1512)", lambda n, m: m + 1, "m + 1"),
+    "case-2-edgeinfo": Claim("6.2", "| m + n | edge (E-marker) | none | O(mn) | O(mn) |", "mn", "m + n",
+                             lambda n, m: m + n, "m + n − 1 (L1529)"),
+    "case-1a-edgeinfo": Claim("6.2", "| (m) | edge (E-marker) | none | O(mn) | O(mn) |", "mn", "m",
+                              lambda n, m: m, "m"),
+    "case-4-edgeinfo": Claim("6.2", "| m − ⌊n/2⌋ | edge (E-marker) | closest-first | O(mn) | O(mn) |", "mn",
+                             "m − ⌊n/2⌋", lambda n, m: m - n // 2, "m − ⌊(n−1)/2⌋ (L1663 corrected)"),
+    "case-4-mn-edgeinfo": Claim("6.2", "| m | edge (E-marker) | closest-first | O(mn) | O(mn) |", "mn", "m",
+                                lambda n, m: m, "m + [n even] (L1665 corrected)"),
+})
+CLAIMS_62_UNDIRECTED = {"case-3b": "| (Σ_{k=1}^{n−1} k) | edge (E-marker) | none | O(m) | O(m) |"}
+COST_F: dict[str, Callable[[dict], float]] = {
+    "m": lambda r: float(r["m"]), "mn": lambda r: float(r["m"]) * float(r["n"]),
+    "m·d_max": lambda r: float(r["m"]) * float(r.get("d_max") or 0), "m²n": lambda r: float(r["m"]) ** 2 * float(r["n"]),
+}
+REPORTS = ("table-6.1", "table-6.2", "figure-6.13", "section-6.2")
+
+
+def cost_f(alg: str, row: dict) -> float | None:
+    """f(n, m, d_max) of the algorithm's stated cost bound, for this run's world."""
+    c = CLAIMS.get(alg)
+    return COST_F[c.cost](row) if c and c.cost else None
+
+
+def slope(points: list[tuple[float, float]]) -> float | None:
+    """Least-squares slope of log y against log x (None with fewer than two distinct x)."""
+    pts = [(math.log(x), math.log(y)) for x, y in points if x > 0 and y > 0]
+    if len({p[0] for p in pts}) < 2:
+        return None
+    mx, my = statistics.fmean(p[0] for p in pts), statistics.fmean(p[1] for p in pts)
+    return round(sum((x - mx) * (y - my) for x, y in pts) / sum((x - mx) ** 2 for x, _ in pts), 3)
+
+
+def correct(r: dict) -> bool:
+    """The run mapped its world correctly (a row without the outcome column: verified)."""
+    return r.get("outcome") == "correct" or (not r.get("outcome") and str(r.get("verified")) == "True")
+
+
+def groups(rows: list[dict], only_correct: bool = True) -> dict[tuple[str, str, str, int], list[dict]]:
+    """(family, algorithm, option set, size) -> the finished runs (one per key, the checked one preferred); only
+    those that mapped their world correctly unless ``only_correct`` is False (costs and means are over these)."""
+    out: dict[tuple, list[dict]] = {}
+    for r in latest(rows):
+        if r.get("cost") in ("", None) or (only_correct and not correct(r)):
+            continue
+        out.setdefault((r["experiment"], r["algorithm"], r.get("options") or "", int(r["size"])), []).append(r)
+    return out
+
+
+def _yes(ok: bool) -> str:
+    return "yes" if ok else "**no**"
+
+
+def write_report(experiment: str, out: Path, wall: float | None = None, plots: bool = True) -> Path:
+    """``out/EXPERIMENT.md`` (and plots) from ``out/runs.csv``; ``section-6.2`` writes the three reports."""
+    from topomark.reference.bench.reports import section62_figures as bench_figures6
+    rows = read_runs(out / "runs.csv").rows
+    g, tried = groups(rows), groups(rows, only_correct=False)
+    if experiment == "section-6.2":
+        for name in REPORTS[:3]:
+            write_report(name, out, None, plots)
+    exp = EXPERIMENTS[experiment]
+    lines = report_head(experiment, exp, rows, wall,
+                        " (thesis §3.1.2); markers used = the markers the robot dropped (the sum of the counts "
+                        "of the simulator's drops). Every algorithm of a size explores the same worlds from the same "
+                        "start. The thesis's Figures 6.11–6.13, 6.17, 6.18 are lost (guide §11): only their captions "
+                        "and the prose findings are quoted.")
+    made: list[Path] | None = [] if plots else None
+    if experiment == "section-6.2":
+        lines += ["The reports: `table-6.1.md`, `table-6.2.md`, `figure-6.13.md` (written beside this one).", ""]
+        lines += marker_classes(g, tried)
+    elif experiment == "figure-6.13":
+        lines += bench_figures6.figure_613(exp, g)
+        made = bench_figures6.plots(experiment, g, out) if plots else None
+    else:
+        table = experiment.split("-")[1]
+        algs = [a for a in exp.parts[0].algorithms]
+        lines += thesis_rows(table, algs) + claims_table(exp, g, tried, algs) + size_tables(exp, g, tried, algs)
+        lines += om_breakdown(exp, g, [a for a in algs if a in O_M])
+        lines += bench_figures6.findings(experiment, exp, g)
+        made = bench_figures6.plots(experiment, g, out) if plots else None
+    lines += plot_lines(made, plots) if experiment != "section-6.2" else []
+    path = out / f"{experiment}.md"
+    write_atomic(path, "\n".join(lines))
+    return path
+
+
+def thesis_rows(table: str, algs: list[str]) -> list[str]:
+    """The thesis's rows of Table 6.x for these algorithms, verbatim (guide §6.10 / §7.5)."""
+    if table == "6.1":
+        head = ["| algorithm | Number | Drop Place | Constraints | Upper bounds (edge traversals) |", "|---|---|---|---|---|"]
+    else:
+        head = ["| algorithm | Number | Drop Place | Constraints | undirected | directional |", "|---|---|---|---|---|---|"]
+    body = []
+    for a in algs:
+        row = CLAIMS_62_UNDIRECTED.get(a) if table == "6.2" and a in CLAIMS_62_UNDIRECTED else CLAIMS[a].row
+        body.append(f"| `{a}` {row}" if row.startswith("|") else f"| `{a}` | {row} |" + " |" * (3 if table == "6.1" else 4))
+    lines = [f"## Table 6.{table[-1]}: the thesis's rows (verbatim) and the algorithm measuring each", ""] + head + body
+    if table == "6.2":
+        lines += ["", "`case-3b` (undirected, Table 6.1) is run as the original the extensions save markers from; "
+                  + ", ".join(f"`{o}`" for o in EDGEINFO.values()) + " as the originals of their edgeINFO variants. "
+                  "Table 6.2's rows 1–3 (one, two, three markers) are "
+                  "Algorithm 3.1 with a lighthouse: `topomark bench lighthouses`."]
+    else:
+        lines += ["", "Table 6.1's rows 1–3 (one marker: N/A; 2 V-E and 3 markers: O(m²n)) are Algorithm 3.1 with "
+                  "the `vertex-and-edge` and `three-undirected-edge` lighthouses: `topomark bench lighthouses`."]
+    return lines + [""]
+
+
+def _family_algs(exp, g: dict, algs: list[str]):
+    for part in exp.parts:
+        for a in algs:
+            sizes = sorted(k[3] for k in g if k[0] == part.family and k[1] == a and k[2] == "")
+            if sizes:
+                yield part.family, a, sizes
+
+
+def claim_verdicts(family: str, alg: str, g: dict, tried: dict, sizes: list[int]) -> dict:
+    """Over every world of (family, alg) with default options: maps, markers vs stated and checked (every run);
+    the cost slope (over the sizes' correct runs)."""
+    rs = [r for s in sizes for r in tried[(family, alg, "", s)]]
+    c = CLAIMS[alg]
+    used = [num(r, "markers_used") for r in rs]
+    over_stated = [r for r in rs if c.stated and num(r, "markers_used") > c.stated(int(r["n"]), int(r["m"]))]
+    over_checked = [r for r in rs if r.get("marker_bound") not in ("", None) and
+                    num(r, "markers_used") > num(r, "marker_bound")]
+    f = [(mean(g[(family, alg, "", s)], lambda r: cost_f(alg, r)), mean(g[(family, alg, "", s)], lambda r: num(r, "cost")))
+         for s in sizes if g.get((family, alg, "", s))] if c.cost else []
+    sl = slope(f) if f else None
+    over_exact = [r for r in rs if r.get("upper_bound") not in ("", None) and num(r, "cost") > num(r, "upper_bound")]
+    ok = [r for s in sizes for r in g.get((family, alg, "", s), ())]
+    ratio_f = max((num(r, "cost") / cost_f(alg, r) for r in ok), default=None) if c.cost else None
+    return {"worlds": len(rs), "correct": sum(correct(r) for r in rs),
+            "used_max": max(used), "used_mean": statistics.fmean(used),
+            "ratio_max": max(num(r, "markers_used") / c.stated(int(r["n"]), int(r["m"])) for r in rs) if c.stated else None,
+            "over_stated": over_stated, "over_checked": over_checked, "slope": sl, "over_exact": over_exact,
+            "exact": any(r.get("upper_bound") not in ("", None) for r in rs), "ratio_f": ratio_f}
+
+
+def claims_table(exp, g: dict, tried: dict, algs: list[str]) -> list[str]:
+    lines = ["## The claims, and whether they held", "",
+             "Markers: used ÷ the thesis's stated count for the world's n and m (max over worlds); checked bound = "
+             "the formula the checker enforces after every drop. Cost: slope of log(mean cost) against log(f) over "
+             f"the sizes (held if ≤ {SLOPE_TOLERANCE}: the cost grows no faster than the bound's f; with few worlds per "
+             "size a world-to-world spread can tip it — compare max cost/f).", "",
+             "| family | algorithm | thesis cost | worlds | mapped correctly | markers used max / mean | thesis count "
+             "(used ÷ count, max) | ≤ thesis count? | checked bound | ≤ checked? | max cost/f | cost slope vs f | cost held? |",
+             "|---|---|---|---:|---:|---:|---|---|---|---|---:|---:|---|"]
+    for fam, a, sizes in _family_algs(exp, tried, algs):
+        v, c = claim_verdicts(fam, a, g, tried, sizes), CLAIMS[a]
+        ratio = f" ({v['ratio_max']:.3f})" if v["ratio_max"] is not None else ""
+        stated_ok = ("—" if c.stated is None else _yes(not v["over_stated"]) +
+                     (f" ({len(v['over_stated'])} worlds over)" if v["over_stated"] else ""))
+        cost_ok = ("—" if v["slope"] is None else _yes(v["slope"] <= SLOPE_TOLERANCE))
+        if v["exact"]:
+            cost_ok += f"; ≤ our exact bound on every world: {_yes(not v['over_exact'])}"
+        lines.append(f"| {fam} | `{a}` | {('O(' + c.cost + ')') if c.cost else 'fails (L1491)'} | {v['worlds']} | "
+                     f"{v['correct']}/{v['worlds']} | {v['used_max']:,.0f} / {v['used_mean']:,.1f} | {c.stated_text}"
+                     f"{ratio} | {stated_ok} | {c.checked_text} | {_yes(not v['over_checked'])} | "
+                     f"{'—' if v['ratio_f'] is None else format(v['ratio_f'], '.4g')} | "
+                     f"{'—' if v['slope'] is None else v['slope']} | {cost_ok} |")
+    return lines + ["", "Case 5's count is not a claim (the robot is given any K > 3); its rows run with the default "
+                    "K that lets phase I mark every place (`figure-6.13` varies K). Case 0 is expected to fail on "
+                    "some worlds (the certified pair is in `tests/test_markers_case5.py`).", ""]
+
+
+def size_tables(exp, g: dict, tried: dict, algs: list[str]) -> list[str]:
+    """Per family and size: worlds and correct maps (every run); markers, cost, cost/m, cost/f (correct runs)."""
+    lines = []
+    for part in exp.parts:
+        keys = [k for k in tried if k[0] == part.family and k[1] in algs and k[2] == ""]
+        if not keys:
+            continue
+        lines += [f"## {part.family} ({FAMILIES[part.family].figure} worlds): per size", "",
+                  "| size | algorithm | worlds | correct | n | m | markers used mean (max) | thesis count (mean) | "
+                  "cost mean ± sd | cost/m | cost/f |", "|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+        for size in sorted({k[3] for k in keys}):
+            for a in algs:
+                rs, every = g.get((part.family, a, "", size)), tried.get((part.family, a, "", size))
+                if not every:
+                    continue
+                if not rs:
+                    lines.append(f"| {size} | `{a}` | {len(every)} | 0 |" + " — |" * 7)
+                    continue
+                c = CLAIMS[a]
+                stated = f"{mean(rs, lambda r: c.stated(int(r['n']), int(r['m']))):,.1f}" if c.stated else "—"
+                f = f"{mean(rs, lambda r: num(r, 'cost') / cost_f(a, r)):.4g} (f = {c.cost})" if c.cost else "—"
+                lines.append(f"| {size} | `{a}` | {len(every)} | {len(rs)} | "
+                             f"{mean(rs, lambda r: num(r, 'n')):.0f} | {mean(rs, lambda r: num(r, 'm')):.1f} | "
+                             f"{mean(rs, lambda r: num(r, 'markers_used')):,.1f} "
+                             f"({max(num(r, 'markers_used') for r in rs):,.0f}) | {stated} | "
+                             f"{mean(rs, lambda r: num(r, 'cost')):,.0f} ± {sd(rs, lambda r: num(r, 'cost')):,.0f} | "
+                             f"{mean(rs, lambda r: num(r, 'cost') / num(r, 'm')):.2f} | {f} |")
+        lines.append("")
+    return lines
+
+
+def om_breakdown(exp, g: dict, algs: list[str]) -> list[str]:
+    """cost/m of the O(m) algorithms and what it is made of; every lattice-hole world above 3m, named."""
+    if not algs:
+        return []
+    lines = ["## The O(m) algorithms against the lower bound m: what cost/m is made of", "",
+             "new = the m new edges (1 per edge); drop trips = purpose `other` (Algorithm 6.6 line 10: back on e "
+             "to drop markers and back; Case 3b's walk back to drop i markers on e); travel = walking S between "
+             "frontier edges; probes = validation + retrace. Means per m over the worlds of the size.", "",
+             "| family | algorithm | size | worlds | cost/m mean | cost/m max | new/m | drop trips/m | travel/m | "
+             "probes/m | worlds > 3m |", "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    over = []
+    for fam, a, sizes in _family_algs(exp, g, algs):
+        for s in sizes:
+            rs = g[(fam, a, "", s)]
+            per = lambda col: mean(rs, lambda r: num(r, col) / num(r, "m"))  # noqa: E731
+            big = [r for r in rs if num(r, "cost") > 3 * num(r, "m")]
+            over += [(fam, a, r) for r in big]
+            lines.append(f"| {fam} | `{a}` | {s} | {len(rs)} | {per('cost'):.3f} | "
+                         f"{max(num(r, 'cost') / num(r, 'm') for r in rs):.3f} | {per('new'):.2f} | {per('other'):.2f} | "
+                         f"{per('travel'):.2f} | {mean(rs, lambda r: (num(r, 'validation') + num(r, 'retrace')) / num(r, 'm')):.2f} | "
+                         f"{len(big)} |")
+    lattice = [o for o in over if o[0] == "lattice-hole"]
+    lines += ["", f"Lattice-hole worlds above 3m (the issue expects none at the Chapter 4 sizes): "
+              f"**{len(lattice)}**" + ("." if not lattice else ":"), ""]
+    for fam, a, r in over:
+        parts = {c: num(r, c) / num(r, "m") for c in ("other", "travel", "validation", "retrace")}
+        worst = max(parts, key=parts.get)
+        lines.append(f"* {fam} size {r['size']} seed {r['seed']} `{a}`: n = {r['n']}, m = {r['m']}, cost/m = "
+                     f"{num(r, 'cost') / num(r, 'm'):.3f}; the excess over the m new edges is mostly `{worst}` "
+                     f"({parts[worst]:.2f} m).")
+    return lines + [""]
+
+
+def marker_classes(g: dict, tried: dict) -> list[str]:
+    """Every marker class of Tables 6.1/6.2 with topomark's command, mean cost and markers at the largest sizes."""
+    lines = ["## Every marker class of Tables 6.1 and 6.2: topomark's command, measured cost and markers", "",
+             "Mean cost (cost/m) and mean markers used at the largest size run of each family.", "",
+             "| marker class (thesis) | command | lattice-hole: size, cost (cost/m), markers | "
+             "complete-hole: size, cost (cost/m), markers |", "|---|---|---|---|"]
+    for a, c in CLAIMS.items():
+        cells = []
+        for fam in ("lattice-hole", "complete-hole"):
+            sizes = [k[3] for k in g if k[0] == fam and k[1] == a and k[2] == ""]
+            every = [r for k, rs in tried.items() if k[0] == fam and k[1] == a and k[2] == "" for r in rs]
+            if not sizes:
+                cells.append(f"no world mapped correctly ({len(every)} runs: wrong map)" if every else "—")
+                continue
+            rs = g[(fam, a, "", max(sizes))]
+            cells.append(f"{max(sizes)}: {mean(rs, lambda r: num(r, 'cost')):,.0f} "
+                         f"({mean(rs, lambda r: num(r, 'cost') / num(r, 'm')):.2f}), "
+                         f"{mean(rs, lambda r: num(r, 'markers_used')):,.0f}")
+        lines.append(f"| Table {c.table}: {' · '.join(x.strip() for x in c.row.strip('|').split('|'))} | "
+                     f"`topomark explore WORLD --algorithm {a}` | "
+                     + " | ".join(cells) + " |")
+    return lines + ["", "Rows 1–3 of the tables (one, two, three markers) are Algorithm 3.1 with a lighthouse: "
+                    "`topomark explore WORLD --lighthouse vertex-and-edge` / `three-undirected-edge`, measured by "
+                    "`topomark bench lighthouses`.", ""]
+
+
+def kit_rows(rows: list[dict]) -> list[dict]:
+    """The rows of kit algorithms (no lighthouse)."""
+    return [r for r in rows if r.get("lighthouse") == NO_LIGHTHOUSE]

@@ -1,0 +1,1 @@
+"""The ``topomark`` command line: :mod:`.main` parses and dispatches, one ``cmd_*`` module per command."""

@@ -1,0 +1,40 @@
+"""``topomark algorithms [--json]``: the registered algorithms, their thesis references, kits and bounds.
+
+The JSON form is a list of objects with ``name``, ``thesis``, ``kit``,
+``bound``, ``markers``, ``deterministic``, ``options``, ``checks``,
+``family``, ``parameters``, ``kit_from_world`` and, for the lighthouse
+algorithms, ``lighthouses``
+(:meth:`topomark.reference.algorithms.algorithm_spec.AlgorithmSpec.to_json`).
+"""
+
+from __future__ import annotations
+
+import json
+
+from topomark.reference.algorithms.registry import CHECKS, REGISTRY
+
+__all__ = ["register", "algorithms_command"]
+
+
+def register(sub) -> None:
+    p = sub.add_parser("algorithms", help="list the registered algorithms with their thesis references and bounds",
+                       description=__doc__.split("\n\n")[0])
+    p.add_argument("--json", action="store_true", help="a JSON list on stdout")
+    p.set_defaults(handler=algorithms_command)
+
+
+def algorithms_command(args) -> int:
+    specs = list(REGISTRY.values())
+    if args.json:
+        print(json.dumps([s.to_json() for s in specs], indent=1))
+        return 0
+    width = max(len(s.name) for s in specs)
+    for s in specs:
+        print(f"{s.name:<{width}}  {s.thesis}")
+        kit = f"computed from n and m ({s.markers})" if s.kit_fn is not None else s.kit.describe()
+        lighthouse = "; lighthouse: any (--lighthouse)" if s.uses_lighthouse else ""
+        print(f"{'':<{width}}  kit: {kit}{lighthouse}; bound: {s.bound or 'none stated in the thesis'}")
+        if s.parameters:
+            print(f"{'':<{width}}  options: " + ", ".join(f"--{p.name} (default {p.default})" for p in s.parameters))
+    print(f"\nchecks: " + "; ".join(f"{k} = {v}" for k, v in CHECKS.items()))
+    return 0

@@ -1,0 +1,208 @@
+"""``topomark explore``: a checked exploration by Algorithm 3.1 (thesis §3.3–3.5)."""
+
+from __future__ import annotations
+
+import contextlib
+import json
+import sys
+import time
+
+from topomark.spec.errors import InvalidInput
+from topomark.spec.worldfile import dumps_world
+
+from topomark.reference.run.explore import check_run, explore
+from topomark.reference.explorers.lighthouses import LIGHTHOUSES, configured
+from topomark.reference.algorithms.registry import REGISTRY, algorithm_spec, parameters
+from topomark.reference.worlds.generators import DEFAULT_WORLD
+from topomark.reference.files.outputs import check_output, check_output_dir, guarded, write_output
+from topomark.reference.explorers.policies import EDGE_POLICIES, HYPOTHESIS_POLICIES, PATH_POLICIES, Policies
+from topomark.reference.trace.sink import FileSink, RingSink, TeeSink
+from topomark.reference.worlds.argument import resolve_world
+
+__all__ = ["register", "parse_policies"]
+
+
+def register(sub) -> None:
+    p = sub.add_parser(
+        "explore", help="explore a world with every invariant checked after every step",
+        description="Explore WORLD (a world file or GENERATOR[:NAME=VALUE,...]; default: a built-in 5x5 lattice "
+                    "with 2 cells removed) and verify the map. Exit 0 when the map is verified isomorphic, 1 on an "
+                    "invariant violation, 2 on bad input.")
+    p.add_argument("world", nargs="?", metavar="WORLD_OR_GENERATOR")
+    p.add_argument("--algorithm", default="basic", help=f"one of: {', '.join(REGISTRY)} (default basic; "
+                                                          "topomark algorithms lists them)")
+    p.add_argument("--lighthouse", default=None,
+                   help=f"how v0 is marked: {', '.join(LIGHTHOUSES)} (default directional-vertex, Algorithm 3.1's; "
+                        "for Algorithm 3.1 and the Chapter 4 enhancements only)")
+    for param in parameters().values():
+        takers = ", ".join(s.name for s in REGISTRY.values() if param in s.parameters)
+        p.add_argument(f"--{param.name}", dest=f"param_{param.name.replace('-', '_')}", metavar="VALUE",
+                       help=f"{param.help} (for {takers}; default {param.default})")
+    p.add_argument("--policy", action="append", default=[], metavar="KIND=NAME",
+                   help=f"edge={'|'.join(EDGE_POLICIES)}, hypothesis={'|'.join(HYPOTHESIS_POLICIES)}, "
+                        f"path={'|'.join(PATH_POLICIES)}; a bare NAME sets the edge policy (repeatable)")
+    p.add_argument("--seed", type=int, help="seed for a random generator; with a searched lighthouse "
+                                            "(undirected-vertex, undirected-edge) the seed of its random walk")
+    p.add_argument("--walk-limit", metavar="N", help="a searched lighthouse gives up after N walk steps (default 200, "
+                                                     "§5.1's threshold)")
+    p.add_argument("--neighbourhood", metavar="D", help="undirected-vertex: test the neighbours' views to distance D "
+                                                        "(default 1, §5.1)")
+    p.add_argument("--threshold", metavar="N", help="local-pair, local-degree-list: the least-seen candidate must "
+                                                    "be seen fewer than N times (default: the walk's observations, §5.2.1)")
+    p.add_argument("--no-check", action="store_true", help="skip the per-iteration checks (faster)")
+    p.add_argument("--check-mode", default="incremental", choices=("incremental", "full", "both"),
+                   help="how I-1/I-2 are evaluated each iteration: per journalled change (default), from scratch, "
+                        "or both (they must agree); the final verdict is always from scratch")
+    p.add_argument("--trace", metavar="FILE", help="write the JSON Lines trace here")
+    p.add_argument("--map", metavar="FILE", help="write the final map (world format, marker included)")
+    p.add_argument("--models", metavar="DIR", help="write every completed model as a world file, in completion order "
+                                                   "(model-0001.json, ...; algorithms that keep models: model-tree)")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
+    p.add_argument("--quiet", action="store_true", help="no progress bar")
+    p.set_defaults(handler=explore_command)
+
+
+def parse_policies(items: list[str]) -> Policies:
+    chosen: dict[str, str] = {}
+    for item in items:
+        kind, eq, name = item.partition("=")
+        if not eq:
+            kind, name = "edge", item
+        if kind not in ("edge", "hypothesis", "path"):
+            raise InvalidInput(f"--policy {item!r}: the kind must be edge, hypothesis or path")
+        if kind in chosen:
+            raise InvalidInput(f"--policy: the {kind} policy is given twice")
+        chosen[kind] = name
+    return Policies(**chosen)
+
+
+class _Progress:
+    """Progress on stderr: a one-line bar on a terminal; otherwise, on a long run, a plain line every ``every`` s.
+
+    The plain lines (edges explored / m, cost so far, elapsed) start only once the run has taken ``every``
+    seconds, so short runs and logs stay quiet.
+    """
+
+    def __init__(self, enabled: bool, stream=None, clock=time.monotonic, every: float = 10.0):
+        self.stream = stream or sys.stderr
+        self.enabled = enabled
+        self.tty = self.stream.isatty()
+        self.clock, self.every = clock, every
+        self.started = self.last = clock()
+
+    def __call__(self, done: int, total: int, cost: int = 0) -> None:
+        if not self.enabled:
+            return
+        now = self.clock()
+        if self.tty:
+            self._bar(now, done, total)
+        elif now - self.last >= self.every:
+            self.last = now
+            self.stream.write(f"topomark: exploring: {done}/{total} edges explored, cost {cost} so far, "
+                              f"{now - self.started:.0f} s elapsed\n")
+            self.stream.flush()
+
+    def _bar(self, now: float, done: int, total: int) -> None:
+        if now - self.last < 0.2 and done < total:
+            return
+        self.last = now
+        width = 30
+        fill = width * done // max(total, 1)
+        self.stream.write(f"\rexploring [{'#' * fill}{'.' * (width - fill)}] {done}/{total} edges")
+        if done >= total:
+            self.stream.write("\n")
+        self.stream.flush()
+
+
+def _table(o, started: float, lighthouse: bool = True) -> str:
+    """The report's table; a kit algorithm's has its steps and its own counts where Algorithm 3.1's has
+    iterations and hypotheses."""
+    rows = [
+        ("n", o.n), ("m", o.m), ("cost (edge traversals)", o.cost), ("cost / m", f"{o.cost / o.m:.2f}"),
+        ("upper bound (3.1)+(3.2)" if lighthouse else "cost bound (registry)",
+         o.upper_bound if o.upper_bound is not None else "none stated"),
+        *((f"  {purpose}", count) for purpose, count in o.by_purpose.items()),
+        ("marker operations (not cost, §3.1.2)",
+         ", ".join(f"{op.replace('_', ' ')}: {n}" for op, n in o.marker_operations.items()) or "none"),
+    ]
+    if lighthouse:
+        rows += [("iterations (non-loop + loop)", f"{o.iterations} ({o.nonloop_iterations} + {o.loop_iterations})"),
+                 ("hypotheses (rejected / confirmed)",
+                  f"{o.hypotheses} ({o.hypotheses_rejected} / {o.hypotheses_confirmed})")]
+    else:
+        rows += [("steps", o.iterations), *((key.replace("_", " "), value) for key, value in o.extra.items())]
+    rows += [("outcome (claimed / judged)", f"{o.claimed} / {o.outcome}"), ("checks passed", o.checks),
+             ("wall time", f"{time.monotonic() - started:.2f} s")]
+    width = max(len(k) for k, _ in rows)
+    return "\n".join(f"{k:<{width}}  {v}" for k, v in rows)
+
+
+TAIL = 8  # trace records shown before a violation's end record
+
+
+def explore_command(args) -> int:
+    policies = parse_policies(args.policy)
+    spec = algorithm_spec(args.algorithm)
+    options = {name: getattr(args, f"param_{name.replace('-', '_')}") for name in parameters()}
+    for path in (args.trace, args.map):  # before the run: a typo must not cost a long exploration
+        if path:
+            check_output(path)
+    if args.models is not None:
+        if spec.write_models is None:
+            raise InvalidInput(f"--models: the algorithm {spec.name} keeps no models (model-tree does)")
+        check_output_dir(args.models)
+    light, seed = configured(args.lighthouse, args.seed, args.walk_limit, args.neighbourhood, args.threshold)
+    if args.world is None:
+        if seed is not None:
+            raise InvalidInput("--seed needs a generator: the built-in default world is fixed")
+        world, label = DEFAULT_WORLD(), "built-in default world (5x5 lattice, 2 cells removed, seed 1)"
+    else:
+        world, label = resolve_world(args.world, seed), args.world
+    check_run(world, spec, light, options)  # refused before the trace file is started
+    started = time.monotonic()
+    ring = RingSink(TAIL + 1)
+    with contextlib.ExitStack() as stack:
+        sink = TeeSink(stack.enter_context(FileSink(args.trace)), ring) if args.trace else ring
+        outcome = explore(world, spec, policies, check=not args.no_check, sink=sink,
+                          progress=_Progress(not (args.quiet or args.json)), check_mode=args.check_mode,
+                          keep_hypotheses=False, lighthouse=light, options=options)
+    S = getattr(outcome.explorer, "S", None)
+    if args.map and outcome.violation is None and S is not None and S.complete():
+        write_output(args.map, dumps_world(S.to_world()))
+    if args.models is not None:
+        guarded(args.models, lambda: spec.write_models(outcome.explorer, args.models))
+    last = ring.records[:-1]  # the records before the end record
+    data = {"world": label, "policies": policies.to_json(), "algorithm": args.algorithm, **outcome.summary(),
+            "checked": not args.no_check}
+    tail = [json.dumps(rec, sort_keys=True) for rec in last] if outcome.violation else []
+    if tail:
+        data["trace_tail"] = last
+    if args.json:
+        print(json.dumps(data, indent=1, sort_keys=True))
+    else:
+        _print_report(args, spec, label, policies, outcome, started, tail)
+    if outcome.violation is not None and args.json:
+        print(f"topomark: check failed: {outcome.violation}", file=sys.stderr)
+    if outcome.violation is not None:  # even unchecked: the explorer's own map refused what it found
+        return 1
+    return 0 if outcome.outcome == "correct" or (args.no_check and outcome.claimed == "correct") else 1
+
+
+def _print_report(args, spec, label: str, policies, outcome, started: float, tail: list[str]) -> None:
+    """The human-readable report: what ran, the table, and the outcome — claimed by the algorithm, judged by
+    the checker (issue 11: ``correct``, ``wrong-map``, ``failed``, ``limit``)."""
+    setup = f"lighthouse {outcome.lighthouse}" if spec.uses_lighthouse else f"kit: {outcome.kit}"
+    print(f"explored {label} with {spec.thesis} ({args.algorithm}; {setup}; policies "
+          + ", ".join(f"{k}={v}" for k, v in policies.to_json().items()) + ")")
+    print(_table(outcome, started, spec.uses_lighthouse))
+    if outcome.violation is not None:
+        print(f"VIOLATION: {outcome.violation}")
+        print("the trace up to that point (last events; --trace FILE keeps all of it):")
+        print("\n".join(f"  {line}" for line in tail))
+    elif outcome.claimed != "correct":
+        print(f"outcome: {outcome.outcome} — the algorithm stopped: {outcome.reason}")
+    elif args.no_check:
+        print("not checked (--no-check): the map was not verified")
+    else:
+        print("verified: the map is extended-isomorphic to the world (markers included); "
+              f"{', '.join(c for c in spec.checks if c != 'isomorphism')} held after every step")

@@ -1,0 +1,261 @@
+"""topomark as an oracle for other implementations: ``run-external``, ``replay``, ``check-map``,
+``conformance``, ``drive`` (thesis §3.1, §3.3–3.4, §3.6).
+
+Exit codes as everywhere: 0 positive verdict, 1 negative verdict, 2 bad input.
+Every command takes ``--json``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from topomark.spec.errors import InvalidInput
+from topomark.spec.jsontext import parse_json
+from topomark.spec.kit import Kit
+from topomark.spec.worldfile import load_world, save_world
+
+from topomark.reference.oracle import conformance
+from topomark.reference.cli.parser import Parser, emit
+from topomark.reference.cli.args import check_count, check_seconds
+from topomark.reference.cli.cmd_explore import parse_policies
+from topomark.reference.oracle.drive import drive
+from topomark.reference.trace.records import dump_trace
+from topomark.reference.explorers.lighthouses import LIGHTHOUSES, lighthouse
+from topomark.reference.oracle.run_external import Limits, run_external
+from topomark.reference.run.map_check import check_map
+from topomark.reference.files.outputs import guarded
+from topomark.reference.replay.replay import load_trace, replay
+from topomark.reference.oracle.marker_messages import MAX_COUNT
+from topomark.reference.worlds.argument import resolve_world
+
+__all__ = ["register"]
+
+
+def _command(args) -> list[str]:
+    """The program after ``--``; options written between the positionals and ``--`` are parsed here."""
+    cmd = list(args.cmd)
+    if "--" in cmd:
+        k = cmd.index("--")
+        options, cmd = cmd[:k], cmd[k + 1:]
+        parser = Parser(prog=f"topomark {args.command}", add_help=False)
+        args.add_options(parser)
+        parser.parse_args(options, namespace=args)
+    if not cmd or cmd[0].startswith("-"):
+        raise InvalidInput(f"{args.command}: give the program to run after --, e.g. -- python3 client.py")
+    return cmd
+
+
+def _run_options(p) -> None:
+    _limits(p)
+    _protocol_options(p)
+    p.add_argument("--seed", type=int, help="seed for a random generator")
+    p.add_argument("--map", metavar="FILE", help="write the program's map here")
+    p.add_argument("--json", action="store_true")
+
+
+def _drive_options(p) -> None:
+    p.add_argument("--policy", action="append", default=[], metavar="KIND=NAME", help="as for explore")
+    p.add_argument("--check", metavar="WORLD", help="judge the map against this world file")
+    p.add_argument("--trace", metavar="FILE", help="write the topomark/trace@1 trace here")
+    p.add_argument("--map", metavar="FILE", help="write the map here")
+    p.add_argument("--max-traversals", type=int, default=1_000_000, metavar="N")
+    p.add_argument("--timeout", type=float, default=600.0, metavar="SECONDS", help="wall-time limit (default 600)")
+    p.add_argument("--message-timeout", type=float, default=10.0, metavar="SECONDS")
+    p.add_argument("--lighthouse", default="directional-vertex", metavar="NAME",
+                   help=f"the markers the explorer drops at v0: {', '.join(LIGHTHOUSES)} (default directional-vertex; "
+                        "another one needs a provider speaking topomark/protocol@2)")
+    p.add_argument("--json", action="store_true")
+
+
+def _conformance_options(p) -> None:
+    _limits(p)
+    _protocol_options(p)
+    p.add_argument("-k", "--select", metavar="TEXT", help="only the cases whose name contains TEXT")
+    p.add_argument("--json", action="store_true")
+
+
+def _protocol_options(p) -> None:
+    p.add_argument("--protocol", type=int, choices=(1, 2), metavar="1|2",
+                   help="the protocol version spoken to the program (default 1; 2 with --kit)")
+    p.add_argument("--kit", metavar="JSON", help="the program's marker kit, e.g. '{\"undirected-edge\": 3}' "
+                                                  "(implies --protocol 2; default {\"directional-vertex\": 1})")
+
+
+def _protocol_choice(args) -> tuple[int, Kit | None]:
+    """(version, kit) from --protocol and --kit: a kit implies @2 and cannot go with --protocol 1."""
+    if args.kit is None:
+        return args.protocol or 1, None
+    if args.protocol == 1:
+        raise InvalidInput("--kit needs topomark/protocol@2: give --protocol 2 (or leave --protocol out); "
+                           "topomark/protocol@1 knows only the kit {\"directional-vertex\": 1}")
+    kit = Kit.from_json(parse_json(args.kit, "--kit"))
+    counts = (kit.vertex, kit.edge, kit.either)
+    if max(counts) > MAX_COUNT or (sum(counts) == 0 and kit.thread is None):
+        raise InvalidInput(f"--kit: give 1..{MAX_COUNT} vertex or edge markers or a thread, got {kit.to_json()}")
+    return 2, kit
+
+
+def _no_action() -> int:
+    raise InvalidInput("conformance needs an action: export DIR, lint DIR or run DIR -- CMD")
+
+
+def _limits(p) -> None:
+    p.add_argument("--max-traversals", type=int, metavar="N",
+                   help="fail a program that traverses more edges (default: 4 x the (3.1)+(3.2) bound, >= 1000)")
+    p.add_argument("--timeout", type=float, default=60.0, metavar="SECONDS", help="wall-time limit (default 60)")
+    p.add_argument("--message-timeout", type=float, default=10.0, metavar="SECONDS",
+                   help="longest wait for one message (default 10)")
+
+
+def _make_limits(args) -> Limits:
+    for name in ("timeout", "message_timeout"):
+        check_seconds(getattr(args, name), f"--{name.replace('_', '-')}")
+    if args.max_traversals is not None:
+        check_count(args.max_traversals, "--max-traversals")
+    return Limits(args.max_traversals, args.timeout, args.message_timeout)
+
+
+def register(sub) -> None:
+    p = sub.add_parser("run-external", help="play a world to another program over topomark/protocol@1 and judge it",
+                       description="Run CMD as the explorer of WORLD (a world file or generator) over JSON Lines on "
+                                   "its stdin/stdout (spec/protocol.md). Exit 0 if its map is extended-isomorphic "
+                                   "and every snapshot satisfied I-1/I-2, 1 on any failure, 2 on bad input.")
+    p.add_argument("world", metavar="WORLD")
+    p.add_argument("cmd", nargs=argparse.REMAINDER, metavar="-- CMD [ARGS...]")
+    _run_options(p)
+    p.set_defaults(handler=run_external_command, add_options=_run_options)
+
+    q = sub.add_parser("check-map", help="judge a map file against a world file (extended isomorphism)",
+                       description="Exit 0 if MAP is extended-isomorphic to WORLD, 1 if not (with the first mismatch "
+                                   "in words), 2 on bad input. Markers: compared if the world file has any; else, if "
+                                   "the world has a start and the map one directional vertex marker, the lighthouse "
+                                   "Algorithm 3.1 drops at the start is added; else ignored.")
+    q.add_argument("world", metavar="WORLD")
+    q.add_argument("map", metavar="MAP")
+    q.add_argument("--json", action="store_true")
+    q.set_defaults(handler=check_map_command)
+
+    r = sub.add_parser("replay", help="verify a topomark/trace@1 trace recorded by any implementation",
+                       description="Replay TRACE on WORLD: every perception, the cost, I-1/I-2 after every "
+                                   "iteration (S and U rebuilt from the joins) and the final map. Exit 0 if it "
+                                   "holds up, 1 at the first divergence (step, expected, found), 2 on bad input.")
+    r.add_argument("world", metavar="WORLD")
+    r.add_argument("trace", metavar="TRACE")
+    r.add_argument("--json", action="store_true")
+    r.set_defaults(handler=replay_command)
+
+    d = sub.add_parser("drive", help="drive an external world provider (simulator or robot bridge) with "
+                                     "Algorithm 3.1",
+                       description="Run CMD as the world (spec/protocol.md, provider role): topomark sends motions "
+                                   "and marker drops, CMD answers with signatures. Exit 0 when a map was made (and, "
+                                   "with --check WORLD, is extended-isomorphic to it), 1 on failure, 2 on bad input.")
+    d.add_argument("cmd", nargs=argparse.REMAINDER, metavar="-- CMD [ARGS...]")
+    _drive_options(d)
+    d.set_defaults(handler=drive_command, add_options=_drive_options)
+
+    c = sub.add_parser("conformance", help="export, lint or run the conformance suite",
+                       description="export DIR: write the versioned suite (worlds, reference maps, traces, costs, "
+                                   "manifest). lint DIR: check a suite. run DIR -- CMD: run an implementation "
+                                   "against every case through topomark/protocol@1 (exit 0 iff all pass).")
+    csub = c.add_subparsers(dest="action", metavar="ACTION", parser_class=Parser)
+    ce = csub.add_parser("export", help="write the suite to DIR (new or empty)")
+    ce.add_argument("dir", metavar="DIR")
+    ce.add_argument("--json", action="store_true")
+    ce.set_defaults(handler=conformance_export)
+    cl = csub.add_parser("lint", help="check a suite directory")
+    cl.add_argument("dir", metavar="DIR")
+    cl.add_argument("--json", action="store_true")
+    cl.set_defaults(handler=conformance_lint)
+    cr = csub.add_parser("run", help="run CMD on every case")
+    cr.add_argument("dir", metavar="DIR")
+    cr.add_argument("cmd", nargs=argparse.REMAINDER, metavar="-- CMD [ARGS...]")
+    _conformance_options(cr)
+    cr.set_defaults(handler=conformance_run, add_options=_conformance_options)
+    c.set_defaults(handler=lambda args: _no_action())
+
+
+def run_external_command(args) -> int:
+    world = resolve_world(args.world, args.seed)
+    command = _command(args)
+    version, kit = _protocol_choice(args)
+    result = run_external(world, command, _make_limits(args), version=version, kit=kit)
+    if args.map and result.map is not None:
+        guarded(args.map, lambda: save_world(result.map, args.map))
+    data = {"world": args.world, "command": command, **result.to_json()}
+    text = (f"{'PASS' if result.passed else 'FAIL'} [{result.reason}] {result.message}\n"
+            f"cost {result.cost} traversals (n={world.n}, m={world.m}), {result.snapshots} snapshots checked, "
+            f"{result.wall:.2f} s")
+    if not result.passed and result.stderr:
+        text += "\nprogram stderr (tail):\n  " + "\n  ".join(result.stderr[-5:])
+    emit(args, data, text)
+    return 0 if result.passed else 1
+
+
+def check_map_command(args) -> int:
+    world, map_ = load_world(args.world), load_world(args.map)
+    verdict = check_map(world, map_)
+    data = {"world": args.world, "map": args.map, **verdict.to_json()}
+    emit(args, data, f"{args.map}: {verdict.words()}")
+    return 0 if verdict.isomorphic else 1
+
+
+def replay_command(args) -> int:
+    world = load_world(args.world)
+    result = replay(world, load_trace(args.trace), args.trace)
+    data = {"world": args.world, "trace": args.trace, **result.to_json()}
+    emit(args, data, ("VERIFIED " if result.ok else "DIVERGED ") + result.message)
+    return 0 if result.ok else 1
+
+
+def drive_command(args) -> int:
+    command = _command(args)
+    limits = _make_limits(args)
+    policies = parse_policies(args.policy)
+    world = load_world(args.check) if args.check else None
+    light = lighthouse(args.lighthouse)
+    result = drive(command, policies, world, limits.max_traversals, limits.wall, limits.message, light)
+    if args.trace:
+        guarded(args.trace, lambda: Path(args.trace).write_text(dump_trace(result.trace), encoding="utf-8"))
+    if args.map and result.map is not None:
+        guarded(args.map, lambda: save_world(result.map, args.map))
+    data = {"command": command, **result.to_json()}
+    text = f"{'PASS' if result.passed else 'FAIL'} [{result.reason}] {result.message}\ncost {result.cost} traversals"
+    if not result.passed and result.stderr:
+        text += "\nprovider stderr (tail):\n  " + "\n  ".join(result.stderr[-5:])
+    emit(args, data, text)
+    return 0 if result.passed else 1
+
+
+def _suite_summary(manifest: dict) -> dict:
+    return {"format": manifest["format"], "version": manifest["version"], "cases": len(manifest["cases"]),
+            "policies": list(manifest["policies"])}
+
+
+def conformance_export(args) -> int:
+    manifest = guarded(args.dir, lambda: conformance.export(args.dir))
+    info = _suite_summary(manifest)
+    emit(args, {"dir": args.dir, **info}, f"wrote {args.dir}: {info['format']} version {info['version']}, "
+                                          f"{info['cases']} cases x {len(info['policies'])} policies (linted)")
+    return 0
+
+
+def conformance_lint(args) -> int:
+    info = _suite_summary(conformance.lint(args.dir))
+    emit(args, {"dir": args.dir, "ok": True, **info},
+         f"{args.dir}: ok ({info['format']} version {info['version']}, {info['cases']} cases)")
+    return 0
+
+
+def conformance_run(args) -> int:
+    command = _command(args)
+    limits = _make_limits(args)
+    version, kit = _protocol_choice(args)
+    show = None if args.json else (lambda row: print(f"  {row.name}: {row.result.verdict}", file=sys.stderr))
+    rows, wall = conformance.timed_run(args.dir, command, limits, args.select, show, version, kit)
+    passed = sum(r.result.passed for r in rows)
+    data = {"dir": args.dir, "command": command, "passed": passed, "total": len(rows),
+            "wall_seconds": round(wall, 3), "cases": [r.to_json() for r in rows]}
+    emit(args, data, conformance.render_table(rows, wall))
+    return 0 if passed == len(rows) else 1

@@ -1,0 +1,94 @@
+"""Marker operations on the wire (``topomark/protocol@2``, thesis §3.1.1, §6.1–6.2, §2.3.1).
+
+A ``drop`` or ``pick_up`` message names its operation with the fields of
+:meth:`topomark.spec.kit.MarkerOp.to_json` (minus ``op``, which the message
+type says): ``kind`` (``"vertex"`` or ``"edge"``), ``exit`` (edge markers: the
+marked exit relative to the entry edge), ``direction`` (drops only: a vertex
+marker's relative exit, an edge marker's ``"H"``/``"T"``, or null for an
+undirected marker) and ``count`` (default 1).
+
+:func:`op_from_message` turns a message into a :class:`MarkerOp` at a vertex
+of a given degree, or raises :class:`~topomark.reference.oracle.protocol.ProtocolError`
+of kind ``garbage`` for a malformed field; whether the kit and the markers
+lying there allow the operation is the simulator's judgement, not this
+module's.  :func:`op_to_message` is the inverse (what ``drive`` sends).
+
+A ``thread`` message (§6.3) names a :class:`~topomark.spec.kit.ThreadOp`:
+``op`` one of ``tie``, ``untie``, ``leave``, ``take``, ``knot``, ``rewind``;
+``direction`` (``tie`` only: the relative exit the thread is laid out
+toward, or null) and ``count`` (``knot`` only: how many knots, default 1).
+The world answers each with a ``signature``; ``rewind`` moves the robot back
+along the last laid edge (a traversal, counted against the limit), its
+``signature`` is the vertex reached.
+"""
+
+from __future__ import annotations
+
+import json
+from typing import Any
+
+from topomark.spec.kit import THREAD_OPS, MarkerOp, ThreadOp
+
+from topomark.reference.oracle.protocol import ProtocolError, clip
+
+__all__ = ["MAX_COUNT", "op_from_message", "op_to_message"]
+
+MAX_COUNT = 10 ** 6  # markers in one operation, at most
+
+
+def _int(x: Any) -> bool:
+    return isinstance(x, int) and not isinstance(x, bool)
+
+
+def _bad(msg: dict, what: str) -> ProtocolError:
+    return ProtocolError("garbage", f"{msg['type']}: {what}")
+
+
+def _shown(value: Any) -> str:
+    return clip(json.dumps(value), 60)
+
+
+def op_from_message(msg: dict[str, Any], degree: int) -> MarkerOp | ThreadOp:
+    """The operation a decoded ``@2`` ``drop``/``pick_up``/``thread`` states, at a vertex of ``degree``."""
+    if msg["type"] == "thread":
+        return _thread_op(msg, degree)
+    kind, exit_, count = msg["kind"], msg.get("exit"), msg.get("count", 1)
+    direction = msg.get("direction")
+    if kind not in ("vertex", "edge"):
+        raise _bad(msg, f"kind must be \"vertex\" or \"edge\", got {_shown(kind)}")
+    if not (_int(count) and 1 <= count <= MAX_COUNT):
+        raise _bad(msg, f"count must be an integer 1..{MAX_COUNT}, got {_shown(count)}")
+    if kind == "vertex":
+        if exit_ is not None:
+            raise _bad(msg, f"a vertex marker takes no exit (got exit {_shown(exit_)})")
+        if direction is not None and not (_int(direction) and 0 <= direction < degree):
+            raise _bad(msg, f"a vertex marker's direction is an exit 0..{degree - 1} here or null, "
+                            f"got {_shown(direction)}")
+    else:
+        if not (_int(exit_) and 0 <= exit_ < degree):
+            raise _bad(msg, f"an edge marker needs an exit 0..{degree - 1} here, got {_shown(exit_)}")
+        if direction not in (None, "H", "T"):
+            raise _bad(msg, f"an edge marker's direction is \"H\", \"T\" or null, got {_shown(direction)}")
+    return MarkerOp(kind, exit=exit_, direction=direction, count=count, pick_up=msg["type"] == "pick_up")
+
+
+def _thread_op(msg: dict[str, Any], degree: int) -> ThreadOp:
+    op, direction, count = msg["op"], msg.get("direction"), msg.get("count", 1)
+    if op not in THREAD_OPS:
+        raise _bad(msg, f"op must be one of {', '.join(THREAD_OPS)}, got {_shown(op)}")
+    if direction is not None and not (op == "tie" and _int(direction) and 0 <= direction < degree):
+        raise _bad(msg, f"a direction is an exit 0..{degree - 1} here, on a tie only, got {_shown(direction)}")
+    if not (_int(count) and 1 <= count <= MAX_COUNT) or (count != 1 and op != "knot"):
+        raise _bad(msg, f"count must be an integer 1..{MAX_COUNT}, and 1 but for a knot, got {_shown(count)}")
+    return ThreadOp(op, direction, count)
+
+
+def op_to_message(op: MarkerOp | ThreadOp) -> dict[str, Any]:
+    """The ``@2`` message for ``op``: ``MarkerOp.to_json`` with ``type`` in place of ``op``; a thread op is
+    ``{"type": "thread", "op": ..., "direction": ..., "count": ...}``."""
+    if isinstance(op, ThreadOp):
+        fields = op.to_json()
+        del fields["kind"]
+        return {"type": "thread", **fields}
+    fields = op.to_json()
+    return {"type": fields.pop("op"), **fields}

@@ -1,0 +1,296 @@
+"""``run-external``: another program explores a world that topomark plays (thesis §3.1, §3.3–3.4).
+
+topomark is the world side of ``topomark/protocol@1`` and ``@2`` (``spec/protocol.md``):
+it holds the world in a :class:`~topomark.reference.run.simulator.Simulator`,
+answers every ``move`` and ``drop`` with the signature reached (§3.1.1),
+counts the cost in edge traversals (§3.1.2), enforces the marker kit (``@1``:
+Algorithm 3.1's one directional vertex marker, §3.3; ``@2``: any
+:class:`~topomark.spec.kit.Kit`, with drops and pick-ups of vertex and edge
+markers) and the limits, checks I-1 and I-2 (§3.4) on every ``snapshot`` of
+(S, U) the program sends, and judges the final ``map`` by extended
+isomorphism (§3.1.3) against the world with the markers the program left in it.
+
+Whatever the program does, the session ends with an :class:`ExternalResult`:
+a crash, a hang, garbage on stdout, an exit that does not exist, a second
+marker — each is a ``fail`` verdict with a reason and a message, never a
+hang or a traceback.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+from typing import Any, Sequence
+
+from topomark.spec.errors import CheckFailure, InvalidInput, InvalidWorld, Violation
+from topomark.spec.invariants import check_invariants, lighthouse_anchor
+from topomark.spec.isomorphism import find_isomorphism, verify_witness
+from topomark.spec.kit import Kit
+from topomark.spec.world import World
+from topomark.spec.worldfile import world_from_json
+
+from topomark.reference.algorithms.bounds import upper_bound
+from topomark.reference.run.explore import prepare_world
+from topomark.reference.run.map_check import MapVerdict, check_map
+from topomark.reference.oracle.peer import Peer
+from topomark.reference.oracle.protocol import MAX_MESSAGE, PROTOCOL, PROTOCOL2, Expect, ProtocolError, clip
+from topomark.reference.run.simulator import Simulator
+from topomark.reference.oracle.snapshot_wire import snapshot_to_map
+from topomark.reference.oracle.marker_messages import op_from_message
+
+__all__ = ["Limits", "ExternalResult", "run_external", "REASONS", "LIGHTHOUSE_KIT", "START_ANCHOR"]
+
+LIGHTHOUSE_KIT = Kit(vertex=1, directional=True)  # Algorithm 3.1's kit: @1's only one, @2's default
+START_ANCHOR = ("topomark/protocol@2 anchors φ at the start: map vertex 0 is the vertex the robot started at "
+                "and its exit 0 the exit the robot faced there")
+
+REASONS = {
+    "ok": "the map is extended-isomorphic to the world",
+    "crash": "the program died or closed its output before sending its map",
+    "timeout": "the program did not answer in time",
+    "garbage": "the program printed something that is not a protocol message",
+    "protocol": "the program sent a valid message at the wrong time",
+    "limit": "the program exceeded the maximum number of traversals",
+    "bad-exit": "the program asked for an exit that does not exist",
+    "marker": "the program did a marker operation its kit (or the markers lying there) does not allow",
+    "invariant": "a snapshot of (S, U) violated I-1 or I-2",
+    "snapshot": "a snapshot is malformed",
+    "map-invalid": "the final map is not a valid world",
+    "not-isomorphic": "the final map is not extended-isomorphic to the world",
+}
+
+
+@dataclass
+class Limits:
+    """Traversal and time limits; ``max_traversals`` None means 4 × the (3.1)+(3.2) bound, at least 1000."""
+
+    max_traversals: int | None = None
+    wall: float = 60.0
+    message: float = 10.0
+
+    def traversals(self, world: World) -> int:
+        if self.max_traversals is not None:
+            return self.max_traversals
+        return max(1000, 4 * upper_bound(world.n, world.m))
+
+
+@dataclass
+class ExternalResult:
+    verdict: str  # "pass" or "fail"
+    reason: str  # a key of REASONS
+    message: str
+    cost: int = 0
+    snapshots: int = 0
+    wall: float = 0.0
+    stderr: list[str] = field(default_factory=list)
+    violation: Violation | None = None
+    map: World | None = None
+    rule: str | None = None
+
+    @property
+    def passed(self) -> bool:
+        return self.verdict == "pass"
+
+    def to_json(self) -> dict[str, Any]:
+        return {"verdict": self.verdict, "reason": self.reason, "message": self.message, "cost": self.cost,
+                "snapshots": self.snapshots, "wall_seconds": round(self.wall, 3), "stderr_tail": self.stderr,
+                "violation": None if self.violation is None else self.violation.to_json(), "marker_rule": self.rule}
+
+
+class _Fail(Exception):
+    def __init__(self, reason: str, message: str, violation: Violation | None = None):
+        super().__init__(clip(message, MAX_MESSAGE))
+        self.reason, self.violation = reason, violation
+
+
+class _Session:
+    """One game of the world side against one program."""
+
+    def __init__(self, world: World, peer: Peer, limits: Limits, check_snapshots: bool, version: int = 1,
+                 kit: Kit = LIGHTHOUSE_KIT):
+        self.world = world
+        bare, self.start = prepare_world(world)
+        self.version, self.kit = version, kit
+        self.sim = Simulator(bare, self.start, kit)
+        self.robot = self.sim.robot()  # the program gets exactly the robot interface, over the pipe
+        self.peer = peer
+        self.max_traversals = limits.traversals(world)
+        self.limits = limits
+        self.check_snapshots = check_snapshots
+        self.snapshots = 0
+
+    def hello(self) -> None:
+        kit = {"markers": self.kit.to_json()} if self.version == 1 else {"kit": self.kit.to_json()}
+        self.peer.send({"type": "hello", "protocol": PROTOCOL if self.version == 1 else PROTOCOL2, "role": "world",
+                        **kit, "signature": str(self.robot.sense()),
+                        "limits": {"max_traversals": self.max_traversals, "wall_seconds": self.limits.wall,
+                                   "message_seconds": self.limits.message}})
+
+    def play(self) -> World:
+        """Answer messages until the map arrives; returns the map."""
+        self.hello()
+        expect = Expect(("move", "drop", "snapshot", "map", "error")
+                        + (("pick_up", "thread") if self.version >= 2 else ()), self.version)
+        while True:
+            msg = self.peer.receive(expect)
+            kind = msg["type"]
+            if kind == "move":
+                self.move(msg["motion"])
+            elif kind in ("drop", "pick_up", "thread") and self.version >= 2:
+                self.operate(msg)
+            elif kind == "drop":
+                self.drop(msg["direction"])
+            elif kind == "snapshot":
+                self.snapshot(msg)
+            elif kind == "error":
+                raise _Fail("crash", f"the program gave up: {clip(msg['message'], 500)}")
+            else:
+                return self.read_map(msg["world"])
+
+    def move(self, motion: int) -> None:
+        if self.sim.cost >= self.max_traversals:
+            raise _Fail("limit", f"traversal {self.sim.cost + 1} exceeds the limit of {self.max_traversals}")
+        v, _ = self.sim.state
+        degree = self.sim.world.degree(v)
+        if not 0 <= motion < degree:
+            raise _Fail("bad-exit", f"step {self.sim.cost + 1}: motion {motion} does not exist at a vertex of "
+                                    f"degree {degree} (allowed 0..{degree - 1})")
+        sig = self.robot.move(motion, "other")
+        self.peer.send({"type": "signature", "value": str(sig), "step": self.sim.cost})
+
+    def drop(self, direction: int | None) -> None:
+        v, _ = self.sim.state
+        degree = self.sim.world.degree(v)
+        if direction is not None and not 0 <= direction < degree:
+            raise _Fail("marker", f"drop: direction {direction} does not exist at a vertex of degree {degree}")
+        if direction is None:
+            raise _Fail("marker", "drop: an undirected marker, but the marker class is one directional vertex "
+                                  "marker (direction must be an exit)")
+        try:
+            self.robot.drop_marker(direction)
+        except CheckFailure as exc:
+            raise _Fail("marker", f"drop: {exc}", exc.violation) from None
+        self.peer.send({"type": "signature", "value": str(self.robot.sense()), "step": self.sim.cost})
+
+    def operate(self, msg: dict) -> None:
+        """An @2 ``drop`` or ``pick_up``: malformed fields are garbage, refusals the simulator's ``marker``."""
+        v, _ = self.sim.state
+        op = op_from_message(msg, self.sim.world.degree(v))
+        if getattr(op, "op", None) == "rewind" and self.sim.cost >= self.max_traversals:  # a rewind is a move
+            raise _Fail("limit", f"traversal {self.sim.cost + 1} exceeds the limit of {self.max_traversals}")
+        try:
+            if getattr(op, "op", None) == "rewind":
+                self.robot.rewind("other")
+            else:
+                self.robot.operate(op)
+        except CheckFailure as exc:
+            raise _Fail("marker", f"{msg['type']}: {exc}", exc.violation) from None
+        self.peer.send({"type": "signature", "value": str(self.robot.sense()), "step": self.sim.cost})
+
+    def snapshot(self, msg: dict) -> None:
+        self.snapshots += 1
+        label = f"snapshot {self.snapshots}" + (f" (iteration {msg['iteration']})" if "iteration" in msg else "")
+        if not self.check_snapshots:
+            return
+        try:
+            S = snapshot_to_map(msg["S"], msg["U"], self.version)
+        except CheckFailure as exc:
+            raise _Fail("snapshot", f"{label}: {exc}") from None
+        bad = self._invariants(S)
+        if bad is not None:
+            note = f" ({START_ANCHOR})" if self.version >= 2 else ""
+            raise _Fail("invariant", f"{label}, after {self.sim.cost} traversals: {bad}{note}", bad)
+
+    def _invariants(self, S) -> Violation | None:
+        """I-1 and I-2, φ anchored at the lighthouse (@1) or at the start (@2)."""
+        if self.version >= 2:
+            if S.n == 0 or S.degree(0) != self.sim.world.degree(self.start[0]):
+                found = "an empty map" if S.n == 0 else f"degree {S.degree(0)}"
+                return Violation("I-1", "map vertex 0 (the start)", f"degree {self.sim.world.degree(self.start[0])}",
+                                 found)
+            return check_invariants(S, self.sim.world, ((0, 0), self.start))
+        anchor = lighthouse_anchor(S, self.sim.world)
+        if anchor is None:
+            return Violation("I-1", "v0", "one directional marker in S and in the world", "none or several")
+        return check_invariants(S, self.sim.world, anchor)
+
+    def read_map(self, obj: Any) -> World:
+        try:
+            return world_from_json(obj)
+        except InvalidWorld as exc:
+            raise _Fail("map-invalid", f"the map is not a valid world: {exc}") from None
+
+
+def run_external(world: World, command: Sequence[str], limits: Limits | None = None,
+                 check_snapshots: bool = True, version: int = 1, kit: Kit | None = None) -> ExternalResult:
+    """Play ``world`` to ``command`` and judge it; bad input (world, command, kit) raises InvalidInput.
+
+    ``version`` is the protocol spoken (1 or 2); ``kit`` what the program
+    carries (default Algorithm 3.1's one directional vertex marker; another
+    kit needs ``version=2``).
+
+    The program and everything it started are killed when the session ends,
+    whatever the verdict (:class:`~topomark.reference.oracle.peer.Peer`).
+    """
+    limits = limits or Limits()
+    kit = _checked_kit(version, kit)
+    prepare_world(world)  # bad input (a marker the algorithm cannot use) before anything is started
+    started = time.monotonic()
+    session = None
+    with Peer(command, limits.message, limits.wall) as peer:
+        try:
+            session = _Session(world, peer, limits, check_snapshots, version, kit)
+            result = _judge(world, session)
+            _say(peer, {"type": "bye", "verdict": result.verdict, "cost": session.sim.cost})
+            peer.finish()
+        except ProtocolError as exc:
+            result = ExternalResult("fail", exc.kind, str(exc))
+            _say(peer, {"type": "error", "message": str(exc)})
+        except _Fail as exc:
+            result = ExternalResult("fail", exc.reason, str(exc), violation=exc.violation)
+            _say(peer, {"type": "error", "message": str(exc)})
+    if session is not None:
+        result.cost, result.snapshots = session.sim.cost, session.snapshots
+    result.message = clip(result.message, MAX_MESSAGE)
+    result.wall = time.monotonic() - started
+    result.stderr = peer.stderr_tail()
+    return result
+
+
+def _judge(world: World, session: _Session) -> ExternalResult:
+    """Play the session to its map and judge the map against the world."""
+    map_ = session.play()
+    truth = session.sim.world.with_start(world.start)
+    verdict = check_map(truth, map_) if session.version == 1 else _dropped_markers(truth, map_)
+    return ExternalResult("pass" if verdict.isomorphic else "fail", "ok" if verdict.isomorphic else "not-isomorphic",
+                          verdict.words(), violation=None if verdict.isomorphic else verdict.result.mismatch,
+                          map=map_, rule=verdict.rule)
+
+
+def _checked_kit(version: int, kit: Kit | None) -> Kit:
+    if version not in (1, 2):
+        raise InvalidInput(f"protocol version must be 1 or 2, got {version!r}")
+    if kit is None:
+        return LIGHTHOUSE_KIT
+    if version == 1 and kit != LIGHTHOUSE_KIT:
+        raise InvalidInput(f"a kit other than {LIGHTHOUSE_KIT.to_json()} needs topomark/protocol@2 "
+                           f"(--protocol 2), got {kit.to_json()}")
+    return kit
+
+
+def _dropped_markers(truth: World, map_: World) -> MapVerdict:
+    """@2: the map must show exactly the markers the program left in the world, where it left them."""
+    result = find_isomorphism(truth, map_, markers=True)
+    if result.isomorphic:
+        bad = verify_witness(truth, map_, result.witness, markers=True)
+        if bad is not None:
+            raise CheckFailure(bad)
+    return MapVerdict(result.isomorphic, "markers", result)
+
+
+def _say(peer: Peer, msg: dict) -> None:
+    """Tell the program how it ended, if it still listens."""
+    try:
+        peer.send(msg, timeout=0.2)
+    except ProtocolError:
+        pass

@@ -1,0 +1,184 @@
+"""``replay``: verify a trace recorded by any implementation — ``topomark/trace@1`` or ``@2`` (``spec/trace.md``).
+
+A trace claims a run: what the robot did (the *robot layer*: every move with
+the perception it produced, every marker operation with the signature sensed
+after it) and, for a family of algorithms that defines one, what the
+algorithm did (the *algorithm layer*: for Algorithm 3.1's family, every
+iteration's hypotheses and join), then the cost and the recorder's verdict.
+:func:`replay` re-executes it on the world and checks every claim, in order
+(well-formedness — the header's format, family, algorithm, policies,
+lighthouse and kit, vocabularies, field sets, signatures, JSON limits — is
+:mod:`topomark.reference.trace.reader`'s, exit 2):
+
+* the robot layer, for every trace: :class:`~topomark.reference.replay.robot_layer.
+  RobotLayer` (moves and ops re-executed by a simulator carrying the header's
+  kit; steps; the claimed cost);
+* the algorithm layer where the header's family has one: for
+  ``algorithm-3.1`` (and every trace@1) :class:`~topomark.reference.
+  alg31layer.Algorithm31Layer` (the lighthouse's operations at the start, the
+  purposes of the moves, ``by_marker``, the hypotheses re-checked by
+  :mod:`~topomark.reference.replay.hypotheses`, S and U rebuilt, I-1/I-2 after every
+  iteration, m iterations, U empty, the final map extended-isomorphic to the
+  world with the markers dropped);
+* the recorder's verdict: ``verified: true`` claims all of this;
+  ``verified: false`` with a ``violation`` claims a failure — if replay finds
+  none that claim is false (exit 1, check ``"trace claim"``), if replay
+  diverges the trace is *consistent* (it records its own failure:
+  ``recorded_failure``) and the verdict is still negative (exit 1);
+  ``verified: false`` with ``violation: null`` is an unjudged run
+  (``explore --no-check``, ``drive`` without a world) and replay's own
+  verdict stands.  Which check the recorder names is not compared with
+  replay's: a recorder stops at its first failure, so replay typically finds
+  the run truncated rather than the same check.
+
+The verdict names the layers verified (``layers``).  Not checked, because the
+trace does not determine it: which e the edge policy picks (it needs the
+explorer's believed position between moves), the ``known`` counter of
+Enhancement 3 (perceptions recorded in its private T), and what
+:mod:`~topomark.reference.replay.hypotheses` lists.  Nothing else a record carries is
+left unchecked.
+
+The first divergence is reported with its line and step, op or iteration,
+what the world (or the spec) expected and what the trace claims.  The trace
+is read lazily, line by line (:func:`load_trace`); after a divergence the
+rest is still read, because bad input anywhere (:class:`~topomark.spec.
+errors.InvalidInput`) outranks a divergence.  A trace recorded on a world of
+a different size is bad input too.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from dataclasses import dataclass
+from typing import Any, Iterable
+
+from topomark.spec.errors import InvalidInput, Violation
+from topomark.spec.world import World
+
+from topomark.reference.replay.algorithm31_layer import Algorithm31Layer
+from topomark.reference.replay.divergence import Diverged
+from topomark.reference.replay.robot_layer import RobotLayer
+from topomark.reference.trace.header import header_family, header_kit, header_lighthouse
+from topomark.reference.trace.reader import EVENTS, EVENTS_2, load_trace, parse_trace
+
+__all__ = ["ReplayResult", "replay", "load_trace", "parse_trace", "EVENTS", "EVENTS_2"]
+
+
+@dataclass(frozen=True)
+class ReplayResult:
+    ok: bool
+    message: str
+    cost: int
+    iterations: int
+    divergence: Violation | None = None
+    line: int | None = None
+    recorded_failure: bool = False  # the trace's end claims the failure replay found
+    layers: tuple[str, ...] = ("robot", "algorithm-3.1")  # the layers replayed: the robot's and the family's, if any
+
+    def to_json(self) -> dict[str, Any]:
+        return {"verified": self.ok, "message": self.message, "cost": self.cost, "iterations": self.iterations,
+                "line": self.line, "divergence": None if self.divergence is None else self.divergence.to_json(),
+                "recorded_failure": self.recorded_failure, "layers": list(self.layers)}
+
+
+# -- replaying ------------------------------------------------------------------
+class _Replay:
+    """The layers a trace's header asks for: the robot layer always, Algorithm 3.1's where the family has it."""
+
+    def __init__(self, world: World, header: dict[str, Any], source: str):
+        light, family = header_lighthouse(header), header_family(header)
+        self.robot = RobotLayer(world, light, header_kit(header))
+        self.algorithm = Algorithm31Layer(self.robot, world, header, light, source) if family.events else None
+        self.layers = family.layers
+        self.family = family.name
+        self.trace2 = "family" in header
+
+    @property
+    def iterations(self) -> int:
+        return self.algorithm.iterations if self.algorithm is not None else 0
+
+    def record(self, rec: dict[str, Any], where: str) -> None:
+        kind, alg, robot = rec["event"], self.algorithm, self.robot
+        if kind == "move":
+            step = robot.step(rec)
+            if alg is not None:
+                alg.purpose(rec["purpose"], step)
+            perception = robot.move(rec, step)
+            if alg is not None:
+                alg.moved(rec, perception)
+        elif kind == "op":
+            sensed = robot.op(rec)
+            if alg is not None:
+                alg.op(rec, sensed)
+        elif kind == "drop":
+            alg.drop(rec)
+        elif kind == "iteration":
+            alg.iteration(rec, where)
+        elif kind == "end":
+            robot.end(rec)
+            if alg is not None:
+                alg.end(rec)
+
+
+def _claim(end: dict) -> str:
+    v = end["violation"]
+    return "a verified run" if end["verified"] else "an unjudged run" if v is None else \
+        f"a failed run: {Violation(v['check'], v['where'], v['expected'], v['found'], v['detail'])}"
+
+
+def replay(world: World, records: Iterable[dict[str, Any]], source: str = "<trace>") -> ReplayResult:
+    """Verify checked trace records (:func:`load_trace`, :func:`parse_trace`) against ``world``.
+
+    The first divergence, or a positive verdict; a claimed failure replay does
+    not reproduce is a divergence.  Bad input anywhere in the trace (even after
+    the divergence) is raised as :class:`InvalidInput`.
+    """
+    records = iter(records)
+    header = next(records)
+    if (header["n"], header["m"]) != (world.n, world.m):
+        raise InvalidInput(f"{source}: the trace was recorded on a world with n={header['n']}, m={header['m']}, "
+                           f"but this world has n={world.n}, m={world.m}")
+    r = _Replay(world, header, source)
+    line, rec = 1, header
+    try:
+        for line, rec in enumerate(records, 2):
+            r.record(rec, f"{source} line {line}")
+    except Diverged as exc:
+        rest = deque(records, maxlen=1)  # read (and so check) every later line: bad input outranks a divergence
+        rec = rest[0] if rest else rec  # the trace's own last record: its end, with the recorder's verdict
+        failed = rec["violation"] is not None
+        note = f"; consistent: the trace records its own failure ({_claim(rec)})" if failed else ""
+        return ReplayResult(False, f"line {line}: {exc.violation}{note}", r.robot.steps, r.iterations, exc.violation,
+                            line, failed, r.layers)
+    if rec["violation"] is not None:
+        false = Violation("trace claim", "end", "no violation (replay verifies the run)", _claim(rec),
+                          "the trace claims a failure but replay finds none")
+        return ReplayResult(False, f"line {line}: {false}", r.robot.steps, r.iterations, false, line, layers=r.layers)
+    note = "" if rec["verified"] else " (the recorder did not judge the run: verified false, no violation)"
+    if "outcome" in rec:
+        return ReplayResult(True, _stopped(r, rec), r.robot.steps, r.iterations, layers=r.layers)
+    return ReplayResult(True, _verified(r) + note, r.robot.steps, r.iterations, layers=r.layers)
+
+
+def _verified(r: _Replay) -> str:
+    """What a positive verdict verified: every layer the trace's family has (trace@1's words as they were)."""
+    steps = r.robot.steps
+    if r.algorithm is None:
+        return (f"{steps} traversals and {_ops(r.robot.ops)}, every perception and signature matches "
+                f"the world (robot layer only: the family {r.family} defines no algorithm layer)")
+    ops = f" and {_ops(r.robot.ops)}" if r.trace2 else ""
+    layers = " (robot and algorithm-3.1 layers)" if r.trace2 else ""
+    return (f"{steps} traversals{ops}, {r.iterations} iterations, every perception matches the world, every "
+            f"purpose and hypothesis record holds, Lemma 1, I-1/I-2 held after every iteration, the map is "
+            f"extended-isomorphic{layers}")
+
+
+def _stopped(r: _Replay, end: dict) -> str:
+    """A run that stopped before it had a map (trace@2 ``end.outcome``): what replay verified up to there."""
+    layers = " and the algorithm-3.1 layer's records" if r.algorithm is not None else ""
+    return (f"{r.robot.steps} traversals and {_ops(r.robot.ops)}, every perception and signature matches the world"
+            f"{layers}; the run stopped before it had a map: {end['outcome']} ({end['reason']})")
+
+
+def _ops(k: int) -> str:
+    return f"{k} marker operation{'s' if k != 1 else ''}"

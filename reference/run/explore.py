@@ -1,0 +1,319 @@
+"""Running a checked exploration: world → simulator → explorer (+ checker, trace, cost).
+
+:func:`explore` wires the pieces together for a registered algorithm
+(:mod:`~topomark.reference.algorithms.registry`) and a lighthouse
+(:mod:`~topomark.reference.explorers.lighthouses`):
+
+1. validate the world for the lighthouse (§3.3: the robot drops its kit at v0,
+   facing the exit it starts facing; a world file may carry exactly those
+   markers or none);
+2. build the simulator with the lighthouse's kit, hand the explorer only its
+   robot, and drive it by the explorer contract (``start``, then ``step``
+   until ``done``);
+3. after every iteration run the :class:`~topomark.reference.run.checker.Checker`
+   with the checks the algorithm's registry entry names (unless ``check=False``) and hand the trace records to a sink
+   (:mod:`~topomark.reference.trace.sink`: kept in a list, streamed to a file,
+   or only the last few kept) as they are made;
+4. return an :class:`Outcome` with the map, the cost split by purpose and the
+   counts the CLI reports.
+
+The trace format is documented in ``spec/trace.md``.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+from typing import Any, Callable
+
+from topomark.spec.errors import AlgorithmStopped, CheckFailure, InvalidInput, OutOfMarkers
+from topomark.spec.kit import Kit
+from topomark.spec.marker import EdgeMarker, VertexMarker
+from topomark.spec.markerlayer import MarkerLayer, apply_op
+from topomark.spec.world import World
+from topomark.spec.worldfile import marker_to_json
+
+from topomark.reference.algorithms.bounds import upper_bound
+from topomark.reference.run.checker import Checker
+from topomark.reference.explorers.lighthouses import LIGHTHOUSES, Lighthouse, lighthouse as lighthouse_named
+from topomark.reference.algorithms.explorer_classes import ALGORITHMS
+from topomark.reference.algorithms.registry import AlgorithmSpec, algorithm_spec
+from topomark.reference.explorers.policies import Policies
+from topomark.reference.run.simulator import Simulator
+from topomark.reference.trace.families import FAMILIES
+from topomark.reference.trace.records import end_record, op_record, trace_header
+from topomark.reference.trace.sink import ListSink, TraceSink
+
+__all__ = ["ALGORITHMS", "Outcome", "explore", "check_run", "prepare_world"]
+
+@dataclass
+class Outcome:
+    n: int
+    m: int
+    cost: int
+    verified: bool
+    iterations: int
+    loop_iterations: int
+    nonloop_iterations: int
+    hypotheses: int
+    hypotheses_rejected: int
+    hypotheses_confirmed: int
+    checks: int
+    by_purpose: dict[str, int]
+    upper_bound: int
+    lighthouse: str | None = "directional-vertex"
+    marker_operations: dict[str, int] = field(default_factory=dict)
+    explorer: Any = None
+    trace: list[dict] = field(default_factory=list)
+    violation: Any = None
+    outcome: str = "correct"
+    claimed: str = "correct"
+    reason: str | None = None
+    kit: str = ""
+    walk_steps: int | None = None  # a lighthouse algorithm: the steps of the walk that found v0 (§5.1, §6.1)
+    lighthouse_at: str | None = None  # a lighthouse algorithm: the world vertex v0 is (the truth; the robot never knows)
+    extra: dict[str, Any] = field(default_factory=dict)  # the algorithm's own counts (its registry's summary_fn)
+
+    def summary(self) -> dict[str, Any]:
+        out = {k: getattr(self, k) for k in (
+            "n", "m", "cost", "verified", "iterations", "loop_iterations", "nonloop_iterations", "hypotheses",
+            "hypotheses_rejected", "hypotheses_confirmed", "checks", "by_purpose", "upper_bound", "lighthouse",
+            "marker_operations", "outcome", "claimed", "reason")}
+        if self.lighthouse is not None:
+            out.update(walk_steps=self.walk_steps, lighthouse_at=self.lighthouse_at)
+        out.update(self.extra)
+        out["cost_per_m"] = round(self.cost / self.m, 3)
+        if self.violation is not None:
+            out["violation"] = self.violation.to_json()
+        return out
+
+
+def prepare_world(world: World, lighthouse: Lighthouse = LIGHTHOUSES["directional-vertex"],
+                  algorithm: str = "basic") -> tuple[World, tuple[str, int]]:
+    """The world without markers and the start state, checked against the lighthouse (§3.3, §6.1, §6.2).
+
+    A world file may already carry the markers (and the thread) the robot
+    would drop at the start (the lighthouse's, where the robot drops them);
+    any other marker or thread, or a part of them, is bad input for this
+    algorithm.
+    """
+    state = world.start_state()
+    v0, facing = state
+    bare = World(world.rotation, (), world.start)
+    if bare.degree(v0) < lighthouse.min_degree:
+        raise InvalidInput(f"the {lighthouse.name} lighthouse needs a start vertex of degree >= "
+                           f"{lighthouse.min_degree}; the start vertex {v0!r} has degree {bare.degree(v0)}")
+    thread = getattr(world, "thread", None)
+    if world.markers or thread is not None:
+        layer = MarkerLayer(bare)
+        for place, op in lighthouse.placed_ops(bare, state):  # where the robot does each (Figure 3.21(b) moves)
+            apply_op(layer, place, op)
+        if thread is not None and getattr(layer.world(), "thread", None) != thread:
+            raise InvalidInput(f"the {algorithm} algorithm with the {lighthouse.name} lighthouse cannot use the "
+                               f"thread in the world file: only {lighthouse.drops}, at the start vertex {v0!r}, "
+                               f"may be there")
+        if not world.markers:
+            return bare, state
+        expected = {_place(m): m for m in layer.markers()}
+        for marker in world.markers:
+            _expect_marker(marker, expected.get(_place(marker)), world, lighthouse, algorithm, v0, facing)
+        if len(world.markers) != len(expected):
+            raise InvalidInput(f"the world file carries {len(world.markers)} of the {len(expected)} markers the "
+                               f"{lighthouse.name} lighthouse drops at the start: give all of them or none")
+    return bare, state
+
+
+def _place(marker) -> Any:
+    return ("vertex", marker.at) if isinstance(marker, VertexMarker) else ("edge", frozenset(marker.between))
+
+
+def _expect_marker(marker, want, world: World, lighthouse: Lighthouse, algorithm: str, v0: str, facing: int) -> None:
+    """A world file's marker must be one the lighthouse drops, exactly as it drops it."""
+    text = json.dumps(marker_to_json(marker))
+    if want is None or marker.directional != want.directional:
+        raise InvalidInput(
+            f"the {algorithm} algorithm with the {lighthouse.name} lighthouse cannot use the marker {text} in the "
+            f"world file: only {lighthouse.drops}, dropped by the robot at the start vertex {v0!r}, may be there")
+    same_edge = isinstance(marker, EdgeMarker) and (marker.count, marker.head) == (want.count, want.head)
+    if marker == want or same_edge:
+        return
+    if isinstance(marker, VertexMarker) and marker.directional:
+        raise InvalidInput(
+            f"the directional marker at {v0!r} points to {marker.points_to!r}, but the robot starts facing "
+            f"{world.neighbour(v0, facing)!r}: the robot drops its marker pointing at the exit it faces")
+    raise InvalidInput(f"the world file's marker {text} is not the one the {lighthouse.name} lighthouse drops "
+                       f"there: {json.dumps(marker_to_json(want))}")
+
+
+def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: Policies | None = None,
+            check: bool = True, record: bool = True, progress: Callable[[int, int, int], None] | None = None,
+            check_mode: str = "incremental", sink: TraceSink | None = None, keep_hypotheses: bool = True,
+            lighthouse: "str | Lighthouse | None" = None, options: dict[str, Any] | None = None) -> Outcome:
+    """Explore ``world`` and return the outcome; a violated check ends the run with ``outcome.violation`` set.
+
+    The trace records go to ``sink`` as they are made; without one, ``record=True`` keeps them all in
+    ``outcome.trace`` and ``record=False`` makes none.  ``keep_hypotheses=False`` drops each iteration's
+    hypotheses (their M, P^E and perceptions) from ``outcome.explorer.iterations`` once they are traced,
+    checked and counted, so memory stays proportional to the world.  ``progress(explored_edges, m, cost)``
+    is called after every iteration.  ``lighthouse`` (default ``directional-vertex``) is for the lighthouse
+    algorithms; ``options`` (name ↦ value) for a kit algorithm's :class:`~topomark.reference.algorithms.algorithm_spec.Parameter`.
+    """
+    spec = algorithm if isinstance(algorithm, AlgorithmSpec) else algorithm_spec(algorithm)
+    run = _setup(world, spec, lighthouse, options or {})
+    policies = policies or Policies()
+    if check_mode not in Checker.MODES:
+        raise InvalidInput(f"unknown check mode {check_mode!r} (choose from {', '.join(Checker.MODES)})")
+    if sink is None and record:
+        sink = ListSink()
+    trace = sink.records if isinstance(sink, ListSink) else []
+    emit = sink.emit if sink is not None else None
+    wanted = getattr(sink, "events", None)  # the record kinds the sink takes (tracesink's docstring); None: all
+    emit_move = emit if wanted is None or "move" in wanted else None
+    tally = _Tally()
+    if emit:
+        emit(trace_header(spec.name, policies, run.light, world, run.kit, spec.family))
+    layer = FAMILIES[spec.family].events
+
+    def on_move(motion, purpose, sig, true_state):
+        if emit_move:
+            emit_move({"event": "move", "step": sim.cost, "motion": motion, "perception": str(sig),
+                  "purpose": purpose})
+
+    def on_op(event):
+        if emit:
+            emit(op_record(event, run.light))
+
+    sim = Simulator(run.bare, run.state, run.kit, listener=on_move, op_listener=on_op)
+    checker = Checker(sim, check_mode, spec.checks, spec) if check else None
+
+    def observer(explorer, it):
+        if emit and "iteration" in layer and (wanted is None or "iteration" in wanted):
+            emit({"event": "iteration", **it.to_json()})
+        tally.add(it)  # counted before the check: an iteration that fails it is in explorer.iterations too
+        if checker is not None:
+            checker.after_iteration(explorer, it)
+        if not keep_hypotheses:
+            it.hypotheses = []
+        if progress is not None:
+            progress(_explored(explorer), world.m, sim.cost)
+
+    explorer = spec.factory(sim.robot(), policies, observer, run.light if spec.uses_lighthouse else run.options)
+    started: list = []  # the robot's true state once the explorer has started (v0, for a lighthouse algorithm)
+    violation, stopped = _drive(explorer, checker, lambda: started.append(sim.state))
+    outcome = _outcome(world, sim, explorer, checker, violation, trace, tally, spec, stopped)
+    _algorithm_counts(outcome, spec, explorer, world, started[0] if started else None)
+    if emit:
+        emit(end_record(outcome))
+    return outcome
+
+
+@dataclass(frozen=True)
+class _Run:
+    """What a run starts from: the world without markers, the start state, the kit, the lighthouse (lighthouse
+    algorithms) or the checked options (kit algorithms)."""
+
+    bare: World
+    state: tuple[str, int]
+    kit: Kit
+    light: Lighthouse | None
+    options: dict[str, Any]
+
+
+def check_run(world: World, spec: AlgorithmSpec, lighthouse: "str | Lighthouse | None" = None,
+              options: dict | None = None) -> None:
+    """Refuse, as bad input, a world, lighthouse or option the algorithm cannot run with (before anything runs)."""
+    _setup(world, spec, lighthouse, options or {})
+
+
+def _setup(world: World, spec: AlgorithmSpec, lighthouse: "str | Lighthouse | None", options: dict) -> _Run:
+    """Check the world, lighthouse and options against the algorithm (bad input before anything runs)."""
+    opts = spec.parse_options(options)
+    if spec.uses_lighthouse:
+        light = lighthouse if isinstance(lighthouse, Lighthouse) else lighthouse_named(lighthouse or
+                                                                                       "directional-vertex")
+        bare, state = prepare_world(world, light, spec.name)
+        return _Run(bare, state, light.kit, light, opts)
+    if lighthouse is not None:
+        name = lighthouse if isinstance(lighthouse, str) else lighthouse.name
+        raise InvalidInput(f"the algorithm {spec.name} takes no lighthouse (given {name!r}): it carries its own kit, "
+                           f"{spec.kit.describe()}")
+    if world.markers or getattr(world, "thread", None) is not None:
+        what = f"{len(world.markers)} marker(s)" if world.markers else "a thread"
+        raise InvalidInput(f"the algorithm {spec.name} drops its own markers: the world file must carry none "
+                           f"(it carries {what})")
+    kit = spec.kit_for(world.n, world.m, opts)
+    if spec.check_world is not None:
+        spec.check_world(world, opts)
+    return _Run(World(world.rotation, (), world.start), world.start_state(), kit, None, opts)
+
+
+def _explored(explorer) -> int:
+    """Edges explored so far, for the progress bar (0 for an explorer with no single map)."""
+    S = getattr(explorer, "S", None)
+    return S.explored_edges() if S is not None else 0
+
+
+def _drive(explorer, checker: Checker | None, on_started: Callable[[], None] = lambda: None
+           ) -> tuple[Any, AlgorithmStopped | OutOfMarkers | None]:
+    """The explorer contract: ``start``, then ``step`` until ``done``; the checker after the start and at the
+    end.  Returns the first violation (or None) and how the algorithm stopped early (or None)."""
+    try:
+        explorer.start()
+        on_started()
+        if checker is not None:
+            checker.after_start(explorer)
+        while not explorer.done():
+            explorer.step()
+        if checker is not None:
+            checker.at_end(explorer)
+    except OutOfMarkers as stop:  # before CheckFailure, its base: the failed outcome, not a violation
+        return None, stop
+    except CheckFailure as exc:
+        return exc.violation, None
+    except AlgorithmStopped as stop:
+        return None, stop
+    return None, None
+
+
+class _Tally:
+    """The iteration and hypothesis counts of a run, kept as the iterations come."""
+
+    def __init__(self) -> None:
+        self.iterations = self.loop = self.nonloop = self.hypotheses = self.rejected = self.confirmed = 0
+
+    def add(self, it) -> None:
+        self.iterations += 1
+        self.loop += it.kind == "loop"
+        self.nonloop += it.kind == "non-loop"
+        self.hypotheses += len(it.hypotheses)
+        self.rejected += sum(h.outcome in ("case 1", "case 2") for h in it.hypotheses)
+        self.confirmed += sum(h.outcome == "case 3" for h in it.hypotheses)
+
+
+def _outcome(world: World, sim: Simulator, explorer, checker: Checker | None, violation, trace: list[dict],
+             tally: _Tally, spec: AlgorithmSpec, stopped: AlgorithmStopped | OutOfMarkers | None) -> Outcome:
+    """The counts the CLI reports, from the finished (or stopped) run, and its outcome (``spec.errors.OUTCOMES``):
+    what the algorithm claimed, and what the checker, which sees the truth, says it is."""
+    claimed = stopped.outcome if stopped else "correct"
+    verified = checker is not None and violation is None and stopped is None
+    judged = claimed if stopped else ("correct" if verified else "wrong-map" if checker is not None else "unchecked")
+    light = getattr(explorer, "lighthouse", None)
+    bound = upper_bound(world.n, world.m) if spec.uses_lighthouse else spec.bound_for(world.n, world.m)
+    return Outcome(
+        n=world.n, m=world.m, cost=sim.cost, verified=verified,
+        iterations=tally.iterations, loop_iterations=tally.loop, nonloop_iterations=tally.nonloop,
+        hypotheses=tally.hypotheses, hypotheses_rejected=tally.rejected, hypotheses_confirmed=tally.confirmed,
+        checks=checker.passed if checker else 0, by_purpose=dict(sorted(sim.by_purpose.items())),
+        upper_bound=bound, lighthouse=None if light is None else light.name,
+        marker_operations=dict(sorted(sim.operations.items())), explorer=explorer, trace=trace, violation=violation,
+        outcome=judged, claimed=claimed, reason=stopped.reason if stopped else None, kit=sim.kit.describe())
+
+
+def _algorithm_counts(outcome: Outcome, spec: AlgorithmSpec, explorer, world: World, v0_state) -> None:
+    """What only some algorithms have: their own counts (the registry's ``summary_fn``), and for a lighthouse
+    algorithm the walk that found v0 (§5.1, §6.1) and the world vertex v0 is."""
+    if spec.summary_fn is not None:
+        outcome.extra = spec.summary_fn(explorer, world)
+    if spec.uses_lighthouse:
+        outcome.walk_steps = getattr(getattr(explorer, "beacon", None), "walk_steps", 0)
+        outcome.lighthouse_at = v0_state[0] if v0_state else None

@@ -1,0 +1,96 @@
+"""Where an exploration's trace records go: a list, a file (streamed), a ring of the last few, or several.
+
+:func:`~topomark.reference.run.explore.explore` hands every ``topomark/trace@1``
+record (``spec/trace.md``) to a *sink* as soon as it is made, so a run keeps
+only what its caller asked for: a long exploration written with
+``--trace FILE`` streams its trace to the file instead of holding millions of
+records in memory, and without ``--trace`` nothing but the last few records
+(for a violation's diagnostic) is kept.
+
+A sink is anything with ``emit(record)``; one that wants only some kinds of
+record says so with an ``events`` attribute (a set of ``event`` names: the
+header and end records always come), and explore then does not make the
+others — a counting sink on a long run skips formatting every move.
+:func:`trace_line` is the one
+serialisation (keys sorted, no whitespace), so a streamed file is byte-for-byte
+what :func:`~topomark.reference.trace.records.dump_trace` makes of the same records.
+"""
+
+from __future__ import annotations
+
+import json
+from collections import deque
+from pathlib import Path
+from typing import Protocol
+
+from topomark.reference.files.outputs import open_output
+
+__all__ = ["TraceSink", "ListSink", "RingSink", "FileSink", "TeeSink", "trace_line"]
+
+
+def trace_line(record: dict) -> str:
+    """One JSON Lines record: keys sorted, no whitespace, a newline — byte-for-byte reproducible."""
+    return json.dumps(record, sort_keys=True, separators=(",", ":")) + "\n"
+
+
+class TraceSink(Protocol):
+    def emit(self, record: dict) -> None: ...
+
+
+class ListSink:
+    """Every record, in order, in ``records`` (what ``Outcome.trace`` holds)."""
+
+    def __init__(self) -> None:
+        self.records: list[dict] = []
+
+    def emit(self, record: dict) -> None:
+        self.records.append(record)
+
+
+class RingSink:
+    """The last ``size`` records only (``records``, oldest first)."""
+
+    def __init__(self, size: int) -> None:
+        self._ring: deque[dict] = deque(maxlen=size)
+
+    def emit(self, record: dict) -> None:
+        self._ring.append(record)
+
+    @property
+    def records(self) -> list[dict]:
+        return list(self._ring)
+
+
+class FileSink:
+    """Each record written to ``path`` as it comes; an unwritable path is InvalidInput naming it (exit 2).
+
+    The file is opened (and so checked) when the sink is made, before any exploring; use as a context
+    manager or call :meth:`close`, which flushes and reports a failed final write (``/dev/full``).
+    """
+
+    def __init__(self, path: str | Path) -> None:
+        self.path = path
+        self._out = open_output(path)
+
+    def emit(self, record: dict) -> None:
+        self._out.write(trace_line(record))
+
+    def close(self) -> None:
+        self._out.close()
+
+    def __enter__(self) -> "FileSink":
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self._out.__exit__(*exc)
+
+
+class TeeSink:
+    """Every record to each of ``sinks``."""
+
+    def __init__(self, *sinks: TraceSink) -> None:
+        self.sinks = sinks
+
+    def emit(self, record: dict) -> None:
+        for sink in self.sinks:
+            sink.emit(record)
