@@ -1,4 +1,4 @@
-"""Numeric command-line options: the one place that says which durations and counts are sane.
+"""Numeric command-line options: the one place that says which durations, counts and degrees are sane.
 
 ``float("nan")``, ``float("inf")`` and ``1e308`` all parse as floats, and a
 time limit of NaN never fires (every comparison with NaN is false) while
@@ -21,8 +21,9 @@ from __future__ import annotations
 import math
 
 from topomark.spec.errors import InvalidInput
+from topomark.spec.world import MAX_DEGREE
 
-__all__ = ["MAX_SECONDS", "MAX_COUNT", "check_seconds", "check_count"]
+__all__ = ["MAX_SECONDS", "MAX_COUNT", "check_seconds", "check_count", "check_max_degree"]
 
 MAX_SECONDS = 7 * 24 * 3600  # one week: longer than any run, far from every overflow
 MAX_COUNT = 10 ** 15  # fits the protocol's integers (spec.jsontext.MAX_INT_DIGITS) and every clock
@@ -40,4 +41,14 @@ def check_count(value: int, option: str, maximum: int = MAX_COUNT) -> int:
     """``value`` if it is an integer in [0, maximum]; else InvalidInput naming ``option``."""
     if not 0 <= value <= maximum:
         raise InvalidInput(f"{option} must be >= 0 and at most {maximum}; got {value}")
+    return value
+
+
+def check_max_degree(value: int) -> int:
+    """``--max-degree`` of the commands that enumerate worlds: at least 1, at most any world's degree can be."""
+    if value < 1:
+        raise InvalidInput(f"--max-degree must be at least 1, not {value}")
+    if value > MAX_DEGREE:
+        raise InvalidInput(f"--max-degree {value} is larger than any world's degree can be "
+                           f"(at most {MAX_DEGREE:,}, topomark.spec.world.MAX_DEGREE)")
     return value

@@ -23,8 +23,8 @@ import argparse
 import json
 
 from topomark.proofs import burnside, enumerate as enumeration, graphs
+from topomark.reference.cli.args import check_max_degree
 from topomark.spec.errors import InvalidInput, TopomarkFault
-from topomark.spec.world import MAX_DEGREE
 
 __all__ = ["register", "count_command", "validate_args"]
 
@@ -61,11 +61,7 @@ def validate_args(args: argparse.Namespace) -> None:
     if not 2 <= args.min_vertices <= args.max_vertices:
         raise InvalidInput(f"--min-vertices must be between 2 and --max-vertices ({args.max_vertices}), "
                            f"not {args.min_vertices}")
-    if args.max_degree < 1:
-        raise InvalidInput(f"--max-degree must be at least 1, not {args.max_degree}")
-    if args.max_degree > MAX_DEGREE:
-        raise InvalidInput(f"--max-degree {args.max_degree} is larger than any world's degree can be "
-                           f"(at most {MAX_DEGREE:,}, topomark.spec.world.MAX_DEGREE)")
+    check_max_degree(args.max_degree)
 
 
 def count_command(args: argparse.Namespace) -> int:

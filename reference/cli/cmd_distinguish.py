@@ -21,9 +21,9 @@ from topomark.proofs.bisim import bisimulation, check_relation, distinguishing_s
 from topomark.proofs.census import CensusResult, stderr_progress
 from topomark.proofs.census_run import sharded_census
 from topomark.proofs.enumerate import MAX_VERTICES
+from topomark.reference.cli.args import check_max_degree
 from topomark.spec.errors import CheckFailure, InvalidInput
 from topomark.spec.markerclass import MARKER_CLASSES, marker_class
-from topomark.spec.world import MAX_DEGREE
 from topomark.spec.worldfile import load_world, world_to_json
 
 __all__ = ["register", "distinguish_command", "census_command", "format_motions", "format_perceptions",
@@ -105,11 +105,7 @@ def _validate(args: argparse.Namespace) -> None:
     if args.max_vertices > MAX_VERTICES:
         raise InvalidInput(f"--max-vertices {args.max_vertices} is too large: the census enumerates worlds "
                            f"of at most {MAX_VERTICES} vertices")
-    if args.max_degree < 1:
-        raise InvalidInput(f"--max-degree must be at least 1, not {args.max_degree}")
-    if args.max_degree > MAX_DEGREE:
-        raise InvalidInput(f"--max-degree {args.max_degree} is larger than any world's degree can be "
-                           f"(at most {MAX_DEGREE:,}, topomark.spec.world.MAX_DEGREE)")
+    check_max_degree(args.max_degree)
     if args.jobs < 1:
         raise InvalidInput(f"--jobs must be at least 1, not {args.jobs}")
 
