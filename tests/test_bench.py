@@ -171,3 +171,12 @@ def test_a_sink_that_wants_only_op_records_gets_them_all_and_nothing_else():
     assert {"move", "op", "header", "end"} <= kinds
     assert some.records == [r for r in full.records if r["event"] in ("header", "op", "end")]
     assert count.markers == sum(r["count"] for r in full.records if r["event"] == "op") > 0
+
+
+def test_the_report_kit_s_docstring_examples():
+    """The shared statistics and formatting of every bench report, and the §6.2 reports' examples."""
+    import doctest
+
+    from topomark.reference.bench.reports import section62, section62_figures, stats, text
+    for module in (stats, text, section62, section62_figures):
+        assert doctest.testmod(module).failed == 0, module.__name__

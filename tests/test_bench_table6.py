@@ -9,7 +9,8 @@ import pytest
 
 from topomark.reference.bench import experiments as bench, plan as bench_plan
 from topomark.reference.bench.reports.section62_figures import marked_places
-from topomark.reference.bench.reports.section62 import CLAIMS, slope
+from topomark.reference.bench.reports.section62 import CLAIMS
+from topomark.reference.bench.reports.stats import slope
 from topomark.reference.cli.main import main
 from topomark.reference.explorers.counted_markers import sum_to
 from topomark.reference.algorithms.registry import algorithm_spec

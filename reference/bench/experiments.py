@@ -61,8 +61,9 @@ size ``HEAVY_MAX_SIZE`` (``--heavy-max-size``); the report marks the row.
 
 The modules, one concept each: :mod:`~topomark.reference.bench.plan` (worlds,
 experiments, the plan of runs), :mod:`~topomark.reference.bench.runs` (running
-and appending), :mod:`~topomark.reference.bench.reports.kit` (the report and plots),
-:mod:`~topomark.reference.bench.reports.lighthouses` (the lighthouses' report) and
+and appending), :mod:`~topomark.reference.bench.reports.chapter34` (the report and plots, on the report kit
+:mod:`~topomark.reference.bench.reports.kit`), :mod:`~topomark.reference.bench.reports.lighthouses`
+(the lighthouses' report) and
 :mod:`~topomark.reference.bench.run_store` (the CSV).  This module is their front:
 the names the CLI and the tests use.
 """
@@ -71,10 +72,11 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from topomark.reference.bench.reports import chapter5, kit, lighthouses, section62, section63  # section63 registers §6.3's runs
+from topomark.reference.bench.reports import chapter5, chapter34, lighthouses, section62, section63  # section63 registers §6.3's runs
 from topomark.reference.bench.plan import (EXPERIMENTS, FAMILIES, HEAVY_GRAPHS, HEAVY_MAX_SIZE, Experiment, Part, Run, fits,
                          is_heavy, plan, world_for)
-from topomark.reference.bench.reports.kit import latest, reduction, summarize
+from topomark.reference.bench.reports.chapter34 import reduction, summarize
+from topomark.reference.bench.reports.stats import latest
 from topomark.reference.bench.runs import Progress, run_one, run_sweep
 from topomark.reference.bench.run_store import CSV_FIELDS
 
@@ -95,4 +97,4 @@ def write_report(experiment: str, out: Path, wall: float | None = None, plots: b
         return section63.write_report(experiment, out, wall, plots)
     if experiment == "all":
         lighthouses.write_report(out, None, plots)
-    return kit.write_report(experiment, out, wall, plots)
+    return chapter34.write_report(experiment, out, wall, plots)

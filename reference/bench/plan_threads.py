@@ -19,7 +19,7 @@ from topomark.reference.worlds import generators as g
 from topomark.reference.bench.plan import EXPERIMENTS, FAMILIES, GRIDS, NO_LIGHTHOUSE, Experiment, Family, Part, _seed
 
 __all__ = ["CLASSES", "ThreadClass", "LENGTHS", "SIZES", "COMPARED", "MOVABLE", "IMMOVABLE", "EDGE_HOLE",
-           "FIGURE_624_SIZE", "COST_F", "REPORTS"]
+           "FIGURE_624_SIZE", "REPORTS"]
 
 EDGE_HOLE = "lattice-edge-hole"
 SIZES = (90, 202, 360)
@@ -49,7 +49,6 @@ CLASSES = (
     ThreadClass("l = c(G)", "a long thread l = c(G)", "thread-circumference", NO_LIGHTHOUSE, "", "mn"),
     ThreadClass("l ≫ m, knots", "a very long thread l ≫ m", "thread-knots", NO_LIGHTHOUSE, "", "m"),
 )
-COST_F = {"m²n": lambda n, m: m * m * n, "mn": lambda n, m: m * n, "m": lambda n, m: m}
 
 
 def _lattice_edge_hole(size: int, seed: int):

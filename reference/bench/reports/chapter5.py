@@ -44,9 +44,10 @@ from topomark.spec.isomorphism import find_isomorphism
 from topomark.spec.world import World
 
 from topomark.reference.worlds import generators as g
-from topomark.reference.bench.plan import CHAPTER_5_FAMILIES, EXPERIMENTS, FAMILIES, UNCUED_MODEL_TREE_GRAPHS
-from topomark.reference.bench.reports.kit import latest, lighthouse_of, plot_lines, report_head
-from topomark.reference.bench.run_store import read_runs, write_atomic
+from topomark.reference.bench.plan import CHAPTER_5_FAMILIES, UNCUED_MODEL_TREE_GRAPHS
+from topomark.reference.bench.reports.kit import write
+from topomark.reference.bench.reports.plots import Draw, save
+from topomark.reference.bench.reports.stats import by_seed, groups, mean, num
 
 __all__ = ["NAME", "USUALLY", "write_report", "figure_3_4", "OUTCOMES"]
 
@@ -77,10 +78,6 @@ QUOTES = {
 }
 
 
-def _f(r: dict, col: str) -> float:
-    return float(r.get(col) or 0)
-
-
 def _ratio(a: list[float], b: list[float]) -> float:
     return statistics.fmean(a) / statistics.fmean(b)
 
@@ -91,11 +88,7 @@ def _share(values: list[float], pred: Callable[[float], bool]) -> float:
 
 def _rows(rows: list[dict]) -> dict[tuple, dict[int, dict]]:
     """(family, algorithm, lighthouse, options, size) -> {world seed: row} over the latest rows."""
-    out: dict[tuple, dict[int, dict]] = {}
-    for r in latest(rows):
-        key = (r["experiment"], r["algorithm"], lighthouse_of(r), r.get("options") or "", int(r["size"]))
-        out.setdefault(key, {})[int(r["seed"])] = r
-    return out
+    return by_seed(groups(rows, ("family", "algorithm", "lighthouse", "options", "size"), keep=lambda r: True))
 
 
 def _sizes(runs: dict, family: str) -> list[int]:
@@ -117,9 +110,9 @@ def _lighthouse_cells(pairs: list[tuple[dict, dict]]) -> list[str]:
     if not pairs:
         return ["0"] + ["–"] * 8
     outs = [a["outcome"] for a, _ in pairs]
-    found = [_f(a, "walk_steps") for a, _ in pairs if a["outcome"] == "correct"]
+    found = [num(a, "walk_steps") for a, _ in pairs if a["outcome"] == "correct"]
     both = [(a, b) for a, b in pairs if a["outcome"] == b["outcome"] == "correct"]
-    ratio = f"{_ratio([_f(a, 'cost') for a, _ in both], [_f(b, 'cost') for _, b in both]):.3f}" if both else "–"
+    ratio = f"{_ratio([num(a, 'cost') for a, _ in both], [num(b, 'cost') for _, b in both]):.3f}" if both else "–"
     return [str(len(pairs)), f"{outs.count('correct')}", f"{outs.count('wrong-map')}",
             f"{len(pairs) - outs.count('correct') - outs.count('wrong-map')}",
             f"{100 * _share(found, lambda x: x == 0):.0f}%" if found else "–",
@@ -157,7 +150,7 @@ def _lighthouse_verdict(pairs: list[tuple[dict, dict]], thesis: list[tuple[dict,
     if not pairs:
         return []
     outs = [a["outcome"] for a, _ in pairs]
-    found = [_f(a, "walk_steps") for a, _ in thesis if a["outcome"] == "correct"]
+    found = [num(a, "walk_steps") for a, _ in thesis if a["outcome"] == "correct"]
     share = _share(found, lambda x: x < 50)
     never_wrong = "wrong-map" not in outs and "error" not in outs
     lines = [f"Held? Over {len(pairs)} runs: {outs.count('correct')} mapped correctly, {outs.count('failed')} "
@@ -226,13 +219,13 @@ def _model_section(runs: dict) -> list[str]:
                 if not got:
                     continue
                 outs = [r["outcome"] for r in got]
-                comp, peak, sec = ([_f(r, c) for r in got] for c in ("completed_models", "peak_models", "seconds"))
+                comp, peak, sec = ([num(r, c) for r in got] for c in ("completed_models", "peak_models", "seconds"))
                 lines.append(
-                    f"| {fam} | {size} | `{opt}` | {len(got)} | {statistics.fmean(_f(r, 'n') for r in got):.1f} | "
+                    f"| {fam} | {size} | `{opt}` | {len(got)} | {mean(got, 'n'):.1f} | "
                     + " | ".join(str(outs.count(o)) for o in ("correct", "wrong-map", "failed", "limit"))
                     + f" | {statistics.fmean(comp):.1f} / {max(comp):.0f} | {statistics.fmean(peak):.0f} / "
                     f"{max(peak):.0f} | {sum(str(r.get('true_world_completed')) == 'True' for r in got)} | "
-                    f"{statistics.fmean(_f(r, 'cost') for r in got):,.0f} | {statistics.fmean(sec):.2f} / "
+                    f"{mean(got, 'cost'):,.0f} | {statistics.fmean(sec):.2f} / "
                     f"{max(sec):.2f} |")
     return lines + [""] + _model_verdict(runs)
 
@@ -271,8 +264,8 @@ def _growth(runs: dict) -> list[tuple[str, float, float, float, float, float]]:
         for size in _sizes(runs, fam):
             got = _model_rows(runs, fam, "cue=n", size)
             if got:
-                peak, sec = [_f(r, "peak_models") for r in got], [_f(r, "seconds") for r in got]
-                out.append((fam, statistics.fmean(_f(r, "n") for r in got), statistics.fmean(peak), max(peak),
+                peak, sec = [num(r, "peak_models") for r in got], [num(r, "seconds") for r in got]
+                out.append((fam, mean(got, "n"), statistics.fmean(peak), max(peak),
                             statistics.fmean(sec), max(sec)))
     return out
 
@@ -342,34 +335,24 @@ def _figure_verdict(results: list[dict]) -> list[str]:
 
 def write_report(out: Path, wall: float | None = None, plots: bool = True) -> Path:
     """Generate ``out/chapter-5.md`` (and plots) from ``out/runs.csv``."""
-    exp = EXPERIMENTS[NAME]
-    rows = read_runs(out / "runs.csv").rows
-    runs = _rows(rows)
-    lines = report_head(NAME, exp, rows, wall,
-                        ", the walk and every probe included; every lighthouse of a world starts from the same vertex "
-                        "and facing (drawn from the world's seed). A run that reports failure or reaches a cap is not "
-                        "verified (there is no map to verify), so the count below includes them; wrong maps are "
-                        "counted in the tables.")
-    lines += _lighthouse_section(runs, "undirected-vertex", QUOTES["5.1"],
-                                 "§5.1: one undirected vertex marker, placed by a random walk")
-    lines += _lighthouse_section(runs, "undirected-edge", QUOTES["6.1"],
-                                 "§6.1: one undirected edge marker, placed by a random walk")
-    lines += _local_section(runs) + _model_section(runs) + _growth_section(runs) + _figure_section(runs)
-    lines += plot_lines(_plots(runs, out) if plots else None, plots)
-    path = out / f"{NAME}.md"
-    write_atomic(path, "\n".join(lines))
-    return path
+    def body(rows: list[dict]) -> tuple[list[str], Draw]:
+        runs = _rows(rows)
+        lines = _lighthouse_section(runs, "undirected-vertex", QUOTES["5.1"],
+                                    "§5.1: one undirected vertex marker, placed by a random walk")
+        lines += _lighthouse_section(runs, "undirected-edge", QUOTES["6.1"],
+                                     "§6.1: one undirected edge marker, placed by a random walk")
+        lines += _local_section(runs) + _model_section(runs) + _growth_section(runs) + _figure_section(runs)
+        return lines, lambda plt: _plots(plt, runs, out)
+    return write(NAME, out, wall, plots,
+                 ", the walk and every probe included; every lighthouse of a world starts from the same vertex "
+                 "and facing (drawn from the world's seed). A run that reports failure or reaches a cap is not "
+                 "verified (there is no map to verify), so the count below includes them; wrong maps are "
+                 "counted in the tables.", body)
 
 
-def _plots(runs: dict, out: Path) -> list[Path] | None:
+def _plots(plt, runs: dict, out: Path) -> list[Path]:
     """Algorithm 5.1 with the n cue: peak live models and seconds against n, per small family (log scale)."""
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        return None
-    points = [(fam, _f(r, "n"), _f(r, "peak_models"), _f(r, "seconds")) for fam in MODEL_FAMILIES[:2]
+    points = [(fam, num(r, "n"), num(r, "peak_models"), num(r, "seconds")) for fam in MODEL_FAMILIES[:2]
               for k, v in runs.items() if k[0] == fam and k[3] == "cue=n" for r in v.values()]
     if not points:
         return []
@@ -384,8 +367,4 @@ def _plots(runs: dict, out: Path) -> list[Path] | None:
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=8)
     fig.suptitle("Algorithm 5.1 with the n cue: peak models and time against n")
-    fig.tight_layout()
-    path = out / f"{NAME}-model-tree.png"
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return [path]
+    return [save(plt, fig, out / f"{NAME}-model-tree.png")]

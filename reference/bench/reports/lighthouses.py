@@ -18,13 +18,14 @@ the costs side by side, per family, size and algorithm:
 
 from __future__ import annotations
 
-import statistics
 from pathlib import Path
 
 from topomark.reference.bench.plan import DEFAULT_LIGHTHOUSE, EXPERIMENTS, FAMILIES, Part, fits
-from topomark.reference.bench.reports.kit import latest, lighthouse_of, plot_lines, report_head
+from topomark.reference.bench.reports.kit import write
+from topomark.reference.bench.reports.plots import Draw, curve, finish, new
+from topomark.reference.bench.reports.stats import by_seed, finished, groups, mean, mean_sd, num
+from topomark.reference.bench.reports.text import fmt_pm, row
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES
-from topomark.reference.bench.run_store import read_runs, write_atomic
 
 __all__ = ["write_report", "by_world"]
 
@@ -63,31 +64,25 @@ MECHANISM = (
 
 def by_world(rows: list[dict]) -> dict[tuple, dict[int, dict]]:
     """(family, algorithm, size, lighthouse) -> {seed: row} over the finished nearest-policy runs."""
-    out: dict[tuple, dict[int, dict]] = {}
-    for r in latest(rows):
-        if r.get("cost") in ("", None) or (r.get("policy") or "nearest") != "nearest":
-            continue
-        out.setdefault((r["experiment"], r["algorithm"], int(r["size"]), lighthouse_of(r)), {})[int(r["seed"])] = r
-    return out
+    return by_seed(groups(rows, ("family", "algorithm", "size", "lighthouse"),
+                          keep=lambda r: finished(r) and (r.get("policy") or "nearest") == "nearest"))
 
 
 def write_report(out: Path, wall: float | None = None, plots: bool = True) -> Path:
     """Generate ``out/lighthouses.md`` (and plots) from ``out/runs.csv``."""
-    exp = EXPERIMENTS[NAME]
-    rows = read_runs(out / "runs.csv").rows
-    worlds = by_world(rows)
-    lines = report_head(NAME, exp, rows, wall,
-                        " (thesis §3.1.2); every lighthouse of a row explores the same worlds from the same start "
-                        "(vertex and facing drawn from the world's seed), with the default policies. Means and ratios "
-                        "are over the worlds every lighthouse of the row ran; ratio = mean cost ÷ the directional "
-                        "vertex marker's mean cost on those worlds.") + THESIS
-    for part in exp.parts:
-        lines += _cost_table(part, worlds) + _validation_table(part, worlds) + _skipped(part, worlds)
-    lines += ["## What we measured", "", MECHANISM, ""] + _findings(exp.parts, worlds)
-    lines += plot_lines(_plots(exp.parts, worlds, out) if plots else None, plots)
-    path = out / f"{NAME}.md"
-    write_atomic(path, "\n".join(lines))
-    return path
+    parts = EXPERIMENTS[NAME].parts
+
+    def body(rows: list[dict]) -> tuple[list[str], Draw]:
+        worlds = by_world(rows)
+        lines = list(THESIS)
+        for part in parts:
+            lines += _cost_table(part, worlds) + _validation_table(part, worlds) + _skipped(part, worlds)
+        return lines + ["## What we measured", "", MECHANISM, ""] + _findings(parts, worlds), _draw(parts, worlds, out)
+    return write(NAME, out, wall, plots,
+                 " (thesis §3.1.2); every lighthouse of a row explores the same worlds from the same start "
+                 "(vertex and facing drawn from the world's seed), with the default policies. Means and ratios "
+                 "are over the worlds every lighthouse of the row ran; ratio = mean cost ÷ the directional "
+                 "vertex marker's mean cost on those worlds.", body)
 
 
 def _cells(part: Part, worlds: dict, alg: str, size: int) -> tuple[list[dict[int, dict]], list[int]] | None:
@@ -98,8 +93,9 @@ def _cells(part: Part, worlds: dict, alg: str, size: int) -> tuple[list[dict[int
     return got, sorted(set.intersection(*(set(g) for g in got)))
 
 
-def _mean(runs: dict[int, dict], seeds: list[int], column: str = "cost") -> float:
-    return statistics.fmean(float(runs[s].get(column) or 0) for s in seeds)
+def _on(runs: dict[int, dict], seeds: list[int]) -> list[dict]:
+    """The runs on these worlds."""
+    return [runs[s] for s in seeds]
 
 
 def _rows_of(part: Part, worlds: dict):
@@ -120,14 +116,11 @@ def _cost_table(part: Part, worlds: dict) -> list[str]:
              + " | ".join(f"{o} ÷ dir. vertex" for o in others) + " |",
              "|---:|---|---:|---:|" + "---:|" * (len(names) + len(others))]
     for size, alg, got, seeds in _rows_of(part, worlds):
-        stats = []
-        for runs in got:
-            vals = [float(runs[s]["cost"]) for s in seeds]
-            stats.append((statistics.fmean(vals), statistics.stdev(vals) if len(vals) > 1 else 0.0))
+        stats = [mean_sd([num(r, "cost") for r in _on(runs, seeds)]) for runs in got]
         checked = [runs[s] for runs in got for s in seeds if str(runs[s].get("checked")) == "True"]
         verified = sum(str(r.get("verified")) == "True" for r in checked)
         lines.append(f"| {size} | {alg} | {len(seeds)} | {verified}/{len(checked)} | "
-                     + " | ".join(f"{m:,.0f} ± {sd:,.0f}" for m, sd in stats) + " | "
+                     + " | ".join(fmt_pm(m, sd) for m, sd in stats) + " | "
                      + " | ".join(f"{m / stats[0][0]:.4f}" for m, _ in stats[1:]) + " |")
     return lines + [""]
 
@@ -139,8 +132,8 @@ def _validation_table(part: Part, worlds: dict) -> list[str]:
              + " | ".join(f"hypotheses, {n}" for n in names) + " |",
              "|---:|---|" + "---:|" * (2 * len(names))]
     for size, alg, got, seeds in _rows_of(part, worlds):
-        lines.append(f"| {size} | {alg} | " + " | ".join(f"{_mean(r, seeds, 'validation'):,.1f}" for r in got)
-                     + " | " + " | ".join(f"{_mean(r, seeds, 'hypotheses'):,.1f}" for r in got) + " |")
+        lines.append(row(size, alg, *(f"{mean(_on(r, seeds), column):,.1f}" for column in ("validation", "hypotheses")
+                                      for r in got)))
     return lines + [""]
 
 
@@ -173,7 +166,7 @@ def _deltas(parts: tuple[Part, ...], worlds: dict, lh: str) -> dict:
         for _size, alg, got, seeds in _rows_of(part, worlds):
             for s in seeds:
                 a, b = got[0][s], got[i][s]
-                diff = {c: float(a.get(c) or 0) - float(b.get(c) or 0) for c in
+                diff = {c: num(a, c) - num(b, c) for c in
                         ("cost", "validation", "retrace", "travel", "new", "hypotheses")}
                 d["worlds"] += 1
                 d["cheaper" if diff["cost"] > 0 else "equal" if diff["cost"] == 0 else "dearer"] += 1
@@ -230,35 +223,25 @@ def _identical(parts: tuple[Part, ...], worlds: dict, a: str, b: str) -> tuple[i
     return same, total
 
 
-def _plots(parts: tuple[Part, ...], worlds: dict, out: Path) -> list[Path] | None:
+def _draw(parts: tuple[Part, ...], worlds: dict, out: Path) -> Draw:
     """Per family: each lighthouse's ratio of mean cost to the directional vertex marker's, against the size."""
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
+    def draw(plt) -> list[Path]:
+        made = [_plot(plt, part, worlds, out) for part in parts]
+        return [p for p in made if p]
+    return draw
+
+
+def _plot(plt, part: Part, worlds: dict, out: Path) -> Path | None:
+    series: dict[tuple[str, str], list[tuple[int, float]]] = {}
+    for size, alg, got, seeds in _rows_of(part, worlds):
+        base = mean(_on(got[0], seeds), "cost")
+        for lh, runs in zip(part.lighthouses[1:], got[1:]):
+            series.setdefault((lh, alg), []).append((size, mean(_on(runs, seeds), "cost") / base))
+    if not series:
         return None
-    made = []
-    for part in parts:
-        series: dict[tuple[str, str], list[tuple[int, float]]] = {}
-        for size, alg, got, seeds in _rows_of(part, worlds):
-            base = _mean(got[0], seeds)
-            for lh, runs in zip(part.lighthouses[1:], got[1:]):
-                series.setdefault((lh, alg), []).append((size, _mean(runs, seeds) / base))
-        if not series:
-            continue
-        fig, ax = plt.subplots(figsize=(6, 4.2))
-        ax.axhline(1.0, color="k", lw=1, ls="--", label="directional vertex marker")
-        for (lh, alg), pts in series.items():
-            ax.plot([p[0] for p in pts], [p[1] for p in pts], marker="o", ms=3, label=f"{SHORT.get(lh, lh)}, {alg}")
-        ax.set_xlabel("size of graph (vertices)")
-        ax.set_ylabel("mean cost ÷ directional vertex marker's")
-        ax.set_title(f"Lighthouses side by side: {part.family}")
-        ax.legend(fontsize=7)
-        ax.grid(True, alpha=0.3)
-        path = out / f"{NAME}-{part.family}.png"
-        fig.tight_layout()
-        fig.savefig(path, dpi=110)
-        plt.close(fig)
-        made.append(path)
-    return made
+    fig, ax = new(plt)
+    ax.axhline(1.0, color="k", lw=1, ls="--", label="directional vertex marker")
+    for (lh, alg), pts in series.items():
+        curve(ax, [p[0] for p in pts], [p[1] for p in pts], f"{SHORT.get(lh, lh)}, {alg}")
+    return finish(plt, fig, ax, out / f"{NAME}-{part.family}.png", f"Lighthouses side by side: {part.family}",
+                  "size of graph (vertices)", "mean cost ÷ directional vertex marker's", log=False)

@@ -35,21 +35,23 @@ Examples
 
 from __future__ import annotations
 
-import math
 import statistics
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable
 
-from topomark.reference.bench.plan import EXPERIMENTS, FAMILIES, NO_LIGHTHOUSE
-from topomark.reference.bench.reports.kit import latest, mean, num, plot_lines, report_head, sd
+from topomark.reference.bench.plan import EXPERIMENTS, FAMILIES
+from topomark.reference.bench.reports import section62_figures as figures
+from topomark.reference.bench.reports.kit import Body, write
+from topomark.reference.bench.reports.plots import Draw
 from topomark.reference.bench.reports.section62_figures import EDGEINFO
+from topomark.reference.bench.reports.stats import (SLOPE_TOLERANCE, cost_f, cost_per_m, finished, groups, mean, num, sd,
+                                                    slope)
+from topomark.reference.bench.reports.text import fmt_pm, yes
 from topomark.reference.explorers.counted_markers import sum_to
-from topomark.reference.bench.run_store import read_runs, write_atomic
 
-__all__ = ["CLAIMS", "REPORTS", "Claim", "write_report", "groups", "slope", "cost_f", "O_M", "SLOPE_TOLERANCE"]
+__all__ = ["CLAIMS", "REPORTS", "Claim", "write_report", "correct", "O_M", "GROUP"]
 
-SLOPE_TOLERANCE = 1.1
 O_M = ("case-3b", "case-dv-sum", "extension-1", "extension-2")
 
 
@@ -109,26 +111,10 @@ CLAIMS.update({
                                 lambda n, m: m, "m + [n even] (L1665 corrected)"),
 })
 CLAIMS_62_UNDIRECTED = {"case-3b": "| (Σ_{k=1}^{n−1} k) | edge (E-marker) | none | O(m) | O(m) |"}
-COST_F: dict[str, Callable[[dict], float]] = {
-    "m": lambda r: float(r["m"]), "mn": lambda r: float(r["m"]) * float(r["n"]),
-    "m·d_max": lambda r: float(r["m"]) * float(r.get("d_max") or 0), "m²n": lambda r: float(r["m"]) ** 2 * float(r["n"]),
-}
 REPORTS = ("table-6.1", "table-6.2", "figure-6.13", "section-6.2")
-
-
-def cost_f(alg: str, row: dict) -> float | None:
-    """f(n, m, d_max) of the algorithm's stated cost bound, for this run's world."""
-    c = CLAIMS.get(alg)
-    return COST_F[c.cost](row) if c and c.cost else None
-
-
-def slope(points: list[tuple[float, float]]) -> float | None:
-    """Least-squares slope of log y against log x (None with fewer than two distinct x)."""
-    pts = [(math.log(x), math.log(y)) for x, y in points if x > 0 and y > 0]
-    if len({p[0] for p in pts}) < 2:
-        return None
-    mx, my = statistics.fmean(p[0] for p in pts), statistics.fmean(p[1] for p in pts)
-    return round(sum((x - mx) * (y - my) for x, y in pts) / sum((x - mx) ** 2 for x, _ in pts), 3)
+GROUP = ("family", "algorithm", "options", "size")
+"""The runs are grouped by (family, algorithm, option set, size): the finished runs that mapped their world
+correctly (``g``: costs and means are over these) and every finished run (``tried``)."""
 
 
 def correct(r: dict) -> bool:
@@ -136,53 +122,36 @@ def correct(r: dict) -> bool:
     return r.get("outcome") == "correct" or (not r.get("outcome") and str(r.get("verified")) == "True")
 
 
-def groups(rows: list[dict], only_correct: bool = True) -> dict[tuple[str, str, str, int], list[dict]]:
-    """(family, algorithm, option set, size) -> the finished runs (one per key, the checked one preferred); only
-    those that mapped their world correctly unless ``only_correct`` is False (costs and means are over these)."""
-    out: dict[tuple, list[dict]] = {}
-    for r in latest(rows):
-        if r.get("cost") in ("", None) or (only_correct and not correct(r)):
-            continue
-        out.setdefault((r["experiment"], r["algorithm"], r.get("options") or "", int(r["size"])), []).append(r)
-    return out
-
-
-def _yes(ok: bool) -> str:
-    return "yes" if ok else "**no**"
-
-
 def write_report(experiment: str, out: Path, wall: float | None = None, plots: bool = True) -> Path:
     """``out/EXPERIMENT.md`` (and plots) from ``out/runs.csv``; ``section-6.2`` writes the three reports."""
-    from topomark.reference.bench.reports import section62_figures as bench_figures6
-    rows = read_runs(out / "runs.csv").rows
-    g, tried = groups(rows), groups(rows, only_correct=False)
     if experiment == "section-6.2":
         for name in REPORTS[:3]:
             write_report(name, out, None, plots)
+    return write(experiment, out, wall, plots,
+                 " (thesis §3.1.2); markers used = the markers the robot dropped (the sum of the counts "
+                 "of the simulator's drops). Every algorithm of a size explores the same worlds from the same "
+                 "start. The thesis's Figures 6.11–6.13, 6.17, 6.18 are lost (guide §11): only their captions "
+                 "and the prose findings are quoted.", _body(experiment, out), plot_line=experiment != "section-6.2")
+
+
+def _body(experiment: str, out: Path) -> Body:
     exp = EXPERIMENTS[experiment]
-    lines = report_head(experiment, exp, rows, wall,
-                        " (thesis §3.1.2); markers used = the markers the robot dropped (the sum of the counts "
-                        "of the simulator's drops). Every algorithm of a size explores the same worlds from the same "
-                        "start. The thesis's Figures 6.11–6.13, 6.17, 6.18 are lost (guide §11): only their captions "
-                        "and the prose findings are quoted.")
-    made: list[Path] | None = [] if plots else None
-    if experiment == "section-6.2":
-        lines += ["The reports: `table-6.1.md`, `table-6.2.md`, `figure-6.13.md` (written beside this one).", ""]
-        lines += marker_classes(g, tried)
-    elif experiment == "figure-6.13":
-        lines += bench_figures6.figure_613(exp, g)
-        made = bench_figures6.plots(experiment, g, out) if plots else None
-    else:
-        table = experiment.split("-")[1]
-        algs = [a for a in exp.parts[0].algorithms]
-        lines += thesis_rows(table, algs) + claims_table(exp, g, tried, algs) + size_tables(exp, g, tried, algs)
-        lines += om_breakdown(exp, g, [a for a in algs if a in O_M])
-        lines += bench_figures6.findings(experiment, exp, g)
-        made = bench_figures6.plots(experiment, g, out) if plots else None
-    lines += plot_lines(made, plots) if experiment != "section-6.2" else []
-    path = out / f"{experiment}.md"
-    write_atomic(path, "\n".join(lines))
-    return path
+
+    def body(rows: list[dict]) -> tuple[list[str], Draw | None]:
+        g, tried = groups(rows, GROUP, keep=lambda r: finished(r) and correct(r)), groups(rows, GROUP)
+        if experiment == "section-6.2":
+            return ["The reports: `table-6.1.md`, `table-6.2.md`, `figure-6.13.md` (written beside this one).", ""] \
+                + marker_classes(g, tried), None
+        if experiment == "figure-6.13":
+            lines = figures.figure_613(exp, g)
+        else:
+            table = experiment.split("-")[1]
+            algs = [a for a in exp.parts[0].algorithms]
+            lines = thesis_rows(table, algs) + claims_table(exp, g, tried, algs) + size_tables(exp, g, tried, algs)
+            lines += om_breakdown(exp, g, [a for a in algs if a in O_M])
+            lines += figures.findings(experiment, exp, g)
+        return lines, lambda plt: figures.plots(plt, experiment, g, out)
+    return body
 
 
 def thesis_rows(table: str, algs: list[str]) -> list[str]:
@@ -224,12 +193,12 @@ def claim_verdicts(family: str, alg: str, g: dict, tried: dict, sizes: list[int]
     over_stated = [r for r in rs if c.stated and num(r, "markers_used") > c.stated(int(r["n"]), int(r["m"]))]
     over_checked = [r for r in rs if r.get("marker_bound") not in ("", None) and
                     num(r, "markers_used") > num(r, "marker_bound")]
-    f = [(mean(g[(family, alg, "", s)], lambda r: cost_f(alg, r)), mean(g[(family, alg, "", s)], lambda r: num(r, "cost")))
+    f = [(mean(g[(family, alg, "", s)], lambda r: cost_f(c.cost, r)), mean(g[(family, alg, "", s)], "cost"))
          for s in sizes if g.get((family, alg, "", s))] if c.cost else []
     sl = slope(f) if f else None
     over_exact = [r for r in rs if r.get("upper_bound") not in ("", None) and num(r, "cost") > num(r, "upper_bound")]
     ok = [r for s in sizes for r in g.get((family, alg, "", s), ())]
-    ratio_f = max((num(r, "cost") / cost_f(alg, r) for r in ok), default=None) if c.cost else None
+    ratio_f = max((num(r, "cost") / cost_f(c.cost, r) for r in ok), default=None) if c.cost else None
     return {"worlds": len(rs), "correct": sum(correct(r) for r in rs),
             "used_max": max(used), "used_mean": statistics.fmean(used),
             "ratio_max": max(num(r, "markers_used") / c.stated(int(r["n"]), int(r["m"])) for r in rs) if c.stated else None,
@@ -249,14 +218,14 @@ def claims_table(exp, g: dict, tried: dict, algs: list[str]) -> list[str]:
     for fam, a, sizes in _family_algs(exp, tried, algs):
         v, c = claim_verdicts(fam, a, g, tried, sizes), CLAIMS[a]
         ratio = f" ({v['ratio_max']:.3f})" if v["ratio_max"] is not None else ""
-        stated_ok = ("—" if c.stated is None else _yes(not v["over_stated"]) +
+        stated_ok = ("—" if c.stated is None else yes(not v["over_stated"]) +
                      (f" ({len(v['over_stated'])} worlds over)" if v["over_stated"] else ""))
-        cost_ok = ("—" if v["slope"] is None else _yes(v["slope"] <= SLOPE_TOLERANCE))
+        cost_ok = ("—" if v["slope"] is None else yes(v["slope"] <= SLOPE_TOLERANCE))
         if v["exact"]:
-            cost_ok += f"; ≤ our exact bound on every world: {_yes(not v['over_exact'])}"
+            cost_ok += f"; ≤ our exact bound on every world: {yes(not v['over_exact'])}"
         lines.append(f"| {fam} | `{a}` | {('O(' + c.cost + ')') if c.cost else 'fails (L1491)'} | {v['worlds']} | "
                      f"{v['correct']}/{v['worlds']} | {v['used_max']:,.0f} / {v['used_mean']:,.1f} | {c.stated_text}"
-                     f"{ratio} | {stated_ok} | {c.checked_text} | {_yes(not v['over_checked'])} | "
+                     f"{ratio} | {stated_ok} | {c.checked_text} | {yes(not v['over_checked'])} | "
                      f"{'—' if v['ratio_f'] is None else format(v['ratio_f'], '.4g')} | "
                      f"{'—' if v['slope'] is None else v['slope']} | {cost_ok} |")
     return lines + ["", "Case 5's count is not a claim (the robot is given any K > 3); its rows run with the default "
@@ -284,13 +253,13 @@ def size_tables(exp, g: dict, tried: dict, algs: list[str]) -> list[str]:
                     continue
                 c = CLAIMS[a]
                 stated = f"{mean(rs, lambda r: c.stated(int(r['n']), int(r['m']))):,.1f}" if c.stated else "—"
-                f = f"{mean(rs, lambda r: num(r, 'cost') / cost_f(a, r)):.4g} (f = {c.cost})" if c.cost else "—"
+                f = f"{mean(rs, lambda r: num(r, 'cost') / cost_f(c.cost, r)):.4g} (f = {c.cost})" if c.cost else "—"
                 lines.append(f"| {size} | `{a}` | {len(every)} | {len(rs)} | "
-                             f"{mean(rs, lambda r: num(r, 'n')):.0f} | {mean(rs, lambda r: num(r, 'm')):.1f} | "
-                             f"{mean(rs, lambda r: num(r, 'markers_used')):,.1f} "
+                             f"{mean(rs, 'n'):.0f} | {mean(rs, 'm'):.1f} | "
+                             f"{mean(rs, 'markers_used'):,.1f} "
                              f"({max(num(r, 'markers_used') for r in rs):,.0f}) | {stated} | "
-                             f"{mean(rs, lambda r: num(r, 'cost')):,.0f} ± {sd(rs, lambda r: num(r, 'cost')):,.0f} | "
-                             f"{mean(rs, lambda r: num(r, 'cost') / num(r, 'm')):.2f} | {f} |")
+                             f"{fmt_pm(mean(rs, 'cost'), sd(rs, 'cost'))} | "
+                             f"{mean(rs, cost_per_m):.2f} | {f} |")
         lines.append("")
     return lines
 
@@ -313,7 +282,7 @@ def om_breakdown(exp, g: dict, algs: list[str]) -> list[str]:
             big = [r for r in rs if num(r, "cost") > 3 * num(r, "m")]
             over += [(fam, a, r) for r in big]
             lines.append(f"| {fam} | `{a}` | {s} | {len(rs)} | {per('cost'):.3f} | "
-                         f"{max(num(r, 'cost') / num(r, 'm') for r in rs):.3f} | {per('new'):.2f} | {per('other'):.2f} | "
+                         f"{max(cost_per_m(r) for r in rs):.3f} | {per('new'):.2f} | {per('other'):.2f} | "
                          f"{per('travel'):.2f} | {mean(rs, lambda r: (num(r, 'validation') + num(r, 'retrace')) / num(r, 'm')):.2f} | "
                          f"{len(big)} |")
     lattice = [o for o in over if o[0] == "lattice-hole"]
@@ -323,7 +292,7 @@ def om_breakdown(exp, g: dict, algs: list[str]) -> list[str]:
         parts = {c: num(r, c) / num(r, "m") for c in ("other", "travel", "validation", "retrace")}
         worst = max(parts, key=parts.get)
         lines.append(f"* {fam} size {r['size']} seed {r['seed']} `{a}`: n = {r['n']}, m = {r['m']}, cost/m = "
-                     f"{num(r, 'cost') / num(r, 'm'):.3f}; the excess over the m new edges is mostly `{worst}` "
+                     f"{cost_per_m(r):.3f}; the excess over the m new edges is mostly `{worst}` "
                      f"({parts[worst]:.2f} m).")
     return lines + [""]
 
@@ -343,17 +312,12 @@ def marker_classes(g: dict, tried: dict) -> list[str]:
                 cells.append(f"no world mapped correctly ({len(every)} runs: wrong map)" if every else "—")
                 continue
             rs = g[(fam, a, "", max(sizes))]
-            cells.append(f"{max(sizes)}: {mean(rs, lambda r: num(r, 'cost')):,.0f} "
-                         f"({mean(rs, lambda r: num(r, 'cost') / num(r, 'm')):.2f}), "
-                         f"{mean(rs, lambda r: num(r, 'markers_used')):,.0f}")
+            cells.append(f"{max(sizes)}: {mean(rs, 'cost'):,.0f} "
+                         f"({mean(rs, cost_per_m):.2f}), "
+                         f"{mean(rs, 'markers_used'):,.0f}")
         lines.append(f"| Table {c.table}: {' · '.join(x.strip() for x in c.row.strip('|').split('|'))} | "
                      f"`topomark explore WORLD --algorithm {a}` | "
                      + " | ".join(cells) + " |")
     return lines + ["", "Rows 1–3 of the tables (one, two, three markers) are Algorithm 3.1 with a lighthouse: "
                     "`topomark explore WORLD --lighthouse vertex-and-edge` / `three-undirected-edge`, measured by "
                     "`topomark bench lighthouses`.", ""]
-
-
-def kit_rows(rows: list[dict]) -> list[dict]:
-    """The rows of kit algorithms (no lighthouse)."""
-    return [r for r in rows if r.get("lighthouse") == NO_LIGHTHOUSE]

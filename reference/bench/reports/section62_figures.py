@@ -29,9 +29,10 @@ import math
 from pathlib import Path
 
 from topomark.reference.bench.plan import FIGURE_613_SIZES, FRACTIONS
-from topomark.reference.bench.reports.kit import mean, num
+from topomark.reference.bench.reports.plots import curve, finish, new
+from topomark.reference.bench.reports.stats import cost_per_m, mean, num
 
-__all__ = ["EDGEINFO", "findings", "figure_613", "plots", "marked_places", "means"]
+__all__ = ["EDGEINFO", "PLOTS", "findings", "figure_613", "plots", "marked_places", "means"]
 
 FAMILIES6 = ("lattice-hole", "complete-hole")
 
@@ -50,7 +51,7 @@ def marked_places(used: float) -> int:
 
 def means(g: dict, family: str, alg: str, column: str = "cost", options: str = "") -> dict[int, float]:
     """size -> mean of ``column`` over the worlds of (family, alg, options)."""
-    return {k[3]: mean(rs, lambda r: num(r, column)) for k, rs in g.items()
+    return {k[3]: mean(rs, column) for k, rs in g.items()
             if k[0] == family and k[1] == alg and k[2] == options}
 
 
@@ -96,7 +97,7 @@ def _fig_611_612(fam: str, g: dict) -> list[str]:
     lines += _finding("\"The m + n E-marker algorithm … provides lower cost.\"", "case-2 ÷ the cheaper of case-1a/1b "
                       f"per size: {_ratio_text(r)}", all(x < 1 for x in r.values()) if r else None)
     lowest = {s: all(c["case-3b"][s] <= c[a][s] for a in c if s in c[a]) for s in c["case-3b"]}
-    per_m = {s: mean(g[(fam, "case-3b", "", s)], lambda r: num(r, "cost") / num(r, "m")) for s in c["case-3b"]}
+    per_m = {s: mean(g[(fam, "case-3b", "", s)], cost_per_m) for s in c["case-3b"]}
     lines += _finding("\"The Σ_{k=1}^{n−1} k E-marker algorithm, which has O(m) cost bound, provides the lowest cost, "
                       "which is very close to the optimal cost m.\"", "case-3b the lowest mean at "
                       f"{sum(lowest.values())}/{len(lowest)} sizes; its mean cost/m: {_ratio_text(per_m)} (close: < 3)",
@@ -154,7 +155,7 @@ def _fig_617_618(fam: str, g: dict) -> list[str]:
     c = {a: means(g, fam, a) for a in algs}
     u = {a: means(g, fam, a, "markers_used") for a in algs}
     lines = [f"## Figure 6.17 ({fam}): the thesis's findings beside ours", ""]
-    per_m = {s: mean(g[(fam, "case-dv-sum", "", s)], lambda r: num(r, "cost") / num(r, "m")) for s in c["case-dv-sum"]}
+    per_m = {s: mean(g[(fam, "case-dv-sum", "", s)], cost_per_m) for s in c["case-dv-sum"]}
     lines += _finding("Σ directional V-markers: \"cost near the optimal m cost\"", "mean cost/m per size (near: < 2): "
                       + _ratio_text(per_m), all(v < 2 for v in per_m.values()) if per_m else None)
     for e in ("extension-1", "extension-2"):
@@ -245,49 +246,40 @@ def _within(experiment: str, fam: str, pts: dict[int, float]) -> dict[int, float
     return {s: v for s, v in pts.items() if s in FIGURE_613_SIZES.get(fam, ())}
 
 
-def plots(experiment: str, g: dict, out: Path) -> list[Path] | None:
-    """Log-scale cost (and marker) plots per family; None without matplotlib."""
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
+PLOTS = {
+    "table-6.1": [("6.11", "cost", ("case-1a", "case-1b", "case-2", "case-3a", "case-3b", "case-4", "case-4-mn")),
+                  ("6.12", "markers_used", ("case-1a", "case-2", "case-4", "case-4-mn"))],
+    "table-6.2": [("6.17", "cost", ("case-dv-sum", "extension-1", "extension-2", "case-3b")),
+                  ("6.18", "markers_used", ("case-3b", "extension-1", "extension-2"))],
+    "figure-6.13": [("6.13", "cost", ("basic", "case-3a") + tuple(f"case-5-v1@{f}" for f in FRACTIONS))],
+}
+"""Each report's figures: (figure, column plotted, algorithms; ``alg@f``: with ``marked-fraction=f``)."""
+
+
+def plots(plt, experiment: str, g: dict, out: Path) -> list[Path]:
+    """Log-scale cost (and marker) plots per family, drawn with ``matplotlib.pyplot``."""
+    made = [_plot(plt, experiment, g, out, fam, fig_no, column, algs)
+            for fam in FAMILIES6 for fig_no, column, algs in PLOTS[experiment]]
+    return [p for p in made if p]
+
+
+def _plot(plt, experiment: str, g: dict, out: Path, fam: str, fig_no: str, column: str,
+          algs: tuple[str, ...]) -> Path | None:
+    series = {}
+    for a in algs:
+        name, _, f = a.partition("@")
+        pts = _within(experiment, fam, means(g, fam, name, column, f"marked-fraction={f}" if f else ""))
+        if pts:
+            series[f"{name} {float(f):.0%} marked" if f else name] = pts
+    if not series:
         return None
-    specs = {
-        "table-6.1": [("6.11", "cost", ("case-1a", "case-1b", "case-2", "case-3a", "case-3b", "case-4", "case-4-mn"), ""),
-                      ("6.12", "markers_used", ("case-1a", "case-2", "case-4", "case-4-mn"), "")],
-        "table-6.2": [("6.17", "cost", ("case-dv-sum", "extension-1", "extension-2", "case-3b"), ""),
-                      ("6.18", "markers_used", ("case-3b", "extension-1", "extension-2"), "")],
-        "figure-6.13": [("6.13", "cost", ("basic", "case-3a") + tuple(f"case-5-v1@{f}" for f in FRACTIONS), "")],
-    }[experiment]
-    made = []
-    for fam in FAMILIES6:
-        for fig_no, column, algs, _ in specs:
-            series = {}
-            for a in algs:
-                name, _, f = a.partition("@")
-                pts = _within(experiment, fam, means(g, fam, name, column, f"marked-fraction={f}" if f else ""))
-                if pts:
-                    series[f"{name} {float(f):.0%} marked" if f else name] = pts
-            if not series:
-                continue
-            fig, ax = plt.subplots(figsize=(6, 4.2))
-            m = {}
-            for pts in (means(g, fam, a.partition("@")[0], "m") for a in algs):
-                m.update(_within(experiment, fam, pts))
-            if column == "cost" and m:
-                ax.plot(sorted(m), [m[s] for s in sorted(m)], "k:", lw=1, label="lower bound m")
-            for label, pts in series.items():
-                ax.plot(sorted(pts), [pts[s] for s in sorted(pts)], marker="o", ms=3, label=label)
-            ax.set_yscale("log")
-            ax.set_xlabel("size of graph (vertices)")
-            ax.set_ylabel("cost (edge traversals)" if column == "cost" else "markers used")
-            ax.set_title(f"Figure {fig_no}: {fam}")
-            ax.legend(fontsize=7)
-            ax.grid(True, which="both", alpha=0.3)
-            path = out / f"figure-{fig_no}-{fam}.png"
-            fig.tight_layout()
-            fig.savefig(path, dpi=110)
-            plt.close(fig)
-            made.append(path)
-    return made
+    fig, ax = new(plt)
+    m = {}
+    for pts in (means(g, fam, a.partition("@")[0], "m") for a in algs):
+        m.update(_within(experiment, fam, pts))
+    if column == "cost" and m:
+        ax.plot(sorted(m), [m[s] for s in sorted(m)], "k:", lw=1, label="lower bound m")
+    for label, pts in series.items():
+        curve(ax, sorted(pts), [pts[s] for s in sorted(pts)], label)
+    return finish(plt, fig, ax, out / f"figure-{fig_no}-{fam}.png", f"Figure {fig_no}: {fam}",
+                  "size of graph (vertices)", "cost (edge traversals)" if column == "cost" else "markers used")

@@ -32,15 +32,16 @@ from __future__ import annotations
 import statistics
 from pathlib import Path
 
-from topomark.reference.bench.plan import EXPERIMENTS, NO_LIGHTHOUSE
-from topomark.reference.bench.plan_threads import (CLASSES, COMPARED, COST_F, EDGE_HOLE, FIGURE_624_SIZE, IMMOVABLE, LENGTHS, MOVABLE,
+from topomark.reference.bench.plan import NO_LIGHTHOUSE
+from topomark.reference.bench.plan_threads import (CLASSES, COMPARED, EDGE_HOLE, FIGURE_624_SIZE, IMMOVABLE, LENGTHS, MOVABLE,
                           REPORTS, SIZES, ThreadClass)
-from topomark.reference.bench.reports.kit import latest, plot_lines, report_head
-from topomark.reference.bench.reports.section62 import SLOPE_TOLERANCE, slope
-from topomark.reference.bench.run_store import read_runs, write_atomic
+from topomark.reference.bench.reports.kit import Body, write
+from topomark.reference.bench.reports.plots import Draw, errorbars, finish, new
+from topomark.reference.bench.reports.stats import (SLOPE_TOLERANCE, cost_f, cost_per_m, groups, mean, mean_sd, num,
+                                                    slope, spearman)
+from topomark.reference.bench.reports.text import fmt_pm, yes
 
-__all__ = ["CLASSES", "ThreadClass", "TABLE_63", "LENGTHS", "SIZES", "COMPARED", "REPORTS", "write_report",
-           "groups", "cost_f"]
+__all__ = ["CLASSES", "ThreadClass", "TABLE_63", "LENGTHS", "SIZES", "COMPARED", "REPORTS", "write_report", "GROUP"]
 
 TABLE_63 = """| Length of thread | Need for retying | Upper bounds |
 |---|---|---|
@@ -56,50 +57,27 @@ SUMMARY_L2212 = ("\"Given the simplest form of thread, deterministic mapping is 
 
 
 
-def groups(rows: list[dict]) -> dict[tuple[str, str, str, str, int], list[dict]]:
-    """(family, algorithm, lighthouse, option set, size) -> the finished runs, one per key (the checked one
-    preferred), every outcome."""
-    out: dict[tuple, list[dict]] = {}
-    for r in latest(rows):
-        if r.get("cost") in ("", None):
-            continue
-        key = (r["experiment"], r["algorithm"], r.get("lighthouse") or "directional-vertex", r.get("options") or "",
-               int(r["size"]))
-        out.setdefault(key, []).append(r)
-    return out
+GROUP = ("family", "algorithm", "lighthouse", "options", "size")
+"""The runs are grouped by (family, algorithm, lighthouse, option set, size): the finished runs, every outcome."""
 
 
 def _correct(r: dict) -> bool:
     return r.get("outcome") == "correct" and str(r.get("verified")) == "True"
 
 
-def cost_f(bound: str, r: dict) -> float:
-    return COST_F[bound](float(r["n"]), float(r["m"]))
-
-
 def _stats(rs: list[dict], bound: str | None = None) -> dict | None:
     ok = [r for r in rs if _correct(r)]
     if not ok:
         return None
-    costs = [float(r["cost"]) for r in ok]
-    out = {"runs": len(rs), "ok": len(ok), "mean": statistics.fmean(costs),
-           "sd": statistics.stdev(costs) if len(costs) > 1 else 0.0,
-           "n": statistics.fmean(float(r["n"]) for r in ok), "m": statistics.fmean(float(r["m"]) for r in ok),
-           "per_m": statistics.fmean(float(r["cost"]) / float(r["m"]) for r in ok),
-           "per_mn": statistics.fmean(float(r["cost"]) / (float(r["m"]) * float(r["n"])) for r in ok),
-           "by_seed": {int(r["seed"]): float(r["cost"]) for r in ok}}
+    cost, cost_sd = mean_sd([num(r, "cost") for r in ok])
+    out = {"runs": len(rs), "ok": len(ok), "mean": cost, "sd": cost_sd, "n": mean(ok, "n"), "m": mean(ok, "m"),
+           "per_m": mean(ok, cost_per_m),
+           "per_mn": mean(ok, lambda r: num(r, "cost") / (num(r, "m") * num(r, "n"))),
+           "by_seed": {int(r["seed"]): num(r, "cost") for r in ok}}
     if bound:
-        out["per_f"] = statistics.fmean(float(r["cost"]) / cost_f(bound, r) for r in ok)
-        out["f"] = statistics.fmean(cost_f(bound, r) for r in ok)
+        out["per_f"] = mean(ok, lambda r: num(r, "cost") / cost_f(bound, r))
+        out["f"] = mean(ok, lambda r: cost_f(bound, r))
     return out
-
-
-def _fmt(x: float) -> str:
-    return f"{x:,.0f}"
-
-
-def _yes(ok: bool | None) -> str:
-    return "—" if ok is None else "yes" if ok else "**no**"
 
 
 def _class_stats(gr: dict, family: str, c: ThreadClass, size: int) -> dict | None:
@@ -109,29 +87,26 @@ def _class_stats(gr: dict, family: str, c: ThreadClass, size: int) -> dict | Non
 # -- the reports ---------------------------------------------------------------------------------------------------
 def write_report(experiment: str, out: Path, wall: float | None = None, plots: bool = True) -> Path:
     """``out/EXPERIMENT.md`` (and plots) from ``out/runs.csv``; ``section-6.3`` writes the three reports too."""
-    rows = read_runs(out / "runs.csv").rows
-    gr = groups(rows)
     if experiment == "section-6.3":
         for name in REPORTS[:3]:
             write_report(name, out, None, plots)
-    exp = EXPERIMENTS[experiment]
-    lines = report_head(experiment, exp, rows, wall,
-                        " (thesis §3.1.2), rewinding and walking back along the thread included. Every algorithm of "
-                        "a size explores the same worlds from the same start. The thesis's Figures 6.23 and 6.24 are "
-                        "lost (guide §11): only their captions and the prose findings are quoted. Means are over the "
-                        "worlds mapped correctly (checked and verified); the worlds column says how many of how many.")
-    made: list[Path] | None = [] if plots else None
-    if experiment == "section-6.3":
-        lines += ["The reports: `table-6.3.md`, `figure-6.24.md`, `comparison.md` (written beside this one).", ""]
-    else:
-        body, figures = {"table-6.3": _table63, "figure-6.24": _figure624, "comparison": _comparison}[experiment](gr)
-        lines += body
-        if plots:
-            made = _plot(experiment, figures, out)
-    lines += plot_lines(made, plots)
-    path = out / f"{experiment}.md"
-    write_atomic(path, "\n".join(lines))
-    return path
+    return write(experiment, out, wall, plots,
+                 " (thesis §3.1.2), rewinding and walking back along the thread included. Every algorithm of "
+                 "a size explores the same worlds from the same start. The thesis's Figures 6.23 and 6.24 are "
+                 "lost (guide §11): only their captions and the prose findings are quoted. Means are over the "
+                 "worlds mapped correctly (checked and verified); the worlds column says how many of how many.",
+                 _body(experiment, out))
+
+
+def _body(experiment: str, out: Path) -> Body:
+    def body(rows: list[dict]) -> tuple[list[str], Draw | None]:
+        if experiment == "section-6.3":  # the three reports' index; it draws no plots of its own
+            return ["The reports: `table-6.3.md`, `figure-6.24.md`, `comparison.md` (written beside this one).",
+                    ""], None
+        build = {"table-6.3": _table63, "figure-6.24": _figure624, "comparison": _comparison}[experiment]
+        lines, figures = build(groups(rows, GROUP))
+        return lines, lambda plt: _plot(plt, experiment, figures, out)
+    return body
 
 
 def _table63(gr: dict) -> tuple[list[str], dict]:
@@ -154,7 +129,7 @@ def _table63(gr: dict) -> tuple[list[str], dict]:
                 if st is None:
                     continue
                 lines.append(f"| {s} | {st['n']:.0f} | {st['m']:.1f} | {c.name} | O({c.bound}) | {st['ok']}/{st['runs']}"
-                             f" | {_fmt(st['mean'])} ± {_fmt(st['sd'])} | {st['per_m']:.2f} | {st['per_f']:.4g} |")
+                             f" | {fmt_pm(st['mean'], st['sd'])} | {st['per_m']:.2f} | {st['per_f']:.4g} |")
         lines += [""] + _bound_lines(stats) + _finding_lines(stats)
         figures[family] = {c.name: [(s, stats[(c.name, s)]) for s in SIZES if stats[(c.name, s)]] for c in CLASSES}
     lines += _knots_lines(gr)
@@ -169,30 +144,30 @@ def _bound_lines(stats: dict) -> list[str]:
         pts = [(st["f"], st["mean"]) for (name, _), st in stats.items() if name == c.name and st]
         k = slope(pts)
         lines.append(f"| {c.name} | O({c.bound}) | {'' if k is None else f'{k:.2f}'} | "
-                     f"{_yes(None if k is None else k <= SLOPE_TOLERANCE)} |")
+                     f"{yes(None if k is None else k <= SLOPE_TOLERANCE)} |")
     return lines + [""]
 
 
 def _finding_lines(stats: dict) -> list[str]:
     """Figure 6.23's three findings (L2187–L2195) and L2212's ordering, size by size."""
-    def mean(name, s):
+    def cost(name, s):  # the mean cost of a class at a size
         st = stats.get((name, s))
         return st["mean"] if st else None
 
     claims = (("\"carrying the short (l = ε) thread which has O(mn) cost, obtains a reduced exploration cost over "
-               "exploring with a fixed short thread which has O(m²n) cost\"", lambda s: _lt(mean("carried ε", s),
-                                                                                             mean("fixed ε", s))),
+               "exploring with a fixed short thread which has O(m²n) cost\"", lambda s: _lt(cost("carried ε", s),
+                                                                                             cost("fixed ε", s))),
               ("\"Exploring with l = c(G) thread … provides a further cost reduction over exploring with short "
-               "threads\"", lambda s: _lt(mean("l = c(G)", s), mean("carried ε", s), mean("fixed ε", s))),
+               "threads\"", lambda s: _lt(cost("l = c(G)", s), cost("carried ε", s), cost("fixed ε", s))),
               ("\"a very long thread (with knots) … provides the lowest cost over all the thread classes considered\"",
-               lambda s: _lt(mean("l ≫ m, knots", s), *(mean(c.name, s) for c in CLASSES[:4]))),
+               lambda s: _lt(cost("l ≫ m, knots", s), *(cost(c.name, s) for c in CLASSES[:4]))),
               ("L2212 \"the longer the thread the lower the cost\" (carried ε > l = 8 > l = c(G) > knots)",
-               lambda s: _chain([mean(n, s) for n in ("carried ε", "explore-explore l=8", "l = c(G)",
+               lambda s: _chain([cost(n, s) for n in ("carried ε", "explore-explore l=8", "l = c(G)",
                                                        "l ≫ m, knots")])))
     lines = ["The thesis's findings (Figure 6.23, L2187–L2195), size by size (held: the mean costs are so ordered):",
              "", "| finding | " + " | ".join(f"size {s}" for s in SIZES) + " |", "|---|" + "---|" * len(SIZES)]
     for text, test in claims:
-        lines.append(f"| {text} | " + " | ".join(_yes(test(s)) for s in SIZES) + " |")
+        lines.append(f"| {text} | " + " | ".join(yes(test(s)) for s in SIZES) + " |")
     return lines + [""]
 
 
@@ -213,7 +188,7 @@ def _knots_lines(gr: dict) -> list[str]:
     runs = [r for (fam, alg, _, _, _), rs in gr.items() if alg == "thread-knots" for r in rs if _correct(r)]
     if not runs:
         return []
-    ratio = [float(r["cost"]) / float(r["m"]) for r in runs]
+    ratio = [cost_per_m(r) for r in runs]
     above = [r for r, x in zip(runs, ratio) if x >= 3]
     lines = ["## l ≫ m with knots under 3m", "",
              f"{len(runs)} worlds mapped by thread-knots (every family in `runs.csv`): cost/m from {min(ratio):.2f} to "
@@ -221,7 +196,7 @@ def _knots_lines(gr: dict) -> list[str]:
              + (" — held." if not above else "."), ""]
     for r in above:
         lines.append(f"* {r['experiment']} size {r['size']} seed {r['seed']}: cost {r['cost']}, m {r['m']} "
-                     f"({float(r['cost']) / float(r['m']):.2f}m); new {r.get('new')}, retrace {r.get('retrace')}, "
+                     f"({cost_per_m(r):.2f}m); new {r.get('new')}, retrace {r.get('retrace')}, "
                      f"validation {r.get('validation')}, other {r.get('other')}")
     return lines + ([""] if above else [])
 
@@ -254,7 +229,7 @@ def _figure624(gr: dict) -> tuple[list[str], dict]:
 
 def _l_row(name: str, st: dict, first: dict | None) -> str:
     rel = f"{st['mean'] / first['mean']:.2f}" if first else "—"
-    return f"| {name} | {st['ok']}/{st['runs']} | {_fmt(st['mean'])} ± {_fmt(st['sd'])} | {st['per_m']:.1f} | {rel} |"
+    return f"| {name} | {st['ok']}/{st['runs']} | {fmt_pm(st['mean'], st['sd'])} | {st['per_m']:.1f} | {rel} |"
 
 
 def _figure624_claims(by_l: dict, circ: dict | None) -> list[str]:
@@ -262,7 +237,7 @@ def _figure624_claims(by_l: dict, circ: dict | None) -> list[str]:
     if len(pts) < 2:
         return []
     ups = [(a, b) for (a, x), (b, y) in zip(pts, pts[1:]) if y > x]
-    rho = _spearman([n for n, _ in pts], [c for _, c in pts])
+    rho = spearman([n for n, _ in pts], [c for _, c in pts])
     lines = ["Whether it held:", "",
              f"* \"cost reduction as l increases\": the mean cost at the longest l is {pts[-1][1] / pts[0][1]:.0%} of "
              f"that at l = {pts[0][0]}; Spearman's rank correlation of l and the mean cost is {rho:.2f}; the mean "
@@ -277,17 +252,6 @@ def _figure624_claims(by_l: dict, circ: dict | None) -> list[str]:
                      f"equals Algorithm 6.7's on {len(same)} of {len(shared)} worlds"
                      + (" — held." if shared and len(same) == len(shared) else " — **not held** on every world."))
     return lines + [""]
-
-
-def _spearman(xs: list[float], ys: list[float]) -> float:
-    def ranks(v):
-        order = sorted(range(len(v)), key=lambda i: v[i])
-        r = [0.0] * len(v)
-        for k, i in enumerate(order):
-            r[i] = k
-        return r
-    rx, ry = ranks(xs), ranks(ys)
-    return statistics.correlation(rx, ry) if len(xs) > 1 and len(set(ys)) > 1 else 0.0
 
 
 def _comparison(gr: dict) -> tuple[list[str], dict]:
@@ -305,7 +269,7 @@ def _comparison(gr: dict) -> tuple[list[str], dict]:
             st = stats[(a, s)]
             if st:
                 lines.append(f"| {s} | {st['n']:.0f} | {st['m']:.1f} | {a} | {st['ok']}/{st['runs']} | "
-                             f"{_fmt(st['mean'])} ± {_fmt(st['sd'])} | {st['per_m']:.2f} | {st['per_mn']:.4f} |")
+                             f"{fmt_pm(st['mean'], st['sd'])} | {st['per_m']:.2f} | {st['per_mn']:.4f} |")
     lines += ["", "### Where a movable marker beats an immovable one, and by how much", "",
               "Ratio of mean costs (movable / immovable; below 1: the movable marker is cheaper) and the worlds on "
               "which the movable marker's run is cheaper than the immovable one's:", "",
@@ -325,43 +289,29 @@ def _lighthouse(algorithm: str) -> str:
     return "directional-vertex" if algorithm in IMMOVABLE else NO_LIGHTHOUSE
 
 
-def _plot(experiment: str, figures: dict, out: Path) -> list[Path] | None:
-    """Log-scale cost plots with sd error bars; None without matplotlib."""
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        return None
-    made = []
+def _plot(plt, experiment: str, figures: dict, out: Path) -> list[Path]:
+    """Log-scale cost plots with sd error bars."""
     if experiment == "figure-6.24":
         panels = {"cost-vs-l": {"explore-explore": figures["lengths"]}}
     else:
         panels = figures
+    made = []
     for name, series in panels.items():
         if not any(series.values()):
             continue
-        fig, ax = plt.subplots(figsize=(6.4, 4.4))
+        fig, ax = new(plt)
         for label, pts in series.items():
             if pts:
-                ax.errorbar([x for x, _ in pts], [st["mean"] for _, st in pts], yerr=[st["sd"] for _, st in pts],
-                            marker="o", capsize=3, label=label)
+                errorbars(ax, [x for x, _ in pts], [st["mean"] for _, st in pts], [st["sd"] for _, st in pts], label)
         if experiment == "figure-6.24":
             for key, style in (("circ", "--"), ("knots", ":")):
                 if figures[key]:
                     ax.axhline(figures[key]["mean"], linestyle=style, color="grey",
                                label="l = c(G) (Algorithm 6.7)" if key == "circ" else "l ≫ m, knots")
             ax.set_xscale("log", base=2)
-            ax.set_xlabel("thread length l (edges)")
+            xlabel = "thread length l (edges)"
         else:
-            ax.set_xlabel("size (grid label; n of the world in the tables)")
-        ax.set_yscale("log")
-        ax.set_ylabel("cost (edge traversals)")
-        ax.set_title(f"{experiment}: {name}")
-        ax.legend(fontsize=7)
-        path = out / f"{experiment}-{name}.png"
-        fig.tight_layout()
-        fig.savefig(path, dpi=110)
-        plt.close(fig)
-        made.append(path)
+            xlabel = "size (grid label; n of the world in the tables)"
+        made.append(finish(plt, fig, ax, out / f"{experiment}-{name}.png", f"{experiment}: {name}", xlabel,
+                           "cost (edge traversals)"))
     return made
