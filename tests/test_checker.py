@@ -4,13 +4,14 @@ from __future__ import annotations
 
 import subprocess
 import sys
+from dataclasses import replace
 from pathlib import Path
 
 import pytest
 from hypothesis import given, settings
 
 from families import family_worlds
-from topomark.reference.algorithms import explorer_classes as explore_mod
+from topomark.reference.algorithms.registry import algorithm_spec
 from topomark.reference.worlds import generators as g
 from topomark.reference.run.explore import explore
 from topomark.reference.explorers.algorithm31 import LighthouseExplorer
@@ -69,10 +70,9 @@ FAULTS = {
 
 @pytest.mark.parametrize("fault", list(FAULTS))
 @pytest.mark.parametrize("mode", ["incremental", "full", "both"])
-def test_faults_are_caught(monkeypatch, fault, mode):
-    monkeypatch.setitem(explore_mod.ALGORITHMS, "basic", fault)
+def test_faults_are_caught(fault, mode):
     world = g.lattice_hole(5, 5, 0.1, seed=2).with_start(None)
-    out = explore(world, check_mode=mode)
+    out = explore(world, replace(algorithm_spec("basic"), explorer=fault), check_mode=mode)
     assert out.violation is not None and not out.verified
     assert out.violation.check != "checker agreement"
     if FAULTS[fault]:
@@ -94,10 +94,9 @@ def test_incremental_and_full_checks_agree_on_correct_runs(world):
     assert a.verified and b.verified and a.cost == b.cost
 
 
-def test_violation_names_the_first_broken_iteration(monkeypatch):
-    monkeypatch.setitem(explore_mod.ALGORITHMS, "basic", KeepsLoopDartInU)
+def test_violation_names_the_first_broken_iteration():
     world = g.cycle(4).with_start(Start("0", "1"))
-    out = explore(world)
+    out = explore(world, replace(algorithm_spec("basic"), explorer=KeepsLoopDartInU))
     loops = [it.number for it in out.explorer.iterations if it.kind == "loop"]
     assert out.violation.data["iteration"] == loops[0]
     assert "listed" in out.violation.found or "explored" in out.violation.found
@@ -108,11 +107,12 @@ def test_checks_survive_python_O():
     code = (
         f"import sys; sys.path.insert(0, {str(Path(__file__).parent)!r})\n"
         "from faults_min import KeepsLoopDartInU\n"
-        "from topomark.reference.algorithms import explorer_classes as algorithms\n"
+        "from dataclasses import replace\n"
+        "from topomark.reference.algorithms.registry import algorithm_spec\n"
         "from topomark.reference.worlds import generators\n"
         "from topomark.reference.run.explore import explore\n"
-        "algorithms.ALGORITHMS['basic'] = KeepsLoopDartInU\n"
-        "print(explore(generators.cycle(5)).violation.check)\n"
+        "basic = replace(algorithm_spec('basic'), explorer=KeepsLoopDartInU)\n"
+        "print(explore(generators.cycle(5), basic).violation.check)\n"
     )
     proc = subprocess.run([sys.executable, "-O", "-c", code], capture_output=True, text=True, timeout=60)
     assert proc.returncode == 0, proc.stderr

@@ -5,11 +5,12 @@ from __future__ import annotations
 import json
 import subprocess
 import sys
+from dataclasses import replace
 
 import pytest
 
 from faults_min import KeepsLoopDartInU
-from topomark.reference.algorithms import explorer_classes as algorithms
+from topomark.reference.algorithms.registry import REGISTRY
 from topomark.reference.cli.main import main
 from topomark.spec.isomorphism import find_isomorphism
 from topomark.spec.worldfile import load_world, save_world
@@ -83,7 +84,7 @@ def test_wrong_marker_in_world_file_exits_2(capsys, tmp_path):
 
 
 def test_violation_exits_1_with_diagnostic_and_trace(capsys, monkeypatch):
-    monkeypatch.setitem(algorithms.ALGORITHMS, "basic", KeepsLoopDartInU)
+    monkeypatch.setitem(REGISTRY, "basic", replace(REGISTRY["basic"], explorer=KeepsLoopDartInU))
     code, out, _ = run(capsys, "explore", "cycle:n=5")
     assert code == 1
     assert "VIOLATION: I-2 violated" in out and "iteration" in out and '"event": "move"' in out

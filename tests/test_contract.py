@@ -70,8 +70,8 @@ class _Step:
 
 
 def _spec(checks=(), vertex=3, own=True, **kw) -> AlgorithmSpec:
-    return AlgorithmSpec("toy", "none", Kit(vertex=vertex), None, "k", True, (), (*checks, "isomorphism"), explorer=_Toy,
-                         uses_lighthouse=False, own=own,
+    return AlgorithmSpec(name="toy", thesis="none", kit=Kit(vertex=vertex), bound=None, markers="k", deterministic=True,
+                         options=(), checks=(*checks, "isomorphism"), explorer=_Toy, uses_lighthouse=False, own=own,
                          parameters=(Parameter("drops", "how many to drop", 1, minimum=1),), **kw)
 
 

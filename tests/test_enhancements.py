@@ -10,7 +10,7 @@ from hypothesis import strategies as st
 
 from families import family_worlds
 from topomark.reference.worlds import generators as g
-from topomark.reference.algorithms.explorer_classes import ALGORITHMS
+from topomark.reference.algorithms.registry import in_family
 from topomark.reference.cli.main import main
 from topomark.reference.explorers.compositions import ENHANCEMENTS
 from topomark.reference.algorithms.registry import variant
@@ -19,6 +19,9 @@ from topomark.reference.run.explore import explore
 from topomark.reference.trace.records import dump_trace
 from topomark.reference.explorers.policies import EDGE_POLICIES, HYPOTHESIS_POLICIES, PATH_POLICIES, Policies
 from topomark.spec.world import Start, World
+
+ALGORITHMS = {name: spec.factory for name, spec in in_family("algorithm-3.1").items()}
+"""Algorithm 3.1's family, as registered: ``basic`` and the Chapter 4 enhancements, name ↦ explorer class."""
 
 NAMES = ["enh1", "enh2", "enh3", "enh4", "enh5-d1", "enh5-d2", "enh3+4", "enh3+5"]
 

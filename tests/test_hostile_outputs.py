@@ -119,9 +119,10 @@ def test_violation_shows_the_last_records_without_keeping_the_trace(tmp_path):
         import sys
         sys.path.insert(0, {str(Path(__file__).parent)!r})
         from faults_min import KeepsLoopDartInU
-        from topomark.reference.algorithms import explorer_classes as algorithms
+        from dataclasses import replace
+        from topomark.reference.algorithms.registry import REGISTRY
         from topomark.reference.cli.main import main
-        algorithms.ALGORITHMS["basic"] = KeepsLoopDartInU
+        REGISTRY["basic"] = replace(REGISTRY["basic"], explorer=KeepsLoopDartInU)
         sys.exit(main(["explore", "lattice:rows=3,cols=3", "--json", "--trace", {str(tmp_path / 't.jsonl')!r}]))
     """)
     proc = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120)

@@ -10,7 +10,7 @@ import json
 import pytest
 
 from topomark.reference.worlds import generators as g
-from topomark.reference.algorithms.explorer_classes import ALGORITHMS
+from topomark.reference.algorithms.registry import in_family
 from topomark.reference.cli.main import main
 from topomark.reference.run.explore import explore
 from topomark.reference.explorers import lighthouse_search
@@ -21,6 +21,9 @@ from topomark.reference.run.simulator import Simulator
 from topomark.spec.errors import AlgorithmFailed
 from topomark.spec.isomorphism import find_isomorphism
 from topomark.spec.world import Start, World
+
+ALGORITHMS = {name: spec.factory for name, spec in in_family("algorithm-3.1").items()}
+"""Algorithm 3.1's family, as registered: ``basic`` and the Chapter 4 enhancements, name ↦ explorer class."""
 
 VERTEX, EDGE = LIGHTHOUSES["undirected-vertex"], LIGHTHOUSES["undirected-edge"]
 

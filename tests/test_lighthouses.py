@@ -10,7 +10,7 @@ from collections import Counter
 
 import pytest
 
-from topomark.reference.algorithms.explorer_classes import ALGORITHMS
+from topomark.reference.algorithms.registry import in_family
 from topomark.reference.explorers import lighthouses as lighthouses_module
 from topomark.reference.explorers import probing as probing_module
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES, Lighthouse
@@ -29,6 +29,9 @@ from topomark.spec.worldfile import dumps_world, load_world
 from topomark.reference.cli.main import main
 from topomark.reference.run.explore import explore
 from topomark.reference.run.local_places import unique_place
+
+ALGORITHMS = {name: spec.factory for name, spec in in_family("algorithm-3.1").items()}
+"""Algorithm 3.1's family, as registered: ``basic`` and the Chapter 4 enhancements, name ↦ explorer class."""
 
 WORLDS = {
     "lattice-hole": lambda: generate("lattice-hole", rows=4, cols=5, seed=3),

@@ -14,7 +14,7 @@ from networkx.generators.atlas import graph_atlas_g
 
 from topomark.reference.worlds import generators as g
 from topomark.reference.run import local_places
-from topomark.reference.algorithms.explorer_classes import ALGORITHMS
+from topomark.reference.algorithms.registry import in_family
 from topomark.reference.cli.main import main
 from topomark.reference.worlds.embedding import from_networkx
 from topomark.reference.run.explore import explore
@@ -29,6 +29,9 @@ from topomark.spec.errors import AlgorithmFailed
 from topomark.spec.kit import Kit
 from topomark.spec.world import Start, World
 from topomark.spec.worldfile import dumps_world
+
+ALGORITHMS = {name: spec.factory for name, spec in in_family("algorithm-3.1").items()}
+"""Algorithm 3.1's family, as registered: ``basic`` and the Chapter 4 enhancements, name ↦ explorer class."""
 
 LOCAL = ("local-pair", "local-degree-list")
 OUTCOMES = ("correct", "wrong-map", "failed")

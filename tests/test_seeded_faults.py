@@ -19,6 +19,7 @@ its own bookkeeping or crashed.
 from __future__ import annotations
 
 import ast
+from dataclasses import replace
 from pathlib import Path
 
 import pytest
@@ -26,7 +27,7 @@ from hypothesis import HealthCheck, Phase, find, settings
 
 from faults import FAULTS
 from families import family_worlds
-from topomark.reference.algorithms import explorer_classes as algorithms
+from topomark.reference.algorithms.registry import algorithm_spec
 from topomark.reference.run.explore import explore
 from topomark.spec.world import Start, World
 
@@ -76,13 +77,8 @@ def world_of(witness) -> World:
 
 
 def run(fault, world: World, mode: str = "incremental"):
-    """The outcome of exploring ``world`` with ``fault`` registered as the basic algorithm."""
-    saved = algorithms.ALGORITHMS["basic"]
-    algorithms.ALGORITHMS["basic"] = fault
-    try:
-        return explore(world, check_mode=mode, record=False)
-    finally:
-        algorithms.ALGORITHMS["basic"] = saved
+    """The outcome of exploring ``world`` with ``fault`` as the basic algorithm's explorer."""
+    return explore(world, replace(algorithm_spec("basic"), explorer=fault), check_mode=mode, record=False)
 
 
 def caught(fault, world: World, mode: str = "incremental") -> bool:
@@ -101,9 +97,8 @@ def test_there_are_at_least_ten_distinct_faults():
 @pytest.mark.parametrize("mode", ["incremental", "full", "both"])
 @pytest.mark.parametrize("name, source, witness", WITNESS_CASES,
                          ids=[f"{n}-{s}" for n, s, _ in WITNESS_CASES])
-def test_the_checker_catches_each_fault_on_its_witness(monkeypatch, name, source, witness, mode):
-    monkeypatch.setitem(algorithms.ALGORITHMS, "basic", FAULTS[name])
-    out = explore(world_of(witness), check_mode=mode)
+def test_the_checker_catches_each_fault_on_its_witness(name, source, witness, mode):
+    out = explore(world_of(witness), replace(algorithm_spec("basic"), explorer=FAULTS[name]), check_mode=mode)
     assert out.violation is not None and not out.verified, f"{name} escaped on its {source} witness"
     assert "iteration" in out.violation.data, f"not the checker: {out.violation}"
     assert out.violation.check in ("I-1", "I-2", "position")

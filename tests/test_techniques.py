@@ -14,7 +14,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from families import family_worlds
-from topomark.reference.algorithms.explorer_classes import ALGORITHMS
+from topomark.reference.algorithms.registry import in_family
 from topomark.reference.algorithms.registry import variant
 from topomark.reference.run.explore import explore
 from topomark.reference.explorers.algorithm31 import LighthouseExplorer
@@ -30,6 +30,10 @@ from topomark.spec.world import World
 
 policies = st.builds(Policies, st.sampled_from(EDGE_POLICIES), st.sampled_from(HYPOTHESIS_POLICIES),
                      st.sampled_from(PATH_POLICIES))
+
+ALGORITHMS = {name: spec.factory for name, spec in in_family("algorithm-3.1").items()}
+"""Algorithm 3.1's family, as registered: ``basic`` and the Chapter 4 enhancements, name ↦ explorer class."""
+
 ENH3 = (OverlapStage2(), ExecutedPathsOnSAndUnknownPlaces())
 
 

@@ -11,7 +11,7 @@ import jsonschema
 import pytest
 from hypothesis import example, given, settings, strategies as st
 
-from topomark.reference.algorithms.explorer_classes import ALGORITHMS
+from topomark.reference.algorithms.registry import in_family
 from topomark.reference.cli.main import main
 from topomark.reference.replay.divergence import Diverged
 from topomark.reference.run.explore import explore
@@ -34,6 +34,9 @@ from topomark.spec.signature import Signature, back_link_table, signature_at
 from topomark.spec.thread import Thread, ThreadedWorld
 from topomark.spec.world import Start, World
 from topomark.spec.worldfile import dumps_world, load_world, loads_world, schema
+
+ALGORITHMS = {name: spec.factory for name, spec in in_family("algorithm-3.1").items()}
+"""Algorithm 3.1's family, as registered: ``basic`` and the Chapter 4 enhancements, name ↦ explorer class."""
 
 # A star: a in the middle, exits 0, 1, 2 to b, c, d; b-c joined so a loop exists.
 STAR = World({"a": ["b", "c", "d"], "b": ["a", "c"], "c": ["b", "a"], "d": ["a"]}, (), Start("a", "b"))

@@ -15,7 +15,7 @@ import json
 import pytest
 
 from topomark.reference.worlds import generators as g
-from topomark.reference.algorithms.explorer_classes import ALGORITHMS
+from topomark.reference.algorithms.registry import in_family
 from topomark.reference.cli.main import main
 from topomark.reference.run.explore import explore
 from topomark.reference.trace.records import dump_trace
@@ -29,6 +29,10 @@ from topomark.spec.worldfile import dumps_world
 
 WORLDS = {"cycle": g.cycle(5), "lattice-hole": g.lattice_hole(3, 4, seed=2),
           "wheel-a": World(g.wheel_a().rotation, (), g.wheel_a().start)}  # without its figure's marker
+
+ALGORITHMS = {name: spec.factory for name, spec in in_family("algorithm-3.1").items()}
+"""Algorithm 3.1's family, as registered: ``basic`` and the Chapter 4 enhancements, name ↦ explorer class."""
+
 LATTICE = g.lattice(3, 4)  # every iteration kind, hypotheses of every outcome
 
 

@@ -46,7 +46,7 @@ from topomark.spec.kit import Kit
 
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES
 
-__all__ = ["AlgorithmSpec", "Parameter", "CHECKS"]
+__all__ = ["AlgorithmSpec", "Parameter", "CHECKS", "ALGORITHM_3_1_CHECKS", "MARKER_MAP_CHECKS", "STEPWISE_MAP_CHECKS"]
 
 CHECKS: dict[str, str] = {
     "pose": "the explorer's believed position is the robot's true state (φ anchored at the believed pose)",
@@ -63,6 +63,18 @@ CHECKS: dict[str, str] = {
     "isomorphism": "the final map is extended-isomorphic to the world, markers included (§3.1.3)",
 }
 """Every check the checker knows, by name, with the condition it states."""
+
+ALGORITHM_3_1_CHECKS = ("pose", "I-1", "I-2", "bound-function", "lemma-1", "marker", "iterations", "isomorphism")
+"""Algorithm 3.1's loop conditions (§3.4, L546–L616) and outcome (§3.1.3, L417): the checks of every
+lighthouse algorithm (``basic`` and Chapter 4), and the checker's default."""
+
+MARKER_MAP_CHECKS = ("pose", "I-1", "I-2", "marker-budget", "isomorphism")
+"""An algorithm that keeps S and U as Algorithm 3.1 does (§3.1.3) and drops markers as it goes (§6.2): the pose,
+S and U after every step, the stated marker bound after every step, the final map with every marker dropped."""
+
+STEPWISE_MAP_CHECKS = ("pose", "I-1", "I-2", "bound-function", "marker-budget", "iterations", "isomorphism")
+""":data:`MARKER_MAP_CHECKS`, and one edge joins S per step — n − 1 non-loop and m − n + 1 loop steps (§3.1.3,
+L417): the movable marker (§2.3.1) and thread (§6.3) algorithms."""
 
 
 @dataclass(frozen=True)
@@ -91,9 +103,10 @@ class Parameter:
         return number
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class AlgorithmSpec:
-    """One registered algorithm (see the module docstring for the two shapes and the explorer contract)."""
+    """One registered algorithm (see the module docstring for the two shapes and the explorer contract); every
+    field is given by name."""
 
     name: str
     thesis: str
@@ -103,8 +116,8 @@ class AlgorithmSpec:
     deterministic: bool
     options: tuple[str, ...]
     checks: tuple[str, ...]
+    explorer: Callable[..., Any]  # the explorer factory (its class): see :attr:`factory`
     bound_fn: Callable[[int, int], int] | None = None
-    explorer: type | None = None  # the explorer class; None: Algorithm 3.1's family, looked up at call time
     uses_lighthouse: bool = True
     parameters: tuple[Parameter, ...] = ()
     kit_fn: Callable[[int, int, dict], Kit] | None = None  # the kit for a world of n, m (kit algorithms)
@@ -124,12 +137,11 @@ class AlgorithmSpec:
 
     @property
     def factory(self) -> Callable[..., Any]:
-        """The explorer class (a registered Algorithm 3.1 one is looked up at call time, so a test may
-        substitute a faulty one)."""
-        if self.explorer is not None:
-            return self.explorer
-        from topomark.reference.algorithms import explorer_classes as algorithms
-        return algorithms.ALGORITHMS[self.name]
+        """What builds the explorer: ``factory(robot, policies, observer, lighthouse)`` for a lighthouse algorithm,
+        ``factory(robot, policies, observer, options)`` for a kit algorithm.  To run another explorer in an
+        algorithm's place (a modification, or a fault a test seeds), give a copy of its spec another ``explorer``
+        (``dataclasses.replace``, :func:`~topomark.reference.algorithms.registry.variant`)."""
+        return self.explorer
 
     def bound_for(self, n: int, m: int) -> int | None:
         """The cost bound evaluated on a world of n vertices and m edges, or None if the thesis states none."""

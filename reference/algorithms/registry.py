@@ -8,12 +8,17 @@ the checks the checker applies to it — and a factory that builds its
 explorer over the robot interface.  ``topomark algorithms [--json]`` lists
 the registry.
 
-Decision (the thesis is silent): Chapter 4 states no worst-case bound for
-its enhancements (§4.1–4.3 report measured reductions only).  Enhancements
-1–3 change only how hypotheses are validated and retraced, so the registry
-gives them Algorithm 3.1's bound (3.1)+(3.2) as a stated *inheritance*, and
-the checker measures it; Enhancements 4 and 5 add expansion traversals the
-thesis does not bound, so their ``bound`` is ``None``.
+Every algorithm, Algorithm 3.1 (§3.3) and its Chapter 4 enhancements
+included, is registered by a module of
+:mod:`topomark.reference.algorithms.registrations` defining ``SPECS``; the
+registry lists that folder, so a new algorithm adds a module there and edits
+nothing here (``docs/adding-an-algorithm.md``).  :func:`register` adds a spec
+from elsewhere — a program or a test that keeps its explorer outside the
+package — and :func:`unregister` takes it out again.
+
+The listing's order: Algorithm 3.1's family first (``basic``, then Chapter 4),
+then every other algorithm in thesis order (a stable sort on the section
+number keeps registration order within a section).
 
 Examples
 --------
@@ -38,61 +43,57 @@ from topomark.spec.errors import InvalidInput
 
 from topomark.reference.algorithms import registrations
 from topomark.reference.algorithms.algorithm_spec import CHECKS, AlgorithmSpec, Parameter
-from topomark.reference.algorithms.bounds import upper_bound
-from topomark.reference.explorers.lighthouses import LIGHTHOUSES
-from topomark.reference.explorers.compositions import ENHANCEMENTS
 
-__all__ = ["AlgorithmSpec", "Parameter", "REGISTRY", "algorithm_spec", "variant", "CHECKS", "parameters"]
+__all__ = ["AlgorithmSpec", "Parameter", "REGISTRY", "algorithm_spec", "variant", "CHECKS", "parameters", "register",
+           "unregister", "in_family"]
 
-_ALGORITHM_3_1_CHECKS = ("pose", "I-1", "I-2", "bound-function", "lemma-1", "marker", "iterations", "isomorphism")
-_POLICY_OPTIONS = ("policy edge=nearest|fifo|lifo", "policy hypothesis=fifo|lifo|shortest", "policy path=shortest|dfs",
-                   "lighthouse " + "|".join(LIGHTHOUSES),
-                   *(f"lighthouse option {o.replace('_', '-')}=N (" + ", ".join(h.name for h in LIGHTHOUSES.values()
-                                                                          if o in h.options) + ")"
-                     for o in ("seed", "walk_limit", "neighbourhood", "threshold")))
+REGISTRY: dict[str, AlgorithmSpec] = {}
+"""Every registered algorithm by name, in listing order (module docstring)."""
 
 
-_LIGHTHOUSE = LIGHTHOUSES["directional-vertex"].kit
-_BOUND_3 = "(3.1)+(3.2) = O(m²n), §3.5.2"
+def register(spec: AlgorithmSpec) -> AlgorithmSpec:
+    """Add ``spec`` to :data:`REGISTRY`, in its place in the listing, and return it; a name already registered
+    is refused.  ``topomark explore --algorithm NAME`` and :func:`~topomark.reference.run.explore.explore` then
+    run it like any other (the CLI sees what was registered before its parser was built)."""
+    if spec.name in REGISTRY:
+        raise ValueError(f"algorithm {spec.name!r} is registered twice")
+    REGISTRY[spec.name] = spec
+    listed = sorted(REGISTRY.values(), key=_listing_key)
+    REGISTRY.clear()
+    REGISTRY.update((s.name, s) for s in listed)
+    return spec
 
 
-def _enhancement(name: str) -> AlgorithmSpec:
-    enh = ENHANCEMENTS[name]
-    inherits = not (enh.prune or enh.expand_new or enh.expand_place)
-    bound = f"{_BOUND_3}, inherited (§4.1 changes validation only)" if inherits else None
-    return AlgorithmSpec(name, enh.section,
-                         _LIGHTHOUSE, bound, "1", True, _POLICY_OPTIONS, _ALGORITHM_3_1_CHECKS,
-                         upper_bound if inherits else None)
+def unregister(name: str) -> AlgorithmSpec:
+    """Take the algorithm ``name`` out of :data:`REGISTRY` (what :func:`register` added) and return its spec."""
+    return REGISTRY.pop(algorithm_spec(name).name)
 
 
-def _registered() -> dict[str, AlgorithmSpec]:
-    """Every module of :mod:`topomark.reference.algorithms.registrations` (found by listing the folder, so a new algorithm
-    family adds a module and edits nothing else) contributes its ``SPECS``, in module-name order."""
-    found: dict[str, AlgorithmSpec] = {}
+def _listing_key(spec: AlgorithmSpec) -> tuple:
+    """Algorithm 3.1's family first, then by section: ``"§6.2.1 Case 3a, ..."`` ↦ (True, (6, 2, 1))."""
+    head = spec.thesis.lstrip("§").split()[0].rstrip(",")
+    return spec.family != "algorithm-3.1", tuple(int(part) for part in head.split(".") if part.isdigit())
+
+
+def _register_folder() -> None:
+    """Every module of :mod:`topomark.reference.algorithms.registrations` (found by listing the folder, so an
+    algorithm family adds a module and edits nothing else) registers its ``SPECS``, in module-name order."""
     for info in sorted(pkgutil.iter_modules(registrations.__path__), key=lambda i: i.name):
         module = importlib.import_module(f"{registrations.__name__}.{info.name}")
         for spec in getattr(module, "SPECS", ()):
-            if spec.name in found:
-                raise ValueError(f"algorithm {spec.name!r} is registered twice ({info.name})")
-            found[spec.name] = spec
-    return dict(sorted(found.items(), key=lambda item: _section(item[1].thesis)))
+            try:
+                register(spec)
+            except ValueError as exc:
+                raise ValueError(f"{exc} ({info.name})") from None
 
 
-def _section(thesis: str) -> tuple[int, ...]:
-    """``"§6.2.1 Case 3a, ..."`` ↦ (6, 2, 1): the listing follows the thesis (a stable sort keeps module order)."""
-    head = thesis.lstrip("§").split()[0].rstrip(",")
-    return tuple(int(part) for part in head.split(".") if part.isdigit())
+_register_folder()
 
 
-REGISTRY: dict[str, AlgorithmSpec] = {
-    "basic": AlgorithmSpec("basic", "§3.3, Algorithm 3.1", _LIGHTHOUSE, _BOUND_3, "1", True, _POLICY_OPTIONS,
-                           _ALGORITHM_3_1_CHECKS, upper_bound),
-    **{name: _enhancement(name) for name in ENHANCEMENTS},
-}
-for _name, _spec in _registered().items():
-    if _name in REGISTRY:
-        raise ValueError(f"algorithm {_name!r} is registered twice")
-    REGISTRY[_name] = _spec
+def in_family(family: str) -> dict[str, AlgorithmSpec]:
+    """The registered algorithms whose traces are written in ``family`` (``"algorithm-3.1"``: ``basic`` and the
+    Chapter 4 enhancements), by name, in listing order."""
+    return {name: spec for name, spec in REGISTRY.items() if spec.family == family}
 
 
 def parameters() -> dict[str, Parameter]:

@@ -52,7 +52,7 @@ from topomark.spec.mapstate import PartialMap
 from topomark.spec.signature import Signature, back_link_table, signature_at
 from topomark.spec.world import World
 
-from topomark.reference.algorithms.explorer_classes import ALGORITHMS
+from topomark.reference.algorithms.registry import algorithm_spec
 from topomark.reference.replay.divergence import Diverged, diverge
 from topomark.reference.explorers.lighthouses import Lighthouse
 from topomark.reference.replay.hypotheses import check_hypotheses
@@ -73,7 +73,7 @@ class Algorithm31Layer:
         self.world = world
         self.lighthouse = lighthouse
         self.policies = header_policies(header["policies"], f"{source} line 1")
-        self.enhancement = getattr(ALGORITHMS[header["algorithm"]], "enhancement", None)
+        self.enhancement = getattr(algorithm_spec(header["algorithm"]).factory, "enhancement", None)
         self.S: PartialMap | None = None
         self.table: dict[Signature, int] = {}  # v0's signature from each entry -> that entry
         self.ops: list[dict] = []  # the start's op records so far (trace@2)

@@ -4,7 +4,7 @@ The checker sees what the explorer may not — the world and the simulator's
 true state — and judges the explorer's public state (S, U, its believed
 position and its iteration records) with the spec's own predicates.  Which
 checks run is named by the algorithm's registry entry
-(:data:`topomark.reference.algorithms.registry.CHECKS`):
+(:data:`topomark.reference.algorithms.algorithm_spec.CHECKS`):
 
 * ``pose`` — the explorer's believed position is where the robot really is:
   φ is anchored at the start, the explorer's believed pose (v0, exit 0)
@@ -46,12 +46,13 @@ from topomark.spec.errors import CheckFailure, TopomarkFault, Violation
 from topomark.spec.invariants import IncrementalInvariants, check_I1, check_I2, check_lemma1, correspondence
 from topomark.spec.isomorphism import anchored, verify_witness
 
-from topomark.reference.algorithms.algorithm_spec import CHECKS
+from topomark.reference.algorithms.algorithm_spec import ALGORITHM_3_1_CHECKS, CHECKS
 
 __all__ = ["Checker", "ALL_CHECKS"]
 
-ALL_CHECKS = ("pose", "I-1", "I-2", "bound-function", "lemma-1", "marker", "iterations", "isomorphism")
-"""Algorithm 3.1's checks, the default; :data:`~topomark.reference.algorithms.algorithm_spec.CHECKS` lists every one."""
+ALL_CHECKS = ALGORITHM_3_1_CHECKS
+"""Algorithm 3.1's checks, the default (:data:`~topomark.reference.algorithms.algorithm_spec.ALGORITHM_3_1_CHECKS`);
+:data:`~topomark.reference.algorithms.algorithm_spec.CHECKS` lists every one."""
 
 
 class Checker:

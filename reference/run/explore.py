@@ -7,9 +7,10 @@
 1. validate the world for the lighthouse (§3.3: the robot drops its kit at v0,
    facing the exit it starts facing; a world file may carry exactly those
    markers or none);
-2. build the simulator with the lighthouse's kit, hand the explorer only its
-   robot, and drive it by the explorer contract (``start``, then ``step``
-   until ``done``);
+2. build the simulator with the lighthouse's kit, build the explorer with the
+   registry entry's factory (:attr:`~topomark.reference.algorithms.algorithm_spec.AlgorithmSpec.factory`),
+   handing it only its robot, and drive it by the explorer contract
+   (``start``, then ``step`` until ``done``);
 3. after every iteration run the :class:`~topomark.reference.run.checker.Checker`
    with the checks the algorithm's registry entry names (unless ``check=False``) and hand the trace records to a sink
    (:mod:`~topomark.reference.trace.sink`: kept in a list, streamed to a file,
@@ -36,7 +37,6 @@ from topomark.spec.worldfile import marker_to_json
 from topomark.reference.algorithms.bounds import upper_bound
 from topomark.reference.run.checker import Checker
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES, Lighthouse, lighthouse as lighthouse_named
-from topomark.reference.algorithms.explorer_classes import ALGORITHMS
 from topomark.reference.algorithms.registry import AlgorithmSpec, algorithm_spec
 from topomark.reference.explorers.policies import Policies
 from topomark.reference.run.simulator import Simulator
@@ -44,7 +44,7 @@ from topomark.reference.trace.families import FAMILIES
 from topomark.reference.trace.records import end_record, op_record, trace_header
 from topomark.reference.trace.sink import ListSink, TraceSink
 
-__all__ = ["ALGORITHMS", "Outcome", "explore", "check_run", "prepare_world"]
+__all__ = ["Outcome", "explore", "check_run", "prepare_world"]
 
 @dataclass
 class Outcome:

@@ -10,7 +10,7 @@ algorithm layer where the header's family defines one.
 family             algorithms                                        algorithm layer         thesis
 =================  ================================================  ======================  ==================
 ``algorithm-3.1``  ``basic`` and the Chapter 4 enhancements          ``iteration`` records   §3.3, Chapter 4
-                   (:data:`topomark.reference.algorithms.explorer_classes.ALGORITHMS`)
+                   (registered with ``family="algorithm-3.1"``)
 ``robot``          any (the header names it; topomark need not       none                    —
                    know it)
 =================  ================================================  ======================  ==================
@@ -33,7 +33,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from topomark.reference.algorithms.explorer_classes import ALGORITHMS
+from topomark.reference.algorithms.registry import in_family
 
 __all__ = ["Family", "FAMILIES", "ROBOT_EVENTS", "family_of"]
 
@@ -52,7 +52,7 @@ class Family:
     lighthouse: bool  # the start's marker operations are the lighthouse's, and none follows them
 
     def covers(self, algorithm: str) -> bool:
-        return algorithm in ALGORITHMS if self.registered else bool(algorithm)
+        return algorithm in in_family(self.name) if self.registered else bool(algorithm)
 
     @property
     def layers(self) -> tuple[str, ...]:
@@ -69,4 +69,4 @@ FAMILIES: dict[str, Family] = {f.name: f for f in (
 def family_of(algorithm: str) -> Family:
     """The family an algorithm's traces are written in: Algorithm 3.1's for it and the Chapter 4 enhancements,
     the robot layer alone for every other algorithm (until its family defines an algorithm layer)."""
-    return FAMILIES["algorithm-3.1"] if algorithm in ALGORITHMS else FAMILIES["robot"]
+    return FAMILIES["algorithm-3.1"] if algorithm in in_family("algorithm-3.1") else FAMILIES["robot"]

@@ -26,7 +26,7 @@ from typing import Any
 from topomark.spec.errors import InvalidInput
 from topomark.spec.kit import Kit
 
-from topomark.reference.algorithms.explorer_classes import ALGORITHMS
+from topomark.reference.algorithms.registry import in_family
 from topomark.reference.trace.records import TRACE_FORMAT, TRACE_FORMAT_2
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES, Lighthouse
 from topomark.reference.explorers.policies import Policies
@@ -82,7 +82,7 @@ def check_header(rec: dict[str, Any], where: str) -> tuple[str, ...]:
                                f"{', '.join(FAMILIES)})")
         family = FAMILIES[rec["family"]]
     if not family.covers(rec["algorithm"]):
-        known = f"the registered algorithms are {', '.join(ALGORITHMS)}" if family.registered else "a name"
+        known = f"the registered algorithms are {', '.join(in_family(family.name))}" if family.registered else "a name"
         raise InvalidInput(f"{where}: header.algorithm: unknown algorithm {_show(rec['algorithm'])} "
                            f"({known})")
     if family.registered:

@@ -26,7 +26,7 @@ from __future__ import annotations
 
 from topomark.spec.kit import Kit
 
-from topomark.reference.algorithms.algorithm_spec import AlgorithmSpec, Parameter
+from topomark.reference.algorithms.algorithm_spec import MARKER_MAP_CHECKS, AlgorithmSpec, Parameter
 from topomark.reference.explorers.counted_markers import DirectionalVertexCounts, EdgeCounts, VertexCounts, sum_to
 from topomark.reference.explorers.saving_markers import MarkFirstEdges, SavingEdgeCounts, ceil_half
 
@@ -34,8 +34,6 @@ __all__ = ["SPECS"]
 
 MARKERS = Parameter("markers", "how many markers the robot carries (default: what its case is assured, "
                                "from n and m)", None, minimum=1)
-
-_CHECKS = ("pose", "I-1", "I-2", "marker-budget", "isomorphism")
 
 
 def _count(n: int, options: dict, assured: int | None = None) -> int:
@@ -46,34 +44,38 @@ def _count(n: int, options: dict, assured: int | None = None) -> int:
 
 SPECS = (
     AlgorithmSpec(
-        "case-3a", "§6.2.1 Case 3a, Algorithm 6.2 (L1562–L1620, Figure 6.6)",
-        Kit(vertex=1), "O(m·d_max)", "Σ_{k=1}^{n−1} k undirected V-markers (Σ_{k=1}^{n} k if the kit allows)",
-        True, ("markers",), _CHECKS, explorer=VertexCounts, uses_lighthouse=False,
-        parameters=(MARKERS,), kit_fn=lambda n, m, o: Kit(vertex=_count(n, o)),
+        name="case-3a", thesis="§6.2.1 Case 3a, Algorithm 6.2 (L1562–L1620, Figure 6.6)", kit=Kit(vertex=1),
+        bound="O(m·d_max)", markers="Σ_{k=1}^{n−1} k undirected V-markers (Σ_{k=1}^{n} k if the kit allows)",
+        deterministic=True, options=("markers",), checks=MARKER_MAP_CHECKS, explorer=VertexCounts,
+        uses_lighthouse=False, parameters=(MARKERS,), kit_fn=lambda n, m, o: Kit(vertex=_count(n, o)),
         marker_bound_fn=lambda n, m: sum_to(n), family="robot"),
     AlgorithmSpec(
-        "case-3b", "§6.2.1 Case 3b (L1577, L1627–L1643, Figures 6.7, 6.8)",
-        Kit(edge=1), "O(m)", "Σ_{k=1}^{n−1} k undirected E-markers",
-        True, ("markers",), _CHECKS, explorer=EdgeCounts, uses_lighthouse=False,
-        parameters=(MARKERS,), kit_fn=lambda n, m, o: Kit(edge=_count(n, o)),
+        name="case-3b", thesis="§6.2.1 Case 3b (L1577, L1627–L1643, Figures 6.7, 6.8)", kit=Kit(edge=1),
+        bound="O(m)", markers="Σ_{k=1}^{n−1} k undirected E-markers",
+        deterministic=True, options=("markers",), checks=MARKER_MAP_CHECKS, explorer=EdgeCounts,
+        uses_lighthouse=False, parameters=(MARKERS,), kit_fn=lambda n, m, o: Kit(edge=_count(n, o)),
         marker_bound_fn=lambda n, m: sum_to(n - 1), family="robot"),
     AlgorithmSpec(
-        "case-dv-sum", "§6.2.2 Σ_{k=1}^{n−1} k directional V-markers (L1902, Table 6.2)",
-        Kit(vertex=1, directional=True), "O(m)",
-        "Σ_{k=1}^{n−1} k directional V-markers (Σ_{k=1}^{n} k if the kit allows)",
-        True, ("markers",), _CHECKS, explorer=DirectionalVertexCounts, uses_lighthouse=False,
-        parameters=(MARKERS,), kit_fn=lambda n, m, o: Kit(vertex=_count(n, o), directional=True),
+        name="case-dv-sum", thesis="§6.2.2 Σ_{k=1}^{n−1} k directional V-markers (L1902, Table 6.2)",
+        kit=Kit(vertex=1, directional=True), bound="O(m)",
+        markers="Σ_{k=1}^{n−1} k directional V-markers (Σ_{k=1}^{n} k if the kit allows)",
+        deterministic=True, options=("markers",), checks=MARKER_MAP_CHECKS, explorer=DirectionalVertexCounts,
+        uses_lighthouse=False, parameters=(MARKERS,),
+        kit_fn=lambda n, m, o: Kit(vertex=_count(n, o), directional=True),
         marker_bound_fn=lambda n, m: sum_to(n), family="robot"),
     AlgorithmSpec(
-        "extension-1", "§6.2.2 extension-1 of Case 3b (L1914, Figure 6.15, Table 6.2)",
-        Kit(edge=1, directional=True), "O(m)", "Σ_{k=1}^{⌈m/2⌉} k directional E-markers",
-        True, ("markers",), _CHECKS, explorer=MarkFirstEdges, uses_lighthouse=False, parameters=(MARKERS,),
+        name="extension-1", thesis="§6.2.2 extension-1 of Case 3b (L1914, Figure 6.15, Table 6.2)",
+        kit=Kit(edge=1, directional=True), bound="O(m)", markers="Σ_{k=1}^{⌈m/2⌉} k directional E-markers",
+        deterministic=True, options=("markers",), checks=MARKER_MAP_CHECKS, explorer=MarkFirstEdges,
+        uses_lighthouse=False, parameters=(MARKERS,),
         kit_fn=lambda n, m, o: Kit(edge=_count(n, o, sum_to(ceil_half(m))), directional=True),
         marker_bound_fn=lambda n, m: sum_to(ceil_half(m)), family="robot"),
     AlgorithmSpec(
-        "extension-2", "§6.2.2 extension-2 of Case 3b, Algorithm 6.6 (L1916–L1963, Figure 6.16, Table 6.2)",
-        Kit(edge=1, directional=True), "O(m)", "Σ_{k=1}^{⌈(n−1)/2⌉} k directional E-markers",
-        True, ("markers",), _CHECKS, explorer=SavingEdgeCounts, uses_lighthouse=False, parameters=(MARKERS,),
+        name="extension-2",
+        thesis="§6.2.2 extension-2 of Case 3b, Algorithm 6.6 (L1916–L1963, Figure 6.16, Table 6.2)",
+        kit=Kit(edge=1, directional=True), bound="O(m)", markers="Σ_{k=1}^{⌈(n−1)/2⌉} k directional E-markers",
+        deterministic=True, options=("markers",), checks=MARKER_MAP_CHECKS, explorer=SavingEdgeCounts,
+        uses_lighthouse=False, parameters=(MARKERS,),
         kit_fn=lambda n, m, o: Kit(edge=_count(n, o, sum_to(ceil_half(n - 1))), directional=True),
         marker_bound_fn=lambda n, m: sum_to(ceil_half(n - 1)), family="robot"),
 )

@@ -54,7 +54,7 @@ from __future__ import annotations
 
 from topomark.spec.kit import Kit
 
-from topomark.reference.algorithms.algorithm_spec import AlgorithmSpec, Parameter
+from topomark.reference.algorithms.algorithm_spec import MARKER_MAP_CHECKS, AlgorithmSpec, Parameter
 from topomark.reference.explorers.closest_first import ClosestFirst, ClosestFirstDouble
 from topomark.reference.explorers.edge_footprints import DoubleMarkedEdges, EdgeFootprints, VertexEdgeFootprints
 
@@ -62,10 +62,6 @@ __all__ = ["SPECS", "footprints_bound", "case_4_markers", "case_4_mn_markers"]
 
 MARKERS = Parameter("markers", "how many markers the robot carries (default: what its case is assured, "
                                "from n and m)", None, minimum=1)
-
-CHECKS = ("pose", "I-1", "I-2", "marker-budget", "isomorphism")
-"""S and U as Algorithm 3.1 keeps them after every step (U: exactly the unexplored edges at known vertices),
-the marker bound after every step, the final map with every marker dropped."""
 
 
 def footprints_bound(n: int, m: int) -> int:
@@ -102,9 +98,10 @@ _OPTIONS = ("markers",)
 def _spec(name, thesis, markers, explorer, kit_fn, marker_bound_fn, cites, options=_OPTIONS + ("policy edge",),
           kind=Kit(edge=1)):
     """``kind``: the kind of marker the kit holds (the registry's ``kit``; the counts come from ``kit_fn``)."""
-    return AlgorithmSpec(name, thesis, kind, _BOUND.format(cites), markers, True, options, CHECKS,
-                         bound_fn=footprints_bound, explorer=explorer, uses_lighthouse=False, parameters=(MARKERS,),
-                         kit_fn=kit_fn, marker_bound_fn=marker_bound_fn, family="robot")
+    return AlgorithmSpec(name=name, thesis=thesis, kit=kind, bound=_BOUND.format(cites), markers=markers,
+                         deterministic=True, options=options, checks=MARKER_MAP_CHECKS, bound_fn=footprints_bound,
+                         explorer=explorer, uses_lighthouse=False, parameters=(MARKERS,), kit_fn=kit_fn,
+                         marker_bound_fn=marker_bound_fn, family="robot")
 
 
 SPECS = (

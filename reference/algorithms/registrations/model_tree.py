@@ -124,10 +124,10 @@ def write_models(explorer, directory: str | Path) -> list[Path]:
 
 SPECS = (
     AlgorithmSpec(
-        "model-tree", "§5.2.2, Algorithm 5.1", Kit(), None, "0", False,
-        ("signatures global|local", "entry-check yes|no", "window=N", "max-models=N", "max-steps=N", "cue-n=N", "cue-m=M",
-         "cue-diameter=D", "cue-planar=yes|no"),
-        ("models", "marker-budget", "isomorphism"),
+        name="model-tree", thesis="§5.2.2, Algorithm 5.1", kit=Kit(), bound=None, markers="0", deterministic=False,
+        options=("signatures global|local", "entry-check yes|no", "window=N", "max-models=N", "max-steps=N",
+                 "cue-n=N", "cue-m=M", "cue-diameter=D", "cue-planar=yes|no"),
+        checks=("models", "marker-budget", "isomorphism"),
         explorer=ModelTreeExplorer, uses_lighthouse=False, parameters=PARAMETERS, kit_fn=_kit,
         marker_bound_fn=lambda n, m: 0, family="robot", check_world=check_cues, summary_fn=summary,
         write_models=write_models),

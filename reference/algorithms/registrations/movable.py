@@ -31,14 +31,10 @@ from __future__ import annotations
 
 from topomark.spec.kit import Kit
 
-from topomark.reference.algorithms.algorithm_spec import AlgorithmSpec
+from topomark.reference.algorithms.algorithm_spec import STEPWISE_MAP_CHECKS, AlgorithmSpec
 from topomark.reference.explorers.movable_marker import DirectionalMovableMarkerExplorer, MovableMarkerExplorer
 
 __all__ = ["SPECS", "dudek_bound", "directional_bound"]
-
-CHECKS = ("pose", "I-1", "I-2", "bound-function", "marker-budget", "iterations", "isomorphism")
-"""U is exactly the unexplored edges at known vertices between steps (I-2), one edge joins S per step
-(bound-function: t = m − |E_S| falls by one) and the steps are n − 1 non-loop and m − n + 1 loop ones."""
 
 
 def dudek_bound(n: int, m: int) -> int:
@@ -55,11 +51,13 @@ _OPTIONS = ("policy edge=nearest|fifo|lifo",)
 _BOUND = "O(mn) (§2.3.1, L150); bound_fn: ours, exact for our explorer"
 
 SPECS = (
-    AlgorithmSpec("dudek", "§2.3.1, Dudek et al. [24, 26]", Kit(vertex=1, movable=True), _BOUND, "1", True,
-                  _OPTIONS, CHECKS, bound_fn=dudek_bound, explorer=MovableMarkerExplorer, uses_lighthouse=False,
+    AlgorithmSpec(name="dudek", thesis="§2.3.1, Dudek et al. [24, 26]", kit=Kit(vertex=1, movable=True),
+                  bound=_BOUND, markers="1", deterministic=True, options=_OPTIONS, checks=STEPWISE_MAP_CHECKS,
+                  bound_fn=dudek_bound, explorer=MovableMarkerExplorer, uses_lighthouse=False,
                   marker_bound_fn=lambda n, m: 1, family="robot"),
-    AlgorithmSpec("dudek-directional", "§2.3.1, Dudek et al. [24, 26]; directional variant [27] (L177)",
-                  Kit(vertex=1, directional=True, movable=True), _BOUND, "1", True, _OPTIONS, CHECKS,
-                  bound_fn=directional_bound, explorer=DirectionalMovableMarkerExplorer, uses_lighthouse=False,
-                  marker_bound_fn=lambda n, m: 1, family="robot"),
+    AlgorithmSpec(name="dudek-directional", thesis="§2.3.1, Dudek et al. [24, 26]; directional variant [27] (L177)",
+                  kit=Kit(vertex=1, directional=True, movable=True), bound=_BOUND, markers="1", deterministic=True,
+                  options=_OPTIONS, checks=STEPWISE_MAP_CHECKS, bound_fn=directional_bound,
+                  explorer=DirectionalMovableMarkerExplorer, uses_lighthouse=False, marker_bound_fn=lambda n, m: 1,
+                  family="robot"),
 )

@@ -53,17 +53,13 @@ from __future__ import annotations
 
 from topomark.spec.kit import Kit
 
-from topomark.reference.algorithms.algorithm_spec import AlgorithmSpec, Parameter
+from topomark.reference.algorithms.algorithm_spec import STEPWISE_MAP_CHECKS, AlgorithmSpec, Parameter
 from topomark.reference.explorers.threads_carried import CarriedThreadExplorer
 from topomark.reference.explorers.threads_explore import CircumferenceThreadExplorer, ThreadExplorer
 from topomark.reference.explorers.threads_knots import KnotThreadExplorer
 from topomark.reference.algorithms.registrations.movable import directional_bound
 
 __all__ = ["SPECS", "circumference_bound", "knots_bound", "explore_bound", "directional_bound"]
-
-CHECKS = ("pose", "I-1", "I-2", "bound-function", "marker-budget", "iterations", "isomorphism")
-"""One edge joins S per step (n − 1 non-loop, m − n + 1 loop); U is the unexplored edges at known
-vertices and the pose is the robot's between steps; no marker is ever dropped (a thread is no marker)."""
 
 
 def circumference_bound(n: int, m: int) -> int:
@@ -91,25 +87,29 @@ def _circumference_kit(n: int, m: int, opts: dict) -> Kit:
     return Kit(thread=n if length in ("n", None) else length)
 
 
-_ROBOT = dict(uses_lighthouse=False, marker_bound_fn=lambda n, m: 0, family="robot")
+_ROBOT = dict(deterministic=True, checks=STEPWISE_MAP_CHECKS, uses_lighthouse=False,
+              marker_bound_fn=lambda n, m: 0, family="robot")
+"""What every thread algorithm shares: one edge joins S per step, and no marker is ever dropped (a thread is
+no marker, so the marker bound is 0)."""
 _O_MN = "O(mn) (Table 6.3); bound_fn: ours"
 
 SPECS = (
-    AlgorithmSpec("thread-carried", "§6.3.1, l = ε thread carried and retied (L2032–L2036)", Kit(thread=0),
-                  _O_MN, "no marker; a thread of length ε", True, (), CHECKS, bound_fn=directional_bound,
-                  explorer=CarriedThreadExplorer, **_ROBOT),
-    AlgorithmSpec("thread-circumference", "§6.3.2, Algorithm 6.7 (L2038–L2075; l = c(G), given n: see the docstring)",
-                  Kit(thread=0), _O_MN, "no marker; a thread of n edges (--thread-length: L)", True,
-                  ("thread-length L (default n; reaching L is the failed outcome 'out of thread')",), CHECKS,
+    AlgorithmSpec(name="thread-carried", thesis="§6.3.1, l = ε thread carried and retied (L2032–L2036)",
+                  kit=Kit(thread=0), bound=_O_MN, markers="no marker; a thread of length ε", options=(),
+                  bound_fn=directional_bound, explorer=CarriedThreadExplorer, **_ROBOT),
+    AlgorithmSpec(name="thread-circumference",
+                  thesis="§6.3.2, Algorithm 6.7 (L2038–L2075; l = c(G), given n: see the docstring)",
+                  kit=Kit(thread=0), bound=_O_MN, markers="no marker; a thread of n edges (--thread-length: L)",
+                  options=("thread-length L (default n; reaching L is the failed outcome 'out of thread')",),
                   bound_fn=circumference_bound, explorer=CircumferenceThreadExplorer,
                   parameters=(LENGTH,), kit_fn=_circumference_kit, **_ROBOT),
-    AlgorithmSpec("thread-knots", "§6.3.2, l ≫ m thread with knots (L2077–L2086, Figure 6.20)", Kit(thread=0),
-                  "O(m) (Table 6.3); bound_fn: ours, exact worst case", "no marker; a thread of m + 1 edges", True, (),
-                  CHECKS, bound_fn=knots_bound, explorer=KnotThreadExplorer,
-                  kit_fn=lambda n, m, opts: Kit(thread=m + 1), **_ROBOT),
-    AlgorithmSpec("thread-explore", "§6.3.3, Algorithm 6.8 (L2088–L2141; l < c(G), explore-explore)", Kit(thread=2), _O_MN,
-                  "no marker; a thread of --thread-length edges", True, ("thread-length L (default 2, Figure 6.21)",),
-                  CHECKS, bound_fn=explore_bound, explorer=ThreadExplorer,
-                  parameters=(Parameter("thread-length", LENGTH.help, default=2, minimum=1),),
+    AlgorithmSpec(name="thread-knots", thesis="§6.3.2, l ≫ m thread with knots (L2077–L2086, Figure 6.20)",
+                  kit=Kit(thread=0), bound="O(m) (Table 6.3); bound_fn: ours, exact worst case",
+                  markers="no marker; a thread of m + 1 edges", options=(), bound_fn=knots_bound,
+                  explorer=KnotThreadExplorer, kit_fn=lambda n, m, opts: Kit(thread=m + 1), **_ROBOT),
+    AlgorithmSpec(name="thread-explore", thesis="§6.3.3, Algorithm 6.8 (L2088–L2141; l < c(G), explore-explore)",
+                  kit=Kit(thread=2), bound=_O_MN, markers="no marker; a thread of --thread-length edges",
+                  options=("thread-length L (default 2, Figure 6.21)",), bound_fn=explore_bound,
+                  explorer=ThreadExplorer, parameters=(Parameter("thread-length", LENGTH.help, default=2, minimum=1),),
                   kit_fn=lambda n, m, opts: Kit(thread=opts["thread-length"]), **_ROBOT),
 )
