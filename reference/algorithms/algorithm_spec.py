@@ -14,7 +14,7 @@ options it takes and the checks that apply.  Two shapes of algorithm exist:
 * **kit algorithms** (everything else: markers dropped all through the
   exploration, §6.2; movable markers, §2.3.1; threads, §6.3; no marker,
   §5.2) are given the kit ``kit_for(n, m, options)`` — the simulator computes
-  it from the world, the robot never learns n or m (§6.2.0, L1474) — and are
+  it from the world, the robot never learns n or m (§6.2.1, L1487) — and are
   built as ``cls(robot, policies, observer, options)``.
 
 Every explorer keeps the contract of

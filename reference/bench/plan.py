@@ -236,7 +236,7 @@ def marked_fraction_markers(world: World, algorithm: str, value: str) -> dict:
 
     Version-1 gives v0 one marker and the j-th new place j + 1 until a drop is refused
     (:mod:`~topomark.reference.explorers.case5_v1`), so K = Σ_{i=1}^{p} i marks exactly p places.  The
-    thesis gives no fractions and no K (guide §6.9: "The fraction values are not given"); we give
+    thesis gives no fractions and no K (neither Figure 6.13's caption, L1863, nor its text, L1829); we give
     K = max(4, Σ_{i=1}^{⌊f·n⌋} i).  K ≥ 4 is the algorithm's least kit ("k > 3", L1708), which marks 2
     places: "0%" is that least kit (2 of n places marked), and 100% is Σ_{i=1}^{n} i (every place).
     """

@@ -1,7 +1,7 @@
 """Chapter 5 measured: the report of ``topomark bench chapter-5`` (``DIR/chapter-5.md`` and plots).
 
 Chapter 5 states its experimental findings in prose only (no table, no
-figure with numbers; guide §§2-4).  The ``chapter-5`` experiment
+figure with numbers; §5.1–§5.2.2, L1317–L1421).  The ``chapter-5`` experiment
 (:mod:`~topomark.reference.bench.plan`) runs, on the same worlds and starts:
 
 * §5.1 (``undirected-vertex``) and §6.1 (``undirected-edge``) with the basic

@@ -1,9 +1,9 @@
 """Table 6.3, Figure 6.24 and the comparison the thesis never prints: ``topomark bench table-6.3``, ``figure-6.24``,
 ``comparison``, ``section-6.3`` (thesis §6.3, L1995–L2222; §2.3.1, L139–L152).
 
-The thesis's Table 6.3 ("Solvability and cost bounds of different threads", guide §8.7, quoted verbatim in
+The thesis's Table 6.3 ("Solvability and cost bounds of different threads", L2214–L2222, quoted verbatim in
 :data:`TABLE_63`) states an upper cost bound per thread class; its Figures 6.23 and 6.24 are lost, only their
-captions and the prose findings remain (guide §8.6, §11).  These reports put beside each statement what the thread
+captions and the prose findings remain (L2185–L2210).  These reports put beside each statement what the thread
 algorithms measure on the bench's worlds, and say whether it held:
 
 * **table-6.3** — every thread class (:data:`CLASSES`: the fixed l = ε thread is Algorithm 3.1 with the ``thread``
@@ -118,7 +118,7 @@ def write_report(experiment: str, out: Path, wall: float | None = None, plots: b
     lines = report_head(experiment, exp, rows, wall,
                         " (thesis §3.1.2), rewinding and walking back along the thread included. Every algorithm of "
                         "a size explores the same worlds from the same start. The thesis's Figures 6.23 and 6.24 are "
-                        "lost (guide §11): only their captions and the prose findings are quoted. Means are over the "
+                        "lost: only their captions and the prose findings are quoted. Means are over the "
                         "worlds mapped correctly (checked and verified); the worlds column says how many of how many.")
     made: list[Path] | None = [] if plots else None
     if experiment == "section-6.3":
@@ -238,7 +238,7 @@ def _figure624(gr: dict) -> tuple[list[str], dict]:
              "removed edges. Error bars show standard deviations.\" Text: \"The algorithm demonstrates cost reduction "
              "as l increases. Note that when the thread is sufficiently long (l ≥ c(G)), fixed exploration cost is "
              "produced (the algorithm acts as the l = c(G) algorithm).\" The l values are not given; ours: powers of "
-             "two up to the first l ≥ n = 400. The algorithm: explore-explore (Algorithm 6.8, guide §8.6).", "",
+             "two up to the first l ≥ n = 400. The algorithm (not stated): explore-explore, Algorithm 6.8 (L2105).", "",
              "| l | worlds | mean cost ± sd | cost/m | vs l = 1 |", "|---:|---:|---:|---:|---:|"]
     first = by_l[LENGTHS[0]]
     for n in LENGTHS:
