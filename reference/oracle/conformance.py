@@ -45,7 +45,7 @@ from dataclasses import dataclass
 from pathlib import Path, PurePosixPath
 from typing import Any, Callable, Sequence
 
-from topomark.spec.errors import CheckFailure, InvalidInput, TopomarkFault
+from topomark.spec.errors import CheckFailure, InvalidInput, TopomarkFault, clip
 from topomark.spec.jsontext import parse_json, read_text_file
 from topomark.spec.kit import Kit
 from topomark.spec.world import Start, World
@@ -179,9 +179,7 @@ def load_manifest(root: Path) -> dict[str, Any]:
 
 def _field(root: Path, where: str, value: Any, ok: bool, want: str) -> None:
     if not ok:
-        shown = json.dumps(value)
-        shown = shown if len(shown) <= 60 else shown[:57] + "..."
-        _bad(root, f"manifest.json: {where} must be {want}, got {shown}")
+        _bad(root, f"manifest.json: {where} must be {want}, got {clip(json.dumps(value), 60, note='')}")
 
 
 def _count(root: Path, where: str, value: Any) -> None:

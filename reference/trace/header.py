@@ -23,7 +23,7 @@ from __future__ import annotations
 import json
 from typing import Any
 
-from topomark.spec.errors import InvalidInput
+from topomark.spec.errors import InvalidInput, clip
 from topomark.spec.kit import Kit
 
 from topomark.reference.algorithms.explorer_classes import ALGORITHMS
@@ -111,5 +111,4 @@ def _check_kit(rec: dict[str, Any], family: Family, where: str) -> None:
 
 
 def _show(value: Any) -> str:
-    text = repr(value)
-    return text if len(text) <= 80 else text[:77] + "..."
+    return clip(repr(value), 80, note="")

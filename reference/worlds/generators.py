@@ -60,7 +60,7 @@ import re
 from numbers import Integral
 from typing import Any, Callable
 
-from topomark.spec.errors import InvalidInput
+from topomark.spec.errors import InvalidInput, clip
 from topomark.spec.world import World
 
 from topomark.reference.worlds.embedding import circle_positions, from_networkx, from_positions, natural_key, planar
@@ -135,7 +135,7 @@ _CLI_DIGITS = 18  # as for JSON integers (topomark.spec.jsontext.MAX_INT_DIGITS)
 
 def _shown(value: str, limit: int = 40) -> str:
     """``repr(value)`` cut to ``limit`` characters, for messages about hostile parameters."""
-    return repr(value) if len(value) <= limit else repr(value[:limit]) + f"... ({len(value):,} characters)"
+    return clip(value, limit, quote=True)
 
 
 def _coerce(generator: str, param: str, value: Any, default: Any) -> Any:
