@@ -39,7 +39,7 @@ from topomark.reference.algorithms.registry import algorithm_spec
 __all__ = ["FAMILIES", "EXPERIMENTS", "Experiment", "Part", "Run", "plan", "world_for", "is_heavy", "fits",
            "HEAVY_GRAPHS", "HEAVY_MAX_SIZE", "DEFAULT_LIGHTHOUSE", "CERTAIN_LIGHTHOUSES", "LIGHTHOUSE_ALGS", "LIGHTHOUSE_COMPLETE_SIZES",
            "NO_LIGHTHOUSE", "DERIVED_OPTIONS", "resolve_options", "option_set", "marked_fraction_markers",
-           "TABLE_61_ALGS", "TABLE_62_ALGS", "UNCUED_MODEL_TREE_GRAPHS", "FRACTIONS", "FIGURE_613_SIZES"]
+           "TABLE_61_ALGS", "TABLE_62_ALGS", "UNCUED_MODEL_TREE_GRAPHS", "FRACTIONS", "FIGURE_613_SIZES", "world_seed"]
 
 DEFAULT_LIGHTHOUSE = "directional-vertex"
 CERTAIN_LIGHTHOUSES = tuple(name for name, h in LIGHTHOUSES.items() if h.certain)
@@ -65,13 +65,13 @@ class Family:
     note: str = ""
 
 
-def _seed(family: str, size: int, seed: int) -> int:
+def world_seed(family: str, size: int, seed: int) -> int:
     return (sum(ord(c) * 31 ** k for k, c in enumerate(family)) % 100_003) * 1_000_003 + size * 10_007 + seed
 
 
 def _lattice_hole(size: int, seed: int) -> World:
     rows, cols = GRIDS[size]
-    return g.lattice_hole(rows, cols, 0.1, "vertices", _seed("lattice-hole", size, seed))
+    return g.lattice_hole(rows, cols, 0.1, "vertices", world_seed("lattice-hole", size, seed))
 
 
 def _lattice(size: int, seed: int) -> World:
@@ -88,16 +88,16 @@ FAMILIES: dict[str, Family] = {f.name: f for f in (
            note="size s = an 8x10, 10x10, 10x12, 13x13, 15x15, 16x16, 17x17, 19x19 or 20x20 grid with 10% of "
                 "its vertices removed at random (kept connected), so n = s"),
     Family("complete-hole", tf.COMPLETE_HOLE_SIZES,
-           lambda n, s: g.complete_hole(n, 0.1, _seed("complete-hole", n, s)), "Figure 3.10(d)",
+           lambda n, s: g.complete_hole(n, 0.1, world_seed("complete-hole", n, s)), "Figure 3.10(d)",
            note="K_n with 10% of its edges removed at random (kept connected)"),
     Family("small-world-k2-p10", (20, 40, 60, 80, 100, 150, 200),
-           lambda n, s: g.small_world(n, 2, 0.1, _seed("small-world-k2-p10", n, s)), "Figure 3.11"),
+           lambda n, s: g.small_world(n, 2, 0.1, world_seed("small-world-k2-p10", n, s)), "Figure 3.11"),
     Family("small-world-k4-p20", (20, 40, 60, 80, 100, 150, 200),
-           lambda n, s: g.small_world(n, 4, 0.2, _seed("small-world-k4-p20", n, s)), "Figure 3.11"),
+           lambda n, s: g.small_world(n, 4, 0.2, world_seed("small-world-k4-p20", n, s)), "Figure 3.11"),
     Family("random-20", (15, 20, 25, 30, 35, 40, 50),
-           lambda n, s: g.random_graph(n, 0.2, _seed("random-20", n, s)), "Figure 3.12"),
+           lambda n, s: g.random_graph(n, 0.2, world_seed("random-20", n, s)), "Figure 3.12"),
     Family("random-40", (15, 20, 25, 30, 35, 40, 50),
-           lambda n, s: g.random_graph(n, 0.4, _seed("random-40", n, s)), "Figure 3.12"),
+           lambda n, s: g.random_graph(n, 0.4, world_seed("random-40", n, s)), "Figure 3.12"),
 )}
 
 LATTICE_TABLE_ALGS = ("basic", "enh1", "enh2", "enh3", "enh4", "enh5-d1", "enh5-d2", "enh3+5")
@@ -188,9 +188,9 @@ EXPERIMENTS["all"] = Experiment("all", EXPERIMENTS["figure-3.10"].parts + EXPERI
 SMALL_GRIDS = {8: (3, 3), 11: (3, 4), 14: (4, 4), 18: (4, 5), 23: (5, 5)}  # n of a grid with 10% of vertices removed
 FAMILIES.update({f.name: f for f in (
     Family("small-lattice-hole", tuple(SMALL_GRIDS), lambda n, s: g.lattice_hole(
-        *SMALL_GRIDS[n], 0.1, "vertices", _seed("small-lattice-hole", n, s)), "§5.2.2",
+        *SMALL_GRIDS[n], 0.1, "vertices", world_seed("small-lattice-hole", n, s)), "§5.2.2",
         note="3x3, 3x4, 4x4, 4x5, 5x5 grids with 10% of their vertices removed (kept connected), n = size"),
-    Family("small-random-40", (6, 8, 10, 12), lambda n, s: g.random_graph(n, 0.4, _seed("small-random-40", n, s)),
+    Family("small-random-40", (6, 8, 10, 12), lambda n, s: g.random_graph(n, 0.4, world_seed("small-random-40", n, s)),
            "§5.2.2", note="random connected graphs with 40% of all vertex pairs as edges"),
     Family("figure-3.4a", (5,), lambda n, s: g.wheel_a(), "Figure 3.4(a)", random_graph=False,
            note="the planar wheel; the worlds differ only in the start"),
@@ -290,7 +290,7 @@ def world_for(family: str, size: int, seed: int) -> World:
     runs every algorithm on one world in turn; a World is never changed: a run's markers lie in its own layer)."""
     fam = FAMILIES[family]
     world = fam.build(size, seed)
-    rng = random.Random(_seed(family + "/start", size, seed))
+    rng = random.Random(world_seed(family + "/start", size, seed))
     v = rng.choice(sorted(world.vertices, key=g.natural_key))
     facing = rng.choice(list(world.rotation[v]))
     return World(world.rotation, (), Start(v, facing))

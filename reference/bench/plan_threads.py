@@ -16,7 +16,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from topomark.reference.worlds import generators as g
-from topomark.reference.bench.plan import EXPERIMENTS, FAMILIES, GRIDS, NO_LIGHTHOUSE, Experiment, Family, Part, _seed
+from topomark.reference.bench.plan import EXPERIMENTS, FAMILIES, GRIDS, NO_LIGHTHOUSE, Experiment, Family, Part, world_seed
 
 __all__ = ["CLASSES", "ThreadClass", "LENGTHS", "SIZES", "COMPARED", "MOVABLE", "IMMOVABLE", "EDGE_HOLE",
            "FIGURE_624_SIZE", "COST_F", "REPORTS"]
@@ -54,7 +54,7 @@ COST_F = {"m²n": lambda n, m: m * m * n, "mn": lambda n, m: m * n, "m": lambda 
 
 def _lattice_edge_hole(size: int, seed: int):
     rows, cols = GRIDS[size]
-    return g.lattice_hole(rows, cols, 0.1, "edges", _seed(EDGE_HOLE, size, seed))
+    return g.lattice_hole(rows, cols, 0.1, "edges", world_seed(EDGE_HOLE, size, seed))
 
 
 def _parts(family: str, sizes: tuple[int, ...]) -> tuple[Part, ...]:

@@ -66,7 +66,7 @@ from topomark.spec.world import World
 from topomark.reference.worlds.embedding import circle_positions, from_networkx, from_positions, natural_key, planar
 from topomark.reference.worlds.deterministic import chain, complete, cycle, lattice
 from topomark.reference.worlds.holes import complete_hole, lattice_hole
-from topomark.reference.worlds.random_worlds import _OtherPairs, random_graph, small_world  # noqa: F401 - _OtherPairs: tests reach it here
+from topomark.reference.worlds.random_worlds import OtherPairs, random_graph, small_world  # noqa: F401 - OtherPairs: for tests
 from topomark.proofs.wheels import (WHEEL_A_ROTATION, WHEEL_B_ROTATION, wheel_a, wheel_b, wheel_pair,
                      wheel_pair_directional)
 
