@@ -109,7 +109,7 @@ class AlgorithmSpec:
     parameters: tuple[Parameter, ...] = ()
     kit_fn: Callable[[int, int, dict], Kit] | None = None  # the kit for a world of n, m (kit algorithms)
     marker_bound_fn: Callable[[int, int], int] | None = None  # the stated marker bound, for ``marker-budget``
-    family: str = "algorithm-3.1"  # the trace@2 family its traces are written in
+    family: str = "algorithm-3.1"  # the trace@2 algorithm family its traces are written in
     own: bool = True  # topomark's registered explorer (False for ``registry.variant``: an explorer under test)
     check_world: Callable[[Any, dict], None] | None = None  # refuse options false for the world (e.g. §5.3 cues)
     summary_fn: Callable[[Any, Any], dict] | None = None  # (explorer, world) ↦ the algorithm's own --json fields

@@ -97,7 +97,7 @@ def _remove_vertices(graph: nx.Graph, count: int, rng: random.Random, what: str)
         pending = skipped
 
 
-# -- the two families ---------------------------------------------------------------
+# -- the two world families -----------------------------------------------------------
 def lattice_hole(rows: int, cols: int, fraction: float = 0.1, remove: str = "vertices", seed: int = 0) -> World:
     """A lattice with holes, §3.5.3 (Figure 3.8(a), Figure 3.10(c)).
 

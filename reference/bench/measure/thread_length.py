@@ -76,7 +76,7 @@ def longest_path_from(world: World, v: str) -> int:
 
 
 def _small_worlds(count: int, seed: int):
-    """``count`` generated worlds with a cycle, at most 12 vertices, from the thesis's families, random starts."""
+    """``count`` generated worlds with a cycle, at most 12 vertices, from the thesis's world families, random starts."""
     rng, made = random.Random(seed), 0
     while made < count:
         s = rng.randrange(10**6)

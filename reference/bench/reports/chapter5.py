@@ -6,10 +6,10 @@ figure with numbers; §5.1–§5.2.2, L1317–L1421).  The ``chapter-5`` experim
 
 * §5.1 (``undirected-vertex``) and §6.1 (``undirected-edge``) with the basic
   algorithm, beside the directional lighthouse (``directional-vertex``), on the
-  Chapter 3 families and sizes: success rate, the random walk's steps to a
+  Chapter 3 world families and sizes: success rate, the random walk's steps to a
   lighthouse, and cost ÷ the directional lighthouse's on the worlds both mapped;
 * §5.2.1 (``local-pair``, ``local-degree-list``), walk seeds 0, 1, 2 on each
-  world: the outcome distribution per family and per seed;
+  world: the outcome distribution per world family and per seed;
 * Algorithm 5.1 (``model-tree``) on small worlds (lattice-hole 3x3 … 5x5,
   random up to 12 vertices) and on Figure 3.4, with the n cue (``cue=n``) and
   with none (``max-models=1000``: without a cue no run on these worlds ever
@@ -90,7 +90,7 @@ def _share(values: list[float], pred: Callable[[float], bool]) -> float:
 
 
 def _rows(rows: list[dict]) -> dict[tuple, dict[int, dict]]:
-    """(family, algorithm, lighthouse, options, size) -> {world seed: row} over the latest rows."""
+    """(world family, algorithm, lighthouse, options, size) -> {world seed: row} over the latest rows."""
     out: dict[tuple, dict[int, dict]] = {}
     for r in latest(rows):
         key = (r["experiment"], r["algorithm"], lighthouse_of(r), r.get("options") or "", int(r["size"]))
@@ -153,7 +153,7 @@ def _lighthouse_section(runs: dict, light: str, quote: str, title: str) -> list[
 
 
 def _lighthouse_verdict(pairs: list[tuple[dict, dict]], thesis: list[tuple[dict, dict]], light: str) -> list[str]:
-    """Never a wrong map, over every family; walk steps "usually less than 50" over the thesis's families."""
+    """Never a wrong map, over every world family; walk steps "usually less than 50" over the thesis's."""
     if not pairs:
         return []
     outs = [a["outcome"] for a, _ in pairs]
@@ -265,7 +265,7 @@ def _model_verdict(runs: dict) -> list[str]:
 
 
 def _growth(runs: dict) -> list[tuple[str, float, float, float, float, float]]:
-    """(family, mean n, mean peak, max peak, mean s, max s) per size, for the n-cue runs of the small families."""
+    """(world family, mean n, mean peak, max peak, mean s, max s) per size, for the n-cue runs of the small ones."""
     out = []
     for fam in MODEL_FAMILIES[:2]:
         for size in _sizes(runs, fam):
@@ -362,7 +362,7 @@ def write_report(out: Path, wall: float | None = None, plots: bool = True) -> Pa
 
 
 def _plots(runs: dict, out: Path) -> list[Path] | None:
-    """Algorithm 5.1 with the n cue: peak live models and seconds against n, per small family (log scale)."""
+    """Algorithm 5.1 with the n cue: peak live models and seconds against n, per small world family (log scale)."""
     try:
         import matplotlib
         matplotlib.use("Agg")

@@ -2,7 +2,7 @@
 
 Part of ``topomark bench`` (:mod:`~topomark.reference.bench.experiments`).  The report
 summarises the runs of the experiment found in the file (one row per run key,
-the checked row preferred), per family, edge policy, algorithm and size: mean
+the checked row preferred), per world family, edge policy, algorithm and size: mean
 ± sd of the cost, cost/m, the bounds, the per-world reduction against basic
 with the thesis's figure beside it, and the thesis's tables and printed costs.
 These reports summarise Algorithm 3.1's own lighthouse (directional vertex
@@ -45,7 +45,7 @@ def lighthouse_of(row: dict) -> str:
 
 
 def summarize(rows: list[dict], lighthouse: str = DEFAULT_LIGHTHOUSE) -> dict[tuple, dict]:
-    """(family, algorithm, policy, size) -> summary statistics over seeds, for the runs with ``lighthouse``."""
+    """(world family, algorithm, policy, size) -> summary statistics over seeds, for the runs with ``lighthouse``."""
     groups: dict[tuple, list[dict]] = {}
     for r in latest(rows):
         if r.get("cost") in ("", None) or lighthouse_of(r) != lighthouse:

@@ -6,7 +6,7 @@ and calls them equivalent for mapping; it never measures what each costs.
 The ``lighthouses`` experiment (:mod:`~topomark.reference.bench.plan`) runs
 each lighthouse of :data:`~topomark.reference.explorers.lighthouses.LIGHTHOUSES`
 with the same algorithms on the same worlds and starts, and this report puts
-the costs side by side, per family, size and algorithm:
+the costs side by side, per world family, size and algorithm:
 
 * mean ± sd of the cost for each lighthouse, on the worlds every lighthouse
   ran, and each lighthouse's ratio of means to the directional vertex marker;
@@ -62,7 +62,7 @@ MECHANISM = (
 
 
 def by_world(rows: list[dict]) -> dict[tuple, dict[int, dict]]:
-    """(family, algorithm, size, lighthouse) -> {seed: row} over the finished nearest-policy runs."""
+    """(world family, algorithm, size, lighthouse) -> {seed: row} over the finished nearest-policy runs."""
     out: dict[tuple, dict[int, dict]] = {}
     for r in latest(rows):
         if r.get("cost") in ("", None) or (r.get("policy") or "nearest") != "nearest":
@@ -231,7 +231,7 @@ def _identical(parts: tuple[Part, ...], worlds: dict, a: str, b: str) -> tuple[i
 
 
 def _plots(parts: tuple[Part, ...], worlds: dict, out: Path) -> list[Path] | None:
-    """Per family: each lighthouse's ratio of mean cost to the directional vertex marker's, against the size."""
+    """Per world family: each lighthouse's ratio of mean cost to the directional vertex marker's, against the size."""
     try:
         import matplotlib
         matplotlib.use("Agg")

@@ -137,7 +137,7 @@ def correct(r: dict) -> bool:
 
 
 def groups(rows: list[dict], only_correct: bool = True) -> dict[tuple[str, str, str, int], list[dict]]:
-    """(family, algorithm, option set, size) -> the finished runs (one per key, the checked one preferred); only
+    """(world family, algorithm, option set, size) -> the finished runs (one per key, the checked one preferred); only
     those that mapped their world correctly unless ``only_correct`` is False (costs and means are over these)."""
     out: dict[tuple, list[dict]] = {}
     for r in latest(rows):
@@ -216,7 +216,7 @@ def _family_algs(exp, g: dict, algs: list[str]):
 
 
 def claim_verdicts(family: str, alg: str, g: dict, tried: dict, sizes: list[int]) -> dict:
-    """Over every world of (family, alg) with default options: maps, markers vs stated and checked (every run);
+    """Over every world of (world family, alg) with default options: maps, markers vs stated and checked (every run);
     the cost slope (over the sizes' correct runs)."""
     rs = [r for s in sizes for r in tried[(family, alg, "", s)]]
     c = CLAIMS[alg]
@@ -265,7 +265,7 @@ def claims_table(exp, g: dict, tried: dict, algs: list[str]) -> list[str]:
 
 
 def size_tables(exp, g: dict, tried: dict, algs: list[str]) -> list[str]:
-    """Per family and size: worlds and correct maps (every run); markers, cost, cost/m, cost/f (correct runs)."""
+    """Per world family and size: worlds and correct maps (every run); markers, cost, cost/m, cost/f (correct runs)."""
     lines = []
     for part in exp.parts:
         keys = [k for k in tried if k[0] == part.family and k[1] in algs and k[2] == ""]

@@ -49,7 +49,7 @@ def marked_places(used: float) -> int:
 
 
 def means(g: dict, family: str, alg: str, column: str = "cost", options: str = "") -> dict[int, float]:
-    """size -> mean of ``column`` over the worlds of (family, alg, options)."""
+    """size -> mean of ``column`` over the worlds of (world family, alg, options)."""
     return {k[3]: mean(rs, lambda r: num(r, column)) for k, rs in g.items()
             if k[0] == family and k[1] == alg and k[2] == options}
 
@@ -246,7 +246,7 @@ def _within(experiment: str, fam: str, pts: dict[int, float]) -> dict[int, float
 
 
 def plots(experiment: str, g: dict, out: Path) -> list[Path] | None:
-    """Log-scale cost (and marker) plots per family; None without matplotlib."""
+    """Log-scale cost (and marker) plots per world family; None without matplotlib."""
     try:
         import matplotlib
         matplotlib.use("Agg")

@@ -9,7 +9,7 @@ algorithms measure on the bench's worlds, and say whether it held:
 * **table-6.3** — every thread class (:data:`CLASSES`: the fixed l = ε thread is Algorithm 3.1 with the ``thread``
   lighthouse; l = ε carried, l = c(G), l ≫ m with knots and, for l < c(G), explore-explore with l = 8) on
   homogeneous lattices (Figure 6.23(a)) and lattices with 10% of the *edges* removed (Figure 6.23(b),
-  family ``lattice-edge-hole``).  Against its bound: cost/f with f = m²n, mn or m, and the test "cost grows no
+  world family ``lattice-edge-hole``).  Against its bound: cost/f with f = m²n, mn or m, and the test "cost grows no
   faster than f" (the least-squares slope of log mean cost against log mean f over the sizes ≤ 1.1, as for Tables
   6.1/6.2, :mod:`~topomark.reference.bench.reports.section62`).  The three findings of Figure 6.23 are checked size by size;
   l ≫ m with knots must stay under 3m on every world (each world above it is listed).
@@ -18,12 +18,12 @@ algorithms measure on the bench's worlds, and say whether it held:
   it acts as the l = c(G) algorithm" are checked (the latter world by world against Algorithm 6.7's cost).
 * **comparison** — Dudek et al.'s movable marker (undirected and directional), Algorithm 3.1 and its best
   enhancement (enh3), §6.2's O(m) markers (Case 3b, Σ k directional V-markers, extension-2) and two threads on the
-  same lattice-hole worlds (10% of the *vertices* removed, the Chapter 3/§6.2 family): cost and cost/m per size, and
+  same lattice-hole worlds (10% of the *vertices* removed, the Chapter 3/§6.2 world family): cost and cost/m per size, and
   where a single movable marker beats the single immovable one of Algorithm 3.1 and by how much.
 
 Sizes (the thesis gives none for Figure 6.23): 90, 202 and 360 — the 10×10, 15×15 and 20×20 grids (a size labels
-the grid as in the ``lattice`` family); Figure 6.24 is size 360.  The experiments and the ``lattice-edge-hole``
-family are registered by :mod:`~topomark.reference.bench.plan_threads` (imported here; its examples show the classes
+the grid as in the ``lattice`` world family); Figure 6.24 is size 360.  The experiments and the
+``lattice-edge-hole`` world family are registered by :mod:`~topomark.reference.bench.plan_threads` (imported here; its examples show the classes
 and lengths).
 """
 
@@ -57,7 +57,7 @@ SUMMARY_L2212 = ("\"Given the simplest form of thread, deterministic mapping is 
 
 
 def groups(rows: list[dict]) -> dict[tuple[str, str, str, str, int], list[dict]]:
-    """(family, algorithm, lighthouse, option set, size) -> the finished runs, one per key (the checked one
+    """(world family, algorithm, lighthouse, option set, size) -> the finished runs, one per key (the checked one
     preferred), every outcome."""
     out: dict[tuple, list[dict]] = {}
     for r in latest(rows):
