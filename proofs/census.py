@@ -61,7 +61,8 @@ from topomark.spec.robot import State, sense, step
 from topomark.spec.world import World
 
 __all__ = ["Machine", "machine", "minimise", "representatives", "language_code", "language_digest", "SizeRow",
-           "CensusResult", "census", "placement", "stderr_progress"]
+           "CensusResult", "census", "placement", "stderr_progress",
+           "marker_layouts", "marker_key", "recheck_pair"]
 
 Member = tuple[int, int, int, int, bytes]  # (n, m, world index, placement index, iso key of the marked world)
 
@@ -165,7 +166,7 @@ def language_digest(code: tuple) -> bytes:
 
 
 # -- one chunk of worlds (runs in a worker process) ----------------------------------
-def _layouts(class_name: str, world: World) -> Iterator[tuple[int, tuple, list[State]]]:
+def marker_layouts(class_name: str, world: World) -> Iterator[tuple[int, tuple, list[State]]]:
     """(index of its first placement, markers, starts) per marker layout, in ``placements`` order.
 
     :meth:`MarkerClass.placements` yields, for each vertex v and each layout
@@ -176,13 +177,13 @@ def _layouts(class_name: str, world: World) -> Iterator[tuple[int, tuple, list[S
     mc = marker_class(class_name)
     k = 0
     for v in world.vertices:
-        for markers in mc._layouts(world, v):
+        for markers in mc.layouts(world, v):
             starts = [(v, i) for i in range(world.degree(v))]
             yield k, tuple(markers), starts
             k += len(starts)
 
 
-def _marker_key(markers: Iterable) -> frozenset:
+def marker_key(markers: Iterable) -> frozenset:
     """The layout as a set (an edge marker's two spellings (u, v) and (v, u) are one layout)."""
     return frozenset((m.at, m.count, m.points_to) if isinstance(m, VertexMarker)
                      else (frozenset(m.between), m.count, m.head) for m in markers)
@@ -196,12 +197,12 @@ def _world_languages(class_name: str, index: int, world: World) -> Iterator[tupl
     on this world — the world's index (worlds of the enumeration are pairwise
     non-isomorphic, so marked worlds on different ones never are).
     """
-    layouts = list(_layouts(class_name, world))
-    single = len({_marker_key(markers) for _, markers, _ in layouts}) == 1
+    layouts = list(marker_layouts(class_name, world))
+    single = len({marker_key(markers) for _, markers, _ in layouts}) == 1
     base = machine(world)
     cache: dict[frozenset, tuple] = {}
     for k, markers, starts in layouts:
-        key = _marker_key(markers)
+        key = marker_key(markers)
         if key not in cache:
             marked = World(world.rotation, markers)
             mach = machine(marked, base)
@@ -325,10 +326,10 @@ def _rows(langs: dict[bytes, list], sizes: dict[int, list[int]], min_n: int, max
 
 def _recheck(best: list[Member], worlds: list[World], class_name: str) -> tuple[World, World]:
     """Rebuild the two members of an ambiguous class and re-check them with bisim and find_isomorphism."""
-    return _recheck_pair([(worlds[mem[2]], mem[3]) for mem in best], class_name)
+    return recheck_pair([(worlds[mem[2]], mem[3]) for mem in best], class_name)
 
 
-def _recheck_pair(members: list[tuple[World, int]], class_name: str) -> tuple[World, World]:
+def recheck_pair(members: list[tuple[World, int]], class_name: str) -> tuple[World, World]:
     """Placements ``(world, k)`` of an ambiguous class, re-checked: indistinguishable, not isomorphic."""
     a, b = (placement(world, class_name, k) for world, k in members)
     if distinguishing_sequence(a, b) is not None or find_isomorphism(a, b, markers=True).isomorphic:

@@ -48,10 +48,10 @@ from typing import Any, Iterator
 import networkx as nx
 import numpy as np
 
-from topomark.proofs.census import _layouts, _marker_key, machine, minimise
+from topomark.proofs.census import machine, marker_key, marker_layouts, minimise
 from topomark.proofs.census_language import start_digests
 from topomark.proofs.census_shards import combine, done_path, map_path, records, shard_of, write_atomic, write_json
-from topomark.proofs.enumerate import _automorphisms, _world, connected_graphs
+from topomark.proofs.enumerate import connected_graphs, graph_automorphisms, world_of_rotation
 from topomark.spec.world import World
 
 __all__ = ["Unit", "plan", "estimate", "rotation_count", "run_map", "unit_worlds", "world_at", "world_records",
@@ -67,7 +67,7 @@ def _graphs(n: int, max_degree: int) -> tuple[nx.Graph, ...]:
 
 @lru_cache(maxsize=64)
 def _autos(n: int, max_degree: int, gi: int) -> tuple[dict[int, int], ...]:
-    return tuple(_automorphisms(_graphs(n, max_degree)[gi]))
+    return tuple(graph_automorphisms(_graphs(n, max_degree)[gi]))
 
 
 def estimate(g: nx.Graph, autos: int) -> int:
@@ -175,17 +175,17 @@ def unit_worlds(unit: Unit, max_degree: int) -> Iterator[tuple[int, World, tuple
         digits = _digits(rank, radices)
         fixing = _stabiliser(digits, actions)
         if fixing is not None:
-            yield rank, _world(tuple(choices[v][d] for v, d in enumerate(digits))), fixing
+            yield rank, world_of_rotation(tuple(choices[v][d] for v, d in enumerate(digits))), fixing
 
 
 def world_at(n: int, max_degree: int, gi: int, rank: int) -> World:
     """The world a record names: the rotation system of rank ``rank`` of graph ``gi``."""
     choices, radices, _ = _graph_data(n, max_degree, gi)
-    return _world(tuple(choices[v][d] for v, d in enumerate(_digits(rank, radices))))
+    return world_of_rotation(tuple(choices[v][d] for v, d in enumerate(_digits(rank, radices))))
 
 
 def _layout_code(key: frozenset, sigma: dict[int, int]) -> tuple:
-    """A layout (``census._marker_key``) moved by a vertex permutation, as a sorted tuple of ints."""
+    """A layout (``census.marker_key``) moved by a vertex permutation, as a sorted tuple of ints."""
     def f(name: str | None) -> int:
         return -1 if name is None else sigma[int(name[1:])]
 
@@ -230,9 +230,9 @@ def world_records(class_name: str, world_id: tuple[int, int, int], world: World,
     base = machine(world)
     cache: dict[frozenset, tuple] = {}
     placements = 0
-    for k, markers, starts in _layouts(class_name, world):
+    for k, markers, starts in marker_layouts(class_name, world):
         placements += len(starts)
-        key = _marker_key(markers)
+        key = marker_key(markers)
         if key not in cache:
             mach = machine(marked(world, markers), base) if markers else base
             block = minimise(mach)

@@ -33,7 +33,7 @@ import time
 from pathlib import Path
 from typing import Any, Callable
 
-from topomark.proofs.census import CensusResult, SizeRow, _recheck_pair
+from topomark.proofs.census import CensusResult, SizeRow, recheck_pair
 from topomark.proofs.census_exec import Executor, Progress, executor
 from topomark.proofs.census_map import plan, run_map, world_at
 from topomark.proofs.census_shards import (FORMAT, done_path, merge_summaries, read_json, read_shard, reduce_path,
@@ -173,6 +173,6 @@ def sharded_census(class_name: str, max_vertices: int, max_degree: int, root: st
 
     if verify_all:
         for pair in total["pairs"]:
-            _recheck_pair([rebuild(m) for m in pair], class_name)
-    pair = None if total["pair"] is None else _recheck_pair([rebuild(m) for m in total["pair"]], class_name)
+            recheck_pair([rebuild(m) for m in pair], class_name)
+    pair = None if total["pair"] is None else recheck_pair([rebuild(m) for m in total["pair"]], class_name)
     return CensusResult(class_name, max_vertices, max_degree, rows, pair, time.perf_counter() - t0)

@@ -48,7 +48,8 @@ from topomark.spec.signature import signature_at
 from topomark.spec.world import World
 
 __all__ = ["connected_graphs", "rotation_systems", "embedded_worlds", "canonical_form", "count_by_size",
-           "ATLAS_MAX_VERTICES", "MAX_VERTICES"]
+           "ATLAS_MAX_VERTICES", "MAX_VERTICES",
+           "graph_automorphisms", "world_of_rotation"]
 
 ATLAS_MAX_VERTICES = 7
 MAX_VERTICES = 10
@@ -88,7 +89,7 @@ def rotation_systems(g: nx.Graph) -> Iterator[tuple[tuple[int, ...], ...]]:
     return itertools.product(*choices)
 
 
-def _automorphisms(g: nx.Graph) -> list[dict[int, int]]:
+def graph_automorphisms(g: nx.Graph) -> list[dict[int, int]]:
     return list(GraphMatcher(g, g).isomorphisms_iter())
 
 
@@ -117,7 +118,7 @@ def _orbit_representatives(g: nx.Graph) -> Iterator[tuple[tuple[int, ...], ...]]
     """
     n = g.number_of_nodes()
     maps = []
-    for sigma in _automorphisms(g):
+    for sigma in graph_automorphisms(g):
         if any(k != v for k, v in sigma.items()):
             inverse = [0] * n
             for k, v in sigma.items():
@@ -128,7 +129,7 @@ def _orbit_representatives(g: nx.Graph) -> Iterator[tuple[tuple[int, ...], ...]]
             yield rot
 
 
-def _world(rot: tuple[tuple[int, ...], ...]) -> World:
+def world_of_rotation(rot: tuple[tuple[int, ...], ...]) -> World:
     return World({f"v{v}": [f"v{w}" for w in ns] for v, ns in enumerate(rot)})
 
 
@@ -146,7 +147,7 @@ def embedded_worlds(max_vertices: int, max_degree: int, min_vertices: int = 2) -
     for n in range(max(min_vertices, 2), max_vertices + 1):
         for g in connected_graphs(n, max_degree):
             for rot in _orbit_representatives(g):
-                yield _world(rot)
+                yield world_of_rotation(rot)
 
 
 def count_by_size(max_vertices: int, max_degree: int, min_vertices: int = 2) -> dict[int, int]:

@@ -26,8 +26,8 @@ from topomark.spec.robot import sense, step
 from topomark.spec.signature import Signature
 from topomark.spec.world import Start, World
 
-from topomark.proofs.z3pair import _PairEncoding
-from topomark.proofs.z3world import _WorldVars
+from topomark.proofs.z3pair import PairEncoding
+from topomark.proofs.z3world import WorldVars
 
 __all__ = ["decode_pair", "reachable_relation", "covering_walk", "recheck"]
 
@@ -47,7 +47,7 @@ def _name(v: int) -> str:
     return f"v{v}"
 
 
-def _decode_world(model: z3.ModelRef, wv: _WorldVars) -> World:
+def _decode_world(model: z3.ModelRef, wv: WorldVars) -> World:
     rotation = {}
     for v in range(wv.n):
         d = _value(model, wv.deg[v])
@@ -71,7 +71,7 @@ def _decode_world(model: z3.ModelRef, wv: _WorldVars) -> World:
     return World(rotation, markers, Start(v0, rotation[v0][0]))
 
 
-def decode_pair(model: z3.ModelRef, enc: _PairEncoding) -> tuple[World, World, frozenset]:
+def decode_pair(model: z3.ModelRef, enc: PairEncoding) -> tuple[World, World, frozenset]:
     """The two worlds and the relation R of a model (states named as in the worlds)."""
     a, b = _decode_world(model, enc.A), _decode_world(model, enc.B)
     rel = frozenset(((_name(p[0]), p[1]), (_name(q[0]), q[1])) for (p, q), lit in enc.R.items()

@@ -3,7 +3,7 @@
 :func:`canonical_labelling` numbers a world's vertices as the symmetry
 breaking of :mod:`topomark.proofs.z3world` does (BFS from the start, exit 0
 on the parent edge); :func:`pair_is_model` pins both worlds of a
-:class:`~topomark.proofs.z3pair._PairEncoding` to given worlds and asks Z3
+:class:`~topomark.proofs.z3pair.PairEncoding` to given worlds and asks Z3
 whether the formula accepts them.  With both worlds pinned the formula
 accepts the thesis's counterexample pairs (Figures 3.3, 3.4, 3.21(a),
 6.1(a)) and rejects the distinguishable ones (Figures 3.6, 3.21(b), 6.1(b))
@@ -19,9 +19,9 @@ import z3
 from topomark.spec.marker import EdgeMarker
 from topomark.spec.world import World
 
-from topomark.proofs.z3formula import _not
-from topomark.proofs.z3pair import _PairEncoding
-from topomark.proofs.z3world import _WorldVars
+from topomark.proofs.z3formula import not_
+from topomark.proofs.z3pair import PairEncoding
+from topomark.proofs.z3world import WorldVars
 
 __all__ = ["canonical_labelling", "pair_is_model"]
 
@@ -54,7 +54,7 @@ def _other_marked(world: World) -> str | None:
     return None
 
 
-def _fixing_literals(wv: _WorldVars, world: World) -> list[str]:
+def _fixing_literals(wv: WorldVars, world: World) -> list[str]:
     """Literals that pin the variables of ``wv`` to ``world`` (in its canonical labelling)."""
     order, shift = canonical_labelling(world)
     lits = []
@@ -70,7 +70,7 @@ def _fixing_literals(wv: _WorldVars, world: World) -> list[str]:
         lits.append(wv.e[next(i for i in range(d0) if world.neighbour(at, (i + shift[at]) % d0) == other)])
     if wv.head0 is not None:
         head = next(m.head for m in world.markers if isinstance(m, EdgeMarker))
-        lits.append(wv.head0 if head == world.start.at else _not(wv.head0))
+        lits.append(wv.head0 if head == world.start.at else not_(wv.head0))
     return [x for x in lits if x is not True]
 
 
@@ -81,7 +81,7 @@ def pair_is_model(marker: str, a: World, b: World, planar: bool = False) -> str:
     largest degree.  Used to test the encoding on the thesis's figure pairs.
     """
     dmax = max(w.degree(v) for w in (a, b) for v in w.vertices)
-    enc = _PairEncoding(marker, a.n, b.n, dmax, planar)
+    enc = PairEncoding(marker, a.n, b.n, dmax, planar)
     solver = z3.SolverFor("QF_FD")
     solver.from_string(enc.b.text())
     lits = _fixing_literals(enc.A, a) + _fixing_literals(enc.B, b)

@@ -2,7 +2,7 @@
 
 Formulas are built as SMT-LIB text (literals are symbol names or Python
 bools) and handed to Z3 in one piece: far faster than one Python API call
-per clause.  :class:`_Builder` collects declarations and assertions, with
+per clause.  :class:`Builder` collects declarations and assertions, with
 one-hot variables as dicts value -> literal; the connectives fold the
 constants ``True``/``False`` away.
 """
@@ -14,10 +14,10 @@ from typing import Iterable
 
 from topomark.spec.errors import CheckFailure
 
-__all__: list[str] = []  # internal to the z3search modules
+__all__ = ["Builder", "literal", "or_", "and_", "not_", "iff"]  # for the z3search modules
 
 
-class _Builder:
+class Builder:
     """Collects declarations and assertions; one-hot variables are dicts value -> literal."""
 
     def __init__(self):
@@ -46,7 +46,7 @@ class _Builder:
     def onehot(self, name: str, values: Iterable) -> dict:
         vs = {c: self.var(f"{name}_{c}") for c in values}
         lits = list(vs.values())
-        self.add(_or(lits))
+        self.add(or_(lits))
         if len(lits) > 1:
             self.asserts.append(f"(assert ((_ at-most 1) {' '.join(lits)}))")
         return vs
@@ -56,13 +56,13 @@ class _Builder:
         ps = [p for p in premises if p is not True]
         if any(p is False for p in ps) or conclusion is True:
             return
-        self.add(_or([_not(p) for p in ps] + [conclusion]))
+        self.add(or_([not_(p) for p in ps] + [conclusion]))
 
     def text(self) -> str:
         return "\n".join(self.decls + self.asserts)
 
 
-def _lit(onehot: dict, value):
+def literal(onehot: dict, value):
     """The literal 'variable = value' (False if the value is outside the domain)."""
     return onehot.get(value, False)
 
@@ -77,26 +77,26 @@ def _connective(op: str, unit: bool, items):
     return items[0] if len(items) == 1 else f"({op} {' '.join(items)})"
 
 
-def _or(items):
+def or_(items):
     return _connective("or", False, items)
 
 
-def _and(items):
+def and_(items):
     return _connective("and", True, items)
 
 
-def _not(x):
+def not_(x):
     if isinstance(x, bool):
         return not x
     return x[5:-1] if x.startswith("(not ") else f"(not {x})"
 
 
-def _iff(a, b):
+def iff(a, b):
     if isinstance(a, bool) and isinstance(b, bool):
         return a == b
     if isinstance(a, bool):
-        return b if a else _not(b)
+        return b if a else not_(b)
     if isinstance(b, bool):
-        return a if b else _not(a)
+        return a if b else not_(a)
     return f"(= {a} {b})"
 

@@ -9,24 +9,24 @@ for two/three undirected markers) or the marked edge (0, tv[0,e]) is;
 The *features* of a state (v, j) are everything but the degree that
 :func:`~topomark.spec.signature.signature_at` reads there (vertex-marker
 count, ``V-dir``, ``E-p`` position and H/T), each a one-hot dict value ->
-literal; :func:`_sig_equal` says two states have equal signatures, as the
+literal; :func:`sig_equal` says two states have equal signatures, as the
 indistinguishability relation of :mod:`topomark.proofs.z3pair` requires.
 """
 
 from __future__ import annotations
 
-from topomark.proofs.z3formula import _and, _iff, _not, _or
+from topomark.proofs.z3formula import and_, iff, not_, or_
 
-__all__: list[str] = []  # internal to the z3search modules
+__all__ = ["MarkerVars", "sig_equal"]  # for the z3search modules
 
 _NEEDS_EXIT = {"directional-vertex", "two-undirected-vertex", "three-undirected-vertex", "undirected-edge",
                "directional-edge", "vertex-and-edge"}
 
 
-class _MarkerVars:
+class MarkerVars:
     """The marker variables ``e``, ``head0``, ``nb``, ``mk`` of a world and its signature features.
 
-    A mixin of :class:`~topomark.proofs.z3world._WorldVars`, which supplies the
+    A mixin of :class:`~topomark.proofs.z3world.WorldVars`, which supplies the
     builder ``b``, ``n``, ``D``, ``marker``, ``deg``, ``tv``, ``te`` and ``exists``.
     """
 
@@ -42,14 +42,14 @@ class _MarkerVars:
             b.implies([self.e[x]], self.exists(0, x))
         for v in range(1, n):
             self.nb[v] = b.var(f"{self.tag}nb{v}")
-            b.add(_iff(self.nb[v], _or([_and([self.e[x], self.tv[0, x][v]]) for x in range(D)])))
+            b.add(iff(self.nb[v], or_([and_([self.e[x], self.tv[0, x][v]]) for x in range(D)])))
         if self.marker in ("undirected-edge", "directional-edge", "vertex-and-edge"):
             for y in range(D):
                 self.mk[0, y] = self.e[y]
             for v in range(1, n):
                 for y in range(D):
                     self.mk[v, y] = b.var(f"{self.tag}mk{v},{y}")
-                    b.add(_iff(self.mk[v, y], _or([_and([self.e[x], self.tv[0, x][v], self.te[0, x][y]])
+                    b.add(iff(self.mk[v, y], or_([and_([self.e[x], self.tv[0, x][v], self.te[0, x][y]])
                                                       for x in range(D)])))
 
     # -- signature features (each a dict value -> literal/bool, exactly one true) --
@@ -59,34 +59,34 @@ class _MarkerVars:
         if m in ("undirected-vertex", "directional-vertex", "vertex-and-edge"):
             feats.append({1: v == 0, 0: v != 0})
         elif m == "two-undirected-vertex":
-            feats.append({1: True} if v == 0 else {1: self.nb[v], 0: _not(self.nb[v])})
+            feats.append({1: True} if v == 0 else {1: self.nb[v], 0: not_(self.nb[v])})
         elif m == "three-undirected-vertex":
-            feats.append({1: True} if v == 0 else {2: self.nb[v], 0: _not(self.nb[v])})
+            feats.append({1: True} if v == 0 else {2: self.nb[v], 0: not_(self.nb[v])})
         if m == "directional-vertex":
             feats.append(self._relative(v, j, {y: self.e[y] for y in range(self.D)}) if v == 0 else {None: True})
         if m in ("undirected-edge", "directional-edge", "vertex-and-edge"):
             feats.append(self._relative(v, j, {y: self.mk[v, y] for y in range(self.D)}))
         if m == "directional-edge":
             if v == 0:
-                feats.append({"H": self.head0, "T": _not(self.head0)})
+                feats.append({"H": self.head0, "T": not_(self.head0)})
             else:
-                feats.append({"H": _and([self.nb[v], _not(self.head0)]), "T": _and([self.nb[v], self.head0]),
-                              None: _not(self.nb[v])})
+                feats.append({"H": and_([self.nb[v], not_(self.head0)]), "T": and_([self.nb[v], self.head0]),
+                              None: not_(self.nb[v])})
         return feats
 
     def _relative(self, v: int, j: int, marked: dict) -> dict:
         """Value (y - j) mod deg(v) of the marked exit y at v, None if no exit is marked."""
-        out: dict = {None: _not(_or(marked.values()))}
+        out: dict = {None: not_(or_(marked.values()))}
         for c in range(self.D):
-            out[c] = _or(_and([self.deg[v][d], marked[y]]) for d in range(1, self.D + 1)
+            out[c] = or_(and_([self.deg[v][d], marked[y]]) for d in range(1, self.D + 1)
                          for y in range(d) if (y - j) % d == c)
         return out
 
 
-def _sig_equal(a: _MarkerVars, p: tuple[int, int], bw: _MarkerVars, q: tuple[int, int]):
+def sig_equal(a: MarkerVars, p: tuple[int, int], bw: MarkerVars, q: tuple[int, int]):
     """Expression: the signature at A-state p equals the one at B-state q."""
-    parts = [_iff(a.deg[p[0]][d], bw.deg[q[0]][d]) for d in range(1, a.D + 1)]
+    parts = [iff(a.deg[p[0]][d], bw.deg[q[0]][d]) for d in range(1, a.D + 1)]
     for fa, fb in zip(a.features(*p), bw.features(*q)):
-        parts += [_iff(fa.get(c, False), fb.get(c, False)) for c in set(fa) | set(fb)]
-    return _and(parts)
+        parts += [iff(fa.get(c, False), fb.get(c, False)) for c in set(fa) | set(fb)]
+    return and_(parts)
 

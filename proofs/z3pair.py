@@ -1,7 +1,7 @@
 """The pair encoding of the Z3 search: two worlds indistinguishable but not extended-isomorphic (thesis §3.1.1, §3.1.3, §3.2).
 
-One :class:`_PairEncoding` per size pair n_A <= n_B (the relation is
-symmetric): two :class:`~topomark.proofs.z3world._WorldVars` sharing one
+One :class:`PairEncoding` per size pair n_A <= n_B (the relation is
+symmetric): two :class:`~topomark.proofs.z3world.WorldVars` sharing one
 formula builder, plus the two properties below.
 
 *Indistinguishability.*  Bool ``R[(v,j),(w,k)]`` over valid state pairs with
@@ -53,11 +53,11 @@ from __future__ import annotations
 import itertools
 from typing import Iterator
 
-from topomark.proofs.z3formula import _and, _Builder, _iff, _lit, _not, _or
-from topomark.proofs.z3markers import _sig_equal
-from topomark.proofs.z3world import NULL, _WorldVars
+from topomark.proofs.z3formula import Builder, and_, iff, literal, not_, or_
+from topomark.proofs.z3markers import sig_equal
+from topomark.proofs.z3world import NULL, WorldVars
 
-__all__: list[str] = []  # internal to the z3search modules
+__all__ = ["PairEncoding"]  # for the z3search modules
 
 # which vertex of B an isomorphism may send A's start vertex to
 _ANCHORS = {
@@ -67,14 +67,14 @@ _ANCHORS = {
 }
 
 
-class _PairEncoding:
+class PairEncoding:
     """Bisimilar and non-isomorphic: worlds A (n_a vertices) and B (n_b vertices)."""
 
     def __init__(self, marker: str, n_a: int, n_b: int, dmax: int, planar: bool = False):
-        self.b = _Builder()
+        self.b = Builder()
         self.marker, self.D = marker, dmax
-        self.A = _WorldVars(self.b, "A", n_a, dmax, marker, planar)
-        self.B = _WorldVars(self.b, "B", n_b, dmax, marker, planar)
+        self.A = WorldVars(self.b, "A", n_a, dmax, marker, planar)
+        self.B = WorldVars(self.b, "B", n_b, dmax, marker, planar)
         self._sigcache: dict = {}
         self._relation()
         if n_a == n_b:
@@ -82,10 +82,10 @@ class _PairEncoding:
 
     def sig_eq(self, p, q):
         if (p, q) not in self._sigcache:
-            expr = _sig_equal(self.A, p, self.B, q)
+            expr = sig_equal(self.A, p, self.B, q)
             if not isinstance(expr, bool):
                 lit = self.b.var(f"SE{p},{q}")
-                self.b.add(_iff(lit, expr))
+                self.b.add(iff(lit, expr))
                 expr = lit
             self._sigcache[p, q] = expr
         return self._sigcache[p, q]
@@ -133,7 +133,7 @@ class _PairEncoding:
 
     def _non_isomorphic(self) -> None:
         for t, anchor in enumerate(self._anchors()):
-            self.b.add(_or([self._excused(anchor)] + self._defects(t, anchor)))
+            self.b.add(or_([self._excused(anchor)] + self._defects(t, anchor)))
 
     def _anchor_vertex(self, anchor):
         w0, _ = anchor
@@ -142,7 +142,7 @@ class _PairEncoding:
     def _excused(self, anchor):
         """The anchor is not a dart of B (its entry index is beyond the degree)."""
         B, (_, k0) = self.B, anchor
-        return _or(_and([lit, _or(B.deg[w][d] for d in range(1, k0 + 1))])
+        return or_(and_([lit, or_(B.deg[w][d] for d in range(1, k0 + 1))])
                    for w, lit in self._anchor_vertex(anchor).items())
 
     def _defects(self, t: int, anchor) -> list:
@@ -194,7 +194,7 @@ class _PairEncoding:
 
     def _signature_defects(self, im: dict) -> list:
         """(a) degree or markers not preserved: sig(v, 0) differs from the sig of its image state."""
-        return [_and([lw, lk, _not(self.sig_eq((v, 0), (w, k)))])
+        return [and_([lw, lk, not_(self.sig_eq((v, 0), (w, k)))])
                 for v in range(self.A.n) for w, lw in im["iw"][v].items() for k, lk in im["ik"][v].items()]
 
     def _dart_defects(self, im: dict) -> list:
@@ -207,13 +207,13 @@ class _PairEncoding:
                     if v2 == NULL:
                         continue
                     for j2, lj in A.te[v, i].items():
-                        mism = _or([_and([rdw[w], _not(_lit(im["iw"][v2], w))]) for w in rdw] +
-                                   [_and([rdk[k], _not(im["idk"][v2, j2][k])]) for k in range(D)])
-                        out.append(_and([lv, lj, mism]))
+                        mism = or_([and_([rdw[w], not_(literal(im["iw"][v2], w))]) for w in rdw] +
+                                   [and_([rdk[k], not_(im["idk"][v2, j2][k])]) for k in range(D)])
+                        out.append(and_([lv, lj, mism]))
         return out
 
     def _collisions(self, im: dict) -> list:
         """(c) two vertices of A with the same image vertex."""
         iw = im["iw"]
-        return [_and([iw[v][w], iw[v2][w]]) for v, v2 in itertools.combinations(range(self.A.n), 2)
+        return [and_([iw[v][w], iw[v2][w]]) for v, v2 in itertools.combinations(range(self.A.n), 2)
                 for w in range(self.B.n)]

@@ -71,10 +71,10 @@ from topomark.spec.markerclass import marker_class
 
 from topomark.proofs.z3decode import covering_walk, decode_pair, reachable_relation, recheck
 from topomark.proofs.z3fixing import canonical_labelling, pair_is_model
-from topomark.proofs.z3formula import _Builder  # noqa: F401 - re-exported for tests/test_z3search.py
-from topomark.proofs.z3pair import _PairEncoding
+from topomark.proofs.z3formula import Builder  # noqa: F401 - re-exported for tests/test_z3search.py
+from topomark.proofs.z3pair import PairEncoding
 from topomark.proofs.z3results import ProofReport, SearchResult, SizeCheck, relation_to_json
-from topomark.proofs.z3world import _WorldVars  # noqa: F401 - re-exported for tests/test_z3search.py
+from topomark.proofs.z3world import WorldVars  # noqa: F401 - re-exported for tests/test_z3search.py
 
 __all__ = [
     "SearchResult", "ProofReport", "SizeCheck", "search", "prove", "size_pairs", "decode_pair",
@@ -116,7 +116,7 @@ def _validate(marker: str, max_vertices: int, max_degree: int, min_vertices: int
 
 def _check_pair(marker, n_a, n_b, dmax, remaining, planar=False):
     started = time.monotonic()
-    enc = _PairEncoding(marker, n_a, n_b, dmax, planar)
+    enc = PairEncoding(marker, n_a, n_b, dmax, planar)
     solver = z3.SolverFor("QF_FD")
     if remaining is not None:
         left = remaining - (time.monotonic() - started)

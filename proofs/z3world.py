@@ -32,18 +32,18 @@ pseudo-Boolean equation.
 
 from __future__ import annotations
 
-from topomark.proofs.z3formula import _Builder, _iff, _lit, _not, _or
-from topomark.proofs.z3markers import _MarkerVars
+from topomark.proofs.z3formula import Builder, iff, literal, not_, or_
+from topomark.proofs.z3markers import MarkerVars
 
-__all__: list[str] = []  # internal to the z3search modules
+__all__ = ["WorldVars"]  # for the z3search modules
 
 NULL = -1
 
 
-class _WorldVars(_MarkerVars):
+class WorldVars(MarkerVars):
     """The variables and constraints of one world with exactly ``n`` vertices (see module docstring)."""
 
-    def __init__(self, b: _Builder, tag: str, n: int, dmax: int, marker: str, planar: bool = False):
+    def __init__(self, b: Builder, tag: str, n: int, dmax: int, marker: str, planar: bool = False):
         self.b, self.tag, self.n, self.D, self.marker = b, tag, n, dmax, marker
         V, D = range(n), range(dmax)
         self.deg = {v: b.onehot(f"{tag}deg{v}", range(1, dmax + 1)) for v in V}
@@ -58,13 +58,13 @@ class _WorldVars(_MarkerVars):
 
     def exists(self, v: int, i: int):
         """Literal: exit i of v exists."""
-        return _not(self.tv[v, i][NULL])
+        return not_(self.tv[v, i][NULL])
 
     def _graph(self) -> None:
         b, n, D = self.b, self.n, self.D
         for v in range(n):
             for i in range(D):
-                b.add(_iff(self.tv[v, i][NULL], _or(self.deg[v][d] for d in range(1, i + 1))))
+                b.add(iff(self.tv[v, i][NULL], or_(self.deg[v][d] for d in range(1, i + 1))))
                 b.implies([self.tv[v, i][NULL]], self.te[v, i][0])
                 for w in range(n):
                     if w == v:
@@ -86,7 +86,7 @@ class _WorldVars(_MarkerVars):
                 b.implies([lit], self.te[u, i][0])
                 for u2 in range(u):
                     for i2 in range(D):
-                        b.implies([lit], _not(self.tv[u2, i2][v]))
+                        b.implies([lit], not_(self.tv[u2, i2][v]))
         for v in range(1, n - 1):
             for a, la in self.par[v].items():
                 for c, lc in self.par[v + 1].items():
@@ -141,7 +141,7 @@ class _WorldVars(_MarkerVars):
                         b.implies([lw, self.deg[w][d], self.te[v, i][j]], phk[v, i][(j + 1) % d])
             b.implies([self.tv[v, i][NULL]], phk[v, i][0])
             lab[v, i] = b.onehot(f"{self.tag}lab{v},{i}", [NULL] + list(range(idx[v, i] + 1)))
-            b.add(_iff(lab[v, i][NULL], self.tv[v, i][NULL]))
+            b.add(iff(lab[v, i][NULL], self.tv[v, i][NULL]))
             rank[v, i] = b.onehot(f"{self.tag}rank{v},{i}", range(len(darts)))
             rep[v, i] = lab[v, i][idx[v, i]]
         for (v, i) in darts:
@@ -151,10 +151,10 @@ class _WorldVars(_MarkerVars):
                 for k, lk in phk[v, i].items():
                     for c, lc in lab[v, i].items():
                         if c != NULL:
-                            b.implies([lw, lk, lc], _lit(lab[w, k], c))
+                            b.implies([lw, lk, lc], literal(lab[w, k], c))
                     for r, lr in rank[v, i].items():
-                        nxt = _lit(rank[w, k], r + 1)
-                        b.implies([lw, lk, lr, _not(rep[w, k])], nxt)
+                        nxt = literal(rank[w, k], r + 1)
+                        b.implies([lw, lk, lr, not_(rep[w, k])], nxt)
         weights = [(2, rep[d]) for d in darts] + [(D - d, self.deg[v][d]) for v in range(n)
                                                    for d in range(1, D + 1) if D - d > 0]
         total = 4 - 2 * n + n * D

@@ -5,7 +5,7 @@
 * :mod:`.bench` — the thesis's experiments: sweeps, plans, the run store, reports and timing scripts;
 * :mod:`.replay` — re-checking a trace's every claim against its world;
 * :mod:`.run` — a checked exploration: the simulator (the truth), the checker, the map check, ``explore()``;
-* :mod:`.trace` — the trace format: records, header, families, reader and sinks;
+* :mod:`.trace` — the trace format: records, header, algorithm families, reader and sinks;
 * :mod:`.algorithms` — the registry: every algorithm with its thesis reference, kit, bounds and checks;
 * :mod:`.explorers` — the algorithms themselves, behind the wall: they see only the robot interface;
 * :mod:`.worlds` — world generators and the hypothesis strategies;

@@ -37,6 +37,8 @@ __all__ = [
     "OUTCOMES",
     "MAX_MESSAGE",
     "bounded",
+    "clip",
+    "CLIP_NOTE",
     "EXIT_OK",
     "EXIT_NEGATIVE",
     "EXIT_BAD_INPUT",
@@ -66,6 +68,28 @@ def bounded(message: str, limit: int = MAX_MESSAGE) -> str:
         return message
     head, tail = limit * 7 // 10, limit * 2 // 10
     return f"{message[:head]} ... ({len(message) - head - tail:,} characters left out) ... {message[-tail:]}"
+
+
+CLIP_NOTE = " ({n:,} characters)"
+"""The note :func:`clip` puts after a cut text by default; ``{n}`` is the text's full length."""
+
+
+def clip(text: str, limit: int = 120, *, note: str = CLIP_NOTE, quote: bool = False) -> str:
+    """``text`` for a message, cut when longer than ``limit`` characters (a quoted value can be megabytes long).
+
+    A cut text keeps its first ``limit`` characters, then "..." and ``note`` formatted with the full length
+    ``n``.  With ``note=""`` the length is left out and the "..." counts in ``limit``: ``limit − 3`` characters
+    are kept, so the result is never longer than ``limit``.  ``quote`` shows the kept part as ``repr`` does.
+
+    >>> clip("x" * 10, 4), clip("x" * 10, 4, note=" ({n} in all)"), clip("x" * 10, 4, note="")
+    ('xxxx... (10 characters)', 'xxxx... (10 in all)', 'x...')
+    >>> clip("abc", quote=True), clip("abcdef", 2, quote=True)
+    ("'abc'", "'ab'... (6 characters)")
+    """
+    if len(text) <= limit:
+        return repr(text) if quote else text
+    kept = text[:limit] if note else text[:max(0, limit - 3)]
+    return (repr(kept) if quote else kept) + "..." + note.format(n=len(text))
 
 
 class InvalidInput(TopomarkError, ValueError):

@@ -239,11 +239,11 @@ class IncrementalInvariants:
         return bad
 
     def _marks(self, v: int) -> Violation | None:
-        from topomark.spec.isomorphism import _describe_marks, _marks_at
+        from topomark.spec.isomorphism import describe_marks, marks_at
         x = self.f[v]
-        ma, mb = _marks_at(self.S, v, self.r[v]), _marks_at(self.world, x, 0)
+        ma, mb = marks_at(self.S, v, self.r[v]), marks_at(self.world, x, 0)
         if ma != mb:
-            return Violation("I-1", f"map vertex {v} (world {x!r})", _describe_marks(mb), _describe_marks(ma),
+            return Violation("I-1", f"map vertex {v} (world {x!r})", describe_marks(mb), describe_marks(ma),
                              "markers are not preserved")
         return None
 

@@ -38,7 +38,8 @@ from typing import Any, Hashable
 from topomark.spec.errors import Violation
 from topomark.spec.signature import signature_at
 
-__all__ = ["Witness", "IsoResult", "anchored", "find_isomorphism", "verify_witness", "local_class"]
+__all__ = ["Witness", "IsoResult", "anchored", "find_isomorphism", "verify_witness", "local_class", "marks_at",
+           "describe_marks"]
 
 
 @dataclass(frozen=True)
@@ -76,7 +77,7 @@ def _mismatch(where: str, expected: str, found: str, detail: str = "") -> Violat
     return Violation("extended isomorphism", where, expected, found, detail)
 
 
-def _marks_at(g, v, r: int) -> tuple:
+def marks_at(g, v, r: int) -> tuple:
     """The marks at ``v`` with exit indices shifted by ``r`` (for comparison across graphs).
 
     Derived from what a robot senses (:func:`~topomark.spec.signature.signature_at`): exit
@@ -87,7 +88,7 @@ def _marks_at(g, v, r: int) -> tuple:
     return (vpart, sig.edges) if sig.thread is None else (vpart, sig.edges, sig.thread)
 
 
-def _describe_marks(marks: tuple) -> str:
+def describe_marks(marks: tuple) -> str:
     vpart, dpart = marks[:2]
     parts = [] if len(marks) == 2 else [f"the thread ({marks[2]})"]
     if vpart is not None:
@@ -99,10 +100,10 @@ def _describe_marks(marks: tuple) -> str:
 
 def _marks_mismatch(a, b, v, fv, rv: int) -> Violation | None:
     """The mismatch if the marks at ``v`` (exits shifted by ``rv``) differ from those at its image ``fv``."""
-    ma, mb = _marks_at(a, v, rv), _marks_at(b, fv, 0)
+    ma, mb = marks_at(a, v, rv), marks_at(b, fv, 0)
     if ma == mb:
         return None
-    return _mismatch(f"vertex {v!r} (image {fv!r})", _describe_marks(ma), _describe_marks(mb),
+    return _mismatch(f"vertex {v!r} (image {fv!r})", describe_marks(ma), describe_marks(mb),
                      "markers are not preserved")
 
 
@@ -288,7 +289,7 @@ def verify_witness(a, b, witness: Witness, markers: bool = True) -> Violation | 
             found = b.arc((f[v], (i + r[v]) % d))
             if found != expected:
                 return Violation("witness", f"dart ({v!r}, {i})", str(expected), str(found))
-        if markers and _marks_at(a, v, r[v]) != _marks_at(b, f[v], 0):
-            return Violation("witness", f"vertex {v!r}", _describe_marks(_marks_at(a, v, r[v])),
-                             _describe_marks(_marks_at(b, f[v], 0)))
+        if markers and marks_at(a, v, r[v]) != marks_at(b, f[v], 0):
+            return Violation("witness", f"vertex {v!r}", describe_marks(marks_at(a, v, r[v])),
+                             describe_marks(marks_at(b, f[v], 0)))
     return None

@@ -43,7 +43,7 @@ import stat
 from pathlib import Path
 from typing import Any, BinaryIO, Callable
 
-from topomark.spec.errors import InvalidInput
+from topomark.spec.errors import InvalidInput, clip
 
 __all__ = ["MAX_DEPTH", "MAX_INT_DIGITS", "MAX_FILE_BYTES", "parse_json", "check_depth", "open_regular_file",
            "read_text_file"]
@@ -104,6 +104,9 @@ def parse_json(text: str, source: str, error: type[InvalidInput] = InvalidInput,
     return obj
 
 
+_PATH_NOTE = " ({n} characters)"  # a long path's length, with no thousands separator
+
+
 def open_regular_file(path: str | Path, error: type[InvalidInput] = InvalidInput,
                       max_bytes: int | None = MAX_FILE_BYTES) -> BinaryIO:
     """Open ``path`` for binary reading if it is a regular file of at most ``max_bytes``.
@@ -116,9 +119,10 @@ def open_regular_file(path: str | Path, error: type[InvalidInput] = InvalidInput
     try:
         fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK)
     except OSError as exc:
-        raise error(f"{_clip(path)}: cannot read the file ({exc.__class__.__name__}: {exc.strerror or exc})") from None
+        shown = clip(str(path), 200, note=_PATH_NOTE)
+        raise error(f"{shown}: cannot read the file ({exc.__class__.__name__}: {exc.strerror or exc})") from None
     except ValueError:  # a NUL byte: no file has such a name
-        raise error(f"{_clip(path)}: not a file name (it contains a NUL byte)") from None
+        raise error(f"{clip(str(path), 200, note=_PATH_NOTE)}: not a file name (it contains a NUL byte)") from None
     info = os.fstat(fd)
     if not stat.S_ISREG(info.st_mode):
         os.close(fd)
@@ -128,11 +132,6 @@ def open_regular_file(path: str | Path, error: type[InvalidInput] = InvalidInput
         raise error(f"{path}: file of {info.st_size:,} bytes is larger than the limit of {max_bytes:,} bytes")
     os.set_blocking(fd, True)
     return os.fdopen(fd, "rb")
-
-
-def _clip(path: str | Path, limit: int = 200) -> str:
-    text = str(path)
-    return text if len(text) <= limit else text[:limit] + f"... ({len(text)} characters)"
 
 
 def read_text_file(path: str | Path, error: type[InvalidInput] = InvalidInput,

@@ -50,12 +50,12 @@ class MarkerClass:
     description: str
     section: str
     sufficient: bool  # what the thesis shows: a single class member maps every world
-    _layouts: Callable[[World, str], Iterator[list[Marker]]]
+    layouts: Callable[[World, str], Iterator[list[Marker]]]  # (world, vertex) -> marker layouts at that vertex
 
     def placements(self, world: World) -> Iterator[World]:
         """Every placement of this class's markers on ``world`` with every starting exit."""
         for v in world.vertices:
-            for markers in self._layouts(world, v):
+            for markers in self.layouts(world, v):
                 for facing in world.rotation[v]:
                     yield World(world.rotation, markers, Start(v, facing))
 

@@ -51,7 +51,7 @@ import re
 from dataclasses import dataclass
 from typing import Any, Callable, Protocol
 
-from topomark.spec.errors import InvalidInput, Violation
+from topomark.spec.errors import InvalidInput, Violation, clip
 from topomark.spec.thread import ThreadMark, shifted
 from topomark.spec.world import MAX_DEGREE, DartMark, VertexMark
 
@@ -168,7 +168,7 @@ _MAX_DIGITS = 18  # as for every JSON integer (topomark.spec.jsontext.MAX_INT_DI
 
 def _shown(text: str, limit: int = 60) -> str:
     """``repr(text)`` cut to ``limit`` characters: a hostile signature can be megabytes long."""
-    return repr(text) if len(text) <= limit else repr(text[:limit]) + f"... ({len(text):,} characters)"
+    return clip(text, limit, quote=True)
 
 
 def _number(digits: str, what: str, text: str) -> int:

@@ -58,7 +58,7 @@ from typing import Any
 
 from topomark.spec.errors import InvalidWorld
 from topomark.spec.jsontext import parse_json, read_text_file
-from topomark.spec.errors import InvalidInput
+from topomark.spec.errors import InvalidInput, clip
 from topomark.spec.marker import EdgeMarker, VertexMarker
 from topomark.spec.thread import Thread, ThreadedWorld
 from topomark.spec.world import Start, World, check_size
@@ -106,8 +106,7 @@ def _keys(obj: dict, allowed: set[str], required: set[str], what: str) -> None:
 
 def _show(x: Any, limit: int = 60) -> str:
     """``x`` as JSON for a message, cut to ``limit`` characters (a hostile value can be megabytes long)."""
-    text = json.dumps(x)
-    return text if len(text) <= limit else text[:limit - 3] + "..."
+    return clip(json.dumps(x), limit, note="")
 
 
 def _string(x: Any, what: str) -> str:

@@ -1,4 +1,4 @@
-"""Hypothesis strategies over every generator family (for explorer properties)."""
+"""Hypothesis strategies over every world family of the generators (for explorer properties)."""
 
 from __future__ import annotations
 

@@ -188,12 +188,12 @@ def test_cli_census_rejects_bad_options(argv, capsys):
 
 @pytest.mark.parametrize("class_name", sorted(MARKER_CLASSES))
 def test_layouts_enumerate_exactly_the_placements(class_name):
-    from topomark.proofs.census import _layouts
+    from topomark.proofs.census import marker_layouts
 
     for w in embedded_worlds(4, 3):
         ours = [World(w.rotation, markers, Start(v, w.neighbour(v, i)))
-                for _, markers, starts in _layouts(class_name, w) for v, i in starts]
+                for _, markers, starts in marker_layouts(class_name, w) for v, i in starts]
         assert ours == list(MARKER_CLASSES[class_name].placements(w))
-        assert [k for k, _, _ in _layouts(class_name, w)] == [
-            sum(len(s) for _, _, s in list(_layouts(class_name, w))[:j])
-            for j in range(len(list(_layouts(class_name, w))))]
+        assert [k for k, _, _ in marker_layouts(class_name, w)] == [
+            sum(len(s) for _, _, s in list(marker_layouts(class_name, w))[:j])
+            for j in range(len(list(marker_layouts(class_name, w))))]

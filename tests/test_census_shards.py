@@ -18,11 +18,11 @@ import topomark.proofs.census_run as census_run
 from topomark.proofs.census import census, language_code, machine, minimise
 from topomark.proofs.census_exec import Progress
 from topomark.proofs.census_language import start_digests
-from topomark.proofs.census_map import (_graphs, _iso_key, _layouts, _marker_key, marked, rotation_count,
+from topomark.proofs.census_map import (_graphs, _iso_key, marker_layouts, marker_key, marked, rotation_count,
                                         unit_worlds, world_at)
 from topomark.proofs.census_run import sharded_census
 from topomark.proofs.census_shards import RECORD, _pair_key, combine, done_path, reduce_path, summary
-from topomark.proofs.enumerate import _image, _orbit_representatives, _world, canonical_form
+from topomark.proofs.enumerate import _image, _orbit_representatives, world_of_rotation, canonical_form
 from topomark.reference.cli.main import main
 from topomark.reference.worlds.strategies import worlds
 from topomark.spec.errors import InvalidInput
@@ -69,7 +69,7 @@ def test_units_list_the_enumerations_worlds(n, max_degree):
         ranks = rotation_count(n, max_degree, gi)
         whole = list(unit_worlds((n, gi, 0, 1), max_degree))
         split = sorted((r for c in range(3) for r in unit_worlds((n, gi, c, 3), max_degree)), key=lambda r: r[0])
-        assert [w for _, w, _ in whole] == [_world(r) for r in _orbit_representatives(g)]
+        assert [w for _, w, _ in whole] == [world_of_rotation(r) for r in _orbit_representatives(g)]
         assert [(rank, w) for rank, w, _ in split] == [(rank, w) for rank, w, _ in whole]
         assert all(rank < ranks for rank, _, _ in whole)
         assert all(world_at(n, max_degree, gi, rank) == w for rank, w, _ in whole)
@@ -85,10 +85,10 @@ def test_marked_and_iso_keys_agree_with_spec(class_name):
         for gi in range(len(_graphs(n, 4))):
             for ri, w, autos in unit_worlds((n, gi, 0, 1), 4):
                 keys: dict[bytes, tuple] = {}
-                for _, markers, _ in _layouts(class_name, w):
+                for _, markers, _ in marker_layouts(class_name, w):
                     fast, slow = marked(w, markers), World(w.rotation, markers)
                     assert all(sense(fast, d) == sense(slow, d) for d in w.darts())
-                    iso = _iso_key((n, gi, ri), _marker_key(markers), autos)
+                    iso = _iso_key((n, gi, ri), marker_key(markers), autos)
                     assert keys.setdefault(iso, canonical_form(slow)) == canonical_form(slow)
                 assert len(set(keys.values())) == len(keys)
 

@@ -1,8 +1,8 @@
 """What Chapter 5 states about the Figure 3.4 worlds, reproduced and compared (issue 11 item 6).
 
 The two wheels of Figure 3.4 (:func:`~topomark.reference.worlds.generators.wheel_pair`,
-guide Appendix A) carry an undirected marker at the centre; every run here
-strips it (the robot brings its own kit, or none).  Each test quotes the
+derived there from §3.2.2, L434–L490) carry an undirected marker at the centre;
+every run here strips it (the robot brings its own kit, or none).  Each test quotes the
 thesis line it reproduces; where our number differs, the docstring says why
 (and ``topomark bench chapter-5`` prints the same comparison with times).
 
@@ -110,9 +110,9 @@ def test_algorithm_5_1_six_completed_models_with_global_signatures_the_correct_o
 def test_algorithm_5_1_local_signatures_complete_many_more_models(name):
     """L1421, "more than 50" (local) against six (global): with the n cue, local signatures (every degree-matching
     loop closing accepted, L1367) complete 48 models to global's 6 — we measure 48, not "more than 50", because the
-    n cue rejects every model over five vertices (the thesis ran no cue, guide §4.1); without a cue the count is
-    cap-bound (at the same cap of 300 live models, local completes more than twice as many as global, which
-    stays at six; at the default 10000, 346 against 6 — ``topomark bench chapter-5``).  Both the correct model and
+    n cue rejects every model over five vertices (§5.3 lists the cues, L1436; the thesis ran none); without a cue
+    the count is cap-bound (at the same cap of 300 live models, local completes more than twice as many as global,
+    which stays at six; at the default 10000, 346 against 6 — ``topomark bench chapter-5``).  Both the correct model and
     the other wheel are among local's completed models too."""
     world, other = WORLDS[name]
     _, glob, _ = _completed(world, **{"cue-n": 5})

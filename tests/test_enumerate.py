@@ -11,7 +11,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from topomark.proofs import graphs
-from topomark.proofs.enumerate import (MAX_VERTICES, _automorphisms, _image, _orbit_representatives, _world,
+from topomark.proofs.enumerate import (MAX_VERTICES, graph_automorphisms, _image, _orbit_representatives, world_of_rotation,
                                        canonical_form, connected_graphs, count_by_size, embedded_worlds,
                                        rotation_systems)
 from topomark.spec.markerclass import MARKER_CLASSES
@@ -33,7 +33,7 @@ def brute_force_classes(ws: list[World], markers: bool = False) -> list[World]:
 
 
 def all_rotation_systems(n: int, max_degree: int) -> list[World]:
-    return [_world(r) for g in connected_graphs(n, max_degree) for r in rotation_systems(g)]
+    return [world_of_rotation(r) for g in connected_graphs(n, max_degree) for r in rotation_systems(g)]
 
 
 def mirror(world: World) -> World:
@@ -57,7 +57,7 @@ def test_graphs_past_the_atlas_come_from_augmentation():
 def test_orbit_representatives_are_the_least_of_their_orbits():
     """Memory-free choice of representative == the first of every orbit in product order (a seen-set)."""
     for g in connected_graphs(5, 4) + connected_graphs(6, 3):
-        autos = _automorphisms(g)
+        autos = graph_automorphisms(g)
         seen, expected = set(), []
         for rot in rotation_systems(g):
             if rot not in seen:

@@ -168,12 +168,12 @@ def test_random_graph_draws_from_the_same_pairs_without_listing_them():
     for n in range(2, 30):
         pairs = [(i, j) for i in range(n) for j in range(i + 1, n)]
         taken = set(rng.sample(pairs, rng.randrange(len(pairs) + 1)))
-        lazy = g._OtherPairs(n, taken)
+        lazy = g.OtherPairs(n, taken)
         listed = [p for p in pairs if p not in taken]
         assert len(lazy) == len(listed) and list(lazy) == listed
         k = rng.randrange(len(listed) + 1)
         assert random.Random(n).sample(lazy, k) == random.Random(n).sample(listed, k)
-    big = g._OtherPairs(MAX_VERTICES, [])
+    big = g.OtherPairs(MAX_VERTICES, [])
     for k in (0, 1, len(big) // 3, len(big) - 1):
         i, j = big[k]
         assert 0 <= i < j < MAX_VERTICES and big._rank(i, j) == k

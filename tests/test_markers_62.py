@@ -69,8 +69,9 @@ K4_E = World({v: tuple(w for w in ns if {v, w} != {"0", "1"}) for v, ns in gener
 
 @pytest.mark.parametrize("name", ["case-3a", "case-dv-sum"])
 def test_sigma_n_minus_1_leaves_the_last_vertex_blank_and_sigma_n_marks_it(name):
-    """Guide §10 #11 (L1577 Σ^n used; title and Algorithm 6.2 Σ^{n−1}): with Σ_{k=1}^{n−1} k the last new vertex
-    stays blank and is recognised by its blank label on re-entry; with Σ_{k=1}^{n} k all n are marked."""
+    """L1575 and Figure 6.6 (L1569) use Σ^n; Case 3a's title (L1562) and Algorithm 6.2 (L1579) Σ^{n−1}: with
+    Σ_{k=1}^{n−1} k the last new vertex stays blank and is recognised by its blank label on re-entry; with
+    Σ_{k=1}^{n} k all n are marked."""
     out = explore(K4_E, name)
     ex = out.explorer
     assert out.outcome == "correct" and used(out) == sum_to(3) and ex.blank == 3

@@ -80,7 +80,7 @@ def test_one_marker_fewer_than_a_run_drops_is_the_failed_outcome(name):
 
 
 def test_case_4_needs_m_minus_floor_of_n_minus_1_over_2_on_the_4_cycle():
-    """Guide §10 #13: L1663 counts m − (n − 1) loop markers and ⌈(n−1)/2⌉ non-loop ones, then says m − ⌊n/2⌋.
+    """L1663 counts m − (n − 1) loop markers and ⌈(n−1)/2⌉ non-loop ones, then says m − ⌊n/2⌋.
     The 4-cycle from v0: (v0, v1) marked (v0 unmarked), (v1, v2) blank (v1 marked), (v2, v3) marked, the loop
     edge (v3, v0) marked — 3 = m − ⌊(n−1)/2⌋; with the thesis's m − ⌊n/2⌋ = 2 the robot runs out."""
     c4 = g.cycle(4)

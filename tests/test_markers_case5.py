@@ -91,7 +91,8 @@ class LiteralCounter(VertexCountsThenLighthouse):
 
 
 def test_algorithm_6_4_counter_as_printed_gives_two_places_one_marker_and_fails_on_the_triangle():
-    """Guide §10 #15: the smallest world with a loop edge shows the printed counter's shared label."""
+    """Algorithm 6.4's counter (lines 1, 3, 13, 15; L1731–L1745): the smallest world with a loop edge shows the
+    printed counter's shared label."""
     literal = explore(TRIANGLE, variant("literal-6.4", LiteralCounter, "case-5-v1"))
     assert literal.outcome == "failed" and "[2,V,A]" in literal.reason
     ours = explore(TRIANGLE, "case-5-v1", options={"markers": 4})
@@ -111,7 +112,8 @@ PAW = World({"p": ("z",), "x": ("y", "z"), "y": ("x", "z"), "z": ("p", "x", "y")
 
 
 def test_algorithm_6_5_line_23_as_printed_confirms_nothing_and_maps_the_paw_wrongly():
-    """Guide §10 #16: with K = 4 (line 1 spends them all) phase II must close the triangle by a hypothesis."""
+    """Algorithm 6.5 line 23 (L1801): with K = 4 (line 1 spends them all) phase II must close the triangle by a
+    hypothesis."""
     literal = explore(PAW, variant("literal-6.5", LiteralLine23, "case-5-v2"), options={"markers": 4})
     assert literal.outcome == "wrong-map" and "two map vertices for one place" in literal.violation.detail
     ours = explore(PAW, "case-5-v2", options={"markers": 4})

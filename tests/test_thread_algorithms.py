@@ -73,7 +73,8 @@ def test_the_laid_thread_never_exceeds_its_length_and_is_untied_at_the_end(world
 
 
 def test_c_of_g_runs_out_on_a_triangle_with_a_pendant_start():
-    """Guide §8.3's doubt, decided: l = c(G) = 3 runs out on the smallest world with a path from v0 longer than
+    """L2044 asks for a thread that never runs out on a simple path, footnote 18 (L2048) makes it the longest
+    simple cycle; decided: l = c(G) = 3 runs out on the smallest world with a path from v0 longer than
     its longest cycle; n edges (the registered default) and c(G) + 1 here do not."""
     assert bench_threads.circumference(PAW) == 3 and bench_threads.longest_path_from(PAW, "d") == 3
     out = explore(PAW, "thread-circumference", options={"thread-length": 3})

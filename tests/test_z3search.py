@@ -140,8 +140,8 @@ def _count_encodings(n: int, d: int, marker: str, planar: bool = False) -> int:
     """Number of models of the single-world encoding (projected on the world's variables)."""
     import z3
 
-    b = z3search._Builder()
-    w = z3search._WorldVars(b, "A", n, d, marker, planar)
+    b = z3search.Builder()
+    w = z3search.WorldVars(b, "A", n, d, marker, planar)
     solver = z3.SolverFor("QF_FD")
     solver.from_string(b.text())
     onehots = list(w.tv.values()) + list(w.te.values()) + ([w.e] if w.e else [])

@@ -14,7 +14,7 @@ options it takes and the checks that apply.  Two shapes of algorithm exist:
 * **kit algorithms** (everything else: markers dropped all through the
   exploration, §6.2; movable markers, §2.3.1; threads, §6.3; no marker,
   §5.2) are given the kit ``kit_for(n, m, options)`` — the simulator computes
-  it from the world, the robot never learns n or m (§6.2.0, L1474) — and are
+  it from the world, the robot never learns n or m (§6.2.1, L1487) — and are
   built as ``cls(robot, policies, observer, options)``.
 
 Every explorer keeps the contract of
@@ -122,7 +122,7 @@ class AlgorithmSpec:
     parameters: tuple[Parameter, ...] = ()
     kit_fn: Callable[[int, int, dict], Kit] | None = None  # the kit for a world of n, m (kit algorithms)
     marker_bound_fn: Callable[[int, int], int] | None = None  # the stated marker bound, for ``marker-budget``
-    family: str = "algorithm-3.1"  # the trace@2 family its traces are written in
+    family: str = "algorithm-3.1"  # the trace@2 algorithm family its traces are written in
     own: bool = True  # topomark's registered explorer (False for ``registry.variant``: an explorer under test)
     check_world: Callable[[Any, dict], None] | None = None  # refuse options false for the world (e.g. §5.3 cues)
     summary_fn: Callable[[Any, Any], dict] | None = None  # (explorer, world) ↦ the algorithm's own --json fields

@@ -2,7 +2,7 @@
 
 ``topomark bench EXPERIMENT [--graphs 30] [--sizes ...] [--jobs N] [--out DIR]``
 
-Worlds (families; the *size* of a row is the thesis's vertex count):
+Worlds (world families; the *size* of a row is the thesis's vertex count):
 
 ``lattice-hole``
     Figure 3.10(c), Tables 4.1/4.3/4.5/4.7.  *Interpretation:* the thesis's
@@ -24,13 +24,13 @@ Worlds (families; the *size* of a row is the thesis's vertex count):
     Figure 3.12: random connected graphs with 20% / 40% of all vertex pairs
     as edges (:func:`~topomark.reference.worlds.generators.random_graph`).
 
-Every world of seed ``s`` is built from fixed seeds derived from (family,
+Every world of seed ``s`` is built from fixed seeds derived from (world family,
 size, s), and the robot starts at a vertex and facing drawn from the same
 seed, so each algorithm of a row explores exactly the same worlds.
 
-Experiments (EXPERIMENT names) pick families, algorithms and sizes:
-``figure-3.10``, ``figure-3.11``, ``figure-3.12`` (basic; every family alone
-is an experiment too), ``table-4.1`` ... ``table-4.8``, ``tables`` (all of
+Experiments (EXPERIMENT names) pick world families, algorithms and sizes:
+``figure-3.10``, ``figure-3.11``, ``figure-3.12`` (basic; every world family
+alone is an experiment too), ``table-4.1`` ... ``table-4.8``, ``tables`` (all of
 4.1-4.8: lattice-hole and complete-hole with every enhancement),
 ``policies`` (edge-selection policies side by side, basic and enh3),
 ``lighthouses`` (the lighthouses of §3.3, §6.1 and §6.2 side by side, basic
@@ -39,12 +39,12 @@ marker algorithms (kit algorithms, :mod:`~topomark.reference.bench.reports.secti
 ``table-6.1`` (with Figures 6.11, 6.12), ``table-6.2`` (Figures 6.17, 6.18),
 ``figure-6.13`` and ``section-6.2`` (all three; not part of ``all``); and §6.3's
 threads with §2.3.1's movable markers (:mod:`~topomark.reference.bench.reports.section63`,
-which also defines the ``lattice-edge-hole`` family): ``table-6.3`` (with Figure
+which also defines the ``lattice-edge-hole`` world family): ``table-6.3`` (with Figure
 6.23), ``figure-6.24``, ``comparison`` and ``section-6.3`` (all three; not part of ``all``);
-``chapter-5`` (§5.1, §6.1, §5.2.1 and Algorithm 5.1 on the Chapter 3 families, small worlds and
+``chapter-5`` (§5.1, §6.1, §5.2.1 and Algorithm 5.1 on the Chapter 3 world families, small worlds and
 Figure 3.4: :mod:`~topomark.reference.bench.reports.chapter5`; not part of ``all``).
 
-Runs go to ``DIR/runs.csv`` keyed by (experiment = family, size, seed,
+Runs go to ``DIR/runs.csv`` keyed by (experiment = world family, size, seed,
 algorithm, edge policy, lighthouse); a restarted sweep skips keys already there.  Each
 run is checked (invariants after every iteration, final isomorphism) unless
 ``--no-check``; the row records ``verified``.  The report ``DIR/EXPERIMENT.md``

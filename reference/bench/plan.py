@@ -2,7 +2,7 @@
 
 Part of ``topomark bench`` (:mod:`~topomark.reference.bench.experiments` documents the
 experiments and the interpretations of the thesis's worlds).  A world of
-(family, size, seed) is built from fixed seeds derived from those three, and
+(world family, size, seed) is built from fixed seeds derived from those three, and
 the robot's start (vertex and facing) is drawn from the same seed, so every
 algorithm, edge policy and lighthouse of a row explores exactly the same
 worlds.  A lighthouse that needs a start vertex of degree >= 2
@@ -18,6 +18,9 @@ as is; a *derived* option of :data:`DERIVED_OPTIONS` (``marked-fraction=0.25``)
 computes the algorithm's options from the world.  A kit algorithm (one that
 carries its own kit, §6.2) runs with no lighthouse: its runs are planned with
 :data:`NO_LIGHTHOUSE` whatever the part's lighthouses.
+
+"Family" here always means a *world family* (:class:`WorldFamily`: lattice-hole, complete-hole, ...), never
+the algorithm family a trace@2 header names (:mod:`topomark.reference.trace.families`).
 """
 
 from __future__ import annotations
@@ -39,7 +42,7 @@ from topomark.reference.algorithms.registry import algorithm_spec
 __all__ = ["FAMILIES", "EXPERIMENTS", "Experiment", "Part", "Run", "plan", "world_for", "is_heavy", "fits",
            "HEAVY_GRAPHS", "HEAVY_MAX_SIZE", "DEFAULT_LIGHTHOUSE", "CERTAIN_LIGHTHOUSES", "LIGHTHOUSE_ALGS", "LIGHTHOUSE_COMPLETE_SIZES",
            "NO_LIGHTHOUSE", "DERIVED_OPTIONS", "resolve_options", "option_set", "marked_fraction_markers",
-           "TABLE_61_ALGS", "TABLE_62_ALGS", "UNCUED_MODEL_TREE_GRAPHS", "FRACTIONS", "FIGURE_613_SIZES"]
+           "TABLE_61_ALGS", "TABLE_62_ALGS", "UNCUED_MODEL_TREE_GRAPHS", "FRACTIONS", "FIGURE_613_SIZES", "world_seed"]
 
 DEFAULT_LIGHTHOUSE = "directional-vertex"
 CERTAIN_LIGHTHOUSES = tuple(name for name, h in LIGHTHOUSES.items() if h.certain)
@@ -55,7 +58,9 @@ GRIDS = {72: (8, 10), 90: (10, 10), 108: (10, 12), 152: (13, 13), 202: (15, 15),
 
 
 @dataclass(frozen=True)
-class Family:
+class WorldFamily:
+    """A world family of the bench: its sizes and how its world of (size, seed) is built (no start yet)."""
+
     name: str
     sizes: tuple[int, ...]
     build: Callable[[int, int], World]  # (size, seed) -> world without start
@@ -65,39 +70,40 @@ class Family:
     note: str = ""
 
 
-def _seed(family: str, size: int, seed: int) -> int:
-    return (sum(ord(c) * 31 ** k for k, c in enumerate(family)) % 100_003) * 1_000_003 + size * 10_007 + seed
+def world_seed(world_family: str, size: int, seed: int) -> int:
+    """The fixed seed a world of (world family, size, seed) is generated from."""
+    return (sum(ord(c) * 31 ** k for k, c in enumerate(world_family)) % 100_003) * 1_000_003 + size * 10_007 + seed
 
 
 def _lattice_hole(size: int, seed: int) -> World:
     rows, cols = GRIDS[size]
-    return g.lattice_hole(rows, cols, 0.1, "vertices", _seed("lattice-hole", size, seed))
+    return g.lattice_hole(rows, cols, 0.1, "vertices", world_seed("lattice-hole", size, seed))
 
 
 def _lattice(size: int, seed: int) -> World:
     return g.lattice(*GRIDS[size])
 
 
-FAMILIES: dict[str, Family] = {f.name: f for f in (
-    Family("lattice", tf.LATTICE_HOLE_SIZES, _lattice, "Figure 3.10(a)", random_graph=False,
+FAMILIES: dict[str, WorldFamily] = {f.name: f for f in (  # the world families, by name
+    WorldFamily("lattice", tf.LATTICE_HOLE_SIZES, _lattice, "Figure 3.10(a)", random_graph=False,
            note="8x10, 10x10, 10x12, 13x13, 15x15, 16x16, 17x17, 19x19, 20x20 grids (labelled by the "
                 "lattice-hole size they give); the worlds of a size differ only in the start"),
-    Family("complete", tf.COMPLETE_HOLE_SIZES, lambda n, s: g.complete(n), "Figure 3.10(b)", random_graph=False,
+    WorldFamily("complete", tf.COMPLETE_HOLE_SIZES, lambda n, s: g.complete(n), "Figure 3.10(b)", random_graph=False,
            note="K_n; the worlds of a size differ only in the start"),
-    Family("lattice-hole", tf.LATTICE_HOLE_SIZES, _lattice_hole, "Figure 3.10(c)",
+    WorldFamily("lattice-hole", tf.LATTICE_HOLE_SIZES, _lattice_hole, "Figure 3.10(c)",
            note="size s = an 8x10, 10x10, 10x12, 13x13, 15x15, 16x16, 17x17, 19x19 or 20x20 grid with 10% of "
                 "its vertices removed at random (kept connected), so n = s"),
-    Family("complete-hole", tf.COMPLETE_HOLE_SIZES,
-           lambda n, s: g.complete_hole(n, 0.1, _seed("complete-hole", n, s)), "Figure 3.10(d)",
+    WorldFamily("complete-hole", tf.COMPLETE_HOLE_SIZES,
+           lambda n, s: g.complete_hole(n, 0.1, world_seed("complete-hole", n, s)), "Figure 3.10(d)",
            note="K_n with 10% of its edges removed at random (kept connected)"),
-    Family("small-world-k2-p10", (20, 40, 60, 80, 100, 150, 200),
-           lambda n, s: g.small_world(n, 2, 0.1, _seed("small-world-k2-p10", n, s)), "Figure 3.11"),
-    Family("small-world-k4-p20", (20, 40, 60, 80, 100, 150, 200),
-           lambda n, s: g.small_world(n, 4, 0.2, _seed("small-world-k4-p20", n, s)), "Figure 3.11"),
-    Family("random-20", (15, 20, 25, 30, 35, 40, 50),
-           lambda n, s: g.random_graph(n, 0.2, _seed("random-20", n, s)), "Figure 3.12"),
-    Family("random-40", (15, 20, 25, 30, 35, 40, 50),
-           lambda n, s: g.random_graph(n, 0.4, _seed("random-40", n, s)), "Figure 3.12"),
+    WorldFamily("small-world-k2-p10", (20, 40, 60, 80, 100, 150, 200),
+           lambda n, s: g.small_world(n, 2, 0.1, world_seed("small-world-k2-p10", n, s)), "Figure 3.11"),
+    WorldFamily("small-world-k4-p20", (20, 40, 60, 80, 100, 150, 200),
+           lambda n, s: g.small_world(n, 4, 0.2, world_seed("small-world-k4-p20", n, s)), "Figure 3.11"),
+    WorldFamily("random-20", (15, 20, 25, 30, 35, 40, 50),
+           lambda n, s: g.random_graph(n, 0.2, world_seed("random-20", n, s)), "Figure 3.12"),
+    WorldFamily("random-40", (15, 20, 25, 30, 35, 40, 50),
+           lambda n, s: g.random_graph(n, 0.4, world_seed("random-40", n, s)), "Figure 3.12"),
 )}
 
 LATTICE_TABLE_ALGS = ("basic", "enh1", "enh2", "enh3", "enh4", "enh5-d1", "enh5-d2", "enh3+5")
@@ -106,9 +112,9 @@ COMPLETE_TABLE_ALGS = ("basic", "enh1", "enh2", "enh3", "enh4", "enh5-d1", "enh5
 
 @dataclass(frozen=True)
 class Part:
-    family: str
+    family: str  # a world family: a key of FAMILIES
     algorithms: tuple[str, ...] = ("basic",)
-    sizes: tuple[int, ...] | None = None  # None: the family's sizes
+    sizes: tuple[int, ...] | None = None  # None: the world family's sizes
     policies: tuple[str, ...] = ("nearest",)
     lighthouses: tuple[str, ...] = (DEFAULT_LIGHTHOUSE,)
     options: tuple[str, ...] = ("",)  # option sets (module docstring); "" = the algorithm's defaults
@@ -183,18 +189,18 @@ EXPERIMENTS["all"] = Experiment("all", EXPERIMENTS["figure-3.10"].parts + EXPERI
                                 "Every experiment", tuple(tf.TABLE_SOURCES))
 
 
-# Chapter 5 (issue 11; report :mod:`~topomark.reference.bench.reports.chapter5`): §5.1/§6.1 and §5.2.1's lighthouses on the
-# Chapter 3 families; Algorithm 5.1 on small worlds (lattice-hole up to 5x5, random up to 12 vertices) and Figure 3.4.
+# Chapter 5 (report :mod:`~topomark.reference.bench.reports.chapter5`): §5.1/§6.1 and §5.2.1's lighthouses on the
+# Chapter 3 world families; Algorithm 5.1 on small worlds (lattice-hole up to 5x5, random up to 12 vertices) and Figure 3.4.
 SMALL_GRIDS = {8: (3, 3), 11: (3, 4), 14: (4, 4), 18: (4, 5), 23: (5, 5)}  # n of a grid with 10% of vertices removed
 FAMILIES.update({f.name: f for f in (
-    Family("small-lattice-hole", tuple(SMALL_GRIDS), lambda n, s: g.lattice_hole(
-        *SMALL_GRIDS[n], 0.1, "vertices", _seed("small-lattice-hole", n, s)), "§5.2.2",
+    WorldFamily("small-lattice-hole", tuple(SMALL_GRIDS), lambda n, s: g.lattice_hole(
+        *SMALL_GRIDS[n], 0.1, "vertices", world_seed("small-lattice-hole", n, s)), "§5.2.2",
         note="3x3, 3x4, 4x4, 4x5, 5x5 grids with 10% of their vertices removed (kept connected), n = size"),
-    Family("small-random-40", (6, 8, 10, 12), lambda n, s: g.random_graph(n, 0.4, _seed("small-random-40", n, s)),
+    WorldFamily("small-random-40", (6, 8, 10, 12), lambda n, s: g.random_graph(n, 0.4, world_seed("small-random-40", n, s)),
            "§5.2.2", note="random connected graphs with 40% of all vertex pairs as edges"),
-    Family("figure-3.4a", (5,), lambda n, s: g.wheel_a(), "Figure 3.4(a)", random_graph=False,
+    WorldFamily("figure-3.4a", (5,), lambda n, s: g.wheel_a(), "Figure 3.4(a)", random_graph=False,
            note="the planar wheel; the worlds differ only in the start"),
-    Family("figure-3.4b", (5,), lambda n, s: g.wheel_b(), "Figure 3.4(b)", random_graph=False,
+    WorldFamily("figure-3.4b", (5,), lambda n, s: g.wheel_b(), "Figure 3.4(b)", random_graph=False,
            note="the twisted (genus-1) wheel; the worlds differ only in the start"),
 )})
 CHAPTER_5_FAMILIES = ("lattice-hole", "random-20", "random-40", "small-world-k2-p10", "small-world-k4-p20")
@@ -217,7 +223,7 @@ EXPERIMENTS["chapter-5"] = Experiment("chapter-5", tuple(
 
 @dataclass(frozen=True, order=True)
 class Run:
-    family: str
+    family: str  # the world family (runs.csv writes it in the column "experiment")
     size: int
     seed: int
     algorithm: str
@@ -236,7 +242,7 @@ def marked_fraction_markers(world: World, algorithm: str, value: str) -> dict:
 
     Version-1 gives v0 one marker and the j-th new place j + 1 until a drop is refused
     (:mod:`~topomark.reference.explorers.case5_v1`), so K = Σ_{i=1}^{p} i marks exactly p places.  The
-    thesis gives no fractions and no K (guide §6.9: "The fraction values are not given"); we give
+    thesis gives no fractions and no K (neither Figure 6.13's caption, L1863, nor its text, L1829); we give
     K = max(4, Σ_{i=1}^{⌊f·n⌋} i).  K ≥ 4 is the algorithm's least kit ("k > 3", L1708), which marks 2
     places: "0%" is that least kit (2 of n places marked), and 100% is Σ_{i=1}^{n} i (every place).
     """
@@ -285,29 +291,29 @@ def resolve_options(options: str, world: World, algorithm: str) -> dict:
 
 
 @functools.lru_cache(maxsize=8)
-def world_for(family: str, size: int, seed: int) -> World:
-    """The world of (family, size, seed), with a start drawn from the seed.  Kept for the next runs (a sweep
+def world_for(world_family: str, size: int, seed: int) -> World:
+    """The world of (world family, size, seed), with a start drawn from the seed.  Kept for the next runs (a sweep
     runs every algorithm on one world in turn; a World is never changed: a run's markers lie in its own layer)."""
-    fam = FAMILIES[family]
+    fam = FAMILIES[world_family]
     world = fam.build(size, seed)
-    rng = random.Random(_seed(family + "/start", size, seed))
+    rng = random.Random(world_seed(world_family + "/start", size, seed))
     v = rng.choice(sorted(world.vertices, key=g.natural_key))
     facing = rng.choice(list(world.rotation[v]))
     return World(world.rotation, (), Start(v, facing))
 
 
 @functools.lru_cache(maxsize=4096)
-def _start_degree(family: str, size: int, seed: int) -> int:
-    world = world_for(family, size, seed)
+def _start_degree(world_family: str, size: int, seed: int) -> int:
+    world = world_for(world_family, size, seed)
     return world.degree(world.start_state()[0])
 
 
-def fits(family: str, size: int, seed: int, lighthouse: str) -> bool:
+def fits(world_family: str, size: int, seed: int, lighthouse: str) -> bool:
     """Whether the lighthouse can be dropped at the start drawn for this world (its start-degree condition)."""
     if lighthouse == NO_LIGHTHOUSE:
         return True
     need = LIGHTHOUSES[lighthouse].min_degree
-    return need <= 1 or _start_degree(family, size, seed) >= need
+    return need <= 1 or _start_degree(world_family, size, seed) >= need
 
 
 def plan(experiment: str, graphs: int = 30, sizes: list[int] | None = None,
@@ -322,7 +328,7 @@ def plan(experiment: str, graphs: int = 30, sizes: list[int] | None = None,
     for part in EXPERIMENTS[experiment].parts:
         fam = FAMILIES[part.family]
         chosen = part.sizes or fam.sizes
-        if sizes:  # a selection among the family's (the thesis's) sizes
+        if sizes:  # a selection among the world family's (the thesis's) sizes
             chosen = [s for s in chosen if s in sizes]
         for size in chosen:
             for alg in part.algorithms:
@@ -336,8 +342,8 @@ def plan(experiment: str, graphs: int = 30, sizes: list[int] | None = None,
     return sorted(runs, key=lambda r: (r.seed, -_weight(r), r))
 
 
-def is_heavy(family: str, algorithm: str) -> bool:
-    return family in ("complete-hole", "complete") and algorithm in ("enh5-d2", "enh3+5")
+def is_heavy(world_family: str, algorithm: str) -> bool:
+    return world_family in ("complete-hole", "complete") and algorithm in ("enh5-d2", "enh3+5")
 
 
 def _weight(r: Run) -> float:

@@ -1,5 +1,5 @@
 """What the §6.3 sweeps run (thesis §6.3, L1995–L2222; §2.3.1): the thread classes of Table 6.3, the
-``lattice-edge-hole`` family of Figures 6.23(b) and 6.24, and the experiments ``table-6.3``, ``figure-6.24``,
+``lattice-edge-hole`` world family of Figures 6.23(b) and 6.24, and the experiments ``table-6.3``, ``figure-6.24``,
 ``comparison`` and ``section-6.3``, registered in :mod:`~topomark.reference.bench.plan`'s tables when this module
 is imported.  Their reports are :mod:`~topomark.reference.bench.reports.section63`.
 
@@ -16,7 +16,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from topomark.reference.worlds import generators as g
-from topomark.reference.bench.plan import EXPERIMENTS, FAMILIES, GRIDS, NO_LIGHTHOUSE, Experiment, Family, Part, _seed
+from topomark.reference.bench.plan import (EXPERIMENTS, FAMILIES, GRIDS, NO_LIGHTHOUSE, Experiment, Part, WorldFamily,
+                                           world_seed)
 
 __all__ = ["CLASSES", "ThreadClass", "LENGTHS", "SIZES", "COMPARED", "MOVABLE", "IMMOVABLE", "EDGE_HOLE",
            "FIGURE_624_SIZE", "REPORTS"]
@@ -53,20 +54,20 @@ CLASSES = (
 
 def _lattice_edge_hole(size: int, seed: int):
     rows, cols = GRIDS[size]
-    return g.lattice_hole(rows, cols, 0.1, "edges", _seed(EDGE_HOLE, size, seed))
+    return g.lattice_hole(rows, cols, 0.1, "edges", world_seed(EDGE_HOLE, size, seed))
 
 
-def _parts(family: str, sizes: tuple[int, ...]) -> tuple[Part, ...]:
+def _parts(world_family: str, sizes: tuple[int, ...]) -> tuple[Part, ...]:
     by_options: dict[tuple[str, str], list[str]] = {}
     for c in CLASSES:
         by_options.setdefault((c.lighthouse, c.options), []).append(c.algorithm)
-    return tuple(Part(family, tuple(algs), sizes, lighthouses=(lh,), options=(opt,))  # a kit algorithm's is ignored
+    return tuple(Part(world_family, tuple(algs), sizes, lighthouses=(lh,), options=(opt,))  # a kit algorithm's is ignored
                  for (lh, opt), algs in by_options.items())
 
 
 def _register() -> None:
-    """The family and the experiments, in :mod:`~topomark.reference.bench.plan`'s tables."""
-    FAMILIES[EDGE_HOLE] = Family(
+    """The world family and the experiments, in :mod:`~topomark.reference.bench.plan`'s tables."""
+    FAMILIES[EDGE_HOLE] = WorldFamily(
         EDGE_HOLE, tuple(GRIDS), _lattice_edge_hole, "Figures 6.23(b), 6.24",
         note="the grids of the lattice family (size 90 = 10x10, 202 = 15x15, 360 = 20x20, ...) with 10% of their "
              "edges removed at random (kept connected), so n = rows x cols")

@@ -65,7 +65,7 @@ DEFAULTS = {"policy": "nearest", "lighthouse": "directional-vertex", "options": 
 
 
 def row_key(row: dict) -> tuple[str, str, str, str, str, str, str]:
-    """(family, size, seed, algorithm, edge policy, lighthouse, option set): what a restarted sweep matches
+    """(world family, size, seed, algorithm, edge policy, lighthouse, option set): what a restarted sweep matches
     finished runs by."""
     return (row["experiment"], str(row["size"]), str(row["seed"]), row["algorithm"],
             row.get("policy") or DEFAULTS["policy"], row.get("lighthouse") or DEFAULTS["lighthouse"],

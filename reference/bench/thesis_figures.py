@@ -18,7 +18,7 @@ LATTICE_HOLE_SIZES = (72, 90, 108, 152, 202, 230, 260, 324, 360)
 COMPLETE_HOLE_SIZES = (24, 28, 32, 36, 40, 44, 48, 52, 55)
 
 ABSOLUTE: dict[tuple[str, str, int], tuple[int, str]] = {
-    # (family, algorithm, size) -> (mean cost in edge traversals, source)
+    # (world family, algorithm, size) -> (mean cost in edge traversals, source)
     ("lattice-hole", "basic", 90): (13_800, "§4.1 Enhancement-1 text (Figure 4.2(a))"),
     ("lattice-hole", "basic", 260): (152_000, "§4.1 Enhancement-1 text (Figure 4.2(a))"),
     ("lattice-hole", "enh1", 90): (4_600, "§4.1 Enhancement-1 text (Figure 4.2(a))"),
@@ -37,7 +37,7 @@ def _row(sizes, values):
 
 
 REDUCTIONS: dict[tuple[str, str], tuple[dict[int, float], str]] = {
-    # (family, algorithm) -> ({size: percent reduction}, source)
+    # (world family, algorithm) -> ({size: percent reduction}, source)
     ("lattice-hole", "enh1"): (_row(_L, (67.5, 67.8, 68.4, 70.1, 74.5, 75.5, 75.7, 77.4, 78.0)), "Table 4.1"),
     ("lattice-hole", "enh2"): (_row(_L, (73.5, 75.3, 78.0, 80.2, 84.3, 86.0, 86.4, 87.8, 89.0)), "Table 4.1"),
     ("lattice-hole", "enh3"): (_row(_L, (81.7, 82.8, 83.6, 86.0, 88.8, 89.9, 90.4, 91.9, 93.0)),
@@ -62,7 +62,7 @@ REDUCTIONS: dict[tuple[str, str], tuple[dict[int, float], str]] = {
 }
 
 TABLE_SOURCES: dict[str, tuple[str, tuple[str, ...]]] = {
-    # table -> (family, algorithms it lists)
+    # table -> (world family, algorithms it lists)
     "4.1": ("lattice-hole", ("enh1", "enh2", "enh3")),
     "4.2": ("complete-hole", ("enh1", "enh2", "enh3")),
     "4.3": ("lattice-hole", ("enh4",)),
@@ -74,12 +74,12 @@ TABLE_SOURCES: dict[str, tuple[str, tuple[str, ...]]] = {
 }
 
 
-def thesis_cost(family: str, algorithm: str, size: int) -> tuple[int, str] | None:
-    return ABSOLUTE.get((family, algorithm, size))
+def thesis_cost(world_family: str, algorithm: str, size: int) -> tuple[int, str] | None:
+    return ABSOLUTE.get((world_family, algorithm, size))
 
 
-def thesis_reduction(family: str, algorithm: str, size: int) -> tuple[float, str] | None:
-    row = REDUCTIONS.get((family, algorithm))
+def thesis_reduction(world_family: str, algorithm: str, size: int) -> tuple[float, str] | None:
+    row = REDUCTIONS.get((world_family, algorithm))
     if row is None or size not in row[0]:
         return None
     return row[0][size], row[1]

@@ -2,8 +2,8 @@
 
 The JSON form is a list of objects with ``name``, ``thesis``, ``kit``,
 ``bound``, ``markers``, ``deterministic``, ``options``, ``checks``,
-``family``, ``parameters``, ``kit_from_world`` and, for the lighthouse
-algorithms, ``lighthouses``
+``family`` (the algorithm family its trace@2 traces are written in), ``parameters``,
+``kit_from_world`` and, for the lighthouse algorithms, ``lighthouses``
 (:meth:`topomark.reference.algorithms.algorithm_spec.AlgorithmSpec.to_json`).
 """
 

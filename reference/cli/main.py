@@ -20,13 +20,16 @@ import traceback
 from typing import Sequence
 
 from topomark.spec.errors import (EXIT_BAD_INPUT, EXIT_CODES_HELP, EXIT_FAULT, EXIT_NEGATIVE, CheckFailure,
-                                  InvalidInput, TopomarkFault)
+                                  InvalidInput, TopomarkFault, clip)
 
 from topomark.reference.cli import (cmd_algorithms, cmd_bench, cmd_count, cmd_distinguish, cmd_explore, cmd_oracle,
                                     cmd_search, cmd_world)
 from topomark.reference.cli.parser import Parser
 
-__all__ = ["main", "build_parser", "clip_message"]
+__all__ = ["main", "build_parser"]
+
+STDERR_LIMIT, STDERR_NOTE = 1000, " ({n:,} characters in all)"
+"""One message, bounded: whatever an input quotes back, stderr gets at most 1000 characters of it."""
 
 # The modules that contribute commands, in --help order: each has register(subparsers).
 COMMAND_MODULES = (cmd_world, cmd_explore, cmd_oracle, cmd_bench, cmd_algorithms, cmd_distinguish, cmd_search,
@@ -61,10 +64,10 @@ def main(argv: Sequence[str] | None = None) -> int:
             return 2
         return int(args.handler(args))
     except InvalidInput as exc:
-        print(f"topomark: error: {clip_message(str(exc))}", file=sys.stderr)
+        print(f"topomark: error: {clip(str(exc), STDERR_LIMIT, note=STDERR_NOTE)}", file=sys.stderr)
         return EXIT_BAD_INPUT
     except CheckFailure as exc:
-        print(f"topomark: check failed: {clip_message(str(exc))}", file=sys.stderr)
+        print(f"topomark: check failed: {clip(str(exc), STDERR_LIMIT, note=STDERR_NOTE)}", file=sys.stderr)
         return EXIT_NEGATIVE
     except KeyboardInterrupt:
         print("topomark: interrupted", file=sys.stderr)
@@ -75,11 +78,6 @@ def main(argv: Sequence[str] | None = None) -> int:
         return _fault(f"{exc}")
     except Exception as exc:  # noqa: BLE001 - anything else is a bug in topomark, reported as one
         return _fault(f"unexpected {exc.__class__.__name__}: {exc}", traceback.format_exc())
-
-
-def clip_message(text: str, limit: int = 1000) -> str:
-    """One message, bounded: whatever an input quotes back, stderr gets at most ``limit`` characters of it."""
-    return text if len(text) <= limit else f"{text[:limit]}... ({len(text):,} characters in all)"
 
 
 def _fault(message: str, detail: str = "") -> int:

@@ -8,7 +8,7 @@ marked place as lighthouse (phase II) (thesis L1708–L1724, listing L1728–L17
   explored edge is sensed (Algorithm 6.2 lines 19–35, reused from
   :class:`~topomark.reference.explorers.counted_markers.VertexCounts`).
 * **Phase II** (lines 16–35): the first unmarked place the robot cannot mark
-  ("does not have sufficient markers to uniquely mark the vertex", L1716) ends
+  ("does not have sufficient markers to uniquely mark the vertex", L1718) ends
   phase I.  A marked v_u is still validated by probing (L1720 "as in phase-I");
   an unmarked v_u is tested against every unexplored dart at an *unmarked*
   known end of its degree (:mod:`.case5_phase2`), each hypothesis driving the
@@ -19,10 +19,10 @@ marked place as lighthouse (phase II) (thesis L1708–L1724, listing L1728–L17
 
 Decisions, with the thesis lines (each tested in ``tests/test_markers_case5.py``):
 
-* **Algorithm 6.4's counter** (guide §10 #15): line 1 drops one marker at v0,
+* **Algorithm 6.4's counter** (L1731–L1745): line 1 drops one marker at v0,
   line 3 sets i ← 1 and line 15 increments only after line 13's drop, so the
   first place discovered would get one marker too — the same label as v0,
-  which contradicts "the unique marker count identifies v_u" (L1716).  We
+  which contradicts "the unique marker count identifies v_u" (L1718).  We
   follow Algorithm 6.2 (Case 3a, which Version-1 says it combines, L1716): v0
   gets 1 and the j-th new place j + 1 (i ← 2 at line 3).  The literal counter
   cannot map the triangle, the smallest world with a loop edge: the loop edge's
@@ -34,7 +34,8 @@ Decisions, with the thesis lines (each tested in ``tests/test_markers_case5.py``
   line 17's H is empty and v_u joins S unmarked at once (line 35) — no motion.
   Later unmarked places are not offered a drop again (line 12 with the same i
   would refuse again: i only grows on a drop).
-* **Probing in phase II** (line 8, guide's note): a probe that reaches an
+* **Probing in phase II** (line 8, L1738–L1739, probes "until an explored
+  edge has been traversed", silent on unmarked neighbours): a probe that reaches an
   *unmarked* neighbour learns nothing (it may be new or a phase-II place), so
   the robot retraces and tries the next edge; the probe ends at the first
   *marked* neighbour over an explored edge.  One exists: every marked place

@@ -18,7 +18,7 @@ L1776–L1817).
 
 Decisions, with the thesis lines (each tested in ``tests/test_markers_case5.py``):
 
-* **Line 23** (guide §10 #16): "case P and P^E do not match throughout →
+* **Line 23** (L1801): "case P and P^E do not match throughout →
   confirm hypothesis" repeats line 21's condition; it must be "match
   throughout" (Algorithm 6.4 line 29, Algorithm 3.1).  We confirm on a full
   match; "exit for loop" is the inner while loop.  The literal line would
@@ -28,7 +28,7 @@ Decisions, with the thesis lines (each tested in ``tests/test_markers_case5.py``
   the pendant's free end with K = 4 — the literal reading adds the triangle's
   first place twice (the checker's ``wrong-map``); ours maps it (and every
   world of ≤ 5 places and degree ≤ 4 from every start, K = 4).
-* **Line 28** (guide): a one-marker v_u is always a phase-I place, so the
+* **Line 28** (L1806): a one-marker v_u is always a phase-I place, so the
   non-loop branch after rejecting every hypothesis cannot be reached in a
   correct run; it is kept as Algorithm 3.1's non-loop augmentation (the checker
   would report the wrong map if it ever were).

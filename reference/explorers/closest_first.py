@@ -18,7 +18,7 @@ rule 1 makes its next edge the first one explored, marked by rule 2 or 3
 (L1659–L1661).  The search is Case 1a's (Algorithm 6.3 lines 14–24) or Case
 2's (c_1 and c_2).
 
-Decision: **m − ⌊(n−1)/2⌋, not m − ⌊n/2⌋** (guide §10 #13).  L1663 counts
+Decision: **m − ⌊(n−1)/2⌋, not m − ⌊n/2⌋** (L1663, L1665).  L1663 counts
 "the m − (n − 1) loop edges" and "Maximumly, half (⌈(n−1)/2⌉) of the
 non-loop edges", which is m − (n − 1) + ⌈(n−1)/2⌉ = m − ⌊(n−1)/2⌋; the
 same line then says "Totally m − ⌊n/2⌋ markers are sufficient", one too few

@@ -26,24 +26,27 @@ marked place names itself.  It never uses n or m.
 
 Decisions, with the thesis lines:
 
-* **Dropping on e costs a trip** (guide §10 #12).  L1627 "the robot goes back to
-  (non-loop) edge e, dropping", and Algorithm 6.6 line 10 "goes back on e, drops
-  i markers on e and back": E-markers are dropped in transit, so Case 3b walks
-  back over e to v_k, drops there on e, and walks back to v_u — two traversals
-  per non-loop edge, purpose ``other``.  (The kernel could drop on e from v_u at
-  no cost; that variant's cost is the measured cost minus ``by_purpose["other"]``,
-  since nothing else changes.)
-* **Σ^{n−1} against Figure 6.6's Σ^{n}** (guide §10 #11).  Both hold, for
-  different kits: L1577 "The algorithm marks each of the n vertices uniquely, so a
-  total of Σ_{k=1}^{n} k V-markers are used", and with exactly Σ_{k=1}^{n−1} k
-  "this vertex must be the last vertex that has not been visited and the robot
-  can leave the vertex blank" (Algorithm 6.2 lines 10–16).  The default kit is the
-  class's Σ_{k=1}^{n−1} k (the last new vertex stays blank, recognised by its
-  blank label afterwards, L1577); with ``--markers`` ≥ Σ_{k=1}^{n} k every vertex
-  is marked, so the vertex algorithms' marker bound is Σ_{k=1}^{n} k.  Same for
-  the directional variant, whose blank last vertex has no direction (guide §10
-  #25): loop edges into it take Algorithm 6.2's probe search, each probe ending
-  at the first neighbour whose directional markers show an explored edge.
+* **Dropping on e costs a trip** (the thesis does not say whether it costs
+  traversals).  L1629 "the robot goes back to (non-loop) edge e, dropping", and
+  Algorithm 6.6 line 10 (L1950) "goes back on e, drops i markers on e and back":
+  E-markers are dropped in transit, so Case 3b walks back over e to v_k, drops
+  there on e, and walks back to v_u — two traversals per non-loop edge, purpose
+  ``other``.  (The kernel could drop on e from v_u at no cost; that variant's
+  cost is the measured cost minus ``by_purpose["other"]``, since nothing else
+  changes.)
+* **Σ^{n−1} against Figure 6.6's Σ^{n}** (Case 3a's title, L1562, and Algorithm
+  6.2's, L1579, say Σ_{k=1}^{n−1} k; Figure 6.6's caption, L1569, Σ_{k=1}^{n} k).
+  Both hold, for different kits: L1575 "The algorithm marks each of the n
+  vertices uniquely, so a total of Σ_{k=1}^{n} k V-markers are used", and with
+  exactly Σ_{k=1}^{n−1} k "this vertex must be the last vertex that has not been
+  visited and the robot can leave the vertex blank" (Algorithm 6.2 lines 10–16).
+  The default kit is the class's Σ_{k=1}^{n−1} k (the last new vertex stays
+  blank, recognised by its blank label afterwards, L1575); with ``--markers`` ≥
+  Σ_{k=1}^{n} k every vertex is marked, so the vertex algorithms' marker bound is
+  Σ_{k=1}^{n} k.  Same for the directional variant, whose blank last vertex has
+  no direction (L1902 does not discuss it): loop edges into it take Algorithm
+  6.2's probe search, each probe ending at the first neighbour whose directional
+  markers show an explored edge.
 * **Fewer markers than assured.**  Case 3b: the refused drop is the ``failed``
   outcome.  The vertex algorithms cannot tell the first shortage from the last
   vertex (the thesis's own rule), so a *second* unmarked place found, or a blank

@@ -28,9 +28,9 @@ and that edge is e' (lines 14–18).
 
 Decisions, with the thesis lines (each shown in ``tests/test_markers_621.py``):
 
-* **Back to v_k before the search** (guide §10 #9): Case 1a does not say
-  how the robot gets back to S; Figure 6.5(b) and Algorithm 6.1 line 10 do:
-  "goes back to v_k via e" (purpose ``retrace``).
+* **Back to v_k before the search**: Case 1a (L1497–L1504) does not say
+  how the robot gets back to S; Figure 6.5(b) (L1519) and Algorithm 6.1 line 10
+  (L1543) do: "goes back to v_k via e" (purpose ``retrace``).
 * **Dropping on e costs nothing extra.**  "during transit on e" (Algorithm
   6.1 line 10, Algorithm 6.3 line 6): the marker on e is dropped from v_u on
   its entry edge after v_u has been sensed, so the sensing excludes e
@@ -58,9 +58,9 @@ Decisions, with the thesis lines (each shown in ``tests/test_markers_621.py``):
   registration from n and m; the robot never sees them).  The m extension
   runs when the last iteration's drop is refused — shown with a kit one
   short in that iteration's kind (K4: n V and m − n E; a chain: n − 1 V).
-* **Case 2's count** (guide §10 #10): titled m + n, the text counts
-  m + n − 1 ("$m - n + 1$ markers on loop edges and $2(n - 1)$ markers on
-  the $n - 1$ non-loop edges", L1529); the kit is the assured m + n, the
+* **Case 2's count**: titled m + n (L1523, Algorithm 6.1 at L1531), the text
+  counts m + n − 1 ("$m - n + 1$ markers on loop edges and $2(n - 1)$ markers
+  on the $n - 1$ non-loop edges", L1529); the kit is the assured m + n, the
   marker bound checked is m + n − 1 (every run drops exactly that).
 
 Examples

@@ -26,7 +26,7 @@ entry edge, must be an unexplored edge, 2) it has [the same] edgeINFO" (L1898).
 
 Decisions, with the thesis lines (each shown in ``tests/test_markers_622.py``):
 
-* **Which exit a V-marker points at** (L1891 leaves it open; guide §7 NOTE):
+* **Which exit a V-marker points at** (L1891 leaves it open):
   the edge the robot entered by when it dropped it (``direction=0``), at v0
   the exit it faces (the map's exit 0).  A robot entering that vertex later
   by exit j senses ``V-((head − j) mod deg)``.
@@ -35,12 +35,12 @@ Decisions, with the thesis lines (each shown in ``tests/test_markers_622.py``):
   so the loop edge e = e' reads ``E-p-H`` at v_k' and ``E-p-T`` at v_k.
   The thesis's example reads "incoming (P_H)" (L1898); with this convention
   every loop edge is incoming at the vertex found by the search.  Its
-  (P_T, A, P_H, A) from ``[4,V-1,E-1-H,E-3-T]`` (L1896/L1898, guide §10
-  #20) is inconsistent with "incoming (P_H)"; here edgeINFO is read from
+  (P_T, A, P_H, A) from ``[4,V-1,E-1-H,E-3-T]`` (Figure 6.14's caption, L1896,
+  and L1898) is inconsistent with "incoming (P_H)"; here edgeINFO is read from
   the signature as :func:`~topomark.spec.signature.signature_at` defines
   it, so the question does not arise.
-* **The candidate test, made exact** (generalising L1898 as the guide's NOTE
-  does): a directional V-marker fixes an absolute frame at every vertex, so
+* **The candidate test, made exact** (generalising L1898's two conditions):
+  a directional V-marker fixes an absolute frame at every vertex, so
   conditions 1) and 2), and the enriched edgeINFO, say together that a
   known vertex w can be v_u only through a dart (w, j) with j unexplored in
   S and ``signature_at(S, w, j)`` equal to what the robot sensed at v_u on
@@ -54,12 +54,13 @@ Decisions, with the thesis lines (each shown in ``tests/test_markers_622.py``):
   candidates.  :func:`matching_darts` needs no V-marker (it compares
   whole signatures from every unexplored entry), so it serves an E-only
   algorithm as well.
-* **Case 2: anchored at the entry** (L1898 "in a similar manner"; guide §7
-  NOTE and §10 #21: without a V-marker "a rotation-invariant comparison
-  would be needed"): a candidate dart (w, j) passes iff j is unexplored and
+* **Case 2: anchored at the entry** (L1898 "in a similar manner"; L1891
+  enumerates edgeINFO "starting from the edge pointed to by the directional
+  V-marker", and Case 2 drops no V-marker: the thesis does not say where its
+  enumeration starts): a candidate dart (w, j) passes iff j is unexplored and
   S's marks at w read from entry j are the marks sensed at v_u relative to
-  its entry — :func:`matching_darts` tries every unexplored entry of w, which
-  is that rotation-invariant comparison.  Every E-marker's head is at v_u
+  its entry — :func:`matching_darts` tries every unexplored entry of w, so the
+  comparison does not depend on where an enumeration starts.  Every E-marker's head is at v_u
   (the two on a non-loop e point at the new vertex, the loop one at v_k').
   Observation: the marked edges' *positions* relative to the entry are
   sensed even with undirected markers; the heads and (Case 1b) the V-marker's

@@ -26,11 +26,12 @@ Decisions:
   edge information" (L1369) at each vertex whose neighbours are all known in
   M' and whose neighbour degree list D has no proper rotation onto itself
   (:func:`shows_entry`, §5.1's test): the thesis does not say how it is read
-  (guide 4 note (e)); here the robot visits every neighbour out and back
-  (moves tagged ``probe``, as §5.1's probing) and compares each degree with
-  M''s at that exit counted from the expected entry.
+  (L1369 names the information only); here the robot visits every neighbour
+  out and back (moves tagged ``probe``, as §5.1's probing) and compares each
+  degree with M''s at that exit counted from the expected entry.
 * A hypothesis that would make a self-loop or a multi-edge is never formed:
-  §3.1.1 forbids both in a world (the thesis is silent, guide 4 note (d)).
+  §3.1.1 forbids both in a world (L374); Algorithm 5.1 line 17 (L1400) does
+  not exclude them.
 
 :class:`Walker` keeps the robot's frame: after an excursion the robot is back
 at v_u but has entered it by another edge; ``turn`` is that offset, applied

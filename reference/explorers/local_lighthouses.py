@@ -60,7 +60,7 @@ Neither scheme can guarantee the lighthouse's place (both) nor its back-link
   itself claims ``correct``.  (Unchecked, ``--no-check``, such a run may end
   with a wrong map or, if S never closes, not end.)
 
-Decisions (the thesis is silent, L1344–L1346; see also the guide's notes):
+Decisions (the thesis is silent, L1344–L1346):
 
 * Walk: ``walk_limit`` steps (default 200 — the thesis gives no length for
   §5.2.1; 200 is its only walk threshold, §5.1 L1332), each by a uniformly

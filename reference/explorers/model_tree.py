@@ -18,7 +18,7 @@ The robot carries nothing (an empty kit) and senses only degrees.  Each step
    thesis's comparison of L1421); ``--entry-check yes`` (default) adds the
    entry-edge information of L1369 to the global validation.
 
-Termination, all decided here since the thesis gives one heuristic only (guide 4, L1373):
+Termination, all decided here since the thesis gives one heuristic only (L1373):
 
 * L1373: a model that is the only completed model for ``--window`` steps
   (default 100, the thesis's example) is returned;
@@ -49,7 +49,8 @@ the registration refuses a false ``cue-n``/``cue-m`` as bad input.
   ends as soon as one model is left and it is completed (L1436: "terminate
   as soon as all the current models have n vertices").
 * ``cue-diameter D``: a completed model of diameter > D is voided (a partial
-  model's diameter can still shrink, guide 4.1 note); once TM has been
+  model's diameter can still shrink, so L1436's rejection of "a model with too
+  large a diameter" waits for it to be completed); once TM has been
   explored to depth D (every exit of every TM vertex at depth ≤ D taken,
   L1436: "cease exploration after depth d of the traversal map"), every
   world edge has been walked, so each model not completed is voided and the

@@ -34,7 +34,7 @@ Decision (the thesis is silent): the probe of a neighbour is always "out
 through the exit, sense, back"; the robot restores its facing after probing
 so the explorer's bookkeeping (the retrace of line 17, the execution trie's
 offset) holds unchanged.  The vertex just left is never probed: its signature
-is known (the guide's note on L1332).
+was sensed when the robot stood there (L1334: "only as many as necessary").
 
 Examples
 --------

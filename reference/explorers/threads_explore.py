@@ -19,7 +19,8 @@ Algorithm 6.7 lines 8–9 and 14).  At v_u (Algorithm 6.8 lines 6–15):
   free end at v_u, goes back over e to v_k and walks the thread back toward
   v_s; the vertex with one more thread-marked edge than its record is v_k' =
   v_u, that edge is e'.  There it takes the free end and rewinds e to v_k
-  (guide §8.3's reading: rewinding e before v_k' is found would lose the mark).
+  (ours: lines 11–12 of Algorithm 6.7, L2070–L2071, do not say where the free
+  end waits; rewinding e before v_k' is found would lose the mark).
 * **no thread** — in Algorithm 6.7 v_u is new (every visited vertex that is
   not fully explored lies on the thread, L2046).  In Algorithm 6.8 v_u may be
   a visited vertex the robot rewound from when l was reached (L2096): line 11
@@ -28,7 +29,8 @@ Algorithm 6.7 lines 8–9 and 14).  At v_u (Algorithm 6.8 lines 6–15):
   end" (the candidates of the movable marker explorer, minus the thread's
   vertices, visited in the same order), leaving the free end at v_u.  Found
   at v_k': the thread's one edge there is e'; take the end, rewind e.  Not
-  found: v_u is new; walk back to v_k, cross e and take the end (guide §8.5).
+  found: v_u is new; walk back to v_k, cross e and take the end (ours: line 11,
+  L2126–L2127, does not say how the robot gets back to the free end).
 
 After the step (lines 16–21) the robot rewinds until it stands at a vertex
 that is not fully explored and the thread is shorter than l; when it reaches

@@ -33,7 +33,8 @@ Decisions (the thesis gives no listing):
   most the n − 1 tree edges and m − n + 1 loop edges, plus one probe edge —
   so m + 1 edges never run out; the kit is given exactly that and the
   simulator refuses more, so the claim is checked on every run.
-* **Knots survive** where needed (guide §8.4's note): a vertex's knots are
+* **Knots survive** where needed (Figure 6.20, L2084: "Rewinds the thread only
+  when the current place is fully explored"): a vertex's knots are
   tied at its first position on the walk and picked up only by rewinding out
   of that position, which happens only when it is fully explored; a loop edge
   or a probe leads only to a vertex that is not fully explored or lies on the

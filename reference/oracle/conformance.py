@@ -11,7 +11,7 @@ test vectors, :func:`export` writes a self-describing, versioned directory:
 ``worlds/<case>.json``
     each world (``topomark/world@1``, with its start): the thesis's figures
     (the Figure 3.4/3.6 wheel pair, the trace.md triangle, the Figure 3.3
-    cycles, chains) and generated families of §3.5.3 across sizes;
+    cycles, chains) and generated world families of §3.5.3 across sizes;
 ``reference/<case>/<policy>.trace.jsonl`` and ``.map.json``
     topomark's checked Algorithm 3.1 run under each named policy (§3.3 leaves
     the edge, hypothesis and path choices open): its trace (``spec/trace.md``),
@@ -45,7 +45,7 @@ from dataclasses import dataclass
 from pathlib import Path, PurePosixPath
 from typing import Any, Callable, Sequence
 
-from topomark.spec.errors import CheckFailure, InvalidInput, TopomarkFault
+from topomark.spec.errors import CheckFailure, InvalidInput, TopomarkFault, clip
 from topomark.spec.jsontext import parse_json, read_text_file
 from topomark.spec.kit import Kit
 from topomark.spec.world import Start, World
@@ -96,7 +96,7 @@ def _started(world: World) -> World:
 
 
 def default_cases() -> list[tuple[str, str, World]]:
-    """(name, description, world) of the default suite: thesis figures, then families across sizes."""
+    """(name, description, world) of the default suite: thesis figures, then world families across sizes."""
     wa, wb = g.wheel_pair_directional()
     cases = [
         ("figure-3.6-wheel-a", "Figure 3.4/3.6(a): planar wheel W4, directional marker at the centre", wa),
@@ -179,9 +179,7 @@ def load_manifest(root: Path) -> dict[str, Any]:
 
 def _field(root: Path, where: str, value: Any, ok: bool, want: str) -> None:
     if not ok:
-        shown = json.dumps(value)
-        shown = shown if len(shown) <= 60 else shown[:57] + "..."
-        _bad(root, f"manifest.json: {where} must be {want}, got {shown}")
+        _bad(root, f"manifest.json: {where} must be {want}, got {clip(json.dumps(value), 60, note='')}")
 
 
 def _count(root: Path, where: str, value: Any) -> None:

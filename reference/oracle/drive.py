@@ -32,7 +32,7 @@ from types import SimpleNamespace
 from dataclasses import dataclass, field
 from typing import Any, Sequence
 
-from topomark.spec.errors import CheckFailure, InvalidInput, TopomarkFault, Violation
+from topomark.spec.errors import CheckFailure, InvalidInput, TopomarkFault, Violation, clip
 from topomark.spec.kit import Kit, MarkerOp
 from topomark.spec.signature import Signature
 from topomark.spec.world import World
@@ -44,7 +44,7 @@ from topomark.reference.explorers.lighthouses import LIGHTHOUSES, Lighthouse
 from topomark.reference.run.map_check import MapVerdict, check_map
 from topomark.reference.explorers.policies import Policies
 from topomark.reference.oracle.peer import Peer
-from topomark.reference.oracle.protocol import MAX_MESSAGE, VERSIONS, Expect, ProtocolError, clip
+from topomark.reference.oracle.protocol import MAX_MESSAGE, VERSIONS, Expect, ProtocolError
 from topomark.reference.explorers.robot import Robot
 from topomark.reference.oracle.marker_messages import op_to_message
 

@@ -27,9 +27,10 @@ from __future__ import annotations
 import json
 from typing import Any
 
+from topomark.spec.errors import clip
 from topomark.spec.kit import THREAD_OPS, MarkerOp, ThreadOp
 
-from topomark.reference.oracle.protocol import ProtocolError, clip
+from topomark.reference.oracle.protocol import ProtocolError
 
 __all__ = ["MAX_COUNT", "op_from_message", "op_to_message"]
 

@@ -25,11 +25,11 @@ from __future__ import annotations
 import json
 from typing import Any, Sequence
 
-from topomark.spec.errors import InvalidInput
+from topomark.spec.errors import InvalidInput, clip
 from topomark.spec.jsontext import parse_json
 
 __all__ = ["PROTOCOL", "PROTOCOL2", "VERSIONS", "MESSAGES", "MESSAGES2", "Expect", "ProtocolError", "encode",
-           "decode", "clip", "MAX_LINE", "MAX_MESSAGE"]
+           "decode", "MAX_LINE", "MAX_MESSAGE"]
 
 PROTOCOL = "topomark/protocol@1"
 PROTOCOL2 = "topomark/protocol@2"
@@ -162,8 +162,3 @@ def _version(msg: dict[str, Any], version: int | None) -> int:
         raise ProtocolError("protocol", f"hello speaking {shown!r}; this topomark speaks "
                                         f"{' and '.join(VERSIONS)}")
     return VERSIONS[named]
-
-
-def clip(text: str, limit: int = 120) -> str:
-    """``text`` cut to ``limit`` characters (with "..." and the full length when cut)."""
-    return text if len(text) <= limit else f"{text[:limit]}... ({len(text):,} characters)"

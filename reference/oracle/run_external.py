@@ -22,7 +22,7 @@ import time
 from dataclasses import dataclass, field
 from typing import Any, Sequence
 
-from topomark.spec.errors import CheckFailure, InvalidInput, InvalidWorld, Violation
+from topomark.spec.errors import CheckFailure, InvalidInput, InvalidWorld, Violation, clip
 from topomark.spec.invariants import check_invariants, lighthouse_anchor
 from topomark.spec.isomorphism import find_isomorphism, verify_witness
 from topomark.spec.kit import Kit
@@ -33,7 +33,7 @@ from topomark.reference.algorithms.bounds import upper_bound
 from topomark.reference.run.explore import prepare_world
 from topomark.reference.run.map_check import MapVerdict, check_map
 from topomark.reference.oracle.peer import Peer
-from topomark.reference.oracle.protocol import MAX_MESSAGE, PROTOCOL, PROTOCOL2, Expect, ProtocolError, clip
+from topomark.reference.oracle.protocol import MAX_MESSAGE, PROTOCOL, PROTOCOL2, Expect, ProtocolError
 from topomark.reference.run.simulator import Simulator
 from topomark.reference.oracle.snapshot_wire import snapshot_to_map
 from topomark.reference.oracle.marker_messages import op_from_message

@@ -26,13 +26,12 @@ from __future__ import annotations
 import json
 from typing import Any
 
-from topomark.spec.errors import CheckFailure
+from topomark.spec.errors import CheckFailure, clip
 from topomark.spec.mapstate import PartialMap
 from topomark.spec.signature import Signature
 from topomark.spec.thread import ThreadMark
 from topomark.spec.world import DartMark
 
-from topomark.reference.oracle.protocol import clip
 
 __all__ = ["snapshot_to_map", "map_to_snapshot"]
 

@@ -40,7 +40,7 @@ from topomark.reference.explorers.lighthouses import LIGHTHOUSES, Lighthouse, li
 from topomark.reference.algorithms.registry import AlgorithmSpec, algorithm_spec
 from topomark.reference.explorers.policies import Policies
 from topomark.reference.run.simulator import Simulator
-from topomark.reference.trace.families import FAMILIES
+from topomark.reference.trace.families import ALGORITHM_FAMILIES
 from topomark.reference.trace.records import end_record, op_record, trace_header
 from topomark.reference.trace.sink import ListSink, TraceSink
 
@@ -172,7 +172,7 @@ def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: 
     tally = _Tally()
     if emit:
         emit(trace_header(spec.name, policies, run.light, world, run.kit, spec.family))
-    layer = FAMILIES[spec.family].events
+    layer = ALGORITHM_FAMILIES[spec.family].events
 
     def on_move(motion, purpose, sig, true_state):
         if emit_move:

@@ -4,7 +4,9 @@ A trace@2 (``spec/trace.md``) has two layers: the *robot layer* — every
 ``move`` and every marker ``op``, what the robot did, the same for every
 algorithm — and an *algorithm layer* whose records a *family* of algorithms
 defines.  ``topomark replay`` verifies the robot layer of any trace and the
-algorithm layer where the header's family defines one.
+algorithm layer where the header's family defines one.  (These are families of
+algorithms; the bench's families of worlds are
+:data:`topomark.reference.bench.plan.FAMILIES`.)
 
 =================  ================================================  ======================  ==================
 family             algorithms                                        algorithm layer         thesis
@@ -25,7 +27,7 @@ Examples
 --------
 >>> family_of("enh3+4").name
 'algorithm-3.1'
->>> FAMILIES["robot"].events
+>>> ALGORITHM_FAMILIES["robot"].events
 ()
 """
 
@@ -35,14 +37,14 @@ from dataclasses import dataclass
 
 from topomark.reference.algorithms.registry import in_family
 
-__all__ = ["Family", "FAMILIES", "ROBOT_EVENTS", "family_of"]
+__all__ = ["AlgorithmFamily", "ALGORITHM_FAMILIES", "ROBOT_EVENTS", "family_of"]
 
 ROBOT_EVENTS = ("op", "move")
 """The robot layer's events, in every family."""
 
 
 @dataclass(frozen=True)
-class Family:
+class AlgorithmFamily:
     """A family of algorithms sharing one algorithm layer (``events``; none if empty)."""
 
     name: str
@@ -60,13 +62,13 @@ class Family:
         return ("robot", self.name) if self.events else ("robot",)
 
 
-FAMILIES: dict[str, Family] = {f.name: f for f in (
-    Family("algorithm-3.1", "§3.3, Algorithm 3.1 and the Chapter 4 enhancements", ("iteration",), True, True),
-    Family("robot", "the robot layer alone", (), False, False),
+ALGORITHM_FAMILIES: dict[str, AlgorithmFamily] = {f.name: f for f in (
+    AlgorithmFamily("algorithm-3.1", "§3.3, Algorithm 3.1 and the Chapter 4 enhancements", ("iteration",), True, True),
+    AlgorithmFamily("robot", "the robot layer alone", (), False, False),
 )}
 
 
-def family_of(algorithm: str) -> Family:
+def family_of(algorithm: str) -> AlgorithmFamily:
     """The family an algorithm's traces are written in: Algorithm 3.1's for it and the Chapter 4 enhancements,
     the robot layer alone for every other algorithm (until its family defines an algorithm layer)."""
-    return FAMILIES["algorithm-3.1"] if algorithm in in_family("algorithm-3.1") else FAMILIES["robot"]
+    return ALGORITHM_FAMILIES["algorithm-3.1"] if algorithm in in_family("algorithm-3.1") else ALGORITHM_FAMILIES["robot"]

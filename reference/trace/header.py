@@ -1,4 +1,4 @@
-"""A trace's header: its format, algorithm, policies and — for ``topomark/trace@2`` — family, lighthouse, kit.
+"""A trace's header: its format, algorithm, policies and — for ``topomark/trace@2`` — algorithm family, lighthouse, kit.
 
 :func:`check_header` judges a header record whose fields already have the
 right kinds (:mod:`topomark.reference.trace.reader`) and returns the events the
@@ -12,7 +12,7 @@ InvalidInput` (exit 2) naming the line (``spec/trace.md``):
   policy (:func:`header_policies`) — in the ``robot`` family an object the
   recorder's algorithm owns;
 * trace@2: ``family`` one of :data:`~topomark.reference.trace.families.
-  FAMILIES`, covering the algorithm; ``lighthouse`` one of
+  ALGORITHM_FAMILIES`, covering the algorithm; ``lighthouse`` one of
   :data:`~topomark.reference.explorers.lighthouses.LIGHTHOUSES` (``null``
   only in a family without one); ``kit`` a valid
   :class:`~topomark.spec.kit.Kit`, the lighthouse's own when there is one.
@@ -23,14 +23,14 @@ from __future__ import annotations
 import json
 from typing import Any
 
-from topomark.spec.errors import InvalidInput
+from topomark.spec.errors import InvalidInput, clip
 from topomark.spec.kit import Kit
 
 from topomark.reference.algorithms.registry import in_family
 from topomark.reference.trace.records import TRACE_FORMAT, TRACE_FORMAT_2
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES, Lighthouse
 from topomark.reference.explorers.policies import Policies
-from topomark.reference.trace.families import FAMILIES, ROBOT_EVENTS, Family
+from topomark.reference.trace.families import ALGORITHM_FAMILIES, ROBOT_EVENTS, AlgorithmFamily
 
 __all__ = ["FORMATS", "check_header", "header_policies", "header_family", "header_kit", "header_lighthouse"]
 
@@ -55,9 +55,9 @@ def header_policies(value: dict, where: str) -> Policies:
         raise InvalidInput(f"{where}: header.policies: {exc}") from None
 
 
-def header_family(header: dict[str, Any]) -> Family:
+def header_family(header: dict[str, Any]) -> AlgorithmFamily:
     """The header's family: trace@1 is Algorithm 3.1's."""
-    return FAMILIES[header.get("family", "algorithm-3.1")]
+    return ALGORITHM_FAMILIES[header.get("family", "algorithm-3.1")]
 
 
 def header_lighthouse(header: dict[str, Any]) -> Lighthouse | None:
@@ -75,12 +75,12 @@ def check_header(rec: dict[str, Any], where: str) -> tuple[str, ...]:
     """Judge a header (see the module docstring); return the events that may follow it before the end."""
     if rec["format"] not in FORMATS:
         raise InvalidInput(f"{where}: unknown trace format {rec['format']!r} (this is {' or '.join(FORMATS)})")
-    family = FAMILIES["algorithm-3.1"]
+    family = ALGORITHM_FAMILIES["algorithm-3.1"]
     if rec["format"] == TRACE_FORMAT_2:
-        if rec["family"] not in FAMILIES:
+        if rec["family"] not in ALGORITHM_FAMILIES:
             raise InvalidInput(f"{where}: header.family: unknown family {_show(rec['family'])} (the families are "
-                               f"{', '.join(FAMILIES)})")
-        family = FAMILIES[rec["family"]]
+                               f"{', '.join(ALGORITHM_FAMILIES)})")
+        family = ALGORITHM_FAMILIES[rec["family"]]
     if not family.covers(rec["algorithm"]):
         known = f"the registered algorithms are {', '.join(in_family(family.name))}" if family.registered else "a name"
         raise InvalidInput(f"{where}: header.algorithm: unknown algorithm {_show(rec['algorithm'])} "
@@ -93,7 +93,7 @@ def check_header(rec: dict[str, Any], where: str) -> tuple[str, ...]:
     return ROBOT_EVENTS + family.events
 
 
-def _check_kit(rec: dict[str, Any], family: Family, where: str) -> None:
+def _check_kit(rec: dict[str, Any], family: AlgorithmFamily, where: str) -> None:
     name = rec["lighthouse"]
     if name is None and family.lighthouse:
         raise InvalidInput(f"{where}: header.lighthouse: the {family.name} family needs a lighthouse (one of "
@@ -111,5 +111,4 @@ def _check_kit(rec: dict[str, Any], family: Family, where: str) -> None:
 
 
 def _show(value: Any) -> str:
-    text = repr(value)
-    return text if len(text) <= 80 else text[:77] + "..."
+    return clip(repr(value), 80, note="")

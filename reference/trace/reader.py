@@ -35,7 +35,7 @@ from functools import lru_cache
 from pathlib import Path
 from typing import Any, Iterable, Iterator
 
-from topomark.spec.errors import InvalidInput
+from topomark.spec.errors import InvalidInput, clip
 from topomark.spec.jsontext import open_regular_file, parse_json
 from topomark.spec.kit import THREAD_OPS
 from topomark.spec.signature import Signature
@@ -89,8 +89,7 @@ _SHAPES = {_D: "[vertex, exit]", _DARTS: "a list of [vertex, exit]", _JOIN: "[[v
 
 
 def _show(value: Any) -> str:
-    text = json.dumps(value)
-    return text if len(text) <= 80 else text[:77] + "..."
+    return clip(json.dumps(value), 80, note="")
 
 
 def _is_int(value: Any) -> bool:

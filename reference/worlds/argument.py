@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from topomark.spec.errors import InvalidInput
+from topomark.spec.errors import InvalidInput, clip
 from topomark.spec.world import World
 from topomark.spec.worldfile import load_world
 
@@ -62,11 +62,10 @@ def resolve_world(text: str, seed: int | None = None) -> World:
         try:
             return generate(name, **params)
         except InvalidInput as exc:  # name the argument: "lattice-hole:rows=3000,cols=3000: ..."
-            shown = text if len(text) <= 80 else text[:80] + "..."
-            raise exc.__class__(f"{shown}: {exc}") from None
+            raise exc.__class__(f"{clip(text, 80)}: {exc}") from None
     if exists or text.endswith(".json"):
         if seed is not None:
             raise InvalidInput(f"--seed has no effect on a world file ({text})")
         return load_world(text)
-    shown = repr(text) if len(text) <= 80 else repr(text[:80]) + f"... ({len(text):,} characters)"
-    raise InvalidInput(f"{shown} is neither a world file nor a generator (generators: {', '.join(GENERATORS)})")
+    raise InvalidInput(f"{clip(text, 80, quote=True)} is neither a world file nor a generator "
+                       f"(generators: {', '.join(GENERATORS)})")

@@ -1,6 +1,6 @@
 """The deterministic world families: cycles (§3.2.1), chains, lattices and complete graphs (§3.5.3).
 
-Each generator checks its parameters (:func:`_integer` and friends, shared
+Each generator checks its parameters (:func:`integer_param` and friends, shared
 with :mod:`~topomark.reference.worlds.holes` and
 :mod:`~topomark.reference.worlds.random_worlds`), computes n and m and refuses a
 world above the size limits before building anything
@@ -25,13 +25,14 @@ import networkx as nx
 from topomark.spec.errors import InvalidInput
 from topomark.spec.world import World, check_size
 
-from topomark.reference.worlds.embedding import _on_circle, from_positions
+from topomark.reference.worlds.embedding import from_positions, on_circle
 
-__all__ = ["cycle", "chain", "lattice", "complete"]
+__all__ = ["cycle", "chain", "lattice", "complete", "integer_param", "real_param", "fraction_param", "seed_param",
+           "lattice_graph", "lattice_size"]
 
 
 # -- parameter checks -------------------------------------------------------------
-def _integer(name: str, value: Any, minimum: int) -> int:
+def integer_param(name: str, value: Any, minimum: int) -> int:
     """``value`` as an int of at most 18 digits (like every JSON and CLI integer) and ``>= minimum``."""
     if isinstance(value, bool) or not isinstance(value, Integral):
         raise InvalidInput(f"{name} must be an integer, got {value!r}")
@@ -42,21 +43,21 @@ def _integer(name: str, value: Any, minimum: int) -> int:
     return int(value)
 
 
-def _real(name: str, value: Any) -> float:
+def real_param(name: str, value: Any) -> float:
     if isinstance(value, bool) or not isinstance(value, Real) or not math.isfinite(value):
         raise InvalidInput(f"{name} must be a finite number, got {value!r}")
     return float(value)
 
 
-def _fraction(value: Any, name: str = "fraction") -> float:
-    f = _real(name, value)
+def fraction_param(value: Any, name: str = "fraction") -> float:
+    f = real_param(name, value)
     if not 0.0 <= f < 1.0:
         raise InvalidInput(f"{name} must be in [0, 1), got {value!r}")
     return f
 
 
-def _seed(value: Any) -> int:
-    return _integer("seed", value, -(2**63))
+def seed_param(value: Any) -> int:
+    return integer_param("seed", value, -(2**63))
 
 
 # -- cycles and chains ---------------------------------------------------------------
@@ -65,27 +66,27 @@ def cycle(n: int) -> World:
 
     Vertex ``k`` is joined to ``k±1 (mod n)``; drawn on a circle.
     """
-    n = _integer("n", n, 3)
+    n = integer_param("n", n, 3)
     check_size(n, n, f"cycle:n={n}")
-    return _on_circle(n, ((k, (k + 1) % n) for k in range(n)))
+    return on_circle(n, ((k, (k + 1) % n) for k in range(n)))
 
 
 def chain(n: int) -> World:
     """The path ("chain") of n >= 2 vertices ``0 - 1 - ... - n-1``, drawn on a horizontal line."""
-    n = _integer("n", n, 2)
+    n = integer_param("n", n, 2)
     check_size(n, n - 1, f"chain:n={n}")
     return from_positions([(k, k + 1) for k in range(n - 1)], {k: (float(k), 0.0) for k in range(n)})
 
 
 # -- lattices ---------------------------------------------------------------------------
-def _lattice_graph(rows: int, cols: int) -> tuple[nx.Graph, dict]:
+def lattice_graph(rows: int, cols: int) -> tuple[nx.Graph, dict]:
     graph = nx.grid_2d_graph(rows, cols)
     return graph, {(r, c): (float(c), float(-r)) for r, c in graph.nodes}
 
 
-def _lattice_size(rows: Any, cols: Any) -> tuple[int, int]:
-    rows = _integer("rows", rows, 1)
-    cols = _integer("cols", cols, 1)
+def lattice_size(rows: Any, cols: Any) -> tuple[int, int]:
+    rows = integer_param("rows", rows, 1)
+    cols = integer_param("cols", cols, 1)
     if rows * cols < 2:
         raise InvalidInput(f"a {rows}x{cols} lattice has a single vertex of degree 0; it needs at least 2 cells")
     check_size(rows * cols, rows * (cols - 1) + cols * (rows - 1), f"the {rows}x{cols} lattice")
@@ -99,8 +100,8 @@ def lattice(rows: int, cols: int) -> World:
     clockwise order at a cell is north, east, south, west (those present).
     n = rows*cols and m = rows*(cols-1) + cols*(rows-1); the embedding is planar.
     """
-    rows, cols = _lattice_size(rows, cols)
-    graph, pos = _lattice_graph(rows, cols)
+    rows, cols = lattice_size(rows, cols)
+    graph, pos = lattice_graph(rows, cols)
     return from_positions(graph, pos)
 
 
@@ -115,6 +116,6 @@ def complete(n: int) -> World:
     neighbours are thus ordered by position around the circle.  The embedding
     is planar for n <= 3 only.
     """
-    n = _integer("n", n, 2)
+    n = integer_param("n", n, 2)
     check_size(n, n * (n - 1) // 2, f"K_{n}")
-    return _on_circle(n, ((i, j) for i in range(n) for j in range(i + 1, n)))
+    return on_circle(n, ((i, j) for i in range(n) for j in range(i + 1, n)))

@@ -23,7 +23,7 @@ import networkx as nx
 from topomark.spec.errors import InvalidInput
 from topomark.spec.world import World
 
-__all__ = ["natural_key", "from_positions", "circle_positions", "planar", "from_networkx"]
+__all__ = ["natural_key", "from_positions", "circle_positions", "on_circle", "planar", "from_networkx"]
 
 _TWO_PI = 2.0 * math.pi
 
@@ -173,7 +173,7 @@ def circle_positions(n: int) -> dict[int, tuple[float, float]]:
     return {k: (math.cos(_TWO_PI * k / n), math.sin(_TWO_PI * k / n)) for k in range(n)}
 
 
-def _on_circle(n: int, edges: Iterable[tuple[int, int]]) -> World:
+def on_circle(n: int, edges: Iterable[tuple[int, int]]) -> World:
     graph = nx.Graph()
     graph.add_nodes_from(range(n))
     graph.add_edges_from(edges)

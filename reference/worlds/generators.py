@@ -60,13 +60,13 @@ import re
 from numbers import Integral
 from typing import Any, Callable
 
-from topomark.spec.errors import InvalidInput
+from topomark.spec.errors import InvalidInput, clip
 from topomark.spec.world import World
 
 from topomark.reference.worlds.embedding import circle_positions, from_networkx, from_positions, natural_key, planar
 from topomark.reference.worlds.deterministic import chain, complete, cycle, lattice
 from topomark.reference.worlds.holes import complete_hole, lattice_hole
-from topomark.reference.worlds.random_worlds import _OtherPairs, random_graph, small_world  # noqa: F401 - _OtherPairs: tests reach it here
+from topomark.reference.worlds.random_worlds import OtherPairs, random_graph, small_world  # noqa: F401 - OtherPairs: for tests
 from topomark.proofs.wheels import (WHEEL_A_ROTATION, WHEEL_B_ROTATION, wheel_a, wheel_b, wheel_pair,
                      wheel_pair_directional)
 
@@ -135,7 +135,7 @@ _CLI_DIGITS = 18  # as for JSON integers (topomark.spec.jsontext.MAX_INT_DIGITS)
 
 def _shown(value: str, limit: int = 40) -> str:
     """``repr(value)`` cut to ``limit`` characters, for messages about hostile parameters."""
-    return repr(value) if len(value) <= limit else repr(value[:limit]) + f"... ({len(value):,} characters)"
+    return clip(value, limit, quote=True)
 
 
 def _coerce(generator: str, param: str, value: Any, default: Any) -> Any:

@@ -20,7 +20,7 @@ from topomark.spec.errors import InvalidInput
 from topomark.spec.world import World, check_size
 
 from topomark.reference.worlds.embedding import circle_positions, from_positions
-from topomark.reference.worlds.deterministic import _fraction, _integer, _lattice_graph, _lattice_size, _seed
+from topomark.reference.worlds.deterministic import fraction_param, integer_param, lattice_graph, lattice_size, seed_param
 
 __all__ = ["lattice_hole", "complete_hole"]
 
@@ -97,7 +97,7 @@ def _remove_vertices(graph: nx.Graph, count: int, rng: random.Random, what: str)
         pending = skipped
 
 
-# -- the two families ---------------------------------------------------------------
+# -- the two world families -----------------------------------------------------------
 def lattice_hole(rows: int, cols: int, fraction: float = 0.1, remove: str = "vertices", seed: int = 0) -> World:
     """A lattice with holes, §3.5.3 (Figure 3.8(a), Figure 3.10(c)).
 
@@ -114,12 +114,12 @@ def lattice_hole(rows: int, cols: int, fraction: float = 0.1, remove: str = "ver
     unknown, or that many removals cannot keep the graph connected with at
     least 2 vertices.
     """
-    rows, cols = _lattice_size(rows, cols)
-    fraction = _fraction(fraction)
+    rows, cols = lattice_size(rows, cols)
+    fraction = fraction_param(fraction)
     if remove not in ("vertices", "edges"):
         raise InvalidInput(f"remove must be 'vertices' or 'edges', got {remove!r}")
-    rng = random.Random(_seed(seed))
-    graph, pos = _lattice_graph(rows, cols)
+    rng = random.Random(seed_param(seed))
+    graph, pos = lattice_graph(rows, cols)
     what = f"the {rows}x{cols} lattice"
     if remove == "vertices":
         _remove_vertices(graph, round(fraction * graph.number_of_nodes()), rng, what)
@@ -137,10 +137,10 @@ def complete_hole(n: int, fraction: float = 0.1, seed: int = 0) -> World:
     InvalidInput for n < 2, fraction outside [0, 1), or more removals than a
     connected graph allows.
     """
-    n = _integer("n", n, 2)
+    n = integer_param("n", n, 2)
     check_size(n, n * (n - 1) // 2, f"K_{n} (built before its edges are removed)")
-    fraction = _fraction(fraction)
-    rng = random.Random(_seed(seed))
+    fraction = fraction_param(fraction)
+    rng = random.Random(seed_param(seed))
     graph = nx.complete_graph(n)
     _remove_edges(graph, round(fraction * graph.number_of_edges()), rng, f"K_{n}")
     return from_positions(graph, circle_positions(n))

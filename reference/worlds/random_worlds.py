@@ -20,10 +20,10 @@ import networkx as nx
 from topomark.spec.errors import InvalidInput
 from topomark.spec.world import World, check_size
 
-from topomark.reference.worlds.embedding import _on_circle, circle_positions, from_positions
-from topomark.reference.worlds.deterministic import _integer, _real, _seed
+from topomark.reference.worlds.embedding import circle_positions, from_positions, on_circle
+from topomark.reference.worlds.deterministic import integer_param, real_param, seed_param
 
-__all__ = ["small_world", "random_graph"]
+__all__ = ["small_world", "random_graph", "OtherPairs"]
 
 
 def small_world(n: int, k: int, p: float, seed: int = 0) -> World:
@@ -43,17 +43,17 @@ def small_world(n: int, k: int, p: float, seed: int = 0) -> World:
     is what is checked against the size limits, before anything is built.  Embedding: vertices on a circle,
     clockwise by angle (as :func:`~topomark.reference.worlds.deterministic.complete`).
     """
-    n = _integer("n", n, 3)
-    k = _integer("k", k, 2)
+    n = integer_param("n", n, 3)
+    k = integer_param("k", k, 2)
     if k % 2:
         raise InvalidInput(f"k must be even (k/2 nearest neighbours on each side of the ring), got {k}")
     if k >= n:
         raise InvalidInput(f"k must be < n (k={k}, n={n}): a ring of {n} vertices has only {n - 1} other vertices")
-    p = _real("p", p)
+    p = real_param("p", p)
     if not 0.0 <= p <= 1.0:
         raise InvalidInput(f"p must be a probability in [0, 1], got {p!r}")
     check_size(n, min(n * k, n * (n - 1) // 2) if p > 0 else n * k // 2, f"small-world:n={n},k={k},p={p!r}")
-    rng = random.Random(_seed(seed))
+    rng = random.Random(seed_param(seed))
     ring = [(u, (u + j) % n) for u in range(n) for j in range(1, k // 2 + 1)]
     graph = nx.Graph()
     graph.add_nodes_from(range(n))
@@ -66,7 +66,7 @@ def small_world(n: int, k: int, p: float, seed: int = 0) -> World:
     return from_positions(graph, circle_positions(n))
 
 
-class _OtherPairs(Sequence):
+class OtherPairs(Sequence):
     """The vertex pairs ``(i, j)``, ``i < j < n``, in lexicographic order, minus the sorted ``taken`` ones.
 
     Equal, element by element, to the list of those pairs, but computed on
@@ -108,13 +108,13 @@ def random_graph(n: int, fraction: float, seed: int = 0) -> World:
     Connectivity is guaranteed by construction: first a random spanning tree
     (vertices in a random order, each joined to a uniformly chosen earlier
     one), then the remaining edges drawn uniformly without replacement from
-    all other vertex pairs (:class:`_OtherPairs`).  Embedding: vertices on a
+    all other vertex pairs (:class:`OtherPairs`).  Embedding: vertices on a
     circle, clockwise by angle (as :func:`~topomark.reference.worlds.deterministic.complete`).  Raises InvalidInput if
     n < 2, fraction is outside (0, 1], the edge count is below n - 1 (no
     connected graph) or the world exceeds the size limits (checked first).
     """
-    n = _integer("n", n, 2)
-    f = _real("fraction", fraction)
+    n = integer_param("n", n, 2)
+    f = real_param("fraction", fraction)
     if not 0.0 < f <= 1.0:
         raise InvalidInput(f"fraction must be in (0, 1], got {fraction!r}")
     total = n * (n - 1) // 2
@@ -125,10 +125,10 @@ def random_graph(n: int, fraction: float, seed: int = 0) -> World:
             f"fraction {fraction!r} gives {count} edges, fewer than the {n - 1} a connected graph "
             f"on {n} vertices needs (fraction >= {(n - 1) / total:.4g})"
         )
-    rng = random.Random(_seed(seed))
+    rng = random.Random(seed_param(seed))
     order = list(range(n))
     rng.shuffle(order)
     edges = {tuple(sorted((order[i], order[rng.randrange(i)]))) for i in range(1, n)}
-    edges.update(rng.sample(_OtherPairs(n, edges), count - len(edges)))
-    return _on_circle(n, sorted(edges))
+    edges.update(rng.sample(OtherPairs(n, edges), count - len(edges)))
+    return on_circle(n, sorted(edges))
 

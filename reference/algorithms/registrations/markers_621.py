@@ -58,7 +58,8 @@ from topomark.reference.algorithms.algorithm_spec import MARKER_MAP_CHECKS, Algo
 from topomark.reference.explorers.closest_first import ClosestFirst, ClosestFirstDouble
 from topomark.reference.explorers.edge_footprints import DoubleMarkedEdges, EdgeFootprints, VertexEdgeFootprints
 
-__all__ = ["SPECS", "footprints_bound", "case_4_markers", "case_4_mn_markers"]
+__all__ = ["SPECS", "footprints_bound", "case_4_markers", "case_4_mn_markers", "MARKER_OPTIONS", "kit_size", "case_1b_kit",
+           "footprint_spec"]
 
 MARKERS = Parameter("markers", "how many markers the robot carries (default: what its case is assured, "
                                "from n and m)", None, minimum=1)
@@ -79,23 +80,23 @@ def case_4_mn_markers(n: int, m: int) -> int:
     return m - n + 1 + 2 * (n // 2)
 
 
-def _given(options: dict, assured: int) -> int:
+def kit_size(options: dict, assured: int) -> int:
     """The kit's size: ``--markers`` if given, else what the case is assured."""
     given = options.get("markers")
     return assured if given is None else given
 
 
-def _case_1b_kit(n: int, m: int, options: dict) -> Kit:
+def case_1b_kit(n: int, m: int, options: dict) -> Kit:
     """Case 1b's m + 1 homogeneous V-E-markers as one pool, each dropped at a vertex or on an edge (L1510,
     footnote 16); ``--markers K``: a pool of K (L1512: m suffices)."""
-    return Kit(either=_given(options, m + 1))
+    return Kit(either=kit_size(options, m + 1))
 
 
 _BOUND = "O(mn) ({}); bound_fn: ours, exact for our explorer"
-_OPTIONS = ("markers",)
+MARKER_OPTIONS = ("markers",)
 
 
-def _spec(name, thesis, markers, explorer, kit_fn, marker_bound_fn, cites, options=_OPTIONS + ("policy edge",),
+def footprint_spec(name, thesis, markers, explorer, kit_fn, marker_bound_fn, cites, options=MARKER_OPTIONS + ("policy edge",),
           kind=Kit(edge=1)):
     """``kind``: the kind of marker the kit holds (the registry's ``kit``; the counts come from ``kit_fn``)."""
     return AlgorithmSpec(name=name, thesis=thesis, kit=kind, bound=_BOUND.format(cites), markers=markers,
@@ -105,18 +106,18 @@ def _spec(name, thesis, markers, explorer, kit_fn, marker_bound_fn, cites, optio
 
 
 SPECS = (
-    _spec("case-1a", "§6.2.1 Case 1a, m E-markers (L1497–L1506, Figure 6.4; footprints [18])", "m undirected E-markers",
-          EdgeFootprints, lambda n, m, o: Kit(edge=_given(o, m)), lambda n, m: m, "L1506"),
-    _spec("case-1b", "§6.2.1 Case 1b, m + 1 V-E-markers, extendable to m (L1508–L1521, Figure 6.5)",
-          "m + 1 undirected V-E-markers, one pool (m with the extension, L1512)", VertexEdgeFootprints, _case_1b_kit,
+    footprint_spec("case-1a", "§6.2.1 Case 1a, m E-markers (L1497–L1506, Figure 6.4; footprints [18])", "m undirected E-markers",
+          EdgeFootprints, lambda n, m, o: Kit(edge=kit_size(o, m)), lambda n, m: m, "L1506"),
+    footprint_spec("case-1b", "§6.2.1 Case 1b, m + 1 V-E-markers, extendable to m (L1508–L1521, Figure 6.5)",
+          "m + 1 undirected V-E-markers, one pool (m with the extension, L1512)", VertexEdgeFootprints, case_1b_kit,
           lambda n, m: m + 1, "L1510", kind=Kit(either=1)),
-    _spec("case-2", "§6.2.1 Case 2, Algorithm 6.1, m + n E-markers (L1523–L1554)",
+    footprint_spec("case-2", "§6.2.1 Case 2, Algorithm 6.1, m + n E-markers (L1523–L1554)",
           "m + n undirected E-markers (m + n − 1 used, L1529)", DoubleMarkedEdges,
-          lambda n, m, o: Kit(edge=_given(o, m + n)), lambda n, m: m + n - 1, "L1529"),
-    _spec("case-4", "§6.2.1 Case 4, Algorithm 6.3, closest-first (L1640–L1699, Figure 6.9)",
+          lambda n, m, o: Kit(edge=kit_size(o, m + n)), lambda n, m: m + n - 1, "L1529"),
+    footprint_spec("case-4", "§6.2.1 Case 4, Algorithm 6.3, closest-first (L1640–L1699, Figure 6.9)",
           "m − ⌊(n−1)/2⌋ undirected E-markers (stated m − ⌊n/2⌋, L1663: one short for even n)", ClosestFirst,
-          lambda n, m, o: Kit(edge=_given(o, case_4_markers(n, m))), case_4_markers, "L1642", _OPTIONS),
-    _spec("case-4-mn", "§6.2.1 Case 4, the closest-first extension of Case 2 (L1665)",
+          lambda n, m, o: Kit(edge=kit_size(o, case_4_markers(n, m))), case_4_markers, "L1642", MARKER_OPTIONS),
+    footprint_spec("case-4-mn", "§6.2.1 Case 4, the closest-first extension of Case 2 (L1665)",
           "m + [n even] undirected E-markers (stated m, L1665: one short for even n)", ClosestFirstDouble,
-          lambda n, m, o: Kit(edge=_given(o, case_4_mn_markers(n, m))), case_4_mn_markers, "L1642", _OPTIONS),
+          lambda n, m, o: Kit(edge=kit_size(o, case_4_mn_markers(n, m))), case_4_mn_markers, "L1642", MARKER_OPTIONS),
 )

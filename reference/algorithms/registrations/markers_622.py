@@ -41,25 +41,27 @@ from topomark.spec.kit import Kit
 
 from topomark.reference.explorers.edge_info import (ClosestFirstDoubleEdgeInfo, ClosestFirstEdgeInfo, DoubleMarkedEdgeInfo,
                                    EdgeFootprintsEdgeInfo, EdgeInfoFootprints)
-from topomark.reference.algorithms.registrations.markers_621 import _OPTIONS, _case_1b_kit, _given, _spec, case_4_markers, case_4_mn_markers, footprints_bound
+from topomark.reference.algorithms.registrations.markers_621 import (MARKER_OPTIONS, case_1b_kit, case_4_markers,
+                                                                     case_4_mn_markers, footprint_spec,
+                                                                     footprints_bound, kit_size)
 
 __all__ = ["SPECS"]
 
 
 def _directional_1b_kit(n: int, m: int, options: dict) -> Kit:
     """Case 1b's kit (a pool of m + 1, or ``--markers K``), every marker directional (L1891)."""
-    return replace(_case_1b_kit(n, m, options), directional=True)
+    return replace(case_1b_kit(n, m, options), directional=True)
 
 
-def _edge_only(name: str, thesis: str, markers: str, explorer, count, bound, options=_OPTIONS + ("policy edge",)):
+def _edge_only(name: str, thesis: str, markers: str, explorer, count, bound, options=MARKER_OPTIONS + ("policy edge",)):
     """An E-only variant: ``count(n, m)`` directional E-markers by default (``--markers K``: K), ``bound`` checked."""
-    return _spec(name, thesis, markers, explorer,
-                 lambda n, m, o: Kit(edge=_given(o, count(n, m)), directional=True), bound, "L1898", options,
+    return footprint_spec(name, thesis, markers, explorer,
+                 lambda n, m, o: Kit(edge=kit_size(o, count(n, m)), directional=True), bound, "L1898", options,
                  kind=Kit(edge=1, directional=True))
 
 
 SPECS = (
-    _spec("case-1b-edgeinfo", "§6.2.2 Case 1b with directional V-E-markers, edgeINFO (L1891–L1898, Figure 6.14)",
+    footprint_spec("case-1b-edgeinfo", "§6.2.2 Case 1b with directional V-E-markers, edgeINFO (L1891–L1898, Figure 6.14)",
           "m + 1 directional V-E-markers, one pool (as case-1b)", EdgeInfoFootprints, _directional_1b_kit,
           lambda n, m: m + 1, "L1891", kind=Kit(either=1, directional=True)),
     _edge_only("case-2-edgeinfo", "§6.2.2 Case 2 (Algorithm 6.1) with directional E-markers, edgeINFO anchored at "
@@ -70,9 +72,9 @@ SPECS = (
                lambda n, m: m, lambda n, m: m),
     _edge_only("case-4-edgeinfo", "§6.2.2 Case 4 (Algorithm 6.3, closest-first) with directional E-markers, "
                "edgeINFO anchored at the entry (L1898)", "m − ⌊(n−1)/2⌋ directional E-markers (as case-4; stated "
-               "m − ⌊n/2⌋, L1663)", ClosestFirstEdgeInfo, case_4_markers, case_4_markers, _OPTIONS),
+               "m − ⌊n/2⌋, L1663)", ClosestFirstEdgeInfo, case_4_markers, case_4_markers, MARKER_OPTIONS),
     _edge_only("case-4-mn-edgeinfo", "§6.2.2 Case 4, the closest-first extension of Case 2, with directional "
                "E-markers, edgeINFO anchored at the entry (L1898)", "m + [n even] directional E-markers (as "
                "case-4-mn; stated m, L1665)", ClosestFirstDoubleEdgeInfo, case_4_mn_markers, case_4_mn_markers,
-               _OPTIONS),
+               MARKER_OPTIONS),
 )

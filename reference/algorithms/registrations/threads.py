@@ -18,9 +18,10 @@ Decisions:
 
 * **l = c(G).**  A kit is computed from n, m and the options only (``AlgorithmSpec.kit_fn``): the
   simulator cannot give the kit c(G) itself, and the robot may not know the world.  And c(G) is not
-  enough (guide §8.3's doubt, decided by search, ``reference/bench/measure/thread_length.py``): Algorithm 6.7's
-  thread is a simple path from v0 plus one loop edge, which a world with a path from v0 longer than its
-  longest cycle exceeds — the smallest is the triangle with a pendant start (c(G) = 3, 4 edges laid;
+  enough (L2044 asks for a thread that reaches any vertex without forming a cycle, then calls it c(G), the
+  longest simple cycle, footnote 18, L2048; decided by search, ``reference/bench/measure/thread_length.py``):
+  Algorithm 6.7's thread is a simple path from v0 plus one loop edge, which a world with a path from v0
+  longer than its longest cycle exceeds — the smallest is the triangle with a pendant start (c(G) = 3, 4 edges laid;
   ``tests/test_thread_algorithms.py``).  So ``thread-circumference`` is given **n** edges — at least
   c(G) and at least the n − 1 edges of a longest simple path plus the loop edge, so it never runs out
   — unless ``--thread-length L`` is given, and then it is given L and stops with the failed outcome
@@ -28,11 +29,11 @@ Decisions:
 * **l ≫ m** is m + 1 (the most the knot explorer ever lays; the simulator refuses more).
 * **Algorithm 6.9 (explore-merge) is left out.**  It "merges the two partial maps S_1 and S_2 using the
   merging algorithm described in [59, 61]" (L2150), which this thesis does not give (and its
-  bibliography is lost, guide §10 item 28): how a vertex of S_i is disambiguated against S_B ("using
+  bibliography is not in the text cited here): how a vertex of S_i is disambiguated against S_B ("using
   some marking aid ... the thread could be used as a movable (directional) marker", L2150), what it
   costs and when the merged map is complete are all in [59, 61].  A merge of our own would be a new
   algorithm, not the thesis's; Algorithm 6.8 (``thread-explore``) covers the same thread class.
-* The robot is never told n or m (§6.2.0, L1474); only ``thread-explore`` (and ``thread-circumference``
+* The robot is never told n or m (§6.2.1, L1487); only ``thread-explore`` (and ``thread-circumference``
   when given ``--thread-length``) knows its thread's length, as L2096 assumes.
 
 Bounds (ours: the thesis gives O(·) only), derived in the explorer modules:

@@ -2,7 +2,7 @@
 
 ``python3 -m topomark.reference.bench.measure.markers_62 [--seeds K] [--family lattice-hole] [ALGORITHM ...]``
 explores the bench's worlds (:func:`~topomark.reference.bench.plan.world_for`: the
-same worlds and starts as ``topomark bench``) at every size of the family, checked,
+same worlds and starts as ``topomark bench``) at every size of the world family, checked,
 and prints per size the median and max of cost/m, the mean markers used against
 Case 3b's Σ_{k=1}^{n−1} k, and the mean share of each purpose: ``new`` (the edges themselves, m in all), ``other`` (trips to drop
 markers), ``travel`` (walking S between frontier edges), ``validation`` and
@@ -31,11 +31,11 @@ O_M_ALGORITHMS = ("case-3b", "case-dv-sum")
 PURPOSES = ("new", "other", "travel", "validation", "retrace")
 
 
-def measure(algorithm: str, family: str, size: int, seeds: int) -> dict:
+def measure(algorithm: str, world_family: str, size: int, seeds: int) -> dict:
     """cost/m over seeds 0..seeds−1 of one size: median, max, the world of the max, mean purpose shares."""
     ratios, shares, worst, failures, saved = [], {p: [] for p in PURPOSES}, None, [], []
     for seed in range(seeds):
-        world = world_for(family, size, seed)
+        world = world_for(world_family, size, seed)
         out = explore(world, algorithm, record=False)
         if out.outcome != "correct":
             failures.append((seed, out.outcome, out.reason or str(out.violation)))
@@ -47,7 +47,7 @@ def measure(algorithm: str, family: str, size: int, seeds: int) -> dict:
         saved.append(out.explorer.dropped / (out.n * (out.n - 1) // 2))  # markers against Case 3b's Σ_{k=1}^{n−1} k
         for p in PURPOSES:
             shares[p].append(out.by_purpose.get(p, 0) / out.m)
-    return {"algorithm": algorithm, "family": family, "size": size, "worlds": len(ratios),
+    return {"algorithm": algorithm, "family": world_family, "size": size, "worlds": len(ratios),
             "median": statistics.median(ratios) if ratios else None, "max": max(ratios) if ratios else None,
             "worst": worst, "shares": {p: statistics.mean(v) if v else 0.0 for p, v in shares.items()},
             "failures": failures, "markers": statistics.mean(saved) if saved else None}
@@ -57,7 +57,8 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("algorithms", nargs="*", default=list(O_M_ALGORITHMS))
     parser.add_argument("--seeds", type=int, default=5)
-    parser.add_argument("--family", default="lattice-hole", choices=sorted(FAMILIES))
+    parser.add_argument("--family", default="lattice-hole", choices=sorted(FAMILIES), metavar="WORLD_FAMILY",
+                        help="the bench's world family (default lattice-hole)")
     parser.add_argument("--sizes", type=int, nargs="*")
     args = parser.parse_args(argv)
     print("algorithm     size  worlds  cost/m median  max    | per m: new  other  travel  valid  retrace | "

@@ -1,10 +1,10 @@
 """Measured: the single movable marker (§2.3.1, Dudek et al. [26] and the directional variant [27]) beside the
 single directional immovable marker (Algorithm 3.1, ``basic``) and its best enhancement (``enh3``, §4.1) on the
-same worlds (§3.5.3 families).
+same worlds (§3.5.3 world families).
 
-For each family, size and seed, every algorithm maps the same world with the checker on; the table gives, per
+For each world family, size and seed, every algorithm maps the same world with the checker on; the table gives, per
 algorithm and size, the median n, m, cost, cost/m and cost/(mn) over the seeds, and on how many worlds each
-movable marker cost less than ``basic`` / ``enh3``, with the median cost ratio.  Families (:data:`FAMILIES`):
+movable marker cost less than ``basic`` / ``enh3``, with the median cost ratio.  World families (:data:`FAMILIES`):
 ``lattice-hole`` (k × k lattice, 10% of vertices removed; sizes 4, 6, 8 ≈ n 16, 36, 64),
 ``lattice-hole-edges`` (10% of edges removed: n = 16, 36, 64 exactly),
 ``complete-hole`` (K_n, 10% of edges removed; n 8, 12, 16) and ``small-world`` (k = 4, p = 20%; n 16, 36,
@@ -39,7 +39,7 @@ FAMILIES = {
     "complete-hole": ((8, 12, 16), lambda n, seed: complete_hole(n, 0.1, seed)),
     "small-world": ((16, 36, 64), lambda n, seed: small_world(n, 4, 0.2, seed)),
 }
-"""family ↦ (its sizes, world maker (size, seed) → World)."""
+"""world family ↦ (its sizes, world maker (size, seed) → World)."""
 
 
 def measure(sizes, seeds, algorithms=ALGORITHMS, family: str = "lattice-hole") -> list[dict]:

@@ -1,4 +1,4 @@
-"""Whether a thread of length c(G) suffices for Algorithm 6.7 (guide §8.3, §10 item 26): the search.
+"""Whether a thread of length c(G) suffices for Algorithm 6.7 (L2044 against footnote 18, L2048): the search.
 
 ``python3 -m topomark.reference.bench.measure.thread_length [--worlds N] [--json]`` — Algorithm 6.7 given exactly
 ``--thread-length c(G)`` (computed here, by search, for small worlds) on N generated worlds with a cycle, at
@@ -76,7 +76,7 @@ def longest_path_from(world: World, v: str) -> int:
 
 
 def _small_worlds(count: int, seed: int):
-    """``count`` generated worlds with a cycle, at most 12 vertices, from the thesis's families, random starts."""
+    """``count`` generated worlds with a cycle, at most 12 vertices, from the thesis's world families, random starts."""
     rng, made = random.Random(seed), 0
     while made < count:
         s = rng.randrange(10**6)

@@ -2,7 +2,7 @@
 
 Part of ``topomark bench`` (:mod:`~topomark.reference.bench.experiments`).  The report
 summarises the runs of the experiment found in the file (one row per run key,
-the checked row preferred), per family, edge policy, algorithm and size: mean
+the checked row preferred), per world family, edge policy, algorithm and size: mean
 ± sd of the cost, cost/m, the bounds, the per-world reduction against basic
 with the thesis's figure beside it, and the thesis's tables and printed costs.
 These reports summarise Algorithm 3.1's own lighthouse (directional vertex
@@ -33,7 +33,7 @@ COST_NOTE = (" (thesis §3.1.2). Mean ± standard deviation over the worlds of e
 
 
 def summarize(rows: list[dict], lighthouse: str = DEFAULT_LIGHTHOUSE) -> dict[tuple, dict]:
-    """(family, algorithm, policy, size) -> summary statistics over seeds, for the runs with ``lighthouse``."""
+    """(world family, algorithm, policy, size) -> summary statistics over seeds, for the runs with ``lighthouse``."""
     mine = groups(rows, ("family", "algorithm", "policy", "size"),
                   keep=lambda r: finished(r) and lighthouse_of(r) == lighthouse)
     return {k: _summary(rs) for k, rs in mine.items()}

@@ -1,15 +1,15 @@
 """Chapter 5 measured: the report of ``topomark bench chapter-5`` (``DIR/chapter-5.md`` and plots).
 
 Chapter 5 states its experimental findings in prose only (no table, no
-figure with numbers; guide §§2-4).  The ``chapter-5`` experiment
+figure with numbers; §5.1–§5.2.2, L1317–L1421).  The ``chapter-5`` experiment
 (:mod:`~topomark.reference.bench.plan`) runs, on the same worlds and starts:
 
 * §5.1 (``undirected-vertex``) and §6.1 (``undirected-edge``) with the basic
   algorithm, beside the directional lighthouse (``directional-vertex``), on the
-  Chapter 3 families and sizes: success rate, the random walk's steps to a
+  Chapter 3 world families and sizes: success rate, the random walk's steps to a
   lighthouse, and cost ÷ the directional lighthouse's on the worlds both mapped;
 * §5.2.1 (``local-pair``, ``local-degree-list``), walk seeds 0, 1, 2 on each
-  world: the outcome distribution per family and per seed;
+  world: the outcome distribution per world family and per seed;
 * Algorithm 5.1 (``model-tree``) on small worlds (lattice-hole 3x3 … 5x5,
   random up to 12 vertices) and on Figure 3.4, with the n cue (``cue=n``) and
   with none (``max-models=1000``: without a cue no run on these worlds ever
@@ -87,7 +87,7 @@ def _share(values: list[float], pred: Callable[[float], bool]) -> float:
 
 
 def _rows(rows: list[dict]) -> dict[tuple, dict[int, dict]]:
-    """(family, algorithm, lighthouse, options, size) -> {world seed: row} over the latest rows."""
+    """(world family, algorithm, lighthouse, options, size) -> {world seed: row} over the latest rows."""
     return by_seed(groups(rows, ("family", "algorithm", "lighthouse", "options", "size"), keep=lambda r: True))
 
 

@@ -63,7 +63,7 @@ MECHANISM = (
 
 
 def by_world(rows: list[dict]) -> dict[tuple, dict[int, dict]]:
-    """(family, algorithm, size, lighthouse) -> {seed: row} over the finished nearest-policy runs."""
+    """(world family, algorithm, size, lighthouse) -> {seed: row} over the finished nearest-policy runs."""
     return by_seed(groups(rows, ("family", "algorithm", "size", "lighthouse"),
                           keep=lambda r: finished(r) and (r.get("policy") or "nearest") == "nearest"))
 

@@ -3,7 +3,7 @@
 The thesis's Tables 6.1 and 6.2 (§6.2, L1472–L1993; quoted verbatim in
 :data:`CLAIMS`) state, per class of markers, a marker count and an asymptotic
 cost bound; its Figures 6.11–6.13, 6.17 and 6.18 are lost, only their captions
-and the prose findings remain (guide §§6.9, 7.4, 11).  These reports put
+and the prose findings remain (L1772–L1881, L1931–L1993).  These reports put
 beside each claim what the kit algorithms (:mod:`~topomark.reference.algorithms.registrations`)
 measure on the bench's lattice-hole and complete-hole worlds
 (:mod:`~topomark.reference.bench.plan`), and say whether it held:
@@ -60,7 +60,7 @@ class Claim:
     """One algorithm's row of Table 6.1 / 6.2: the row verbatim, its cost bound, the marker count it states."""
 
     table: str
-    row: str  # the thesis's row, verbatim (guide §6.10 / §7.5)
+    row: str  # the thesis's row, verbatim (Table 6.1, L1865–L1879 / Table 6.2, L1999–L2016)
     cost: str | None  # "m", "mn", "m·d_max", "m²n"; None: no bound (Case 0 fails)
     stated_text: str
     stated: Callable[[int, int], int] | None  # the thesis's count for (n, m); None: not a count (Case 5)
@@ -130,7 +130,7 @@ def write_report(experiment: str, out: Path, wall: float | None = None, plots: b
     return write(experiment, out, wall, plots,
                  " (thesis §3.1.2); markers used = the markers the robot dropped (the sum of the counts "
                  "of the simulator's drops). Every algorithm of a size explores the same worlds from the same "
-                 "start. The thesis's Figures 6.11–6.13, 6.17, 6.18 are lost (guide §11): only their captions "
+                 "start. The thesis's Figures 6.11–6.13, 6.17, 6.18 are lost: only their captions "
                  "and the prose findings are quoted.", _body(experiment, out), plot_line=experiment != "section-6.2")
 
 
@@ -155,7 +155,7 @@ def _body(experiment: str, out: Path) -> Body:
 
 
 def thesis_rows(table: str, algs: list[str]) -> list[str]:
-    """The thesis's rows of Table 6.x for these algorithms, verbatim (guide §6.10 / §7.5)."""
+    """The thesis's rows of Table 6.x for these algorithms, verbatim (Table 6.1, L1865–L1879; 6.2, L1999–L2016)."""
     if table == "6.1":
         head = ["| algorithm | Number | Drop Place | Constraints | Upper bounds (edge traversals) |", "|---|---|---|---|---|"]
     else:
@@ -185,7 +185,7 @@ def _family_algs(exp, g: dict, algs: list[str]):
 
 
 def claim_verdicts(family: str, alg: str, g: dict, tried: dict, sizes: list[int]) -> dict:
-    """Over every world of (family, alg) with default options: maps, markers vs stated and checked (every run);
+    """Over every world of (world family, alg) with default options: maps, markers vs stated and checked (every run);
     the cost slope (over the sizes' correct runs)."""
     rs = [r for s in sizes for r in tried[(family, alg, "", s)]]
     c = CLAIMS[alg]

@@ -2,7 +2,7 @@
 
 Part of the §6.2 reports (:mod:`~topomark.reference.bench.reports.section62`).  The
 figures themselves are lost; each finding the thesis states about them
-(guide §§6.9, 7.4, quoted here verbatim) is turned into a test on the measured
+(L1772–L1881 and L1931–L1993, quoted here verbatim) is turned into a test on the measured
 means, stated with its criterion, and marked held or not:
 
 * Figure 6.11 (``table-6.1``): the costs of the undirected algorithms;

@@ -1,15 +1,15 @@
 """Table 6.3, Figure 6.24 and the comparison the thesis never prints: ``topomark bench table-6.3``, ``figure-6.24``,
 ``comparison``, ``section-6.3`` (thesis §6.3, L1995–L2222; §2.3.1, L139–L152).
 
-The thesis's Table 6.3 ("Solvability and cost bounds of different threads", guide §8.7, quoted verbatim in
+The thesis's Table 6.3 ("Solvability and cost bounds of different threads", L2214–L2222, quoted verbatim in
 :data:`TABLE_63`) states an upper cost bound per thread class; its Figures 6.23 and 6.24 are lost, only their
-captions and the prose findings remain (guide §8.6, §11).  These reports put beside each statement what the thread
+captions and the prose findings remain (L2185–L2210).  These reports put beside each statement what the thread
 algorithms measure on the bench's worlds, and say whether it held:
 
 * **table-6.3** — every thread class (:data:`CLASSES`: the fixed l = ε thread is Algorithm 3.1 with the ``thread``
   lighthouse; l = ε carried, l = c(G), l ≫ m with knots and, for l < c(G), explore-explore with l = 8) on
   homogeneous lattices (Figure 6.23(a)) and lattices with 10% of the *edges* removed (Figure 6.23(b),
-  family ``lattice-edge-hole``).  Against its bound: cost/f with f = m²n, mn or m, and the test "cost grows no
+  world family ``lattice-edge-hole``).  Against its bound: cost/f with f = m²n, mn or m, and the test "cost grows no
   faster than f" (the least-squares slope of log mean cost against log mean f over the sizes ≤ 1.1, as for Tables
   6.1/6.2, :mod:`~topomark.reference.bench.reports.section62`).  The three findings of Figure 6.23 are checked size by size;
   l ≫ m with knots must stay under 3m on every world (each world above it is listed).
@@ -18,12 +18,12 @@ algorithms measure on the bench's worlds, and say whether it held:
   it acts as the l = c(G) algorithm" are checked (the latter world by world against Algorithm 6.7's cost).
 * **comparison** — Dudek et al.'s movable marker (undirected and directional), Algorithm 3.1 and its best
   enhancement (enh3), §6.2's O(m) markers (Case 3b, Σ k directional V-markers, extension-2) and two threads on the
-  same lattice-hole worlds (10% of the *vertices* removed, the Chapter 3/§6.2 family): cost and cost/m per size, and
+  same lattice-hole worlds (10% of the *vertices* removed, the Chapter 3/§6.2 world family): cost and cost/m per size, and
   where a single movable marker beats the single immovable one of Algorithm 3.1 and by how much.
 
 Sizes (the thesis gives none for Figure 6.23): 90, 202 and 360 — the 10×10, 15×15 and 20×20 grids (a size labels
-the grid as in the ``lattice`` family); Figure 6.24 is size 360.  The experiments and the ``lattice-edge-hole``
-family are registered by :mod:`~topomark.reference.bench.plan_threads` (imported here; its examples show the classes
+the grid as in the ``lattice`` world family); Figure 6.24 is size 360.  The experiments and the
+``lattice-edge-hole`` world family are registered by :mod:`~topomark.reference.bench.plan_threads` (imported here; its examples show the classes
 and lengths).
 """
 
@@ -93,7 +93,7 @@ def write_report(experiment: str, out: Path, wall: float | None = None, plots: b
     return write(experiment, out, wall, plots,
                  " (thesis §3.1.2), rewinding and walking back along the thread included. Every algorithm of "
                  "a size explores the same worlds from the same start. The thesis's Figures 6.23 and 6.24 are "
-                 "lost (guide §11): only their captions and the prose findings are quoted. Means are over the "
+                 "lost: only their captions and the prose findings are quoted. Means are over the "
                  "worlds mapped correctly (checked and verified); the worlds column says how many of how many.",
                  _body(experiment, out))
 
@@ -213,7 +213,7 @@ def _figure624(gr: dict) -> tuple[list[str], dict]:
              "removed edges. Error bars show standard deviations.\" Text: \"The algorithm demonstrates cost reduction "
              "as l increases. Note that when the thread is sufficiently long (l ≥ c(G)), fixed exploration cost is "
              "produced (the algorithm acts as the l = c(G) algorithm).\" The l values are not given; ours: powers of "
-             "two up to the first l ≥ n = 400. The algorithm: explore-explore (Algorithm 6.8, guide §8.6).", "",
+             "two up to the first l ≥ n = 400. The algorithm (not stated): explore-explore, Algorithm 6.8 (L2105).", "",
              "| l | worlds | mean cost ± sd | cost/m | vs l = 1 |", "|---:|---:|---:|---:|---:|"]
     first = by_l[LENGTHS[0]]
     for n in LENGTHS:
