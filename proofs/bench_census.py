@@ -1,4 +1,4 @@
-"""A measured slice of the census at n = 8, max degree 4, on a local Dask cluster (§3.7's census; issue 14).
+"""A measured slice of the census at n = 8, max degree 4, on a local Dask cluster (§3.7's census).
 
 Speed is measured here and reported in the README ("Results past n = 7"), never asserted by a test.
 

@@ -156,7 +156,7 @@ class TopomarkFault(TopomarkError, RuntimeError):
 
 
 OUTCOMES = ("correct", "wrong-map", "failed", "limit")
-"""How an exploration ends (issue 11): the map is ``correct`` (extended-isomorphic to the world), or a
+"""How an exploration ends: the map is ``correct`` (extended-isomorphic to the world), or a
 ``wrong-map``; or the algorithm stopped — ``failed`` (it says it cannot go on, and why: §5.1's walk found no
 lighthouse, §6.2's markers ran out) or ``limit`` (a cap on steps or models was reached — the thesis's "never
 terminates", §5.2.2).  Only ``correct`` exits 0; the others exit 1."""
@@ -190,7 +190,7 @@ class LimitReached(AlgorithmStopped):
 
 
 class OutOfMarkers(CheckFailure):
-    """The robot tried to drop a marker its kit has none left of (issue 12: running out is a named outcome).
+    """The robot tried to drop a marker its kit has none left of (running out is a named outcome, not a crash).
 
     A :class:`CheckFailure` to everything that judges a robot from outside (replay, the protocol: an
     operation the kit refuses), and the ``failed`` outcome to the driver of an exploration, with

@@ -190,7 +190,7 @@ def explore_command(args) -> int:
 
 def _print_report(args, spec, label: str, policies, outcome, started: float, tail: list[str]) -> None:
     """The human-readable report: what ran, the table, and the outcome — claimed by the algorithm, judged by
-    the checker (issue 11: ``correct``, ``wrong-map``, ``failed``, ``limit``)."""
+    the checker (``spec.errors.OUTCOMES``: ``correct``, ``wrong-map``, ``failed``, ``limit``)."""
     setup = f"lighthouse {outcome.lighthouse}" if spec.uses_lighthouse else f"kit: {outcome.kit}"
     print(f"explored {label} with {spec.thesis} ({args.algorithm}; {setup}; policies "
           + ", ".join(f"{k}={v}" for k, v in policies.to_json().items()) + ")")

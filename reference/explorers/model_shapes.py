@@ -8,7 +8,7 @@ edge).  Copying every model each step would make the model tree cost
 O(models × size) memory per step; here a :class:`Shape` is immutable, a pass
 child shares its parent's shape object, and an augmented child shares every
 adjacency row it does not change (only the outer tuple and the one or two
-rows touched are new) — issue 11's "models with shared structure (no deep
+rows touched are new) — "models with shared structure (no deep
 copy of every model each step)".
 
 Numbering is that of :class:`~topomark.spec.mapstate.PartialMap`: vertex 0 is

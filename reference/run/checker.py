@@ -23,7 +23,7 @@ checks run is named by the algorithm's registry entry
   pairs, each naming the start place as ``explorer.position`` named it at
   the start — still maps into the world with its pose on the robot's true
   state.  The truth voided by topomark's own explorer is a fault of topomark
-  (:class:`~topomark.spec.errors.TopomarkFault`, exit 3; issue 11); by an
+  (:class:`~topomark.spec.errors.TopomarkFault`, exit 3); by an
   explorer under test (``registry.variant``), a check failure;
 * ``iterations`` — n − 1 non-loop and m − n + 1 loop iterations;
 * ``isomorphism`` — at termination U is empty and S ≅ G by extended

@@ -146,7 +146,7 @@ class Simulator:
         if reason is not None:
             out = not isinstance(op, ThreadOp) and not op.pick_up and self.kit.count(op.kind) + self.kit.either \
                 and self.held[op.kind] + self.held["either"] < op.count \
-                and directional == self.kit.directional  # issue 12: running out is a named outcome, not a crash
+                and directional == self.kit.directional  # running out is a named outcome, not a crash
             raise (OutOfMarkers if out else CheckFailure)(Violation(
                 "marker kit", where, "an operation the kit allows", json.dumps(op.to_json()), reason))
         if isinstance(op, ThreadOp):

@@ -15,7 +15,7 @@ n and m and refuses a false ``--cue-n``/``--cue-m`` before anything runs;
 :func:`check_cues` also checks ``--cue-diameter`` and ``--cue-planar``
 against a world, for a caller that has the world (the CLI).
 
-For the CLI (issue 11 item 4-5): :func:`summary` gives the ``--json`` fields
+For the CLI: :func:`summary` gives the ``--json`` fields
 ``completed_models``, ``peak_models`` and ``true_world_completed``;
 :func:`write_models` writes every completed model, in completion order, as
 world files (``--models DIR``).

@@ -1,4 +1,4 @@
-"""Benchmark: checked vs unchecked explorations of lattice-hole worlds (issue 3's targets).
+"""Benchmark: checked vs unchecked explorations of lattice-hole worlds (the targets: a checked run within a small factor of an unchecked one).
 
 Run ``python -m topomark.reference.bench.measure.checked_cost [--seeds 5] [--repeats 3] [--json]``.
 Worlds: 10x10, 17x17 and 20x20 grids with 10% of vertices removed (about 90,

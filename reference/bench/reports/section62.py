@@ -20,7 +20,7 @@ measure on the bench's lattice-hole and complete-hole worlds
   algorithms report cost/(mn), the O(m) ones cost/m.
 
 The O(m) algorithms (Case 3b, Σ k directional V-markers, extension-1/2) get the
-breakdown of cost/m the issue asks for — new edges (exactly m), trips made to
+breakdown of cost/m — new edges (exactly m), trips made to
 drop markers (purpose ``other``), travel between frontier edges — and every
 lattice-hole world above 3m is listed.  The figures' findings and plots are
 :mod:`~topomark.reference.bench.reports.section62_figures`'s.
@@ -286,7 +286,7 @@ def om_breakdown(exp, g: dict, algs: list[str]) -> list[str]:
                          f"{per('travel'):.2f} | {mean(rs, lambda r: (num(r, 'validation') + num(r, 'retrace')) / num(r, 'm')):.2f} | "
                          f"{len(big)} |")
     lattice = [o for o in over if o[0] == "lattice-hole"]
-    lines += ["", f"Lattice-hole worlds above 3m (the issue expects none at the Chapter 4 sizes): "
+    lines += ["", f"Lattice-hole worlds above 3m (the target: none at the Chapter 4 sizes): "
               f"**{len(lattice)}**" + ("." if not lattice else ":"), ""]
     for fam, a, r in over:
         parts = {c: num(r, c) / num(r, "m") for c in ("other", "travel", "validation", "retrace")}

@@ -59,12 +59,13 @@ def _held(ok: bool | None) -> str:
     return "n/a (not measured)" if ok is None else ("**held**" if ok else "**did not hold**")
 
 
-def _finding(quote: str, ours: str, ok: bool | None, ratios: dict[int, float] | None = None) -> list[str]:
-    """The thesis's statement, ours, and the verdict; a "similar" that failed because every ratio is below 1 says
-    so (cheaper, not similar)."""
+def _finding(quote: str, ours: str, ok: bool | None, ratios: dict[int, float] | None = None,
+             source: str = "Thesis") -> list[str]:
+    """The thesis's statement (or, with ``source="Target"``, topomark's own target), ours, and the verdict; a
+    "similar" that failed because every ratio is below 1 says so (cheaper, not similar)."""
     why = " (cheaper at every size, not similar)" if ok is False and ratios and all(v < 1 for v in ratios.values()) \
         else ""
-    return [f"* Thesis: {quote}", f"  * Measured: {ours} — {_held(ok)}{why}."]
+    return [f"* {source}: {quote}", f"  * Measured: {ours} — {_held(ok)}{why}."]
 
 
 def _ratio_text(r: dict[int, float]) -> str:
@@ -190,10 +191,11 @@ def _fig_617_618(fam: str, g: dict) -> list[str]:
                           all(v < 1 for v in r.values()) if r else None)
     for e in ("extension-1", "extension-2"):
         sv, ex = _ratios(u[e], u["case-3b"]), _ratios(c[e], c["case-3b"])
-        lines += _finding(f"(issue 12) more than 50% of the markers saved at no more than 10% more cost ({e})",
+        lines += _finding(f"more than 50% of the markers saved at no more than 10% more cost ({e})",
                           "saved per size: " + ", ".join(f"{s}: {100 * (1 - v):.1f}%" for s, v in sorted(sv.items()))
                           + f"; cost ratio: {_ratio_text(ex)}",
-                          (all(v < 0.5 for v in sv.values()) and all(v <= 1.1 for v in ex.values())) if sv else None)
+                          (all(v < 0.5 for v in sv.values()) and all(v <= 1.1 for v in ex.values())) if sv else None,
+                          source="Target")
     return lines + [""]
 
 

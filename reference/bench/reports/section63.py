@@ -184,7 +184,7 @@ def _chain(xs: list) -> bool | None:
 
 
 def _knots_lines(gr: dict) -> list[str]:
-    """l ≫ m with knots is O(m): under 3m on every world (issue 13); each world above it listed."""
+    """l ≫ m with knots is O(m): under 3m on every world (the target this report tests); each world above it listed."""
     runs = [r for (fam, alg, _, _, _), rs in gr.items() if alg == "thread-knots" for r in rs if _correct(r)]
     if not runs:
         return []
