@@ -70,7 +70,7 @@ def test_table_62_tiny_sweep_runs_the_directional_algorithms_and_the_extensions_
     for a in ("case-dv-sum", "extension-1", "extension-2"):
         assert f"| `{a}` {CLAIMS[a].row}" in report and f"| lattice-hole | `{a}` | O(m) | 1 | 1/1 |" in report
     assert "### Figure 6.18 (lattice-hole)" in report and "edgeINFO" in report
-    assert "Lattice-hole worlds above 3m (the issue expects none at the Chapter 4 sizes): **" in report
+    assert "Lattice-hole worlds above 3m (the target: none at the Chapter 4 sizes): **" in report
 
 
 def test_figure_613_gives_version_1_the_markers_that_mark_each_fraction_of_places(tmp_path):
