@@ -2,17 +2,16 @@
 
 from __future__ import annotations
 
-import doctest
 import json
 
 import pytest
 
-from topomark.reference.algorithms import explorer_classes as algorithms, bounds, registry
+from topomark.reference.algorithms import explorer_classes as algorithms
 from topomark.reference.cli.main import main
 from topomark.reference.run.explore import explore
-from topomark.reference.worlds.generators import generate
 from topomark.reference.algorithms.registry import CHECKS, REGISTRY
-from topomark.spec.world import World
+
+from conftest import SMALL_WORLDS, bare, make_world
 
 REQUIRED = {"name", "thesis", "kit", "bound", "markers", "deterministic", "options", "checks"}
 
@@ -37,13 +36,9 @@ def test_text_listing_names_each_thesis_reference(capsys):
 
 
 @pytest.mark.parametrize("name", [n for n, s in REGISTRY.items() if s.deterministic])  # §5.2.2 may not map
-@pytest.mark.parametrize("world", ["lattice-hole:rows=4,cols=4,seed=2", "random:n=7,fraction=0.5,seed=3",
-                                   "complete-hole:n=6,seed=1", "wheel-a", "wheel-b"])
-def test_every_registered_algorithm_maps_generated_worlds(name, world):
-    gen, _, params = world.partition(":")
-    kwargs = dict(p.split("=") for p in params.split(",")) if params else {}
-    w = generate(gen, **kwargs)
-    w = World(w.rotation, (), w.start)  # the Figure 3.4 wheels carry the undirected marker the robot replaces
+@pytest.mark.parametrize("text", SMALL_WORLDS)
+def test_every_registered_algorithm_maps_generated_worlds(name, text):
+    w = bare(make_world(text))  # the Figure 3.4 wheels carry the undirected marker the robot replaces
     outcome = explore(w, name)
     assert outcome.verified, outcome.violation
     bound = REGISTRY[name].bound_for(w.n, w.m)
@@ -53,8 +48,3 @@ def test_every_registered_algorithm_maps_generated_worlds(name, world):
 def test_unknown_algorithm_is_bad_input(capsys):
     assert main(["explore", "cycle:n=4", "--algorithm", "nope"]) == 2
     assert "unknown algorithm 'nope'" in capsys.readouterr().err
-
-
-@pytest.mark.parametrize("module", [registry, bounds])
-def test_docstring_examples(module):
-    assert doctest.testmod(module).failed == 0
