@@ -96,10 +96,3 @@ def test_figure_3_4_from_the_centre_six_global_models_against_many_more_local():
     assert got[("3.4(b)", "global")]["other"] == [6]
     assert all(got[(f, "local")]["completed"] > 7 * got[(f, "global")]["completed"] for f in ("3.4(a)", "3.4(b)"))
     assert all(r["seconds"] >= 0 and r["outcome"] == "failed" for r in got.values())
-
-
-def test_docstring_examples():
-    import doctest
-
-    from topomark.reference.bench.reports import chapter5 as bench_chapter5
-    assert doctest.testmod(bench_chapter5).failed == 0

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import doctest
 import itertools
 import json
 import math
@@ -99,7 +98,3 @@ def test_cli_rejects_bad_options(argv, capsys):
     from topomark.reference.cli.main import main
     assert main(["census-count", *argv]) == 2
     assert capsys.readouterr().err.startswith("topomark: error:")
-
-
-def test_docstring_examples():
-    assert doctest.testmod(burnside).failed == 0

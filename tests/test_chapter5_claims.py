@@ -23,13 +23,14 @@ import time
 
 import pytest
 
-from topomark.reference.worlds import generators as g
 from topomark.reference.run.explore import explore
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES
 from topomark.spec.isomorphism import find_isomorphism
 from topomark.spec.world import Start, World
 
-A, B = (World(w.rotation, (), w.start) for w in g.wheel_pair())
+from conftest import FIGURE_3_4, bare, make_world
+
+A, B = (bare(make_world(text)) for text in FIGURE_3_4)
 WORLDS = {"3.4a": (A, B), "3.4b": (B, A)}  # each world with the other one
 
 

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import doctest
 import random
 import warnings
 
@@ -94,7 +93,3 @@ def test_automorphism_groups_are_whole_and_correct():
 def test_bad_sizes_are_invalid_input(n, d):
     with pytest.raises(InvalidInput):
         classes(n, d)
-
-
-def test_docstring_examples():
-    assert doctest.testmod(graphs).failed == 0

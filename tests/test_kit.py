@@ -1,23 +1,15 @@
-"""The marker kit (spec/kit.py, thesis §3.1.1, §6.1–6.3) and the docstring examples of every spec module."""
+"""The marker kit (spec/kit.py, thesis §3.1.1, §6.1–6.3).  The docstring examples of every module run from
+tests/test_docstring_examples.py."""
 
 from __future__ import annotations
 
-import doctest
 import importlib
-import pkgutil
 
 import pytest
 
-import topomark.spec
 from topomark.spec.errors import InvalidInput
 from topomark.spec.kit import Kit
 from topomark.spec.markerclass import MARKER_CLASSES, marker_class
-
-
-@pytest.mark.parametrize("name", sorted(m.name for m in pkgutil.iter_modules(topomark.spec.__path__)))
-def test_spec_docstring_examples(name):
-    module = importlib.import_module(f"topomark.spec.{name}")
-    assert doctest.testmod(module).failed == 0
 
 
 @pytest.mark.parametrize("name", sorted(MARKER_CLASSES))

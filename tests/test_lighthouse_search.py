@@ -4,7 +4,6 @@ undirected-edge — where they land, how they fail, how they are recognised, rep
 from __future__ import annotations
 
 import copy
-import doctest
 import json
 
 import pytest
@@ -13,7 +12,6 @@ from topomark.reference.worlds import generators as g
 from topomark.reference.algorithms.registry import in_family
 from topomark.reference.cli.main import main
 from topomark.reference.run.explore import explore
-from topomark.reference.explorers import lighthouse_search
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES
 from topomark.reference.explorers.probing import aperiodic, identify
 from topomark.reference.replay.replay import replay
@@ -177,7 +175,3 @@ def test_the_cli_reports_failed_with_exit_1_and_seeds_the_walk(capsys):
                      seed, "--json"]) == 0
         costs.add(json.loads(capsys.readouterr().out)["cost"])
     assert len(costs) > 1  # --seed seeds the walk, not the world (given in the generator text)
-
-
-def test_docstring_examples():
-    assert doctest.testmod(lighthouse_search).failed == 0

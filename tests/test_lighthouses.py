@@ -4,20 +4,17 @@ Chapter 3–4 algorithm."""
 from __future__ import annotations
 
 import copy
-import doctest
 import functools
 from collections import Counter
 
 import pytest
 
 from topomark.reference.algorithms.registry import in_family
-from topomark.reference.explorers import lighthouses as lighthouses_module
-from topomark.reference.explorers import probing as probing_module
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES, Lighthouse
 from topomark.reference.explorers.probing import ProbingRobot
 from topomark.spec.mapstate import PartialMap
 from topomark.spec.signature import Signature
-from topomark.reference.worlds.generators import generate, wheel_a, wheel_b
+from topomark.reference.worlds.generators import generate, wheel_a
 from topomark.reference.run.simulator import Simulator
 from topomark.spec.errors import CheckFailure
 from topomark.spec.isomorphism import find_isomorphism
@@ -33,32 +30,30 @@ from topomark.reference.run.local_places import unique_place
 ALGORITHMS = {name: spec.factory for name, spec in in_family("algorithm-3.1").items()}
 """Algorithm 3.1's family, as registered: ``basic`` and the Chapter 4 enhancements, name ↦ explorer class."""
 
-WORLDS = {
-    "lattice-hole": lambda: generate("lattice-hole", rows=4, cols=5, seed=3),
-    "random": lambda: generate("random", n=8, fraction=0.4, seed=1),
-    "complete-hole": lambda: generate("complete-hole", n=6, seed=2),
-    "small-world": lambda: generate("small-world", n=10, k=2, p=0.2, seed=4),
-    "figure-3.4-a": wheel_a,
-    "figure-3.4-b": wheel_b,
-}
+from conftest import FIGURE_3_4, make_world
+
+RANDOM, COMPLETE_HOLE = "random:n=8,fraction=0.4,seed=1", "complete-hole:n=6,seed=2"
+WORLDS = ("lattice-hole:rows=4,cols=5,seed=3", RANDOM, COMPLETE_HOLE, "small-world:n=10,k=2,p=0.2,seed=4",
+          *FIGURE_3_4)
+"""One world of each family, and the Figure 3.4 pair: each is explored by every lighthouse with every algorithm."""
 
 
 @functools.cache
-def _holds(world: str, name: str) -> bool:
+def _holds(text: str, name: str) -> bool:
     """Whether the lighthouse must map the world: always, but §5.2.1's only where the place they chose is unique
     (L1344, L1346; reference/run/local_places.py).  Elsewhere any outcome but a crash (tests/test_local_lighthouses.py)."""
     light = LIGHTHOUSES[name]
     if light.certain:
         return True
-    w = WORLDS[world]()
+    w = make_world(text)
     bare = World(w.rotation, (), w.start)
     sim = Simulator(bare, bare.start_state(), light.kit)
     ALGORITHMS["basic"](sim.robot(), None, None, light).start()
     return unique_place(bare, name, sim.state, light.neighbourhood)
 
 
-def _any_outcome(world: str, name: str, algorithm: str) -> None:
-    w = WORLDS[world]()
+def _any_outcome(text: str, name: str, algorithm: str) -> None:
+    w = make_world(text)
     out = explore(World(w.rotation, (), w.start), algorithm, lighthouse=name, record=False)
     assert out.outcome in ("correct", "wrong-map", "failed") and out.verified == (out.outcome == "correct")
 
@@ -70,14 +65,14 @@ def _run(world: World, lighthouse: Lighthouse, algorithm: str):
     return sim, explorer.explore()
 
 
-@pytest.mark.parametrize("world", sorted(WORLDS))
+@pytest.mark.parametrize("text", WORLDS)
 @pytest.mark.parametrize("name", sorted(LIGHTHOUSES))
 @pytest.mark.parametrize("algorithm", list(ALGORITHMS))
-def test_every_lighthouse_maps_every_world_with_every_algorithm(world, name, algorithm):
+def test_every_lighthouse_maps_every_world_with_every_algorithm(text, name, algorithm):
     """The map equals the world with the markers where the robot dropped them (extended isomorphism)."""
-    if not _holds(world, name):
-        return _any_outcome(world, name, algorithm)
-    sim, S = _run(WORLDS[world](), LIGHTHOUSES[name], algorithm)
+    if not _holds(text, name):
+        return _any_outcome(text, name, algorithm)
+    sim, S = _run(make_world(text), LIGHTHOUSES[name], algorithm)
     result = find_isomorphism(S.to_world(), sim.world)
     assert result.isomorphic, result.mismatch
     ops = LIGHTHOUSES[name].ops
@@ -85,14 +80,14 @@ def test_every_lighthouse_maps_every_world_with_every_algorithm(world, name, alg
     assert (getattr(sim.world, "thread", None) is not None) == any(isinstance(op, ThreadOp) for op in ops)
 
 
-@pytest.mark.parametrize("world", sorted(WORLDS))
+@pytest.mark.parametrize("text", WORLDS)
 @pytest.mark.parametrize("name", sorted(LIGHTHOUSES))
 @pytest.mark.parametrize("algorithm", list(ALGORITHMS))
-def test_every_pair_is_verified_by_the_checker(world, name, algorithm):
+def test_every_pair_is_verified_by_the_checker(text, name, algorithm):
     """Issue 10: every lighthouse with every Chapter 3–4 algorithm, every check after every iteration."""
-    if not _holds(world, name):
-        return _any_outcome(world, name, algorithm)
-    w = WORLDS[world]()
+    if not _holds(text, name):
+        return _any_outcome(text, name, algorithm)
+    w = make_world(text)
     outcome = explore(World(w.rotation, (), w.start), algorithm, lighthouse=name, record=False)
     assert outcome.verified, outcome.violation
     assert outcome.marker_operations == Counter(getattr(op, "op", "drop") for op in LIGHTHOUSES[name].ops)
@@ -159,10 +154,6 @@ def test_an_undirected_vertex_marker_is_no_lighthouse():
         _run(world, fake, "basic")
 
 
-def test_docstring_examples():
-    assert doctest.testmod(lighthouses_module).failed == 0
-
-
 # -- lighthouses recognised by probing (Figure 3.21(b), §5.1; reference/explorers/probing.py) ------------------
 def _at_v0_from(world: World, light: Lighthouse, neighbour: str):
     """A robot that established ``light`` at the start v0, then stands at ``neighbour`` and moves into v0."""
@@ -193,7 +184,7 @@ def test_three_undirected_vertex_probes_only_until_it_knows_the_entry_and_faces_
 
 def test_the_default_lighthouse_pays_nothing_for_probing():
     """Only a probing lighthouse wraps the robot; the others drive it directly and perceive S itself."""
-    w = WORLDS["random"]()
+    w = make_world(RANDOM)
     plain = explore(World(w.rotation, (), w.start), "enh3", record=False)
     assert "probe" not in plain.by_purpose and "establish" not in plain.by_purpose
     assert plain.explorer.P is plain.explorer.S and not isinstance(plain.explorer.robot, ProbingRobot)
@@ -205,7 +196,7 @@ def test_the_default_lighthouse_pays_nothing_for_probing():
 def test_a_probing_lighthouse_keeps_lemma_1_with_its_probed_perception():
     """Expected perceptions at v0 carry the probed entry (V-r), so (M, P^E) stay unique (Lemma 1) even where
     two hypotheses share M; the lemma-1 check runs after every iteration of every algorithm."""
-    w = WORLDS["complete-hole"]()
+    w = make_world(COMPLETE_HOLE)
     for algorithm in ("basic", "enh1"):
         out = explore(World(w.rotation, (), w.start), algorithm, lighthouse="three-undirected-vertex")
         assert out.verified, out.violation
@@ -216,7 +207,7 @@ def test_a_probing_lighthouse_keeps_lemma_1_with_its_probed_perception():
 def test_replay_rejects_a_probe_move_where_no_probe_belongs():
     from topomark.reference.replay.replay import replay
 
-    w = WORLDS["complete-hole"]()
+    w = make_world(COMPLETE_HOLE)
     bare = World(w.rotation, (), w.start)
     trace = explore(bare, "basic", lighthouse="three-undirected-vertex").trace
     assert replay(bare, iter(copy.deepcopy(trace))).ok
@@ -228,7 +219,3 @@ def test_replay_rejects_a_probe_move_where_no_probe_belongs():
     late = copy.deepcopy(trace)
     late[k]["purpose"] = "establish"
     assert "establish moves only before the first iteration" in replay(bare, iter(late)).divergence.expected
-
-
-def test_probing_docstring_examples():
-    assert doctest.testmod(probing_module).failed == 0

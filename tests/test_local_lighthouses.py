@@ -5,7 +5,6 @@ scheme B ``local-degree-list`` — correct where the place they choose is unique
 from __future__ import annotations
 
 import copy
-import doctest
 import json
 
 import networkx as nx
@@ -13,12 +12,10 @@ import pytest
 from networkx.generators.atlas import graph_atlas_g
 
 from topomark.reference.worlds import generators as g
-from topomark.reference.run import local_places
 from topomark.reference.algorithms.registry import in_family
 from topomark.reference.cli.main import main
 from topomark.reference.worlds.embedding import from_networkx
 from topomark.reference.run.explore import explore
-from topomark.reference.explorers import local_lighthouses
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES
 from topomark.reference.explorers.local_lighthouses import first_of_degree, matches_list
 from topomark.reference.explorers.probing import aperiodic
@@ -32,23 +29,19 @@ from topomark.spec.worldfile import dumps_world
 
 ALGORITHMS = {name: spec.factory for name, spec in in_family("algorithm-3.1").items()}
 """Algorithm 3.1's family, as registered: ``basic`` and the Chapter 4 enhancements, name ↦ explorer class."""
+from conftest import bare, make_world
 
 LOCAL = ("local-pair", "local-degree-list")
 OUTCOMES = ("correct", "wrong-map", "failed")
 # Worlds whose chosen place is unique for both schemes with the default seed (checked in the test itself).
-UNIQUE = {"lattice-hole": lambda: g.lattice_hole(4, 4, seed=0),
-          "random": lambda: g.generate("random", n=10, fraction=0.3, seed=0),
-          "small-world": lambda: g.generate("small-world", n=12, k=2, p=0.2, seed=2)}
+RANDOM = "random:n=10,fraction=0.3,seed=0"
+UNIQUE = ("lattice-hole:rows=4,cols=4,seed=0", RANDOM, "small-world:n=12,k=2,p=0.2,seed=2")
 # The smallest worlds (networkx's atlas, planar embeddings) where a §5.2.1 run maps wrong: K4 minus an edge for
 # scheme B; for scheme A a 5-vertex world whose only degree-2 vertex has two neighbours of degree 3.
 DIAMOND = World({"0": ("1", "3", "2"), "1": ("0", "2"), "2": ("1", "0", "3"), "3": ("2", "0")}, (), Start("1", "0"))
 KITE = World({"0": ("1",), "1": ("0", "3", "4"), "2": ("3", "4"), "3": ("1", "2", "4"), "4": ("2", "1", "3")}, (),
              Start("0", "1"))
 STAR = World({"0": ("1", "2", "3"), "1": ("0",), "2": ("0",), "3": ("0",)}, (), Start("1", "0"))
-
-
-def bare(world: World) -> World:
-    return World(world.rotation, (), world.start)
 
 
 def established(world: World, light):
@@ -68,12 +61,12 @@ def test_an_empty_kit_and_the_options():
     assert "neighbourhood" not in LIGHTHOUSES["local-pair"].options
 
 
-@pytest.mark.parametrize("family", sorted(UNIQUE))
+@pytest.mark.parametrize("text", UNIQUE)
 @pytest.mark.parametrize("name", LOCAL)
-def test_correct_where_the_chosen_place_is_unique(family, name):
+def test_correct_where_the_chosen_place_is_unique(text, name):
     """Unique place (and, scheme A, one neighbour of degree b): the virtual lighthouse is a directional one and
     Algorithm 3.1 and its enhancements map the world (§3.4); the trace replays."""
-    world = bare(UNIQUE[family]())
+    world = bare(make_world(text))
     sim, _ = established(world, LIGHTHOUSES[name])
     assert unique_place(world, name, sim.state)
     for algorithm in ("basic", "enh3", "enh3+5"):
@@ -84,7 +77,7 @@ def test_correct_where_the_chosen_place_is_unique(family, name):
 
 
 def test_every_chapter_3_4_algorithm_runs_with_them():
-    world = bare(UNIQUE["random"]())
+    world = bare(make_world(RANDOM))
     for name in LOCAL:
         for algorithm in ALGORITHMS:
             assert explore(world, algorithm, lighthouse=name, record=False).verified, (name, algorithm)
@@ -185,7 +178,7 @@ def test_the_threshold():
     out = explore(STAR, "basic", lighthouse="local-pair", record=False)
     assert out.outcome == "failed" and "seen 200 times" in out.reason and "threshold 200" in out.reason
     one = LIGHTHOUSES["local-degree-list"].with_options(threshold=1)
-    out = explore(bare(UNIQUE["random"]()), "basic", lighthouse=one, record=False)
+    out = explore(bare(make_world(RANDOM)), "basic", lighthouse=one, record=False)
     assert out.outcome == "failed" and "not below the threshold 1" in out.reason
     out = explore(g.chain(2), "basic", lighthouse="local-degree-list", record=False)
     assert out.outcome == "failed" and "seen 201 times" in out.reason
@@ -203,8 +196,8 @@ def test_a_new_edge_into_the_lighthouse_by_an_explored_entry_is_reported_failed(
 
 def test_scheme_a_chooses_the_smaller_degree_end_facing_the_other():
     """Decision: v0 is the pair's end of smaller degree a, entered from its end of degree b (v0's exit 0)."""
-    for family in sorted(UNIQUE):
-        world = bare(UNIQUE[family]())
+    for text in UNIQUE:
+        world = bare(make_world(text))
         for seed in range(3):
             sim, explorer = established(world, LIGHTHOUSES["local-pair"].with_options(seed=seed))
             v0, entry = sim.state
@@ -213,8 +206,8 @@ def test_scheme_a_chooses_the_smaller_degree_end_facing_the_other():
 
 
 def test_scheme_b_chooses_an_aperiodic_list_and_v0_faces_its_entry():
-    for family in sorted(UNIQUE):
-        world = bare(UNIQUE[family]())
+    for text in UNIQUE:
+        world = bare(make_world(text))
         sim, explorer = established(world, LIGHTHOUSES["local-degree-list"])
         D = neighbour_views(world, *sim.state, 1)
         assert aperiodic(D) and explorer.beacon.walk_steps == 200
@@ -254,7 +247,7 @@ def test_bad_options_are_bad_input(args, message, capsys):
 
 def test_the_seed_seeds_the_walk_and_the_neighbourhood_widens_d():
     for name in LOCAL:
-        places = {explore(bare(UNIQUE["random"]()), "basic", lighthouse=LIGHTHOUSES[name].with_options(seed=s),
+        places = {explore(bare(make_world(RANDOM)), "basic", lighthouse=LIGHTHOUSES[name].with_options(seed=s),
                           record=False).lighthouse_at for s in range(6)}
         assert len(places) > 1, name
     world = bare(g.lattice_hole(4, 4, seed=0))
@@ -264,8 +257,3 @@ def test_the_seed_seeds_the_walk_and_the_neighbourhood_widens_d():
                   record=False)
     assert one.outcome in OUTCOMES and two.outcome in OUTCOMES
     assert two.by_purpose["probe"] > 0 and two.walk_steps == 40
-
-
-def test_docstring_examples():
-    assert doctest.testmod(local_lighthouses).failed == 0
-    assert doctest.testmod(local_places).failed == 0

@@ -6,7 +6,6 @@ test adds what it proves.  The decisions are shown on the smallest worlds that s
 
 from __future__ import annotations
 
-import doctest
 import json
 from dataclasses import replace
 
@@ -17,22 +16,16 @@ from families import family_worlds
 from topomark.reference.worlds import generators as g
 from topomark.reference.cli.main import main
 from topomark.reference.run.explore import explore
-from topomark.reference.explorers import closest_first, edge_footprints
-from topomark.reference.worlds.generators import generate
 from topomark.reference.explorers.policies import Policies
 from topomark.reference.algorithms.registrations import markers_621
 from topomark.reference.algorithms.registry import REGISTRY
 from topomark.spec.kit import Kit
-from topomark.spec.world import World
+
+from conftest import SMALL_WORLDS, bare, make_world
 
 ALGORITHMS = ("case-1a", "case-1b", "case-2", "case-4", "case-4-mn")
-WORLDS = ("lattice-hole:rows=4,cols=5,seed=1", "random:n=9,fraction=0.4,seed=2", "complete-hole:n=7,seed=1",
-          "small-world:n=12,k=4,p=0.2,seed=3")
-
-
-def world(text: str) -> World:
-    gen, _, params = text.partition(":")
-    return generate(gen, **dict(p.split("=") for p in params.split(",") if p))
+LATTICE_HOLE, RANDOM, SMALL_WORLD = ("lattice-hole:rows=4,cols=5,seed=1", "random:n=9,fraction=0.4,seed=2",
+                                     "small-world:n=12,k=4,p=0.2,seed=3")
 
 
 def used(out) -> int:
@@ -46,9 +39,9 @@ def exact_use(name: str, n: int, m: int) -> int | None:
 
 
 @pytest.mark.parametrize("name", ALGORITHMS)
-@pytest.mark.parametrize("text", WORLDS)
+@pytest.mark.parametrize("text", SMALL_WORLDS)
 def test_each_algorithm_maps_each_world_within_its_marker_and_cost_bounds(name, text):
-    w = world(text)
+    w = bare(make_world(text))
     out = explore(w, name)
     spec = REGISTRY[name]
     assert (out.outcome, out.verified, out.violation) == ("correct", True, None)
@@ -71,7 +64,7 @@ def test_every_family_world_is_mapped_within_each_marker_bound(w):
 
 @pytest.mark.parametrize("name", ALGORITHMS)
 def test_one_marker_fewer_than_a_run_drops_is_the_failed_outcome(name):
-    w = world(WORLDS[0])
+    w = make_world(LATTICE_HOLE)
     full = used(explore(w, name))
     short = full - 1 if name != "case-1b" else full - 2  # case-1b: m (one fewer) still maps it (L1512)
     out = explore(w, name, options={"markers": short})
@@ -107,7 +100,7 @@ def test_the_extension_of_case_2_needs_m_plus_1_for_even_n():
 def test_closest_first_ignores_the_edge_policy_and_marks_every_vertex_it_may_reenter(name):
     """Rule (1) is the algorithm: fifo or lifo changes nothing.  Every vertex of degree ≥ 2 ends with a marked
     edge (L1659–L1661: the next edge from an unmarked new vertex is explored at once, and marked)."""
-    w = world(WORLDS[3])
+    w = make_world(SMALL_WORLD)
     runs = [explore(w, name, policies=Policies(edge=p)) for p in ("nearest", "fifo", "lifo")]
     assert len({(r.cost, used(r)) for r in runs}) == 1
     S = runs[0].explorer.S
@@ -119,8 +112,8 @@ def test_case_2s_candidates_are_case_1as_narrowed_by_c1_and_c2():
     """Same edges in the same order (the search ends where it started the same way); Algorithm 6.1's filter
     (c_1 single-, c_2 double-marked) keeps a subset of Case 1a's candidates (c marked), L1529."""
     fewer = 0
-    for text in WORLDS:
-        one, two = (explore(world(text), a).explorer.iterations for a in ("case-1a", "case-2"))
+    for text in SMALL_WORLDS:
+        one, two = (explore(bare(make_world(text)), a).explorer.iterations for a in ("case-1a", "case-2"))
         assert [it.joined for it in one] == [it.joined for it in two]
         assert all(set(b.candidates) <= set(a.candidates) for a, b in zip(one, two))
         fewer += sum(len(a.candidates) - len(b.candidates) for a, b in zip(one, two))
@@ -149,12 +142,12 @@ def test_case_1b_with_m_markers_finishes_the_last_iteration_without_a_search():
     assert explore(g.cycle(4), "case-1b", options={"markers": 3}).outcome == "failed"  # short earlier: failed
 
 
-@pytest.mark.parametrize("text", WORLDS[:2] + ("complete-hole:n=5,seed=1",))
+@pytest.mark.parametrize("text", [LATTICE_HOLE, RANDOM, "complete-hole:n=5,seed=1"])
 def test_case_1b_draws_its_markers_from_one_pool(text):
     """L1510, footnote 16: m + 1 homogeneous markers, each dropped at a vertex or on an edge as needed, so the
     default kit is one pool of m + 1 — spent as n at the vertices and m − n + 1 on the loop edges; with m (the
     extension, L1512) the map is still correct; with m − 1 the robot runs out before the last iteration."""
-    w = world(text)
+    w = make_world(text)
     assert REGISTRY["case-1b"].kit_for(w.n, w.m, {"markers": None}) == Kit(either=w.m + 1)
     full = explore(w, "case-1b")
     assert (full.outcome, full.verified) == ("correct", True) and used(full) == w.m + 1
@@ -181,8 +174,3 @@ def test_a_marker_count_below_one_is_bad_input(capsys):
     for bad in ("0", "-3", "two"):
         assert main(["explore", "cycle:n=4", "--algorithm", "case-1a", "--markers", bad]) == 2
         assert "--markers must be an integer >= 1" in capsys.readouterr().err
-
-
-@pytest.mark.parametrize("module", [edge_footprints, closest_first, markers_621])
-def test_docstring_examples(module):
-    assert doctest.testmod(module).failed == 0

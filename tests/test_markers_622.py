@@ -5,7 +5,6 @@ the end); each test adds what it proves.  The decisions are shown on the smalles
 
 from __future__ import annotations
 
-import doctest
 import json
 
 import pytest
@@ -14,24 +13,18 @@ from topomark.reference.worlds import generators as g
 from topomark.reference.cli.main import main
 from topomark.reference.run.explore import explore
 from topomark.reference.explorers import edge_info
-from topomark.reference.algorithms.registrations import markers_622
 from topomark.reference.algorithms.registry import REGISTRY
 from topomark.spec.signature import signature_at
+
+from conftest import SMALL_WORLDS, bare, make_world
 
 NAME = "case-1b-edgeinfo"
 BASE = {NAME: "case-1b", "case-2-edgeinfo": "case-2", "case-1a-edgeinfo": "case-1a", "case-4-edgeinfo": "case-4",
         "case-4-mn-edgeinfo": "case-4-mn"}  # each improved algorithm and the one it improves
 USES = {NAME: lambda n, m: m + 1, "case-2-edgeinfo": lambda n, m: m + n - 1,  # L1510, L1529, L1506: exactly
         "case-1a-edgeinfo": lambda n, m: m}  # Case 4 (closest-first): as many as case-4 / case-4-mn, ≤ the bound
-WORLDS = {
-    "lattice-hole 4x5": lambda: g.lattice_hole(4, 5, 0.1, "vertices", 1),
-    "lattice-hole 3x4": lambda: g.lattice_hole(3, 4, 0.1, "vertices", 2),
-    "complete-hole 7 s1": lambda: g.complete_hole(7, 0.1, 1),
-    "complete-hole 7 s3": lambda: g.complete_hole(7, 0.1, 3),
-    "complete-hole 6 s3": lambda: g.complete_hole(6, 0.1, 3),
-    "random 9": lambda: g.random_graph(9, 0.4, 2),
-    "K6": lambda: g.complete(6),
-}
+K6, LATTICE_HOLE = "complete:n=6", "lattice-hole:rows=4,cols=5,seed=1"
+COMPLETE_HOLE_6, COMPLETE_HOLE_7 = "complete-hole:n=6,seed=3", "complete-hole:n=7,seed=1"
 
 
 def used(out) -> int:
@@ -43,23 +36,23 @@ def used(out) -> int:
 def all_runs():
     """Each world explored by each improved algorithm and by the one it improves: (world, plain, directed)."""
     out = {}
-    for label, make in WORLDS.items():
-        w = make()
+    for text in SMALL_WORLDS:
+        w = bare(make_world(text))
         for name, base in BASE.items():
-            out[label, name] = (w, explore(w, base), explore(w, name))
+            out[text, name] = (w, explore(w, base), explore(w, name))
     return out
 
 
 @pytest.fixture(scope="module")
 def runs(all_runs):
-    return {label: all_runs[label, NAME] for label in WORLDS}
+    return {text: all_runs[text, NAME] for text in SMALL_WORLDS}
 
 
 @pytest.mark.parametrize("name", list(BASE))
-@pytest.mark.parametrize("label", list(WORLDS))
-def test_each_run_is_correct_within_its_marker_and_cost_bounds_and_never_costs_more_than_its_base(all_runs, label,
+@pytest.mark.parametrize("text", SMALL_WORLDS)
+def test_each_run_is_correct_within_its_marker_and_cost_bounds_and_never_costs_more_than_its_base(all_runs, text,
                                                                                                  name):
-    w, plain, directed = all_runs[label, name]
+    w, plain, directed = all_runs[text, name]
     spec = REGISTRY[name]
     assert (directed.outcome, directed.verified, directed.violation) == ("correct", True, None)
     assert used(directed) == directed.explorer.dropped == used(plain) <= spec.marker_bound_fn(w.n, w.m)
@@ -79,10 +72,10 @@ def test_edgeinfo_is_strictly_cheaper_on_complete_hole_worlds(all_runs):
     seed 1 (82 → 72 for case-4 and case-4-mn)."""
     costs = {key: (plain.cost, directed.cost) for key, (_, plain, directed) in all_runs.items()}
     for name in BASE:
-        assert costs["complete-hole 6 s3", name][1] < costs["complete-hole 6 s3", name][0]
-    for label, name in (("complete-hole 7 s1", NAME), ("complete-hole 7 s1", "case-4-edgeinfo"),
-                        ("lattice-hole 4x5", "case-4-edgeinfo"), ("lattice-hole 4x5", "case-4-mn-edgeinfo")):
-        assert costs[label, name][1] < costs[label, name][0], (label, name)
+        assert costs[COMPLETE_HOLE_6, name][1] < costs[COMPLETE_HOLE_6, name][0]
+    for text, name in ((COMPLETE_HOLE_7, NAME), (COMPLETE_HOLE_7, "case-4-edgeinfo"),
+                       (LATTICE_HOLE, "case-4-edgeinfo"), (LATTICE_HOLE, "case-4-mn-edgeinfo")):
+        assert costs[text, name][1] < costs[text, name][0], (text, name)
 
 
 @pytest.mark.parametrize("name, counts", [("case-2-edgeinfo", (2, 2, 1)), ("case-1a-edgeinfo", (1, 1, 1)),
@@ -131,7 +124,7 @@ def test_a_unique_candidate_is_still_visited():
 def test_edgeinfo_excludes_a_candidate_case_1b_visits_on_k6(runs):
     """K6, iteration 13: case-1b's candidates are v3 and v4 (degree 5, c = 2); the robot senses
     [5,V-1,E-3-T,E-4-H] and only v3 reads that from an unexplored entry (L1898's conditions 1 and 2, enriched)."""
-    w, plain, directed = runs["K6"]
+    w, plain, directed = runs[K6]
     a, b = plain.explorer.iterations[12], directed.explorer.iterations[12]
     assert (a.candidates, b.candidates, str(b.signature)) == ([3, 4], [3], "[5,V-1,E-3-T,E-4-H]")
     assert b.found == 3
@@ -167,8 +160,3 @@ def test_they_are_listed_after_the_621_algorithms():
     names = list(REGISTRY)
     for name in BASE:
         assert names.index(name) > max(names.index(n) for n in ("case-1b", "case-2", "case-4-mn", "case-5-v2"))
-
-
-@pytest.mark.parametrize("module", [edge_info, markers_622])
-def test_docstring_examples(module):
-    assert doctest.testmod(module).failed == 0

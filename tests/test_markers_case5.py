@@ -17,21 +17,18 @@ from topomark.reference.run.explore import explore
 from topomark.reference.explorers.case5_v1 import VertexCountsThenLighthouse
 from topomark.reference.explorers.case5_v2 import E0, VertexEdgeThenLighthouse
 from topomark.reference.explorers.counted_markers import sum_to
-from topomark.reference.worlds.generators import generate
 from topomark.reference.explorers.policies import Policies
 from topomark.reference.algorithms.registry import REGISTRY, variant
 from topomark.spec.isomorphism import find_isomorphism
 from topomark.spec.world import Start, World
 from topomark.spec.worldfile import world_from_json
 
+from conftest import make_world
+
 VECTORS = Path(__file__).parent / "vectors" / "case0"
-WORLDS = ("lattice-hole:rows=4,cols=4,seed=1", "random:n=9,fraction=0.3,seed=2", "small-world:n=10,k=4,p=0.2,seed=3",
-          "complete-hole:n=6,seed=1")
-
-
-def world(text: str) -> World:
-    gen, _, params = text.partition(":")
-    return generate(gen, **dict(p.split("=") for p in params.split(",") if p))
+LATTICE_HOLE, RANDOM = "lattice-hole:rows=4,cols=4,seed=1", "random:n=9,fraction=0.3,seed=2"
+SHORT = (LATTICE_HOLE, RANDOM, "small-world:n=10,k=4,p=0.2,seed=3", "complete-hole:n=6,seed=1")
+"""Worlds large enough that each K below runs out in phase I (12 can last a 5- or 7-vertex world to the end)."""
 
 
 def in_world(out) -> int:
@@ -40,10 +37,10 @@ def in_world(out) -> int:
 
 
 @pytest.mark.parametrize("name", ["case-5-v1", "case-5-v2"])
-@pytest.mark.parametrize("text", WORLDS)
+@pytest.mark.parametrize("text", SHORT)
 @pytest.mark.parametrize("k", [4, 7, 12, None])
 def test_both_versions_map_each_world_with_any_k_never_using_more_than_k(name, text, k):
-    w = world(text)
+    w = make_world(text)
     out = explore(w, name, options={"markers": k})
     assert (out.outcome, out.verified, out.violation) == ("correct", True, None)
     assert out.checks > 3 * w.m
@@ -57,7 +54,7 @@ def test_both_versions_map_each_world_with_any_k_never_using_more_than_k(name, t
 def test_version_1_with_every_place_marked_is_case_3a():
     """L1724: "when the robot has sufficient markers to mark each visited vertex, the algorithm behaves as the
     Σ k V-marker algorithm" — same moves, same cost, no hypothesis."""
-    w = world(WORLDS[0])
+    w = make_world(LATTICE_HOLE)
     out = explore(w, "case-5-v1")
     assert out.outcome == "correct" and in_world(out) == sum_to(w.n) and out.hypotheses == 0
     assert out.explorer.phase_two_from is None
@@ -65,7 +62,7 @@ def test_version_1_with_every_place_marked_is_case_3a():
 
 
 def test_version_1_phase_1_marks_places_uniquely_then_phase_2_leaves_them_blank():
-    w = world(WORLDS[0])
+    w = make_world(LATTICE_HOLE)
     ex = explore(w, "case-5-v1", options={"markers": 12}).explorer
     assert sorted(ex.count_of.values()) == [1, 2, 3, 4]  # 1+2+3+4 = 10 ≤ 12 < 15
     assert ex.phase == 2 and len(ex.count_of) < ex.M.n
@@ -74,7 +71,7 @@ def test_version_1_phase_1_marks_places_uniquely_then_phase_2_leaves_them_blank(
 
 def test_version_2_with_every_place_and_loop_edge_marked_needs_no_hypothesis():
     """L1770: with enough markers Version-2 behaves like the m V-E-marker algorithm (m + 4 at most)."""
-    w = world(WORLDS[1])
+    w = make_world(RANDOM)
     out = explore(w, "case-5-v2")
     assert out.outcome == "correct" and out.hypotheses == 0 and in_world(out) <= w.m + 4
     assert out.explorer.phase_two_from is None
@@ -193,14 +190,6 @@ def test_case_0_candidates_are_what_the_strategy_cannot_tell_apart():
     ex = explore(vector("k4-mapped"), "case-0").explorer
     loops = [it for it in ex.iterations if it.kind == "loop"]
     assert loops and len(loops[0].candidates) == 3
-
-
-@pytest.mark.parametrize("module", ["algorithms.registrations.markers_case5", "explorers.case5_v1", "explorers.case5_v2",
-                                    "explorers.case5_phase2", "explorers.case0_every_vertex"])
-def test_docstring_examples(module):
-    import doctest
-    import importlib
-    assert doctest.testmod(importlib.import_module(f"topomark.reference.{module}")).failed == 0
 
 
 def test_nearest_agrees_with_a_whole_breadth_first_search():

@@ -7,38 +7,23 @@ isomorphism); each test adds what it proves.  The decisions of
 
 from __future__ import annotations
 
-import doctest
 import json
 
 import pytest
 from hypothesis import given, settings
 
 from families import family_worlds
-from topomark.reference.bench.measure import movable as bench_movable
 from topomark.reference.worlds import generators
 from topomark.reference.cli.main import main
 from topomark.reference.run.explore import explore
-from topomark.reference.explorers import movable_marker
 from topomark.reference.explorers.movable_marker import MovableMarkerExplorer
-from topomark.reference.algorithms.registrations import movable
 from topomark.reference.algorithms.registry import algorithm_spec, variant
-from topomark.spec.world import World
+
+from conftest import FIGURE_3_4, SMALL_WORLDS, bare, make_world
 
 ALGORITHMS = ("dudek", "dudek-directional")
-WORLDS = {
-    "lattice-hole": lambda: generators.lattice_hole(4, 4, 0.1, "vertices", 2),
-    "lattice-hole-edges": lambda: generators.lattice_hole(4, 5, 0.2, "edges", 7),
-    "random": lambda: generators.random_graph(7, 0.5, 3),
-    "complete-hole": lambda: generators.complete_hole(6, 0.2, 1),
-    "small-world": lambda: generators.small_world(12, 4, 0.2, 1),
-    "wheel-a": lambda: _bare(generators.wheel_pair()[0]),  # Figure 3.4: the robot brings its own marker
-    "wheel-b": lambda: _bare(generators.wheel_pair()[1]),
-}
-NEEDS_BACK_LINK = ("complete-hole", "random", "wheel-a", "wheel-b", "small-world")
-
-
-def _bare(world: World) -> World:
-    return World(world.rotation, (), world.start)
+NEEDS_BACK_LINK = ("complete-hole:n=6,fraction=0.2,seed=1", "random:n=7,fraction=0.5,seed=3", *FIGURE_3_4,
+                   "small-world:n=12,k=4,p=0.2,seed=1")
 
 
 def _ops(outcome) -> list[str]:
@@ -53,9 +38,9 @@ def _assert_one_marker(outcome) -> None:
 
 
 @pytest.mark.parametrize("name", ALGORITHMS)
-@pytest.mark.parametrize("world", list(WORLDS))
-def test_both_algorithms_map_the_thesis_families_within_our_bound(name, world):
-    w = WORLDS[world]()
+@pytest.mark.parametrize("text", SMALL_WORLDS)
+def test_both_algorithms_map_the_thesis_families_within_our_bound(name, text):
+    w = bare(make_world(text))  # Figure 3.4's wheels: the robot brings its own marker
     out = explore(w, name)
     assert (out.outcome, out.verified, out.violation) == ("correct", True, None)
     assert (out.nonloop_iterations, out.loop_iterations) == (w.n - 1, w.m - w.n + 1)
@@ -65,7 +50,7 @@ def test_both_algorithms_map_the_thesis_families_within_our_bound(name, world):
     assert sum(2 * it.probes - 1 for it in out.explorer.iterations if it.probes) == out.by_purpose.get("probe", 0)
     if name == "dudek-directional":  # the marker's direction names e': no back-link search (L177)
         assert probes == 0
-    elif world in NEEDS_BACK_LINK:  # symmetric neighbourhoods: some v_k' has two or more unexplored edges
+    elif text in NEEDS_BACK_LINK:  # symmetric neighbourhoods: some v_k' has two or more unexplored edges
         assert probes > 0
 
 
@@ -144,8 +129,3 @@ def test_the_cli_explores_with_dudek_and_lists_both(capsys):
 def test_a_lighthouse_is_bad_input_for_a_movable_marker(capsys):
     assert main(["explore", "cycle:n=4", "--algorithm", "dudek", "--lighthouse", "directional-vertex"]) == 2
     assert "takes no lighthouse" in capsys.readouterr().err
-
-
-@pytest.mark.parametrize("module", [movable_marker, movable, bench_movable])
-def test_docstring_examples(module):
-    assert doctest.testmod(module).failed == 0

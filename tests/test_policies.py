@@ -10,7 +10,6 @@ import random
 
 import pytest
 
-from topomark.reference.worlds import generators
 from topomark.reference.explorers.edge_info import matching_darts
 from topomark.reference.explorers.policies import (Policies, bfs, bfs_preorder, in_preorder, open_ends_beyond,
                                          parents_toward)
@@ -18,8 +17,10 @@ from topomark.spec.mapstate import PartialMap
 from topomark.spec.signature import Signature, signature_at
 from topomark.spec.world import DartMark
 
-WORLDS = [generators.lattice_hole(5, 6, 0.1, "vertices", 2), generators.complete_hole(8, 0.1, 1),
-          generators.random_graph(12, 0.3, 4)]
+from conftest import make_world
+
+WORLDS = [make_world(text) for text in ("lattice-hole:rows=5,cols=6,seed=2", "complete-hole:n=8,seed=1",
+                                         "random:n=12,fraction=0.3,seed=4")]
 
 
 def partial_map(world, rng: random.Random, fraction: float) -> PartialMap:

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import doctest
 import importlib
 import json
 import pkgutil
@@ -10,17 +9,16 @@ from dataclasses import replace
 
 import pytest
 
-from topomark.reference.algorithms import bounds, registrations, registry
-from topomark.reference.algorithms.registrations import algorithm31
+from topomark.reference.algorithms import registrations, registry
 from topomark.reference.algorithms.registry import in_family, register, unregister
 from topomark.reference.explorers.algorithm31 import LighthouseExplorer
 from topomark.reference.explorers.compositions import EXPLORERS
 from topomark.reference.cli.main import main
 from topomark.reference.run.explore import check_run, explore
-from topomark.reference.worlds.generators import generate
 from topomark.reference.algorithms.registry import CHECKS, REGISTRY
 from topomark.spec.errors import InvalidInput
-from topomark.spec.world import World
+
+from conftest import SMALL_WORLDS, bare, make_world
 
 REQUIRED = {"name", "thesis", "kit", "bound", "markers", "deterministic", "options", "checks"}
 
@@ -44,13 +42,9 @@ def test_text_listing_names_each_thesis_reference(capsys):
 
 
 @pytest.mark.parametrize("name", [n for n, s in REGISTRY.items() if s.deterministic])  # §5.2.2 may not map
-@pytest.mark.parametrize("world", ["lattice-hole:rows=4,cols=4,seed=2", "random:n=7,fraction=0.5,seed=3",
-                                   "complete-hole:n=6,seed=1", "wheel-a", "wheel-b"])
-def test_every_registered_algorithm_maps_generated_worlds(name, world):
-    gen, _, params = world.partition(":")
-    kwargs = dict(p.split("=") for p in params.split(",")) if params else {}
-    w = generate(gen, **kwargs)
-    w = World(w.rotation, (), w.start)  # the Figure 3.4 wheels carry the undirected marker the robot replaces
+@pytest.mark.parametrize("text", SMALL_WORLDS)
+def test_every_registered_algorithm_maps_generated_worlds(name, text):
+    w = bare(make_world(text))  # the Figure 3.4 wheels carry the undirected marker the robot replaces
     if REGISTRY[name].check_world is not None:
         try:
             check_run(w, REGISTRY[name])
@@ -97,8 +91,3 @@ def test_register_lists_a_new_algorithm_in_thesis_order_and_unregister_takes_it_
 def test_specs_are_built_by_keyword():
     with pytest.raises(TypeError):
         registry.AlgorithmSpec("x", "§1", *REGISTRY["basic"].to_json().values())
-
-
-@pytest.mark.parametrize("module", [registry, bounds, algorithm31])
-def test_docstring_examples(module):
-    assert doctest.testmod(module).failed == 0

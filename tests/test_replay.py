@@ -19,9 +19,11 @@ from topomark.spec.errors import InvalidInput
 from topomark.spec.world import Start, World
 from topomark.spec.worldfile import dumps_world
 
-LATTICE = g.lattice_hole(5, 5, 0.1, seed=1)
-WORLDS = [LATTICE, g.wheel_pair_directional()[1], g.complete(5), g.random_graph(9, 0.5, seed=3),
-          g.cycle(6).with_start(Start("2", "3"))]
+from conftest import make_world
+
+LATTICE = make_world("lattice-hole:rows=5,cols=5,seed=1")
+WORLDS = [LATTICE, g.wheel_pair_directional()[1], make_world("complete:n=5"),
+          make_world("random:n=9,fraction=0.5,seed=3"), make_world("cycle:n=6").with_start(Start("2", "3"))]
 
 
 def trace_of(world: World, policies: Policies | None = None) -> list[dict]:

@@ -4,7 +4,6 @@ carried l = ε (L2032–L2036), Algorithm 6.7 (l = c(G)), the knot thread (l ≫
 
 from __future__ import annotations
 
-import doctest
 
 import pytest
 from hypothesis import given, settings
@@ -14,30 +13,26 @@ from topomark.reference.bench.measure import thread_length as bench_threads
 from topomark.reference.worlds import generators
 from topomark.reference.cli.main import main
 from topomark.reference.run.explore import explore
-from topomark.reference.explorers import threads_carried, threads_explore, threads_knots
+from topomark.reference.explorers import threads_carried, threads_knots
 from topomark.reference.explorers.policies import Policies
-from topomark.reference.algorithms.registrations import threads
 from topomark.reference.algorithms.registry import algorithm_spec, variant
 from topomark.reference.run.simulator import Simulator
 from topomark.spec.signature import Signature
 from topomark.spec.world import Start, World
 
+from conftest import SMALL_WORLDS, bare, make_world
 from families import family_worlds
 
 THREADS = ["thread-carried", "thread-circumference", "thread-knots", "thread-explore"]
-WORLDS = {"lattice-hole": lambda: generators.lattice_hole(4, 4, 0.1, "edges", 3),
-          "random": lambda: generators.random_graph(7, 0.5, 3),
-          "complete-hole": lambda: generators.complete_hole(6, 0.2, 1),
-          "small-world": lambda: generators.small_world(10, 4, 0.1, 0)}
 PAW = World({"a": ["b", "c", "d"], "b": ["c", "a"], "c": ["a", "b"], "d": ["a"]}, (), Start("d", "a"))
 """A triangle with a pendant start: c(G) = 3, but Algorithm 6.7 lays d-a-b-c and then the loop edge c-a."""
 
 
-@pytest.mark.parametrize("world", list(WORLDS))
+@pytest.mark.parametrize("text", SMALL_WORLDS)
 @pytest.mark.parametrize("name,opts", [(n, {}) for n in THREADS] + [("thread-explore", {"thread-length": 1}),
                                                                      ("thread-explore", {"thread-length": 3})])
-def test_each_algorithm_maps_the_thesis_families_within_our_bound(name, opts, world):
-    w = WORLDS[world]()
+def test_each_algorithm_maps_the_thesis_families_within_our_bound(name, opts, text):
+    w = bare(make_world(text))
     out = explore(w, name, options=opts)
     assert out.outcome == "correct" and out.verified, out.violation
     assert out.cost <= algorithm_spec(name).bound_for(w.n, w.m)
@@ -162,8 +157,3 @@ def test_the_cli_runs_a_thread_algorithm_with_a_length(capsys):
                  "--thread-length", "3"]) == 0
     assert main(["explore", "chain:n=5", "--algorithm", "thread-circumference", "--thread-length", "3"]) == 1
     assert "out of thread" in capsys.readouterr().out
-
-
-@pytest.mark.parametrize("module", [threads, threads_carried, threads_explore, threads_knots, bench_threads])
-def test_docstring_examples(module):
-    assert doctest.testmod(module).failed == 0

@@ -27,8 +27,9 @@ from topomark.spec.kit import Kit, MarkerOp
 from topomark.spec.world import Start, World
 from topomark.spec.worldfile import dumps_world
 
-WORLDS = {"cycle": g.cycle(5), "lattice-hole": g.lattice_hole(3, 4, seed=2),
-          "wheel-a": World(g.wheel_a().rotation, (), g.wheel_a().start)}  # without its figure's marker
+from conftest import bare, make_world
+
+WORLDS = ("cycle:n=5", "lattice-hole:rows=3,cols=4,seed=2", "wheel-a")  # wheel-a without its figure's marker
 
 ALGORITHMS = {name: spec.factory for name, spec in in_family("algorithm-3.1").items()}
 """Algorithm 3.1's family, as registered: ``basic`` and the Chapter 4 enhancements, name ↦ explorer class."""
@@ -53,11 +54,11 @@ def index(trace: list[dict], pred) -> int:
 
 
 # -- every lighthouse x every algorithm: explore writes it, replay verifies it -------------------
-@pytest.mark.parametrize("world", WORLDS)
+@pytest.mark.parametrize("text", WORLDS)
 @pytest.mark.parametrize("light", [n for n, h in LIGHTHOUSES.items() if h.search is None])  # searched ones fail on
 @pytest.mark.parametrize("algorithm", ALGORITHMS)  # the cycle: tests/test_lighthouse_search.py replays them
-def test_explore_then_replay_verifies_every_lighthouse_and_algorithm(tmp_path, capsys, world, light, algorithm):
-    w, t = files(tmp_path, WORLDS[world], "")
+def test_explore_then_replay_verifies_every_lighthouse_and_algorithm(tmp_path, capsys, text, light, algorithm):
+    w, t = files(tmp_path, bare(make_world(text)), "")
     assert main(["explore", w, "--lighthouse", light, "--algorithm", algorithm, "--trace", t]) == 0
     capsys.readouterr()
     records = parse_trace(open(t).read())

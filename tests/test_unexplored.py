@@ -126,10 +126,3 @@ def test_a_map_keeps_U_as_an_Unexplored_and_shares_one_given():
 def test_an_entry_that_is_not_a_dart_is_kept_but_is_no_vertex_s(bad):
     U = Unexplored([bad, (3, 1)])
     assert U == [bad, (3, 1)] and set(U.ends()) == {3} and U.first_at({3}) == 1
-
-
-def test_docstring_examples():
-    import doctest
-
-    from topomark.spec import unexplored
-    assert doctest.testmod(unexplored).failed == 0

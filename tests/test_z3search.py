@@ -328,12 +328,3 @@ def test_cli_unknown(capsys):
 def test_cli_bad_options_exit_2(argv, message, capsys):
     assert main(["search"] + argv) == 2
     assert message in capsys.readouterr().err
-
-
-def test_docstring_examples():
-    import doctest
-
-    from topomark.proofs import drawing
-
-    for module in (z3search, drawing):
-        assert doctest.testmod(module).failed == 0

@@ -1,0 +1,79 @@
+"""What the tests share: the small worlds they explore, and one way to build a world from its text.
+
+A test world is written as ``topomark explore`` takes it on the command line -- a generator and its
+parameters, ``GENERATOR[:NAME=VALUE,...]`` -- and built by topomark's own reader of that text
+(:func:`topomark.reference.worlds.argument.resolve_world`), so a failing test's id is the world to
+run again by hand::
+
+    tests/test_registry.py::test_every_registered_algorithm_maps_generated_worlds[random:n=7,fraction=0.5,seed=3-basic]
+    $ topomark explore random:n=7,fraction=0.5,seed=3 --algorithm basic
+
+Parametrize over the texts, and build each world in the test::
+
+    from conftest import SMALL_WORLDS, bare, make_world
+
+    @pytest.mark.parametrize("text", SMALL_WORLDS)
+    def test_it_maps(text):
+        w = bare(make_world(text))  # the Figure 3.4 wheels carry their figure's marker: the robot brings its own
+
+Worlds that no generator text names (a chosen start, a hand-written rotation) stay
+:class:`~topomark.spec.world.World` objects in the test file that needs them.  Hypothesis strategies over every
+family are in ``tests/families.py``.  The docstring examples of every module run from
+``tests/test_docstring_examples.py``.
+"""
+
+from __future__ import annotations
+
+from topomark.reference.worlds.argument import resolve_world
+from topomark.spec.world import World
+
+__all__ = ["SMALL_WORLDS", "FIGURE_3_4", "make_world", "bare"]
+
+
+def make_world(text: str) -> World:
+    """The world ``topomark explore TEXT`` explores: a generator text (or a world file), read by the CLI's reader."""
+    return resolve_world(text)
+
+
+def bare(w: World) -> World:
+    """``w`` with no markers, at the same start: what a robot that brings its own markers explores."""
+    return World(w.rotation, (), w.start)
+
+
+FIGURE_3_4 = ("wheel-a", "wheel-b")
+"""Figures 3.4 / 3.6: the wheel pair that one undirected vertex marker cannot tell apart (§3.2.2).  Each carries
+its figure's marker: explore ``bare(make_world(text))`` where the robot brings its own."""
+
+SMALL_WORLDS = (
+    # lattices with holes: rows x cols, round(fraction * cells) cells (default 0.1) or edges removed, kept connected
+    "lattice-hole:rows=3,cols=4,seed=2",
+    "lattice-hole:rows=4,cols=4,seed=1",
+    "lattice-hole:rows=4,cols=4,seed=2",
+    "lattice-hole:rows=4,cols=4,remove=edges,seed=3",
+    "lattice-hole:rows=4,cols=5,seed=1",
+    "lattice-hole:rows=4,cols=5,seed=3",
+    "lattice-hole:rows=4,cols=5,fraction=0.2,remove=edges,seed=7",
+    # random graphs: n vertices, round(fraction * n(n-1)/2) edges, connected
+    "random:n=7,fraction=0.5,seed=3",
+    "random:n=8,fraction=0.4,seed=1",
+    "random:n=9,fraction=0.3,seed=2",
+    "random:n=9,fraction=0.4,seed=2",
+    "random:n=10,fraction=0.3,seed=2",
+    # K_n, and K_n with holes: round(fraction * n(n-1)/2) edges (default 0.1) removed, kept connected
+    "complete:n=6",
+    "complete-hole:n=6,seed=1",
+    "complete-hole:n=6,seed=2",
+    "complete-hole:n=6,seed=3",
+    "complete-hole:n=6,fraction=0.2,seed=1",
+    "complete-hole:n=7,seed=1",
+    "complete-hole:n=7,seed=3",
+    # small worlds: a ring of n, each vertex joined to its k nearest, with a shortcut per ring edge at probability p
+    "small-world:n=10,k=2,p=0.2,seed=4",
+    "small-world:n=10,k=4,p=0.1,seed=0",
+    "small-world:n=10,k=4,p=0.2,seed=3",
+    "small-world:n=12,k=4,p=0.2,seed=1",
+    "small-world:n=12,k=4,p=0.2,seed=3",
+    *FIGURE_3_4,
+)
+"""The thesis's families (§3.5.3) at sizes every algorithm maps in milliseconds, and the Figure 3.4 wheels: the
+worlds that the tests of "every algorithm maps every family" run on.  Explore ``bare(make_world(text))``."""
