@@ -72,11 +72,11 @@ from typing import Callable
 
 from topomark.spec.errors import AlgorithmFailed, CheckFailure, Violation
 from topomark.spec.kit import ThreadOp
-from topomark.spec.mapstate import MapDart, PartialMap
+from topomark.spec.mapstate import MapDart
 from topomark.spec.signature import Signature, ThreadMark
 
-from topomark.reference.explorers.policies import Policies, bfs, nearest
-from topomark.reference.explorers.movable_marker import MovableMarkerExplorer
+from topomark.reference.explorers.policies import Policies, bfs
+from topomark.reference.explorers.walker import MapWalker, places_like
 
 __all__ = ["ThreadIteration", "ThreadWalker", "ThreadExplorer", "CircumferenceThreadExplorer"]
 
@@ -104,48 +104,31 @@ class ThreadIteration:
                 "resolved": self.how, "candidates": self.candidates, "laid": self.laid, "tied": self.tied}
 
 
-class ThreadWalker:
-    """S, U, the believed pose and the robot's record of its thread: tied at ``tied`` (map vertex), laid
-    along ``laid`` (darts of S, from the tied vertex out), free end ``held`` or lying at the laid end."""
+class ThreadWalker(MapWalker):
+    """S, U, the believed pose (a :class:`~.walker.MapWalker`: the start — the thread is tied in the first
+    step —, termination, walks of S and augmentations) and the robot's record of its thread: tied at ``tied``
+    (map vertex), laid along ``laid`` (darts of S, from the tied vertex out), free end ``held`` or lying at
+    the laid end."""
 
     name = "thread"
+    loop_check = "thread loop"
 
     def __init__(self, robot, policies: Policies | None = None,
                  observer: Callable[[object, ThreadIteration], None] | None = None, options: dict | None = None):
-        self.robot = robot
-        self.policies = policies or Policies()
-        self.observer = observer
+        super().__init__(robot, policies, observer)
         self.options = options or {}
         length = self.options.get("thread-length")  # an integer, or "n": not told (Algorithm 6.7's default)
         self.length: int | None = length if isinstance(length, int) else None
-        self.S = PartialMap()
-        self.position: MapDart = (0, 0)
-        self.iterations: list[ThreadIteration] = []
         self.tied: int | None = None
         self.laid: list[MapDart] = []
         self.held = True
         self.knots: dict[int, int] = {}  # position along ``laid`` ↦ knots tied there (thread-knots)
 
-    # -- the explorer contract ----------------------------------------------------------
-    def start(self) -> None:
-        """S = {v0}, U = its exits numbered from the exit the robot faces (the thread is tied in the first step)."""
-        v0 = self.S.add_vertex(self.robot.sense().degree)
-        self.S.unexplored = [(v0, i) for i in range(self.S.degree(v0))]
-        self.position = (v0, 0)
-
-    def done(self) -> bool:
-        return not self.S.unexplored
-
-    def models(self) -> list[tuple[PartialMap, MapDart]]:
-        return [(self.S, self.position)]
-
     def finish(self, it: ThreadIteration) -> ThreadIteration:
+        """End a step: the thread recorded in ``it`` and shown in S, then the step recorded."""
         it.laid, it.tied = len(self.laid), self.tied
         self.show_thread()
-        self.iterations.append(it)
-        if self.observer is not None:
-            self.observer(self, it)
-        return it
+        return self.record(it)
 
     # -- the thread ----------------------------------------------------------------------
     def show_thread(self) -> None:
@@ -231,37 +214,6 @@ class ThreadWalker:
                 at[x] = at.get(x, 0) + 1
         return out
 
-    def walk(self, path: list[MapDart], purpose: str, stop: Callable[[int, int, Signature], bool] | None = None):
-        """Follow darts of S not holding the thread; with ``stop``, end at the first vertex where it holds:
-        (vertex, entry, signature), else None."""
-        for u, exit_ in path:
-            sig = self.robot.move((exit_ - self.position[1]) % self.S.degree(u), purpose)
-            self.position = self.S.arc((u, exit_))
-            if stop is not None and stop(self.position[0], self.position[1], sig):
-                return self.position[0], self.position[1], sig
-        return None
-
-    def walk_to(self, target: int, purpose: str, stop=None):
-        return self.walk(MovableMarkerExplorer.path(nearest(self.S, self.position[0], (target,))[1], target), purpose,
-                         stop)  # bfs's parents, the search stopped at the target's layer
-
-    # -- augmentation (§3.1.3) -------------------------------------------------------------
-    def loop_augment(self, it: ThreadIteration, far: MapDart) -> None:
-        if far not in self.S.unexplored:
-            raise CheckFailure(Violation("thread loop", f"iteration {it.number}", f"e' = {far} in U", "not in U",
-                                         "the explorer's own map is inconsistent"))
-        self.S.unexplored.remove(far)
-        self.S.add_edge(it.edge, far)
-        it.kind, it.joined = "loop", (it.edge, far)
-
-    def non_loop_augment(self, it: ThreadIteration, degree: int) -> None:
-        """Add v_u and e (its exit 0; the robot stands at v_u, entered by e); its other exits join U."""
-        u = self.S.add_vertex(degree)
-        self.S.add_edge(it.edge, (u, 0))
-        self.S.unexplored.extend((u, j) for j in range(1, degree))
-        it.kind, it.joined = "non-loop", (it.edge, (u, 0))
-        self.position = (u, 0)
-
 
 def _sensed_edges(sig: Signature, entry: int) -> Counter:
     """The thread-marked exits sensed, in absolute exits of a vertex entered by ``entry``."""
@@ -290,7 +242,7 @@ class ThreadExplorer(ThreadWalker):
             self.off_thread(it, sig)
         else:  # Algorithm 6.7 line 6: no thread, so v_u is new
             it.how = "new"
-            self.non_loop_augment(it, sig.degree)
+            self.non_loop_augment(it, sig)
         self.settle()
         return self.finish(it)
 
@@ -335,10 +287,11 @@ class ThreadExplorer(ThreadWalker):
         """Line 11: search the known vertices off the thread that could be v_u for the free end left there."""
         vk, i = it.edge
         thread = set(self.on_thread(-1))
-        it.candidates = [w for w in MovableMarkerExplorer.candidates(self, vk, sig.degree) if w not in thread]
+        it.candidates = [w for w in places_like(self.S, vk, sig.degree) if w not in thread]
         if not it.candidates:
             it.how = "new"
-            return self.non_loop_augment(it, sig.degree)
+            self.non_loop_augment(it, sig)
+            return
         it.how = "off-thread search"
         self.leave_and_return(it)
 
@@ -355,7 +308,7 @@ class ThreadExplorer(ThreadWalker):
         self.walk_to(vk, "other")  # v_u is new: back to it for the free end
         self.robot.move((i - self.position[1]) % self.S.degree(vk), "other")
         self.take()
-        self.non_loop_augment(it, sig.degree)
+        self.non_loop_augment(it, sig)
 
     def settle(self) -> None:
         """Lines 16–21: rewind to a not fully explored vertex where the thread can still be laid; at v_s fully

@@ -76,7 +76,7 @@ class KnotThreadExplorer(ThreadWalker):
         it.signature = sig = self.lay(i, "new")
         if not sig.thread.knots:
             it.how = "new"
-            self.non_loop_augment(it, sig.degree)
+            self.non_loop_augment(it, sig)
             self.knot(self.position[0] + 1)
         else:
             w = sig.thread.knots - 1
