@@ -33,7 +33,12 @@ hook                 where in the listing                                       
 ===================  ==============================================================  ==========================
 
 The explorer sees only a :class:`~topomark.reference.explorers.robot.Robot`.  It keeps
-the iteration records the checker and the trace read.
+the iteration records the checker and the trace read.  What every family of
+explorers shares — S, U and the believed pose, recording an iteration, walking
+S (line 6) and the two augmentations (lines 24–28) — is the
+:class:`~topomark.reference.explorers.walker.MapWalker`'s; this module adds the
+lighthouse, H, and the test of its hypotheses (:func:`validate_in_turn`, which
+Case 5's phase II runs too).
 
 References
 ----------
@@ -43,7 +48,7 @@ basic approach of Dudek et al. [26] (§3.1.3).
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Callable
 
 from topomark.spec.mapstate import MapDart, PartialMap
@@ -52,7 +57,7 @@ from topomark.spec.signature import Signature, reads_as, signature_at
 from topomark.reference.explorers.policies import Policies, bfs, tree_to_v0
 from topomark.reference.explorers.robot import Robot
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES, Lighthouse
-from topomark.reference.explorers.walker import MapWalker
+from topomark.reference.explorers.walker import MapWalker, StepRecord
 
 __all__ = ["Hypothesis", "Iteration", "LighthouseExplorer", "V0", "hypothesis_darts", "walk_hypothesis",
            "retrace_motions", "validate_in_turn"]
@@ -78,21 +83,15 @@ class Hypothesis:
 
 
 @dataclass
-class Iteration:
-    """One pass through the loop body of Algorithm 3.1."""
+class Iteration(StepRecord):
+    """One pass through the loop body of Algorithm 3.1; its ``hypotheses`` are :class:`Hypothesis` records."""
 
-    number: int
-    edge: MapDart
-    signature: Signature | None = None
-    hypotheses: list[Hypothesis] = field(default_factory=list)
-    kind: str = ""  # "loop" or "non-loop"
-    joined: tuple[MapDart, MapDart] | None = None
     by_marker: bool = False
 
     def to_json(self) -> dict:
         return {"iteration": self.number, "edge": list(self.edge), "signature": str(self.signature),
                 "hypotheses": [h.to_json() for h in self.hypotheses], "augmentation": self.kind,
-                "joined": [list(d) for d in self.joined] if self.joined else None, "by_marker": self.by_marker}
+                "joined": self.joined_json(), "by_marker": self.by_marker}
 
 
 def hypothesis_darts(S: PartialMap, g, sig: Signature, vk: int) -> list[MapDart]:
@@ -209,8 +208,7 @@ class LighthouseExplorer(MapWalker):
         it = self.iteration_type(len(self.iterations) + 1, self.policies.choose_edge(self.S, tree[0]))  # line 5
         vk, i = it.edge
         self.travel_to(vk, parent)  # line 6
-        sig = self.robot.move((i - self.position[1]) % self.S.degree(vk), "new")
-        it.signature = sig  # line 7
+        it.signature = sig = self.take_exit(i, "new")  # line 7
         entry = self.lighthouse_entry(sig)
         if entry is not None:  # the marker: place and back-link at once (§3.3)
             self.loop_augment(it, (V0, entry), by_marker=True)

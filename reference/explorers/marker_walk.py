@@ -36,7 +36,7 @@ Examples
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any
 
 from topomark.spec.errors import AlgorithmFailed, OutOfMarkers
@@ -45,27 +45,22 @@ from topomark.spec.mapstate import MapDart
 from topomark.spec.signature import KeptSignatures, Signature
 
 from topomark.reference.explorers.policies import Policies
-from topomark.reference.explorers.walker import MapWalker
+from topomark.reference.explorers.walker import MapWalker, StepRecord
 
 __all__ = ["MarkerStep", "MarkerWalk"]
 
 
 @dataclass
-class MarkerStep:
-    """One iteration: the edge e taken from U, what was sensed at v_u, how S grew, the markers dropped."""
+class MarkerStep(StepRecord):
+    """One iteration: the edge e taken from U, what was sensed at v_u, how S grew, the markers dropped (no
+    hypotheses: §6.2's O(m) algorithms validate without them)."""
 
-    number: int
-    edge: MapDart
-    kind: str = ""  # "loop" or "non-loop"
-    signature: Signature | None = None
-    joined: tuple[MapDart, MapDart] | None = None
     dropped: int = 0  # markers dropped in this iteration
     probes: int = 0  # back-link probes (Algorithm 6.2 lines 21-35)
-    hypotheses: list = field(default_factory=list)  # none: §6.2's O(m) algorithms validate without hypotheses
 
     def to_json(self) -> dict[str, Any]:
         return {"iteration": self.number, "edge": list(self.edge), "signature": str(self.signature),
-                "augmentation": self.kind, "joined": [list(d) for d in self.joined] if self.joined else None,
+                "augmentation": self.kind, "joined": self.joined_json(),
                 "dropped": self.dropped, "probes": self.probes, "hypotheses": []}
 
 
@@ -120,10 +115,10 @@ class MarkerWalk(MapWalker):
     def leave(self, dart: MapDart, purpose: str) -> Signature:
         """Leave the believed position's vertex by map exit ``dart[1]``; the position becomes the far end if S
         knows it (the caller sets it otherwise).  Returns the signature sensed there."""
-        v, entry = self.position
+        v = self.position[0]
         if dart[0] != v:
             raise AlgorithmFailed(f"internal: asked to leave map vertex {dart[0]} while at {v}")
-        sig = self.robot.move((dart[1] - entry) % self.M.degree(v), purpose)
+        sig = self.take_exit(dart[1], purpose)
         far = self.M.arc(dart)
         self.position = far if far is not None else (-1, -1)
         return sig

@@ -83,12 +83,11 @@ from typing import Callable
 
 from topomark.spec.errors import CheckFailure, Violation
 from topomark.spec.kit import MarkerOp
-from topomark.spec.mapstate import MapDart
 from topomark.spec.signature import Signature
 
 from topomark.reference.explorers.policies import Policies
 from topomark.reference.explorers.robot import Robot
-from topomark.reference.explorers.walker import MapWalker, places_like
+from topomark.reference.explorers.walker import MapWalker, StepRecord, places_like
 
 __all__ = ["MarkerIteration", "MovableMarkerExplorer", "DirectionalMovableMarkerExplorer"]
 
@@ -96,22 +95,16 @@ PICK_UP = MarkerOp("vertex", pick_up=True)
 
 
 @dataclass
-class MarkerIteration:
-    """One step: the edge e explored, what was sensed at v_u, and how the marker resolved it."""
+class MarkerIteration(StepRecord):
+    """One step: the edge e explored, what was sensed at v_u, and how the marker resolved it (no hypotheses)."""
 
-    number: int
-    edge: MapDart
-    signature: Signature | None = None
-    kind: str = ""  # "loop" or "non-loop"
-    joined: tuple[MapDart, MapDart] | None = None
     candidates: list[int] = field(default_factory=list)  # known vertices that could be v_u, in visiting order
     found: int | None = None  # the known vertex v_k' where the marker was found (loop)
     probes: int = 0  # v_k''s unexplored edges traversed in the back-link search
-    hypotheses: list = field(default_factory=list)  # the contract's field: this algorithm makes none
 
     def to_json(self) -> dict:
         return {"iteration": self.number, "edge": list(self.edge), "signature": str(self.signature),
-                "augmentation": self.kind, "joined": [list(d) for d in self.joined] if self.joined else None,
+                "augmentation": self.kind, "joined": self.joined_json(),
                 "candidates": self.candidates, "found": self.found, "probes": self.probes}
 
 
@@ -136,7 +129,7 @@ class MovableMarkerExplorer(MapWalker):
         it = MarkerIteration(len(self.iterations) + 1, edge)
         vk, i = it.edge
         self.travel_to(vk, parent)
-        it.signature = sig = self.robot.move((i - self.position[1]) % self.S.degree(vk), "new")
+        it.signature = sig = self.take_exit(i, "new")
         it.candidates = places_like(self.S, vk, sig.degree)
         if not it.candidates:  # no known vertex can be v_u: it is new, nothing to drop
             self.non_loop_augment(it, sig)
@@ -147,7 +140,7 @@ class MovableMarkerExplorer(MapWalker):
             found = self.search(it.candidates)
             if found is None:  # Figure 2.2(a, b): fetch the marker from v_u, which is new
                 self.walk_to(vk, "other")
-                self.robot.move((i - self.position[1]) % self.S.degree(vk), "other")
+                self.take_exit(i, "other")
                 self.robot.operate(PICK_UP)
                 self.non_loop_augment(it, sig)
             else:  # Figure 2.2(c, d)
@@ -186,7 +179,7 @@ class MovableMarkerExplorer(MapWalker):
         """
         x = self.position[0]
         vk, i = it.edge
-        open_exits = [j for j, t in enumerate(self.S.links(x)) if t is None]
+        open_exits = self.open_exits(x)
         self.robot.operate(PICK_UP)
         if len(open_exits) == 1:
             return open_exits[0]
@@ -195,7 +188,7 @@ class MovableMarkerExplorer(MapWalker):
         self.walk_to(x, "other")
         for k, j in enumerate(open_exits):
             it.probes += 1
-            got = self.robot.move((j - self.position[1]) % self.S.degree(x), "probe")
+            got = self.take_exit(j, "probe")
             if got.vertex_count:  # the marker: this edge leads to v_k, entered by e
                 self.position = (vk, i)
                 self.robot.operate(PICK_UP)

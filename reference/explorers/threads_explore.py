@@ -76,7 +76,7 @@ from topomark.spec.mapstate import MapDart
 from topomark.spec.signature import Signature, ThreadMark
 
 from topomark.reference.explorers.policies import Policies, bfs
-from topomark.reference.explorers.walker import MapWalker, places_like
+from topomark.reference.explorers.walker import MapWalker, StepRecord, places_like
 
 __all__ = ["ThreadIteration", "ThreadWalker", "ThreadExplorer", "CircumferenceThreadExplorer"]
 
@@ -84,31 +84,27 @@ TIE, UNTIE, LEAVE, TAKE = ThreadOp("tie"), ThreadOp("untie"), ThreadOp("leave"),
 
 
 @dataclass
-class ThreadIteration:
-    """One step: the edge e explored, what was sensed at v_u, how it was resolved, the thread after it."""
+class ThreadIteration(StepRecord):
+    """One step: the edge e explored, what was sensed at v_u, how it was resolved, the thread after it (no
+    hypotheses)."""
 
-    number: int
-    edge: MapDart
-    signature: Signature | None = None
-    kind: str = ""  # "loop" or "non-loop"
-    joined: tuple[MapDart, MapDart] | None = None
     how: str = ""  # "new", "sensed", "thread search", "off-thread search", "knots", "probe"
     candidates: list[int] = field(default_factory=list)
     laid: int = 0  # edges of thread laid after the step
     tied: int | None = None  # where the thread is tied after the step
-    hypotheses: list = field(default_factory=list)  # the contract's field: none made here
 
     def to_json(self) -> dict:
         return {"iteration": self.number, "edge": list(self.edge), "signature": str(self.signature),
-                "augmentation": self.kind, "joined": [list(d) for d in self.joined] if self.joined else None,
+                "augmentation": self.kind, "joined": self.joined_json(),
                 "resolved": self.how, "candidates": self.candidates, "laid": self.laid, "tied": self.tied}
 
 
 class ThreadWalker(MapWalker):
-    """S, U, the believed pose (a :class:`~.walker.MapWalker`: the start — the thread is tied in the first
-    step —, termination, walks of S and augmentations) and the robot's record of its thread: tied at ``tied``
-    (map vertex), laid along ``laid`` (darts of S, from the tied vertex out), free end ``held`` or lying at
-    the laid end."""
+    """S, U and the believed pose (a :class:`~.walker.MapWalker`'s start, termination, walks and augmentations;
+    the thread is tied in the first step), and the robot's record of its thread: tied at ``tied`` (map
+    vertex), laid along ``laid`` (darts of S, from the tied vertex out), free end ``held`` or lying at the laid
+    end.  Walks of S (:meth:`~.walker.MapWalker.walk`) are made with the thread untied or its free end left
+    behind; a move holding the free end of a tied thread lays it (:meth:`lay`)."""
 
     name = "thread"
     loop_check = "thread loop"
@@ -178,7 +174,8 @@ class ThreadWalker(MapWalker):
 
     def open_exit(self, v: int) -> int | None:
         """The lowest unexplored exit of ``v`` (the closest edge, the robot standing there), or None."""
-        return next((j for j, t in enumerate(self.S.links(v)) if t is None), None)
+        exits = self.open_exits(v)
+        return exits[0] if exits else None
 
     def can_lay(self) -> bool:
         return self.length is None or len(self.laid) < self.length
@@ -189,9 +186,8 @@ class ThreadWalker(MapWalker):
             raise AlgorithmFailed(f"out of thread: the thread's {self.length} edges are all laid, from map vertex "
                                   f"{self.tied} to map vertex {self.position[0]}, and this algorithm has no rule for "
                                   "running out (Algorithm 6.7 assumes l = c(G) suffices, L2044)")
-        v, entry = self.position
-        sig = self.robot.move((exit_ - entry) % self.S.degree(v), purpose)
-        self.laid.append((v, exit_))
+        sig = self.take_exit(exit_, purpose)
+        self.laid.append((self.position[0], exit_))
         return sig
 
     def rewind(self, purpose: str = "retrace") -> None:
@@ -252,7 +248,7 @@ class ThreadExplorer(ThreadWalker):
         marks = self.thread_edges(-1)
         near = {vk} | {t[0] for t in self.S.links(vk) if t is not None}
         hyps = [(w, j) for w in dict.fromkeys(self.on_thread(-1)) if w not in near and self.S.degree(w) == sig.degree
-                for j, t in enumerate(self.S.links(w)) if t is None and self._reads(w, j, marks, sig)]
+                for j in self.open_exits(w) if self._reads(w, j, marks, sig)]
         it.candidates = sorted({w for w, _ in hyps})
         if len(hyps) == 1:
             it.how = "sensed"
@@ -306,7 +302,7 @@ class ThreadExplorer(ThreadWalker):
                 self.rewind()
                 return self.loop_augment(it, (w, next(iter(_sensed_edges(seen, entry)))))
         self.walk_to(vk, "other")  # v_u is new: back to it for the free end
-        self.robot.move((i - self.position[1]) % self.S.degree(vk), "other")
+        self.take_exit(i, "other")
         self.take()
         self.non_loop_augment(it, sig)
 

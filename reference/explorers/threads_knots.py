@@ -81,7 +81,7 @@ class KnotThreadExplorer(ThreadWalker):
         else:
             w = sig.thread.knots - 1
             self.check_knots(it, w, sig)
-            opens = [j for j, t in enumerate(self.S.links(w)) if t is None]
+            opens = self.open_exits(w)
             if len(opens) == 1:
                 it.how = "knots"
                 self.position = far = (w, opens[0])

@@ -9,6 +9,9 @@ exit 0 and its other exits, clockwise, to U.  What differs is how each tells
 v_u (hypotheses, markers, a thread, models).  This module writes once what
 is the same:
 
+* :class:`StepRecord` — what a step that takes e from U records: its
+  number, e, the signature sensed at v_u and how S grew (the
+  :class:`~.contract.IterationRecord` every family extends);
 * :class:`ExplorerState` — the contract's state (:mod:`.contract`): the
   robot, the observer, ``S``, ``position``, ``iterations``, ``models()``, and
   :meth:`ExplorerState.record`, which ends every step (append the record,
@@ -34,6 +37,7 @@ Examples
 
 from __future__ import annotations
 
+from dataclasses import dataclass, field
 from typing import Callable, Iterable
 
 from topomark.spec.errors import CheckFailure, Violation
@@ -42,7 +46,7 @@ from topomark.spec.signature import Signature
 
 from topomark.reference.explorers.policies import Policies, in_preorder, nearest, open_ends_beyond
 
-__all__ = ["ExplorerState", "MapWalker", "tree_path", "places_like"]
+__all__ = ["StepRecord", "ExplorerState", "MapWalker", "tree_path", "places_like"]
 
 
 def tree_path(parent: dict[int, MapDart], root: int, target: int) -> list[MapDart]:
@@ -61,6 +65,24 @@ def places_like(S: PartialMap, vk: int, degree: int) -> list[int]:
     them unexplored, neither v_k nor a neighbour of v_k (no self-loops, no multi-edges, L374), in the preorder
     of a breadth-first tree of S rooted at v_k."""
     return in_preorder(S, vk, {v for v in open_ends_beyond(S, vk) if S.degree(v) == degree})
+
+
+@dataclass
+class StepRecord:
+    """One step that took e = (v_k, i) from U: its number, e, the signature sensed at v_u, how S grew
+    (``kind`` "loop" or "non-loop", ``joined`` the two darts joined) and its hypotheses (none, unless the
+    family makes them).  Each family's record adds its own fields and writes its own ``to_json``."""
+
+    number: int
+    edge: MapDart
+    signature: Signature | None = None
+    kind: str = ""  # "loop" or "non-loop"
+    joined: tuple[MapDart, MapDart] | None = None
+    hypotheses: list = field(default_factory=list)
+
+    def joined_json(self) -> list | None:
+        """``joined`` as the trace writes it: two [vertex, exit] pairs, or None."""
+        return [list(d) for d in self.joined] if self.joined else None
 
 
 class ExplorerState:
@@ -107,6 +129,16 @@ class MapWalker(ExplorerState):
         return not self.S.unexplored
 
     # -- walking S ---------------------------------------------------------------------
+    def open_exits(self, v: int) -> list[int]:
+        """The unexplored exits of map vertex ``v``, in index order."""
+        return [j for j, t in enumerate(self.S.links(v)) if t is None]
+
+    def take_exit(self, exit_: int, purpose: str) -> Signature:
+        """Leave the believed position's vertex by its map exit ``exit_`` (the motion is counted from the entry
+        edge, §3.1.1); returns the signature sensed at the far end.  The believed pose is the caller's to set."""
+        v, entry = self.position
+        return self.robot.move((exit_ - entry) % self.S.degree(v), purpose)
+
     def path_to(self, target: int, parent: dict[int, MapDart]) -> list[MapDart]:
         """The darts of S from the believed position to ``target`` along the BFS tree ``parent`` rooted there."""
         return tree_path(parent, self.position[0], target)
@@ -119,9 +151,9 @@ class MapWalker(ExplorerState):
              stop: Callable[[int, int, Signature], bool] | None = None) -> tuple[int, int, Signature] | None:
         """Follow darts of S from the believed position, which follows the robot; with ``stop``, end at the first
         vertex entered where ``stop(vertex, entry, signature)`` holds: (vertex, entry, signature), else None."""
-        for u, exit_ in path:
-            sig = self.robot.move((exit_ - self.position[1]) % self.S.degree(u), purpose)
-            self.position = self.S.arc((u, exit_))
+        for dart in path:
+            sig = self.take_exit(dart[1], purpose)
+            self.position = self.S.arc(dart)
             if stop is not None and stop(self.position[0], self.position[1], sig):
                 return self.position[0], self.position[1], sig
         return None
