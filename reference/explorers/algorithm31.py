@@ -33,7 +33,12 @@ hook                 where in the listing                                       
 ===================  ==============================================================  ==========================
 
 The explorer sees only a :class:`~topomark.reference.explorers.robot.Robot`.  It keeps
-the iteration records the checker and the trace read.
+the iteration records the checker and the trace read.  What every family of
+explorers shares — S, U and the believed pose, recording an iteration, walking
+S (line 6) and the two augmentations (lines 24–28) — is the
+:class:`~topomark.reference.explorers.walker.MapWalker`'s; this module adds the
+lighthouse, H, and the test of its hypotheses (:func:`validate_in_turn`, which
+Case 5's phase II runs too).
 
 References
 ----------
@@ -43,18 +48,19 @@ basic approach of Dudek et al. [26] (§3.1.3).
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Callable
 
-from topomark.spec.errors import CheckFailure, Violation
 from topomark.spec.mapstate import MapDart, PartialMap
 from topomark.spec.signature import Signature, reads_as, signature_at
 
 from topomark.reference.explorers.policies import Policies, bfs, tree_to_v0
 from topomark.reference.explorers.robot import Robot
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES, Lighthouse
+from topomark.reference.explorers.walker import MapWalker, StepRecord
 
-__all__ = ["Hypothesis", "Iteration", "LighthouseExplorer", "V0", "hypothesis_darts"]
+__all__ = ["Hypothesis", "Iteration", "LighthouseExplorer", "V0", "hypothesis_darts", "walk_hypothesis",
+           "retrace_motions", "validate_in_turn"]
 
 V0 = 0
 
@@ -77,21 +83,15 @@ class Hypothesis:
 
 
 @dataclass
-class Iteration:
-    """One pass through the loop body of Algorithm 3.1."""
+class Iteration(StepRecord):
+    """One pass through the loop body of Algorithm 3.1; its ``hypotheses`` are :class:`Hypothesis` records."""
 
-    number: int
-    edge: MapDart
-    signature: Signature | None = None
-    hypotheses: list[Hypothesis] = field(default_factory=list)
-    kind: str = ""  # "loop" or "non-loop"
-    joined: tuple[MapDart, MapDart] | None = None
     by_marker: bool = False
 
     def to_json(self) -> dict:
         return {"iteration": self.number, "edge": list(self.edge), "signature": str(self.signature),
                 "hypotheses": [h.to_json() for h in self.hypotheses], "augmentation": self.kind,
-                "joined": [list(d) for d in self.joined] if self.joined else None, "by_marker": self.by_marker}
+                "joined": self.joined_json(), "by_marker": self.by_marker}
 
 
 def hypothesis_darts(S: PartialMap, g, sig: Signature, vk: int) -> list[MapDart]:
@@ -124,23 +124,48 @@ def walk_hypothesis(robot: Robot, h: Hypothesis, degree: int, heading: int) -> t
     return done, degrees
 
 
-class LighthouseExplorer:
+def retrace_motions(robot: Robot, done: list[int], degrees: list[int]) -> None:
+    """Execute the reverse of the motions ``done`` (line 17): 0, then −l mod deg back to v_u (``degrees``: the
+    degrees of the places passed, v_u's first)."""
+    robot.move(0, "retrace")
+    for t in range(len(done) - 1, 0, -1):
+        robot.move((-done[t]) % degrees[t], "retrace")
+
+
+def validate_in_turn(robot: Robot, hypotheses: list[Hypothesis], degree: int,
+                     retrace: Callable[[list[int], list[int]], None],
+                     confirms: Callable[[Hypothesis], bool] = lambda h: True) -> tuple[Hypothesis | None, int]:
+    """Test ``hypotheses`` one at a time from v_u (of ``degree``), the robot entered by e (lines 8–20).
+
+    Each is walked (:func:`walk_hypothesis`); one whose perceptions matched P^E throughout and that
+    ``confirms`` accepts is case 3, and is returned with the robot at its end; any other is retraced
+    (``retrace(done, degrees)``, line 17) and the next one is turned by the heading the retrace left.
+    Returns the confirmed hypothesis (or None) and the robot's heading at v_u: its entry edge counted from e.
+    """
+    heading = 0  # the physical entry edge, counted from e (e = exit 0 of v_u)
+    for h in hypotheses:
+        done, degrees = walk_hypothesis(robot, h, degree, heading)
+        if h.outcome == "untested" and confirms(h):
+            h.outcome = "case 3"
+            return h, heading
+        retrace(done, degrees)
+        heading = (heading + done[0]) % degree
+    return None, heading
+
+
+class LighthouseExplorer(MapWalker):
     """Algorithm 3.1 on a robot; ``observer(explorer, iteration)`` runs after every iteration."""
 
     name = "basic"
+    loop_check = "Algorithm 3.1"
     hypothesis_type: type = Hypothesis  # the record of one h' (Chapter 4 adds how it was rejected)
     iteration_type: type = Iteration  # the record of one iteration (Chapter 4 adds its counters)
 
     def __init__(self, robot: Robot, policies: Policies | None = None,
                  observer: Callable[["LighthouseExplorer", Iteration], None] | None = None,
                  lighthouse: Lighthouse = LIGHTHOUSES["directional-vertex"]):
-        self.robot = robot
-        self.policies = policies or Policies()
-        self.observer = observer
+        super().__init__(robot, policies, observer)  # S, position (v0, exit 0), iterations
         self.lighthouse = lighthouse
-        self.S = PartialMap()
-        self.position: MapDart = (V0, 0)  # believed (map vertex, entry index)
-        self.iterations: list[Iteration] = []
         self.P = self.S  # S as the explorer perceives it (a probing lighthouse's v0 carries its virtual head)
         self.beacon = None
         self._v0_entries: dict[Signature, int] = {}
@@ -164,18 +189,10 @@ class LighthouseExplorer:
         """The exit of v0 the robot entered by, if ``sig`` is the lighthouse's (§3.3: place and back-link)."""
         return self._v0_entries.get(sig)
 
-    # -- the explorer contract: start, step, done, models ---------------------------
+    # -- the explorer contract: start, step (done, models: the walker's) -------------
     def step(self) -> Iteration:
         """One step of the algorithm: for Algorithm 3.1, one iteration of lines 5–28."""
         return self.iterate()
-
-    def done(self) -> bool:
-        """Line 4's loop condition: U is empty (§3.1.3: termination)."""
-        return not self.S.unexplored
-
-    def models(self) -> list[tuple[PartialMap, MapDart]]:
-        """The (map, believed pose) pairs the explorer holds: one, for a deterministic algorithm."""
-        return [(self.S, self.position)]
 
     def explore(self) -> PartialMap:
         """Run to termination (U empty) and return S."""
@@ -191,8 +208,7 @@ class LighthouseExplorer:
         it = self.iteration_type(len(self.iterations) + 1, self.policies.choose_edge(self.S, tree[0]))  # line 5
         vk, i = it.edge
         self.travel_to(vk, parent)  # line 6
-        sig = self.robot.move((i - self.position[1]) % self.S.degree(vk), "new")
-        it.signature = sig  # line 7
+        it.signature = sig = self.take_exit(i, "new")  # line 7
         entry = self.lighthouse_entry(sig)
         if entry is not None:  # the marker: place and back-link at once (§3.3)
             self.loop_augment(it, (V0, entry), by_marker=True)
@@ -206,10 +222,7 @@ class LighthouseExplorer:
                 self.non_loop_augment(it, sig, heading)
                 self.after_non_loop(it)
         self.after_join(it)
-        self.iterations.append(it)
-        if self.observer is not None:
-            self.observer(self, it)
-        return it
+        return self.record(it)
 
     # -- the hooks (Algorithm 3.1: nothing, or its own step) -----------------------
     def on_enter(self, it: Iteration, sig: Signature) -> None:
@@ -224,20 +237,6 @@ class LighthouseExplorer:
 
     def after_join(self, it: Iteration) -> None:
         """After S is augmented by ``it.joined`` (lines 24–25, 27–28 or the marker's join; Algorithm 3.1: nothing)."""
-
-    # -- line 6 ----------------------------------------------------------------
-    def travel_to(self, target: int, parent: dict[int, MapDart]) -> None:
-        """Walk S from the believed position to ``target`` along the BFS tree ``parent`` rooted there (line 6)."""
-        path = []
-        x = target
-        while x != self.position[0]:
-            path.append(parent[x])
-            x = parent[x][0]
-        v, entry = self.position
-        for u, exit_ in reversed(path):
-            self.robot.move((exit_ - entry) % self.S.degree(v), "travel")
-            v, entry = self.S.arc((u, exit_))
-        self.position = (v, entry)
 
     # -- lines 8-20 --------------------------------------------------------------
     def hypotheses(self, it: Iteration, sig: Signature) -> list[Hypothesis]:
@@ -288,38 +287,21 @@ class LighthouseExplorer:
         the robot's heading at v_u: its entry edge counted from e.
         """
         it.hypotheses = self.hypotheses(it, sig)
-        heading = 0  # the physical entry edge, counted from e (e = exit 0 of v_u)
-        for h in it.hypotheses:
-            done, degrees = walk_hypothesis(self.robot, h, sig.degree, heading)
-            if h.outcome == "untested":
-                h.outcome = "case 3"
-                return h, heading
-            self.retrace(done, degrees)
-            heading = (heading + done[0]) % sig.degree
-        return None, heading
+        return validate_in_turn(self.robot, it.hypotheses, sig.degree, self.retrace)
 
     def retrace(self, done: list[int], degrees: list[int]) -> None:
         """Execute the reverse of the motions ``done`` (line 17): 0, then −l mod deg back to v_u."""
-        self.robot.move(0, "retrace")
-        for t in range(len(done) - 1, 0, -1):
-            self.robot.move((-done[t]) % degrees[t], "retrace")
+        retrace_motions(self.robot, done, degrees)
 
     # -- lines 22-28 -----------------------------------------------------------
     def loop_augment(self, it: Iteration, far: MapDart, by_marker: bool = False) -> None:
-        """Add e/e' = (v_k, v_k') with the existing indices; remove e' from U."""
-        if far not in self.S.unexplored:
-            raise CheckFailure(Violation("Algorithm 3.1", f"iteration {it.number}", f"e' = {far} in U",
-                                         "not in U", "the explorer's own map is inconsistent"))
-        self.S.unexplored.remove(far)
-        self.S.add_edge(it.edge, far)
-        it.kind, it.joined, it.by_marker = "loop", (it.edge, far), by_marker
+        """Add e/e' = (v_k, v_k') with the existing indices; remove e' from U; the robot stands at v_k', entered
+        by e' (the marker's join, ``by_marker``, or the caller sets the pose M ends at)."""
+        super().loop_augment(it, far)
+        it.by_marker = by_marker
         self.position = far
 
-    def non_loop_augment(self, it: Iteration, sig: Signature, heading: int) -> None:
-        """Add v_u and e; e is v_u's exit 0, the rest numbered clockwise and added to U."""
-        u = self.S.add_vertex(sig.degree)
-        self.S.mark_as_sensed(u, sig, 0)  # markers seen at v_u (e.g. the far end of a marked edge, §6.1)
-        self.S.add_edge(it.edge, (u, 0))
-        self.S.unexplored.extend((u, i) for i in range(1, sig.degree))
-        it.kind, it.joined = "non-loop", (it.edge, (u, 0))
-        self.position = (u, heading)
+    def non_loop_augment(self, it: Iteration, sig: Signature, heading: int = 0, sensed: bool = True) -> int:
+        """Add v_u and e; e is v_u's exit 0, the rest numbered clockwise and added to U; S records the markers
+        seen at v_u (e.g. the far end of a marked edge, §6.1)."""
+        return super().non_loop_augment(it, sig, heading, sensed)

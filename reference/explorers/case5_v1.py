@@ -60,18 +60,23 @@ from topomark.spec.errors import AlgorithmFailed
 from topomark.spec.mapstate import MapDart
 from topomark.spec.signature import Signature
 
+from topomark.reference.explorers.algorithm31 import Hypothesis
 from topomark.reference.explorers.policies import nearest
-from topomark.reference.explorers.case5_phase2 import PhaseTwo
+from topomark.reference.explorers.case5_phase2 import PHASE_TWO, PhaseStep
 from topomark.reference.explorers.counted_markers import VertexCounts
 from topomark.reference.explorers.marker_walk import MarkerStep
+from topomark.reference.explorers.walker import tree_path
 
 __all__ = ["VertexCountsThenLighthouse"]
 
 
-class VertexCountsThenLighthouse(PhaseTwo, VertexCounts):
-    """Algorithm 6.4: unique V-marker counts (phase I), then hypotheses with the nearest marked lighthouse."""
+class VertexCountsThenLighthouse(VertexCounts):
+    """Algorithm 6.4: unique V-marker counts (phase I), then hypotheses with the nearest marked lighthouse
+    (phase II, held: :data:`~.case5_phase2.PHASE_TWO`, which asks :meth:`lighthouse_path` and :meth:`confirms`)."""
 
     name = "case-5-v1"
+    step_type = PhaseStep  # the step's record keeps phase II's hypotheses
+    phase_two = PHASE_TWO
 
     def __init__(self, robot, policies=None, observer=None, options=None):
         super().__init__(robot, policies, observer, options)
@@ -92,7 +97,7 @@ class VertexCountsThenLighthouse(PhaseTwo, VertexCounts):
             else:  # line 16 at the first refusal: every known place is marked, H is empty, line 35
                 self.phase, self.phase_two_from = 2, it.number
         else:  # lines 16-35
-            self.phase_two(it, sig)
+            self.phase_two.run(self, it, sig)
 
     def next_count(self) -> int:
         """i at line 13: v0 has 1, the j-th place discovered gets j + 1 (the counter decision above)."""
@@ -103,12 +108,12 @@ class VertexCountsThenLighthouse(PhaseTwo, VertexCounts):
         light, parent = nearest(self.M, v, self.count_of)  # the least-numbered among the nearest marked
         if light is None:
             raise AlgorithmFailed(f"no marked place is connected to map vertex {v}")
-        path, x = [], light
-        while x != v:
-            path.append(parent[x])
-            x = parent[x][0]
-        path.reverse()
+        path = tree_path(parent, v, light)
         for t, far in enumerate(self.M.links(light)):
             if far is not None and far[0] in self.count_of:
                 return path + [(light, t)]
         raise AlgorithmFailed(f"the lighthouse {light} has no marked neighbour over an explored edge")
+
+    def confirms(self, h: Hypothesis) -> bool:
+        """A hypothesis whose perceptions matched P^E throughout is confirmed (Algorithm 6.4 line 29)."""
+        return True

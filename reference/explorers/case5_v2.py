@@ -67,10 +67,12 @@ from topomark.spec.kit import MarkerOp
 from topomark.spec.mapstate import MapDart
 from topomark.spec.signature import Signature
 
+from topomark.reference.explorers.algorithm31 import Hypothesis
 from topomark.reference.explorers.policies import nearest
-from topomark.reference.explorers.case5_phase2 import PhaseTwo
+from topomark.reference.explorers.case5_phase2 import PHASE_TWO, PhaseStep
 from topomark.reference.explorers.edge_footprints import FootprintSearch, VertexEdgeFootprints
 from topomark.reference.explorers.marker_walk import MarkerStep
+from topomark.reference.explorers.walker import tree_path
 
 __all__ = ["VertexEdgeThenLighthouse", "E0"]
 
@@ -78,10 +80,13 @@ E0: MapDart = (0, 0)
 """The double-marked edge e0, as v0's map exit: the exit the robot faces at the start."""
 
 
-class VertexEdgeThenLighthouse(PhaseTwo, VertexEdgeFootprints):
-    """Algorithm 6.5: Case 1b's search with a double-marked v0 and e0 (phase I), then hypotheses to v0."""
+class VertexEdgeThenLighthouse(VertexEdgeFootprints):
+    """Algorithm 6.5: Case 1b's search with a double-marked v0 and e0 (phase I), then hypotheses to v0 (phase
+    II, held: :data:`~.case5_phase2.PHASE_TWO`, which asks :meth:`lighthouse_path` and :meth:`confirms`)."""
 
     name = "case-5-v2"
+    step_type = PhaseStep  # the step's record keeps phase II's hypotheses
+    phase_two = PHASE_TWO
 
     def __init__(self, robot, policies=None, observer=None, options=None):
         super().__init__(robot, policies, observer, options)
@@ -119,31 +124,12 @@ class VertexEdgeThenLighthouse(PhaseTwo, VertexEdgeFootprints):
             if self.has_markers(it):
                 self.validate(it, sig)  # lines 10-13: the footprint search of Case 1
             else:
-                self.phase_two(it, sig)
+                self.phase_two.run(self, it, sig)
         elif self.has_markers(it):  # lines 31-33
             self.non_loop(it, sig)
             self.drop(MarkerOp("vertex"), it)
         else:  # lines 34-37
-            self.phase_two(it, sig)
-
-    def non_loop(self, it: MarkerStep, sig: Signature) -> int:
-        u = super().non_loop(it, sig)
-        self.show_e0(u)
-        return u
-
-    def join_new(self, it: MarkerStep, sig: Signature, heading: int) -> None:
-        super().join_new(it, sig, heading)
-        self.show_e0(self.position[0])
-
-    def show_e0(self, u: int) -> None:
-        """e0's two markers lay there from the start (line 1), so the checker's S shows them at e0's far end as
-        soon as that place joins S, when S shows marks only at termination (``marks_at_end``,
-        :meth:`MarkerWalk.finish`); otherwise S is M, which has them already."""
-        if self.S is self.M:
-            return
-        for dm in self.M.dart_marks(u):
-            if dm.count == 2:
-                self.S.mark_as_sensed(u, Signature(self.M.degree(u), edges=((dm.exit, 2, None),)), 0)
+            self.phase_two.run(self, it, sig)
 
     def far_end_of_e0(self) -> MapDart | None:
         """The dart of e0 at its far end, if S knows that place (it shows two markers on that exit)."""
@@ -163,8 +149,9 @@ class VertexEdgeThenLighthouse(PhaseTwo, VertexEdgeFootprints):
         reached, parent = nearest(self.M, v, (0,))
         if reached is None:
             raise AlgorithmFailed(f"internal: v0 is not connected to map vertex {v}")
-        path, x = [], 0
-        while x != v:
-            path.append(parent[x])
-            x = parent[x][0]
-        return path[::-1]
+        return tree_path(parent, v, 0)
+
+    def confirms(self, h: Hypothesis) -> bool:
+        """A hypothesis whose perceptions matched P^E throughout is confirmed: line 23 read as "match
+        throughout" (the decision above; read literally, "do not match throughout", it would never confirm one)."""
+        return True

@@ -81,7 +81,8 @@ from topomark.spec.signature import Signature, signature_at
 from topomark.reference.explorers.policies import in_preorder, open_ends_beyond, parents_toward
 from topomark.reference.explorers.marker_walk import MarkerStep, MarkerWalk
 
-__all__ = ["marks_key", "FootprintSearch", "EdgeFootprints", "VertexEdgeFootprints", "DoubleMarkedEdges"]
+__all__ = ["marks_key", "Marking", "UNDIRECTED", "FootprintSearch", "EdgeFootprints", "VertexEdgeFootprints",
+           "DoubleMarkedEdges"]
 
 
 def marks_key(sig: Signature) -> tuple[int, ...]:
@@ -94,12 +95,37 @@ def map_key(M: PartialMap, v: int) -> tuple[int, ...]:
     return tuple(sorted(dm.count for dm in M.dart_marks(v)))
 
 
+class Marking:
+    """How a footprint search's markers are dropped and read: undirected (Cases 1a, 1b, 2 and 4, §6.2.1).
+
+    Each footprint explorer holds one (``FootprintSearch.marking``, :data:`UNDIRECTED` unless it says
+    otherwise); §6.2.2's directional markers are another (:class:`~.edge_info.EdgeInfo`): the heads of the
+    markers and which candidates are worth visiting are all that changes (L1891–L1898).
+    """
+
+    vertex_head: int | None = None  # a V-marker's exit relative to the entry (§6.2.2 L1891); None: undirected
+    loop_head: str | None = None  # a loop marker's end at v_u ("H"/"T", §6.2.2 L1891); None: undirected
+
+    def drop_on_entry(self, walker: "FootprintSearch", it: MarkerStep, count: int) -> None:
+        """Drop ``count`` markers on e from v_u (known as map dart (u, 0)); S shows them at both ends."""
+        walker.drop(MarkerOp("edge", exit=0, count=count), it)
+        walker.note_mark(it.edge, count)
+
+    def candidates(self, walker: "FootprintSearch", it: MarkerStep, places: list[int]) -> list[int]:
+        """Of the search's candidates ``places`` (in visiting order), those worth visiting: all of them."""
+        return places
+
+
+UNDIRECTED = Marking()
+"""Undirected markers, the footprint searches of §6.2.1."""
+
+
 class FootprintSearch(MarkerWalk):
     """The footprints loop (L1497–L1506): a subclass says when v_u is new and what goes on a non-loop edge."""
 
     name = "footprints"
     loop_markers = 1  # markers on a loop edge (Cases 1a, 1b, 2, 4: one)
-    loop_head: str | None = None  # a loop marker's end at v_u ("H"/"T", §6.2.2 L1891); None: undirected
+    marking: Marking = UNDIRECTED  # how the markers are dropped and read (§6.2.2's directional ones: edge_info)
 
     def is_new(self, sig: Signature) -> bool:
         """v_u has not been visited (E-marker algorithms: no other marked edge, L1497)."""
@@ -121,12 +147,7 @@ class FootprintSearch(MarkerWalk):
     def on_new(self, it: MarkerStep, u: int, count: int) -> None:
         """Non-loop augmentation done (the robot at v_u, entered by e): drop ``count`` markers on e."""
         if count:
-            self.drop_on_entry(it, count)
-
-    def drop_on_entry(self, it: MarkerStep, count: int) -> None:
-        """Drop ``count`` markers on e from v_u (known as map dart (u, 0)); S shows them at both ends."""
-        self.drop(MarkerOp("edge", exit=0, count=count), it)
-        self.note_mark(it.edge, count)
+            self.marking.drop_on_entry(self, it, count)
 
     def note_mark(self, dart: MapDart, count: int) -> None:
         """Show ``count`` markers on the edge at map dart ``dart`` (the robot need not stand there)."""
@@ -150,14 +171,15 @@ class FootprintSearch(MarkerWalk):
     def mark_loop_edge(self, it: MarkerStep, sig: Signature) -> bool:
         """Drop the loop marker on e from v_u (position unknown: the world changes, S learns it at both
         ends later); False if the step is finished without a search."""
-        self.robot.operate(MarkerOp("edge", exit=0, count=self.loop_markers, direction=self.loop_head))
+        self.robot.operate(MarkerOp("edge", exit=0, count=self.loop_markers, direction=self.marking.loop_head))
         self.dropped += self.loop_markers
         it.dropped += self.loop_markers
         return True
 
     def search(self, it: MarkerStep, key: tuple[int, ...], degree: int) -> tuple[int, int, int]:
-        """Visit the candidates until one shows an edge marked that S does not show: (v_k', e''s exit, entry)."""
-        it.candidates = self.candidates(it.edge[0], key, degree)
+        """Visit the candidates (those the marking finds worth visiting) until one shows an edge marked that S
+        does not show: (v_k', e''s exit, entry)."""
+        it.candidates = self.marking.candidates(self, it, self.candidates(it.edge[0], key, degree))
         looked: set[int] = set()
         for target in it.candidates:
             if target in looked:
@@ -217,11 +239,10 @@ class VertexEdgeFootprints(FootprintSearch):
     extension (L1508–L1521, Figure 6.5)."""
 
     name = "case-1b"
-    vertex_head: int | None = None  # a V-marker's exit relative to the entry (§6.2.2 L1891); None: undirected
 
     def begin(self) -> None:
         """"Initially the robot drops a marker at its starting vertex v_0" (L1510)."""
-        self.drop(MarkerOp("vertex", direction=self.vertex_head))
+        self.drop(MarkerOp("vertex", direction=self.marking.vertex_head))
 
     def is_new(self, sig: Signature) -> bool:
         """"if v_u does not contain a marker then v_u has not been visited before" (L1510)."""
@@ -232,7 +253,7 @@ class VertexEdgeFootprints(FootprintSearch):
 
     def on_new(self, it: MarkerStep, u: int, count: int) -> None:
         """A marker at v_u; refused, this is the last iteration (L1512): v_u must have no other edge."""
-        marked = self.try_drop(MarkerOp("vertex", direction=self.vertex_head), it)
+        marked = self.try_drop(MarkerOp("vertex", direction=self.marking.vertex_head), it)
         if not marked and (self.M.degree(u) != 1 or self.M.unexplored):
             raise AlgorithmFailed(f"out of markers at iteration {it.number}: the new vertex cannot be marked and "
                                   f"exploration is not over ({len(self.M.unexplored)} unexplored edges)")

@@ -11,8 +11,10 @@ The loop, the drops' places, the search and the m extension are Case 1b's
 L1508–L1521), Case 2's (``DoubleMarkedEdges``, L1523–L1554), Case 1a's
 (``EdgeFootprints``, L1497–L1506) or Case 4's
 (:mod:`~topomark.reference.explorers.closest_first`, L1640–L1699); only the
-markers' directions (the hooks ``vertex_head`` / ``loop_head`` there) and the
-candidate filter (:class:`EdgeInfoFilter`) differ.
+markers' directions and the candidate filter differ: each explorer here is its
+original holding :data:`EDGE_INFO` (an :class:`EdgeInfo`) as its
+``marking`` in place of the undirected one
+(:class:`~topomark.reference.explorers.edge_footprints.Marking`).
 "Assume that when the robot drops a V-marker at a vertex, it drops the marker
 in such a way that the marker head points toward one of the exits (edges), and
 that when it drops an E-marker on an edge, it drops the marker in such a way
@@ -66,7 +68,7 @@ Decisions, with the thesis lines (each shown in ``tests/test_markers_622.py``):
   sensed even with undirected markers; the heads and (Case 1b) the V-marker's
   fixing of j are what the directional markers add.  Case 1a's one marker
   on a non-loop e is dropped the same way (head at v_u): one rule,
-  :meth:`EdgeInfoFilter.drop_on_entry`, for every E-marker on a non-loop e.
+  :meth:`EdgeInfo.drop_on_entry`, for every E-marker on a non-loop e.
 * **Case 4 (closest-first): the filter applies as it is** (L1891 lists "the
   extension algorithm of the E-marker algorithm which requires a maximum of
   m − ⌊n/2⌋ markers" and "the extension algorithm of
@@ -118,11 +120,12 @@ from topomark.spec.mapstate import PartialMap
 from topomark.spec.signature import Signature, signature_at
 
 from topomark.reference.explorers.closest_first import ClosestFirst, ClosestFirstDouble
-from topomark.reference.explorers.edge_footprints import DoubleMarkedEdges, EdgeFootprints, FootprintSearch, VertexEdgeFootprints
+from topomark.reference.explorers.edge_footprints import (DoubleMarkedEdges, EdgeFootprints, FootprintSearch, Marking,
+                                                          VertexEdgeFootprints)
 from topomark.reference.explorers.marker_walk import MarkerStep
 
-__all__ = ["matching_darts", "EdgeInfoFilter", "EdgeInfoFootprints", "DoubleMarkedEdgeInfo", "EdgeFootprintsEdgeInfo",
-           "ClosestFirstEdgeInfo", "ClosestFirstDoubleEdgeInfo"]
+__all__ = ["matching_darts", "EdgeInfo", "EDGE_INFO", "EdgeInfoFootprints", "DoubleMarkedEdgeInfo",
+           "EdgeFootprintsEdgeInfo", "ClosestFirstEdgeInfo", "ClosestFirstDoubleEdgeInfo"]
 
 
 def matching_darts(M: PartialMap, w: int, sensed: Signature, exits: list[int] | None = None) -> list[int]:
@@ -149,57 +152,61 @@ def _entries_reading_first(M: PartialMap, w: int, sensed: Signature) -> set[int]
     return {(dm.exit - p) % d for dm in M.dart_marks(w) if dm.count == count and dm.end == end}
 
 
-class EdgeInfoFilter(FootprintSearch):
-    """The footprint search with edgeINFO: a candidate must read, from some unexplored entry, exactly what the
+class EdgeInfo(Marking):
+    """Directional markers read as edgeINFO: a candidate must read, from some unexplored entry, exactly what the
     robot sensed at v_u (L1898, generalised; module docstring)."""
 
+    vertex_head = 0  # each V-marker points at the edge the robot entered by
     loop_head = "H"  # each loop E-marker's head points at v_u, where the robot drops it
-    _sensed: Signature | None = None
 
-    def search(self, it: MarkerStep, key: tuple[int, ...], degree: int) -> tuple[int, int, int]:
-        """The footprint search; the candidates are filtered by what was sensed at v_u (``it.signature``)."""
-        self._sensed = it.signature
-        return super().search(it, key, degree)
+    def candidates(self, walker: FootprintSearch, it: MarkerStep, places: list[int]) -> list[int]:
+        """The case's own candidates that are potentially confusing by edgeINFO: some unexplored entry reads what
+        was sensed at v_u (``it.signature``)."""
+        return [w for w in places if matching_darts(walker.M, w, it.signature)]
 
-    def candidates(self, vk: int, key: tuple[int, ...], degree: int) -> list[int]:
-        """The case's own candidates that are potentially confusing by edgeINFO: some unexplored entry matches."""
-        return [w for w in super().candidates(vk, key, degree) if matching_darts(self.M, w, self._sensed)]
-
-    def drop_on_entry(self, it: MarkerStep, count: int) -> None:
+    def drop_on_entry(self, walker: FootprintSearch, it: MarkerStep, count: int) -> None:
         """The marker(s) on a non-loop e, head at v_u (the new vertex, where they are dropped), tail at v_k."""
-        self.drop(MarkerOp("edge", exit=0, count=count, direction="H"), it)
+        walker.drop(MarkerOp("edge", exit=0, count=count, direction="H"), it)
         v, i = it.edge
-        self.M.mark_as_sensed(v, Signature(self.M.degree(v), edges=((i, count, "T"),)), 0)
+        walker.M.mark_as_sensed(v, Signature(walker.M.degree(v), edges=((i, count, "T"),)), 0)
 
 
-class EdgeInfoFootprints(EdgeInfoFilter, VertexEdgeFootprints):
+EDGE_INFO = EdgeInfo()
+"""The marking every explorer of this module holds."""
+
+
+class EdgeInfoFootprints(VertexEdgeFootprints):
     """Case 1b with directional V-E-markers: candidates must match edgeINFO from the entry (L1891–L1898)."""
 
     name = "case-1b-edgeinfo"
-    vertex_head = 0  # each V-marker points at the edge the robot entered by
+    marking = EDGE_INFO
 
 
-class DoubleMarkedEdgeInfo(EdgeInfoFilter, DoubleMarkedEdges):
+class DoubleMarkedEdgeInfo(DoubleMarkedEdges):
     """Case 2 (Algorithm 6.1) with directional E-markers, heads at v_u: "The other O(mn) algorithms can be
     improved in a similar manner" (L1898); anchored at the entry (module docstring)."""
 
     name = "case-2-edgeinfo"
+    marking = EDGE_INFO
 
 
-class EdgeFootprintsEdgeInfo(EdgeInfoFilter, EdgeFootprints):
+class EdgeFootprintsEdgeInfo(EdgeFootprints):
     """Case 1a (m E-markers) with directional E-markers, heads at v_u, anchored at the entry: Figure 6.17's
     "directional marker version of the m E-marker algorithm" (L1965)."""
 
     name = "case-1a-edgeinfo"
+    marking = EDGE_INFO
 
 
-class ClosestFirstEdgeInfo(EdgeInfoFilter, ClosestFirst):
+class ClosestFirstEdgeInfo(ClosestFirst):
     """Case 4 (Algorithm 6.3, closest-first, m − ⌊(n−1)/2⌋ markers) with directional E-markers (L1891, L1898)."""
 
     name = "case-4-edgeinfo"
+    marking = EDGE_INFO
 
 
-class ClosestFirstDoubleEdgeInfo(EdgeInfoFilter, ClosestFirstDouble):
+class ClosestFirstDoubleEdgeInfo(ClosestFirstDouble):
     """The closest-first extension of Case 2 (L1665) with directional E-markers (L1891, L1898)."""
 
     name = "case-4-mn-edgeinfo"
+    marking = EDGE_INFO

@@ -16,10 +16,10 @@ drop markers (Algorithm 6.6 line 10: "goes back on e, drops i markers on e and
 back"); ``validation`` / ``retrace`` — back-link probes and their returns
 (Algorithm 6.2 lines 21–35).
 
-Decision (a gap in the kernel's checker): the map the checker reads, ``S``,
-shows the markers dropped after start only at termination; the algorithm works
-on its own map ``M``, which records every drop as sensed (:meth:`MarkerWalk.finish`
-says why and how to switch it off).
+The map is S (also named ``M`` in these modules: the algorithm's map): every
+marker dropped is recorded in it as the robot senses it, so after every step
+the checker compares it with the world as it is then, dropped markers
+included.
 
 Decision (the kernel's robot cannot count what it carries): "if the robot has
 enough markers" (Algorithm 6.2 line 10) is the robot trying the drop — the
@@ -36,106 +36,54 @@ Examples
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any
 
 from topomark.spec.errors import AlgorithmFailed, OutOfMarkers
 from topomark.spec.kit import MarkerOp
-from topomark.spec.mapstate import MapDart, PartialMap
-from topomark.spec.signature import KeptSignatures, Signature, signature_at
+from topomark.spec.mapstate import MapDart
+from topomark.spec.signature import KeptSignatures, Signature
 
 from topomark.reference.explorers.policies import Policies
+from topomark.reference.explorers.walker import MapWalker, StepRecord
 
 __all__ = ["MarkerStep", "MarkerWalk"]
 
 
 @dataclass
-class MarkerStep:
-    """One iteration: the edge e taken from U, what was sensed at v_u, how S grew, the markers dropped."""
+class MarkerStep(StepRecord):
+    """One iteration: the edge e taken from U, what was sensed at v_u, how S grew, the markers dropped (no
+    hypotheses: §6.2's O(m) algorithms validate without them)."""
 
-    number: int
-    edge: MapDart
-    kind: str = ""  # "loop" or "non-loop"
-    signature: Signature | None = None
-    joined: tuple[MapDart, MapDart] | None = None
     dropped: int = 0  # markers dropped in this iteration
     probes: int = 0  # back-link probes (Algorithm 6.2 lines 21-35)
-    hypotheses: list = field(default_factory=list)  # none: §6.2's O(m) algorithms validate without hypotheses
 
     def to_json(self) -> dict[str, Any]:
         return {"iteration": self.number, "edge": list(self.edge), "signature": str(self.signature),
-                "augmentation": self.kind, "joined": [list(d) for d in self.joined] if self.joined else None,
+                "augmentation": self.kind, "joined": self.joined_json(),
                 "dropped": self.dropped, "probes": self.probes, "hypotheses": []}
 
 
-class MarkerWalk:
-    """S, U and the believed pose, with the loop of §6.2; subclasses write :meth:`arrive` (and :meth:`begin`)."""
+class MarkerWalk(MapWalker):
+    """S, U and the believed pose, with the loop of §6.2; subclasses write :meth:`arrive` (and :meth:`begin`).
+    The start, termination, walks of S and augmentations are the :class:`~.walker.MapWalker`'s."""
 
     name = "marker-walk"
     step_type: type = MarkerStep  # the record of one iteration (a subclass may record more)
-    marks_at_end = False  # S shows M's marks only at termination (see finish()); False: S is M
 
     def __init__(self, robot, policies: Policies | None = None, observer=None, options: dict | None = None):
-        self.robot = robot
-        self.policies = policies or Policies()
-        self.observer = observer
+        super().__init__(robot, policies, observer)
         self.options = dict(options or {})
-        self.M = PartialMap()  # the algorithm's map: S with every marker dropped, recorded as sensed
-        self.S = PartialMap() if self.marks_at_end else self.M  # what the checker reads (see finish())
-        self.S.unexplored = self.M.unexplored  # one U
-        self.position: MapDart = (0, 0)  # believed (map vertex, entry exit); exit 0 of v0 is the faced exit
-        self.iterations: list[MarkerStep] = []
+        self.M = self.S  # the algorithm's map, S: every marker dropped recorded as sensed
         self.dropped = 0  # markers dropped so far
-        self._finished = False
         self._shown = KeptSignatures()  # map_signature's
         self._shown_upto = 0  # how much of M's journal _shown has taken in
 
-    # -- the explorer contract ---------------------------------------------------
+    # -- the explorer contract: start, step (done, models: the walker's) -----------------
     def start(self) -> None:
         """S ← v0; U ← the edges of v0 (line 1 of every §6.2 listing); then the algorithm's own first drops."""
-        degree = self.robot.sense().degree
-        self.add_vertex(degree)
-        self.M.unexplored.extend((0, i) for i in range(degree))
-        self.position = (0, 0)
+        super().start()
         self.begin()
-        self.finish_start()
-
-    def finish_start(self) -> None:
-        """The marks dropped by :meth:`begin` are in the world the checker snapshots after start: S shows them."""
-        sig = signature_at(self.M, 0, 0)
-        if sig.marked and self.S is not self.M:
-            self.S.mark_as_sensed(0, sig, 0)
-
-    def done(self) -> bool:
-        """U is empty; then S shows M's marks (see :meth:`finish`)."""
-        if self.M.unexplored:
-            return False
-        self.finish()
-        return True
-
-    def finish(self) -> None:
-        """Copy M's marks into S once, at termination.
-
-        Decision (a gap in the kernel, reported): the checker compares S's marks,
-        step by step, with the world *as it was after start()* (``Checker.world``
-        and its incremental I-1 are that snapshot), so a mark dropped later would
-        read as a violation of I-1.  S therefore grows with M's vertices, edges and
-        U (checked by ``pose``, ``I-1``, ``I-2`` after every step) and receives
-        M's marks at termination, where ``isomorphism`` compares them with every
-        marker in the world.  The marks dropped at start (before the snapshot) are
-        in S from the start.  Once the checker compares with the world as it is
-        now (``Checker.sim.world``), ``marks_at_end = False`` makes S the map M
-        itself, marks recorded as they are dropped.
-        """
-        if self._finished or self.S is self.M:
-            return
-        self._finished = True
-        for v in self.M.vertices:
-            sig, have = signature_at(self.M, v, 0), signature_at(self.S, v, 0)
-            if sig != have:
-                self.S.mark_as_sensed(v, Signature(sig.degree, 0 if have.vertex_count else sig.vertex_count,
-                                                   None if have.vertex_count else sig.vertex_direction,
-                                                   tuple(e for e in sig.edges if e not in have.edges)), 0)
 
     def step(self) -> MarkerStep:
         """One iteration: remove e = (v_k, v_u) from U, walk S to v_k, follow e, then :meth:`arrive`."""
@@ -145,13 +93,7 @@ class MarkerWalk:
         self.depart(it)
         it.signature = self.leave(it.edge, "new")
         self.arrive(it, it.signature)
-        self.iterations.append(it)
-        if self.observer is not None:
-            self.observer(self, it)
-        return it
-
-    def models(self) -> list[tuple[PartialMap, MapDart]]:
-        return [(self.S, self.position)]
+        return self.record(it)
 
     # -- what a subclass writes ----------------------------------------------------
     def begin(self) -> None:
@@ -173,58 +115,29 @@ class MarkerWalk:
     def leave(self, dart: MapDart, purpose: str) -> Signature:
         """Leave the believed position's vertex by map exit ``dart[1]``; the position becomes the far end if S
         knows it (the caller sets it otherwise).  Returns the signature sensed there."""
-        v, entry = self.position
+        v = self.position[0]
         if dart[0] != v:
             raise AlgorithmFailed(f"internal: asked to leave map vertex {dart[0]} while at {v}")
-        sig = self.robot.move((dart[1] - entry) % self.M.degree(v), purpose)
+        sig = self.take_exit(dart[1], purpose)
         far = self.M.arc(dart)
         self.position = far if far is not None else (-1, -1)
         return sig
 
-    def path_to(self, target: int, parent: dict[int, MapDart]) -> list[MapDart]:
-        """The darts of S from the believed position to ``target`` along the BFS tree ``parent`` rooted there."""
-        path = []
-        x = target
-        while x != self.position[0]:
-            path.append(parent[x])
-            x = parent[x][0]
-        return path[::-1]
-
-    def travel_to(self, target: int, parent: dict[int, MapDart]) -> None:
-        """Walk S from the believed position to ``target`` along the BFS tree ``parent`` rooted there."""
-        for dart in self.path_to(target, parent):
-            self.leave(dart, "travel")
-
     # -- augmentation ---------------------------------------------------------------
     def non_loop(self, it: MarkerStep, sig: Signature) -> int:
         """v_u is new: add it with e as its exit 0, its other exits (clockwise) to U; the robot stands there."""
-        u = self.add_vertex(sig.degree)
-        self.add_edge(it.edge, (u, 0))
-        self.M.unexplored.extend((u, i) for i in range(1, sig.degree))
-        it.kind, it.joined = "non-loop", (it.edge, (u, 0))
-        self.position = (u, 0)
+        u = self.non_loop_augment(it, sig)
         self.record_marks()  # a marker dropped on e in transit shows at v_u too
         return u
 
     def loop(self, it: MarkerStep, far: MapDart) -> None:
         """v_u is the known place of dart ``far`` = e' (entered by it): add e/e' and remove e' from U."""
-        try:
-            self.M.unexplored.remove(far)
-        except ValueError:
-            raise AlgorithmFailed(f"internal: e' = {far} identified at iteration {it.number} is not in U") from None
-        self.add_edge(it.edge, far)
-        it.kind, it.joined = "loop", (it.edge, far)
+        self.loop_augment(it, far)
         self.position = far
 
-    def add_vertex(self, degree: int) -> int:
-        if self.S is not self.M:
-            self.S.add_vertex(degree)
-        return self.M.add_vertex(degree)
-
-    def add_edge(self, a: MapDart, b: MapDart) -> None:
-        if self.S is not self.M:
-            self.S.add_edge(a, b)
-        self.M.add_edge(a, b)
+    def not_in_u(self, it: MarkerStep, far: MapDart) -> Exception:
+        """e' not in U: the algorithm identified a place wrongly (the ``failed`` outcome)."""
+        return AlgorithmFailed(f"internal: e' = {far} identified at iteration {it.number} is not in U")
 
     # -- markers --------------------------------------------------------------------
     def drop(self, op: MarkerOp, it: MarkerStep | None = None) -> None:

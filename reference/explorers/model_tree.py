@@ -83,6 +83,7 @@ from topomark.reference.explorers.robot import Robot
 from topomark.reference.explorers.global_signatures import Walker, validate
 from topomark.reference.explorers.model_shapes import Model, Shape, walk_equivalent
 from topomark.reference.explorers.traversal_map import TraversalMap
+from topomark.reference.explorers.walker import ExplorerState
 
 __all__ = ["ModelTreeExplorer", "Step", "Closing", "DEFAULTS"]
 
@@ -127,18 +128,15 @@ class Step:
                 "completed": self.completed}
 
 
-class ModelTreeExplorer:
-    """Algorithm 5.1 on a robot with no marker; ``observer(explorer, step)`` runs after every step."""
+class ModelTreeExplorer(ExplorerState):
+    """Algorithm 5.1 on a robot with no marker; ``observer(explorer, step)`` runs after every step (recorded as
+    every explorer records one, :class:`~.walker.ExplorerState`; its map is the model tree's, not one S)."""
 
     name = "model-tree"
 
     def __init__(self, robot: Robot, policies=None, observer: Callable | None = None, options: dict | None = None):
-        self.robot = robot
-        self.observer = observer
+        super().__init__(robot, observer)  # S (the returned model's at the end), position, iterations
         self.options = {**DEFAULTS, **{k: v for k, v in (options or {}).items() if v is not None}}
-        self.S = PartialMap()
-        self.position: MapDart = (0, 0)
-        self.iterations: list[Step] = []
         self.live: list[Model] = []
         self.completed_models: list[PartialMap] = []
         self.peak_models = 0
@@ -188,9 +186,7 @@ class ModelTreeExplorer:
         self._apply_cues_after(record)
         self.peak_models = max(self.peak_models, len(self.live))
         record.live, record.completed = len(self.live), self._completed_count()
-        self.iterations.append(record)
-        if self.observer is not None:  # the models check sees this step's models before any stop
-            self.observer(self, record)
+        self.record(record)  # the models check sees this step's models before any stop
         self._terminate(number)
         return record
 

@@ -83,77 +83,54 @@ from typing import Callable
 
 from topomark.spec.errors import CheckFailure, Violation
 from topomark.spec.kit import MarkerOp
-from topomark.spec.mapstate import MapDart, PartialMap
 from topomark.spec.signature import Signature
 
-from topomark.reference.explorers.policies import Policies, in_preorder, nearest, open_ends_beyond
+from topomark.reference.explorers.policies import Policies
 from topomark.reference.explorers.robot import Robot
+from topomark.reference.explorers.walker import MapWalker, StepRecord, places_like
 
 __all__ = ["MarkerIteration", "MovableMarkerExplorer", "DirectionalMovableMarkerExplorer"]
 
-V0 = 0
 PICK_UP = MarkerOp("vertex", pick_up=True)
 
 
 @dataclass
-class MarkerIteration:
-    """One step: the edge e explored, what was sensed at v_u, and how the marker resolved it."""
+class MarkerIteration(StepRecord):
+    """One step: the edge e explored, what was sensed at v_u, and how the marker resolved it (no hypotheses)."""
 
-    number: int
-    edge: MapDart
-    signature: Signature | None = None
-    kind: str = ""  # "loop" or "non-loop"
-    joined: tuple[MapDart, MapDart] | None = None
     candidates: list[int] = field(default_factory=list)  # known vertices that could be v_u, in visiting order
     found: int | None = None  # the known vertex v_k' where the marker was found (loop)
     probes: int = 0  # v_k''s unexplored edges traversed in the back-link search
-    hypotheses: list = field(default_factory=list)  # the contract's field: this algorithm makes none
 
     def to_json(self) -> dict:
         return {"iteration": self.number, "edge": list(self.edge), "signature": str(self.signature),
-                "augmentation": self.kind, "joined": [list(d) for d in self.joined] if self.joined else None,
+                "augmentation": self.kind, "joined": self.joined_json(),
                 "candidates": self.candidates, "found": self.found, "probes": self.probes}
 
 
-class MovableMarkerExplorer:
-    """Dudek et al.'s single undirected movable marker algorithm [26] (§2.3.1, L148–L150)."""
+class MovableMarkerExplorer(MapWalker):
+    """Dudek et al.'s single undirected movable marker algorithm [26] (§2.3.1, L148–L150); the start, the
+    termination, the walks of S and the augmentations are the :class:`~.walker.MapWalker`'s."""
 
     name = "dudek"
+    loop_check = "Dudek loop"
     directional = False
 
     def __init__(self, robot: Robot, policies: Policies | None = None,
                  observer: Callable[["MovableMarkerExplorer", MarkerIteration], None] | None = None,
                  options: dict | None = None):
-        self.robot = robot
-        self.policies = policies or Policies()
-        self.observer = observer
+        super().__init__(robot, policies, observer)
         self.options = options or {}
-        self.S = PartialMap()
-        self.position: MapDart = (V0, 0)  # believed (map vertex, entry index)
-        self.iterations: list[MarkerIteration] = []
 
-    # -- the explorer contract ---------------------------------------------------
-    def start(self) -> None:
-        """S = {v0}, U = its exits numbered from the exit the robot faces; the robot at v0, entered by exit 0."""
-        v0 = self.S.add_vertex(self.robot.sense().degree)
-        self.S.unexplored = [(v0, i) for i in range(self.S.degree(v0))]
-        self.position = (v0, 0)
-
-    def done(self) -> bool:
-        """U is empty (§3.1.3: termination)."""
-        return not self.S.unexplored
-
-    def models(self) -> list[tuple[PartialMap, MapDart]]:
-        return [(self.S, self.position)]
-
+    # -- the explorer contract: step (start, done, models: the walker's) ----------------
     def step(self) -> MarkerIteration:
         """One step of L148: take e from U, follow it, resolve v_u with the marker, augment S."""
         edge, parent = self.policies.next_edge(self.S, self.position[0])
         it = MarkerIteration(len(self.iterations) + 1, edge)
         vk, i = it.edge
-        self.walk(self.path(parent, vk), "travel")
-        it.signature = sig = self.robot.move((i - self.position[1]) % self.S.degree(vk), "new")
-        it.candidates = self.candidates(vk, sig.degree)
+        self.travel_to(vk, parent)
+        it.signature = sig = self.take_exit(i, "new")
+        it.candidates = places_like(self.S, vk, sig.degree)
         if not it.candidates:  # no known vertex can be v_u: it is new, nothing to drop
             self.non_loop_augment(it, sig)
         else:
@@ -163,32 +140,33 @@ class MovableMarkerExplorer:
             found = self.search(it.candidates)
             if found is None:  # Figure 2.2(a, b): fetch the marker from v_u, which is new
                 self.walk_to(vk, "other")
-                self.robot.move((i - self.position[1]) % self.S.degree(vk), "other")
+                self.take_exit(i, "other")
                 self.robot.operate(PICK_UP)
                 self.non_loop_augment(it, sig)
             else:  # Figure 2.2(c, d)
                 it.found = found[0]
                 self.loop_augment(it, (found[0], self.back_link(it, found[1])))
-        self.iterations.append(it)
-        if self.observer is not None:
-            self.observer(self, it)
-        return it
+        return self.record(it)
 
     # -- place validation (L148) -------------------------------------------------------
-    def candidates(self, vk: int, degree: int) -> list[int]:
-        """The known vertices that could be v_u, in the preorder of a breadth-first tree of S rooted at v_k."""
-        S = self.S
-        return in_preorder(S, vk, {v for v in open_ends_beyond(S, vk) if S.degree(v) == degree})
-
     def search(self, candidates: list[int]) -> tuple[int, Signature] | None:
-        """Visit the candidates until the marker is seen; where (the robot stands there) and what it sensed."""
+        """Visit the candidates (:func:`~.walker.places_like`) until the marker is seen; where (the robot
+        stands there) and what it sensed.  Every vertex the robot enters is looked at, so a candidate passed on
+        the way is not visited again."""
         looked: set[int] = set()
+
+        def marker_seen(v: int, entry: int, sig: Signature) -> bool:
+            if sig.vertex_count:
+                return True
+            looked.add(v)
+            return False
+
         for target in candidates:
             if target in looked:
                 continue
-            found = self.walk_to(target, "validation", looked)
+            found = self.walk_to(target, "validation", marker_seen)
             if found is not None:
-                return found
+                return found[0], found[2]
         return None
 
     # -- back-link validation (L150) ----------------------------------------------------
@@ -201,7 +179,7 @@ class MovableMarkerExplorer:
         """
         x = self.position[0]
         vk, i = it.edge
-        open_exits = [j for j, t in enumerate(self.S.links(x)) if t is None]
+        open_exits = self.open_exits(x)
         self.robot.operate(PICK_UP)
         if len(open_exits) == 1:
             return open_exits[0]
@@ -210,7 +188,7 @@ class MovableMarkerExplorer:
         self.walk_to(x, "other")
         for k, j in enumerate(open_exits):
             it.probes += 1
-            got = self.robot.move((j - self.position[1]) % self.S.degree(x), "probe")
+            got = self.take_exit(j, "probe")
             if got.vertex_count:  # the marker: this edge leads to v_k, entered by e
                 self.position = (vk, i)
                 self.robot.operate(PICK_UP)
@@ -222,52 +200,6 @@ class MovableMarkerExplorer:
         raise CheckFailure(Violation("Dudek back-link", f"iteration {it.number}", f"the marker at v_k = {vk} "
                                      f"beyond one of {open_exits} at v_k' = {x}", "not found",
                                      "the explorer's own map is inconsistent"))
-
-    # -- walking S -------------------------------------------------------------------
-    @staticmethod
-    def path(parent: dict[int, MapDart], target: int) -> list[MapDart]:
-        """The darts (vertex, exit) from the BFS root to ``target``, in walking order."""
-        path = []
-        while target in parent:
-            path.append(parent[target])
-            target = parent[target][0]
-        return path[::-1]
-
-    def walk_to(self, target: int, purpose: str, looked: set[int] | None = None) -> tuple[int, Signature] | None:
-        """Walk a shortest path of S to ``target``; with ``looked``, stop where the marker is seen."""
-        return self.walk(self.path(nearest(self.S, self.position[0], (target,))[1], target), purpose, looked)
-
-    def walk(self, path: list[MapDart], purpose: str, looked: set[int] | None = None) -> tuple[int, Signature] | None:
-        """Follow ``path`` (darts of S from the believed position); each vertex entered goes into ``looked``,
-        and if ``looked`` is given the walk stops at the first one showing the marker: (it, its signature)."""
-        v, entry = self.position
-        for u, exit_ in path:
-            sig = self.robot.move((exit_ - entry) % self.S.degree(u), purpose)
-            v, entry = self.S.arc((u, exit_))
-            self.position = (v, entry)
-            if looked is not None:
-                if sig.vertex_count:
-                    return v, sig
-                looked.add(v)
-        return None
-
-    # -- augmentation (§3.1.3) ---------------------------------------------------------
-    def loop_augment(self, it: MarkerIteration, far: MapDart) -> None:
-        """Add e/e' = (v_k, v_k'); remove e' from U."""
-        if far not in self.S.unexplored:
-            raise CheckFailure(Violation("Dudek loop", f"iteration {it.number}", f"e' = {far} in U", "not in U",
-                                         "the explorer's own map is inconsistent"))
-        self.S.unexplored.remove(far)
-        self.S.add_edge(it.edge, far)
-        it.kind, it.joined = "loop", (it.edge, far)
-
-    def non_loop_augment(self, it: MarkerIteration, sig: Signature) -> None:
-        """Add v_u and e (its exit 0; the robot stands at v_u, entered by e); its other exits join U."""
-        u = self.S.add_vertex(sig.degree)
-        self.S.add_edge(it.edge, (u, 0))
-        self.S.unexplored.extend((u, j) for j in range(1, sig.degree))
-        it.kind, it.joined = "non-loop", (it.edge, (u, 0))
-        self.position = (u, 0)
 
 
 class DirectionalMovableMarkerExplorer(MovableMarkerExplorer):

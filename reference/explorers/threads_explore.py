@@ -74,11 +74,11 @@ from typing import Callable
 
 from topomark.spec.errors import AlgorithmFailed, CheckFailure, Violation
 from topomark.spec.kit import ThreadOp
-from topomark.spec.mapstate import MapDart, PartialMap
+from topomark.spec.mapstate import MapDart
 from topomark.spec.signature import Signature, ThreadMark
 
-from topomark.reference.explorers.policies import Policies, bfs, nearest
-from topomark.reference.explorers.movable_marker import MovableMarkerExplorer
+from topomark.reference.explorers.policies import Policies, bfs
+from topomark.reference.explorers.walker import MapWalker, StepRecord, places_like
 
 __all__ = ["ThreadIteration", "ThreadWalker", "ThreadExplorer", "CircumferenceThreadExplorer"]
 
@@ -86,68 +86,47 @@ TIE, UNTIE, LEAVE, TAKE = ThreadOp("tie"), ThreadOp("untie"), ThreadOp("leave"),
 
 
 @dataclass
-class ThreadIteration:
-    """One step: the edge e explored, what was sensed at v_u, how it was resolved, the thread after it."""
+class ThreadIteration(StepRecord):
+    """One step: the edge e explored, what was sensed at v_u, how it was resolved, the thread after it (no
+    hypotheses)."""
 
-    number: int
-    edge: MapDart
-    signature: Signature | None = None
-    kind: str = ""  # "loop" or "non-loop"
-    joined: tuple[MapDart, MapDart] | None = None
     how: str = ""  # "new", "sensed", "thread search", "off-thread search", "knots", "probe"
     candidates: list[int] = field(default_factory=list)
     laid: int = 0  # edges of thread laid after the step
     tied: int | None = None  # where the thread is tied after the step
-    hypotheses: list = field(default_factory=list)  # the contract's field: none made here
 
     def to_json(self) -> dict:
         return {"iteration": self.number, "edge": list(self.edge), "signature": str(self.signature),
-                "augmentation": self.kind, "joined": [list(d) for d in self.joined] if self.joined else None,
+                "augmentation": self.kind, "joined": self.joined_json(),
                 "resolved": self.how, "candidates": self.candidates, "laid": self.laid, "tied": self.tied}
 
 
-class ThreadWalker:
-    """S, U, the believed pose and the robot's record of its thread: tied at ``tied`` (map vertex), laid
-    along ``laid`` (darts of S, from the tied vertex out), free end ``held`` or lying at the laid end."""
+class ThreadWalker(MapWalker):
+    """S, U and the believed pose (a :class:`~.walker.MapWalker`'s start, termination, walks and augmentations;
+    the thread is tied in the first step), and the robot's record of its thread: tied at ``tied`` (map
+    vertex), laid along ``laid`` (darts of S, from the tied vertex out), free end ``held`` or lying at the laid
+    end.  Walks of S (:meth:`~.walker.MapWalker.walk`) are made with the thread untied or its free end left
+    behind; a move holding the free end of a tied thread lays it (:meth:`lay`)."""
 
     name = "thread"
+    loop_check = "thread loop"
 
     def __init__(self, robot, policies: Policies | None = None,
                  observer: Callable[[object, ThreadIteration], None] | None = None, options: dict | None = None):
-        self.robot = robot
-        self.policies = policies or Policies()
-        self.observer = observer
+        super().__init__(robot, policies, observer)
         self.options = options or {}
         length = self.options.get("thread-length")  # an integer, or "n": not told (Algorithm 6.7's default)
         self.length: int | None = length if isinstance(length, int) else None
-        self.S = PartialMap()
-        self.position: MapDart = (0, 0)
-        self.iterations: list[ThreadIteration] = []
         self.tied: int | None = None
         self.laid: list[MapDart] = []
         self.held = True
         self.knots: dict[int, int] = {}  # position along ``laid`` ↦ knots tied there (thread-knots)
 
-    # -- the explorer contract ----------------------------------------------------------
-    def start(self) -> None:
-        """S = {v0}, U = its exits numbered from the exit the robot faces (the thread is tied in the first step)."""
-        v0 = self.S.add_vertex(self.robot.sense().degree)
-        self.S.unexplored = [(v0, i) for i in range(self.S.degree(v0))]
-        self.position = (v0, 0)
-
-    def done(self) -> bool:
-        return not self.S.unexplored
-
-    def models(self) -> list[tuple[PartialMap, MapDart]]:
-        return [(self.S, self.position)]
-
     def finish(self, it: ThreadIteration) -> ThreadIteration:
+        """End a step: the thread recorded in ``it`` and shown in S, then the step recorded."""
         it.laid, it.tied = len(self.laid), self.tied
         self.show_thread()
-        self.iterations.append(it)
-        if self.observer is not None:
-            self.observer(self, it)
-        return it
+        return self.record(it)
 
     # -- the thread ----------------------------------------------------------------------
     def show_thread(self) -> None:
@@ -197,7 +176,8 @@ class ThreadWalker:
 
     def open_exit(self, v: int) -> int | None:
         """The lowest unexplored exit of ``v`` (the closest edge, the robot standing there), or None."""
-        return next((j for j, t in enumerate(self.S.links(v)) if t is None), None)
+        exits = self.open_exits(v)
+        return exits[0] if exits else None
 
     def can_lay(self) -> bool:
         return self.length is None or len(self.laid) < self.length
@@ -208,9 +188,8 @@ class ThreadWalker:
             raise AlgorithmFailed(f"out of thread: the thread's {self.length} edges are all laid, from map vertex "
                                   f"{self.tied} to map vertex {self.position[0]}, and this algorithm has no rule for "
                                   "running out (Algorithm 6.7 assumes l = c(G) suffices, L2044)")
-        v, entry = self.position
-        sig = self.robot.move((exit_ - entry) % self.S.degree(v), purpose)
-        self.laid.append((v, exit_))
+        sig = self.take_exit(exit_, purpose)
+        self.laid.append((self.position[0], exit_))
         return sig
 
     def rewind(self, purpose: str = "retrace") -> None:
@@ -232,37 +211,6 @@ class ThreadWalker:
                 at = out.setdefault(v, {})
                 at[x] = at.get(x, 0) + 1
         return out
-
-    def walk(self, path: list[MapDart], purpose: str, stop: Callable[[int, int, Signature], bool] | None = None):
-        """Follow darts of S not holding the thread; with ``stop``, end at the first vertex where it holds:
-        (vertex, entry, signature), else None."""
-        for u, exit_ in path:
-            sig = self.robot.move((exit_ - self.position[1]) % self.S.degree(u), purpose)
-            self.position = self.S.arc((u, exit_))
-            if stop is not None and stop(self.position[0], self.position[1], sig):
-                return self.position[0], self.position[1], sig
-        return None
-
-    def walk_to(self, target: int, purpose: str, stop=None):
-        return self.walk(MovableMarkerExplorer.path(nearest(self.S, self.position[0], (target,))[1], target), purpose,
-                         stop)  # bfs's parents, the search stopped at the target's layer
-
-    # -- augmentation (§3.1.3) -------------------------------------------------------------
-    def loop_augment(self, it: ThreadIteration, far: MapDart) -> None:
-        if far not in self.S.unexplored:
-            raise CheckFailure(Violation("thread loop", f"iteration {it.number}", f"e' = {far} in U", "not in U",
-                                         "the explorer's own map is inconsistent"))
-        self.S.unexplored.remove(far)
-        self.S.add_edge(it.edge, far)
-        it.kind, it.joined = "loop", (it.edge, far)
-
-    def non_loop_augment(self, it: ThreadIteration, degree: int) -> None:
-        """Add v_u and e (its exit 0; the robot stands at v_u, entered by e); its other exits join U."""
-        u = self.S.add_vertex(degree)
-        self.S.add_edge(it.edge, (u, 0))
-        self.S.unexplored.extend((u, j) for j in range(1, degree))
-        it.kind, it.joined = "non-loop", (it.edge, (u, 0))
-        self.position = (u, 0)
 
 
 def _sensed_edges(sig: Signature, entry: int) -> Counter:
@@ -292,7 +240,7 @@ class ThreadExplorer(ThreadWalker):
             self.off_thread(it, sig)
         else:  # Algorithm 6.7 line 6: no thread, so v_u is new
             it.how = "new"
-            self.non_loop_augment(it, sig.degree)
+            self.non_loop_augment(it, sig)
         self.settle()
         return self.finish(it)
 
@@ -302,7 +250,7 @@ class ThreadExplorer(ThreadWalker):
         marks = self.thread_edges(-1)
         near = {vk} | {t[0] for t in self.S.links(vk) if t is not None}
         hyps = [(w, j) for w in dict.fromkeys(self.on_thread(-1)) if w not in near and self.S.degree(w) == sig.degree
-                for j, t in enumerate(self.S.links(w)) if t is None and self._reads(w, j, marks, sig)]
+                for j in self.open_exits(w) if self._reads(w, j, marks, sig)]
         it.candidates = sorted({w for w, _ in hyps})
         if len(hyps) == 1:
             it.how = "sensed"
@@ -337,10 +285,11 @@ class ThreadExplorer(ThreadWalker):
         """Line 11: search the known vertices off the thread that could be v_u for the free end left there."""
         vk, i = it.edge
         thread = set(self.on_thread(-1))
-        it.candidates = [w for w in MovableMarkerExplorer.candidates(self, vk, sig.degree) if w not in thread]
+        it.candidates = [w for w in places_like(self.S, vk, sig.degree) if w not in thread]
         if not it.candidates:
             it.how = "new"
-            return self.non_loop_augment(it, sig.degree)
+            self.non_loop_augment(it, sig)
+            return
         it.how = "off-thread search"
         self.leave_and_return(it)
 
@@ -355,9 +304,9 @@ class ThreadExplorer(ThreadWalker):
                 self.rewind()
                 return self.loop_augment(it, (w, next(iter(_sensed_edges(seen, entry)))))
         self.walk_to(vk, "other")  # v_u is new: back to it for the free end
-        self.robot.move((i - self.position[1]) % self.S.degree(vk), "other")
+        self.take_exit(i, "other")
         self.take()
-        self.non_loop_augment(it, sig.degree)
+        self.non_loop_augment(it, sig)
 
     def settle(self) -> None:
         """Lines 16–21: rewind to a not fully explored vertex where the thread can still be laid; at v_s fully

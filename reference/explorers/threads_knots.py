@@ -77,12 +77,12 @@ class KnotThreadExplorer(ThreadWalker):
         it.signature = sig = self.lay(i, "new")
         if not sig.thread.knots:
             it.how = "new"
-            self.non_loop_augment(it, sig.degree)
+            self.non_loop_augment(it, sig)
             self.knot(self.position[0] + 1)
         else:
             w = sig.thread.knots - 1
             self.check_knots(it, w, sig)
-            opens = [j for j, t in enumerate(self.S.links(w)) if t is None]
+            opens = self.open_exits(w)
             if len(opens) == 1:
                 it.how = "knots"
                 self.position = far = (w, opens[0])
