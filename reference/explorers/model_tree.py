@@ -38,9 +38,8 @@ Termination, all decided here since the thesis gives one heuristic only (L1373):
   counts; every model voided: :class:`AlgorithmFailed` (cannot happen
   unless a cue is false).
 
-Cues of §5.3 (L1436; none was run in the thesis).  The issue asks for a
-repeatable ``--cue``; the kernel's :class:`Parameter` is single-valued, so
-each cue is its own option: ``cue-n``, ``cue-m``, ``cue-diameter`` (integers)
+Cues of §5.3 (L1436; none was run in the thesis).  The registry's
+options are single-valued, so each cue is its own option: ``cue-n``, ``cue-m``, ``cue-diameter`` (integers)
 and ``cue-planar`` (yes/no).  A cue is prior knowledge, true of the world:
 the registration refuses a false ``cue-n``/``cue-m`` as bad input.
 
