@@ -166,14 +166,14 @@ def explore_command(args) -> int:
         outcome = explore(world, spec, policies, check=not args.no_check, sink=sink,
                           progress=_Progress(not (args.quiet or args.json)), check_mode=args.check_mode,
                           keep_hypotheses=False, lighthouse=light, options=options)
-    S = getattr(outcome.explorer, "S", None)
-    if args.map and outcome.violation is None and S is not None and S.complete():
-        write_output(args.map, dumps_world(S.to_world()))
+    unwritten = _write_map(args.map, outcome)
     if args.models is not None:
         guarded(args.models, lambda: spec.write_models(outcome.explorer, args.models))
     last = ring.records[:-1]  # the records before the end record
     data = {"world": label, "policies": policies.to_json(), "algorithm": args.algorithm, **outcome.summary(),
             "checked": not args.no_check}
+    if args.map:
+        data.update(map_written=unwritten is None, **({"map_not_written": unwritten} if unwritten else {}))
     tail = [json.dumps(rec, sort_keys=True) for rec in last] if outcome.violation else []
     if tail:
         data["trace_tail"] = last
@@ -181,11 +181,33 @@ def explore_command(args) -> int:
         print(json.dumps(data, indent=1, sort_keys=True))
     else:
         _print_report(args, spec, label, policies, outcome, started, tail)
+        if unwritten:
+            print(f"no map written to {args.map}: {unwritten}")
     if outcome.violation is not None and args.json:
         print(f"topomark: check failed: {outcome.violation}", file=sys.stderr)
     if outcome.violation is not None:  # even unchecked: the explorer's own map refused what it found
         return 1
     return 0 if outcome.outcome == "correct" or (args.no_check and outcome.claimed == "correct") else 1
+
+
+def _write_map(path: str | None, outcome) -> str | None:
+    """Write the final map to ``path`` (``--map``); None when written (or not asked for), else why not.
+
+    Only a run that ended with a map writes one: an algorithm that stopped (outcome ``failed`` or ``limit``,
+    e.g. §5.1's walk found no lighthouse, L1332) has none, and a run whose map broke a check has none worth
+    keeping.  Either way ``--map`` never changes the exit code: the outcome decides it.
+    """
+    if not path:
+        return None
+    S = getattr(outcome.explorer, "S", None)
+    if outcome.claimed != "correct":
+        return f"the algorithm stopped without a map (outcome {outcome.outcome})"
+    if outcome.violation is not None:
+        return "the map broke a check"
+    if S is None or not S.complete():
+        return "the algorithm keeps no single completed map"
+    write_output(path, dumps_world(S.to_world()))
+    return None
 
 
 def _print_report(args, spec, label: str, policies, outcome, started: float, tail: list[str]) -> None:

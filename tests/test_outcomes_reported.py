@@ -1,0 +1,51 @@
+"""A run's outcome decides its exit code, whatever is asked of the output: a failed search for a
+lighthouse (§5.1, L1332) exits 1 with outcome ``failed`` under ``explore`` and ``drive``, writes no map and
+says so; an explorer never raises the checker's own exception."""
+
+from __future__ import annotations
+
+import ast
+import json
+from pathlib import Path
+
+import pytest
+
+from topomark.reference.cli.main import main
+
+FAILS = ("explore", "cycle:n=6", "--lighthouse", "undirected-vertex", "--seed", "2", "--quiet")
+"""The smallest regular world where §5.1's search finds nothing: every vertex of a 6-cycle looks the same."""
+
+
+def run(capsys, *argv):
+    code = main(list(argv))
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+@pytest.mark.parametrize("no_check", [False, True])
+@pytest.mark.parametrize("as_json", [False, True])
+@pytest.mark.parametrize("with_map", [False, True])
+def test_failed_search_exits_1_with_or_without_map(capsys, tmp_path, no_check, as_json, with_map):
+    path = tmp_path / "m.json"
+    argv = [*FAILS, *(["--no-check"] if no_check else []), *(["--json"] if as_json else []),
+            *(["--map", str(path)] if with_map else [])]
+    code, out, err = run(capsys, *argv)
+    assert code == 1, (out, err)
+    assert "no vertices" not in out + err and "error" not in err
+    assert not path.exists()
+    if as_json:
+        data = json.loads(out)
+        assert data["outcome"] == "failed" and data["claimed"] == "failed"
+        if with_map:
+            assert data["map_written"] is False and "stopped without a map" in data["map_not_written"]
+        else:
+            assert "map_written" not in data
+    else:
+        assert "outcome: failed" in out
+        assert ("no map written to" in out) == with_map
+
+
+def test_a_correct_run_still_writes_its_map(capsys, tmp_path):
+    path = tmp_path / "m.json"
+    code, out, _ = run(capsys, "explore", "cycle:n=6", "--quiet", "--json", "--map", str(path))
+    assert code == 0 and path.exists() and json.loads(out)["map_written"] is True
