@@ -49,3 +49,27 @@ def test_a_correct_run_still_writes_its_map(capsys, tmp_path):
     path = tmp_path / "m.json"
     code, out, _ = run(capsys, "explore", "cycle:n=6", "--quiet", "--json", "--map", str(path))
     assert code == 0 and path.exists() and json.loads(out)["map_written"] is True
+
+
+ROOT = Path(__file__).resolve().parent.parent
+PROVIDER = str(ROOT / "reference" / "oracle" / "examples" / "provider.py")
+
+
+@pytest.mark.parametrize("name", ["undirected-vertex", "undirected-edge", "local-pair", "local-degree-list"])
+def test_drive_reports_a_failed_search_as_failed(tmp_path, capsys, name):
+    """A 6-cycle gives §5.1's, §5.2.1's and §6.1's searches nothing to find: FAIL [failed], exit 1, no map."""
+    import sys
+    from topomark.reference.explorers.lighthouses import LIGHTHOUSES
+    from topomark.reference.worlds import generators as g
+    from topomark.spec.worldfile import dumps_world
+    (tmp_path / "w.json").write_text(dumps_world(g.cycle(6)))
+    kit = json.dumps(LIGHTHOUSES[name].kit.to_json())
+    provider = [sys.executable, PROVIDER, str(tmp_path / "w.json"), "--protocol", "2", "--kit", kit]
+    base = ["drive", "--check", str(tmp_path / "w.json"), "--lighthouse", name, "--map", str(tmp_path / "m.json")]
+    assert main([*base, "--", *provider]) == 1
+    out, err = capsys.readouterr()
+    assert out.startswith("FAIL [failed] the algorithm stopped:") and "internal fault" not in err
+    assert main([*base, "--json", "--", *provider]) == 1
+    data = json.loads(capsys.readouterr().out)
+    assert (data["verdict"], data["reason"], data["n"]) == ("fail", "failed", None)
+    assert not (tmp_path / "m.json").exists()
