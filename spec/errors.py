@@ -30,6 +30,7 @@ __all__ = [
     "require",
     "require_input",
     "TopomarkFault",
+    "ExplorerFault",
     "AlgorithmStopped",
     "AlgorithmFailed",
     "LimitReached",
@@ -153,6 +154,16 @@ class TopomarkFault(TopomarkError, RuntimeError):
 
     def __init__(self, message: str):
         super().__init__(message)
+
+
+class ExplorerFault(TopomarkFault):
+    """An explorer found its own map, or what it sensed, inconsistent where the thesis proves that cannot happen.
+
+    A bug in the explorer (exit 3), never the checker's verdict: an explorer does not raise
+    :class:`CheckFailure`.  Where the thesis predicts such an inconsistency (a lighthouse whose place or
+    back-link may not be explicit, L1346) the explorer raises :class:`AlgorithmFailed` instead.  Under
+    ``drive`` the world is an outside program, and the same finding shows that its answers fit no world.
+    """
 
 
 OUTCOMES = ("correct", "wrong-map", "failed", "limit")

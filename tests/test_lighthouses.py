@@ -16,7 +16,7 @@ from topomark.spec.mapstate import PartialMap
 from topomark.spec.signature import Signature
 from topomark.reference.worlds.generators import generate, wheel_a
 from topomark.reference.run.simulator import Simulator
-from topomark.spec.errors import CheckFailure
+from topomark.spec.errors import ExplorerFault
 from topomark.spec.isomorphism import find_isomorphism
 from topomark.spec.kit import Kit, MarkerOp, ThreadOp
 from topomark.spec.signature import signature_at
@@ -147,10 +147,11 @@ def test_the_directional_edge_lighthouse_reads_the_head_at_v0_and_the_tail_at_it
 
 
 def test_an_undirected_vertex_marker_is_no_lighthouse():
-    """§3.2.2: one undirected marker gives no back-link at v0; establishing it is refused, naming why."""
+    """§3.2.2: one undirected marker gives no back-link at v0; establishing it is refused, naming why.  A lighthouse
+    of explicit place and back-link that gives none is defined wrongly: a bug (exit 3), not the checker's verdict."""
     fake = Lighthouse("undirected-vertex", "§3.2.2", Kit(vertex=1), (MarkerOp("vertex"),), "an undirected marker")
     world = generate("cycle", n=5)
-    with pytest.raises(CheckFailure, match="no explicit back-link"):
+    with pytest.raises(ExplorerFault, match="no explicit back-link"):
         _run(world, fake, "basic")
 
 

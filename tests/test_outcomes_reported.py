@@ -73,3 +73,31 @@ def test_drive_reports_a_failed_search_as_failed(tmp_path, capsys, name):
     data = json.loads(capsys.readouterr().out)
     assert (data["verdict"], data["reason"], data["n"]) == ("fail", "failed", None)
     assert not (tmp_path / "m.json").exists()
+
+
+EXPLORERS = ROOT / "reference" / "explorers"
+
+
+def _names(tree: ast.AST) -> set[str]:
+    """Every name a module imports, raises or mentions."""
+    found = {a.asname or a.name for n in ast.walk(tree) if isinstance(n, ast.ImportFrom) for a in n.names}
+    return found | {n.id for n in ast.walk(tree) if isinstance(n, ast.Name)} | {
+        n.attr for n in ast.walk(tree) if isinstance(n, ast.Attribute)}
+
+
+@pytest.mark.parametrize("path", sorted(EXPLORERS.glob("*.py")), ids=lambda p: p.name)
+def test_no_explorer_raises_the_checkers_exception(path):
+    """An explorer reports its own inconsistency as a failure the thesis predicts (AlgorithmFailed) or a bug
+    (ExplorerFault); the checker's CheckFailure, and require, which raises it, are the checker's alone."""
+    names = _names(ast.parse(path.read_text(encoding="utf-8")))
+    assert not names & {"CheckFailure", "Violation", "require"}, path.name
+
+
+def test_an_inconsistency_is_a_failure_or_a_fault_by_the_lighthouse():
+    """L1346 predicts an inconsistency with a lighthouse that is not explicit; Lemma 1 rules it out otherwise."""
+    from topomark.reference.explorers.inconsistency import inconsistent
+    from topomark.reference.explorers.lighthouses import LIGHTHOUSES
+    from topomark.spec.errors import AlgorithmFailed, ExplorerFault
+    assert isinstance(inconsistent(LIGHTHOUSES["local-pair"], "x", "Lemma 1"), AlgorithmFailed)
+    assert isinstance(inconsistent(LIGHTHOUSES["directional-vertex"], "x", "Lemma 1"), ExplorerFault)
+    assert isinstance(inconsistent(None, "x", "Lemma 1"), ExplorerFault)

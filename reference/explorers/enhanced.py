@@ -43,7 +43,7 @@ from __future__ import annotations
 from collections import Counter
 from dataclasses import dataclass
 
-from topomark.spec.errors import CheckFailure, Violation
+from topomark.spec.errors import ExplorerFault
 from topomark.spec.mapstate import MapDart
 from topomark.spec.signature import Signature
 
@@ -181,11 +181,11 @@ class EnhancedExplorer(LighthouseExplorer):
     # -- the template's hooks ------------------------------------------------------
     def on_enter(self, it: EnhancedIteration, sig: Signature) -> None:
         """Begin the iteration's execution trie at v_u; add what is known; let the techniques move."""
-        self.trie = ExecutionTrie(self.robot, sig)
+        self.trie = ExecutionTrie(self.robot, sig, self.lighthouse)
         self._states = {}
         for t in self.techniques:
             t.known_on_entering(self, it)
-        it.known += graft(self.T, self.trie, it.edge)
+        it.known += graft(self.T, self.trie, it.edge, self.lighthouse)
         for t in self.techniques:
             t.on_enter(self, it)
 
@@ -221,12 +221,12 @@ class EnhancedExplorer(LighthouseExplorer):
 
     def after_join(self, it: EnhancedIteration) -> None:
         """Records under darts just explored move on; the techniques' share of the trie goes into T."""
-        migrate(self.P, self.T, self.stats, it.joined)
+        migrate(self.P, self.T, self.stats, it.joined, self.lighthouse)
         if it.by_marker:
             return
         depth = max((t.recorded_depth(it.kind == "non-loop") for t in self.techniques), default=0)
         if depth:
-            record_trie(self.P, self.T, self.stats, self.trie, it.joined[1], depth)
+            record_trie(self.P, self.T, self.stats, self.trie, it.joined[1], depth, self.lighthouse)
 
     # -- validation on the trie --------------------------------------------------------
     def choose(self, remaining: list) -> tuple[EnhancedHypothesis, int]:
@@ -256,8 +256,9 @@ class EnhancedExplorer(LighthouseExplorer):
                 return False
         for step, got in enumerate(perceived[:start]):
             if got != h.expected[step]:  # pragma: no cover - stage 1 / tracing rejects this earlier
-                raise CheckFailure(Violation("Enhancement-1 stage 2", f"hypothesis {h.dart}",
-                                             "overlapped perceptions matching P^E", str(perceived)))
+                # stage 1 compared these very perceptions with P^E already: a mismatch now is a bug, not an outcome
+                raise ExplorerFault(f"Enhancement-1 stage 2: hypothesis {h.dart}'s overlapped perceptions {perceived} "
+                                    "do not match P^E, which stage 1 checked: a bug in the explorer")
         h.perceived = tuple(perceived)
         h.outcome = "case 3"
         return True

@@ -23,8 +23,9 @@ from T before any motion; Enhancement-3).
 
 from __future__ import annotations
 
-from topomark.spec.errors import CheckFailure, Violation
 from topomark.spec.signature import Signature
+
+from topomark.reference.explorers.inconsistency import inconsistent
 
 __all__ = ["TrieNode", "ExecutionTrie", "common_prefix"]
 
@@ -58,10 +59,11 @@ class TrieNode:
 class ExecutionTrie:
     """The trie of the current iteration, the robot's node and offset in it, and the nodes added since a check."""
 
-    __slots__ = ("robot", "root", "at", "offset", "new")
+    __slots__ = ("robot", "root", "at", "offset", "new", "light")
 
-    def __init__(self, robot, sig: Signature):
+    def __init__(self, robot, sig: Signature, light=None):
         self.robot = robot
+        self.light = light  # the lighthouse, which decides what a contradiction is (:meth:`forward`)
         self.root = self.at = TrieNode(sig, None, None, "root")
         self.offset = 0
         self.new: list[TrieNode] = []  # nodes added since the techniques last looked
@@ -91,8 +93,12 @@ class ExecutionTrie:
         if child is None:
             child = self.add(node, m, sig, purpose)
         elif child.sig != sig:
-            raise CheckFailure(Violation("execution trie", f"motions {child.path()} from v_u", str(child.sig),
-                                         str(sig), "the same motions from v_u sensed different places"))
+            # The world is fixed and a motion from a place always leads to the same place (§3.1.1, L365, L378):
+            # the robot's own perceptions never disagree, so only a node grafted from T (a record placed by the
+            # map) can; with an explicit lighthouse the map is right (Lemma 1, L604), with another it may not be
+            # (L1346): see :func:`~topomark.reference.explorers.inconsistency.inconsistent`.
+            raise inconsistent(self.light, f"execution trie: the motions {child.path()} from v_u sensed {sig}, "
+                                           f"where {child.kind} perception {child.sig} is known", "§3.1.1 and Lemma 1")
         self.at, self.offset = child, 0
         return sig
 

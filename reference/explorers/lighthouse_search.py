@@ -55,7 +55,7 @@ True
 
 from __future__ import annotations
 
-from topomark.spec.errors import AlgorithmFailed, CheckFailure, Violation
+from topomark.spec.errors import AlgorithmFailed, ExplorerFault
 from topomark.spec.kit import MarkerOp
 from topomark.spec.mapstate import PartialMap
 
@@ -86,7 +86,8 @@ class SplitMix:
 
 def after_search(S, v0):
     """The recognition of a searched lighthouse is made by its search (a placeholder for ``recognition``)."""
-    raise CheckFailure(Violation("lighthouse", "v0", "a lighthouse established by its search", "none"))
+    raise ExplorerFault("a searched lighthouse is recognised by what its search returns (§5.1, L1332; §6.1, L1470): "
+                        "its placeholder recognition was called, a bug in the explorer")
 
 
 def search_vertex(light, robot, S: PartialMap):

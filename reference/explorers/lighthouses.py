@@ -78,11 +78,12 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 from typing import Any, Callable, Iterator
 
-from topomark.spec.errors import CheckFailure, InvalidInput
+from topomark.spec.errors import InvalidInput
 from topomark.spec.kit import Kit, MarkerOp, ThreadOp
 from topomark.spec.mapstate import PartialMap
 from topomark.spec.signature import Signature, back_link_table, signature_at
 
+from topomark.reference.explorers.inconsistency import inconsistent
 from topomark.reference.explorers.lighthouse_search import after_search, search_edge, search_vertex
 from topomark.reference.explorers.local_lighthouses import VirtualMap, search_degree_list, search_pair
 from topomark.reference.explorers.probing import PerceivedMap, ProbingRobot, identify, perceived
@@ -176,11 +177,15 @@ class Lighthouse:
         return self.beacon(S, v0)
 
     def beacon(self, S: PartialMap, v0: int, walk_steps: int = 0, recognise: Callable | None = None) -> Beacon:
-        """The recognition of v0, once S holds its marks; raises if it gives no explicit back-link (§3.2.2)."""
+        """The recognition of v0, once S holds its marks; raises if it gives no explicit back-link (§3.2.2).
+
+        A lighthouse of explicit place and back-link gives one wherever the world was accepted for it
+        (:func:`~topomark.reference.run.explore.prepare_world`; §3.3, L502): otherwise the lighthouse is defined
+        wrongly, a bug.  One that is not explicit may give none (L1344): the ``failed`` outcome."""
         P = self.perceive(S)
         table, bad = back_link_table(P, v0, f"v0 (lighthouse {self.name})")
         if bad is not None:
-            raise CheckFailure(bad)
+            raise inconsistent(self, f"establishing the lighthouse: {bad}", "§3.3 (L502)")
         if not self.probing:
             return Beacon(table, P, walk_steps=walk_steps)
         raw = frozenset(signature_at(S, v0, e) for e in range(S.degree(v0)))

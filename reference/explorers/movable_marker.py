@@ -81,7 +81,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Callable
 
-from topomark.spec.errors import CheckFailure, Violation
+from topomark.spec.errors import ExplorerFault
 from topomark.spec.kit import MarkerOp
 from topomark.spec.signature import Signature
 
@@ -114,6 +114,7 @@ class MovableMarkerExplorer(MapWalker):
 
     name = "dudek"
     loop_check = "Dudek loop"
+    loop_proof = "Dudek's back-link validation, whose marker always leads back (§2.3.1, L150)"
     directional = False
 
     def __init__(self, robot: Robot, policies: Policies | None = None,
@@ -197,9 +198,11 @@ class MovableMarkerExplorer(MapWalker):
                 break
             self.robot.move(0, "probe")
             self.position = (x, j)
-        raise CheckFailure(Violation("Dudek back-link", f"iteration {it.number}", f"the marker at v_k = {vk} "
-                                     f"beyond one of {open_exits} at v_k' = {x}", "not found",
-                                     "the explorer's own map is inconsistent"))
+        # "One of the (unexplored) edges e' will take the robot back to v_k, which the robot will immediately
+        # recognize due to the presence of the marker" (§2.3.1, L150): not finding it is a bug, not an outcome.
+        raise ExplorerFault(f"Dudek back-link: the marker at v_k = {vk} is beyond none of {open_exits} at "
+                            f"v_k' = {x} (iteration {it.number}), which §2.3.1 (L150) rules out: a bug in the "
+                            "explorer")
 
 
 class DirectionalMovableMarkerExplorer(MovableMarkerExplorer):

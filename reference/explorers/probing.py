@@ -50,7 +50,7 @@ from __future__ import annotations
 from dataclasses import replace
 from typing import Any, Callable
 
-from topomark.spec.errors import CheckFailure, Violation
+from topomark.spec.errors import ExplorerFault
 from topomark.spec.signature import Signature
 
 __all__ = ["ProbingRobot", "PerceivedMap", "VirtualHead", "identify", "views_around", "view_here", "aperiodic",
@@ -144,8 +144,10 @@ def identify(robot, sig: Signature, expect: Callable[[int, int], Any], known0, d
         robot.move((-f) % d, "probe")
         robot.move(0, "probe")
     if len(J) != 1:
-        raise CheckFailure(Violation("lighthouse", "v0", "one entry agreeing with the probed neighbours",
-                                     f"{len(J)} entries", "the lighthouse gives no explicit back-link information"))
+        # Only lighthouses of explicit place and back-link probe here (Figure 3.21(b); §5.1: D has no proper
+        # cyclic rotation onto itself, L1326): exactly one entry agrees, so another count is a bug.
+        raise ExplorerFault(f"{len(J)} entries of v0 agree with the probed neighbours, where an explicit back-link "
+                            "(§5.1, L1326) gives exactly one: a bug in the explorer")
     return J[0]
 
 

@@ -19,8 +19,11 @@ lives in the same T.
   v_u: it joins the iteration's trie as known perceptions before any motion.
 
 Every routing compares the recorded perception with S's signature where the
-record meets S: a contradiction is a :class:`CheckFailure` (the explorer's
-own data disagree).
+record meets S: a contradiction means the map is wrong.  With a lighthouse of
+explicit place and back-link the map cannot be (Lemma 1, L548, L604): a bug,
+:class:`~topomark.spec.errors.ExplorerFault`; with one that is not explicit
+the thesis predicts it, a wrong loop closing (L1346): the ``failed`` outcome
+(:func:`~topomark.reference.explorers.inconsistency.inconsistent`).
 """
 
 from __future__ import annotations
@@ -28,11 +31,11 @@ from __future__ import annotations
 from collections import Counter
 from typing import Callable
 
-from topomark.spec.errors import CheckFailure, Violation
 from topomark.spec.mapstate import MapDart, PartialMap
 from topomark.spec.signature import Signature, signature_at
 
 from topomark.reference.explorers.execution_trie import ExecutionTrie, TrieNode
+from topomark.reference.explorers.inconsistency import inconsistent
 
 __all__ = ["Record", "record_trie", "migrate", "graft"]
 
@@ -47,13 +50,13 @@ class Record:
         self.children: dict[int, Record] = {}
 
 
-def _contradiction(S: PartialMap, where: str, far: MapDart, sig: Signature,
-                   detail: str = "a perception contradicts the map") -> CheckFailure:
-    return CheckFailure(Violation("Enhancement-3 record", where, str(signature_at(S, far[0], far[1])), str(sig),
-                                  detail))
+def _contradiction(S: PartialMap, where: str, far: MapDart, sig: Signature, light,
+                   detail: str = "a perception contradicts the map") -> Exception:
+    return inconsistent(light, f"Enhancement-3 record at {where}: {detail} (perceived {sig}, the map has "
+                               f"{signature_at(S, far[0], far[1])})", "Lemma 1 (L548, L604)")
 
 
-def _absorb(S: PartialMap, T: dict, stats: Counter, dart: MapDart, node, keep: Callable) -> None:
+def _absorb(S: PartialMap, T: dict, stats: Counter, dart: MapDart, node, keep: Callable, light=None) -> None:
     """Route ``node``'s children (trie nodes or records) from map dart ``dart`` into S / T."""
     x, entry = dart
     for m, child in node.children.items():
@@ -63,8 +66,8 @@ def _absorb(S: PartialMap, T: dict, stats: Counter, dart: MapDart, node, keep: C
         far = S.arc(t)
         if far is not None:
             if signature_at(S, far[0], far[1]) != child.sig:
-                raise _contradiction(S, f"map dart {far}", far, child.sig)
-            _absorb(S, T, stats, far, child, keep)
+                raise _contradiction(S, f"map dart {far}", far, child.sig, light)
+            _absorb(S, T, stats, far, child, keep, light)
         else:
             rec = T.get(t)
             if rec is None:
@@ -84,28 +87,29 @@ def _merge(stats: Counter, rec: Record, node, keep: Callable) -> None:
         _merge(stats, sub, child, keep)
 
 
-def record_trie(S: PartialMap, T: dict, stats: Counter, trie: ExecutionTrie, root: MapDart, depth: float) -> None:
+def record_trie(S: PartialMap, T: dict, stats: Counter, trie: ExecutionTrie, root: MapDart, depth: float,
+                light=None) -> None:
     """Trace the iteration's trie from the validated (v_u, e) = ``root`` and store, to ``depth``, what lies
     beyond unexplored darts (Algorithm 4.3 lines 36–37; Algorithm 4.4 line 22, 4.5 line 23 with depth d)."""
 
     def keep(node: TrieNode) -> bool:
         return node.kind != "virtual" and node.depth <= depth
 
-    _absorb(S, T, stats, root, trie.root, keep)
+    _absorb(S, T, stats, root, trie.root, keep, light)
 
 
-def migrate(S: PartialMap, T: dict, stats: Counter, darts) -> None:
+def migrate(S: PartialMap, T: dict, stats: Counter, darts, light=None) -> None:
     """Records under darts that just became explored move to where those darts lead."""
     for dart in darts or ():
         rec = T.pop(dart, None)
         if rec is not None:
             far = S.arc(dart)
             if signature_at(S, far[0], far[1]) != rec.sig:
-                raise _contradiction(S, f"T[{dart}]", far, rec.sig, "a recorded perception contradicts the map")
-            _absorb(S, T, stats, far, rec, lambda _: True)
+                raise _contradiction(S, f"T[{dart}]", far, rec.sig, light, "a recorded perception contradicts the map")
+            _absorb(S, T, stats, far, rec, lambda _: True, light)
 
 
-def graft(T: dict, trie: ExecutionTrie, edge: MapDart) -> int:
+def graft(T: dict, trie: ExecutionTrie, edge: MapDart, light=None) -> int:
     """Perceptions recorded beyond e are perceptions of paths from v_u: add them to the trie before any motion.
 
     Returns how many nodes the trie gained.
@@ -114,6 +118,6 @@ def graft(T: dict, trie: ExecutionTrie, edge: MapDart) -> int:
     if rec is None:
         return 0
     if rec.sig != trie.root.sig:
-        raise CheckFailure(Violation("Enhancement-3 record", f"T[{edge}]", str(trie.root.sig), str(rec.sig),
-                                     "a recorded perception contradicts the robot's senses"))
+        raise inconsistent(light, f"Enhancement-3 record at T[{edge}]: the recorded perception {rec.sig} "
+                                  f"contradicts the robot's senses, {trie.root.sig}", "Lemma 1 (L548, L604)")
     return trie.graft(trie.root, rec)

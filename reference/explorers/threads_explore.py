@@ -72,7 +72,7 @@ from collections import Counter
 from dataclasses import dataclass, field
 from typing import Callable
 
-from topomark.spec.errors import AlgorithmFailed, CheckFailure, Violation
+from topomark.spec.errors import AlgorithmFailed, ExplorerFault
 from topomark.spec.kit import ThreadOp
 from topomark.spec.mapstate import MapDart
 from topomark.spec.signature import Signature, ThreadMark
@@ -110,6 +110,7 @@ class ThreadWalker(MapWalker):
 
     name = "thread"
     loop_check = "thread loop"
+    loop_proof = "the thread's closest-first validation (§6.3, L2046, L2055)"
 
     def __init__(self, robot, policies: Policies | None = None,
                  observer: Callable[[object, ThreadIteration], None] | None = None, options: dict | None = None):
@@ -267,9 +268,10 @@ class ThreadExplorer(ThreadWalker):
                 found = (w, next(iter(extra)))
                 break
         if found is None:
-            raise CheckFailure(Violation("thread search", f"iteration {it.number}", "v_u on the thread",
-                                         "no vertex with one more thread-marked edge",
-                                         "the explorer's own map is inconsistent"))
+            # v_u entered a thread-marked place, so it is on the thread, "the one that has one more thread-marked
+            # edge than it should have" (§6.3.2, L2055): not finding it is a bug, not an outcome.
+            raise ExplorerFault(f"thread search: no vertex on the thread has one more thread-marked edge at "
+                                f"iteration {it.number}, which L2055 rules out: a bug in the explorer")
         self.take()
         self.rewind()
         self.loop_augment(it, found)
@@ -321,8 +323,10 @@ class ThreadExplorer(ThreadWalker):
             if not self.S.unexplored:
                 return
             if not self.retie:
-                raise CheckFailure(Violation("thread stack", "Algorithm 6.7", "every vertex not fully explored on "
-                                             "the thread", "a vertex off it", "the explorer's own map is inconsistent"))
+                # "the closest-first exploration ensures that each visited vertex that is not fully explored yet
+                # has been marked with the thread" (Algorithm 6.7, L2046): a vertex off it is a bug.
+                raise ExplorerFault("thread stack: a vertex not fully explored is off the thread, which Algorithm 6.7 "
+                                    "rules out (L2046): a bug in the explorer")
             dist = bfs(self.S, self.position[0])[0]
             frontier = min((v for v in dist if self.open_exit(v) is not None), key=lambda v: (dist[v], v))
             self.walk_to(frontier, "travel")

@@ -52,7 +52,7 @@ Examples
 
 from __future__ import annotations
 
-from topomark.spec.errors import CheckFailure, Violation
+from topomark.spec.errors import ExplorerFault
 from topomark.spec.signature import Signature
 
 from topomark.reference.explorers.threads_explore import ThreadIteration, ThreadWalker
@@ -98,9 +98,10 @@ class KnotThreadExplorer(ThreadWalker):
 
     def check_knots(self, it: ThreadIteration, w: int, sig: Signature) -> None:
         if not (0 <= w < self.S.n and self.S.degree(w) == sig.degree and self.open_exit(w) is not None):
-            raise CheckFailure(Violation("thread knots", f"iteration {it.number}", "the knots of a known vertex "
-                                         "that is not fully explored", str(sig),
-                                         "the explorer's own map is inconsistent"))
+            # Each visited place carries its own knot count and every place not fully explored stays on the
+            # thread (§6.3.2, L2046, L2086): knots that name no such place are a bug, not an outcome.
+            raise ExplorerFault(f"thread knots: {sig} at iteration {it.number} names no known vertex that is not "
+                                "fully explored, which the knots rule out (§6.3.2, L2086): a bug in the explorer")
 
     def probe(self, it: ThreadIteration, w: int, sig: Signature) -> int:
         """L2086: over the lowest thread-marked exit p ≠ e to a known neighbour (its knots say which) and back;
@@ -110,8 +111,10 @@ class KnotThreadExplorer(ThreadWalker):
         t = seen.thread.knots - 1 if seen.thread is not None else -1
         back = [y for y, link in enumerate(self.S.links(t)) if link is not None and link[0] == w] if t >= 0 else []
         if len(back) != 1:
-            raise CheckFailure(Violation("thread probe", f"iteration {it.number}", f"a known neighbour of map vertex "
-                                         f"{w} by its knots", str(seen), "the explorer's own map is inconsistent"))
+            # "the other end vertex, which must be a known neighbor that is identified by its unique knot count"
+            # (L2086): anything else is a bug, not an outcome.
+            raise ExplorerFault(f"thread probe: {seen} at iteration {it.number} is no known neighbour of map vertex "
+                                f"{w} by its knots, which L2086 rules out: a bug in the explorer")
         x = self.S.arc((t, back[0]))[1]  # the probed edge's exit at w
         self.laid.append((w, x))
         self.position = (t, back[0])

@@ -29,7 +29,7 @@ Examples
 
 from __future__ import annotations
 
-from topomark.spec.errors import require
+from topomark.spec.errors import ExplorerFault
 from topomark.spec.mapstate import MapDart
 
 __all__ = ["TraversalMap"]
@@ -60,7 +60,9 @@ class TraversalMap:
     def add(self, v: int, exit_: int, degree: int) -> int:
         """Non-loop augmentation of TM (Algorithm 5.1 line 2): exit ``exit_`` of ``v`` leads to a new vertex of
         ``degree``, entered by its exit 0."""
-        require((v, exit_) == self.frontier(), f"TM grows in breadth-first order only, not by {(v, exit_)}")
+        if (v, exit_) != self.frontier():  # the BFS of L1356 is the explorer's own order: another is a bug
+            raise ExplorerFault(f"TM grows in breadth-first order only (L1356), not by {(v, exit_)}: a bug in the "
+                                "explorer")
         new = self.n
         self.degree.append(degree)
         self.parent.append((v, exit_))

@@ -40,11 +40,11 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Callable, Iterable
 
-from topomark.spec.errors import CheckFailure, Violation
 from topomark.spec.mapstate import MapDart, PartialMap
 from topomark.spec.signature import Signature
 
 from topomark.reference.explorers.policies import Policies, in_preorder, nearest, open_ends_beyond
+from topomark.reference.explorers.inconsistency import inconsistent
 
 __all__ = ["StepRecord", "ExplorerState", "MapWalker", "tree_path", "places_like"]
 
@@ -112,6 +112,7 @@ class MapWalker(ExplorerState):
     """One map S walked by the robot: start, termination, walking S, loop and non-loop augmentation."""
 
     loop_check = "loop augmentation"  # the check a loop augmentation that finds e' outside U names
+    loop_proof = "Lemma 1 (L548, L604)"  # what proves e' is in U (:meth:`not_in_u`)
 
     def __init__(self, robot, policies: Policies | None = None, observer: Callable | None = None):
         super().__init__(robot, observer)
@@ -178,9 +179,14 @@ class MapWalker(ExplorerState):
         it.kind, it.joined = "loop", (it.edge, far)
 
     def not_in_u(self, it, far: MapDart) -> Exception:
-        """What a loop augmentation raises when e' is not in U: the explorer's own map is inconsistent."""
-        return CheckFailure(Violation(self.loop_check, f"iteration {it.number}", f"e' = {far} in U", "not in U",
-                                      "the explorer's own map is inconsistent"))
+        """What a loop augmentation raises when e' is not in U: the explorer's own map is inconsistent.
+
+        With a lighthouse of explicit place and back-link an accepted hypothesis is the true place and entry
+        (Lemma 1, L548; §3.3, L604), and Dudek's marker always leads back (L150): a bug.  With a lighthouse
+        that is not explicit the thesis predicts it, a wrong loop closing (L1346): the ``failed`` outcome.
+        """
+        return inconsistent(getattr(self, "lighthouse", None), f"{self.loop_check}: e' = {far} identified at "
+                            f"iteration {it.number} is not in U", self.loop_proof)
 
     def non_loop_augment(self, it, sig: Signature, heading: int = 0, sensed: bool = False) -> int:
         """Add v_u (``sig``'s degree) and e, e its exit 0, the rest numbered clockwise and added to U (lines

@@ -32,8 +32,8 @@ from types import SimpleNamespace
 from dataclasses import dataclass, field
 from typing import Any, Sequence
 
-from topomark.spec.errors import (AlgorithmStopped, CheckFailure, InvalidInput, OutOfMarkers, TopomarkFault,
-                                  Violation, clip)
+from topomark.spec.errors import (AlgorithmStopped, CheckFailure, ExplorerFault, InvalidInput, OutOfMarkers,
+                                  TopomarkFault, Violation, clip)
 from topomark.spec.kit import Kit, MarkerOp
 from topomark.spec.signature import Signature
 from topomark.spec.world import World
@@ -181,7 +181,8 @@ def drive(command: Sequence[str], policies: Policies | None = None, world: World
             result = DriveResult("fail", exc.kind, str(exc), link.cost)
         except (AlgorithmStopped, OutOfMarkers) as stop:  # an outcome, as under explore: no map, FAIL, exit 1
             result = DriveResult("fail", stop.outcome, f"the algorithm stopped: {stop.reason}", link.cost)
-        except (CheckFailure, InvalidInput, LookupError) as exc:  # the explorer's map cannot be a world
+        # the explorer's map cannot be a world: what the thesis proves of any world (ExplorerFault) fails here
+        except (CheckFailure, ExplorerFault, InvalidInput, LookupError) as exc:
             result = DriveResult("fail", "inconsistent", "the provider's answers are inconsistent with any "
                                  f"world: {exc}", link.cost)
     result.message = clip(result.message, MAX_MESSAGE)
