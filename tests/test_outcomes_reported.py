@@ -101,3 +101,20 @@ def test_an_inconsistency_is_a_failure_or_a_fault_by_the_lighthouse():
     assert isinstance(inconsistent(LIGHTHOUSES["local-pair"], "x", "Lemma 1"), AlgorithmFailed)
     assert isinstance(inconsistent(LIGHTHOUSES["directional-vertex"], "x", "Lemma 1"), ExplorerFault)
     assert isinstance(inconsistent(None, "x", "Lemma 1"), ExplorerFault)
+
+
+@pytest.mark.parametrize("light, code, words", [
+    ("directional-vertex", 3, "Lemma 1"),  # explicit place and back-link: e' outside U is a bug
+    ("local-pair", 1, "L1346"),  # not explicit: the thesis predicts a wrong loop closing, the failed outcome
+])
+def test_e_prime_outside_u_is_a_bug_or_a_failure_by_the_lighthouse(capsys, monkeypatch, light, code, words):
+    from types import SimpleNamespace
+    from topomark.reference.explorers.algorithm31 import LighthouseExplorer
+
+    def broken(self):
+        raise self.not_in_u(SimpleNamespace(number=1), (0, 9))
+
+    monkeypatch.setattr(LighthouseExplorer, "step", broken)
+    got, out, err = run(capsys, "explore", "lattice-hole:rows=4,cols=5,seed=3", "--lighthouse", light, "--quiet")
+    assert got == code and words in out + err, (out, err)
+    assert ("internal fault" in err) == (code == 3) and "check failed" not in out + err

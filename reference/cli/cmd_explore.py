@@ -185,7 +185,7 @@ def explore_command(args) -> int:
             print(f"no map written to {args.map}: {unwritten}")
     if outcome.violation is not None and args.json:
         print(f"topomark: check failed: {outcome.violation}", file=sys.stderr)
-    if outcome.violation is not None:  # even unchecked: the explorer's own map refused what it found
+    if outcome.violation is not None:  # even unchecked: the simulator refused an operation the robot tried
         return 1
     return 0 if outcome.outcome == "correct" or (args.no_check and outcome.claimed == "correct") else 1
 

@@ -8,7 +8,7 @@ Two cases, told apart by the thesis:
   closing) and thus cannot proceed reporting failure" (L1346): :class:`~topomark.spec.errors.AlgorithmFailed`,
   the outcome ``failed`` (exit 1);
 * the thesis *proves* it cannot happen — with a lighthouse of explicit place and back-link, an accepted
-  hypothesis is the true place and entry (§3.3, Lemma 1, L548, L604): :class:`~topomark.spec.errors.ExplorerFault`,
+  hypothesis is the true place and entry (§3.4, Lemma 1, L548, L604): :class:`~topomark.spec.errors.ExplorerFault`,
   a bug (exit 3).
 """
 

@@ -198,7 +198,7 @@ class MovableMarkerExplorer(MapWalker):
                 break
             self.robot.move(0, "probe")
             self.position = (x, j)
-        # "One of the (unexplored) edges e' will take the robot back to v_k, which the robot will immediately
+        # "One of the (unexplored) edges e' will take the robot back to v_k , which the robot will immediately
         # recognize due to the presence of the marker" (§2.3.1, L150): not finding it is a bug, not an outcome.
         raise ExplorerFault(f"Dudek back-link: the marker at v_k = {vk} is beyond none of {open_exits} at "
                             f"v_k' = {x} (iteration {it.number}), which §2.3.1 (L150) rules out: a bug in the "

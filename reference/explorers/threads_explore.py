@@ -110,7 +110,7 @@ class ThreadWalker(MapWalker):
 
     name = "thread"
     loop_check = "thread loop"
-    loop_proof = "the thread's closest-first validation (§6.3, L2046, L2055)"
+    loop_proof = "the thread's closest-first validation (§6.3.2, L2046, L2055)"
 
     def __init__(self, robot, policies: Policies | None = None,
                  observer: Callable[[object, ThreadIteration], None] | None = None, options: dict | None = None):

@@ -182,7 +182,7 @@ class MapWalker(ExplorerState):
         """What a loop augmentation raises when e' is not in U: the explorer's own map is inconsistent.
 
         With a lighthouse of explicit place and back-link an accepted hypothesis is the true place and entry
-        (Lemma 1, L548; §3.3, L604), and Dudek's marker always leads back (L150): a bug.  With a lighthouse
+        (§3.4: Lemma 1, L548; L604), and Dudek's marker always leads back (L150): a bug.  With a lighthouse
         that is not explicit the thesis predicts it, a wrong loop closing (L1346): the ``failed`` outcome.
         """
         return inconsistent(getattr(self, "lighthouse", None), f"{self.loop_check}: e' = {far} identified at "
