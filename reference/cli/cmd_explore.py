@@ -27,7 +27,8 @@ def register(sub) -> None:
         "explore", help="explore a world with every invariant checked after every step",
         description="Explore WORLD (a world file or GENERATOR[:NAME=VALUE,...]; default: a built-in 5x5 lattice "
                     "with 2 cells removed) and verify the map. Exit 0 when the map is verified isomorphic, 1 on an "
-                    "invariant violation, 2 on bad input.")
+                    "invariant violation or when the algorithm stops without a map (outcome failed or limit), "
+                    "2 on bad input.")
     p.add_argument("world", nargs="?", metavar="WORLD_OR_GENERATOR")
     p.add_argument("--algorithm", default="basic", help=f"one of: {', '.join(REGISTRY)} (default basic; "
                                                           "topomark algorithms lists them)")
@@ -54,7 +55,8 @@ def register(sub) -> None:
                    help="how I-1/I-2 are evaluated each iteration: per journalled change (default), from scratch, "
                         "or both (they must agree); the final verdict is always from scratch")
     p.add_argument("--trace", metavar="FILE", help="write the JSON Lines trace here")
-    p.add_argument("--map", metavar="FILE", help="write the final map (world format, marker included)")
+    p.add_argument("--map", metavar="FILE", help="write the final map (world format, marker included); a run that stops without a map "
+                                            "writes none and says so")
     p.add_argument("--models", metavar="DIR", help="write every completed model as a world file, in completion order "
                                                    "(model-0001.json, ...; algorithms that keep models: model-tree)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
