@@ -11,7 +11,8 @@ from topomark.spec.errors import InvalidInput
 from topomark.spec.worldfile import dumps_world
 
 from topomark.reference.run.explore import check_run, explore
-from topomark.reference.explorers.lighthouses import LIGHTHOUSES, configured
+from topomark.reference.explorers.lighthouses import (LIGHTHOUSES, MAX_NEIGHBOURHOOD, MAX_THRESHOLD, MAX_WALK_LIMIT,
+                                                     configured)
 from topomark.reference.algorithms.registry import REGISTRY, algorithm_spec, parameters
 from topomark.reference.worlds.generators import DEFAULT_WORLD
 from topomark.reference.files.outputs import check_output, check_output_dir, guarded, write_output
@@ -44,11 +45,13 @@ def register(sub) -> None:
     p.add_argument("--seed", type=int, help="seed for a random generator; with a searched lighthouse "
                                             "(undirected-vertex, undirected-edge) the seed of its random walk")
     p.add_argument("--walk-limit", metavar="N", help="a searched lighthouse gives up after N walk steps (default 200, "
-                                                     "§5.1's threshold)")
-    p.add_argument("--neighbourhood", metavar="D", help="undirected-vertex: test the neighbours' views to distance D "
-                                                        "(default 1, §5.1)")
+                                                     f"§5.1's threshold; at most {MAX_WALK_LIMIT:,})")
+    p.add_argument("--neighbourhood", metavar="D", help="undirected-vertex, local-degree-list: test the neighbours' "
+                                                        "views to distance D (default 1, §5.1; at most "
+                                                        f"{MAX_NEIGHBOURHOOD}: the work grows exponentially with D)")
     p.add_argument("--threshold", metavar="N", help="local-pair, local-degree-list: the least-seen candidate must "
-                                                    "be seen fewer than N times (default: the walk's observations, §5.2.1)")
+                                                    "be seen fewer than N times (default: the walk's observations, "
+                                                    f"§5.2.1; at most {MAX_THRESHOLD:,})")
     p.add_argument("--no-check", action="store_true", help="skip the per-iteration checks (faster)")
     p.add_argument("--check-mode", default="incremental", choices=("incremental", "full", "both"),
                    help="how I-1/I-2 are evaluated each iteration: per journalled change (default), from scratch, "

@@ -1,0 +1,73 @@
+"""Hostile input, second round: option values that size work or memory, kit counts, generated worlds, and the
+text of ``explore`` (exit 2 with one message naming the option and the value, never a traceback or a hang).
+
+Each case runs the CLI in this process (``main``) and reads stderr; none asserts a speed.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from topomark.reference.algorithms.registrations.model_tree import MAX_MODELS, MAX_STEPS
+from topomark.reference.cli.main import main
+from topomark.reference.explorers.lighthouses import (LIGHTHOUSES, MAX_NEIGHBOURHOOD, MAX_THRESHOLD,
+                                                      MAX_WALK_LIMIT)
+from topomark.spec.errors import InvalidInput
+
+DIGITS_5000 = "9" * 5000
+
+
+def refused(capsys, argv: list[str], *words: str) -> str:
+    """Run ``topomark argv``; it must exit 2 with one ``topomark: error:`` line holding every word."""
+    assert main(argv) == 2
+    err = capsys.readouterr().err.strip()
+    assert "Traceback" not in err and len(err.splitlines()) == 1, err[-2000:]
+    assert err.startswith("topomark: error: "), err
+    for w in words:
+        assert w in err, (w, err)
+    assert len(err) < 400, err
+    return err
+
+
+# -- 1: options that size work or memory have caps ---------------------------------------------------------
+@pytest.mark.parametrize("light, option, value, words", [
+    ("undirected-vertex", "--walk-limit", DIGITS_5000, ("--walk-limit", f"{MAX_WALK_LIMIT:,}", "99999")),
+    ("undirected-vertex", "--neighbourhood", DIGITS_5000, ("--neighbourhood", f"{MAX_NEIGHBOURHOOD}", "99999")),
+    ("undirected-vertex", "--walk-limit", "-" + DIGITS_5000, ("--walk-limit", "at least 1")),
+    ("local-pair", "--walk-limit", "100000000", ("--walk-limit", f"{MAX_WALK_LIMIT:,}", "100000000")),
+    ("local-degree-list", "--walk-limit", "100000000", ("--walk-limit", "100000000")),
+    ("undirected-vertex", "--neighbourhood", "100", ("--neighbourhood", "at most 8", "got 100")),
+    ("local-degree-list", "--neighbourhood", "1000000000", ("--neighbourhood", "1000000000")),
+    ("local-pair", "--threshold", str(MAX_THRESHOLD + 1), ("--threshold", f"{MAX_THRESHOLD:,}")),
+    ("local-pair", "--threshold", DIGITS_5000, ("--threshold", "characters")),
+])
+def test_lighthouse_option_caps(capsys, light, option, value, words):
+    refused(capsys, ["explore", "lattice:rows=4,cols=4", "--lighthouse", light, option, value, "--quiet"], *words)
+
+
+def test_lighthouse_caps_accept_their_own_value():
+    light = LIGHTHOUSES["local-degree-list"].with_options(walk_limit=MAX_WALK_LIMIT, neighbourhood=MAX_NEIGHBOURHOOD,
+                                                          threshold=MAX_THRESHOLD)
+    assert (light.walk_limit, light.neighbourhood, light.threshold) == (MAX_WALK_LIMIT, MAX_NEIGHBOURHOOD,
+                                                                        MAX_THRESHOLD)
+    with pytest.raises(InvalidInput, match="--walk-limit must be at most"):
+        light.with_options(walk_limit=MAX_WALK_LIMIT + 1)
+
+
+@pytest.mark.parametrize("option, value, words", [
+    ("--max-models", str(MAX_MODELS + 1), ("--max-models", f"{MAX_MODELS:,}", str(MAX_MODELS + 1))),
+    ("--max-models", "1000000000000000000", ("--max-models", f"{MAX_MODELS:,}")),
+    ("--max-steps", str(10 ** 18 - 1), ("--max-steps", f"{MAX_STEPS:,}", str(10 ** 18 - 1))),
+    ("--max-steps", DIGITS_5000, ("--max-steps", f"{MAX_STEPS:,}", "characters")),
+])
+def test_model_tree_caps(capsys, option, value, words):
+    refused(capsys, ["explore", "cycle:n=4", "--algorithm", "model-tree", option, value, "--quiet"], *words)
+
+
+def test_help_states_the_caps(capsys):
+    with pytest.raises(SystemExit):
+        main(["explore", "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    for cap in (f"at most {MAX_WALK_LIMIT:,}", f"at most {MAX_NEIGHBOURHOOD}", f"at most {MAX_THRESHOLD:,}",
+                f"at most {MAX_MODELS:,}", f"at most {MAX_STEPS:,}"):
+        assert cap in text, cap
