@@ -13,6 +13,7 @@ from topomark.reference.cli.main import main
 from topomark.reference.explorers.lighthouses import (LIGHTHOUSES, MAX_NEIGHBOURHOOD, MAX_THRESHOLD,
                                                       MAX_WALK_LIMIT)
 from topomark.spec.errors import InvalidInput
+from topomark.spec.kit import Kit
 
 DIGITS_5000 = "9" * 5000
 
@@ -71,3 +72,33 @@ def test_help_states_the_caps(capsys):
     for cap in (f"at most {MAX_WALK_LIMIT:,}", f"at most {MAX_NEIGHBOURHOOD}", f"at most {MAX_THRESHOLD:,}",
                 f"at most {MAX_MODELS:,}", f"at most {MAX_STEPS:,}"):
         assert cap in text, cap
+
+
+# -- 2: --kit counts are integers, not booleans; a key named twice is refused ------------------------------
+@pytest.mark.parametrize("kit, words", [
+    ('{"thread": true}', ("--kit", "thread length must be a non-negative integer", "True")),
+    ('{"thread": false}', ("--kit", "thread length", "False")),
+    ('{"undirected-edge": true}', ("--kit", "edge markers must be a non-negative integer", "True")),
+    ('{"directional-vertex": true}', ("--kit", "vertex markers", "True")),
+    ('{"undirected-either": true, "undirected-edge": 1}', ("--kit", "either markers", "True")),
+    ('{"undirected-edge": 1, "undirected-edge": 3}', ("--kit", "duplicate key 'undirected-edge'")),
+    ('{"thread": 0, "thread": 0}', ("--kit", "duplicate key 'thread'")),
+    ('{"directional-edge": 1, "movable": true, "movable": false}', ("--kit", "duplicate key 'movable'")),
+    ('{"' + "k" * 5000 + '": 1}', ("--kit", "unknown key", "characters")),
+])
+def test_kit_refusals(capsys, kit, words):
+    refused(capsys, ["run-external", "cycle:n=4", "--kit", kit, "--", "true"], *words)
+
+
+@pytest.mark.parametrize("obj", [{"thread": True}, {"undirected-vertex": False}, {"undirected-either": True}])
+def test_kit_from_json_refuses_booleans_for_every_kind(obj):
+    """The same parser reads a provider's hello.kit (protocol@2) and a trace header's kit."""
+    with pytest.raises(InvalidInput, match="must be a non-negative integer"):
+        Kit.from_json(obj)
+
+
+def test_world_files_still_refuse_duplicate_keys(tmp_path, capsys):
+    path = tmp_path / "w.json"
+    path.write_text('{"format": "topomark/world@1", "rotation": {"a": ["b"], "b": ["a"]}, '
+                    '"rotation": {"a": ["b"], "b": ["a"]}}')
+    refused(capsys, ["explore", str(path), "--quiet"], str(path), "duplicate key 'rotation'")
