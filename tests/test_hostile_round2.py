@@ -127,3 +127,29 @@ def test_figure_3_4_wheel_says_what_to_do(tmp_path, capsys):
              for where in (str(path), "wheel-a")]
     assert texts[0] == texts[1]
     refused(capsys, ["world", "wheel-a:marker=sideways"], "marker must be one of undirected, directional, none")
+
+
+# -- 4, 5: the text report's bound and hypothesis rows say what they count ------------------------------------
+def test_an_asymptotic_bound_is_not_reported_as_none(capsys):
+    """case-3b states O(m) (``topomark algorithms``): no constant, so no run is held to it — not "none stated"."""
+    assert main(["explore", "lattice:rows=3,cols=3", "--algorithm", "case-3b", "--quiet"]) == 0
+    row = next(line for line in capsys.readouterr().out.splitlines() if line.startswith("cost bound"))
+    assert "O(m)" in row and "asymptotic" in row and "none stated" not in row
+    assert main(["explore", "cycle:n=4", "--algorithm", "model-tree", "--max-steps", "12", "--quiet"]) in (0, 1)
+    row = next(line for line in capsys.readouterr().out.splitlines() if line.startswith("cost bound"))
+    assert "none stated in the thesis" in row
+
+
+def test_the_hypothesis_counts_add_up(capsys):
+    """Rejected + confirmed + untested (never walked: a confirmation ends the test of H) = all hypotheses."""
+    assert main(["explore", "lattice:rows=5,cols=5", "--quiet"]) == 0
+    out = capsys.readouterr().out
+    row = next(line for line in out.splitlines() if line.startswith("hypotheses"))
+    assert "(rejected / confirmed / untested)" in row
+    total, rest = row.split(")", 1)[1].split("(", 1)
+    rejected, confirmed, untested = (int(x) for x in rest.split(";")[0].split(" / "))
+    assert int(total) == rejected + confirmed + untested and untested > 0
+    assert main(["explore", "lattice:rows=5,cols=5", "--quiet", "--json"]) == 0
+    data = __import__("json").loads(capsys.readouterr().out)
+    assert (data["hypotheses"], data["hypotheses_rejected"], data["hypotheses_confirmed"]) == (
+        int(total), rejected, confirmed)

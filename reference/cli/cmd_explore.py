@@ -117,21 +117,35 @@ class _Progress:
         self.stream.flush()
 
 
-def _table(o, started: float, lighthouse: bool = True) -> str:
+def _bound_text(o, stated: str | None) -> str:
+    """The cost bound row: the bound on this world when one can be evaluated; else the registry's statement
+    (an O(·) bound has no constant, so no run can be held to it) or that the thesis states none."""
+    if o.upper_bound is not None:
+        return str(o.upper_bound)
+    return f"{stated} (asymptotic: not checked per run)" if stated else "none stated in the thesis"
+
+
+def _untested(o) -> int:
+    """The hypotheses never walked: Algorithm 3.1 tests H in turn and a confirmed one (case 3) "exit[s] the inner
+    'while' loop" (line 20, L579), so the ones left in H stay untested; the others are rejected (cases 1, 2)."""
+    return o.hypotheses - o.hypotheses_rejected - o.hypotheses_confirmed
+
+
+def _table(o, started: float, lighthouse: bool = True, stated: str | None = None) -> str:
     """The report's table; a kit algorithm's has its steps and its own counts where Algorithm 3.1's has
-    iterations and hypotheses."""
+    iterations and hypotheses.  ``stated`` is the registry's cost bound, in words."""
     rows = [
         ("n", o.n), ("m", o.m), ("cost (edge traversals)", o.cost), ("cost / m", f"{o.cost / o.m:.2f}"),
-        ("upper bound (3.1)+(3.2)" if lighthouse else "cost bound (registry)",
-         o.upper_bound if o.upper_bound is not None else "none stated"),
+        ("upper bound (3.1)+(3.2)" if lighthouse else "cost bound (registry)", _bound_text(o, stated)),
         *((f"  {purpose}", count) for purpose, count in o.by_purpose.items()),
         ("marker operations (not cost, §3.1.2)",
          ", ".join(f"{op.replace('_', ' ')}: {n}" for op, n in o.marker_operations.items()) or "none"),
     ]
     if lighthouse:
         rows += [("iterations (non-loop + loop)", f"{o.iterations} ({o.nonloop_iterations} + {o.loop_iterations})"),
-                 ("hypotheses (rejected / confirmed)",
-                  f"{o.hypotheses} ({o.hypotheses_rejected} / {o.hypotheses_confirmed})")]
+                 ("hypotheses (rejected / confirmed / untested)",
+                  f"{o.hypotheses} ({o.hypotheses_rejected} / {o.hypotheses_confirmed} / {_untested(o)}; untested: "
+                  "not walked, a confirmation exits the test of H, Algorithm 3.1 line 20)")]
     else:
         rows += [("steps", o.iterations), *((key.replace("_", " "), value) for key, value in o.extra.items())]
     rows += [("outcome (claimed / judged)", f"{o.claimed} / {o.outcome}"), ("checks passed", o.checks),
@@ -197,7 +211,7 @@ def _print_report(args, spec, label: str, policies, outcome, started: float, tai
     setup = f"lighthouse {outcome.lighthouse}" if spec.uses_lighthouse else f"kit: {outcome.kit}"
     print(f"explored {label} with {spec.thesis} ({args.algorithm}; {setup}; policies "
           + ", ".join(f"{k}={v}" for k, v in policies.to_json().items()) + ")")
-    print(_table(outcome, started, spec.uses_lighthouse))
+    print(_table(outcome, started, spec.uses_lighthouse, spec.bound))
     if outcome.violation is not None:
         print(f"VIOLATION: {outcome.violation}")
         print("the trace up to that point (last events; --trace FILE keeps all of it):")
