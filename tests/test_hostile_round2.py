@@ -153,3 +153,8 @@ def test_the_hypothesis_counts_add_up(capsys):
     data = __import__("json").loads(capsys.readouterr().out)
     assert (data["hypotheses"], data["hypotheses_rejected"], data["hypotheses_confirmed"]) == (
         int(total), rejected, confirmed)
+
+
+@pytest.mark.parametrize("command", [["explore", "cycle:n=4"], ["world", "random"]])
+def test_a_huge_seed_is_refused_with_its_value_clipped(capsys, command):
+    refused(capsys, [*command, "--seed", DIGITS_5000], "--seed", "at most 18 digits", "(5,000 characters)")

@@ -7,6 +7,7 @@ import json
 import sys
 import time
 
+from topomark.reference.cli.args import seed as seed_option
 from topomark.spec.errors import InvalidInput
 from topomark.spec.worldfile import dumps_world
 
@@ -42,7 +43,7 @@ def register(sub) -> None:
     p.add_argument("--policy", action="append", default=[], metavar="KIND=NAME",
                    help=f"edge={'|'.join(EDGE_POLICIES)}, hypothesis={'|'.join(HYPOTHESIS_POLICIES)}, "
                         f"path={'|'.join(PATH_POLICIES)}; a bare NAME sets the edge policy (repeatable)")
-    p.add_argument("--seed", type=int, help="seed for a random generator; with a searched lighthouse "
+    p.add_argument("--seed", type=seed_option, help="seed for a random generator; with a searched lighthouse "
                                             "(undirected-vertex, undirected-edge) the seed of its random walk")
     p.add_argument("--walk-limit", metavar="N", help="a searched lighthouse gives up after N walk steps (default 200, "
                                                      f"§5.1's threshold; at most {MAX_WALK_LIMIT:,})")

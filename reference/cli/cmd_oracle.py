@@ -19,6 +19,7 @@ from topomark.spec.worldfile import load_world, save_world
 from topomark.reference.oracle import conformance
 from topomark.reference.cli.parser import Parser, emit
 from topomark.reference.cli.args import check_count, check_seconds
+from topomark.reference.cli.args import seed as seed_option
 from topomark.reference.cli.cmd_explore import parse_policies
 from topomark.reference.oracle.drive import drive
 from topomark.reference.trace.records import dump_trace
@@ -50,7 +51,7 @@ def _command(args) -> list[str]:
 def _run_options(p) -> None:
     _limits(p)
     _protocol_options(p)
-    p.add_argument("--seed", type=int, help="seed for a random generator")
+    p.add_argument("--seed", type=seed_option, help="seed for a random generator")
     p.add_argument("--map", metavar="FILE", help="write the program's map here")
     p.add_argument("--json", action="store_true")
 
