@@ -8,10 +8,12 @@ the marker the thesis places on them, and a start.
 
 from __future__ import annotations
 
+from topomark.spec.errors import InvalidInput, clip
 from topomark.spec.marker import VertexMarker
 from topomark.spec.world import Start, World
 
-__all__ = ["WHEEL_A_ROTATION", "WHEEL_B_ROTATION", "wheel_pair", "wheel_pair_directional", "wheel_a", "wheel_b"]
+__all__ = ["WHEEL_A_ROTATION", "WHEEL_B_ROTATION", "WHEEL_MARKERS", "wheel_pair", "wheel_pair_directional", "wheel_a",
+           "wheel_b"]
 
 
 WHEEL_A_ROTATION: dict[str, tuple[str, ...]] = {
@@ -92,12 +94,27 @@ def wheel_pair_directional() -> tuple[World, World]:
     return World(WHEEL_A_ROTATION, marker, start), World(WHEEL_B_ROTATION, marker, start)
 
 
-def wheel_a() -> World:
-    """Figure 3.4(a), the planar wheel with an undirected marker at v0 (see :func:`wheel_pair`)."""
-    return wheel_pair()[0]
+WHEEL_MARKERS = ("undirected", "directional", "none")
+"""The marker a wheel world carries at v0: Figure 3.4's undirected one (§3.2.2: the pair a robot with it cannot
+tell apart), Figure 3.6's directional one pointing at the faced corner (§3.3: the marker Algorithm 3.1 drops, so
+``topomark explore`` with its default lighthouse accepts the world), or none (every lighthouse drops its own)."""
 
 
-def wheel_b() -> World:
-    """Figure 3.4(b), the twisted wheel with an undirected marker at v0 (see :func:`wheel_pair`)."""
-    return wheel_pair()[1]
+def _marked(index: int, marker: str) -> World:
+    if marker not in WHEEL_MARKERS:
+        raise InvalidInput(f"wheel: marker must be one of {', '.join(WHEEL_MARKERS)}, got {clip(repr(marker), 60)}")
+    world = (wheel_pair_directional() if marker == "directional" else wheel_pair())[index]
+    return world.with_markers([]) if marker == "none" else world
+
+
+def wheel_a(marker: str = "undirected") -> World:
+    """Figure 3.4(a), the planar wheel with an undirected marker at v0 (see :func:`wheel_pair`); ``marker``
+    "directional" gives Figure 3.6's left wheel, "none" the bare wheel (:data:`WHEEL_MARKERS`)."""
+    return _marked(0, marker)
+
+
+def wheel_b(marker: str = "undirected") -> World:
+    """Figure 3.4(b), the twisted wheel with an undirected marker at v0 (see :func:`wheel_pair`); ``marker`` as
+    for :func:`wheel_a`."""
+    return _marked(1, marker)
 

@@ -45,8 +45,8 @@ from typing import Any, BinaryIO, Callable
 
 from topomark.spec.errors import InvalidInput, clip
 
-__all__ = ["MAX_DEPTH", "MAX_INT_DIGITS", "MAX_FILE_BYTES", "parse_json", "check_depth", "open_regular_file",
-           "read_text_file"]
+__all__ = ["MAX_DEPTH", "MAX_INT_DIGITS", "MAX_FILE_BYTES", "parse_json", "no_duplicate_keys", "check_depth",
+           "open_regular_file", "read_text_file"]
 
 MAX_DEPTH = 64
 MAX_INT_DIGITS = 18
@@ -78,6 +78,23 @@ def check_depth(obj: Any, limit: int = MAX_DEPTH) -> bool:
                 return False
             stack.extend((x, depth + 1) for x in (item.values() if isinstance(item, dict) else item))
     return True
+
+
+def no_duplicate_keys(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
+    """An ``object_pairs_hook`` for :func:`parse_json` that refuses an object naming a key twice (JSON allows it
+    and :func:`json.loads` keeps the last, silently dropping the first): world files, ``--kit``.
+
+    >>> parse_json('{"thread": 1, "thread": 2}', "--kit", object_pairs_hook=no_duplicate_keys)
+    Traceback (most recent call last):
+    ...
+    topomark.spec.errors.InvalidInput: --kit: duplicate key 'thread' in a JSON object
+    """
+    seen: dict[str, Any] = {}
+    for key, value in pairs:
+        if key in seen:
+            raise InvalidInput(f"duplicate key {clip(key, 60, quote=True)} in a JSON object")
+        seen[key] = value
+    return seen
 
 
 def parse_json(text: str, source: str, error: type[InvalidInput] = InvalidInput,

@@ -56,7 +56,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
-from topomark.spec.errors import InvalidInput
+from topomark.spec.errors import InvalidInput, clip
 
 __all__ = ["Kit", "MarkerOp", "ThreadOp", "THREAD_OPS"]
 
@@ -84,9 +84,10 @@ class Kit:
         for name in ("vertex", "edge", "either"):
             value = getattr(self, name)
             if not isinstance(value, int) or isinstance(value, bool) or value < 0:
-                raise InvalidInput(f"kit: {name} markers must be a non-negative integer, got {value!r}")
-        if self.thread is not None and (not isinstance(self.thread, int) or self.thread < 0):
-            raise InvalidInput(f"kit: thread length must be a non-negative integer, got {self.thread!r}")
+                raise InvalidInput(f"kit: {name} markers must be a non-negative integer, got {clip(repr(value), 60)}")
+        thread = self.thread  # bool is an int subclass: true is no length
+        if thread is not None and (not isinstance(thread, int) or isinstance(thread, bool) or thread < 0):
+            raise InvalidInput(f"kit: thread length must be a non-negative integer, got {clip(repr(thread), 60)}")
         if self.movable and self.either:
             raise InvalidInput("kit: vertex-or-edge markers cannot be movable (no thesis algorithm picks a pooled "
                                "marker up; §2.3.1's movable marker is a single one)")
@@ -144,7 +145,7 @@ class Kit:
     def from_json(cls, obj: Any) -> "Kit":
         """Inverse of :meth:`to_json`; anything else is :class:`InvalidInput` naming the key."""
         if not isinstance(obj, dict):
-            raise InvalidInput(f"kit must be an object, got {obj!r}")
+            raise InvalidInput(f"kit must be an object, got {clip(repr(obj), 60)}")
         counts: dict[str, int] = {}
         words = set()
         for key, value in obj.items():
@@ -152,14 +153,14 @@ class Kit:
             if key in ("movable", "thread"):
                 continue
             if word not in ("directional", "undirected") or kind not in ("vertex", "edge", "either"):
-                raise InvalidInput(f"kit: unknown key {key!r}")
+                raise InvalidInput(f"kit: unknown key {clip(key, 60, quote=True)}")
             words.add(word)
             counts[kind] = value
         if len(words) > 1:
             raise InvalidInput("kit: directional and undirected markers cannot be mixed")
         movable = obj.get("movable", False)
         if not isinstance(movable, bool):
-            raise InvalidInput(f"kit: movable must be true or false, got {movable!r}")
+            raise InvalidInput(f"kit: movable must be true or false, got {clip(repr(movable), 60)}")
         return cls(counts.get("vertex", 0), counts.get("edge", 0), words == {"directional"}, movable,
                    obj.get("thread"), counts.get("either", 0))
 

@@ -57,7 +57,7 @@ from pathlib import Path
 from typing import Any
 
 from topomark.spec.errors import InvalidWorld
-from topomark.spec.jsontext import parse_json, read_text_file
+from topomark.spec.jsontext import no_duplicate_keys, parse_json, read_text_file
 from topomark.spec.errors import InvalidInput, clip
 from topomark.spec.marker import EdgeMarker, VertexMarker
 from topomark.spec.thread import Thread, ThreadedWorld
@@ -81,15 +81,6 @@ parsing 256 MiB of JSON into Python objects needs a few GB, while the general
 def schema() -> dict[str, Any]:
     """The published JSON Schema of the world format."""
     return json.loads(resources.files(__package__).joinpath("world.schema.json").read_text())
-
-
-def _no_duplicates(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
-    seen: dict[str, Any] = {}
-    for key, value in pairs:
-        if key in seen:
-            raise InvalidWorld(f"duplicate key {key!r} in a JSON object")
-        seen[key] = value
-    return seen
 
 
 def _expect(cond: bool, message: str) -> None:
@@ -220,7 +211,7 @@ def marker_to_json(m) -> dict[str, Any]:
 def loads_world(text: str, source: str = "<string>") -> World:
     """Parse a world from JSON text within the limits of :func:`~topomark.spec.jsontext.parse_json`;
     errors are prefixed with ``source``."""
-    obj = parse_json(text, source, InvalidWorld, object_pairs_hook=_no_duplicates)
+    obj = parse_json(text, source, InvalidWorld, object_pairs_hook=no_duplicate_keys)
     try:
         return world_from_json(obj)
     except InvalidWorld as exc:

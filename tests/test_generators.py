@@ -432,7 +432,7 @@ def test_generate_errors():
         g.generate("torus")
     with pytest.raises(InvalidInput, match=r"no parameter 'size'.*accepted: rows, cols"):
         g.generate("lattice", size=3)
-    with pytest.raises(InvalidInput, match=r"no parameter 'n'.*accepted: none"):
+    with pytest.raises(InvalidInput, match=r"no parameter 'n'.*accepted: marker"):
         g.generate("wheel-a", n=3)
     with pytest.raises(InvalidInput, match="parameter n must be int"):
         g.generate("cycle", n="three")

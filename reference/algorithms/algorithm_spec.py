@@ -41,7 +41,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, Callable
 
-from topomark.spec.errors import InvalidInput
+from topomark.spec.errors import InvalidInput, clip
 from topomark.spec.kit import Kit
 
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES
@@ -79,27 +79,34 @@ L417): the movable marker (§2.3.1) and thread (§6.3) algorithms."""
 
 @dataclass(frozen=True)
 class Parameter:
-    """An option of a kit algorithm (``topomark explore --NAME VALUE``): an integer ≥ ``minimum`` unless
-    ``choices`` names the allowed words."""
+    """An option of a kit algorithm (``topomark explore --NAME VALUE``): an integer ≥ ``minimum`` (and ≤
+    ``maximum`` when one is given: an option that sizes work or memory) unless ``choices`` names the allowed
+    words."""
 
     name: str
     help: str
     default: Any = None
     minimum: int | None = 0
     choices: tuple[str, ...] = ()
+    maximum: int | None = None
 
     def parse(self, value: Any) -> Any:
         """``value`` (a string from the command line, or already typed) checked; bad input names the option."""
         if self.choices:
             if value not in self.choices:
-                raise InvalidInput(f"--{self.name} must be one of {', '.join(self.choices)}, got {value!r}")
+                raise InvalidInput(f"--{self.name} must be one of {', '.join(self.choices)}, "
+                                   f"got {clip(repr(value), 60)}")
             return value
         text = str(value).strip()
         if isinstance(value, bool) or not (text.isascii() and text.lstrip("-").isdigit()) or len(text) > 18:
-            raise InvalidInput(f"--{self.name} must be an integer >= {self.minimum}, got {value!r}")
+            bound = f" and at most {self.maximum:,}" if self.maximum is not None else ""
+            raise InvalidInput(f"--{self.name} must be an integer >= {self.minimum}{bound}, got "
+                               f"{clip(repr(value), 60)}")
         number = int(text)
         if self.minimum is not None and number < self.minimum:
             raise InvalidInput(f"--{self.name} must be an integer >= {self.minimum}, got {value!r}")
+        if self.maximum is not None and number > self.maximum:
+            raise InvalidInput(f"--{self.name} must be at most {self.maximum:,}, got {number}")
         return number
 
 

@@ -18,12 +18,17 @@ topomark.spec.errors.InvalidInput: --timeout must be positive and finite, at mos
 
 from __future__ import annotations
 
+import argparse
 import math
 
-from topomark.spec.errors import InvalidInput
+from topomark.spec.errors import InvalidInput, clip
 from topomark.spec.world import MAX_DEGREE
 
-__all__ = ["MAX_SECONDS", "MAX_COUNT", "check_seconds", "check_count", "check_max_degree"]
+__all__ = ["MAX_SECONDS", "MAX_COUNT", "SEED_DIGITS", "check_seconds", "check_count", "check_max_degree", "seed"]
+
+SEED_DIGITS = 18
+"""The most digits a ``--seed`` may have, as for the generators' integers and JSON's (MAX_INT_DIGITS): every
+seed is reduced to 64 bits anyway, and a value of thousands of digits only makes a long message."""
 
 MAX_SECONDS = 7 * 24 * 3600  # one week: longer than any run, far from every overflow
 MAX_COUNT = 10 ** 15  # fits the protocol's integers (spec.jsontext.MAX_INT_DIGITS) and every clock
@@ -52,3 +57,17 @@ def check_max_degree(value: int) -> int:
         raise InvalidInput(f"--max-degree {value} is larger than any world's degree can be "
                            f"(at most {MAX_DEGREE:,}, topomark.spec.world.MAX_DEGREE)")
     return value
+
+
+def seed(text: str) -> int:
+    """``--seed``'s argparse type: an integer of at most :data:`SEED_DIGITS` digits; the refusal quotes the value
+    clipped.
+
+    >>> seed("-42")
+    -42
+    """
+    digits = text.strip().lstrip("+-")
+    if not (digits.isascii() and digits.isdigit()) or len(digits) > SEED_DIGITS:
+        raise argparse.ArgumentTypeError(f"must be an integer of at most {SEED_DIGITS} digits, got "
+                                         f"{clip(text, 40, quote=True)}")
+    return int(text)

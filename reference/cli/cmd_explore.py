@@ -7,11 +7,13 @@ import json
 import sys
 import time
 
+from topomark.reference.cli.args import seed as seed_option
 from topomark.spec.errors import InvalidInput
 from topomark.spec.worldfile import dumps_world
 
 from topomark.reference.run.explore import check_run, explore
-from topomark.reference.explorers.lighthouses import LIGHTHOUSES, configured
+from topomark.reference.explorers.lighthouses import (LIGHTHOUSES, MAX_NEIGHBOURHOOD, MAX_THRESHOLD, MAX_WALK_LIMIT,
+                                                     configured)
 from topomark.reference.algorithms.registry import REGISTRY, algorithm_spec, parameters
 from topomark.reference.worlds.generators import DEFAULT_WORLD
 from topomark.reference.files.outputs import check_output, check_output_dir, guarded, write_output
@@ -42,14 +44,16 @@ def register(sub) -> None:
     p.add_argument("--policy", action="append", default=[], metavar="KIND=NAME",
                    help=f"edge={'|'.join(EDGE_POLICIES)}, hypothesis={'|'.join(HYPOTHESIS_POLICIES)}, "
                         f"path={'|'.join(PATH_POLICIES)}; a bare NAME sets the edge policy (repeatable)")
-    p.add_argument("--seed", type=int, help="seed for a random generator; with a searched lighthouse "
+    p.add_argument("--seed", type=seed_option, help="seed for a random generator; with a searched lighthouse "
                                             "(undirected-vertex, undirected-edge) the seed of its random walk")
     p.add_argument("--walk-limit", metavar="N", help="a searched lighthouse gives up after N walk steps (default 200, "
-                                                     "§5.1's threshold)")
-    p.add_argument("--neighbourhood", metavar="D", help="undirected-vertex: test the neighbours' views to distance D "
-                                                        "(default 1, §5.1)")
+                                                     f"§5.1's threshold; at most {MAX_WALK_LIMIT:,})")
+    p.add_argument("--neighbourhood", metavar="D", help="undirected-vertex, local-degree-list: test the neighbours' "
+                                                        "views to distance D (default 1, §5.1; at most "
+                                                        f"{MAX_NEIGHBOURHOOD}: the work grows exponentially with D)")
     p.add_argument("--threshold", metavar="N", help="local-pair, local-degree-list: the least-seen candidate must "
-                                                    "be seen fewer than N times (default: the walk's observations, §5.2.1)")
+                                                    "be seen fewer than N times (default: the walk's observations, "
+                                                    f"§5.2.1; at most {MAX_THRESHOLD:,})")
     p.add_argument("--no-check", action="store_true", help="skip the per-iteration checks (faster)")
     p.add_argument("--check-mode", default="incremental", choices=("incremental", "full", "both"),
                    help="how I-1/I-2 are evaluated each iteration: per journalled change (default), from scratch, "
@@ -116,21 +120,35 @@ class _Progress:
         self.stream.flush()
 
 
-def _table(o, started: float, lighthouse: bool = True) -> str:
+def _bound_text(o, stated: str | None) -> str:
+    """The cost bound row: the bound on this world when one can be evaluated; else the registry's statement
+    (an O(·) bound has no constant, so no run can be held to it) or that the thesis states none."""
+    if o.upper_bound is not None:
+        return str(o.upper_bound)
+    return f"{stated} (asymptotic: not checked per run)" if stated else "none stated in the thesis"
+
+
+def _untested(o) -> int:
+    """The hypotheses never walked: Algorithm 3.1 tests H in turn and a confirmed one (case 3) "exit[s] the inner
+    'while' loop" (line 20, L579), so the ones left in H stay untested; the others are rejected (cases 1, 2)."""
+    return o.hypotheses - o.hypotheses_rejected - o.hypotheses_confirmed
+
+
+def _table(o, started: float, lighthouse: bool = True, stated: str | None = None) -> str:
     """The report's table; a kit algorithm's has its steps and its own counts where Algorithm 3.1's has
-    iterations and hypotheses."""
+    iterations and hypotheses.  ``stated`` is the registry's cost bound, in words."""
     rows = [
         ("n", o.n), ("m", o.m), ("cost (edge traversals)", o.cost), ("cost / m", f"{o.cost / o.m:.2f}"),
-        ("upper bound (3.1)+(3.2)" if lighthouse else "cost bound (registry)",
-         o.upper_bound if o.upper_bound is not None else "none stated"),
+        ("upper bound (3.1)+(3.2)" if lighthouse else "cost bound (registry)", _bound_text(o, stated)),
         *((f"  {purpose}", count) for purpose, count in o.by_purpose.items()),
         ("marker operations (not cost, §3.1.2)",
          ", ".join(f"{op.replace('_', ' ')}: {n}" for op, n in o.marker_operations.items()) or "none"),
     ]
     if lighthouse:
         rows += [("iterations (non-loop + loop)", f"{o.iterations} ({o.nonloop_iterations} + {o.loop_iterations})"),
-                 ("hypotheses (rejected / confirmed)",
-                  f"{o.hypotheses} ({o.hypotheses_rejected} / {o.hypotheses_confirmed})")]
+                 ("hypotheses (rejected / confirmed / untested)",
+                  f"{o.hypotheses} ({o.hypotheses_rejected} / {o.hypotheses_confirmed} / {_untested(o)}; untested: "
+                  "not walked, a confirmation exits the test of H, Algorithm 3.1 line 20)")]
     else:
         rows += [("steps", o.iterations), *((key.replace("_", " "), value) for key, value in o.extra.items())]
     rows += [("outcome (claimed / judged)", f"{o.claimed} / {o.outcome}"), ("checks passed", o.checks),
@@ -218,7 +236,7 @@ def _print_report(args, spec, label: str, policies, outcome, started: float, tai
     setup = f"lighthouse {outcome.lighthouse}" if spec.uses_lighthouse else f"kit: {outcome.kit}"
     print(f"explored {label} with {spec.thesis} ({args.algorithm}; {setup}; policies "
           + ", ".join(f"{k}={v}" for k, v in policies.to_json().items()) + ")")
-    print(_table(outcome, started, spec.uses_lighthouse))
+    print(_table(outcome, started, spec.uses_lighthouse, spec.bound))
     if outcome.violation is not None:
         print(f"VIOLATION: {outcome.violation}")
         print("the trace up to that point (last events; --trace FILE keeps all of it):")

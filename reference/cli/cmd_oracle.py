@@ -12,13 +12,14 @@ import sys
 from pathlib import Path
 
 from topomark.spec.errors import InvalidInput
-from topomark.spec.jsontext import parse_json
+from topomark.spec.jsontext import no_duplicate_keys, parse_json
 from topomark.spec.kit import Kit
 from topomark.spec.worldfile import load_world, save_world
 
 from topomark.reference.oracle import conformance
 from topomark.reference.cli.parser import Parser, emit
 from topomark.reference.cli.args import check_count, check_seconds
+from topomark.reference.cli.args import seed as seed_option
 from topomark.reference.cli.cmd_explore import parse_policies
 from topomark.reference.oracle.drive import drive
 from topomark.reference.trace.records import dump_trace
@@ -50,7 +51,7 @@ def _command(args) -> list[str]:
 def _run_options(p) -> None:
     _limits(p)
     _protocol_options(p)
-    p.add_argument("--seed", type=int, help="seed for a random generator")
+    p.add_argument("--seed", type=seed_option, help="seed for a random generator")
     p.add_argument("--map", metavar="FILE", help="write the program's map here")
     p.add_argument("--json", action="store_true")
 
@@ -90,7 +91,10 @@ def _protocol_choice(args) -> tuple[int, Kit | None]:
     if args.protocol == 1:
         raise InvalidInput("--kit needs topomark/protocol@2: give --protocol 2 (or leave --protocol out); "
                            "topomark/protocol@1 knows only the kit {\"directional-vertex\": 1}")
-    kit = Kit.from_json(parse_json(args.kit, "--kit"))
+    try:  # like a world file, a key named twice is refused (JSON would keep the last silently)
+        kit = Kit.from_json(parse_json(args.kit, "--kit", object_pairs_hook=no_duplicate_keys))
+    except InvalidInput as exc:
+        raise InvalidInput(str(exc) if str(exc).startswith("--kit") else f"--kit: {exc}") from None
     counts = (kit.vertex, kit.edge, kit.either)
     if max(counts) > MAX_COUNT or (sum(counts) == 0 and kit.thread is None):
         raise InvalidInput(f"--kit: give 1..{MAX_COUNT} vertex or edge markers or a thread, got {kit.to_json()}")

@@ -6,6 +6,7 @@ import json
 import sys
 from collections import Counter
 
+from topomark.reference.cli.args import seed as seed_option
 from topomark.spec.dartgraph import find_isomorphism_nx
 from topomark.spec.errors import InvalidInput, TopomarkFault
 from topomark.spec.isomorphism import find_isomorphism, verify_witness
@@ -23,7 +24,7 @@ def register(sub) -> None:
     p = sub.add_parser("world", help="generate a world file, or --show one",
                        description="Generate a world: GENERATOR[:NAME=VALUE,...]. Generators and defaults: " + gens)
     p.add_argument("generator", nargs="?", metavar="GENERATOR", help="generator name with optional :NAME=VALUE,...")
-    p.add_argument("--seed", type=int, help="seed for random generators")
+    p.add_argument("--seed", type=seed_option, help="seed for random generators")
     p.add_argument("-o", "--output", metavar="FILE", help="write the world here (default: stdout)")
     p.add_argument("--show", metavar="FILE", help="summarise a world file instead")
     p.add_argument("--json", action="store_true", help="machine-readable output")

@@ -78,7 +78,7 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 from typing import Any, Callable, Iterator
 
-from topomark.spec.errors import InvalidInput
+from topomark.spec.errors import InvalidInput, clip
 from topomark.spec.kit import Kit, MarkerOp, ThreadOp
 from topomark.spec.mapstate import PartialMap
 from topomark.spec.signature import Signature, back_link_table, signature_at
@@ -88,7 +88,26 @@ from topomark.reference.explorers.lighthouse_search import after_search, search_
 from topomark.reference.explorers.local_lighthouses import VirtualMap, search_degree_list, search_pair
 from topomark.reference.explorers.probing import PerceivedMap, ProbingRobot, identify, perceived
 
-__all__ = ["Lighthouse", "Beacon", "LIGHTHOUSES", "lighthouse", "configured"]
+__all__ = ["Lighthouse", "Beacon", "LIGHTHOUSES", "lighthouse", "configured", "MAX_WALK_LIMIT", "MAX_NEIGHBOURHOOD",
+           "MAX_THRESHOLD", "OPTION_CAPS"]
+
+MAX_WALK_LIMIT = 1_000_000
+"""The largest ``--walk-limit``: 5,000 times §5.1's threshold of 200 walk steps (L1332).  A §5.2.1 walk keeps
+every step's observations until it chooses v0, so its memory and time grow with the limit: a million steps of
+``local-degree-list`` on a 4×4 lattice take about 30 s and 150 MB; 10^8 ran out of memory."""
+
+MAX_NEIGHBOURHOOD = 8
+"""The largest ``--neighbourhood`` d: probing the views to distance d walks every path of length d from a
+vertex, so the work grows exponentially with d (on a 4×4 lattice d = 14 already takes seconds per search and
+d = 100 never ends).  The thesis's experiments use d = 1 (L1332); 8 leaves room for "further extend[ing] the
+local signature" (§5.1) while every search stays short."""
+
+MAX_THRESHOLD = MAX_WALK_LIMIT + 1
+"""The largest ``--threshold``: a candidate is seen at most once per observation, and a walk makes at most
+``MAX_WALK_LIMIT`` + 1 observations (§5.2.1, scheme B), so a larger threshold refuses nothing more."""
+
+OPTION_CAPS = {"walk_limit": MAX_WALK_LIMIT, "neighbourhood": MAX_NEIGHBOURHOOD, "threshold": MAX_THRESHOLD}
+"""The cap of each searched lighthouse's option that sizes its work or memory (``seed`` is any integer)."""
 
 
 @dataclass
@@ -214,13 +233,29 @@ class Lighthouse:
                                    + (f" (it takes {', '.join('--' + o.replace('_', '-') for o in self.options)})"
                                       if self.options else "; only a searched lighthouse does: "
                                       + ", ".join(h.name for h in LIGHTHOUSES.values() if h.options)))
-            if isinstance(value, str) and value.strip().lstrip("-").isdecimal() and value.strip().isascii():
-                value = given[key] = int(value)
-            if not isinstance(value, int) or isinstance(value, bool):
-                raise InvalidInput(f"{flag} must be an integer, got {value!r}")
-            if key != "seed" and value < 1:
-                raise InvalidInput(f"{flag} must be at least 1, got {value}")
+            given[key] = _option_value(key, flag, value)
         return replace(self, **given)
+
+
+def _option_value(key: str, flag: str, value: Any) -> int:
+    """``value`` of option ``key`` (``flag`` on the command line) as an int: an integer, at least 1 and at most
+    its :data:`OPTION_CAPS` cap (``seed``: any integer of at most 18 digits); bad input names the option."""
+    cap = OPTION_CAPS.get(key)
+    too_big = f"{flag} must be at most {cap or 0:,} (topomark.reference.explorers.lighthouses.MAX_{key.upper()})"
+    if isinstance(value, str) and value.strip().lstrip("-").isdecimal() and value.strip().isascii():
+        text = value.strip()
+        if len(text.lstrip("-")) > 18:  # int() of thousands of digits is slow, and refused past 4,300
+            raise InvalidInput((f"{flag} must be at least 1" if cap and text.startswith("-") else too_big if cap
+                                else f"{flag} must be an integer of at most 18 digits")
+                               + f"; got {clip(text, 40)}")
+        value = int(text)
+    if not isinstance(value, int) or isinstance(value, bool):
+        raise InvalidInput(f"{flag} must be an integer, got {clip(repr(value), 60)}")
+    if key != "seed" and value < 1:
+        raise InvalidInput(f"{flag} must be at least 1, got {clip(str(value), 40)}")
+    if cap is not None and value > cap:
+        raise InvalidInput(f"{too_big}; got {clip(str(value), 40)}")
+    return value
 
 
 def _marked_neighbour(S: PartialMap, v0: int) -> Callable:

@@ -131,9 +131,12 @@ def _expect_marker(marker, want, world: World, lighthouse: Lighthouse, algorithm
     """A world file's marker must be one the lighthouse drops, exactly as it drops it."""
     text = json.dumps(marker_to_json(marker))
     if want is None or marker.directional != want.directional:
+        wheel = ("; Figure 3.4's wheels: generate wheel-a:marker=directional (Figure 3.6) or marker=none"
+                 if isinstance(marker, VertexMarker) and not marker.directional else "")
         raise InvalidInput(
             f"the {algorithm} algorithm with the {lighthouse.name} lighthouse cannot use the marker {text} in the "
-            f"world file: only {lighthouse.drops}, dropped by the robot at the start vertex {v0!r}, may be there")
+            f"world file: only {lighthouse.drops}, dropped by the robot at the start vertex {v0!r}, may be there; "
+            f"remove the file's markers (the robot drops its own{wheel}) or give the --lighthouse that drops them")
     same_edge = isinstance(marker, EdgeMarker) and (marker.count, marker.head) == (want.count, want.head)
     if marker == want or same_edge:
         return

@@ -41,7 +41,17 @@ from topomark.spec.worldfile import dumps_world
 from topomark.reference.algorithms.algorithm_spec import AlgorithmSpec, Parameter
 from topomark.reference.explorers.model_tree import DEFAULTS, ModelTreeExplorer
 
-__all__ = ["SPECS", "PARAMETERS", "check_cues", "summary", "write_models"]
+__all__ = ["SPECS", "PARAMETERS", "MAX_MODELS", "MAX_STEPS", "check_cues", "summary", "write_models"]
+
+MAX_MODELS = 100_000
+"""The largest ``--max-models``: 10 times the default of 10,000.  Every live model is a partial map kept in
+memory and every step extends each of them, so the cap bounds memory (a few kilobytes a model: about a gigabyte
+at the cap) and the work per step; the bench's uncued runs (``max-models=1000``) and the default stay below it."""
+
+MAX_STEPS = 1_000_000
+"""The largest ``--max-steps``: 500 times the default of 2,000.  A step explores one edge of the tree of models
+(§5.2.2, Algorithm 5.1), each costing work for every live model, so a million steps is already far longer
+than any run the thesis reports; a larger cap only postpones the limit outcome."""
 
 PARAMETERS = (
     Parameter("signatures", "global: validate each loop closing against every known vertex (§5.2.2); local: accept "
@@ -52,10 +62,10 @@ PARAMETERS = (
               DEFAULTS["entry-check"], None, ("yes", "no")),
     Parameter("window", "return a model once it has been the only completed model for this many steps (L1373)",
               DEFAULTS["window"], 1),
-    Parameter("max-models", "cap on live models: past it the run ends with the limit outcome", DEFAULTS["max-models"],
-              1),
-    Parameter("max-steps", "cap on steps (TM edges explored): past it the run ends with the limit outcome",
-              DEFAULTS["max-steps"], 1),
+    Parameter("max-models", f"cap on live models: past it the run ends with the limit outcome (at most "
+              f"{MAX_MODELS:,})", DEFAULTS["max-models"], 1, maximum=MAX_MODELS),
+    Parameter("max-steps", f"cap on steps (TM edges explored): past it the run ends with the limit outcome (at most "
+              f"{MAX_STEPS:,})", DEFAULTS["max-steps"], 1, maximum=MAX_STEPS),
     Parameter("cue-n", "cue (§5.3): the world has this many vertices", None, 1),
     Parameter("cue-m", "cue (§5.3): the world has this many edges", None, 1),
     Parameter("cue-diameter", "cue (§5.3): the world's diameter", None, 1),
