@@ -15,7 +15,7 @@ from topomark.reference.run.explore import explore
 from topomark.reference.trace.records import dump_trace
 from topomark.reference.explorers.policies import Policies
 from topomark.reference.replay.replay import parse_trace, replay
-from topomark.spec.errors import InvalidInput
+from topomark.spec.errors import ExplorerFault, InvalidInput
 from topomark.spec.world import Start, World
 from topomark.spec.worldfile import dumps_world
 
@@ -88,10 +88,17 @@ def test_step_numbers_must_run_without_gaps():
 
 
 def test_a_misjoined_loop_edge_violates_I1():
+    """The checker stops the faulty run at the misjoin (I-1); its trace, replayed, diverges there too.  Unchecked,
+    the same explorer runs on until its own consistency check finds e' missing from U: a bug in the explorer,
+    exit 3, never a checker's verdict."""
     world = g.complete(5)
-    out = explore(world, replace(algorithm_spec("basic"), explorer=FAULTS["MisindexedLoopEdge"]), check=False)
+    fault = replace(algorithm_spec("basic"), explorer=FAULTS["MisindexedLoopEdge"])
+    out = explore(world, fault)
+    assert out.violation.check == "I-1"
     result = replay(world, records(out.trace))
     assert not result.ok and result.divergence.check == "I-1" and "iteration" in result.divergence.detail
+    with pytest.raises(ExplorerFault, match="not in U"):
+        explore(world, fault, check=False)
 
 
 def test_an_edge_not_in_U_is_a_divergence():
