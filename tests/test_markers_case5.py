@@ -172,24 +172,49 @@ def perceptions(w: World) -> list:
 
 
 @pytest.mark.parametrize("other", ["k4-other", "five-vertices"])
-def test_case_0_certified_pair_same_perceptions_different_worlds(other):
-    """The certificate: the Case 0 robot senses exactly the same on both worlds (so it returns the same map),
-    but the worlds are not extended-isomorphic: one map is wrong (found by search over the embedded worlds of
-    ≤ 5 places and degree ≤ 4, every start)."""
+def test_case_0_certified_pair_same_perceptions_different_worlds_both_failed(other):
+    """The certificate: the Case 0 robot senses exactly the same on both worlds up to the marked place several
+    edges fit, but the worlds are not extended-isomorphic, so no pick there could be right on both (found by
+    search over the embedded worlds of ≤ 5 places and degree ≤ 4, every start).  The robot says so: ``failed``
+    on both, for the same reason, never a map the checker refutes."""
     a, b = vector("k4-mapped"), vector(other)
     assert perceptions(a) == perceptions(b)
     assert len(perceptions(a)) >= 7
     assert not find_isomorphism(World(a.rotation), World(b.rotation)).isomorphic
-    right, wrong = explore(a, "case-0"), explore(b, "case-0")
-    assert (right.outcome, right.verified) == ("correct", True)
-    assert (wrong.outcome, wrong.claimed) == ("wrong-map", "correct")  # the robot cannot know
+    outs = [explore(a, "case-0"), explore(b, "case-0")]
+    assert [(o.outcome, o.claimed, o.violation) for o in outs] == [("failed", "failed", None)] * 2
+    assert outs[0].reason == outs[1].reason and "edges fit; the robot cannot determine which, L1491" in outs[0].reason
 
 
-def test_case_0_candidates_are_what_the_strategy_cannot_tell_apart():
-    """Figure 6.3(b): entering a marked place of K4, three unexplored edges at marked places fit it."""
-    ex = explore(vector("k4-mapped"), "case-0").explorer
-    loops = [it for it in ex.iterations if it.kind == "loop"]
-    assert loops and len(loops[0].candidates) == 3
+@pytest.mark.parametrize("check", [True, False])
+def test_case_0_on_k4_fails_where_the_strategy_cannot_tell_the_candidates_apart(check):
+    """Figure 6.3(b), L1491: entering a marked place of K4, three unexplored edges at marked places fit it; the
+    explorer stops with ``failed`` and says so, checked or not (K4 is the smallest world that shows it)."""
+    for w in (vector("k4-mapped"), make_world("complete:n=4")):
+        out = explore(w, "case-0", check=check)
+        assert (out.outcome, out.claimed, out.violation) == ("failed", "failed", None)
+        assert "3 edges fit; the robot cannot determine which, L1491" in out.reason
+        it = out.explorer.undecided
+        assert it is not None and len(it.candidates) == 3 and it.number == len(out.explorer.iterations) + 1
+
+
+@pytest.mark.parametrize("extra", [[], ["--no-check"], ["--json"]])
+def test_case_0_cli_on_k4_is_failed_exit_1_with_the_reason(extra, capsys):
+    assert main(["explore", "complete:n=4", "--algorithm", "case-0", *extra]) == 1
+    out = capsys.readouterr().out
+    if extra == ["--json"]:
+        report = json.loads(out)
+        assert (report["outcome"], report["claimed"]) == ("failed", "failed")
+        assert "3 edges fit; the robot cannot determine which, L1491" in report["reason"]
+    else:
+        assert "outcome: failed" in out and "3 edges fit; the robot cannot determine which, L1491" in out
+
+
+def test_case_0_maps_a_world_where_one_edge_always_fits():
+    """A single fitting edge is e' itself (e is new, so e' is unexplored at a known place showing what v_u shows):
+    on a cycle the explorer joins it and the checker verifies the map."""
+    out = explore(make_world("cycle:n=5"), "case-0")
+    assert (out.outcome, out.verified) == ("correct", True)
 
 
 def test_nearest_agrees_with_a_whole_breadth_first_search():

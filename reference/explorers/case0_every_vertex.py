@@ -8,18 +8,25 @@ back-link" (L1491).  The explorer does exactly what the strategy allows and
 nothing more:
 
 * an unmarked v_u is new: non-loop augmentation, one marker dropped there;
-* a marked v_u is known, but every unexplored dart (v_k', i') whose known end
+* a marked v_u is known, and every unexplored dart (v_k', i') whose known end
   shows v_u's signature (marked, same degree; v_k' neither v_k nor a neighbour
-  of it: no self-loops, no multi-edges) fits it.  The strategy offers nothing
-  to tell them apart, so the explorer takes the first in U's order (a guess —
-  correct whenever only one fits) and joins e/e'.  No fitting dart is the
-  ``failed`` outcome.
+  of it: no self-loops, no multi-edges) fits it.  The true e' is always one of
+  them (e is new, so e' is unexplored, at a known place that shows what v_u
+  shows), so exactly one fit is e' and the explorer joins e/e'.
 
-Since the explorer's every motion is a function of the perceptions so far, two
-worlds that give it the same perception sequence get the same map, and if they
-are not isomorphic one of the two maps is wrong.  ``tests/test_markers_case5.py``
-certifies such a pair (found by search over small worlds, written as test
-vectors under ``tests/vectors/case0/``).
+Decision: when k > 1 darts fit, the explorer stops with the ``failed`` outcome
+(:class:`~topomark.spec.errors.AlgorithmFailed`, reason "k edges fit; the robot
+cannot determine which, L1491"), exit 1.  The thesis says so in as many words:
+"the robot cannot determine if it is visiting v_k' or v_k''.  Thus this approach
+does not work in general" (L1491) — it does not let the robot pick one.  Taking
+the first would be a guess the robot knows to be one, and on some worlds the
+checker would refute the map it claims.  No fitting dart is ``failed`` too (it
+cannot happen in a simple world, as said above).
+
+``tests/test_markers_case5.py`` shows why no choice can be right: the pairs of
+worlds under ``tests/vectors/case0/`` (found by search over small worlds) give
+the robot the same perceptions up to the first marked place, where several
+edges fit, yet are not isomorphic; the explorer stops there on both.
 
 Examples
 --------
@@ -40,9 +47,12 @@ __all__ = ["EveryVertexMarked"]
 
 
 class EveryVertexMarked(MarkerWalk):
-    """Case 0: one undirected V-marker at every vertex discovered; a marked place is guessed (L1491)."""
+    """Case 0: one undirected V-marker at every vertex discovered; a marked place that several edges fit stops
+    the run (L1491)."""
 
     name = "case-0"
+    undecided = None
+    """The iteration that stopped the run, its ``candidates`` the darts that fit (None while it runs)."""
 
     def begin(self) -> None:
         """The marker at v0."""
@@ -59,4 +69,8 @@ class EveryVertexMarked(MarkerWalk):
             raise AlgorithmFailed(f"iteration {it.number}: v_u shows {sig}, but no unexplored edge of the map "
                                   "leads from a known place that shows it")
         it.candidates = fits  # what the strategy cannot tell apart (Figure 6.3(b): v_k' or v_k'')
+        if len(fits) > 1:
+            self.undecided = it
+            raise AlgorithmFailed(f"iteration {it.number}: v_u shows {sig}; {len(fits)} edges fit; the robot "
+                                  "cannot determine which, L1491")
         self.loop(it, fits[0])

@@ -30,11 +30,14 @@ knows how many markers it carries, only not how that compares with the world
 
 Case 0 is registered as *not deterministic* in the thesis's sense of the word
 (an algorithm that always maps the world, L1375): "this approach does not work
-in general" (L1491).  It runs, and on the certified pairs of worlds in
-``tests/vectors/case0/`` (K4 with two embeddings; K4 against a 5-place world,
-found by search over every embedded world of ≤ 5 places and degree ≤ 4 from
-every start) it senses exactly the same and returns the same map, so one run is
-the checker's ``wrong-map`` (``tests/test_markers_case5.py`` certifies them).
+in general" (L1491).  It runs until it enters a marked place that more than one
+unexplored edge fits, and there it stops with the ``failed`` outcome ("k edges
+fit; the robot cannot determine which, L1491"; K4 is the smallest world that
+shows it).  The certified pairs of worlds in ``tests/vectors/case0/`` (K4 with
+two embeddings; K4 against a 5-place world, found by search over every embedded
+world of ≤ 5 places and degree ≤ 4 from every start) show that no pick could be
+right: the robot senses exactly the same on both up to that place, yet the
+worlds are not isomorphic (``tests/test_markers_case5.py`` certifies them).
 
 Examples
 --------

@@ -229,8 +229,10 @@ def claims_table(exp, g: dict, tried: dict, algs: list[str]) -> list[str]:
                      f"{'—' if v['ratio_f'] is None else format(v['ratio_f'], '.4g')} | "
                      f"{'—' if v['slope'] is None else v['slope']} | {cost_ok} |")
     return lines + ["", "Case 5's count is not a claim (the robot is given any K > 3); its rows run with the default "
-                    "K that lets phase I mark every place (`figure-6.13` varies K). Case 0 is expected to fail on "
-                    "some worlds (the certified pair is in `tests/test_markers_case5.py`).", ""]
+                    "K that lets phase I mark every place (`figure-6.13` varies K). Case 0 is expected to stop with "
+                    "`failed` on worlds where several unexplored edges fit a marked place (\"the robot cannot "
+                    "determine\" which, L1491; the certified pairs in `tests/test_markers_case5.py` show that no "
+                    "pick could be right).", ""]
 
 
 def size_tables(exp, g: dict, tried: dict, algs: list[str]) -> list[str]:
@@ -297,6 +299,12 @@ def om_breakdown(exp, g: dict, algs: list[str]) -> list[str]:
     return lines + [""]
 
 
+def runs_by_outcome(rows: list[dict]) -> str:
+    """``"3 runs: 2 failed, 1 wrong-map"``: how many runs, and how many ended in each outcome."""
+    outs = [r.get("outcome") or "unrecorded" for r in rows]
+    return f"{len(rows)} runs: " + ", ".join(f"{outs.count(o)} {o}" for o in sorted(set(outs)))
+
+
 def marker_classes(g: dict, tried: dict) -> list[str]:
     """Every marker class of Tables 6.1/6.2 with topomark's command, mean cost and markers at the largest sizes."""
     lines = ["## Every marker class of Tables 6.1 and 6.2: topomark's command, measured cost and markers", "",
@@ -309,7 +317,7 @@ def marker_classes(g: dict, tried: dict) -> list[str]:
             sizes = [k[3] for k in g if k[0] == fam and k[1] == a and k[2] == ""]
             every = [r for k, rs in tried.items() if k[0] == fam and k[1] == a and k[2] == "" for r in rs]
             if not sizes:
-                cells.append(f"no world mapped correctly ({len(every)} runs: wrong map)" if every else "—")
+                cells.append(f"no world mapped correctly ({runs_by_outcome(every)})" if every else "—")
                 continue
             rs = g[(fam, a, "", max(sizes))]
             cells.append(f"{max(sizes)}: {mean(rs, 'cost'):,.0f} "
