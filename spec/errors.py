@@ -189,9 +189,17 @@ class AlgorithmStopped(TopomarkError):
 
 
 class AlgorithmFailed(AlgorithmStopped):
-    """The algorithm reports that it cannot go on (e.g. no lighthouse within the walk limit, §5.1)."""
+    """The algorithm reports that it cannot go on (e.g. no lighthouse within the walk limit, §5.1).
+
+    :attr:`walk_steps`: the steps a lighthouse search walked before it gave up (the whole limit, L1332), which
+    the run reports as it reports a found lighthouse's walk; None for any other failure.
+    """
 
     outcome = "failed"
+
+    def __init__(self, reason: str, walk_steps: int | None = None):
+        super().__init__(reason)
+        self.walk_steps = walk_steps
 
 
 class LimitReached(AlgorithmStopped):

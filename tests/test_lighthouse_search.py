@@ -41,11 +41,12 @@ def test_the_smallest_vertex_transitive_world_ends_failed_with_the_reason(light)
     triangle = g.cycle(3)
     sim = Simulator(triangle, triangle.start_state(), light.kit)
     explorer = ALGORITHMS["basic"](sim.robot(), None, None, light.with_options(walk_limit=7))
-    with pytest.raises(AlgorithmFailed, match="within 7 walk steps"):
+    with pytest.raises(AlgorithmFailed, match="within 7 walk steps") as raised:
         explorer.start()
-    assert sim.by_purpose["establish"] == 7 and not sim.world.markers
+    assert sim.by_purpose["establish"] == 7 == raised.value.walk_steps and not sim.world.markers
     out = explore(triangle, "enh3", lighthouse=light, record=False)
     assert (out.outcome, out.verified) == ("failed", False) and "within 200 walk steps" in out.reason
+    assert out.walk_steps == 200  # the robot walked its whole limit, and the run says so
 
 
 @pytest.mark.parametrize("figure", [g.wheel_a, g.wheel_b], ids=["3.4a", "3.4b"])
@@ -168,10 +169,18 @@ def test_the_cli_reports_failed_with_exit_1_and_seeds_the_walk(capsys):
     assert main(["explore", "cycle:n=4", "--lighthouse", "undirected-vertex", "--walk-limit", "9", "--json"]) == 1
     data = json.loads(capsys.readouterr().out)
     assert data["outcome"] == "failed" and "within 9 walk steps" in data["reason"]
-    assert data["by_purpose"]["establish"] == 9
+    assert data["by_purpose"]["establish"] == 9 == data["walk_steps"]
     costs = set()
     for seed in ("1", "2", "3"):
         assert main(["explore", "small-world:n=12,k=2,p=0.2,seed=4", "--lighthouse", "undirected-edge", "--seed",
                      seed, "--json"]) == 0
         costs.add(json.loads(capsys.readouterr().out)["cost"])
     assert len(costs) > 1  # --seed seeds the walk, not the world (given in the generator text)
+
+
+@pytest.mark.parametrize("light", ["undirected-vertex", "undirected-edge"])
+def test_a_failed_search_reports_the_steps_it_walked(light, capsys):
+    """cycle:n=6, seed 2: no lighthouse within 200 walk steps; the report's walk_steps is the 200 walked, not 0."""
+    assert main(["explore", "cycle:n=6", "--lighthouse", light, "--seed", "2", "--json"]) == 1
+    data = json.loads(capsys.readouterr().out)
+    assert (data["outcome"], data["walk_steps"], data["lighthouse_at"]) == ("failed", 200, None)

@@ -168,7 +168,7 @@ def test_a_regular_world_fails_within_the_walk(name, reason, capsys):
     assert main(["explore", "cycle:n=5", "--lighthouse", name, "--walk-limit", "9", "--json"]) == 1
     data = json.loads(capsys.readouterr().out)
     assert data["outcome"] == data["claimed"] == "failed" and reason in data["reason"]
-    assert data["walk_steps"] == 0 and data["by_purpose"]["establish"] == 9  # the walk, then no lighthouse
+    assert data["walk_steps"] == 9 == data["by_purpose"]["establish"]  # the whole walk, then no lighthouse
 
 
 def test_the_threshold():
@@ -177,6 +177,7 @@ def test_the_threshold():
     everything; K2's two vertices both show D = (1) at every visit."""
     out = explore(STAR, "basic", lighthouse="local-pair", record=False)
     assert out.outcome == "failed" and "seen 200 times" in out.reason and "threshold 200" in out.reason
+    assert out.walk_steps == 200  # the walk was made; only its choice was refused
     one = LIGHTHOUSES["local-degree-list"].with_options(threshold=1)
     out = explore(bare(make_world(RANDOM)), "basic", lighthouse=one, record=False)
     assert out.outcome == "failed" and "not below the threshold 1" in out.reason

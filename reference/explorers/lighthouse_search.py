@@ -22,7 +22,9 @@ it where the world itself supplies the back-link:
 
 Both give up after ``walk_limit`` walk steps (L1332: "A threshold of 200
 steps is set for the random walk … the algorithm terminates reporting
-failure") with :class:`~topomark.spec.errors.AlgorithmFailed`: on a regular
+failure") with :class:`~topomark.spec.errors.AlgorithmFailed`, its
+``walk_steps`` the steps walked (the run reports them as it reports a found
+lighthouse's walk): on a regular
 world §6.1 always does, and §5.1 does wherever every vertex's D is periodic
 (a vertex-transitive world such as a cycle).
 
@@ -101,7 +103,7 @@ def search_vertex(light, robot, S: PartialMap):
         if steps >= light.walk_limit:
             raise AlgorithmFailed(f"no vertex whose neighbour {'degrees' if depth == 1 else 'views'} D (distance "
                                   f"{depth}) have no proper cyclic rotation onto themselves within {light.walk_limit} "
-                                  "walk steps (§5.1, L1332)")
+                                  "walk steps (§5.1, L1332)", walk_steps=steps)
         left = sig.degree
         sig = robot.move(rng.below(sig.degree), "establish")
         known0, steps = (left if depth == 1 else None), steps + 1
@@ -125,7 +127,7 @@ def search_edge(light, robot, S: PartialMap):
     while True:
         if steps >= light.walk_limit:
             raise AlgorithmFailed(f"no edge whose two ends have different degrees within {light.walk_limit} walk "
-                                  "steps (§6.1, L1470)")
+                                  "steps (§6.1, L1470)", walk_steps=steps)
         got = robot.move(rng.below(sig.degree), "establish")
         steps += 1
         if got.degree != sig.degree:

@@ -77,7 +77,8 @@ Decisions (the thesis is silent, L1344–L1346):
 * Ties in "least-seen": the candidate whose last sighting is latest in the
   walk — the shortest way back, for the robot returns by retracing its walk
   (the only way it knows).  The walk back is ``establish`` moves; the
-  lighthouse's ``walk_steps`` is the walk alone.
+  lighthouse's ``walk_steps`` is the walk alone (the whole walk when no
+  lighthouse is chosen).
 * Scheme A: the lighthouse is the end of smaller degree (fewer neighbours to
   probe and to confuse the back-link), entered from the other end, so that
   edge is v0's exit 0.  Recognition stops at the first neighbour of degree b
@@ -230,7 +231,7 @@ def _refuse(light, what: str, count: int, observations: int, line: str) -> None:
     threshold = _threshold(light, observations)
     if count >= threshold:
         raise AlgorithmFailed(f"the least-seen {what} was seen {count} times in a walk of {light.walk_limit} steps, "
-                              f"not below the threshold {threshold} ({line})")
+                              f"not below the threshold {threshold} ({line})", walk_steps=light.walk_limit)
 
 
 def search_pair(light, robot, S: PartialMap):
@@ -249,7 +250,7 @@ def search_pair(light, robot, S: PartialMap):
             last[pair] = s
     if not counts:
         raise AlgorithmFailed(f"no edge whose ends have different degrees in a walk of {L} steps: no pair of "
-                              "degrees gives a lighthouse and its back-link (§5.2.1, L1344)")
+                              "degrees gives a lighthouse and its back-link (§5.2.1, L1344)", walk_steps=L)
     a, b = pair = least_seen(counts, last)
     _refuse(light, f"pair of adjacent degrees {pair}", counts[pair], L, "§5.2.1, L1344")
     s = last[pair]
@@ -293,7 +294,7 @@ def search_degree_list(light, robot, S: PartialMap):
     if not counts:
         raise AlgorithmFailed(f"no vertex whose neighbour {'degrees' if depth == 1 else 'views'} D (distance "
                               f"{depth}) have no proper cyclic rotation onto themselves in a walk of {L} steps "
-                              "(§5.2.1, L1346)")
+                              "(§5.2.1, L1346)", walk_steps=L)
     chosen = least_seen(counts, last)
     _refuse(light, f"neighbour list {chosen} (rotations merged)", counts[chosen], L + 1, "§5.2.1, L1346")
     t = last[chosen]

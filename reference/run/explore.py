@@ -70,7 +70,7 @@ class Outcome:
     claimed: str = "correct"
     reason: str | None = None
     kit: str = ""
-    walk_steps: int | None = None  # a lighthouse algorithm: the steps of the walk that found v0 (§5.1, §6.1)
+    walk_steps: int | None = None  # a lighthouse algorithm: the walk that found v0, or gave up (§5.1, §6.1)
     lighthouse_at: str | None = None  # a lighthouse algorithm: the world vertex v0 is (the truth; the robot never knows)
     extra: dict[str, Any] = field(default_factory=dict)  # the algorithm's own counts (its registry's summary_fn)
 
@@ -204,7 +204,7 @@ def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: 
     started: list = []  # the robot's true state once the explorer has started (v0, for a lighthouse algorithm)
     violation, stopped = _drive(explorer, checker, lambda: started.append(sim.state))
     outcome = _outcome(world, sim, explorer, checker, violation, trace, tally, spec, stopped)
-    _algorithm_counts(outcome, spec, explorer, world, started[0] if started else None)
+    _algorithm_counts(outcome, spec, explorer, world, started[0] if started else None, stopped)
     if emit:
         emit(end_record(outcome))
     return outcome
@@ -312,11 +312,15 @@ def _outcome(world: World, sim: Simulator, explorer, checker: Checker | None, vi
         outcome=judged, claimed=claimed, reason=stopped.reason if stopped else None, kit=sim.kit.describe())
 
 
-def _algorithm_counts(outcome: Outcome, spec: AlgorithmSpec, explorer, world: World, v0_state) -> None:
+def _algorithm_counts(outcome: Outcome, spec: AlgorithmSpec, explorer, world: World, v0_state,
+                      stopped: AlgorithmStopped | OutOfMarkers | None = None) -> None:
     """What only some algorithms have: their own counts (the registry's ``summary_fn``), and for a lighthouse
-    algorithm the walk that found v0 (§5.1, §6.1) and the world vertex v0 is."""
+    algorithm the walk that found v0 (§5.1, §6.1) — or, when the search gave up, the walk it made before it
+    did — and the world vertex v0 is."""
     if spec.summary_fn is not None:
         outcome.extra = spec.summary_fn(explorer, world)
     if spec.uses_lighthouse:
-        outcome.walk_steps = getattr(getattr(explorer, "beacon", None), "walk_steps", 0)
+        beacon = getattr(explorer, "beacon", None)
+        walked = getattr(stopped, "walk_steps", None)
+        outcome.walk_steps = beacon.walk_steps if beacon is not None else walked if walked is not None else 0
         outcome.lighthouse_at = v0_state[0] if v0_state else None
