@@ -232,3 +232,54 @@ def test_census_progress_never_shows_an_estimate_below_the_count():
     bar = Progress(2367, None)
     bar.done(1000, 1200)
     assert "1,200/~2,367 worlds" in bar.line()
+
+
+# -- --policy: only the kinds the algorithm's registry entry declares ----------------------------------------
+@pytest.mark.parametrize("algorithm, policy, kind", [
+    ("case-4", "hypothesis=lifo", "hypothesis"), ("case-4", "lifo", "edge"), ("dudek", "hypothesis=lifo", "hypothesis"),
+    ("thread-explore", "hypothesis=lifo", "hypothesis"), ("thread-explore", "edge=fifo", "edge"),
+    ("case-3b", "path=dfs", "path"), ("model-tree", "lifo", "edge"),
+])
+def test_a_policy_the_algorithm_does_not_take_is_refused(capsys, algorithm, policy, kind):
+    refused(capsys, ["explore", "cycle:n=5", "--algorithm", algorithm, "--policy", policy, "--quiet"],
+            f"--policy {policy}", f"the algorithm {algorithm} takes no {kind} policy")
+
+
+@pytest.mark.parametrize("algorithm, policy", [("basic", "hypothesis=lifo"), ("case-3b", "lifo"),
+                                               ("dudek", "edge=fifo"), ("case-1a", "edge=lifo")])
+def test_a_declared_policy_is_accepted_and_recorded(capsys, algorithm, policy):
+    assert main(["explore", "cycle:n=5", "--algorithm", algorithm, "--policy", policy, "--quiet", "--json"]) == 0
+    kind, _, name = policy.rpartition("=")
+    assert __import__("json").loads(capsys.readouterr().out)["policies"][kind or "edge"] == name
+
+
+def test_the_declared_policy_kinds_are_the_ones_each_explorer_consults():
+    """Every registered algorithm declares exactly the policy kinds its explorer asks for on a small world
+    (model-tree, which never asks, is skipped for its run time)."""
+    from topomark.reference.algorithms.registry import REGISTRY
+    from topomark.reference.explorers.policies import Policies
+    from topomark.reference.run.explore import explore
+    from topomark.reference.worlds.argument import resolve_world
+
+    class Spy(Policies):
+        def choose_edge(self, S, dist):
+            self.used.add("edge")
+            return super().choose_edge(S, dist)
+
+        def order_hypotheses(self, hypotheses, lengths):
+            self.used.add("hypothesis")
+            return super().order_hypotheses(hypotheses, lengths)
+
+        def __getattribute__(self, name):
+            if name == "path":
+                object.__getattribute__(self, "used").add("path")
+            return object.__getattribute__(self, name)
+
+    specs = REGISTRY.values() if isinstance(REGISTRY, dict) else REGISTRY
+    for spec in specs:
+        if spec.name == "model-tree":
+            continue
+        spy = Spy()
+        spy.used = set()
+        explore(resolve_world("lattice:rows=3,cols=3"), spec, spy, check=False, record=False)
+        assert sorted(spy.used) == sorted(spec.policy_kinds), spec.name
