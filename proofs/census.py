@@ -52,6 +52,7 @@ from operator import itemgetter
 from typing import Any, Callable, Iterable, Iterator
 
 from topomark.proofs.bisim import distinguishing_sequence
+from topomark.proofs.census_exec import worker_count
 from topomark.proofs.enumerate import canonical_form, embedded_worlds
 from topomark.spec.markerclass import marker_class
 from topomark.spec.errors import CheckFailure
@@ -365,7 +366,7 @@ def census(class_name: str, max_vertices: int, max_degree: int, jobs: int = 1, m
     worlds = list(embedded_worlds(max_vertices, max_degree, min_vertices))
     jobs_list = list(_chunks(class_name, worlds, chunk_size))
     if jobs > 1 and len(jobs_list) > 1:
-        with ProcessPoolExecutor(max_workers=jobs) as pool:
+        with ProcessPoolExecutor(max_workers=worker_count(jobs, len(jobs_list))) as pool:
             langs, sizes = _merge(pool.map(_chunk, jobs_list), progress, len(worlds))
     else:
         langs, sizes = _merge(map(_chunk, jobs_list), progress, len(worlds))

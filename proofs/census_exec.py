@@ -31,7 +31,7 @@ from typing import Any, Callable, Iterator
 
 from topomark.spec.errors import InvalidInput
 
-__all__ = ["Executor", "executor", "Progress", "CONNECT_TIMEOUT"]
+__all__ = ["Executor", "executor", "worker_count", "Progress", "CONNECT_TIMEOUT"]
 
 CONNECT_TIMEOUT = 5  # seconds to reach a Dask scheduler
 Call = tuple[Callable[..., Any], tuple]
@@ -93,11 +93,26 @@ def _dask(jobs: int, scheduler: str) -> Iterator[Executor]:
         yield _Dask(client)
 
 
+def worker_count(jobs: int, tasks: int) -> int:
+    """How many worker processes to start for ``tasks`` tasks when ``jobs`` are allowed: never more than there
+    are tasks (an idle worker still costs a process), and at least 1.
+
+    >>> worker_count(48, 12), worker_count(2, 12), worker_count(4, 0)
+    (12, 2, 1)
+    """
+    return max(1, min(jobs, tasks))
+
+
 @contextlib.contextmanager
-def executor(jobs: int, scheduler: str | None) -> Iterator[Executor]:
-    """The executor for ``jobs`` local processes, or for a Dask ``scheduler`` (an address or ``"local"``)."""
+def executor(jobs: int, scheduler: str | None, tasks: int | None = None) -> Iterator[Executor]:
+    """The executor for ``jobs`` local processes, or for a Dask ``scheduler`` (an address or ``"local"``).
+
+    With ``tasks`` (the most calls any one :meth:`Executor.run` will get), at most that many local workers start.
+    """
     if jobs < 1:
         raise InvalidInput(f"--jobs must be at least 1, not {jobs}")
+    if tasks is not None:
+        jobs = worker_count(jobs, tasks)
     if scheduler is not None:
         with _dask(jobs, scheduler) as ex:
             yield ex
@@ -139,8 +154,17 @@ class Progress:
         rate = self.est_session / elapsed
         left = (self.estimated - self.est_done) / rate if rate > 0 else float("inf")
         eta = "?" if left == float("inf") else f"{max(left, 0) / 60:.1f} min"
-        return (f"census: [{bar}] {self.worlds:,}/~{self.estimated:,} worlds, {rate:,.1f} worlds/s, "
-                f"~{eta} left")
+        return f"census: [{bar}] {self.count()}, {rate:,.1f} worlds/s, ~{eta} left"
+
+    def count(self) -> str:
+        """Worlds so far out of the estimate; once the count passes the estimate, the count alone.
+
+        >>> p = Progress(2367, None); p.worlds = 2539; p.count()
+        '2,539 worlds (more than the ~2,367 estimated)'
+        """
+        if self.worlds > self.estimated:
+            return f"{self.worlds:,} worlds (more than the ~{self.estimated:,} estimated)"
+        return f"{self.worlds:,}/~{self.estimated:,} worlds"
 
     def report(self) -> None:
         self.last = time.perf_counter()

@@ -158,8 +158,8 @@ def sharded_census(class_name: str, max_vertices: int, max_degree: int, root: st
     params = {"marker": class_name, "max_vertices": max_vertices, "max_degree": max_degree,
               "min_vertices": min_vertices, "min_n": min_n}
     path = Path(root)
-    with executor(jobs, scheduler) as ex:
-        manifest = prepare(path, params, task_worlds, shards)
+    manifest = prepare(path, params, task_worlds, shards)
+    with executor(jobs, scheduler, tasks=max(len(manifest["tasks"]), manifest["shards"])) as ex:
         bar = Progress(manifest["estimated_worlds"], progress)
         _map_phase(ex, path, manifest, bar)
         bar.finish()

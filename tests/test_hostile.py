@@ -766,7 +766,8 @@ def _option_cases() -> list[tuple[str, str, str]]:
     for v in ("0", "-1"):
         cases.append(("bench", "--graphs", v))
     cases += [("census", "--jobs", "0"), ("census", "--jobs", "-1")]
-    cases.append(("bench", "--jobs", "-1"))  # bench --jobs 0 means one worker per CPU
+    cases += [("bench", "--jobs", v) for v in ("0", "-1", "257")]  # default (no --jobs): one per CPU
+    cases.append(("census", "--jobs", "257"))
     cases.append(("bench", "--sizes", "-5"))
     return cases
 

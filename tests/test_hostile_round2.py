@@ -9,6 +9,8 @@ from __future__ import annotations
 import pytest
 
 from topomark.reference.algorithms.registrations.model_tree import MAX_MODELS, MAX_STEPS
+from topomark.proofs.census_exec import worker_count
+from topomark.reference.cli.args import MAX_JOBS
 from topomark.reference.cli.main import main
 from topomark.reference.explorers.lighthouses import (LIGHTHOUSES, MAX_NEIGHBOURHOOD, MAX_THRESHOLD,
                                                       MAX_WALK_LIMIT)
@@ -158,3 +160,126 @@ def test_the_hypothesis_counts_add_up(capsys):
 @pytest.mark.parametrize("command", [["explore", "cycle:n=4"], ["world", "random"]])
 def test_a_huge_seed_is_refused_with_its_value_clipped(capsys, command):
     refused(capsys, [*command, "--seed", DIGITS_5000], "--seed", "at most 18 digits", "(5,000 characters)")
+
+
+# -- --jobs: one check for every command, a cap, and never more workers than tasks ------------------------------
+@pytest.mark.parametrize("command", [
+    ["bench", "random-20", "--sizes", "15", "--graphs", "1", "--no-plots", "--quiet"],
+    ["census", "--marker", "directional-vertex", "--max-vertices", "2", "--max-degree", "2"],
+])
+@pytest.mark.parametrize("value", ["0", "-1", str(MAX_JOBS + 1)])
+def test_jobs_is_refused_the_same_way_everywhere(capsys, tmp_path, command, value):
+    err = refused(capsys, [*command, "--out" if command[0] == "bench" else "--shards", str(tmp_path / "o"),
+                           f"--jobs={value}"], "--jobs", f"at most {MAX_JOBS}", f"got {value}")
+    assert err == f"topomark: error: --jobs must be at least 1 and at most {MAX_JOBS}; got {value}"
+
+
+def test_worker_count_never_exceeds_the_tasks():
+    assert [worker_count(j, t) for j, t in ((48, 12), (2, 12), (4, 0), (1, 5), (256, 256))] == [12, 2, 1, 1, 256]
+
+
+def test_bench_starts_no_more_workers_than_runs(monkeypatch, tmp_path, capsys):
+    import multiprocessing
+
+    started = []
+
+    class FakePool:
+        def __init__(self, n):
+            started.append(n)
+
+        def __enter__(self):
+            return self
+
+        def __exit__(self, *exc):
+            return False
+
+        def imap_unordered(self, f, items, chunksize=1):
+            return map(f, items)
+
+    class FakeContext:
+        Pool = FakePool
+
+    monkeypatch.setattr(multiprocessing, "get_context", lambda *a: FakeContext())
+    assert main(["bench", "random-20", "--sizes", "15", "20", "--graphs", "1", "--no-plots", "--quiet", "--jobs", "48",
+                 "--out", str(tmp_path), "--json"]) == 0
+    ran = __import__("json").loads(capsys.readouterr().out)["ran"]
+    assert ran >= 2 and started == [min(48, ran)]
+
+
+def test_census_starts_no_more_workers_than_tasks(monkeypatch, tmp_path):
+    from topomark.proofs import census_exec, census_run
+
+    started = []
+    real = census_exec.ProcessPoolExecutor
+
+    def recording(max_workers):
+        started.append(max_workers)
+        return real(max_workers=max_workers)
+
+    monkeypatch.setattr(census_exec, "ProcessPoolExecutor", recording)
+    census_run.sharded_census("directional-vertex", 4, 3, tmp_path, jobs=48, task_worlds=20, shards=3)
+    tasks = len(__import__("json").loads((tmp_path / "manifest.json").read_text())["tasks"])
+    assert tasks < 48 and started == [max(tasks, 3)]  # the map tasks or the 3 reduce tasks, not 48
+
+
+def test_census_progress_never_shows_an_estimate_below_the_count():
+    from topomark.proofs.census_exec import Progress
+
+    bar = Progress(2367, None)
+    bar.done(2000, 2539)
+    line = bar.line()
+    assert "2,539 worlds (more than the ~2,367 estimated)" in line and "/~2,367" not in line
+    bar = Progress(2367, None)
+    bar.done(1000, 1200)
+    assert "1,200/~2,367 worlds" in bar.line()
+
+
+# -- --policy: only the kinds the algorithm's registry entry declares ----------------------------------------
+@pytest.mark.parametrize("algorithm, policy, kind", [
+    ("case-4", "hypothesis=lifo", "hypothesis"), ("case-4", "lifo", "edge"), ("dudek", "hypothesis=lifo", "hypothesis"),
+    ("thread-explore", "hypothesis=lifo", "hypothesis"), ("thread-explore", "edge=fifo", "edge"),
+    ("case-3b", "path=dfs", "path"), ("model-tree", "lifo", "edge"),
+])
+def test_a_policy_the_algorithm_does_not_take_is_refused(capsys, algorithm, policy, kind):
+    refused(capsys, ["explore", "cycle:n=5", "--algorithm", algorithm, "--policy", policy, "--quiet"],
+            f"--policy {policy}", f"the algorithm {algorithm} takes no {kind} policy")
+
+
+@pytest.mark.parametrize("algorithm, policy", [("basic", "hypothesis=lifo"), ("case-3b", "lifo"),
+                                               ("dudek", "edge=fifo"), ("case-1a", "edge=lifo")])
+def test_a_declared_policy_is_accepted_and_recorded(capsys, algorithm, policy):
+    assert main(["explore", "cycle:n=5", "--algorithm", algorithm, "--policy", policy, "--quiet", "--json"]) == 0
+    kind, _, name = policy.rpartition("=")
+    assert __import__("json").loads(capsys.readouterr().out)["policies"][kind or "edge"] == name
+
+
+def test_the_declared_policy_kinds_are_the_ones_each_explorer_consults():
+    """Every registered algorithm declares exactly the policy kinds its explorer asks for on a small world
+    (model-tree, which never asks, is skipped for its run time)."""
+    from topomark.reference.algorithms.registry import REGISTRY
+    from topomark.reference.explorers.policies import Policies
+    from topomark.reference.run.explore import explore
+    from topomark.reference.worlds.argument import resolve_world
+
+    class Spy(Policies):
+        def choose_edge(self, S, dist):
+            self.used.add("edge")
+            return super().choose_edge(S, dist)
+
+        def order_hypotheses(self, hypotheses, lengths):
+            self.used.add("hypothesis")
+            return super().order_hypotheses(hypotheses, lengths)
+
+        def __getattribute__(self, name):
+            if name == "path":
+                object.__getattribute__(self, "used").add("path")
+            return object.__getattribute__(self, name)
+
+    specs = REGISTRY.values() if isinstance(REGISTRY, dict) else REGISTRY
+    for spec in specs:
+        if spec.name == "model-tree":
+            continue
+        spy = Spy()
+        spy.used = set()
+        explore(resolve_world("lattice:rows=3,cols=3"), spec, spy, check=False, record=False)
+        assert sorted(spy.used) == sorted(spec.policy_kinds), spec.name

@@ -158,6 +158,12 @@ class AlgorithmSpec:
         """The kit a kit algorithm is given on a world of n vertices and m edges (its ``kit`` if fixed)."""
         return self.kit if self.kit_fn is None else self.kit_fn(n, m, options)
 
+    @property
+    def policy_kinds(self) -> tuple[str, ...]:
+        """The policy kinds (``edge``, ``hypothesis``, ``path``) this algorithm takes: those its :attr:`options`
+        declare as ``"policy KIND..."``; ``explore --policy`` of any other kind is refused."""
+        return tuple(o.split()[1].partition("=")[0] for o in self.options if o.startswith("policy ") and o.split()[1:])
+
     def parse_options(self, given: dict[str, Any]) -> dict[str, Any]:
         """``given`` (name ↦ value, None meaning not given) checked against :attr:`parameters`, defaults filled
         in; an option this algorithm does not take is bad input naming both."""

@@ -36,6 +36,7 @@ from topomark.reference.explorers.policies import Policies
 from topomark.reference.explorers.lighthouses import lighthouse
 from topomark.reference.algorithms.registry import algorithm_spec
 from topomark.reference.bench.run_store import Appender, locked, read_runs, rewrite, row_key
+from topomark.proofs.census_exec import worker_count
 
 __all__ = ["run_one", "run_sweep", "Progress", "DropCount", "CHAPTER_5_COLUMNS"]
 
@@ -129,7 +130,7 @@ class Progress:
         sys.stderr.flush()
 
 
-def run_sweep(runs: list[Run], out: Path, jobs: int = 0, check: bool = True, progress: bool = True) -> dict:
+def run_sweep(runs: list[Run], out: Path, jobs: int | None = None, check: bool = True, progress: bool = True) -> dict:
     """Run what is not yet in ``out/runs.csv`` (append, one whole row per run); return counts.
 
     The directory is locked for the sweep (a second sweep on it is bad input, exit 2), and the rows a
@@ -169,7 +170,7 @@ def _run_all(todo: list[Run], store: Appender, jobs: int, check: bool, bar: Prog
     else:
         import multiprocessing as mp
         ctx = mp.get_context("fork") if "fork" in mp.get_all_start_methods() else mp.get_context()
-        with ctx.Pool(jobs) as pool:
+        with ctx.Pool(worker_count(jobs, len(todo))) as pool:
             for row in pool.imap_unordered(_worker, [(r, check) for r in todo], chunksize=1):
                 emit(row)
     return failures

@@ -24,7 +24,8 @@ import math
 from topomark.spec.errors import InvalidInput, clip
 from topomark.spec.world import MAX_DEGREE
 
-__all__ = ["MAX_SECONDS", "MAX_COUNT", "SEED_DIGITS", "check_seconds", "check_count", "check_max_degree", "seed"]
+__all__ = ["MAX_SECONDS", "MAX_COUNT", "MAX_JOBS", "SEED_DIGITS", "check_seconds", "check_count", "check_max_degree",
+           "check_jobs", "seed"]
 
 SEED_DIGITS = 18
 """The most digits a ``--seed`` may have, as for the generators' integers and JSON's (MAX_INT_DIGITS): every
@@ -32,6 +33,11 @@ seed is reduced to 64 bits anyway, and a value of thousands of digits only makes
 
 MAX_SECONDS = 7 * 24 * 3600  # one week: longer than any run, far from every overflow
 MAX_COUNT = 10 ** 15  # fits the protocol's integers (spec.jsontext.MAX_INT_DIGITS) and every clock
+
+MAX_JOBS = 256
+"""The most worker processes ``--jobs`` may ask for (``bench``, ``census``): far more than any machine the
+sweeps run on has cores, and few enough that a typo (``--jobs 2000``) is refused instead of forking a
+process per task until the machine runs out of memory."""
 
 
 def check_seconds(value: float, option: str) -> float:
@@ -46,6 +52,19 @@ def check_count(value: int, option: str, maximum: int = MAX_COUNT) -> int:
     """``value`` if it is an integer in [0, maximum]; else InvalidInput naming ``option``."""
     if not 0 <= value <= maximum:
         raise InvalidInput(f"{option} must be >= 0 and at most {maximum}; got {value}")
+    return value
+
+
+def check_jobs(value: int) -> int:
+    """``--jobs``: at least 1 worker process, at most :data:`MAX_JOBS`; else InvalidInput naming the option.
+
+    >>> check_jobs(0)
+    Traceback (most recent call last):
+    ...
+    topomark.spec.errors.InvalidInput: --jobs must be at least 1 and at most 256; got 0
+    """
+    if not 1 <= value <= MAX_JOBS:
+        raise InvalidInput(f"--jobs must be at least 1 and at most {MAX_JOBS}; got {value}")
     return value
 
 

@@ -10,6 +10,7 @@ from topomark.spec.errors import InvalidInput
 
 from topomark.reference.bench.experiments import EXPERIMENTS, HEAVY_GRAPHS, HEAVY_MAX_SIZE, plan, run_sweep, write_report
 from topomark.reference.files.outputs import check_output_dir
+from topomark.reference.cli.args import MAX_JOBS, check_jobs
 
 __all__ = ["register"]
 
@@ -29,7 +30,8 @@ def register(sub) -> None:
     p.add_argument("--heavy-max-size", type=int, default=HEAVY_MAX_SIZE,
                    help=f"largest size for enh5-d2 on complete(-hole) worlds (default {HEAVY_MAX_SIZE})")
     p.add_argument("--sizes", type=int, nargs="+", metavar="SIZE", help="only these sizes (the thesis's n)")
-    p.add_argument("--jobs", type=int, default=0, help="worker processes (default: one per CPU)")
+    p.add_argument("--jobs", type=int, default=None,
+                   help=f"worker processes, 1 to {MAX_JOBS} (default: one per CPU; never more than the runs)")
     p.add_argument("--out", default="bench-out", metavar="DIR", help="output directory (default bench-out)")
     p.add_argument("--no-check", action="store_true", help="skip the checker (rows record verified=False)")
     p.add_argument("--no-plots", action="store_true", help="do not draw plots")
@@ -44,8 +46,8 @@ def bench_command(args) -> int:
         raise InvalidInput(f"unknown experiment {args.experiment!r} (choose from {', '.join(EXPERIMENTS)})")
     if args.graphs < 1 or args.heavy_graphs < 1:
         raise InvalidInput("--graphs and --heavy-graphs must be >= 1")
-    if args.jobs < 0:
-        raise InvalidInput("--jobs must be >= 0")
+    if args.jobs is not None:
+        check_jobs(args.jobs)
     started = time.monotonic()
     runs = plan(args.experiment, args.graphs, args.sizes, args.heavy_graphs, args.heavy_max_size)
     if not runs:

@@ -21,7 +21,7 @@ from topomark.proofs.bisim import bisimulation, check_relation, distinguishing_s
 from topomark.proofs.census import CensusResult, stderr_progress
 from topomark.proofs.census_run import sharded_census
 from topomark.proofs.enumerate import MAX_VERTICES
-from topomark.reference.cli.args import check_max_degree
+from topomark.reference.cli.args import MAX_JOBS, check_jobs, check_max_degree
 from topomark.spec.errors import CheckFailure, InvalidInput
 from topomark.spec.markerclass import MARKER_CLASSES, marker_class
 from topomark.spec.worldfile import load_world, world_to_json
@@ -47,7 +47,7 @@ def register(sub) -> None:
     q.add_argument("--marker", required=True, metavar="CLASS", help="one of: " + ", ".join(MARKER_CLASSES))
     q.add_argument("--max-vertices", type=int, required=True, metavar="N")
     q.add_argument("--max-degree", type=int, required=True, metavar="D")
-    q.add_argument("--jobs", type=int, default=1, metavar="J", help="worker processes (default 1)")
+    q.add_argument("--jobs", type=int, default=1, metavar="J", help=f"worker processes, 1 to {MAX_JOBS} (default 1)")
     q.add_argument("--shards", metavar="DIR", help="keep the map/reduce shards in DIR; a killed census run again "
                    "with the same DIR resumes from its finished tasks (default: a temporary directory)")
     q.add_argument("--scheduler", metavar="ADDRESS", help="run the map and reduce on a Dask cluster "
@@ -106,8 +106,7 @@ def _validate(args: argparse.Namespace) -> None:
         raise InvalidInput(f"--max-vertices {args.max_vertices} is too large: the census enumerates worlds "
                            f"of at most {MAX_VERTICES} vertices")
     check_max_degree(args.max_degree)
-    if args.jobs < 1:
-        raise InvalidInput(f"--jobs must be at least 1, not {args.jobs}")
+    check_jobs(args.jobs)
 
 
 def census_table(result: CensusResult) -> str:

@@ -82,6 +82,16 @@ def parse_policies(items: list[str]) -> Policies:
     return Policies(**chosen)
 
 
+def check_policy_kinds(items: list[str], spec) -> None:
+    """Refuse a ``--policy`` whose kind the algorithm ``spec`` does not declare in its options (exit 2)."""
+    for item in items:
+        kind = item.partition("=")[0] if "=" in item else "edge"
+        if kind not in spec.policy_kinds:
+            takes = (f"its policies: {', '.join(spec.policy_kinds)}" if spec.policy_kinds
+                     else "it takes no --policy")
+            raise InvalidInput(f"--policy {item}: the algorithm {spec.name} takes no {kind} policy ({takes})")
+
+
 class _Progress:
     """Progress on stderr: a one-line bar on a terminal; otherwise, on a long run, a plain line every ``every`` s.
 
@@ -163,6 +173,7 @@ TAIL = 8  # trace records shown before a violation's end record
 def explore_command(args) -> int:
     policies = parse_policies(args.policy)
     spec = algorithm_spec(args.algorithm)
+    check_policy_kinds(args.policy, spec)
     options = {name: getattr(args, f"param_{name.replace('-', '_')}") for name in parameters()}
     for path in (args.trace, args.map):  # before the run: a typo must not cost a long exploration
         if path:

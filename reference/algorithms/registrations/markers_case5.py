@@ -89,17 +89,17 @@ SPECS = (
         name="case-5-v1", thesis="§6.2.1 Case 5 Version-1, Algorithm 6.4 (L1716–L1724, L1728–L1768)",
         kit=Kit(vertex=1), bound="O(m²n) (L1724; O(m·d_max) when every place is marked)",
         markers="K > 3 undirected V-markers, any K (Σ_{k=1}^{n} k mark every place)", deterministic=True,
-        options=("markers",), checks=MARKER_MAP_CHECKS, explorer=VertexCountsThenLighthouse, uses_lighthouse=False,
+        options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=VertexCountsThenLighthouse, uses_lighthouse=False,
         parameters=(MARKERS,), kit_fn=_v1_kit, marker_bound_fn=lambda n, m: sum_to(n), family="robot"),
     AlgorithmSpec(
         name="case-5-v2", thesis="§6.2.1 Case 5 Version-2, Algorithm 6.5 (L1726, L1770, L1776–L1817)",
         kit=Kit(vertex=1, edge=1), bound="O(m²n) (Table 6.1; O(mn) when every place and loop edge is marked, L1770)",
         markers="K > 3 undirected V-E-markers, any K, one pool (m + 4 mark every place and loop edge)",
-        deterministic=True, options=("markers",), checks=MARKER_MAP_CHECKS, explorer=VertexEdgeThenLighthouse,
+        deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=VertexEdgeThenLighthouse,
         uses_lighthouse=False, parameters=(MARKERS,), kit_fn=_v2_kit, marker_bound_fn=v2_markers, family="robot"),
     AlgorithmSpec(
         name="case-0", thesis="§6.2.1 Case 0, n markers, one per visited vertex: fails (L1489–L1491, Figure 6.3)",
-        kit=Kit(vertex=1), bound=None, markers="n undirected V-markers", deterministic=False, options=(),
+        kit=Kit(vertex=1), bound=None, markers="n undirected V-markers", deterministic=False, options=("policy edge",),
         checks=MARKER_MAP_CHECKS, explorer=EveryVertexMarked, uses_lighthouse=False,
         kit_fn=lambda n, m, o: Kit(vertex=n), marker_bound_fn=lambda n, m: n, family="robot"),
 )

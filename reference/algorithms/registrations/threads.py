@@ -96,7 +96,7 @@ _O_MN = "O(mn) (Table 6.3); bound_fn: ours"
 
 SPECS = (
     AlgorithmSpec(name="thread-carried", thesis="§6.3.1, l = ε thread carried and retied (L2032–L2036)",
-                  kit=Kit(thread=0), bound=_O_MN, markers="no marker; a thread of length ε", options=(),
+                  kit=Kit(thread=0), bound=_O_MN, markers="no marker; a thread of length ε", options=("policy edge",),
                   bound_fn=directional_bound, explorer=CarriedThreadExplorer, **_ROBOT),
     AlgorithmSpec(name="thread-circumference",
                   thesis="§6.3.2, Algorithm 6.7 (L2038–L2075; l = c(G), given n: see the docstring)",
