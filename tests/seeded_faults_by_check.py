@@ -38,6 +38,8 @@ closed by a confirmed hypothesis) for Algorithm 3.1 and ``case-4``;
 
 from __future__ import annotations
 
+from abc import ABC, abstractmethod
+
 import copy
 from dataclasses import dataclass, field, replace
 from typing import Any, Callable
@@ -77,7 +79,7 @@ REPORTS: dict[str, tuple[str, ...]] = {
 
 # -- Algorithm 3.1 explorers with one mistake each -------------------------------------------------------------
 
-class _Transient(LighthouseExplorer):
+class _Transient(LighthouseExplorer, ABC):
     """Leaves its public state wrong (``tamper``) while one iteration (``due``) is reported, and puts it right
     as soon as the report is done: the exploration itself stays correct."""
 
@@ -86,8 +88,9 @@ class _Transient(LighthouseExplorer):
     def due(self, it) -> bool:
         return it.number == 1
 
+    @abstractmethod
     def tamper(self, it) -> Callable[[], None]:
-        raise NotImplementedError
+        """Put the public state wrong for iteration ``it``; return what puts it right again."""
 
     def after_join(self, it) -> None:  # the last hook before the iteration is reported
         super().after_join(it)
