@@ -245,9 +245,11 @@ def _option_value(key: str, flag: str, value: Any) -> int:
     if isinstance(value, str) and value.strip().lstrip("-").isdecimal() and value.strip().isascii():
         text = value.strip()
         if len(text.lstrip("-")) > 18:  # int() of thousands of digits is slow, and refused past 4,300
-            raise InvalidInput((f"{flag} must be at least 1" if cap and text.startswith("-") else too_big if cap
-                                else f"{flag} must be an integer of at most 18 digits")
-                               + f"; got {clip(text, 40)}")
+            if cap is None:
+                why = f"{flag} must be an integer of at most 18 digits"
+            else:
+                why = f"{flag} must be at least 1" if text.startswith("-") else too_big
+            raise InvalidInput(f"{why}; got {clip(text, 40)}")
         value = int(text)
     if not isinstance(value, int) or isinstance(value, bool):
         raise InvalidInput(f"{flag} must be an integer, got {clip(repr(value), 60)}")
