@@ -59,22 +59,23 @@ def test_section_5_1_picks_a_corner_and_maps_from_every_start_facing_and_seed(na
 
 
 @pytest.mark.parametrize("name", WORLDS)
-def test_section_5_2_1_scheme_b_returns_a_wrong_map_for_named_seeds(name):
-    """L1348 held for scheme B (``local-degree-list``): from the centre with walk seeds 0 and 1 the robot picks a
-    corner (aperiodic D, but four places share it), believes it is mapping, and the checker finds the wrong map.
-    Scheme A (``local-pair``) on these worlds never returns a map at all: the corner it picks is entered again by
-    an explored entry, the signature inconsistency L1346 names, so it reports ``failed`` (never wrong, never
-    correct) — from every start with seeds 0-1 here."""
+def test_section_5_2_1_detects_its_wrong_loop_closings_on_figure_3_4(name):
+    """L1348: "this approach may generate a wrong world model on the two graphs shown in Figure 3.4" — it may; ours
+    never does, because it detects each wrong loop closing first, as L1346 allows ("detects some signature
+    inconsistencies (due to wrong loop closing) and thus cannot proceed reporting failure").  From every start,
+    facing and walk seeds 0-2 both schemes report ``failed``.  Scheme B from the centre picks a corner (aperiodic
+    D, but four places share it) and at its first step takes a neighbouring corner for the lighthouse: the join
+    would be a self-loop, which no world has (L374).  Scheme A's corner is entered again by an explored entry."""
     world, _ = WORLDS[name]
-    for seed in (0, 1):
-        light = LIGHTHOUSES["local-degree-list"].with_options(seed=seed)
-        out = explore(_from(world, "0"), "basic", lighthouse=light, record=False)
-        assert (out.outcome, out.claimed) == ("wrong-map", "correct"), seed
-        assert world.degree(out.lighthouse_at) == 3  # a corner, one of four alike
     for v in world.vertices:
-        for seed in (0, 1):
-            light = LIGHTHOUSES["local-pair"].with_options(seed=seed)
-            assert explore(_from(world, v), "basic", lighthouse=light, record=False).outcome == "failed", (v, seed)
+        for facing in range(world.degree(v)):
+            for seed in range(3):
+                for scheme in ("local-pair", "local-degree-list"):
+                    light = LIGHTHOUSES[scheme].with_options(seed=seed)
+                    out = explore(_from(world, v, facing), "basic", lighthouse=light, record=False)
+                    assert (out.outcome, out.claimed) == ("failed", "failed") and "L1346" in out.reason, (v, seed)
+    out = explore(_from(world, "0"), "basic", lighthouse="local-degree-list", record=False)
+    assert "self-loop" in out.reason and world.degree(out.lighthouse_at) == 3  # a corner, one of four alike
 
 
 def _completed(world: World, **options) -> tuple:

@@ -118,3 +118,76 @@ def test_e_prime_outside_u_is_a_bug_or_a_failure_by_the_lighthouse(capsys, monke
     got, out, err = run(capsys, "explore", "lattice-hole:rows=4,cols=5,seed=3", "--lighthouse", light, "--quiet")
     assert got == code and words in out + err, (out, err)
     assert ("internal fault" in err) == (code == 3) and "check failed" not in out + err
+
+
+OUTGROWN = {"0": ("2", "5", "4", "3"), "1": ("2", "3"), "2": ("0", "1", "3"), "3": ("1", "0", "4", "2"),
+            "4": ("3", "0", "5"), "5": ("4", "0")}
+"""The first world of networkx's atlas (6 vertices, 9 edges, planar) where §5.2.1's scheme A, from vertex 0 with
+walk seed 1, takes every new place for a new one: its map outgrows the world."""
+
+
+@pytest.mark.parametrize("no_check", [False, True])
+def test_a_map_that_outgrows_the_world_ends_at_the_limit_checked_or_not(capsys, tmp_path, no_check):
+    """L1346 "never terminates (when every newly visited place is always validated as a new place)": once the
+    believed map has more places than the world it can never become the world; the run ends ``limit``, exit 1,
+    the same checked or not, the first wrong join named when checked."""
+    from topomark.spec.world import Start, World
+    from topomark.spec.worldfile import dumps_world
+    (tmp_path / "w.json").write_text(dumps_world(World(OUTGROWN, (), Start("0", "2"))))
+    argv = ["explore", str(tmp_path / "w.json"), "--lighthouse", "local-pair", "--seed", "1", "--walk-limit", "50",
+            "--json", *(["--no-check"] if no_check else [])]
+    assert main(argv) == 1
+    data = json.loads(capsys.readouterr().out)
+    assert (data["outcome"], data["claimed"]) == ("limit", "limit") and "outgrown the world" in data["reason"]
+    assert ("the map had gone wrong before it: I-1 violated" in data["reason"]) != no_check
+
+
+def _stop_at_second_iteration(monkeypatch):
+    from topomark.reference.run.checker import Checker
+    from topomark.spec.errors import CheckFailure, Violation
+    real = Checker.after_iteration
+
+    def after_iteration(self, explorer, it):
+        if it.number == 2:
+            raise CheckFailure(Violation("I-1", "seeded", "a", "b", "iteration 2"))
+        real(self, explorer, it)
+    monkeypatch.setattr(Checker, "after_iteration", after_iteration)
+
+
+def test_the_checker_stops_a_run_under_an_explicit_lighthouse_and_says_it_claimed_nothing(capsys, tmp_path,
+                                                                                         monkeypatch):
+    """Lemma 1 (L548) rules a wrong join out under an explicit lighthouse: the first violation stops the run,
+    ``wrong-map``, exit 1; the algorithm had not finished, so it claimed nothing (``unfinished``), and ``--map``
+    writes nothing, saying why."""
+    _stop_at_second_iteration(monkeypatch)
+    path = tmp_path / "m.json"
+    code, out, _ = run(capsys, "explore", "cycle:n=6", "--json", "--map", str(path))
+    data = json.loads(out)
+    assert code == 1 and (data["outcome"], data["claimed"]) == ("wrong-map", "unfinished")
+    assert data["map_written"] is False and "first violation" in data["map_not_written"] and not path.exists()
+
+
+def test_the_checker_lets_a_marker_less_run_finish_and_names_its_first_violation(capsys, tmp_path, monkeypatch):
+    """Under §5.2.1's lighthouses the thesis predicts wrong joins (L1346): the first violation is kept, the run
+    goes on to the algorithm's own end, and the outcome names that violation; the claimed map is written."""
+    _stop_at_second_iteration(monkeypatch)
+    path = tmp_path / "m.json"
+    code, out, _ = run(capsys, "explore", "lattice-hole:rows=4,cols=4,seed=0", "--lighthouse", "local-degree-list",
+                       "--json", "--map", str(path))
+    data = json.loads(out)
+    assert code == 1 and (data["outcome"], data["claimed"]) == ("wrong-map", "correct")
+    assert data["violation"]["where"] == "seeded" and data["map_written"] is True and path.exists()
+
+
+def test_a_degenerate_join_is_a_bug_under_an_explicit_lighthouse(capsys, monkeypatch):
+    """A join that would make a self-loop (no world has one, L374) under the directional lighthouse: Lemma 1
+    rules it out, so it is topomark's fault, exit 3 — never the checker's verdict."""
+    from types import SimpleNamespace
+    from topomark.reference.explorers.algorithm31 import LighthouseExplorer
+
+    def broken(self):
+        raise self.degenerate(SimpleNamespace(number=1, edge=(0, 1)), (0, 2))
+
+    monkeypatch.setattr(LighthouseExplorer, "step", broken)
+    code, out, err = run(capsys, "explore", "cycle:n=6", "--quiet")
+    assert code == 3 and "self-loop" in err and "Lemma 1" in err and "check failed" not in out + err

@@ -225,16 +225,18 @@ def _write_map(path: str | None, outcome) -> str | None:
     """Write the final map to ``path`` (``--map``); None when written (or not asked for), else why not.
 
     Only a run that ended with a map writes one: an algorithm that stopped (outcome ``failed`` or ``limit``,
-    e.g. §5.1's walk found no lighthouse, L1332) has none, and a run whose map broke a check has none worth
-    keeping.  Either way ``--map`` never changes the exit code: the outcome decides it.
+    e.g. §5.1's walk found no lighthouse, L1332) has none; a run the checker stopped before the algorithm
+    finished (its first violation, under an explicit lighthouse) has none either.  A completed map the checker
+    refutes (``wrong-map``) is written all the same — it is what the algorithm claims, to be compared with the
+    world — and the outcome, never ``--map``, decides the exit code.
     """
     if not path:
         return None
     S = getattr(outcome.explorer, "S", None)
+    if outcome.claimed == "unfinished":
+        return "the checker stopped the run at its first violation, before the algorithm had a map"
     if outcome.claimed != "correct":
         return f"the algorithm stopped without a map (outcome {outcome.outcome})"
-    if outcome.violation is not None:
-        return "the map broke a check"
     if S is None or not S.complete():
         return "the algorithm keeps no single completed map"
     write_output(path, dumps_world(S.to_world()))
@@ -252,7 +254,7 @@ def _print_report(args, spec, label: str, policies, outcome, started: float, tai
         print(f"VIOLATION: {outcome.violation}")
         print("the trace up to that point (last events; --trace FILE keeps all of it):")
         print("\n".join(f"  {line}" for line in tail))
-    elif outcome.claimed != "correct":
+    elif outcome.reason is not None:
         print(f"outcome: {outcome.outcome} — the algorithm stopped: {outcome.reason}")
     elif args.no_check:
         print("not checked (--no-check): the map was not verified")

@@ -174,6 +174,8 @@ class MapWalker(ExplorerState):
         believed pose is the caller's to set: where the robot stands depends on how e' was found."""
         if far not in self.S.unexplored:
             raise self.not_in_u(it, far)
+        if far[0] == it.edge[0] or far[0] in {u for _, u in self.S.joined(it.edge[0])}:
+            raise self.degenerate(it, far)
         self.S.unexplored.remove(far)
         self.S.add_edge(it.edge, far)
         it.kind, it.joined = "loop", (it.edge, far)
@@ -187,6 +189,16 @@ class MapWalker(ExplorerState):
         """
         return inconsistent(getattr(self, "lighthouse", None), f"{self.loop_check}: e' = {far} identified at "
                             f"iteration {it.number} is not in U", self.loop_proof)
+
+    def degenerate(self, it, far: MapDart) -> Exception:
+        """What a loop augmentation raises when e/e' would be a self-loop or a second edge between two places:
+        no world has one (cycles of length ≤ 2 are excluded, §3.1.1, L374), so the explorer's own map is
+        inconsistent — a bug under an explicit lighthouse, a wrong loop closing the thesis predicts under one
+        that is not (L1346)."""
+        kind = "a self-loop" if far[0] == it.edge[0] else "a second edge between two places"
+        return inconsistent(getattr(self, "lighthouse", None), f"{self.loop_check}: joining e = {it.edge} to e' = "
+                            f"{far} at iteration {it.number} would make {kind}, which no world has (L374)",
+                            self.loop_proof)
 
     def non_loop_augment(self, it, sig: Signature, heading: int = 0, sensed: bool = False) -> int:
         """Add v_u (``sig``'s degree) and e, e its exit 0, the rest numbered clockwise and added to U (lines

@@ -27,7 +27,7 @@ import json
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
-from topomark.spec.errors import AlgorithmStopped, CheckFailure, InvalidInput, OutOfMarkers
+from topomark.spec.errors import AlgorithmStopped, CheckFailure, InvalidInput, LimitReached, OutOfMarkers
 from topomark.spec.kit import Kit
 from topomark.spec.marker import EdgeMarker, VertexMarker
 from topomark.spec.markerlayer import MarkerLayer, apply_op
@@ -166,8 +166,7 @@ def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: 
     policies = policies or Policies()
     if check_mode not in Checker.MODES:
         raise InvalidInput(f"unknown check mode {check_mode!r} (choose from {', '.join(Checker.MODES)})")
-    if sink is None and record:
-        sink = ListSink()
+    sink = ListSink() if sink is None and record else sink
     trace = sink.records if isinstance(sink, ListSink) else []
     emit = sink.emit if sink is not None else None
     wanted = getattr(sink, "events", None)  # the record kinds the sink takes (tracesink's docstring); None: all
@@ -189,12 +188,13 @@ def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: 
     sim = Simulator(run.bare, run.state, run.kit, listener=on_move, op_listener=on_op)
     checker = Checker(sim, check_mode, spec.checks, spec) if check else None
 
+    wrong = _WrongJoins(world, run.light)  # the checker's verdict on a lighthouse that may close loops wrongly
+
     def observer(explorer, it):
         if emit and "iteration" in layer and (wanted is None or "iteration" in wanted):
             emit({"event": "iteration", **it.to_json()})
         tally.add(it)  # counted before the check: an iteration that fails it is in explorer.iterations too
-        if checker is not None:
-            checker.after_iteration(explorer, it)
+        wrong.after_iteration(checker, explorer, it)
         if not keep_hypotheses:
             it.hypotheses = []
         if progress is not None:
@@ -202,12 +202,55 @@ def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: 
 
     explorer = spec.factory(sim.robot(), policies, observer, run.light if spec.uses_lighthouse else run.options)
     started: list = []  # the robot's true state once the explorer has started (v0, for a lighthouse algorithm)
-    violation, stopped = _drive(explorer, checker, lambda: started.append(sim.state))
+    violation, stopped = wrong.verdict(*_drive(explorer, checker, lambda: started.append(sim.state)))
     outcome = _outcome(world, sim, explorer, checker, violation, trace, tally, spec, stopped)
     _algorithm_counts(outcome, spec, explorer, world, started[0] if started else None, stopped)
     if emit:
         emit(end_record(outcome))
     return outcome
+
+
+class _WrongJoins:
+    """A wrong loop closing under a lighthouse that is not explicit (§5.2.1): the thesis predicts it, and says
+    what the algorithm then does — it "either detects some signature inconsistencies (due to wrong loop closing)
+    and thus cannot proceed reporting failure, or, never terminates (when every newly visited place is always
+    validated as a new place), or terminates with an incorrect world model" (L1346).
+
+    So under such a lighthouse the checker's first violation after an iteration does not stop the run: it is
+    kept, the per-iteration checks stop, and the algorithm runs on to its own end, which the outcome reports —
+    ``failed`` (the reason names the iteration where the map went wrong), ``wrong-map`` (the first violation),
+    or, once the believed map has more places or edges than the world (it can then never become the world, and
+    every new place is being taken for a new one), ``limit``.  A checked run and an unchecked one end alike.
+    Under an explicit lighthouse the first violation stops the run: Lemma 1 says it cannot happen (L548)."""
+
+    def __init__(self, world: World, light: Lighthouse | None):
+        self.world, self.deferred = world, light is not None and not light.certain
+        self.first = None
+
+    def after_iteration(self, checker: Checker | None, explorer, it) -> None:
+        """The checker's per-iteration checks, until the first violation; then whether the map outgrew G."""
+        try:
+            if checker is not None and self.first is None:
+                checker.after_iteration(explorer, it)
+        except CheckFailure as exc:
+            if not self.deferred:
+                raise
+            self.first = exc.violation
+        S = getattr(explorer, "S", None)
+        if self.deferred and S is not None and (S.n > self.world.n or S.edge_count > self.world.m):
+            raise LimitReached(f"the believed map has outgrown the world ({S.n} places, {S.edge_count} edges; the "
+                               f"world has {self.world.n} and {self.world.m}): every new place is taken for a new "
+                               "one, and the algorithm would never terminate (§5.2.1, L1346)")
+
+    def verdict(self, violation, stopped):
+        """The run's violation and stop, the first deferred violation named."""
+        if self.first is None:
+            return violation, stopped
+        if stopped is not None:
+            note = f"; the map had gone wrong before it: {self.first.check} violated at {self.first.detail}"
+            stopped.reason = f"{stopped.reason}{note}"
+            return None, stopped
+        return self.first, None
 
 
 @dataclass(frozen=True)
@@ -297,7 +340,7 @@ def _outcome(world: World, sim: Simulator, explorer, checker: Checker | None, vi
              tally: _Tally, spec: AlgorithmSpec, stopped: AlgorithmStopped | OutOfMarkers | None) -> Outcome:
     """The counts the CLI reports, from the finished (or stopped) run, and its outcome (``spec.errors.OUTCOMES``):
     what the algorithm claimed, and what the checker, which sees the truth, says it is."""
-    claimed = stopped.outcome if stopped else "correct"
+    claimed = stopped.outcome if stopped else "correct" if explorer.done() else "unfinished"  # the checker stopped it
     verified = checker is not None and violation is None and stopped is None
     judged = claimed if stopped else ("correct" if verified else "wrong-map" if checker is not None else "unchecked")
     light = getattr(explorer, "lighthouse", None)

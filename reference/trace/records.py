@@ -55,7 +55,7 @@ def end_record(outcome) -> dict:
     stops) says how and why."""
     end = {"event": "end", "cost": outcome.cost, "verified": outcome.verified,
            "violation": outcome.violation.to_json() if outcome.violation else None}
-    if outcome.claimed != "correct":
+    if outcome.reason is not None:  # the algorithm stopped itself (failed, limit)
         end.update(outcome=outcome.claimed, reason=outcome.reason)
     return end
 
