@@ -22,8 +22,8 @@ from typing import Sequence
 from topomark.spec.errors import (EXIT_BAD_INPUT, EXIT_CODES_HELP, EXIT_FAULT, EXIT_NEGATIVE, CheckFailure,
                                   InvalidInput, TopomarkFault, clip)
 
-from topomark.reference.cli import (cmd_algorithms, cmd_bench, cmd_count, cmd_distinguish, cmd_explore, cmd_oracle,
-                                    cmd_search, cmd_world)
+from topomark.reference.cli import (cmd_algorithms, cmd_bench, cmd_claims, cmd_count, cmd_distinguish, cmd_explore,
+                                    cmd_oracle, cmd_search, cmd_world)
 from topomark.reference.cli.parser import Parser
 
 __all__ = ["main", "build_parser"]
@@ -33,7 +33,7 @@ STDERR_LIMIT, STDERR_NOTE = 1000, " ({n:,} characters in all)"
 
 # The modules that contribute commands, in --help order: each has register(subparsers).
 COMMAND_MODULES = (cmd_world, cmd_explore, cmd_oracle, cmd_bench, cmd_algorithms, cmd_distinguish, cmd_search,
-                   cmd_count)
+                   cmd_count, cmd_claims)
 
 
 def build_parser() -> argparse.ArgumentParser:
