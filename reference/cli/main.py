@@ -25,6 +25,7 @@ from topomark.spec.errors import (EXIT_BAD_INPUT, EXIT_CODES_HELP, EXIT_FAULT, E
 from topomark.reference.cli import (cmd_algorithms, cmd_bench, cmd_claims, cmd_count, cmd_distinguish, cmd_explore,
                                     cmd_oracle, cmd_search, cmd_world)
 from topomark.reference.cli.parser import Parser
+from topomark.reference.cli.pipes import closed_pipe_safe
 
 __all__ = ["main", "build_parser"]
 
@@ -53,7 +54,12 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    argv = list(sys.argv[1:] if argv is None else argv)
+    """Run one command; its exit code, whether or not anyone still reads stdout (:mod:`.pipes`)."""
+    with closed_pipe_safe():
+        return _main(list(sys.argv[1:] if argv is None else argv))
+
+
+def _main(argv: list[str]) -> int:
     try:
         parser = build_parser()
         if not argv:
@@ -72,8 +78,6 @@ def main(argv: Sequence[str] | None = None) -> int:
     except KeyboardInterrupt:
         print("topomark: interrupted", file=sys.stderr)
         return 130
-    except BrokenPipeError:
-        return 0
     except TopomarkFault as exc:
         return _fault(f"{exc}")
     except Exception as exc:  # noqa: BLE001 - anything else is a bug in topomark, reported as one
