@@ -17,7 +17,9 @@ An :class:`Executor` runs a list of calls ``(function, args)`` and yields
   where no Dask scheduler completes the handshake within
   :data:`CONNECT_TIMEOUT` seconds (nothing listening, or a server that is not
   Dask and never answers) is bad input, and so is a scheduler that has no
-  worker within :data:`WORKER_WAIT` seconds (nothing would ever run).
+  worker within :data:`WORKER_WAIT` seconds: nothing would ever run, and
+  the census reached no verdict, so it is exit 2 (the address names a cluster
+  that cannot run it), not 1 (a verdict).
 
 Dask is optional (``pip install topomark[cluster]``); it is imported only
 when a scheduler is asked for.
