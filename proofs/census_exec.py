@@ -4,12 +4,22 @@ An :class:`Executor` runs a list of calls ``(function, args)`` and yields
 ``(index, result)`` as they finish:
 
 * ``jobs == 1`` and no scheduler — inline, in this process;
-* ``jobs > 1`` — a pool of ``jobs`` local processes;
+* ``jobs > 1`` — a pool of ``jobs`` local processes, which die with the
+  process that started them: on Linux the kernel kills each when its parent
+  dies (``prctl(PR_SET_PDEATHSIG)``), elsewhere each polls its parent every
+  :data:`ORPHAN_POLL` seconds; so SIGKILL, SIGTERM or SIGHUP to the census
+  leaves no worker behind.  Workers ignore SIGINT: the leader takes Ctrl-C
+  (exit 130, as every command) and terminates them;
 * ``scheduler="local"`` — a local Dask cluster of ``jobs`` worker processes;
 * ``scheduler=ADDRESS`` — an existing Dask cluster (``dask scheduler`` /
   ``dask worker ADDRESS``).  Its workers must see the shard directory at the
   same path (a shared file system) and have topomark installed.  An address
-  that does not answer within :data:`CONNECT_TIMEOUT` seconds is bad input.
+  where no Dask scheduler completes the handshake within
+  :data:`CONNECT_TIMEOUT` seconds (nothing listening, or a server that is not
+  Dask and never answers) is bad input, and so is a scheduler that has no
+  worker within :data:`WORKER_WAIT` seconds: nothing would ever run, and
+  the census reached no verdict, so it is exit 2 (the address names a cluster
+  that cannot run it), not 1 (a verdict).
 
 Dask is optional (``pip install topomark[cluster]``); it is imported only
 when a scheduler is asked for.
@@ -23,17 +33,27 @@ Examples
 
 from __future__ import annotations
 
+import asyncio
 import contextlib
+import ctypes
 import logging
+import multiprocessing
+import os
+import signal
+import sys
+import threading
 import time
-from concurrent.futures import ProcessPoolExecutor, as_completed
 from typing import Any, Callable, Iterator
 
 from topomark.spec.errors import InvalidInput
 
-__all__ = ["Executor", "executor", "worker_count", "Progress", "CONNECT_TIMEOUT"]
+__all__ = ["Executor", "executor", "worker_count", "Progress", "CONNECT_TIMEOUT", "WORKER_WAIT", "ORPHAN_POLL",
+           "die_with_leader"]
 
-CONNECT_TIMEOUT = 5  # seconds to reach a Dask scheduler
+CONNECT_TIMEOUT = 5  # seconds to connect to a Dask scheduler and complete its handshake, all told
+WORKER_WAIT = 60  # seconds a Dask scheduler may take to have its first worker
+ORPHAN_POLL = 1.0  # seconds between a worker's checks that its leader lives, where PR_SET_PDEATHSIG is missing
+_PR_SET_PDEATHSIG = 1
 Call = tuple[Callable[..., Any], tuple]
 
 
@@ -45,14 +65,37 @@ class Executor:
             yield i, f(*args)
 
 
+def _watch(leader: int) -> None:
+    while os.getppid() == leader:
+        time.sleep(ORPHAN_POLL)
+    os._exit(1)
+
+
+def die_with_leader(leader: int) -> None:
+    """A pool worker's initializer: die when process ``leader`` (its parent) dies; leave SIGINT to the leader."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    armed = False
+    if sys.platform.startswith("linux"):
+        with contextlib.suppress(OSError, AttributeError):
+            libc = ctypes.CDLL(None, use_errno=True)
+            armed = libc.prctl(_PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0) == 0
+    if os.getppid() != leader:  # the leader died before the signal was armed
+        os._exit(1)
+    if not armed:
+        threading.Thread(target=_watch, args=(leader,), daemon=True).start()
+
+
+def _call(item: tuple[int, Call]) -> tuple[int, Any]:
+    i, (f, args) = item
+    return i, f(*args)
+
+
 class _Pool(Executor):
-    def __init__(self, pool: ProcessPoolExecutor):
+    def __init__(self, pool):
         self.pool = pool
 
     def run(self, calls: list[Call]) -> Iterator[tuple[int, Any]]:
-        futures = {self.pool.submit(f, *args): i for i, (f, args) in enumerate(calls)}
-        for fut in as_completed(futures):
-            yield futures[fut], fut.result()
+        yield from self.pool.imap_unordered(_call, list(enumerate(calls)), chunksize=1)
 
 
 class _Dask(Executor):
@@ -84,13 +127,51 @@ def _dask(jobs: int, scheduler: str) -> Iterator[Executor]:
                 distributed.Client(cluster) as client:  # silenced: workers log a closed scheduler on shutdown
             yield _Dask(client)
         return
+    _handshake(scheduler)
     try:
         client = distributed.Client(scheduler, timeout=CONNECT_TIMEOUT)
     except Exception as e:  # OSError/TimeoutError when unreachable, ValueError/TypeError for a malformed address
         raise InvalidInput(f"cannot reach the Dask scheduler at {scheduler!r} within {CONNECT_TIMEOUT} s "
                            f"({type(e).__name__}: {str(e)[:200]})") from None
     with client:
+        try:
+            client.wait_for_workers(1, timeout=WORKER_WAIT)
+        except TimeoutError:
+            raise InvalidInput(f"the Dask scheduler at {scheduler!r} has had no worker for {WORKER_WAIT} s, so "
+                               f"nothing would run; start one with: dask worker {scheduler}") from None
         yield _Dask(client)
+
+
+def _handshake(address: str) -> None:
+    """Connect to ``address`` and ask who it is, all within CONNECT_TIMEOUT; InvalidInput unless a Dask scheduler
+    answers.  (``distributed.Client``'s own timeout does not cover a server that accepts and never answers.)"""
+    from distributed.comm import connect
+
+    async def identity():
+        comm = await connect(address, timeout=CONNECT_TIMEOUT)
+        try:
+            await comm.write({"op": "identity", "reply": True})
+            return await comm.read()
+        finally:
+            comm.abort()
+
+    def ask(box: dict) -> None:
+        try:
+            box["reply"] = asyncio.run(asyncio.wait_for(identity(), CONNECT_TIMEOUT))
+        except BaseException as e:  # noqa: BLE001 - reported below as unreachable
+            box["error"] = e
+
+    box: dict[str, Any] = {}
+    thread = threading.Thread(target=ask, args=(box,), daemon=True)  # its own event loop, whatever the caller runs
+    thread.start()
+    thread.join(CONNECT_TIMEOUT + 5)
+    reply, error = box.get("reply"), box.get("error")
+    if error is not None or thread.is_alive():
+        why = "no answer" if error is None or isinstance(error, TimeoutError) else \
+            f"{type(error).__name__}: {str(error)[:200]}"
+        raise InvalidInput(f"cannot reach the Dask scheduler at {address!r} within {CONNECT_TIMEOUT} s ({why})")
+    if not isinstance(reply, dict) or reply.get("type") != "Scheduler":
+        raise InvalidInput(f"{address!r} answered, but not as a Dask scheduler ({str(reply)[:100]})")
 
 
 def worker_count(jobs: int, tasks: int) -> int:
@@ -118,9 +199,10 @@ def executor(jobs: int, scheduler: str | None, tasks: int | None = None) -> Iter
             yield ex
     elif jobs == 1:
         yield Executor()
-    else:
-        with ProcessPoolExecutor(max_workers=jobs) as pool:
-            yield _Pool(pool)
+    else:  # fork, as bench's pool: the workers start at once and need nothing pickled but the calls
+        ctx = multiprocessing.get_context("fork" if "fork" in multiprocessing.get_all_start_methods() else None)
+        with ctx.Pool(jobs, initializer=die_with_leader, initargs=(os.getpid(),)) as pool:
+            yield _Pool(pool)  # leaving the block (a result, an error, Ctrl-C) terminates the workers
 
 
 class Progress:

@@ -50,7 +50,9 @@ import numpy as np
 
 from topomark.proofs.census import machine, marker_key, marker_layouts, minimise
 from topomark.proofs.census_language import start_digests
-from topomark.proofs.census_shards import combine, done_path, map_path, records, shard_of, write_atomic, write_json
+from topomark.proofs.census_integrity import code_version
+from topomark.proofs.census_shards import (combine, digest, done_path, map_path, records, seal, shard_of, write_atomic,
+                                           write_json)
 from topomark.proofs.enumerate import connected_graphs, graph_automorphisms, world_of_rotation
 from topomark.spec.world import World
 
@@ -249,9 +251,10 @@ def world_records(class_name: str, world_id: tuple[int, int, int], world: World,
 
 
 def run_map(root: str, task: int, class_name: str, max_degree: int, units: list[Unit],
-            shards: int) -> dict[str, Any]:
-    """Run map task ``task`` into directory ``root``; returns (and writes) its ``done`` record:
-    ``{"sizes": {n: [worlds, placements]}, "offsets": shard boundaries in its data file}``."""
+            shards: int, census: str = "") -> dict[str, Any]:
+    """Run map task ``task`` of census ``census`` (the manifest's checksum) into directory ``root``; returns
+    (and writes) its ``done`` record: ``{"sizes": {n: [worlds, placements]}, "offsets": shard boundaries in its
+    data file}``, with the data's size and checksum (:mod:`topomark.proofs.census_integrity`)."""
     rows: list[tuple] = []
     sizes: dict[int, list[int]] = {}
     for unit in units:
@@ -265,7 +268,10 @@ def run_map(root: str, task: int, class_name: str, max_degree: int, units: list[
     order = np.argsort(where, kind="stable")
     bounds = np.searchsorted(where[order], np.arange(shards + 1))
     path = Path(root)
-    write_atomic(map_path(path, task), recs[order].tobytes())
-    result = {"sizes": {str(n): v for n, v in sizes.items()}, "offsets": [int(b) for b in bounds]}
+    data = recs[order].tobytes()
+    write_atomic(map_path(path, task), data)
+    result = seal({"sizes": {str(n): v for n, v in sizes.items()}, "offsets": [int(b) for b in bounds],
+                   "records": len(recs), "bytes": len(data), "data": digest(data), "census": census, "task": task,
+                   "code": code_version()})
     write_json(done_path(path, task), result)
     return result

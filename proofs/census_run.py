@@ -6,10 +6,13 @@ compares them), but its memory is set by the shard size, not by the number of
 worlds, and a killed run resumes:
 
 1. plan the map tasks (:func:`topomark.proofs.census_map.plan`) and write the
-   manifest — or, if the directory already holds one, check it describes the
-   same census and keep its plan;
-2. run every map task without a ``done`` file (:func:`~topomark.proofs.census_map.run_map`);
-3. reduce every shard without a ``reduce`` file (:func:`reduce_shard`);
+   manifest — or, if the directory already holds one, verify it describes the
+   same census, written by the same code, and keep its plan;
+2. run every map task without a ``done`` file, or whose files fail their
+   checks (:func:`~topomark.proofs.census_map.run_map`;
+   :mod:`~topomark.proofs.census_integrity` says what is checked);
+3. reduce every shard without a ``reduce`` file, or whose file fails its
+   checks (:func:`reduce_shard`);
 4. merge the shard summaries, rebuild the smallest counterexample from its
    record and re-check it with bisimulation and ``find_isomorphism``.
 
@@ -28,7 +31,9 @@ Examples
 
 from __future__ import annotations
 
+import json
 import os
+import sys
 import time
 from pathlib import Path
 from typing import Any, Callable
@@ -36,8 +41,10 @@ from typing import Any, Callable
 from topomark.proofs.census import CensusResult, SizeRow, recheck_pair
 from topomark.proofs.census_exec import Executor, Progress, executor
 from topomark.proofs.census_map import plan, run_map, world_at
-from topomark.proofs.census_shards import (FORMAT, done_path, merge_summaries, read_json, read_shard, reduce_path,
-                                           summary, write_json)
+from topomark.proofs.census_integrity import (Damaged, check_done, check_reduce, code_version, inputs_digest,
+                                              read_record_text)
+from topomark.proofs.census_shards import (FORMAT, done_path, merge_summaries, read_shard, reduce_path, seal, summary,
+                                           write_json)
 from topomark.spec.errors import InvalidInput
 from topomark.spec.markerclass import marker_class
 
@@ -45,6 +52,10 @@ __all__ = ["sharded_census", "reduce_shard", "default_shards", "prepare"]
 
 PLACEMENTS_PER_WORLD = 100  # a generous average, to size shards
 RECORDS_PER_SHARD = 2_000_000  # ~100 MB of records per shard at most
+
+
+def _stderr(line: str) -> None:
+    print(line, file=sys.stderr, flush=True)
 
 
 def default_shards(estimated_worlds: int) -> int:
@@ -66,65 +77,121 @@ def _writable(root: Path) -> None:
         raise InvalidInput(f"shard directory {str(root)!r} is not writable: {e.strerror or e}") from None
 
 
+def _read_manifest(path: Path, params: dict[str, Any]) -> dict[str, Any]:
+    """The manifest in ``path`` if every check of :mod:`~topomark.proofs.census_integrity` holds; else exit 2."""
+    try:
+        text = path.read_bytes().decode("utf-8")
+        raw = json.loads(text)
+    except (OSError, UnicodeDecodeError, ValueError) as e:
+        raise InvalidInput(f"{path}: not a census manifest ({getattr(e, 'strerror', None) or e})") from None
+    if isinstance(raw, dict) and raw.get("format") == "topomark/census-shards@1":
+        raise InvalidInput(f"{path}: written by an older topomark in format topomark/census-shards@1, whose shards "
+                           f"carry no checksums and cannot be verified; remove {path.parent} or choose an empty "
+                           f"directory (the census starts over)")
+    if not isinstance(raw, dict) or raw.get("format") != FORMAT:
+        raise InvalidInput(f"{path}: not a {FORMAT} manifest")
+    try:
+        manifest = read_record_text(text)
+    except Damaged as e:
+        raise InvalidInput(f"{path}: damaged: {e}; remove {path.parent} or choose an empty directory") from None
+    if manifest.get("code") != code_version():
+        raise InvalidInput(f"{path}: written by {manifest.get('code')!r}, not by this {code_version()!r}; its shards "
+                           f"may differ from what this code writes: remove {path.parent} or choose an empty directory")
+    if manifest.get("params") != params:
+        raise InvalidInput(f"{path.parent} holds the shards of another census ({manifest.get('params')}); "
+                           f"use an empty directory or the same options")
+    tw = manifest.get("task_worlds")
+    if type(tw) is not int or tw < 1 or type(manifest.get("shards")) is not int or not 1 <= manifest["shards"] <= 4096 \
+            or manifest.get("tasks") != _plan(params, tw):
+        raise InvalidInput(f"{path}: damaged: its task list or shard count is not the plan of its parameters")
+    return manifest
+
+
+def _plan(params: dict[str, Any], task_worlds: int) -> list:
+    tasks = plan(params["max_vertices"], params["max_degree"], params["min_vertices"], task_worlds)
+    return [[[list(unit), est] for unit, est in task] for task in tasks]
+
+
 def prepare(root: Path, params: dict[str, Any], task_worlds: int, shards: int | None) -> dict[str, Any]:
-    """The manifest of ``root``: read (resume) if present and matching ``params``, else planned and written."""
+    """The manifest of ``root``: read and verified (resume) if present, else planned and written."""
     _writable(root)
     path = root / "manifest.json"
     if path.exists():
-        try:
-            manifest = read_json(path)
-        except (OSError, ValueError) as e:
-            raise InvalidInput(f"{path}: not a census manifest ({e})") from None
-        if not isinstance(manifest, dict) or manifest.get("format") != FORMAT:
-            raise InvalidInput(f"{path}: not a {FORMAT} manifest")
-        if manifest.get("params") != params:
-            raise InvalidInput(f"{root} holds the shards of another census ({manifest.get('params')}); "
-                               f"use an empty directory or the same options")
-        return manifest
-    tasks = plan(params["max_vertices"], params["max_degree"], params["min_vertices"], task_worlds)
+        return _read_manifest(path, params)
+    tasks = _plan(params, task_worlds)
     estimated = sum(est for task in tasks for _, est in task)
-    manifest = {"format": FORMAT, "params": params, "shards": shards or default_shards(estimated),
-                "estimated_worlds": estimated,
-                "tasks": [[[list(unit), est] for unit, est in task] for task in tasks]}
+    manifest = seal({"format": FORMAT, "code": code_version(), "params": params, "task_worlds": task_worlds,
+                     "shards": shards or default_shards(estimated), "estimated_worlds": estimated, "tasks": tasks})
     write_json(path, manifest)
     return manifest
 
 
 def reduce_shard(root: str, shard: int, slices: list[tuple[int, int, int]], min_n: int, max_n: int,
-                 all_pairs: bool) -> dict[str, Any]:
-    """Reduce one shard from its ``(task, first record, count)`` slices: write and return its summary."""
-    result = summary(read_shard(Path(root), slices), min_n, max_n, all_pairs)
+                 all_pairs: bool, census: str = "", inputs: str = "") -> dict[str, Any]:
+    """Reduce one shard from its ``(task, first record, count)`` slices: write and return its summary
+    (a record of census ``census`` over map data of digest ``inputs``)."""
+    result = seal({**summary(read_shard(Path(root), slices), min_n, max_n, all_pairs), "census": census,
+                   "shard": shard, "inputs": inputs})
     write_json(reduce_path(Path(root), shard), result)
     return result
 
 
-def _map_phase(ex: Executor, root: Path, manifest: dict[str, Any], progress: Progress) -> None:
+def _verified_done(root: Path, manifest: dict[str, Any], note: Callable[[str], None]) -> dict[int, dict[str, Any]]:
+    """The map tasks whose records and data pass every check; a damaged one is reported and left to be redone."""
+    good = {}
+    for t in range(len(manifest["tasks"])):
+        if done_path(root, t).exists():
+            try:
+                good[t] = check_done(root, t, manifest["checksum"], manifest)
+            except Damaged as e:
+                note(f"census: {done_path(root, t)}: {e}; mapping task {t} again")
+    return good
+
+
+def _map_phase(ex: Executor, root: Path, manifest: dict[str, Any], progress: Progress,
+               note: Callable[[str], None]) -> list[dict[str, Any]]:
     p = manifest["params"]
+    done = _verified_done(root, manifest, note)
     todo = []
     for t, task in enumerate(manifest["tasks"]):
         est = sum(e for _, e in task)
-        if done_path(root, t).exists():
-            progress.skip(est, sum(w for w, _ in read_json(done_path(root, t))["sizes"].values()))
+        if t in done:
+            progress.skip(est, sum(w for w, _ in done[t]["sizes"].values()))
         else:
             todo.append((t, est, [tuple(u) for u, _ in task]))
-    calls = [(run_map, (str(root), t, p["marker"], p["max_degree"], units, manifest["shards"])) for t, _, units in todo]
+    calls = [(run_map, (str(root), t, p["marker"], p["max_degree"], units, manifest["shards"], manifest["checksum"]))
+             for t, _, units in todo]
     for i, result in ex.run(calls):
+        t = todo[i][0]
+        try:  # what a worker wrote, checked as a resume would check it
+            done[t] = check_done(root, t, manifest["checksum"], manifest)
+        except Damaged as e:
+            raise InvalidInput(f"{done_path(root, t)}: {e}, just after task {t} ran (another process or another "
+                               f"topomark version wrote it)") from None
         progress.done(todo[i][1], sum(w for w, _ in result["sizes"].values()))
+    return [done[t] for t in range(len(manifest["tasks"]))]
 
 
 def _reduce_phase(ex: Executor, root: Path, manifest: dict[str, Any], done: list[dict[str, Any]],
-                  all_pairs: bool) -> list[dict[str, Any]]:
+                  all_pairs: bool, note: Callable[[str], None]) -> list[dict[str, Any]]:
     p = manifest["params"]
+    sizes = p["max_vertices"] - p["min_n"] + 1
     out: dict[int, dict[str, Any]] = {}
     calls, which = [], []
     for s in range(manifest["shards"]):
-        part = read_json(reduce_path(root, s)) if reduce_path(root, s).exists() else None
-        if part is not None and (not all_pairs or "pairs" in part):
-            out[s] = part
-        else:
-            slices = [(t, d["offsets"][s], d["offsets"][s + 1] - d["offsets"][s]) for t, d in enumerate(done)]
-            calls.append((reduce_shard, (str(root), s, slices, p["min_n"], p["max_vertices"], all_pairs)))
-            which.append(s)
+        inputs = inputs_digest(done, s)
+        if reduce_path(root, s).exists():
+            try:
+                part = check_reduce(root, s, manifest["checksum"], inputs, sizes)
+                if not all_pairs or "pairs" in part:
+                    out[s] = part
+                    continue
+            except Damaged as e:
+                note(f"census: {reduce_path(root, s)}: {e}; reducing shard {s} again")
+        slices = [(t, d["offsets"][s], d["offsets"][s + 1] - d["offsets"][s]) for t, d in enumerate(done)]
+        calls.append((reduce_shard, (str(root), s, slices, p["min_n"], p["max_vertices"], all_pairs,
+                                     manifest["checksum"], inputs)))
+        which.append(s)
     for i, result in ex.run(calls):
         out[which[i]] = result
     return [out[s] for s in sorted(out)]
@@ -145,26 +212,31 @@ def _rows(manifest: dict[str, Any], total: dict[str, Any], done: list[dict[str, 
 def sharded_census(class_name: str, max_vertices: int, max_degree: int, root: str | os.PathLike,
                    jobs: int = 1, scheduler: str | None = None, min_vertices: int = 2,
                    progress: Callable[[str], None] | None = None, task_worlds: int = 2000,
-                   shards: int | None = None, verify_all: bool = False) -> CensusResult:
+                   shards: int | None = None, verify_all: bool = False,
+                   note: Callable[[str], None] = _stderr) -> CensusResult:
     """The census of ``class_name`` as map and reduce over shards in directory ``root`` (resumed if present).
 
     ``jobs`` local worker processes (1: inline), or ``scheduler``: a Dask
     scheduler address or ``"local"``.  ``verify_all`` re-checks the two
     smallest members of every ambiguous class, as :func:`census` does.
+    A resume verifies every file before it trusts it
+    (:mod:`~topomark.proofs.census_integrity`); a damaged task or shard is
+    computed again and reported through ``note`` (standard error).
+    ``task_worlds`` and ``shards`` apply to a new directory; a resume keeps
+    the manifest's.
     """
     marker_class(class_name)
     t0 = time.perf_counter()
     min_n = max(min_vertices, 2)
     params = {"marker": class_name, "max_vertices": max_vertices, "max_degree": max_degree,
               "min_vertices": min_vertices, "min_n": min_n}
-    path = Path(root)
+    path = Path(root).absolute()  # workers elsewhere (a Dask cluster) may run in another directory
     manifest = prepare(path, params, task_worlds, shards)
     with executor(jobs, scheduler, tasks=max(len(manifest["tasks"]), manifest["shards"])) as ex:
         bar = Progress(manifest["estimated_worlds"], progress)
-        _map_phase(ex, path, manifest, bar)
+        done = _map_phase(ex, path, manifest, bar, note)
         bar.finish()
-        done = [read_json(done_path(path, t)) for t in range(len(manifest["tasks"]))]
-        total = merge_summaries(_reduce_phase(ex, path, manifest, done, verify_all))
+        total = merge_summaries(_reduce_phase(ex, path, manifest, done, verify_all, note))
     rows = _rows(manifest, total, done)
 
     def rebuild(member: list[int]):

@@ -6,13 +6,20 @@ task writes its (digest, member) records split by digest into ``S`` shards,
 and every shard is reduced on its own, so memory is set by the shard size,
 not by the number of worlds.
 
-On-disk format (``topomark/census-shards@1``), all in one directory::
+On-disk format (``topomark/census-shards@2``), all in one directory::
 
-    manifest.json          the census parameters, S and the task list (written once, atomically)
+    manifest.json          the census parameters, the code version, S and the task list (written once, atomically)
     map-T.bin              records of map task T (little-endian, RECORD dtype), ordered by shard
-    map-T.done.json        task T finished: {"sizes": {n: [worlds, placements]}, "offsets": [S + 1 ints]}
+    map-T.done.json        task T finished: {"sizes": {n: [worlds, placements]}, "offsets": [S + 1 ints],
+                           "records", "bytes", "data": BLAKE2b of map-T.bin, "census", "task", "code"}
                            (shard S's records are records offsets[S] .. offsets[S+1]-1); written last
-    reduce-S.json          the summary of shard S (see :func:`summary`)
+    reduce-S.json          the summary of shard S (see :func:`summary`), with "census", "shard" and
+                           "inputs" (a digest of the map data it summarised)
+
+Every JSON file is a *record* carrying ``"checksum"``, the BLAKE2b of the
+rest of it (:func:`seal`); ``"census"`` is the manifest's checksum, so a file
+of another census is recognised.  What a resume checks before it trusts a
+file is :mod:`topomark.proofs.census_integrity`.
 
 One data file per task (not per task and shard) keeps the file count at 2 per
 task when S is in the hundreds.  Every file is written to ``NAME.tmp-PID`` and
@@ -50,6 +57,7 @@ Examples
 
 from __future__ import annotations
 
+import hashlib
 import json
 import os
 from pathlib import Path
@@ -57,10 +65,13 @@ from typing import Any, Iterable
 
 import numpy as np
 
-__all__ = ["FORMAT", "RECORD", "records", "combine", "summary", "merge_summaries", "shard_of", "write_atomic",
-           "write_json", "read_json", "map_path", "done_path", "reduce_path", "read_shard"]
+from topomark.spec.errors import InvalidInput
 
-FORMAT = "topomark/census-shards@1"
+__all__ = ["FORMAT", "RECORD", "records", "combine", "summary", "merge_summaries", "shard_of", "write_atomic",
+           "write_json", "read_json", "map_path", "done_path", "reduce_path", "read_shard", "checksum", "seal",
+           "digest"]
+
+FORMAT = "topomark/census-shards@2"
 RECORD = np.dtype([("d0", "<u8"), ("d1", "<u8"), ("mask", "<u4"), ("n", "u1"), ("m", "u1"), ("gi", "<u4"),
                    ("ri", "<u4"), ("k", "<u4"), ("i0", "<u8"), ("i1", "<u8")])
 _MEMBER = ("n", "m", "gi", "ri", "k")
@@ -181,12 +192,39 @@ def reduce_path(root: Path, shard: int) -> Path:
     return root / f"reduce-{shard}.json"
 
 
+def digest(data: bytes) -> str:
+    """The BLAKE2b-256 of ``data``, in hex: the checksum of every file of the format.
+
+    >>> digest(b"")[:16]
+    '0e5751c026e543b2'
+    """
+    return hashlib.blake2b(data, digest_size=32).hexdigest()
+
+
+def checksum(record: dict[str, Any]) -> str:
+    """The digest of a record's canonical JSON, leaving out its own ``"checksum"``."""
+    rest = {k: v for k, v in record.items() if k != "checksum"}
+    return digest(json.dumps(rest, sort_keys=True, separators=(",", ":")).encode())
+
+
+def seal(record: dict[str, Any]) -> dict[str, Any]:
+    """``record`` with its ``"checksum"``.
+
+    >>> r = seal({"a": 1}); r["checksum"] == checksum({"a": 1}) and checksum(r) == r["checksum"]
+    True
+    """
+    return {**record, "checksum": checksum(record)}
+
+
 def write_atomic(path: Path, data: bytes) -> None:
     """Write ``data`` to a temporary name, then rename: a file that exists is complete."""
     tmp = path.with_name(f"{path.name}.tmp-{os.getpid()}")
-    with open(tmp, "wb") as f:
-        f.write(data)
-    os.replace(tmp, path)
+    try:
+        with open(tmp, "wb") as f:
+            f.write(data)
+        os.replace(tmp, path)
+    except OSError as e:
+        raise InvalidInput(f"cannot write {path}: {e.strerror or e}") from None
 
 
 def write_json(path: Path, data: Any) -> None:
@@ -198,7 +236,18 @@ def read_json(path: Path) -> Any:
 
 
 def read_shard(root: Path, slices: list[tuple[int, int, int]]) -> np.ndarray:
-    """One shard's records: ``(task, first record, count)`` per map task (all tasks done)."""
-    parts = [np.fromfile(map_path(root, t), RECORD, count=count, offset=first * RECORD.itemsize)
-             for t, first, count in slices if count]
+    """One shard's records: ``(task, first record, count)`` per map task (all tasks done).
+
+    ``np.fromfile`` returns a short read without complaint, so the file's
+    size is checked first: a file too short for its slice is refused, naming it.
+    """
+    parts = []
+    for t, first, count in slices:
+        if count:
+            path = map_path(root, t)
+            size = path.stat().st_size if path.is_file() else -1
+            if size < (first + count) * RECORD.itemsize:
+                raise InvalidInput(f"{path}: holds {max(size, 0)} bytes, too few for records {first}..{first + count - 1}"
+                                   f" (the file changed after it was verified)")
+            parts.append(np.fromfile(path, RECORD, count=count, offset=first * RECORD.itemsize))
     return np.concatenate(parts) if parts else np.zeros(0, RECORD)

@@ -210,13 +210,17 @@ def test_census_starts_no_more_workers_than_tasks(monkeypatch, tmp_path):
     from topomark.proofs import census_exec, census_run
 
     started = []
-    real = census_exec.ProcessPoolExecutor
+    real = census_exec.multiprocessing.get_context
 
-    def recording(max_workers):
-        started.append(max_workers)
-        return real(max_workers=max_workers)
+    class Recording:
+        def __init__(self, ctx):
+            self.ctx = ctx
 
-    monkeypatch.setattr(census_exec, "ProcessPoolExecutor", recording)
+        def Pool(self, processes, **kw):
+            started.append(processes)
+            return self.ctx.Pool(processes, **kw)
+
+    monkeypatch.setattr(census_exec.multiprocessing, "get_context", lambda *a: Recording(real(*a)))
     census_run.sharded_census("directional-vertex", 4, 3, tmp_path, jobs=48, task_worlds=20, shards=3)
     tasks = len(__import__("json").loads((tmp_path / "manifest.json").read_text())["tasks"])
     assert tasks < 48 and started == [max(tasks, 3)]  # the map tasks or the 3 reduce tasks, not 48

@@ -19,6 +19,7 @@ from typing import Any
 
 from topomark.proofs.bisim import bisimulation, check_relation, distinguishing_sequence
 from topomark.proofs.census import CensusResult, stderr_progress
+from topomark.proofs.census_exec import CONNECT_TIMEOUT, WORKER_WAIT
 from topomark.proofs.census_run import sharded_census
 from topomark.proofs.enumerate import MAX_VERTICES
 from topomark.reference.cli.args import MAX_JOBS, check_jobs, check_max_degree
@@ -43,15 +44,21 @@ def register(sub) -> None:
                        description="For every embedded world with 2..N vertices and max degree D (up to "
                                    "extended isomorphism), every placement of the marker class and every start, "
                                    "group placements by the robot's language. Exit 0 if no two non-isomorphic "
-                                   "marked worlds are indistinguishable, 1 if some are, 2 on bad input.")
+                                   "marked worlds are indistinguishable, 1 if some are, 2 on bad input, 130 when "
+                                   "interrupted. A resumed census verifies every shard file (checksums, census "
+                                   "parameters, code version) before trusting it: a damaged task or shard is "
+                                   "computed again (said on stderr); a damaged, older-format or other census's "
+                                   "manifest is exit 2 naming it. Worker processes die with the census.")
     q.add_argument("--marker", required=True, metavar="CLASS", help="one of: " + ", ".join(MARKER_CLASSES))
     q.add_argument("--max-vertices", type=int, required=True, metavar="N")
     q.add_argument("--max-degree", type=int, required=True, metavar="D")
     q.add_argument("--jobs", type=int, default=1, metavar="J", help=f"worker processes, 1 to {MAX_JOBS} (default 1)")
     q.add_argument("--shards", metavar="DIR", help="keep the map/reduce shards in DIR; a killed census run again "
-                   "with the same DIR resumes from its finished tasks (default: a temporary directory)")
+                   "with the same DIR resumes from its finished, verified tasks (default: a temporary directory)")
     q.add_argument("--scheduler", metavar="ADDRESS", help="run the map and reduce on a Dask cluster "
-                   "(tcp://host:8786), or 'local' for a local Dask cluster of J workers (needs topomark[cluster])")
+                   "(tcp://host:8786), or 'local' for a local Dask cluster of J workers (needs topomark[cluster]); "
+                   f"exit 2 if no Dask scheduler answers at ADDRESS within {CONNECT_TIMEOUT} s, or it has no "
+                   f"worker within {WORKER_WAIT} s")
     q.add_argument("--json", action="store_true", help="machine-readable output")
     q.set_defaults(handler=census_command)
 
