@@ -416,8 +416,9 @@ def test_registry_names_and_parameters():
         w = g.generate(name)
         assert isinstance(w, World)
         assert w == g.GENERATORS[name](**params)
-    assert g.generate("wheel-a") == g.wheel_pair()[0]
-    assert g.generate("wheel-b") == g.wheel_pair()[1]
+    assert g.generate("wheel-a", marker="undirected") == g.wheel_pair()[0]
+    assert g.generate("wheel-a") == g.wheel_a(marker="none")  # bare by default: every command accepts it
+    assert g.generate("wheel-b", marker="undirected") == g.wheel_pair()[1]
 
 
 def test_generate_params_and_coercion():

@@ -119,14 +119,15 @@ def test_a_written_figure_3_6_wheel_is_explored(tmp_path, capsys):
 
 
 def test_figure_3_4_wheel_says_what_to_do(tmp_path, capsys):
-    """Figure 3.4's wheel keeps its undirected marker (§3.2.2); the written file and the generator text are refused
-    alike, with the way out in the message."""
+    """The wheels are written bare by default (every command takes them, see test_every_generator_everywhere);
+    Figure 3.4's undirected centre marker, asked for, is refused by a lighthouse algorithm alike from the file
+    and from the generator text, with the way out in the message."""
     path = tmp_path / "w.json"
-    assert main(["world", "wheel-a", "-o", str(path)]) == 0
+    assert main(["world", "wheel-a:marker=undirected", "-o", str(path)]) == 0
     capsys.readouterr()
     texts = [refused(capsys, ["explore", where, "--quiet"], "only a directional vertex marker",
                      "wheel-a:marker=directional", "marker=none", "--lighthouse")
-             for where in (str(path), "wheel-a")]
+             for where in (str(path), "wheel-a:marker=undirected")]
     assert texts[0] == texts[1]
     refused(capsys, ["world", "wheel-a:marker=sideways"], "marker must be one of undirected, directional, none")
 

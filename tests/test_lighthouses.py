@@ -111,8 +111,8 @@ def test_the_map_file_shows_the_markers_where_the_robot_dropped_them(tmp_path, c
 @pytest.mark.parametrize("argv, message", [
     (["cycle:n=5", "--lighthouse", "sideways"], "unknown lighthouse 'sideways'"),
     (["chain:n=3", "--lighthouse", "three-undirected-edge"], "needs a start vertex of degree >= 2"),
-    (["wheel-a", "--lighthouse", "vertex-and-edge"], "carries 1 of the 2 markers"),
-    (["wheel-a", "--lighthouse", "directional-edge"], "cannot use the marker"),
+    (["wheel-a:marker=undirected", "--lighthouse", "vertex-and-edge"], "carries 1 of the 2 markers"),
+    (["wheel-a:marker=undirected", "--lighthouse", "directional-edge"], "cannot use the marker"),
 ])
 def test_a_lighthouse_the_world_cannot_take_is_bad_input(argv, message, capsys):
     assert main(["explore", *argv, "--quiet"]) == 2

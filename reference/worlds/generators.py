@@ -121,8 +121,10 @@ PARAMETERS: dict[str, dict[str, Any]] = {
     "complete-hole": {"n": 8, "fraction": 0.1, "seed": 0},
     "small-world": {"n": 20, "k": 4, "p": 0.1, "seed": 0},
     "random": {"n": 10, "fraction": 0.3, "seed": 0},
-    "wheel-a": {"marker": "undirected"},  # Figure 3.4; marker=directional: Figure 3.6 (proofs.wheels.WHEEL_MARKERS)
-    "wheel-b": {"marker": "undirected"},
+    # The wheels bare by default, as every command that takes a world accepts them (a lighthouse algorithm drops
+    # its own marker); marker=undirected: Figure 3.4's centre marker; marker=directional: Figure 3.6.
+    "wheel-a": {"marker": "none"},
+    "wheel-b": {"marker": "none"},
 }
 """CLI name -> {parameter name: default}.  The default's type is the parameter's type
 (int, float or str); ``generate`` fills in missing parameters from here."""
