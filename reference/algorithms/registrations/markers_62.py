@@ -10,7 +10,16 @@ extension-2 — computed here from the world (the robot never learns n or m);
 the thesis's: the same formulas, except Σ_{k=1}^{n} k for the vertex
 algorithms, which mark every vertex when the kit allows (L1577; the decision is
 in :mod:`topomark.reference.explorers.counted_markers`).  No exact cost formula
-is stated (only O(m), O(m·d_max)), so none is checked.
+is stated (only O(m), O(m·d_max)), so none is checked per run: each bound is
+asymptotic, measured by the bench (``table-6.1``, ``table-6.2``).
+
+``case-dv-sum`` is registered O(m) (Table 6.2, L2013) with its default kit
+Σ_{k=1}^{n−1} k, which leaves the last new place blank, with no direction.
+Its explorer takes the blank's unexplored edges first, from the blank, so no
+edge is entered at the blank and no back-link is probed (the decision and its
+lines, L1575 and L1902, are in :mod:`~topomark.reference.explorers.counted_markers`):
+on ``wheel-hub-last``, where the blank is the hub of degree d_max, the cost is
+3m/2 − 2, within O(m) (``tests/test_markers_62.py``).
 
 Examples
 --------
