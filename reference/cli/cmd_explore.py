@@ -259,5 +259,8 @@ def _print_report(args, spec, label: str, policies, outcome, started: float, tai
     elif args.no_check:
         print("not checked (--no-check): the map was not verified")
     else:
+        at_end = ("iterations", "cost-bound")  # judged once, at the end (with the isomorphism)
+        stepwise = ", ".join(c for c in spec.checks if c != "isomorphism" and c not in at_end)
+        ended = " and ".join(c for c in spec.checks if c in at_end)
         print("verified: the map is extended-isomorphic to the world (markers included); "
-              f"{', '.join(c for c in spec.checks if c != 'isomorphism')} held after every step")
+              f"{stepwise} held after every step" + (f"; {ended} held at the end" if ended else ""))
