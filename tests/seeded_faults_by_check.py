@@ -21,6 +21,8 @@ bound-function  SpinsOnce                      bound function      2     verifie
 lemma-1         ListsAHypothesisTwice          Lemma 1             5     verified
 marker          DropsItsSpareMarker            immovable marker    1     verified
 marker-budget   ThesisCase4Bound (case-4)      marker budget       5     verified
+marker-budget   OneMarkerTooMany (case-3a)     marker budget       1     verified
+cost-bound      OneTraversalTooMany            cost bound          1     verified
 models          ReportsNoModelsOnce            models              2     verified
 iterations      CountsMarkerLoopsAsNonLoop     iteration count     5     verified
 isomorphism     StopsAtTwoEntries              termination         4     iteration count
@@ -33,7 +35,9 @@ finishing its bookkeeping would: the run is otherwise correct, so only that
 check can see it.  Worlds: :data:`KITE` (K4 less one edge, 4 places, 5
 edges: three non-loop iterations, a loop closed by the lighthouse, a loop
 closed by a confirmed hypothesis) for Algorithm 3.1 and ``case-4``;
-``lattice(2, 3)`` for the model tree, where several models are live.
+``lattice(2, 3)`` for the model tree, where several models are live; :data:`EDGE`
+(one edge, where Algorithm 3.1's cost meets (3.1)+(3.2) = 1 exactly and Case 3a
+marks both places with Σ_{k=1}^{2} k = 3 markers, its marker bound).
 """
 
 from __future__ import annotations
@@ -47,6 +51,7 @@ from typing import Any, Callable
 from topomark.reference.algorithms.algorithm_spec import AlgorithmSpec
 from topomark.reference.algorithms.registry import algorithm_spec
 from topomark.reference.explorers.algorithm31 import V0, LighthouseExplorer
+from topomark.reference.explorers.counted_markers import VertexCounts
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES, Lighthouse
 from topomark.reference.explorers.model_tree import ModelTreeExplorer
 from topomark.reference.run import checker as checker_module
@@ -56,11 +61,15 @@ from topomark.reference.worlds import generators
 from topomark.spec.kit import Kit, MarkerOp
 from topomark.spec.world import Start, World
 
-__all__ = ["KITE", "REPORTS", "SEEDED", "Seeded", "disable"]
+__all__ = ["KITE", "EDGE", "REPORTS", "SEEDED", "Seeded", "disable"]
 
 KITE = World({"0": ["1", "2", "3"], "1": ["0", "2"], "2": ["0", "1", "3"], "3": ["0", "2"]}, (), Start("0", "1"))
 """K4 less the edge 1-3, from 0 facing 1: Algorithm 3.1 explores 0-1, 1-2, 2-3 (non-loop), 3-0 (a loop closed
 by the lighthouse) and 0-2 (a loop closed by its one hypothesis)."""
+
+EDGE = World({"0": ["1"], "1": ["0"]}, (), Start("0", "1"))
+"""One edge: Algorithm 3.1 crosses it once, its whole bound (3.1)+(3.2) at n = 2, m = 1; Case 3a drops 1 marker
+at 0 and 2 at 1, Σ_{k=1}^{2} k = 3, its whole marker bound."""
 
 REPORTS: dict[str, tuple[str, ...]] = {
     "pose": ("position",),
@@ -70,6 +79,7 @@ REPORTS: dict[str, tuple[str, ...]] = {
     "lemma-1": ("Lemma 1",),
     "marker": ("immovable marker",),
     "marker-budget": ("marker budget",),
+    "cost-bound": ("cost bound",),
     "models": ("models",),
     "iterations": ("iteration count",),
     "isomorphism": ("termination", "extended isomorphism"),
@@ -204,6 +214,26 @@ class MarksMapWhenDone(LighthouseExplorer):
         return finished
 
 
+class OneTraversalTooMany(LighthouseExplorer):
+    """cost-bound: once U is empty, crosses one more edge before it stops — one traversal past the bound where
+    the bound is tight (no iteration is reported after it, so only the end-of-run checks can see it)."""
+
+    def done(self):
+        finished = super().done()
+        if finished and not getattr(self, "_extra", False):
+            self._extra = True
+            self.robot.move(0, "travel")
+        return finished
+
+
+class OneMarkerTooMany(VertexCounts):
+    """marker-budget: gives each new place one marker more than Case 3a's count (i + 1 for the i-th; the counts
+    stay unique, so the map stays right): on one edge, 1 + 3 markers where Σ_{k=1}^{2} k = 3 are stated."""
+
+    def mark_op(self, count: int) -> MarkerOp:
+        return super().mark_op(count + 1 if self.count_of else count)
+
+
 class ReportsNoModelsOnce(ModelTreeExplorer):
     """models: hands the checker an empty list of live models after step 2 (as one that reports while it
     rebuilds the list would); before and after, its models are right."""
@@ -266,8 +296,13 @@ SEEDED: tuple[Seeded, ...] = (
     Seeded("marker", "DropsItsSpareMarker", DropsItsSpareMarker, "immovable marker", 1,
            ("world markers and thread", "VertexMarker(at='1', count=1, points_to='0')"), lighthouse=SPARE),
     Seeded("marker-budget", "ThesisCase4Bound", None, "marker budget", 5,
-           ("at most 3 (the algorithm's stated bound)", "found 4"), like="case-4",
+           ("at most 3 (the algorithm's stated bound: m − ⌊(n−1)/2⌋", "at n = 4, m = 5", "found 4"), like="case-4",
            changes={"marker_bound_fn": thesis_case_4_bound}),
+    Seeded("marker-budget", "OneMarkerTooMany", OneMarkerTooMany, "marker budget", 1,
+           ("at most 3 (the algorithm's stated bound: Σ_{k=1}^{n−1} k undirected V-markers (Σ_{k=1}^{n} k",
+            "at n = 2, m = 1", "found 4"), like="case-3a", world=EDGE, options={"markers": 4}),
+    Seeded("cost-bound", "OneTraversalTooMany", OneTraversalTooMany, "cost bound", 1,
+           ("edge traversals", "at most 1 = (3.1)+(3.2)", "L630–L640", "at n = 2, m = 1", "found 2"), world=EDGE),
     Seeded("models", "ReportsNoModelsOnce", ReportsNoModelsOnce, "models", 2,
            ("step 2", "the true world among the live models", "none of 0 live model(s)"), like="model-tree",
            world=generators.lattice(2, 3).with_start(None), options={"window": 1}),

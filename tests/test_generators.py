@@ -407,7 +407,7 @@ def test_wheel_pair_directional_figure_3_6():
 
 # -- registry ------------------------------------------------------------------
 EXPECTED_NAMES = {"cycle", "chain", "lattice", "lattice-hole", "complete", "complete-hole",
-                  "small-world", "random", "wheel-a", "wheel-b"}
+                  "small-world", "random", "wheel-a", "wheel-b", "wheel-hub-last"}
 
 
 def test_registry_names_and_parameters():
@@ -419,6 +419,16 @@ def test_registry_names_and_parameters():
     assert g.generate("wheel-a", marker="undirected") == g.wheel_pair()[0]
     assert g.generate("wheel-a") == g.wheel_a(marker="none")  # bare by default: every command accepts it
     assert g.generate("wheel-b", marker="undirected") == g.wheel_pair()[1]
+
+
+def test_wheel_hub_last_is_a_planar_wheel_started_on_the_rim():
+    """A hub of degree n − 1 on a rim of 3-valent places, planar, started at rim place 0 facing exit 0 (the hub
+    found last closest-first is tested with case-dv-sum, tests/test_markers_62.py)."""
+    w = g.generate("wheel-hub-last", n=7)
+    assert (w.n, w.m, w.genus(), w.start_state()) == (7, 12, 0, ("0", 0))
+    assert sorted(len(w.rotation[v]) for v in w.vertices) == [3] * 6 + [6]
+    with pytest.raises(InvalidInput, match="n must be >= 4"):
+        g.generate("wheel-hub-last", n=3)
 
 
 def test_generate_params_and_coercion():

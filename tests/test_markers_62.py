@@ -12,7 +12,7 @@ import pytest
 
 from topomark.reference.cli.main import main
 from topomark.reference.run.explore import explore
-from topomark.reference.explorers.counted_markers import EdgeCounts, sum_to
+from topomark.reference.explorers.counted_markers import DirectionalVertexCounts, EdgeCounts, sum_to
 from topomark.reference.worlds.generators import generate
 from topomark.reference.algorithms.registry import REGISTRY, variant
 from topomark.spec.world import Start, World
@@ -75,7 +75,11 @@ def test_sigma_n_minus_1_leaves_the_last_vertex_blank_and_sigma_n_marks_it(name)
     ex = out.explorer
     assert out.outcome == "correct" and used(out) == sum_to(3) and ex.blank == 3
     entered = [it for it in ex.iterations if it.kind == "loop" and it.joined[1][0] == ex.blank]
-    assert entered and entered[0].signature.vertex_count == 0 and entered[0].probes >= 1
+    if name == "case-3a":  # re-entered over a loop edge: known by its blank label, its back-link probed
+        assert entered and entered[0].signature.vertex_count == 0 and entered[0].probes >= 1
+    else:  # the blank's edges are explored from the blank, each into a lighthouse: never entered, no probe
+        left = [it for it in ex.iterations if it.kind == "loop" and it.edge[0] == ex.blank]
+        assert not entered and left and not any(it.probes for it in ex.iterations)
     full = explore(K4_E, name, options={"markers": sum_to(4)})
     assert full.outcome == "correct" and used(full) == sum_to(4) and full.explorer.blank is None
 
@@ -168,3 +172,37 @@ def test_the_signatures_a_marker_walk_keeps_are_what_its_map_shows(algorithm, mo
     monkeypatch.setattr(MarkerWalk, "map_signature", map_signature)
     assert explore(generators.complete_hole(7, 0.2, 3), algorithm, record=False).outcome == "correct"
     assert len(checked) > 10 and all(checked)
+
+
+def test_the_directional_vertex_markers_stay_within_o_m_on_a_wheel_whose_hub_is_left_blank():
+    """Table 6.2 registers O(m) for Σ_{k=1}^{n−1} k directional V-markers (L2013).  On ``wheel-hub-last`` the
+    hub, of degree d_max = n − 1, is the last new place and so the blank one (L1575).  Exploring the blank's edges
+    from the blank (counted_markers' decision) costs the rim walk (n − 1 edges), the first spoke, then out over
+    each other spoke into a marked rim place and back over it, the last one not back: m + (n − 1) − 2 = 3m/2 − 2
+    in all, so cost/m stays under 3/2 as m grows 40 → 160.  Without that choice (the edge policy alone), the
+    spokes are entered at the blank hub and each back-link probed (Algorithm 6.2 lines 19–35): cost/m grows
+    with d_max, past 10 at m = 160."""
+    for n in (21, 41, 61, 81):
+        w = generate("wheel-hub-last", n=n)
+        out = explore(w, "case-dv-sum", record=False)
+        hub = out.explorer.blank
+        assert out.outcome == "correct" and used(out) == sum_to(n - 1)
+        assert hub is not None and out.explorer.S.degree(hub) == n - 1  # the hub is the blank
+        assert out.cost <= 3 * out.m / 2 and "validation" not in out.by_purpose, (n, out.cost, out.by_purpose)
+
+    class PolicyAlone(DirectionalVertexCounts):
+        @property
+        def edge_policy(self):
+            return self.policies
+
+    probed = explore(w, variant("policy-alone", PolicyAlone, like="case-dv-sum"), record=False)
+    assert probed.outcome == "correct" and probed.cost / probed.m > 10 and probed.by_purpose["validation"] > 0
+
+
+@pytest.mark.parametrize("text", SMALL_WORLDS)
+def test_the_directional_vertex_markers_never_probe_even_with_a_blank_place(text):
+    """Every marked place is a directional lighthouse (L1902) and the blank's edges are explored from the blank,
+    so the default kit (one place blank) needs no back-link probe anywhere."""
+    out = explore(bare(make_world(text)), "case-dv-sum", record=False)
+    assert out.outcome == "correct" and out.explorer.blank is not None
+    assert set(out.by_purpose) <= {"new", "travel"} and not any(it.probes for it in out.explorer.iterations)

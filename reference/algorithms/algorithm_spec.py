@@ -4,7 +4,12 @@ checks (:data:`CHECKS`) the checker may apply to it.
 An algorithm of the thesis is registered once, with its section and listing,
 the marker kit it needs (:mod:`topomark.spec.kit`), its cost bound and marker
 bound *as the thesis states them* (``None`` where it states none), the
-options it takes and the checks that apply.  Two shapes of algorithm exist:
+options it takes and the checks that apply.  A cost bound is either *exact*
+(``bound_fn``, named by ``bound_formula``: every checked run is held to it at
+its end, the ``cost-bound`` check, which the entry then names) or
+*asymptotic* only (an O(·) has no constant: ``bound_bench`` names the bench
+experiment that measures it, and nothing claims it is checked per run).
+Two shapes of algorithm exist:
 
 * **lighthouse algorithms** (``uses_lighthouse=True``: Algorithm 3.1 and the
   Chapter 4 enhancements) establish v0 with any lighthouse strategy
@@ -57,6 +62,7 @@ CHECKS: dict[str, str] = {
     "marker": "no marker is dropped, moved or picked up after the lighthouse is established (the kit itself is "
               "enforced by the simulator)",
     "marker-budget": "never more markers in the world than the algorithm's stated marker bound for this n and m",
+    "cost-bound": "the cost (edge traversals, §3.1.2) is at most the algorithm's stated exact bound for this n and m",
     "models": "the true world survives among the explorer's live models: one of them maps into it, its pose on "
               "the robot's true state (§5.2.2)",
     "iterations": "n − 1 non-loop and m − n + 1 loop iterations (§3.1.3)",
@@ -134,6 +140,9 @@ class AlgorithmSpec:
     check_world: Callable[[Any, dict], None] | None = None  # refuse options false for the world (e.g. §5.3 cues)
     summary_fn: Callable[[Any, Any], dict] | None = None  # (explorer, world) ↦ the algorithm's own --json fields
     write_models: Callable[[Any, str], list] | None = None  # (explorer, dir): ``explore --models DIR``
+    bound_formula: str | None = None  # the exact bound ``bound_fn`` evaluates, in words, with its thesis lines
+    bound_excludes: tuple[str, ...] = ()  # move purposes the exact bound does not count (``cost-bound``)
+    bound_bench: str | None = None  # an asymptotic-only bound: the bench experiment that measures it
 
     def __post_init__(self) -> None:
         unknown = set(self.checks) - set(CHECKS)
@@ -141,6 +150,30 @@ class AlgorithmSpec:
             raise ValueError(f"algorithm {self.name}: unknown checks {sorted(unknown)}")
         if "isomorphism" not in self.checks:  # the outcome is judged on the final map, whatever else is checked
             raise ValueError(f"algorithm {self.name}: every algorithm's final map is checked ('isomorphism')")
+        if self.bound_fn is not None and not self.bound_formula:
+            raise ValueError(f"algorithm {self.name}: an exact bound (bound_fn) needs its bound_formula")
+        if self.bound_fn is None and "cost-bound" in self.checks:
+            raise ValueError(f"algorithm {self.name}: 'cost-bound' needs an exact bound (bound_fn)")
+        if self.bound_fn is None and self.bound and not self.bound_bench:
+            raise ValueError(f"algorithm {self.name}: an asymptotic bound ({self.bound}) names the bench "
+                             "experiment that measures it (bound_bench)")
+        if self.bound_fn is not None and "cost-bound" not in self.checks:  # every exact bound is checked
+            object.__setattr__(self, "checks", (*self.checks, "cost-bound"))
+
+    @property
+    def bound_checked(self) -> bool:
+        """Whether every checked run holds the cost to the bound (``cost-bound``): only an exact bound can be."""
+        return self.bound_fn is not None
+
+    @property
+    def bound_note(self) -> str:
+        """How the cost bound is held: checked per run (exact), measured by a bench (asymptotic), or none."""
+        if self.bound_fn is not None:
+            skipped = f", not counting {' and '.join(self.bound_excludes)} moves" if self.bound_excludes else ""
+            return f"exact: {self.bound_formula}; checked at the end of every checked run (cost-bound{skipped})"
+        if self.bound:
+            return f"asymptotic: measured by bench {self.bound_bench}, not checked per run"
+        return "none stated in the thesis"
 
     @property
     def factory(self) -> Callable[..., Any]:
@@ -184,7 +217,8 @@ class AlgorithmSpec:
         out = {"name": self.name, "thesis": self.thesis, "kit": self.kit.to_json(), "bound": self.bound,
                "markers": self.markers, "deterministic": self.deterministic, "options": list(self.options),
                "checks": list(self.checks), "family": self.family, "kit_from_world": self.kit_fn is not None,
-               "parameters": {p.name: {"help": p.help, "default": p.default} for p in self.parameters}}
+               "parameters": {p.name: {"help": p.help, "default": p.default} for p in self.parameters},
+               "bound_checked": self.bound_checked, "bound_note": self.bound_note}
         if self.uses_lighthouse:
             out["lighthouses"] = {h.name: {"thesis": h.thesis, "kit": h.kit.to_json()} for h in LIGHTHOUSES.values()}
         return out

@@ -3,7 +3,9 @@
 The JSON form is a list of objects with ``name``, ``thesis``, ``kit``,
 ``bound``, ``markers``, ``deterministic``, ``options``, ``checks``,
 ``family`` (the algorithm family its trace@2 traces are written in), ``parameters``,
-``kit_from_world`` and, for the lighthouse algorithms, ``lighthouses``
+``kit_from_world``, ``bound_checked`` (the exact bound is the ``cost-bound`` check of every
+checked run) and ``bound_note`` (how the bound is held: checked per run, measured by a bench, or none stated)
+and, for the lighthouse algorithms, ``lighthouses``
 (:meth:`topomark.reference.algorithms.algorithm_spec.AlgorithmSpec.to_json`).
 """
 
@@ -34,6 +36,8 @@ def algorithms_command(args) -> int:
         kit = f"computed from n and m ({s.markers})" if s.kit_fn is not None else s.kit.describe()
         lighthouse = "; lighthouse: any (--lighthouse)" if s.uses_lighthouse else ""
         print(f"{'':<{width}}  kit: {kit}{lighthouse}; bound: {s.bound or 'none stated in the thesis'}")
+        if s.bound:
+            print(f"{'':<{width}}  bound held: {s.bound_note}")
         if s.parameters:
             print(f"{'':<{width}}  options: " + ", ".join(f"--{p.name} (default {p.default})" for p in s.parameters))
     print(f"\nchecks: " + "; ".join(f"{k} = {v}" for k, v in CHECKS.items()))

@@ -44,9 +44,27 @@ Decisions, with the thesis lines:
   blank, recognised by its blank label afterwards, L1575); with ``--markers`` ≥
   Σ_{k=1}^{n} k every vertex is marked, so the vertex algorithms' marker bound is
   Σ_{k=1}^{n} k.  Same for the directional variant, whose blank last vertex has
-  no direction (L1902 does not discuss it): loop edges into it take Algorithm
-  6.2's probe search, each probe ending at the first neighbour whose directional
-  markers show an explored edge.
+  no direction (L1902 does not discuss it: "each visited vertex is a directional
+  lighthouse" holds for the n − 1 marked ones only).
+* **The directional variant explores the blank's edges from the blank.**  A loop
+  edge *into* the blank needs Algorithm 6.2's probe search for its back-link
+  (lines 19–35): up to deg − 1 probes, each out and back, for each of up to
+  deg − 1 such edges — Θ(d_max²) on a wheel whose hub is found last
+  (``wheel-hub-last``: cost 2,344 at m = 160), which is no O(m).  But when the
+  robot leaves the last new vertex blank it knows that every other place is
+  already visited and marked (lines 14–16, L1575: "this vertex must be the last
+  vertex that has not been visited"), and it knows the blank's exits relative to
+  the edge it entered by.  So once the blank is known, :class:`DirectionalVertexCounts`
+  takes the blank's unexplored edges first (walking S back to the blank when it
+  is elsewhere), whatever the edge policy: each leads to a marked place, a
+  directional lighthouse that gives place and back-link at once (L1902), so it
+  closes a loop with no probe, and no edge is ever entered at the blank
+  unexplored.  This is a choice of which e leaves U (line 5, left open by the
+  thesis), so the algorithm is still Algorithm 6.2 with L1902's markers.  The
+  blank's edges then cost at most 2 each beyond the rest of the run, and the
+  default kit meets the O(m) registered for Table 6.2's row (L2013).  The
+  undirected Case 3a is unchanged: a marked place tells no back-link there, so
+  nothing is saved (its O(m·d_max), L1564).
 * **Fewer markers than assured.**  Case 3b: the refused drop is the ``failed``
   outcome.  The vertex algorithms cannot tell the first shortage from the last
   vertex (the thesis's own rule), so a *second* unmarked place found, or a blank
@@ -69,6 +87,7 @@ from topomark.spec.kit import MarkerOp
 from topomark.spec.signature import Signature, signature_at
 
 from topomark.reference.explorers.marker_walk import MarkerStep, MarkerWalk
+from topomark.reference.explorers.policies import bfs
 
 __all__ = ["EdgeCounts", "VertexCounts", "DirectionalVertexCounts", "sum_to"]
 
@@ -205,7 +224,27 @@ class VertexCounts(MarkerWalk):
 
 
 class DirectionalVertexCounts(VertexCounts):
-    """Σ_{k=1}^{n−1} k directional V-markers, each place a directional lighthouse, O(m) (§6.2.2, L1902)."""
+    """Σ_{k=1}^{n−1} k directional V-markers, each place a directional lighthouse, O(m) (§6.2.2, L1902); the
+    blank place's edges are explored from the blank (module docstring)."""
 
     name = "case-dv-sum"
     directional = True
+
+    @property
+    def edge_policy(self):
+        """The edge policy given, except that the blank place's unexplored edges go first once it is known."""
+        return self.policies if self.blank is None else _BlankFirst(self.policies, self.blank)
+
+
+class _BlankFirst:
+    """``policies``, but U's first entry at ``blank`` is taken first while there is one (walking S to it)."""
+
+    def __init__(self, policies, blank: int):
+        self.policies, self.blank = policies, blank
+
+    def next_edge(self, S, root: int):
+        U = S.unexplored
+        k = U.first_at((self.blank,))
+        if k is None:
+            return self.policies.next_edge(S, root)
+        return U.pop(k), bfs(S, root)[2]

@@ -18,6 +18,12 @@ checks run is named by the algorithm's registry entry
 * ``marker-budget`` — never more markers in the world (counts summed) than
   the algorithm's stated marker bound for this n and m (its registry
   entry's ``marker_bound_fn``), after every step;
+* ``cost-bound`` — at termination, the cost (edge traversals, §3.1.2) is
+  at most the entry's exact bound for this n and m (``bound_fn``, named by
+  its ``bound_formula``), not counting the move purposes the bound leaves
+  out (``bound_excludes``: a lighthouse's search walk and probes for
+  Algorithm 3.1's (3.1)+(3.2)); an entry whose bound is asymptotic only
+  names no such check;
 * ``models`` — for an explorer holding several models (§5.2.2, Algorithm
   5.1): after every step one of ``explorer.models()`` — (map, believed pose)
   pairs, each naming the start place as ``explorer.position`` named it at
@@ -123,7 +129,8 @@ class Checker:
             bound = self.spec.marker_bound_fn(world.n, world.m)
             used = self.sim.layer.lying  # the sum of the counts of world.markers, kept per change
             self._ok(n, None if used <= bound else Violation(
-                "marker budget", "world markers", f"at most {bound} (the algorithm's stated bound)", str(used)))
+                "marker budget", "world markers", f"at most {bound} (the algorithm's stated bound: "
+                f"{self.spec.markers}, at n = {world.n}, m = {world.m})", str(used)))
         if "models" in self.checks:
             self.check_models(explorer, n)
 
@@ -182,12 +189,26 @@ class Checker:
             if bad is not None:
                 raise TopomarkFault(f"the isomorphism's witness fails re-verification: {bad}")
             self.passed += 1
-        if "iterations" not in self.checks:
-            return
-        kinds = [it.kind for it in explorer.iterations]
-        for kind, want in (("non-loop", world.n - 1), ("loop", world.m - world.n + 1)):
-            self._ok(n, None if kinds.count(kind) == want else Violation(
-                "iteration count", f"{kind} iterations", str(want), str(kinds.count(kind))))
+        if "iterations" in self.checks:
+            kinds = [it.kind for it in explorer.iterations]
+            for kind, want in (("non-loop", world.n - 1), ("loop", world.m - world.n + 1)):
+                self._ok(n, None if kinds.count(kind) == want else Violation(
+                    "iteration count", f"{kind} iterations", str(want), str(kinds.count(kind))))
+        if "cost-bound" in self.checks:
+            self._ok(n, self.cost_violation())
+
+    def cost_violation(self) -> Violation | None:
+        """``cost-bound``: the run's cost, less the moves its bound does not count, against the exact bound."""
+        spec, world, sim = self.spec, self.sim.world, self.sim
+        bound = spec.bound_for(world.n, world.m)
+        skipped = sum(sim.by_purpose[p] for p in spec.bound_excludes)
+        cost = sim.cost - skipped
+        if cost <= bound:
+            return None
+        counted = f"{cost}" + (f" ({sim.cost} less {skipped} {' and '.join(spec.bound_excludes)} moves)"
+                               if skipped else "")
+        return Violation("cost bound", "edge traversals (§3.1.2, L399)",
+                         f"at most {bound} = {spec.bound_formula}, at n = {world.n}, m = {world.m}", counted)
 
 
 def _marks(world) -> tuple:

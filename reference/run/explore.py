@@ -34,7 +34,6 @@ from topomark.spec.markerlayer import MarkerLayer, apply_op
 from topomark.spec.world import World
 from topomark.spec.worldfile import marker_to_json
 
-from topomark.reference.algorithms.bounds import upper_bound
 from topomark.reference.run.checker import Checker
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES, Lighthouse, lighthouse as lighthouse_named
 from topomark.reference.algorithms.registry import AlgorithmSpec, algorithm_spec
@@ -60,7 +59,7 @@ class Outcome:
     hypotheses_confirmed: int
     checks: int
     by_purpose: dict[str, int]
-    upper_bound: int
+    upper_bound: int | None  # the entry's exact cost bound on this world (None: asymptotic or none stated)
     lighthouse: str | None = "directional-vertex"
     marker_operations: dict[str, int] = field(default_factory=dict)
     explorer: Any = None
@@ -73,12 +72,13 @@ class Outcome:
     walk_steps: int | None = None  # a lighthouse algorithm: the walk that found v0, or gave up (§5.1, §6.1)
     lighthouse_at: str | None = None  # a lighthouse algorithm: the world vertex v0 is (the truth; the robot never knows)
     extra: dict[str, Any] = field(default_factory=dict)  # the algorithm's own counts (its registry's summary_fn)
+    bound_checked: bool = False  # the run was held to ``upper_bound`` (the ``cost-bound`` check)
 
     def summary(self) -> dict[str, Any]:
         out = {k: getattr(self, k) for k in (
             "n", "m", "cost", "verified", "iterations", "loop_iterations", "nonloop_iterations", "hypotheses",
             "hypotheses_rejected", "hypotheses_confirmed", "checks", "by_purpose", "upper_bound", "lighthouse",
-            "marker_operations", "outcome", "claimed", "reason")}
+            "marker_operations", "outcome", "claimed", "reason", "bound_checked")}
         if self.lighthouse is not None:
             out.update(walk_steps=self.walk_steps, lighthouse_at=self.lighthouse_at)
         out.update(self.extra)
@@ -344,7 +344,7 @@ def _outcome(world: World, sim: Simulator, explorer, checker: Checker | None, vi
     verified = checker is not None and violation is None and stopped is None
     judged = claimed if stopped else ("correct" if verified else "wrong-map" if checker is not None else "unchecked")
     light = getattr(explorer, "lighthouse", None)
-    bound = upper_bound(world.n, world.m) if spec.uses_lighthouse else spec.bound_for(world.n, world.m)
+    bound = spec.bound_for(world.n, world.m)  # enh4/enh5 state none exact (their registration's docstring)
     return Outcome(
         n=world.n, m=world.m, cost=sim.cost, verified=verified,
         iterations=tally.iterations, loop_iterations=tally.loop, nonloop_iterations=tally.nonloop,
@@ -352,7 +352,8 @@ def _outcome(world: World, sim: Simulator, explorer, checker: Checker | None, vi
         checks=checker.passed if checker else 0, by_purpose=dict(sorted(sim.by_purpose.items())),
         upper_bound=bound, lighthouse=None if light is None else light.name,
         marker_operations=dict(sorted(sim.operations.items())), explorer=explorer, trace=trace, violation=violation,
-        outcome=judged, claimed=claimed, reason=stopped.reason if stopped else None, kit=sim.kit.describe())
+        outcome=judged, claimed=claimed, reason=stopped.reason if stopped else None, kit=sim.kit.describe(),
+        bound_checked=checker is not None and "cost-bound" in checker.checks)
 
 
 def _algorithm_counts(outcome: Outcome, spec: AlgorithmSpec, explorer, world: World, v0_state,

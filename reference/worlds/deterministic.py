@@ -1,4 +1,5 @@
-"""The deterministic world families: cycles (§3.2.1), chains, lattices and complete graphs (§3.5.3).
+"""The deterministic world families: cycles (§3.2.1), chains, lattices and complete graphs (§3.5.3), and the
+wheel whose hub a closest-first explorer finds last.
 
 Each generator checks its parameters (:func:`integer_param` and friends, shared
 with :mod:`~topomark.reference.worlds.holes` and
@@ -27,7 +28,7 @@ from topomark.spec.world import World, check_size
 
 from topomark.reference.worlds.embedding import from_positions, on_circle
 
-__all__ = ["cycle", "chain", "lattice", "complete", "integer_param", "real_param", "fraction_param", "seed_param",
+__all__ = ["cycle", "chain", "lattice", "complete", "wheel_hub_last", "integer_param", "real_param", "fraction_param", "seed_param",
            "lattice_graph", "lattice_size"]
 
 
@@ -119,3 +120,29 @@ def complete(n: int) -> World:
     n = integer_param("n", n, 2)
     check_size(n, n * (n - 1) // 2, f"K_{n}")
     return on_circle(n, ((i, j) for i in range(n) for j in range(i + 1, n)))
+
+
+# -- wheels ---------------------------------------------------------------------------------
+def wheel_hub_last(n: int) -> World:
+    """The wheel of n >= 4 vertices — a hub joined to every vertex of a rim cycle — embedded so that a robot
+    at the first vertex, facing exit 0, exploring closest-first finds the hub *last*.
+
+    Rim vertices are ``"0"`` … ``str(n - 2)``, the hub ``str(n - 1)``; m = 2(n − 1), the hub has degree
+    n − 1 = d_max.  Rim vertex i lists (i + 1, hub, i − 1) clockwise, so exit 0 leads on along the rim and,
+    entered from i − 1, the next rim vertex comes before the spoke: the ``nearest`` edge policy (§3.3) walks
+    the whole rim before its first spoke, and the hub is the n-th new place.  That is where §6.2's Σ_{k=1}^{n−1} k
+    algorithms run out of markers and leave the place blank (Algorithm 6.2 lines 14–16, L1575): a blank of
+    degree d_max, the worst place for the blank.  The hub lists the rim in ascending order: the embedding is
+    planar.
+
+    >>> w = wheel_hub_last(5)
+    >>> w.n, w.m, w.rotation["0"], w.rotation["4"], w.genus()
+    (5, 8, ('1', '4', '3'), ('0', '1', '2', '3'), 0)
+    """
+    n = integer_param("n", n, 4)
+    check_size(n, 2 * (n - 1), f"wheel-hub-last:n={n}")
+    k = n - 1  # rim vertices
+    hub = str(k)
+    rotation = {str(i): (str((i + 1) % k), hub, str((i - 1) % k)) for i in range(k)}
+    rotation[hub] = tuple(str(i) for i in range(k))
+    return World(rotation, (), None)

@@ -15,7 +15,8 @@ here:
   graphs (:func:`from_positions`, :func:`planar`, :func:`from_networkx`,
   :func:`circle_positions`, :func:`natural_key`), §3.1.1;
 * :mod:`~topomark.reference.worlds.deterministic` -- :func:`cycle` (§3.2.1),
-  :func:`chain`, :func:`lattice` and :func:`complete` (§3.5.3);
+  :func:`chain`, :func:`lattice` and :func:`complete` (§3.5.3), and
+  :func:`wheel_hub_last` (the wheel whose hub a closest-first robot finds last, §6.2.1);
 * :mod:`~topomark.reference.worlds.holes` -- :func:`lattice_hole` and
   :func:`complete_hole` (§3.5.3);
 * :mod:`~topomark.reference.worlds.random_worlds` -- :func:`small_world` and
@@ -64,7 +65,7 @@ from topomark.spec.errors import InvalidInput, clip
 from topomark.spec.world import World
 
 from topomark.reference.worlds.embedding import circle_positions, from_networkx, from_positions, natural_key, planar
-from topomark.reference.worlds.deterministic import chain, complete, cycle, lattice
+from topomark.reference.worlds.deterministic import chain, complete, cycle, lattice, wheel_hub_last
 from topomark.reference.worlds.holes import complete_hole, lattice_hole
 from topomark.reference.worlds.random_worlds import OtherPairs, random_graph, small_world  # noqa: F401 - OtherPairs: for tests
 from topomark.proofs.wheels import (WHEEL_A_ROTATION, WHEEL_B_ROTATION, wheel_a, wheel_b, wheel_pair,
@@ -77,6 +78,7 @@ __all__ = [
     "cycle",
     "chain",
     "lattice",
+    "wheel_hub_last",
     "lattice_hole",
     "complete",
     "complete_hole",
@@ -109,6 +111,7 @@ GENERATORS: dict[str, Callable[..., World]] = {
     "random": random_graph,
     "wheel-a": wheel_a,
     "wheel-b": wheel_b,
+    "wheel-hub-last": wheel_hub_last,
 }
 """CLI name -> generator function."""
 
@@ -125,6 +128,7 @@ PARAMETERS: dict[str, dict[str, Any]] = {
     # its own marker); marker=undirected: Figure 3.4's centre marker; marker=directional: Figure 3.6.
     "wheel-a": {"marker": "none"},
     "wheel-b": {"marker": "none"},
+    "wheel-hub-last": {"n": 9},
 }
 """CLI name -> {parameter name: default}.  The default's type is the parameter's type
 (int, float or str); ``generate`` fills in missing parameters from here."""

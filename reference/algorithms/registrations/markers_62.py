@@ -10,7 +10,16 @@ extension-2 — computed here from the world (the robot never learns n or m);
 the thesis's: the same formulas, except Σ_{k=1}^{n} k for the vertex
 algorithms, which mark every vertex when the kit allows (L1577; the decision is
 in :mod:`topomark.reference.explorers.counted_markers`).  No exact cost formula
-is stated (only O(m), O(m·d_max)), so none is checked.
+is stated (only O(m), O(m·d_max)), so none is checked per run: each bound is
+asymptotic, measured by the bench (``table-6.1``, ``table-6.2``).
+
+``case-dv-sum`` is registered O(m) (Table 6.2, L2013) with its default kit
+Σ_{k=1}^{n−1} k, which leaves the last new place blank, with no direction.
+Its explorer takes the blank's unexplored edges first, from the blank, so no
+edge is entered at the blank and no back-link is probed (the decision and its
+lines, L1575 and L1902, are in :mod:`~topomark.reference.explorers.counted_markers`):
+on ``wheel-hub-last``, where the blank is the hub of degree d_max, the cost is
+3m/2 − 2, within O(m) (``tests/test_markers_62.py``).
 
 Examples
 --------
@@ -48,13 +57,13 @@ SPECS = (
         bound="O(m·d_max)", markers="Σ_{k=1}^{n−1} k undirected V-markers (Σ_{k=1}^{n} k if the kit allows)",
         deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=VertexCounts,
         uses_lighthouse=False, parameters=(MARKERS,), kit_fn=lambda n, m, o: Kit(vertex=_count(n, o)),
-        marker_bound_fn=lambda n, m: sum_to(n), family="robot"),
+        marker_bound_fn=lambda n, m: sum_to(n), family="robot", bound_bench="table-6.1"),
     AlgorithmSpec(
         name="case-3b", thesis="§6.2.1 Case 3b (L1577, L1627–L1643, Figures 6.7, 6.8)", kit=Kit(edge=1),
         bound="O(m)", markers="Σ_{k=1}^{n−1} k undirected E-markers",
         deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=EdgeCounts,
         uses_lighthouse=False, parameters=(MARKERS,), kit_fn=lambda n, m, o: Kit(edge=_count(n, o)),
-        marker_bound_fn=lambda n, m: sum_to(n - 1), family="robot"),
+        marker_bound_fn=lambda n, m: sum_to(n - 1), family="robot", bound_bench="table-6.1"),
     AlgorithmSpec(
         name="case-dv-sum", thesis="§6.2.2 Σ_{k=1}^{n−1} k directional V-markers (L1902, Table 6.2)",
         kit=Kit(vertex=1, directional=True), bound="O(m)",
@@ -62,14 +71,14 @@ SPECS = (
         deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=DirectionalVertexCounts,
         uses_lighthouse=False, parameters=(MARKERS,),
         kit_fn=lambda n, m, o: Kit(vertex=_count(n, o), directional=True),
-        marker_bound_fn=lambda n, m: sum_to(n), family="robot"),
+        marker_bound_fn=lambda n, m: sum_to(n), family="robot", bound_bench="table-6.2"),
     AlgorithmSpec(
         name="extension-1", thesis="§6.2.2 extension-1 of Case 3b (L1914, Figure 6.15, Table 6.2)",
         kit=Kit(edge=1, directional=True), bound="O(m)", markers="Σ_{k=1}^{⌈m/2⌉} k directional E-markers",
         deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=MarkFirstEdges,
         uses_lighthouse=False, parameters=(MARKERS,),
         kit_fn=lambda n, m, o: Kit(edge=_count(n, o, sum_to(ceil_half(m))), directional=True),
-        marker_bound_fn=lambda n, m: sum_to(ceil_half(m)), family="robot"),
+        marker_bound_fn=lambda n, m: sum_to(ceil_half(m)), family="robot", bound_bench="table-6.2"),
     AlgorithmSpec(
         name="extension-2",
         thesis="§6.2.2 extension-2 of Case 3b, Algorithm 6.6 (L1916–L1963, Figure 6.16, Table 6.2)",
@@ -77,5 +86,5 @@ SPECS = (
         deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=SavingEdgeCounts,
         uses_lighthouse=False, parameters=(MARKERS,),
         kit_fn=lambda n, m, o: Kit(edge=_count(n, o, sum_to(ceil_half(n - 1))), directional=True),
-        marker_bound_fn=lambda n, m: sum_to(ceil_half(n - 1)), family="robot"),
+        marker_bound_fn=lambda n, m: sum_to(ceil_half(n - 1)), family="robot", bound_bench="table-6.2"),
 )

@@ -49,15 +49,18 @@ def directional_bound(n: int, m: int) -> int:
 
 _OPTIONS = ("policy edge=nearest|fifo|lifo",)
 _BOUND = "O(mn) (§2.3.1, L150); bound_fn: ours, exact for our explorer"
+_OURS = "ours: our explorer's exact worst case behind O(mn) (§2.3.1, L150, L177)"
 
 SPECS = (
     AlgorithmSpec(name="dudek", thesis="§2.3.1, Dudek et al. [24, 26]", kit=Kit(vertex=1, movable=True),
                   bound=_BOUND, markers="1", deterministic=True, options=_OPTIONS, checks=STEPWISE_MAP_CHECKS,
-                  bound_fn=dudek_bound, explorer=MovableMarkerExplorer, uses_lighthouse=False,
+                  bound_fn=dudek_bound, bound_formula=f"3(n − 1)² + (m − n + 1)(7n − 8), {_OURS}",
+                  explorer=MovableMarkerExplorer, uses_lighthouse=False,
                   marker_bound_fn=lambda n, m: 1, family="robot"),
     AlgorithmSpec(name="dudek-directional", thesis="§2.3.1, Dudek et al. [24, 26]; directional variant [27] (L177)",
                   kit=Kit(vertex=1, directional=True, movable=True), bound=_BOUND, markers="1", deterministic=True,
                   options=_OPTIONS, checks=STEPWISE_MAP_CHECKS, bound_fn=directional_bound,
+                  bound_formula=f"3(n − 1)² + (m − n + 1)(3n − 1), {_OURS}",
                   explorer=DirectionalMovableMarkerExplorer, uses_lighthouse=False, marker_bound_fn=lambda n, m: 1,
                   family="robot"),
 )

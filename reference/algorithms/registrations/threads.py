@@ -93,24 +93,29 @@ _ROBOT = dict(deterministic=True, checks=STEPWISE_MAP_CHECKS, uses_lighthouse=Fa
 """What every thread algorithm shares: one edge joins S per step, and no marker is ever dropped (a thread is
 no marker, so the marker bound is 0)."""
 _O_MN = "O(mn) (Table 6.3); bound_fn: ours"
+_OURS = "ours: our explorer's exact worst case behind O(mn) (Table 6.3)"
 
 SPECS = (
     AlgorithmSpec(name="thread-carried", thesis="§6.3.1, l = ε thread carried and retied (L2032–L2036)",
                   kit=Kit(thread=0), bound=_O_MN, markers="no marker; a thread of length ε", options=("policy edge",),
-                  bound_fn=directional_bound, explorer=CarriedThreadExplorer, **_ROBOT),
+                  bound_fn=directional_bound, explorer=CarriedThreadExplorer,
+                  bound_formula=f"3(n − 1)² + (m − n + 1)(3n − 1), {_OURS} (L2036)", **_ROBOT),
     AlgorithmSpec(name="thread-circumference",
                   thesis="§6.3.2, Algorithm 6.7 (L2038–L2075; l = c(G), given n: see the docstring)",
                   kit=Kit(thread=0), bound=_O_MN, markers="no marker; a thread of n edges (--thread-length: L)",
                   options=("thread-length L (default n; reaching L is the failed outcome 'out of thread')",),
                   bound_fn=circumference_bound, explorer=CircumferenceThreadExplorer,
+                  bound_formula=f"2(n − 1) + (m − n + 1)(n + 2), {_OURS} (L2038–L2075)",
                   parameters=(LENGTH,), kit_fn=_circumference_kit, **_ROBOT),
     AlgorithmSpec(name="thread-knots", thesis="§6.3.2, l ≫ m thread with knots (L2077–L2086, Figure 6.20)",
                   kit=Kit(thread=0), bound="O(m) (Table 6.3); bound_fn: ours, exact worst case",
                   markers="no marker; a thread of m + 1 edges", options=(), bound_fn=knots_bound,
+                  bound_formula="4m − 2n + 2, ours: the exact worst case behind O(m) (Table 6.3, L2079)",
                   explorer=KnotThreadExplorer, kit_fn=lambda n, m, opts: Kit(thread=m + 1), **_ROBOT),
     AlgorithmSpec(name="thread-explore", thesis="§6.3.3, Algorithm 6.8 (L2088–L2141; l < c(G), explore-explore)",
                   kit=Kit(thread=2), bound=_O_MN, markers="no marker; a thread of --thread-length edges",
                   options=("thread-length L (default 2, Figure 6.21)",), bound_fn=explore_bound,
+                  bound_formula=f"2m + 2nm + n(n − 1), {_OURS} (L2088–L2141)",
                   explorer=ThreadExplorer, parameters=(Parameter("thread-length", LENGTH.help, default=2, minimum=1),),
                   kit_fn=lambda n, m, opts: Kit(thread=opts["thread-length"]), **_ROBOT),
 )
