@@ -60,7 +60,8 @@ def _drive_options(p) -> None:
     p.add_argument("--trace", metavar="FILE", help="write the topomark/trace@1 trace here, streamed as the run goes "
                                                     "(without it no trace is kept, only counters)")
     p.add_argument("--map", metavar="FILE", help="write the map here")
-    p.add_argument("--max-traversals", type=int, default=1_000_000, metavar="N")
+    p.add_argument("--max-traversals", type=int, default=1_000_000, metavar="N",
+                   help="fail after this many edge traversals (default 1,000,000)")
     p.add_argument("--timeout", type=float, default=600.0, metavar="SECONDS", help="wall-time limit (default 600)")
     p.add_argument("--message-timeout", type=float, default=10.0, metavar="SECONDS")
     p.add_argument("--lighthouse", default="directional-vertex", metavar="NAME",

@@ -65,7 +65,7 @@ class Limits:
     """Traversal, operation and time limits; ``max_traversals`` None means 4 × the (3.1)+(3.2) bound, at least
     1000; ``max_operations`` None means 2 × the traversal limit, at least 1000.
 
-    Marker and thread operations are not traversals (§3.1.2: only edge traversals are the cost), so a program
+    Marker and thread operations are not traversals (§3.1.2, L399: only edge traversals are the cost), so a program
     could drop and pick up a marker forever at no cost; the operation cap ends such a run with reason ``limit``.
     """
 
@@ -105,7 +105,8 @@ class ExternalResult:
 
     def to_json(self) -> dict[str, Any]:
         return {"verdict": self.verdict, "reason": self.reason, "message": self.message, "cost": self.cost,
-                "operations": self.operations, "snapshots": self.snapshots, "wall_seconds": round(self.wall, 3), "stderr_tail": self.stderr,
+                "operations": self.operations, "snapshots": self.snapshots, "wall_seconds": round(self.wall, 3),
+                "stderr_tail": self.stderr,
                 "violation": None if self.violation is None else self.violation.to_json(), "marker_rule": self.rule}
 
 
