@@ -113,6 +113,7 @@ class Runs:
     notes: list[str] = field(default_factory=list)
     header: list[str] = field(default_factory=lambda: list(CSV_FIELDS))
     manifest: Manifest | None = None
+    dropped: int = 0  # rows a resume dropped for their checksum (to be run again)
 
     @property
     def needs_rewrite(self) -> bool:
@@ -205,10 +206,12 @@ def _parse(path: Path, text: str, runs: Runs, resume: bool) -> None:
             else:
                 row = _row(path, line, header, record, manifest, resume, runs.notes)
                 if row is None:
+                    runs.dropped += 1
                     continue
                 ident = (row_key(row), row["checked"])
                 if ident in seen:
-                    raise InvalidInput(f"{path} line {line}: the run {' '.join(ident[0])} (checked={ident[1]}) is "
+                    raise InvalidInput(f"{path} line {line}: the run {' '.join(filter(None, ident[0]))} "
+                                       f"(checked={ident[1]}) is "
                                        f"already on line {seen[ident]} (the file is damaged; delete one of them)")
                 seen[ident] = line
                 runs.rows.append(row)
@@ -228,13 +231,13 @@ def _row(path: Path, line: int, header: list[str], record: list[str], manifest: 
             f"run store)")
     if not resume:
         raise InvalidInput(f"{what}; run the sweep again to recompute it, or delete that line")
-    notes.append(f"{what}: it is dropped and the run {' '.join(row_key(row))} will be done again")
+    notes.append(f"{what}: it is dropped and the run {' '.join(filter(None, row_key(row)))} will be done again")
     return None
 
 
 def _count(path: Path, runs: Runs, resume: bool) -> None:
     """Fewer rows than the manifest recorded after the last sweep: rows were deleted."""
-    if runs.manifest is None or len(runs.rows) >= runs.manifest.rows:
+    if runs.manifest is None or len(runs.rows) + runs.dropped >= runs.manifest.rows:
         return
     what = (f"{path}: {len(runs.rows)} sound rows where {MANIFEST_NAME} records {runs.manifest.rows} after the last "
             "sweep (rows were deleted or damaged)")
