@@ -46,7 +46,7 @@ from typing import Any, BinaryIO, Callable
 from topomark.spec.errors import InvalidInput, clip
 
 __all__ = ["MAX_DEPTH", "MAX_INT_DIGITS", "MAX_FILE_BYTES", "parse_json", "no_duplicate_keys", "check_depth",
-           "open_regular_file", "read_text_file"]
+           "open_regular_fd", "open_regular_file", "read_text_file"]
 
 MAX_DEPTH = 64
 MAX_INT_DIGITS = 18
@@ -124,20 +124,22 @@ def parse_json(text: str, source: str, error: type[InvalidInput] = InvalidInput,
 _PATH_NOTE = " ({n} characters)"  # a long path's length, with no thousands separator
 
 
-def open_regular_file(path: str | Path, error: type[InvalidInput] = InvalidInput,
-                      max_bytes: int | None = MAX_FILE_BYTES) -> BinaryIO:
-    """Open ``path`` for binary reading if it is a regular file of at most ``max_bytes``.
+def open_regular_fd(path: str | Path, flags: int = os.O_RDONLY, error: type[InvalidInput] = InvalidInput,
+                    max_bytes: int | None = MAX_FILE_BYTES) -> int:
+    """A blocking descriptor on ``path`` opened with ``flags`` if it is a regular file of at most ``max_bytes``.
 
     The file is opened non-blocking and checked with ``fstat`` on the open
     descriptor, so a FIFO never blocks and a file swapped after the check is
     still the one checked.  ``max_bytes=None`` (for streamed inputs such as
-    traces) skips the size limit.
+    traces) skips the size limit.  ``flags`` may ask for writing or creating
+    (``os.O_RDWR | os.O_CREAT``: a lock file, a file appended to).
     """
+    verb = "read" if flags & (os.O_WRONLY | os.O_RDWR) == 0 else "open"
     try:
-        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK)
+        fd = os.open(path, flags | os.O_NONBLOCK, 0o644)
     except OSError as exc:
         shown = clip(str(path), 200, note=_PATH_NOTE)
-        raise error(f"{shown}: cannot read the file ({exc.__class__.__name__}: {exc.strerror or exc})") from None
+        raise error(f"{shown}: cannot {verb} the file ({exc.__class__.__name__}: {exc.strerror or exc})") from None
     except ValueError:  # a NUL byte: no file has such a name
         raise error(f"{clip(str(path), 200, note=_PATH_NOTE)}: not a file name (it contains a NUL byte)") from None
     info = os.fstat(fd)
@@ -148,7 +150,13 @@ def open_regular_file(path: str | Path, error: type[InvalidInput] = InvalidInput
         os.close(fd)
         raise error(f"{path}: file of {info.st_size:,} bytes is larger than the limit of {max_bytes:,} bytes")
     os.set_blocking(fd, True)
-    return os.fdopen(fd, "rb")
+    return fd
+
+
+def open_regular_file(path: str | Path, error: type[InvalidInput] = InvalidInput,
+                      max_bytes: int | None = MAX_FILE_BYTES) -> BinaryIO:
+    """Open ``path`` for binary reading if it is a regular file of at most ``max_bytes`` (:func:`open_regular_fd`)."""
+    return os.fdopen(open_regular_fd(path, os.O_RDONLY, error, max_bytes), "rb")
 
 
 def read_text_file(path: str | Path, error: type[InvalidInput] = InvalidInput,

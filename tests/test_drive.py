@@ -46,7 +46,7 @@ HELLO = ("send({'type': 'hello', 'protocol': 'topomark/protocol@1', 'role': 'wor
 def test_drive_maps_the_providers_world_exactly_like_explore(tmp_path, world):
     path = tmp_path / "w.json"
     path.write_text(dumps_world(world))
-    result = drive(provider(path), Policies(), world)
+    result = drive(provider(path), Policies(), world, record=True)
     assert result.passed and result.check.isomorphic, result.message
     reference = explore(world)
     assert result.cost == reference.cost

@@ -266,7 +266,7 @@ def test_drive_with_an_at_2_provider_is_the_same_run_as_at_1(tmp_path):
     world = g.lattice_hole(5, 5, 0.1, seed=1).with_start(Start("0,0", "0,1"))
     path = tmp_path / "w.json"
     path.write_text(dumps_world(world))
-    result = drive(provider(path, "--protocol", "2"), world=world)
+    result = drive(provider(path, "--protocol", "2"), world=world, record=True)
     assert result.passed and result.check.isomorphic, result.message
     assert result.cost == explore(world).cost and result.trace
 
@@ -277,7 +277,7 @@ def test_drive_another_lighthouse_needs_an_at_2_provider_with_its_kit(tmp_path, 
     world = g.complete(5).with_start(Start("3", "1"))
     path = tmp_path / "w.json"
     path.write_text(dumps_world(world))
-    result = drive(provider(path, "--protocol", "2", "--kit", kit), world=world, light=LIGHTHOUSES[name])
+    result = drive(provider(path, "--protocol", "2", "--kit", kit), world=world, light=LIGHTHOUSES[name], record=True)
     assert result.passed and result.check.isomorphic, result.message
     assert result.trace[0]["format"] == "topomark/trace@2"  # trace@1 cannot record these drops
     assert [r["kind"] for r in result.trace if r["event"] == "op"] == [op.kind for op in LIGHTHOUSES[name].ops]

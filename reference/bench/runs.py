@@ -29,16 +29,23 @@ import sys
 import time
 from pathlib import Path
 
+from topomark.spec.errors import clip
+
 from topomark.reference.bench.plan import Run, resolve_options, world_for
 from topomark.reference.algorithms.bounds import expression_3_3
 from topomark.reference.run.explore import explore
 from topomark.reference.explorers.policies import Policies
 from topomark.reference.explorers.lighthouses import lighthouse
 from topomark.reference.algorithms.registry import algorithm_spec
-from topomark.reference.bench.run_store import Appender, locked, read_runs, rewrite, row_key
+from topomark.reference.bench.run_manifest import Manifest
+from topomark.reference.bench.run_store import Appender, locked, read_runs, rewrite, row_key, write_manifest
 from topomark.proofs.census_exec import worker_count
 
 __all__ = ["run_one", "run_sweep", "Progress", "DropCount", "CHAPTER_5_COLUMNS"]
+
+ERROR_CHARS = 2000
+"""A run's error message is clipped to this many characters in its row (the run store reads fields of at most
+:data:`~topomark.reference.bench.run_store.MAX_FIELD_CHARS`)."""
 
 CHAPTER_5_COLUMNS = ("walk_steps", "lighthouse_at", "completed_models", "peak_models", "true_world_completed")
 
@@ -75,14 +82,14 @@ def run_one(run: Run, check: bool = True) -> dict:
         out = explore(world, spec, Policies(edge=run.policy), check=check, record=False, keep_hypotheses=False,
                       options=options or None, **kwargs)
     except Exception as exc:  # a crashed run is recorded, never silently dropped
-        row.update(cost="", verified=False, outcome="error", error=f"{type(exc).__name__}: {exc}")
+        row.update(cost="", verified=False, outcome="error", error=clip(f"{type(exc).__name__}: {exc}", ERROR_CHARS))
         return row
     stats = getattr(out.explorer, "stats", {})
     row.update(cost=out.cost, cost_per_m=round(out.cost / world.m, 3), verified=out.verified, outcome=out.outcome,
                hypotheses=out.hypotheses, upper_bound="" if out.upper_bound is None else out.upper_bound,
                expression_3_3=round(float(expression_3_3(world.n, world.m))),
                seconds=round(time.perf_counter() - t, 3), cpu_seconds=round(time.process_time() - cpu, 3),
-               error=str(out.violation) if out.violation is not None else out.reason or "")
+               error=clip(str(out.violation) if out.violation is not None else out.reason or "", ERROR_CHARS))
     summary = out.summary()  # Chapter 5: the walk that found v0, where it is; the model tree's counts
     row.update({k: summary[k] for k in CHAPTER_5_COLUMNS if summary.get(k) is not None})
     if drops is not None and not spec.uses_lighthouse:
@@ -130,25 +137,36 @@ class Progress:
         sys.stderr.flush()
 
 
-def run_sweep(runs: list[Run], out: Path, jobs: int | None = None, check: bool = True, progress: bool = True) -> dict:
+def run_sweep(runs: list[Run], out: Path, jobs: int | None = None, check: bool = True, progress: bool = True,
+              parameters: dict | None = None) -> dict:
     """Run what is not yet in ``out/runs.csv`` (append, one whole row per run); return counts.
 
-    The directory is locked for the sweep (a second sweep on it is bad input, exit 2), and the rows a
-    killed or concurrent sweep left damaged are repaired first (:mod:`~topomark.reference.bench.run_store`).
+    The directory is locked for the sweep (a second sweep on it is bad input, exit 2); the rows a killed sweep
+    left damaged, and those that fail verification, are dropped with a note (and so run again), and the file is
+    rewritten with every row's checksum before anything runs; the manifest ``out/runs.json`` records the sweep's
+    ``parameters`` (:mod:`~topomark.reference.bench.run_store`, :mod:`~topomark.reference.bench.run_manifest`).
     """
     out.mkdir(parents=True, exist_ok=True)
     path = out / "runs.csv"
     started = time.monotonic()
     with locked(out):
-        existing = read_runs(path)
-        if existing.needs_rewrite and path.exists():
-            rewrite(path, existing)
+        existing = read_runs(path, resume=True)
+        manifest = existing.manifest or Manifest()
+        manifest.add_sweep({**(parameters or {}), "check": check, "planned": len(runs)})
+        manifest.rows = len(existing.rows)
+        if path.exists():
+            rewrite(path, existing, manifest)
+        write_manifest(out, manifest)
         # A checked sweep does not accept an unchecked row for the same key (it reruns it; the report then
         # prefers the checked row); an unchecked sweep accepts either.
         have = {row_key(r) for r in existing.rows if str(r.get("checked")) == "True" or not check}
         todo = [r for r in runs if r.key not in have]
-        with Appender(path) as store:
-            failures = _run_all(todo, store, jobs or os.cpu_count() or 1, check, Progress(len(todo), progress))
+        with Appender(path, manifest.store) as store:
+            try:
+                failures = _run_all(todo, store, jobs or os.cpu_count() or 1, check, Progress(len(todo), progress))
+            finally:  # the rows now known to be in the file (a killed sweep leaves the count it started with)
+                manifest.rows += store.appended
+                write_manifest(out, manifest)
     return {"planned": len(runs), "skipped": len(runs) - len(todo), "ran": len(todo), "failures": failures,
             "seconds": round(time.monotonic() - started, 1)}
 

@@ -22,6 +22,9 @@ def register(sub) -> None:
         description="Run EXPERIMENT over fixed-seed worlds, every run checked (invariants after every iteration, "
                     "final isomorphism) unless --no-check; append each run to DIR/runs.csv (a restarted sweep "
                     "skips finished runs; one sweep at a time per DIR) and write DIR/EXPERIMENT.md and plots. "
+                    "DIR/runs.json records each sweep's parameters and every row carries a checksum: a sweep "
+                    "recomputes a row that fails it, --report-only refuses it. runs.csv must be a regular file "
+                    "of at most 64 MiB, no field longer than 10,000 characters. "
                     "Exit 0 when every checked run was verified, 1 otherwise, 2 on bad input.")
     p.add_argument("experiment", metavar="EXPERIMENT", help=f"one of: {', '.join(EXPERIMENTS)}")
     p.add_argument("--graphs", type=int, default=30, help="worlds per size (default 30)")
@@ -56,7 +59,10 @@ def bench_command(args) -> int:
     out = check_output_dir(args.out, create=not args.report_only)
     result = {"planned": len(runs), "ran": 0, "skipped": len(runs), "failures": 0}
     if not args.report_only:
-        result = run_sweep(runs, out, args.jobs, check=not args.no_check, progress=not args.quiet)
+        parameters = {"experiment": args.experiment, "graphs": args.graphs, "sizes": args.sizes,
+                      "heavy_graphs": args.heavy_graphs, "heavy_max_size": args.heavy_max_size}
+        result = run_sweep(runs, out, args.jobs, check=not args.no_check, progress=not args.quiet,
+                           parameters=parameters)
     wall = time.monotonic() - started
     report = write_report(args.experiment, out, None if args.report_only else wall, plots=not args.no_plots)
     text = report.read_text()

@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import argparse
 import sys
-from pathlib import Path
 
 from topomark.spec.errors import InvalidInput
 from topomark.spec.jsontext import no_duplicate_keys, parse_json
@@ -22,7 +21,6 @@ from topomark.reference.cli.args import check_count, check_seconds
 from topomark.reference.cli.args import seed as seed_option
 from topomark.reference.cli.cmd_explore import parse_policies
 from topomark.reference.oracle.drive import drive
-from topomark.reference.trace.records import dump_trace
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES, lighthouse
 from topomark.reference.oracle.run_external import Limits, run_external
 from topomark.reference.run.map_check import check_map
@@ -59,9 +57,11 @@ def _run_options(p) -> None:
 def _drive_options(p) -> None:
     p.add_argument("--policy", action="append", default=[], metavar="KIND=NAME", help="as for explore")
     p.add_argument("--check", metavar="WORLD", help="judge the map against this world file")
-    p.add_argument("--trace", metavar="FILE", help="write the topomark/trace@1 trace here")
+    p.add_argument("--trace", metavar="FILE", help="write the topomark/trace@1 trace here, streamed as the run goes "
+                                                    "(without it no trace is kept, only counters)")
     p.add_argument("--map", metavar="FILE", help="write the map here")
-    p.add_argument("--max-traversals", type=int, default=1_000_000, metavar="N")
+    p.add_argument("--max-traversals", type=int, default=1_000_000, metavar="N",
+                   help="fail after this many edge traversals (default 1,000,000)")
     p.add_argument("--timeout", type=float, default=600.0, metavar="SECONDS", help="wall-time limit (default 600)")
     p.add_argument("--message-timeout", type=float, default=10.0, metavar="SECONDS")
     p.add_argument("--lighthouse", default="directional-vertex", metavar="NAME",
@@ -108,6 +108,9 @@ def _no_action() -> int:
 def _limits(p) -> None:
     p.add_argument("--max-traversals", type=int, metavar="N",
                    help="fail a program that traverses more edges (default: 4 x the (3.1)+(3.2) bound, >= 1000)")
+    p.add_argument("--max-operations", type=int, metavar="N",
+                   help="end a run (outcome limit) whose program makes more marker or thread operations; they are "
+                        "not traversals and are counted apart (default: 2 x the traversal limit, >= 1000)")
     p.add_argument("--timeout", type=float, default=60.0, metavar="SECONDS", help="wall-time limit (default 60)")
     p.add_argument("--message-timeout", type=float, default=10.0, metavar="SECONDS",
                    help="longest wait for one message (default 10)")
@@ -116,9 +119,10 @@ def _limits(p) -> None:
 def _make_limits(args) -> Limits:
     for name in ("timeout", "message_timeout"):
         check_seconds(getattr(args, name), f"--{name.replace('_', '-')}")
-    if args.max_traversals is not None:
-        check_count(args.max_traversals, "--max-traversals")
-    return Limits(args.max_traversals, args.timeout, args.message_timeout)
+    for name in ("max_traversals", "max_operations"):
+        if getattr(args, name, None) is not None:
+            check_count(getattr(args, name), f"--{name.replace('_', '-')}")
+    return Limits(args.max_traversals, args.timeout, args.message_timeout, getattr(args, "max_operations", None))
 
 
 def register(sub) -> None:
@@ -219,9 +223,8 @@ def drive_command(args) -> int:
     policies = parse_policies(args.policy)
     world = load_world(args.check) if args.check else None
     light = lighthouse(args.lighthouse)
-    result = drive(command, policies, world, limits.max_traversals, limits.wall, limits.message, light)
-    if args.trace:
-        guarded(args.trace, lambda: Path(args.trace).write_text(dump_trace(result.trace), encoding="utf-8"))
+    result = drive(command, policies, world, limits.max_traversals, limits.wall, limits.message, light,
+                   trace=args.trace or None)
     if args.map and result.map is not None:
         guarded(args.map, lambda: save_world(result.map, args.map))
     data = {"command": command, **result.to_json()}

@@ -18,6 +18,13 @@ are sent in the ``@2`` form.  The trace is ``topomark/trace@1`` for the
 directional-vertex lighthouse and ``topomark/trace@2`` for any other
 (``spec/trace.md``), so ``replay`` verifies either.
 
+The trace is streamed: with a file (``trace=``, ``--trace``) every record
+goes to a :class:`~topomark.reference.trace.sink.SpoolSink` as it happens
+and the file is written when the run ends (its header gives the map's n and
+m); without one no record is kept at all, only the counters (``record=True``
+keeps them in :attr:`DriveResult.trace`, for tests and library callers).
+So memory does not grow with the number of moves, whatever the provider.
+
 No ground truth is available here (the provider *is* the world), so the
 run is judged only if the caller supplies the world (``check=``), by
 :func:`topomark.reference.run.map_check.check_map`; the trace it records can also
@@ -26,8 +33,10 @@ be verified later with ``topomark replay``.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import time
+from pathlib import Path
 from types import SimpleNamespace
 from dataclasses import dataclass, field
 from typing import Any, Sequence
@@ -40,6 +49,7 @@ from topomark.spec.world import World
 from topomark.spec.worldfile import world_to_json
 
 from topomark.reference.trace.records import op_record, trace_header
+from topomark.reference.trace.sink import ListSink, SpoolSink, TeeSink, TraceSink
 from topomark.reference.explorers.algorithm31 import LighthouseExplorer
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES, Lighthouse
 from topomark.reference.run.map_check import MapVerdict, check_map
@@ -78,8 +88,8 @@ class DriveResult:
 class _Link:
     """The robot's three operations, as protocol messages to the provider."""
 
-    def __init__(self, peer: Peer, max_traversals: int, trace: list[dict], light: Lighthouse):
-        self.peer, self.max_traversals, self.trace, self.light = peer, max_traversals, trace, light
+    def __init__(self, peer: Peer, max_traversals: int, sink: TraceSink | None, light: Lighthouse):
+        self.peer, self.max_traversals, self.sink, self.light = peer, max_traversals, sink, light
         self.cost = 0
         self.version = 1
         self.here: Signature | None = None
@@ -148,8 +158,9 @@ class _Link:
         self.peer.send({"type": "move", "motion": motion})
         self.here = self._answer()
         self.cost += 1
-        self.trace.append({"event": "move", "step": self.cost, "motion": motion, "perception": str(self.here),
-                           "purpose": purpose})
+        if self.sink is not None:
+            self.sink.emit({"event": "move", "step": self.cost, "motion": motion, "perception": str(self.here),
+                            "purpose": purpose})
         return self.here
 
     def operate(self, op: MarkerOp) -> None:
@@ -159,7 +170,8 @@ class _Link:
             raise TopomarkFault(f"drive speaks topomark/protocol@1, which has no {json.dumps(op.to_json())}")
         self.peer.send({"type": "drop", "direction": op.direction} if self.version == 1 else op_to_message(op))
         self.here = self._answer()
-        self.trace.append(op_record({"step": self.cost, **op.to_json(), "signature": str(self.here)}, self.light))
+        if self.sink is not None:
+            self.sink.emit(op_record({"step": self.cost, **op.to_json(), "signature": str(self.here)}, self.light))
 
     def robot(self) -> Robot:
         return Robot(self.move, lambda: self.here, self.operate)
@@ -167,38 +179,52 @@ class _Link:
 
 def drive(command: Sequence[str], policies: Policies | None = None, world: World | None = None,
           max_traversals: int = 1_000_000, wall: float = 600.0, message: float = 10.0,
-          light: Lighthouse = LIGHTHOUSES["directional-vertex"]) -> DriveResult:
+          light: Lighthouse = LIGHTHOUSES["directional-vertex"], trace: str | Path | None = None,
+          record: bool = False) -> DriveResult:
     """Explore the provider's world from the ``light`` lighthouse; ``world`` (optional) is the truth to judge
-    the map against."""
+    the map against.  ``trace`` is a file the trace is streamed to; ``record`` keeps it in ``result.trace``."""
     policies = policies or Policies()
     started = time.monotonic()
-    trace: list[dict] = []
-    with Peer(command, message, wall) as peer:  # on leaving: the provider and all it started are killed
-        link = _Link(peer, max_traversals, trace, light)
-        try:
-            result = _explore(link, policies, trace, world)
-        except ProtocolError as exc:
-            result = DriveResult("fail", exc.kind, str(exc), link.cost)
-        except (AlgorithmStopped, OutOfMarkers) as stop:  # an outcome, as under explore: no map, FAIL, exit 1
-            result = DriveResult("fail", stop.outcome, f"the algorithm stopped: {stop.reason}", link.cost)
-        # the explorer's map cannot be a world: what the thesis proves of any world (ExplorerFault) fails here
-        except (CheckFailure, ExplorerFault, InvalidInput, LookupError) as exc:
-            result = DriveResult("fail", "inconsistent", "the provider's answers are inconsistent with any "
-                                 f"world: {exc}", link.cost)
-    result.message = clip(result.message, MAX_MESSAGE)
-    size = result.map if result.map is not None else SimpleNamespace(n=0, m=0)
-    header = trace_header("basic", policies, light, size)  # trace@1, or trace@2 for another lighthouse
-    result.trace = [header] + trace + [{"event": "end", "cost": link.cost, "verified": result.check is not None
-                                        and result.check.isomorphic, "violation": None}]
+    kept = ListSink() if record else None
+    with contextlib.ExitStack() as stack:
+        spool = stack.enter_context(SpoolSink(trace)) if trace is not None else None
+        sinks = [s for s in (kept, spool) if s is not None]
+        sink = sinks[0] if len(sinks) == 1 else TeeSink(*sinks) if sinks else None
+        with Peer(command, message, wall) as peer:  # on leaving: the provider and all it started are killed
+            link = _Link(peer, max_traversals, sink, light)
+            result = _run(link, policies, sink, world)
+        result.message = clip(result.message, MAX_MESSAGE)
+        size = result.map if result.map is not None else SimpleNamespace(n=0, m=0)
+        header = trace_header("basic", policies, light, size)  # trace@1, or trace@2 for another lighthouse
+        end = {"event": "end", "cost": link.cost, "verified": result.check is not None and result.check.isomorphic,
+               "violation": None}
+        if kept is not None:
+            result.trace = [header] + kept.records + [end]
+        if spool is not None:
+            spool.finish(header, end)
     result.wall, result.stderr = time.monotonic() - started, peer.stderr_tail()
     return result
 
 
-def _explore(link: _Link, policies: Policies, trace: list[dict], world: World | None) -> DriveResult:
+def _run(link: _Link, policies: Policies, sink: TraceSink | None, world: World | None) -> DriveResult:
+    """The session's result: a map, or how it failed."""
+    try:
+        return _explore(link, policies, sink, world)
+    except ProtocolError as exc:
+        return DriveResult("fail", exc.kind, str(exc), link.cost)
+    except (AlgorithmStopped, OutOfMarkers) as stop:  # an outcome, as under explore: no map, FAIL, exit 1
+        return DriveResult("fail", stop.outcome, f"the algorithm stopped: {stop.reason}", link.cost)
+    # the explorer's map cannot be a world: what the thesis proves of any world (ExplorerFault) fails here
+    except (CheckFailure, ExplorerFault, InvalidInput, LookupError) as exc:
+        return DriveResult("fail", "inconsistent", "the provider's answers are inconsistent with any "
+                           f"world: {exc}", link.cost)
+
+
+def _explore(link: _Link, policies: Policies, sink: TraceSink | None, world: World | None) -> DriveResult:
     """Algorithm 3.1 over the link, the map sent, ``bye`` awaited; judged against ``world`` if given."""
     link.hello()
-    explorer = LighthouseExplorer(link.robot(), policies,
-                                  lambda ex, it: trace.append({"event": "iteration", **it.to_json()}), link.light)
+    listen = None if sink is None else (lambda ex, it: sink.emit({"event": "iteration", **it.to_json()}))
+    explorer = LighthouseExplorer(link.robot(), policies, listen, link.light)
     map_ = explorer.explore().to_world()
     link.peer.send({"type": "map", "world": world_to_json(map_)})
     link.peer.receive(("bye",))

@@ -50,7 +50,7 @@ REASONS = {
     "timeout": "the program did not answer in time",
     "garbage": "the program printed something that is not a protocol message",
     "protocol": "the program sent a valid message at the wrong time",
-    "limit": "the program exceeded the maximum number of traversals",
+    "limit": "the program exceeded the maximum number of traversals or of marker operations",
     "bad-exit": "the program asked for an exit that does not exist",
     "marker": "the program did a marker operation its kit (or the markers lying there) does not allow",
     "invariant": "a snapshot of (S, U) violated I-1 or I-2",
@@ -62,16 +62,27 @@ REASONS = {
 
 @dataclass
 class Limits:
-    """Traversal and time limits; ``max_traversals`` None means 4 × the (3.1)+(3.2) bound, at least 1000."""
+    """Traversal, operation and time limits; ``max_traversals`` None means 4 × the (3.1)+(3.2) bound, at least
+    1000; ``max_operations`` None means 2 × the traversal limit, at least 1000.
+
+    Marker and thread operations are not traversals (§3.1.2, L399: only edge traversals are the cost), so a program
+    could drop and pick up a marker forever at no cost; the operation cap ends such a run with reason ``limit``.
+    """
 
     max_traversals: int | None = None
     wall: float = 60.0
     message: float = 10.0
+    max_operations: int | None = None
 
     def traversals(self, world: World) -> int:
         if self.max_traversals is not None:
             return self.max_traversals
         return max(1000, 4 * upper_bound(world.n, world.m))
+
+    def operations(self, world: World) -> int:
+        if self.max_operations is not None:
+            return self.max_operations
+        return max(1000, 2 * self.traversals(world))
 
 
 @dataclass
@@ -81,6 +92,7 @@ class ExternalResult:
     message: str
     cost: int = 0
     snapshots: int = 0
+    operations: int = 0  # marker and thread operations: counted apart from the cost (§3.1.2)
     wall: float = 0.0
     stderr: list[str] = field(default_factory=list)
     violation: Violation | None = None
@@ -93,7 +105,8 @@ class ExternalResult:
 
     def to_json(self) -> dict[str, Any]:
         return {"verdict": self.verdict, "reason": self.reason, "message": self.message, "cost": self.cost,
-                "snapshots": self.snapshots, "wall_seconds": round(self.wall, 3), "stderr_tail": self.stderr,
+                "operations": self.operations, "snapshots": self.snapshots, "wall_seconds": round(self.wall, 3),
+                "stderr_tail": self.stderr,
                 "violation": None if self.violation is None else self.violation.to_json(), "marker_rule": self.rule}
 
 
@@ -115,6 +128,7 @@ class _Session:
         self.robot = self.sim.robot()  # the program gets exactly the robot interface, over the pipe
         self.peer = peer
         self.max_traversals = limits.traversals(world)
+        self.max_operations = limits.operations(world)
         self.limits = limits
         self.check_snapshots = check_snapshots
         self.snapshots = 0
@@ -158,7 +172,15 @@ class _Session:
         sig = self.robot.move(motion, "other")
         self.peer.send({"type": "signature", "value": str(sig), "step": self.sim.cost})
 
+    def _count_operation(self) -> None:
+        """The operation cap: one more marker or thread operation than ``max_operations`` ends the run."""
+        done = self.sim.operations.total()
+        if done >= self.max_operations:
+            raise _Fail("limit", f"marker operation {done + 1} (after {self.sim.cost} traversals) exceeds the limit "
+                                 f"of {self.max_operations} operations (--max-operations)")
+
     def drop(self, direction: int | None) -> None:
+        self._count_operation()
         v, _ = self.sim.state
         degree = self.sim.world.degree(v)
         if direction is not None and not 0 <= direction < degree:
@@ -174,6 +196,7 @@ class _Session:
 
     def operate(self, msg: dict) -> None:
         """An @2 ``drop`` or ``pick_up``: malformed fields are garbage, refusals the simulator's ``marker``."""
+        self._count_operation()
         v, _ = self.sim.state
         op = op_from_message(msg, self.sim.world.degree(v))
         if getattr(op, "op", None) == "rewind" and self.sim.cost >= self.max_traversals:  # a rewind is a move
@@ -251,6 +274,7 @@ def run_external(world: World, command: Sequence[str], limits: Limits | None = N
             _say(peer, {"type": "error", "message": str(exc)})
     if session is not None:
         result.cost, result.snapshots = session.sim.cost, session.snapshots
+        result.operations = session.sim.operations.total()
     result.message = clip(result.message, MAX_MESSAGE)
     result.wall = time.monotonic() - started
     result.stderr = peer.stderr_tail()

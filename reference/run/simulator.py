@@ -11,11 +11,10 @@ Explorers only ever receive :meth:`Simulator.robot`.
 from __future__ import annotations
 
 import json
-from collections import Counter
+from collections import Counter, deque
 
 from topomark.spec.errors import CheckFailure, InvalidInput, OutOfMarkers, Violation
 from topomark.spec.kit import Kit, MarkerOp, ThreadOp
-from topomark.spec.marker import VertexMarker
 from topomark.spec.markerlayer import MarkerLayer, apply_op
 from topomark.spec.robot import State, step
 from topomark.spec.signature import Signature
@@ -23,7 +22,10 @@ from topomark.spec.world import World
 
 from topomark.reference.explorers.robot import PURPOSES, Robot
 
-__all__ = ["Simulator"]
+__all__ = ["Simulator", "EVENTS_KEPT"]
+
+EVENTS_KEPT = 1000
+"""How many of the latest marker and thread operations :attr:`Simulator.events` keeps."""
 
 
 class Simulator:
@@ -37,7 +39,11 @@ class Simulator:
     true_state)`` after every traversal.  Edge traversals are the cost
     (§3.1.2); marker operations are counted apart in :attr:`operations` and
     logged, with the step they followed and the signature sensed just after,
-    in :attr:`events`; ``op_listener`` (optional) is called with each such
+    in :attr:`events` — the last :data:`EVENTS_KEPT` only, so a robot that
+    drops and picks up a marker forever without moving holds constant memory
+    (the counts in :attr:`operations` are exact; a caller that must stop such a
+    robot caps them, as ``run-external``'s ``--max-operations`` does);
+    ``op_listener`` (optional) is called with each such
     event as it happens, so moves and marker operations reach a trace in the
     order the robot did them (``spec/trace.md``, trace@2's robot layer).
     :attr:`held` is what the robot still carries: each kind's own markers and
@@ -61,10 +67,9 @@ class Simulator:
         self.cost = 0
         self.by_purpose: Counter[str] = Counter()
         self.operations: Counter[str] = Counter()
-        self.events: list[dict] = []
+        self.events: deque[dict] = deque(maxlen=EVENTS_KEPT)
         self.listener = listener
         self.op_listener = op_listener
-        self.drops: list[VertexMarker] = []
 
     @property
     def world(self) -> World:
@@ -158,7 +163,3 @@ class Simulator:
             self.held[op.kind] -= own
             self.held["either"] -= pooled
         self._log(op)
-        if op.kind == "vertex" and not op.pick_up:
-            v, entry = self.state
-            head = None if op.direction is None else self.layer.neighbour(v, (entry + op.direction) % self.layer.degree(v))
-            self.drops.append(VertexMarker(v, op.count, head))

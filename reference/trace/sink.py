@@ -14,18 +14,24 @@ others — a counting sink on a long run skips formatting every move.
 :func:`trace_line` is the one
 serialisation (keys sorted, no whitespace), so a streamed file is byte-for-byte
 what :func:`~topomark.reference.trace.records.dump_trace` makes of the same records.
+
+A trace whose header is known only when the run ends (``drive``: the header
+gives the map's n and m) goes to a :class:`SpoolSink`: the records are
+written to an unnamed temporary file as they come and copied, after the
+header, into the named file at the end — memory stays constant either way.
 """
 
 from __future__ import annotations
 
 import json
+import tempfile
 from collections import deque
 from pathlib import Path
-from typing import Protocol
+from typing import IO, Protocol
 
-from topomark.reference.files.outputs import open_output
+from topomark.reference.files.outputs import check_output, guarded, open_output
 
-__all__ = ["TraceSink", "ListSink", "RingSink", "FileSink", "TeeSink", "trace_line"]
+__all__ = ["TraceSink", "ListSink", "RingSink", "FileSink", "SpoolSink", "TeeSink", "trace_line"]
 
 
 def trace_line(record: dict) -> str:
@@ -83,6 +89,50 @@ class FileSink:
 
     def __exit__(self, *exc) -> None:
         self._out.__exit__(*exc)
+
+
+class SpoolSink:
+    """Records spooled as they come, written to ``path`` after a header made at the end (:meth:`finish`).
+
+    The path is checked when the sink is made (an unwritable one is InvalidInput before any exploring).  The
+    spool is an unnamed temporary file beside ``path`` (in the system's temporary directory if that directory
+    cannot hold one), removed when the sink is closed, whatever happens.
+    """
+
+    def __init__(self, path: str | Path) -> None:
+        check_output(path)
+        self.path = path
+        self._spool = self._open_spool(Path(path).parent)
+
+    def _open_spool(self, directory: Path) -> IO[str]:
+        try:
+            return tempfile.TemporaryFile("w+", encoding="utf-8", newline="", dir=directory)
+        except OSError:
+            return guarded(self.path, lambda: tempfile.TemporaryFile("w+", encoding="utf-8", newline=""))
+
+    def emit(self, record: dict) -> None:
+        guarded(self.path, lambda: self._spool.write(trace_line(record)))
+
+    def finish(self, header: dict, end: dict) -> None:
+        """Write ``path``: ``header``, every record emitted, ``end``; then close the spool."""
+        try:
+            guarded(self.path, lambda: self._spool.seek(0))
+            with open_output(self.path) as out:
+                out.write(trace_line(header))
+                while chunk := guarded(self.path, lambda: self._spool.read(1 << 20)):
+                    out.write(chunk)
+                out.write(trace_line(end))
+        finally:
+            self.close()
+
+    def close(self) -> None:
+        self._spool.close()
+
+    def __enter__(self) -> "SpoolSink":
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
 
 
 class TeeSink:
