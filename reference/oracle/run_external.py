@@ -169,7 +169,10 @@ class _Session:
         if not 0 <= motion < degree:
             raise _Fail("bad-exit", f"step {self.sim.cost + 1}: motion {motion} does not exist at a vertex of "
                                     f"degree {degree} (allowed 0..{degree - 1})")
-        sig = self.robot.move(motion, "other")
+        try:
+            sig = self.robot.move(motion, "other")
+        except CheckFailure as exc:  # a move the thread refuses (it would run out): the kit's refusal
+            raise _Fail("marker", f"move: {exc}", exc.violation) from None
         self.peer.send({"type": "signature", "value": str(sig), "step": self.sim.cost})
 
     def _count_operation(self) -> None:
