@@ -79,7 +79,7 @@ def test_lint_passes_on_a_fresh_export(suite, capsys):
 
 @pytest.mark.parametrize("damage, words", [
     (lambda r: _edit_manifest(r, lambda m: m["cases"].append(dict(m["cases"][0]))), "duplicate case name"),
-    (lambda r: _edit_manifest(r, lambda m: m.update(version="2.0.0")), "not compatible"),
+    (lambda r: _edit_manifest(r, lambda m: m.update(version="3.0.0")), "not compatible"),
     (lambda r: _edit_manifest(r, lambda m: m.update(format="other/suite@1")), "is not topomark/conformance@2"),
     (lambda r: _edit_manifest(r, lambda m: m["cases"][2]["reference"]["default"].update(cost=1)),
      "manifest cost 1"),

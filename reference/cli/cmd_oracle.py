@@ -171,6 +171,11 @@ def register(sub) -> None:
     _drive_options(d)
     d.set_defaults(handler=drive_command, add_options=_drive_options)
 
+    _register_conformance(sub)
+
+
+def _register_conformance(sub) -> None:
+    """``conformance export|lint|run``."""
     c = sub.add_parser("conformance", help="export, lint or run the conformance suite (topomark/conformance@2)",
                        description="export DIR: write the versioned suite topomark/conformance@2 (worlds, kits, "
                                    "bounds, reference runs: costs, marker operations, maps, traces; Algorithm 3.1's "
