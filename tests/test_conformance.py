@@ -1,4 +1,5 @@
-"""The conformance suite ``topomark/conformance@1``: export, self-lint, and runs of good and bad implementations."""
+"""The conformance suite ``topomark/conformance@2``, Algorithm 3.1's cases: export, self-lint, and runs of good and bad
+implementations (tests/test_conformance_algorithms.py: the algorithm suites and @1 suites)."""
 
 from __future__ import annotations
 
@@ -25,7 +26,7 @@ WRONG = str(Path(__file__).resolve().parent / "clients" / "wrong_client.py")
 @pytest.fixture(scope="module")
 def suite(tmp_path_factory) -> Path:
     root = tmp_path_factory.mktemp("suite") / "suite"
-    assert main(["conformance", "export", str(root)]) == 0
+    assert main(["conformance", "export", str(root), "--algorithm", "basic"]) == 0
     return root
 
 
@@ -33,7 +34,7 @@ def suite(tmp_path_factory) -> Path:
 def small(tmp_path_factory) -> Path:
     """The first four cases only (the two Figure 3.6 wheels, the triangle, C4): cheap to lint repeatedly."""
     root = tmp_path_factory.mktemp("small") / "suite"
-    conformance.export(root, conformance.default_cases()[:4])
+    conformance.export(root, conformance.default_cases()[:4], algorithms=())
     return root
 
 
@@ -50,7 +51,7 @@ def manifest(root: Path) -> dict:
 
 def test_manifest_describes_version_layout_and_cases(suite):
     m = manifest(suite)
-    assert m["format"] == "topomark/conformance@1" and m["version"] == conformance.SUITE_VERSION
+    assert m["format"] == "topomark/conformance@2" and m["version"] == conformance.SUITE_VERSION
     assert m["protocol"] == "topomark/protocol@1" and m["trace_format"] == "topomark/trace@1"
     assert set(m["policies"]) == set(conformance.POLICIES) and "layout" in m
     names = [c["name"] for c in m["cases"]]
@@ -64,7 +65,8 @@ def test_manifest_describes_version_layout_and_cases(suite):
 def test_every_world_and_map_is_valid_against_the_published_schema(suite):
     published = json.loads((suite / "schema" / "world.schema.json").read_text())
     validator = jsonschema.Draft202012Validator(published)
-    files = list((suite / "worlds").glob("*.json")) + list((suite / "reference").rglob("*.map.json"))
+    files = list((suite / "worlds").glob("*.json")) + list((suite / "reference").rglob("*.map.json"))  # basic's suite
+    # uses Algorithm 3.1's worlds of the same name, so the worlds are one per Algorithm 3.1 case
     assert len(files) == len(manifest(suite)["cases"]) * (1 + len(conformance.POLICIES))
     for path in files:
         assert not list(validator.iter_errors(json.loads(path.read_text()))), path
@@ -77,8 +79,8 @@ def test_lint_passes_on_a_fresh_export(suite, capsys):
 
 @pytest.mark.parametrize("damage, words", [
     (lambda r: _edit_manifest(r, lambda m: m["cases"].append(dict(m["cases"][0]))), "duplicate case name"),
-    (lambda r: _edit_manifest(r, lambda m: m.update(version="2.0.0")), "not compatible"),
-    (lambda r: _edit_manifest(r, lambda m: m.update(format="other/suite@1")), "is not topomark/conformance@1"),
+    (lambda r: _edit_manifest(r, lambda m: m.update(version="3.0.0")), "not compatible"),
+    (lambda r: _edit_manifest(r, lambda m: m.update(format="other/suite@1")), "is not topomark/conformance@2"),
     (lambda r: _edit_manifest(r, lambda m: m["cases"][2]["reference"]["default"].update(cost=1)),
      "manifest cost 1"),
     (lambda r: _edit_manifest(r, lambda m: m["cases"][0].update(name="Bad Name")), "no valid name"),
@@ -158,7 +160,7 @@ def test_run_bad_input(suite, tmp_path, capsys):
 
 def test_export_of_custom_cases(tmp_path):
     cases = [("c5", "a cycle", g.cycle(5).with_start(Start("0", "1")))]
-    m = conformance.export(tmp_path / "s", cases)
+    m = conformance.export(tmp_path / "s", cases, algorithms=())
     assert [c["name"] for c in m["cases"]] == ["c5"] and m["cases"][0]["reference"]["default"]["cost"] == 5
     with pytest.raises(InvalidInput, match="duplicate case name"):
-        conformance.export(tmp_path / "t", cases + cases)
+        conformance.export(tmp_path / "t", cases + cases, algorithms=())

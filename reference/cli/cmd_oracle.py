@@ -73,8 +73,16 @@ def _drive_options(p) -> None:
 def _conformance_options(p) -> None:
     _limits(p)
     _protocol_options(p)
+    _suite_choice(p, "run the suite of the algorithm NAME through topomark/protocol@2, each case with its own kit "
+                     "(repeatable; without it and --family: Algorithm 3.1's cases)")
     p.add_argument("-k", "--select", metavar="TEXT", help="only the cases whose name contains TEXT")
     p.add_argument("--json", action="store_true")
+
+
+def _suite_choice(p, what: str) -> None:
+    p.add_argument("--algorithm", action="append", default=[], metavar="NAME", help=what)
+    p.add_argument("--family", action="append", default=[], metavar="FAMILY",
+                   help=f"every deterministic algorithm of FAMILY ({', '.join(conformance.FAMILIES)}; repeatable)")
 
 
 def _protocol_options(p) -> None:
@@ -163,20 +171,30 @@ def register(sub) -> None:
     _drive_options(d)
     d.set_defaults(handler=drive_command, add_options=_drive_options)
 
-    c = sub.add_parser("conformance", help="export, lint or run the conformance suite",
-                       description="export DIR: write the versioned suite (worlds, reference maps, traces, costs, "
-                                   "manifest). lint DIR: check a suite. run DIR -- CMD: run an implementation "
-                                   "against every case through topomark/protocol@1 (exit 0 iff all pass).")
+    _register_conformance(sub)
+
+
+def _register_conformance(sub) -> None:
+    """``conformance export|lint|run``."""
+    c = sub.add_parser("conformance", help="export, lint or run the conformance suite (topomark/conformance@2)",
+                       description="export DIR: write the versioned suite topomark/conformance@2 (worlds, kits, "
+                                   "bounds, reference runs: costs, marker operations, maps, traces; Algorithm 3.1's "
+                                   "cases and a suite per deterministic algorithm). lint DIR: check a suite (@2 or "
+                                   "@1). run DIR -- CMD: run an implementation against Algorithm 3.1's cases through "
+                                   "topomark/protocol@1 (or @2 with --protocol 2 or --kit), or with --algorithm/"
+                                   "--family against those algorithms' suites through topomark/protocol@2, each "
+                                   "case giving its kit in hello (exit 0 iff all pass).")
     csub = c.add_subparsers(dest="action", metavar="ACTION", parser_class=Parser)
     ce = csub.add_parser("export", help="write the suite to DIR (new or empty)")
     ce.add_argument("dir", metavar="DIR")
+    _suite_choice(ce, "write the suite of the algorithm NAME only (repeatable; default: every deterministic one)")
     ce.add_argument("--json", action="store_true")
     ce.set_defaults(handler=conformance_export)
     cl = csub.add_parser("lint", help="check a suite directory")
     cl.add_argument("dir", metavar="DIR")
     cl.add_argument("--json", action="store_true")
     cl.set_defaults(handler=conformance_lint)
-    cr = csub.add_parser("run", help="run CMD on every case")
+    cr = csub.add_parser("run", help="run CMD on every case (of Algorithm 3.1, or of --algorithm/--family)")
     cr.add_argument("dir", metavar="DIR")
     cr.add_argument("cmd", nargs=argparse.REMAINDER, metavar="-- CMD [ARGS...]")
     _conformance_options(cr)
@@ -236,33 +254,53 @@ def drive_command(args) -> int:
 
 
 def _suite_summary(manifest: dict) -> dict:
+    suites = manifest.get("suites", [])
     return {"format": manifest["format"], "version": manifest["version"], "cases": len(manifest["cases"]),
-            "policies": list(manifest["policies"])}
+            "policies": list(manifest["policies"]), "algorithms": [s["algorithm"] for s in suites],
+            "algorithm_cases": sum(len(s["cases"]) for s in suites)}
+
+
+def _describe(info: dict) -> str:
+    return (f"{info['format']} version {info['version']}, {info['cases']} Algorithm 3.1 cases x "
+            f"{len(info['policies'])} policies, {len(info['algorithms'])} algorithm suites "
+            f"({info['algorithm_cases']} cases)")
 
 
 def conformance_export(args) -> int:
-    manifest = guarded(args.dir, lambda: conformance.export(args.dir))
+    chosen = conformance.suite_algorithms(args.algorithm, args.family)
+    manifest = guarded(args.dir, lambda: conformance.export(args.dir, algorithms=chosen))
     info = _suite_summary(manifest)
-    emit(args, {"dir": args.dir, **info}, f"wrote {args.dir}: {info['format']} version {info['version']}, "
-                                          f"{info['cases']} cases x {len(info['policies'])} policies (linted)")
+    emit(args, {"dir": args.dir, **info}, f"wrote {args.dir}: {_describe(info)} (linted)")
     return 0
 
 
 def conformance_lint(args) -> int:
     info = _suite_summary(conformance.lint(args.dir))
-    emit(args, {"dir": args.dir, "ok": True, **info},
-         f"{args.dir}: ok ({info['format']} version {info['version']}, {info['cases']} cases)")
+    emit(args, {"dir": args.dir, "ok": True, **info}, f"{args.dir}: ok ({_describe(info)})")
     return 0
+
+
+def _chosen_algorithms(args) -> list[str]:
+    """--algorithm and --family: the algorithms whose suites to run (protocol @2, the cases' own kits)."""
+    if not (args.algorithm or args.family):
+        return []
+    if args.kit is not None or args.protocol == 1:
+        raise InvalidInput("--algorithm and --family run each case with its own kit over topomark/protocol@2: "
+                           "leave out --kit and --protocol 1")
+    return [spec.name for spec in conformance.suite_algorithms(args.algorithm, args.family)]
 
 
 def conformance_run(args) -> int:
     command = _command(args)
     limits = _make_limits(args)
+    algorithms = _chosen_algorithms(args)
     version, kit = _protocol_choice(args)
-    show = None if args.json else (lambda row: print(f"  {row.name}: {row.result.verdict}", file=sys.stderr))
-    rows, wall = conformance.timed_run(args.dir, command, limits, args.select, show, version, kit)
-    passed = sum(r.result.passed for r in rows)
-    data = {"dir": args.dir, "command": command, "passed": passed, "total": len(rows),
-            "wall_seconds": round(wall, 3), "cases": [r.to_json() for r in rows]}
-    emit(args, data, conformance.render_table(rows, wall))
+    show = None if args.json else (lambda row: print(f"  {row.to_json()['case']}: {row.to_json()['verdict']}",
+                                                     file=sys.stderr))
+    rows, wall = conformance.timed_run(args.dir, command, limits, args.select, show, version, kit, algorithms)
+    passed = sum(r.passed for r in rows)
+    data = {"dir": args.dir, "command": command, "protocol": 2 if algorithms else version, "algorithms": algorithms,
+            "passed": passed, "total": len(rows), "wall_seconds": round(wall, 3), "cases": [r.to_json() for r in rows]}
+    table = conformance.render_algorithm_table(rows, wall) if algorithms else conformance.render_table(rows, wall)
+    emit(args, data, table)
     return 0 if passed == len(rows) else 1

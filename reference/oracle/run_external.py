@@ -38,9 +38,10 @@ from topomark.reference.run.simulator import Simulator
 from topomark.reference.oracle.snapshot_wire import snapshot_to_map
 from topomark.reference.oracle.marker_messages import op_from_message
 
-__all__ = ["Limits", "ExternalResult", "run_external", "REASONS", "LIGHTHOUSE_KIT", "START_ANCHOR"]
+__all__ = ["Limits", "ExternalResult", "run_external", "REASONS", "LIGHTHOUSE_KIT", "START_ANCHOR", "GAVE_UP"]
 
 LIGHTHOUSE_KIT = Kit(vertex=1, directional=True)  # Algorithm 3.1's kit: @1's only one, @2's default
+GAVE_UP = "the program gave up"  # how a verdict starts when the program reported failure (sent ``error``)
 START_ANCHOR = ("topomark/protocol@2 anchors φ at the start: map vertex 0 is the vertex the robot started at "
                 "and its exit 0 the exit the robot faced there")
 
@@ -93,6 +94,7 @@ class ExternalResult:
     cost: int = 0
     snapshots: int = 0
     operations: int = 0  # marker and thread operations: counted apart from the cost (§3.1.2)
+    marker_operations: dict[str, int] = field(default_factory=dict)  # the same by kind (drop, pick_up, tie, ...)
     wall: float = 0.0
     stderr: list[str] = field(default_factory=list)
     violation: Violation | None = None
@@ -105,7 +107,8 @@ class ExternalResult:
 
     def to_json(self) -> dict[str, Any]:
         return {"verdict": self.verdict, "reason": self.reason, "message": self.message, "cost": self.cost,
-                "operations": self.operations, "snapshots": self.snapshots, "wall_seconds": round(self.wall, 3),
+                "operations": self.operations,
+                "marker_operations": self.marker_operations, "snapshots": self.snapshots, "wall_seconds": round(self.wall, 3),
                 "stderr_tail": self.stderr,
                 "violation": None if self.violation is None else self.violation.to_json(), "marker_rule": self.rule}
 
@@ -157,7 +160,7 @@ class _Session:
             elif kind == "snapshot":
                 self.snapshot(msg)
             elif kind == "error":
-                raise _Fail("crash", f"the program gave up: {clip(msg['message'], 500)}")
+                raise _Fail("crash", f"{GAVE_UP}: {clip(msg['message'], 500)}")
             else:
                 return self.read_map(msg["world"])
 
@@ -278,6 +281,7 @@ def run_external(world: World, command: Sequence[str], limits: Limits | None = N
     if session is not None:
         result.cost, result.snapshots = session.sim.cost, session.snapshots
         result.operations = session.sim.operations.total()
+        result.marker_operations = dict(sorted(session.sim.operations.items()))
     result.message = clip(result.message, MAX_MESSAGE)
     result.wall = time.monotonic() - started
     result.stderr = peer.stderr_tail()

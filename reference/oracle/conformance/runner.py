@@ -1,0 +1,210 @@
+"""Running an implementation against a conformance suite (thesis §3.1.2–3.1.3, §6.2).
+
+:func:`run` plays Algorithm 3.1's worlds to an external implementation through
+``topomark/protocol@1`` or ``@2`` with any kit; :func:`run_algorithms` plays
+the cases of the chosen algorithms' suites through ``@2``, each with its own
+kit in ``hello`` (:func:`topomark.reference.oracle.run_external.run_external`).
+A crash, a hang or garbage is a failure like a wrong map.
+
+A case that expects ``correct`` passes when the program's map is extended-
+isomorphic to the world with the markers it left (§3.1.3).  A case that
+expects ``failed`` — the kit runs out before the map is complete — passes
+only when the program reports failure (sends ``error``, which the verdict
+quotes as ":data:`~topomark.reference.oracle.run_external.GAVE_UP`: ...")
+without overdrawing its kit: a map, an overdrawn kit or a crash fails it.
+Each row compares the program's cost (edge traversals, §3.1.2, L399) and
+marker operations with topomark's own run *of the same algorithm* on the same
+case, and the columns say what they compare.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, Callable, Sequence
+
+from topomark.spec.errors import InvalidInput
+from topomark.spec.kit import Kit
+from topomark.spec.worldfile import load_world
+
+from topomark.reference.oracle.conformance.lint import lint
+from topomark.reference.oracle.conformance.manifest import SUITE_FORMAT
+from topomark.reference.oracle.run_external import GAVE_UP, ExternalResult, Limits, run_external
+
+__all__ = ["Row", "AlgorithmRow", "run", "run_algorithms", "render_table", "render_algorithm_table", "timed_run"]
+
+
+def _ratio(cost: int, reference: int, passed: bool) -> float | None:
+    return round(cost / reference, 3) if passed and reference > 0 else None
+
+
+@dataclass
+class Row:
+    """One Algorithm 3.1 case: the program's result against ``basic``'s costs."""
+
+    name: str
+    n: int
+    m: int
+    result: ExternalResult
+    reference: int  # the default policy's cost
+    best: int  # the cheapest named policy's cost
+
+    @property
+    def passed(self) -> bool:
+        return self.result.passed
+
+    def to_json(self) -> dict[str, Any]:
+        r = self.result
+        return {"case": self.name, "n": self.n, "m": self.m, "verdict": r.verdict, "reason": r.reason,
+                "message": r.message, "cost": r.cost, "reference_algorithm": "basic", "reference_cost": self.reference,
+                "best_reference_cost": self.best, "ratio": _ratio(r.cost, self.reference, r.passed),
+                "ratio_best": _ratio(r.cost, self.best, r.passed), "wall_seconds": round(r.wall, 3)}
+
+
+def run(directory: str | Path, command: Sequence[str], limits: Limits | None = None,
+        select: str | None = None, progress: Callable[[Row], None] | None = None, version: int = 1,
+        kit: Kit | None = None) -> list[Row]:
+    """Run ``command`` on every Algorithm 3.1 case (or those whose name contains ``select``), speaking protocol
+    ``version`` with ``kit``."""
+    root = Path(directory)
+    manifest = lint(root, replay_traces=False)
+    rows = []
+    for case in manifest["cases"]:
+        if select and select not in case["name"]:
+            continue
+        world = load_world(root / case["world"])
+        costs = {k: v["cost"] for k, v in case["reference"].items()}
+        row = Row(case["name"], world.n, world.m, run_external(world, command, limits, version=version, kit=kit),
+                  costs.get("default", min(costs.values())), min(costs.values()))
+        rows.append(row)
+        if progress is not None:
+            progress(row)
+    if not rows:
+        raise InvalidInput(f"no case of {root} matches {select!r}")
+    return rows
+
+
+@dataclass
+class AlgorithmRow:
+    """One case of an algorithm's suite: the program's result against that algorithm's reference run."""
+
+    algorithm: str
+    case: dict[str, Any]
+    result: ExternalResult
+
+    @property
+    def passed(self) -> bool:
+        if self.case["expected"] == "correct":
+            return self.result.passed
+        return self.result.reason == "crash" and self.result.message.startswith(GAVE_UP)
+
+    @property
+    def reason(self) -> str:
+        """The program's reason, or ``expected-failure`` when it sent a map where the kit runs out."""
+        if self.case["expected"] == "failed" and self.result.passed:
+            return "expected-failure"
+        return "failed" if self.passed and self.case["expected"] == "failed" else self.result.reason
+
+    def to_json(self) -> dict[str, Any]:
+        r, ref = self.result, self.case["reference"]
+        return {"algorithm": self.algorithm, "case": self.case["name"], "n": self.case["n"], "m": self.case["m"],
+                "kit": self.case["kit"], "options": self.case["options"], "bound": self.case["bound"],
+                "expected": self.case["expected"], "verdict": "pass" if self.passed else "fail",
+                "reason": self.reason, "message": r.message, "cost": r.cost,
+                "marker_operations": r.marker_operations,
+                "reference": {"algorithm": self.algorithm, "outcome": self.case["expected"], "cost": ref["cost"],
+                              "marker_operations": ref["marker_operations"]},
+                "ratio": _ratio(r.cost, ref["cost"], self.passed), "wall_seconds": round(r.wall, 3)}
+
+
+def run_algorithms(directory: str | Path, command: Sequence[str], algorithms: Sequence[str],
+                   limits: Limits | None = None, select: str | None = None,
+                   progress: Callable[[AlgorithmRow], None] | None = None) -> list[AlgorithmRow]:
+    """Run ``command`` on every case of the suites of ``algorithms`` (or those whose name contains ``select``),
+    through ``topomark/protocol@2`` with each case's kit."""
+    root = Path(directory)
+    manifest = lint(root, replay_traces=False)
+    if manifest["format"] != SUITE_FORMAT:
+        raise InvalidInput(f"suite {root} is {manifest['format']}: only {SUITE_FORMAT} holds algorithm suites; "
+                           "export a new one (topomark conformance export DIR)")
+    suites = {s["algorithm"]: s for s in manifest["suites"]}
+    missing = [a for a in algorithms if a not in suites]
+    if missing:
+        raise InvalidInput(f"suite {root} has no suite of {', '.join(missing)} (it has: "
+                           f"{', '.join(suites) or 'none'})")
+    rows = []
+    for name in algorithms:
+        for case in suites[name]["cases"]:
+            if select and select not in case["name"]:
+                continue
+            world = load_world(root / case["world"])
+            result = run_external(world, command, limits, version=2, kit=Kit.from_json(case["kit"]))
+            rows.append(AlgorithmRow(name, case, result))
+            if progress is not None:
+                progress(rows[-1])
+    if not rows:
+        raise InvalidInput(f"no case of {root} matches {select!r}")
+    return rows
+
+
+def _table(head: tuple[str, ...], body: list[tuple[str, ...]]) -> list[str]:
+    widths = [max(len(r[k]) for r in [head] + body) for k in range(len(head) - 1)]
+    return ["  ".join(c.ljust(w) for c, w in zip(r[:-1], widths)) + "  " + r[-1] for r in [head] + body]
+
+
+def _number(value: float | None) -> str:
+    return "-" if value is None else f"{value:.2f}"
+
+
+def render_table(rows: list[Row], wall: float) -> str:
+    head = ("case", "n", "m", "verdict", "cost", "ref cost (basic)", "ratio", "best cost (basic)", "ratio",
+            "reason")
+    body = []
+    for row in rows:
+        j = row.to_json()
+        body.append((row.name, str(row.n), str(row.m), j["verdict"].upper(), str(j["cost"]), str(row.reference),
+                     _number(j["ratio"]), str(row.best), _number(j["ratio_best"]),
+                     "" if row.result.passed else f"{row.result.reason}: {row.result.message}"[:100]))
+    lines = _table(head, body)
+    passed = sum(r.result.passed for r in rows)
+    lines.append(f"{passed}/{len(rows)} passed in {wall:.1f} s (ref cost (basic): topomark's Algorithm 3.1 under "
+                 "the default policy; best cost (basic): under the cheapest named policy)")
+    return "\n".join(line.rstrip() for line in lines)
+
+
+def _ops(ops: dict[str, int]) -> str:
+    return ",".join(f"{k}={v}" for k, v in sorted(ops.items())) or "-"
+
+
+def render_algorithm_table(rows: list[AlgorithmRow], wall: float) -> str:
+    """The rows, the reference columns labelled with the algorithm they compare with."""
+    names = sorted({r.algorithm for r in rows})
+    label = names[0] if len(names) == 1 else "its algorithm"
+    head = ("algorithm", "case", "n", "m", "expected", "verdict", "cost", f"ref cost ({label})", "ratio", "bound",
+            "ops", f"ref ops ({label})", "reason")
+    body = []
+    for row in rows:
+        j = row.to_json()
+        note = "" if row.passed and row.case["expected"] == "correct" else f"{j['reason']}: {j['message']}"[:100]
+        body.append((row.algorithm, j["case"], str(j["n"]), str(j["m"]), j["expected"], j["verdict"].upper(),
+                     str(j["cost"]), str(j["reference"]["cost"]), _number(j["ratio"]),
+                     "-" if j["bound"] is None else str(j["bound"]), _ops(j["marker_operations"]),
+                     _ops(j["reference"]["marker_operations"]), note))
+    lines = _table(head, body)
+    passed = sum(r.passed for r in rows)
+    lines.append(f"{passed}/{len(rows)} passed in {wall:.1f} s (ref: topomark's own run of {label} on the case, "
+                 "with the case's kit; ratio: cost / ref cost; bound: the thesis's exact cost bound, - if none; "
+                 "ops: marker and thread operations by kind)")
+    return "\n".join(line.rstrip() for line in lines)
+
+
+def timed_run(directory, command, limits=None, select=None, progress=None, version: int = 1,
+              kit: Kit | None = None, algorithms: Sequence[str] = ()) -> tuple[list, float]:
+    """:func:`run` (no ``algorithms``) or :func:`run_algorithms`, and the wall time it took."""
+    started = time.monotonic()
+    if algorithms:
+        rows = run_algorithms(directory, command, algorithms, limits, select, progress)
+    else:
+        rows = run(directory, command, limits, select, progress, version, kit)
+    return rows, time.monotonic() - started
