@@ -103,12 +103,13 @@ def test_every_message_topomark_sends_as_the_explorer_validates(tmp_path, versio
     ('{"type":"drop","direction":"0"}', 1, "drop.direction must be integer or null"),
     ('{"type":"thread","op":"knot","count":0}', 2, "thread.count must be an integer 1..1000000, got 0"),
     ('{"type":"drop","kind":"vertex","count":1.5}', 2, "drop.count must be integer"),
+    ('{"type":"move","motion":1.0}', 1, "move.motion must be integer, got 1.0"),
     ('{"type":"snapshot","S":[],"U":[]}', 1, "snapshot.S must be object"),
     ('{"type":"map"}', 1, "map message: missing field 'world'"),
 ])
 def test_a_line_that_breaks_its_schema_is_garbage_naming_the_field(line, version, words):
     with pytest.raises(ProtocolError) as exc:
-        decode(line, Expect(("hello", "bye", "drop", "thread", "snapshot", "map"), version))
+        decode(line, Expect(("hello", "bye", "move", "drop", "thread", "snapshot", "map"), version))
     assert exc.value.kind == "garbage" and words in str(exc.value), str(exc.value)
 
 

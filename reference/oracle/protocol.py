@@ -37,7 +37,7 @@ from functools import lru_cache
 from importlib import resources
 from typing import Any, Sequence
 
-from jsonschema import Draft202012Validator, ValidationError
+from jsonschema import Draft202012Validator, ValidationError, validators
 from referencing import Registry, Resource
 
 from topomark.spec.errors import InvalidInput, clip
@@ -65,18 +65,21 @@ MESSAGES: dict[int, dict[str, str]] = {
 # the payloads judged with their message, not when the line is read: a snapshot's S and U (FAIL [snapshot]),
 # a map's world (FAIL [map-invalid])
 PAYLOADS = {"snapshot": ("S", "U"), "map": ("world",)}
+# JSON Schema counts 1.0 as an integer; the protocol does not (a motion, exit or count is written as an integer)
+_Validator = validators.extend(Draft202012Validator, type_checker=Draft202012Validator.TYPE_CHECKER.redefine(
+    "integer", lambda checker, x: isinstance(x, int) and not isinstance(x, bool)))
 _RANK = {"required": 1, "additionalProperties": 2}  # a wrong value is named before a missing or an unknown field
 
 
 @lru_cache(maxsize=None)
-def _validator(name: str, envelope: bool) -> Draft202012Validator:
+def _validator(name: str, envelope: bool) -> Any:
     """The validator of ``$defs/name``; ``envelope`` leaves the payloads (:data:`PAYLOADS`) to their judge."""
     definition = _DEFS[name]
     skipped = PAYLOADS.get(definition["properties"]["type"]["const"], ()) if envelope else ()
     if skipped:
         props = {k: ({"type": v["type"]} if k in skipped else v) for k, v in definition["properties"].items()}
         definition = {**definition, "properties": props}
-    return Draft202012Validator({**definition, "$defs": _DEFS}, registry=_REGISTRY)
+    return _Validator({**definition, "$defs": _DEFS}, registry=_REGISTRY)
 
 
 def shape_error(msg: dict[str, Any], version: int, envelope: bool = False) -> str | None:
