@@ -10,10 +10,20 @@ program's world with the reference explorer (``drive``,
 
 Contents:
 
-* :func:`encode` / :func:`decode` — one message per line, validated field by
-  field against :data:`MESSAGES` (``@1``) or :data:`MESSAGES2` (``@2``: the
-  kit in ``hello``, ``drop`` and ``pick_up`` of vertex and edge markers); the
-  version a receiver speaks travels in its ``expect`` (:class:`Expect`);
+* :func:`encode` / :func:`decode` — one message per line, validated against
+  its definition in ``spec/protocol.schema.json`` (:data:`SCHEMA`, JSON Schema
+  draft 2020-12; :data:`MESSAGES` maps each version's message types to their
+  definitions); the version a receiver speaks travels in its ``expect``
+  (:class:`Expect`);
+* :func:`shape_error` — the first way a message breaks its schema, in one
+  sentence naming the field and what was expected (``decode`` raises it as
+  ``garbage``).  The payloads a message carries for judgement — a snapshot's
+  ``S`` and ``U``, a map's ``world`` (:data:`PAYLOADS`) — are only checked
+  for their JSON type when the line is read: the world side checks the rest
+  of a snapshot's shape when it judges the snapshot (``FAIL [snapshot]``, the
+  snapshot named by its number), and a map is judged as a world file
+  (``FAIL [map-invalid]``).  Rules that need the world — an exit below the
+  degree, what the kit allows — are the world side's, not the schema's;
 * :func:`clip` — what a verdict may quote of the other side's input (a
   bounded piece, never a whole line);
 * :func:`snapshot_to_map` / :func:`map_to_snapshot` — (S, U) of §3.1.3 on
@@ -23,13 +33,19 @@ Contents:
 from __future__ import annotations
 
 import json
+from functools import lru_cache
+from importlib import resources
 from typing import Any, Sequence
+
+from jsonschema import Draft202012Validator, ValidationError, validators
+from referencing import Registry, Resource
 
 from topomark.spec.errors import InvalidInput, clip
 from topomark.spec.jsontext import parse_json
+from topomark.spec.worldfile import schema as world_schema
 
-__all__ = ["PROTOCOL", "PROTOCOL2", "VERSIONS", "MESSAGES", "MESSAGES2", "Expect", "ProtocolError", "encode",
-           "decode", "MAX_LINE", "MAX_MESSAGE"]
+__all__ = ["PROTOCOL", "PROTOCOL2", "VERSIONS", "SCHEMA", "MESSAGES", "PAYLOADS", "Expect", "ProtocolError", "encode",
+           "decode", "shape_error", "MAX_LINE", "MAX_MESSAGE"]
 
 PROTOCOL = "topomark/protocol@1"
 PROTOCOL2 = "topomark/protocol@2"
@@ -37,43 +53,86 @@ VERSIONS = {PROTOCOL: 1, PROTOCOL2: 2}  # the name in ``hello`` -> the version n
 MAX_LINE = 4_000_000  # bytes; a longer line is garbage
 MAX_MESSAGE = 2000  # characters of a verdict message; what the other side sent is quoted clipped
 
-_INT, _STR, _OBJ, _LIST = "integer", "string", "object", "list"
-_OPT_INT = "integer or null"
-_DIRECTION = "integer, string or null"  # a vertex marker's exit or an edge marker's end ("H"/"T")
+SCHEMA: dict[str, Any] = json.loads(resources.files("topomark.spec").joinpath("protocol.schema.json").read_text())
+"""``spec/protocol.schema.json``: one JSON Schema definition per message, the only statement of their shapes."""
 
-# type -> {field: kind}; every listed field is required, no other field is allowed.
-MESSAGES: dict[str, dict[str, str]] = {
-    "hello": {"protocol": _STR, "role": _STR, "markers": _OBJ, "signature": _STR},
-    "move": {"motion": _INT},
-    "drop": {"direction": _OPT_INT},
-    "signature": {"value": _STR},
-    "snapshot": {"S": _OBJ, "U": _LIST},
-    "map": {"world": _OBJ},
-    "error": {"message": _STR},
-    "bye": {},
-}
-_OPTIONAL: dict[str, dict[str, str]] = {
-    "hello": {"limits": _OBJ},
-    "snapshot": {"iteration": _INT},
-    "signature": {"step": _INT},
-    "bye": {"verdict": _STR, "cost": _INT, "message": _STR},
-}
+_REGISTRY = Registry().with_resources([(s["$id"], Resource.from_contents(s)) for s in (SCHEMA, world_schema())])
+_DEFS: dict[str, dict[str, Any]] = SCHEMA["$defs"]
+# version -> message type -> the name of its definition, read from $defs/message@N's if/then dispatch
+MESSAGES: dict[int, dict[str, str]] = {
+    number: {case["if"]["properties"]["type"]["const"]: case["then"]["$ref"].rsplit("/", 1)[1]
+             for case in _DEFS[f"message@{number}"]["allOf"]} for number in VERSIONS.values()}
+# the payloads judged with their message, not when the line is read: a snapshot's S and U (FAIL [snapshot]),
+# a map's world (FAIL [map-invalid])
+PAYLOADS = {"snapshot": ("S", "U"), "map": ("world",)}
+# JSON Schema counts 1.0 as an integer; the protocol does not (a motion, exit or count is written as an integer)
+_Validator = validators.extend(Draft202012Validator, type_checker=Draft202012Validator.TYPE_CHECKER.redefine(
+    "integer", lambda checker, x: isinstance(x, int) and not isinstance(x, bool)))
+_RANK = {"required": 1, "additionalProperties": 2}  # a wrong value is named before a missing or an unknown field
 
-# @2: the kit in hello (spec/kit.py ``Kit.to_json``); marker operations as ``MarkerOp.to_json`` names them.
-MESSAGES2: dict[str, dict[str, str]] = {
-    **MESSAGES,
-    "hello": {"protocol": _STR, "role": _STR, "kit": _OBJ, "signature": _STR},
-    "drop": {"kind": _STR},
-    "pick_up": {"kind": _STR},
-    "thread": {"op": _STR},  # §6.3: reference/oracle/marker_messages.py
-}
-_OPTIONAL2: dict[str, dict[str, str]] = {
-    **_OPTIONAL,
-    "drop": {"exit": _OPT_INT, "direction": _DIRECTION, "count": _INT},
-    "pick_up": {"exit": _OPT_INT, "count": _INT},
-    "thread": {"direction": _OPT_INT, "count": _INT},
-}
-_SCHEMAS = {1: (MESSAGES, _OPTIONAL), 2: (MESSAGES2, _OPTIONAL2)}
+
+@lru_cache(maxsize=None)
+def _validator(name: str, envelope: bool) -> Any:
+    """The validator of ``$defs/name``; ``envelope`` leaves the payloads (:data:`PAYLOADS`) to their judge."""
+    definition = _DEFS[name]
+    skipped = PAYLOADS.get(definition["properties"]["type"]["const"], ()) if envelope else ()
+    if skipped:
+        props = {k: ({"type": v["type"]} if k in skipped else v) for k, v in definition["properties"].items()}
+        definition = {**definition, "properties": props}
+    return _Validator({**definition, "$defs": _DEFS}, registry=_REGISTRY)
+
+
+def shape_error(msg: dict[str, Any], version: int, envelope: bool = False) -> str | None:
+    """The first way ``msg`` (a message of a type ``version`` knows) breaks its schema, in words, or None.
+
+    >>> shape_error({"type": "move", "motion": "1"}, 1)
+    'move.motion must be integer, got "1"'
+    >>> shape_error({"type": "snapshot", "S": {"exits": [[None]], "marks": [{"vertex": 0, "head": "x"}]},
+    ...              "U": [[0, 0]]}, 1)
+    'snapshot.S.marks[0].head must be integer or null, got "x"'
+    """
+    kind = msg["type"]
+    errors = list(_validator(MESSAGES[version][kind], envelope).iter_errors(msg))
+    if not errors:
+        return None
+    _, error = min(enumerate(errors), key=lambda ke: (_RANK.get(ke[1].validator, 0), len(ke[1].absolute_path), ke[0]))
+    return _words(error, kind)
+
+
+def _words(error: ValidationError, kind: str) -> str:
+    """One precise sentence for a schema error: the field by its path, and what was expected."""
+    where = kind + "".join(f"[{p}]" if isinstance(p, int) else f".{p}" for p in error.absolute_path)
+    got = clip(json.dumps(error.instance), 60)
+    rule, want = error.validator, error.validator_value
+    if rule == "required":
+        missing = next(name for name in want if name not in error.instance)
+        return f"{where if error.absolute_path else kind + ' message'}: missing field {missing!r}"
+    if rule == "additionalProperties":
+        known = set(error.schema.get("properties", {}))
+        unknown = sorted(set(error.instance) - known)[0]
+        return f"{where if error.absolute_path else kind + ' message'}: unknown field {clip(unknown)!r}"
+    if rule == "type":
+        names = [want] if isinstance(want, str) else list(want)
+        return f"{where} must be {_either(names)}, got {got}"
+    if rule in ("enum", "const"):
+        values = want if rule == "enum" else [want]
+        shown = [v if isinstance(v, str) and v.isidentifier() else json.dumps(v) for v in values]
+        return f"{where} must be {'one of ' if len(shown) > 1 else ''}{', '.join(shown)}, got {got}"
+    if rule in ("minimum", "maximum", "exclusiveMinimum"):
+        low, high = error.schema.get("minimum"), error.schema.get("maximum")
+        span = f"{low}..{high}" if low is not None and high is not None else (
+            f"at least {low}" if low is not None else f"above {error.schema.get('exclusiveMinimum', high)}"
+            if high is None else f"at most {high}")
+        return f"{where} must be {'an integer ' if high is not None and low is not None else ''}{span}, got {got}"
+    if rule in ("minItems", "maxItems"):
+        low, high = error.schema.get("minItems", 0), error.schema.get("maxItems")
+        size = f"{low} item(s)" if low == high else f"at least {low} item(s)" if high is None else f"{low}..{high} items"
+        return f"{where} must have {size}, got {got}"
+    return f"{where}: {clip(error.message, 200)}"
+
+
+def _either(names: list[str]) -> str:
+    return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " or " + names[-1]
 
 
 class Expect(tuple):
@@ -104,16 +163,6 @@ def encode(msg: dict[str, Any]) -> str:
     return json.dumps(msg, sort_keys=True, separators=(",", ":")) + "\n"
 
 
-def _is_kind(value: Any, kind: str) -> bool:
-    if kind == _INT:
-        return isinstance(value, int) and not isinstance(value, bool)
-    if kind == _OPT_INT:
-        return value is None or _is_kind(value, _INT)
-    if kind == _DIRECTION:
-        return value is None or isinstance(value, str) or _is_kind(value, _INT)
-    return isinstance(value, {_STR: str, _OBJ: dict, _LIST: list}[kind])
-
-
 def decode(line: str, expect: Sequence[str] | None = None) -> dict[str, Any]:
     """Parse and validate one line; raises :class:`ProtocolError` (kind ``garbage``) on anything wrong.
 
@@ -129,21 +178,15 @@ def decode(line: str, expect: Sequence[str] | None = None) -> dict[str, Any]:
         raise ProtocolError("garbage", f"not a message (a JSON object with a string \"type\"): {clip(text)!r}")
     kind = msg["type"]
     version = _version(msg, getattr(expect, "version", 1))
-    required, optional = _SCHEMAS[version]
-    if kind not in required:
+    known = MESSAGES[version]
+    if kind not in known:
         raise ProtocolError("garbage", f"unknown message type {clip(kind)!r} in {_NAMES[version]} "
-                                       f"(known: {', '.join(required)})")
+                                       f"(known: {', '.join(known)})")
     if expect is not None and kind not in expect:
         raise ProtocolError("protocol", f"unexpected message {kind!r} here (expected {' or '.join(expect)})")
-    fields = {**required[kind], **optional.get(kind, {})}
-    for name, want in fields.items():
-        if name in msg and not _is_kind(msg[name], want):
-            raise ProtocolError("garbage", f"{kind}.{name} must be {want}, got {clip(json.dumps(msg[name]))}")
-    missing = [f for f in required[kind] if f not in msg]
-    unknown = sorted(set(msg) - set(fields) - {"type"})
-    if missing or unknown:
-        what = f"missing field {missing[0]!r}" if missing else f"unknown field {clip(unknown[0])!r}"
-        raise ProtocolError("garbage", f"{kind} message: {what}")
+    wrong = shape_error(msg, version, envelope=True)
+    if wrong is not None:
+        raise ProtocolError("garbage", wrong)
     return msg
 
 

@@ -33,7 +33,7 @@ from topomark.reference.algorithms.bounds import upper_bound
 from topomark.reference.run.explore import prepare_world
 from topomark.reference.run.map_check import MapVerdict, check_map
 from topomark.reference.oracle.peer import Peer
-from topomark.reference.oracle.protocol import MAX_MESSAGE, PROTOCOL, PROTOCOL2, Expect, ProtocolError
+from topomark.reference.oracle.protocol import MAX_MESSAGE, PROTOCOL, PROTOCOL2, Expect, ProtocolError, shape_error
 from topomark.reference.run.simulator import Simulator
 from topomark.reference.oracle.snapshot_wire import snapshot_to_map
 from topomark.reference.oracle.marker_messages import op_from_message
@@ -223,8 +223,8 @@ class _Session:
             return
         try:
             S = snapshot_to_map(msg["S"], msg["U"], self.version)
-        except CheckFailure as exc:
-            raise _Fail("snapshot", f"{label}: {exc}") from None
+        except CheckFailure as exc:  # the schema names the field where it can (run on every snapshot, it is slow)
+            raise _Fail("snapshot", f"{label}: {shape_error(msg, self.version) or exc}") from None
         bad = self._invariants(S)
         if bad is not None:
             note = f" ({START_ANCHOR})" if self.version >= 2 else ""

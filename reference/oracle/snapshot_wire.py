@@ -3,8 +3,9 @@
 ``S`` is ``{"exits": [[dart-or-null, ...] per vertex], "marks": [...]}`` and
 ``U`` a list of map darts ``[vertex, exit]`` (``spec/protocol.md``).  A mark is
 
-* a vertex mark ``{"vertex": v, "head": exit or null}`` (``@2`` also takes an
-  optional ``"count"``, default 1), or
+* a vertex mark ``{"vertex": v, "head": exit or null}`` (``head`` omitted
+  means null, an undirected marker; ``@2`` also takes an optional
+  ``"count"``, default 1), or
 * in ``@2`` only, an edge mark ``{"vertex": v, "exit": i, "count": k, "end":
   "H"|"T"|null}`` — ``count`` defaults to 1, ``end`` (the end of a
   directional edge marker at ``v``: ``H`` its head) to null.  An edge mark on
@@ -99,13 +100,13 @@ def _count(mark: dict, k: int) -> int:
 
 def _vertex_mark(S: PartialMap, k: int, mark: Any, version: int) -> None:
     keys = {"vertex", "head"} | ({"count"} if version >= 2 else set())
-    if not (isinstance(mark, dict) and {"vertex", "head"} <= set(mark) <= keys and _int(mark["vertex"])
-            and (mark["head"] is None or _int(mark["head"])) and 0 <= mark["vertex"] < S.n):
+    if not (isinstance(mark, dict) and {"vertex"} <= set(mark) <= keys and _int(mark["vertex"])
+            and (mark.get("head") is None or _int(mark["head"])) and 0 <= mark["vertex"] < S.n):
         form = "{\"vertex\": v, \"head\": exit or null}"
         if version >= 2:
             form += " or {\"vertex\": v, \"exit\": i, \"count\": k, \"end\": \"H\", \"T\" or null}"
         raise CheckFailure(f"snapshot S.marks[{k}] must be {form}")
-    head = mark["head"]
+    head = mark.get("head")
     if head is not None and not 0 <= head < S.degree(mark["vertex"]):
         raise CheckFailure(f"snapshot S.marks[{k}]: head {head} is not an exit of vertex {mark['vertex']}")
     S.mark_vertex(mark["vertex"], _count(mark, k), head=head)

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Runs reference/oracle/examples/client.py and appends the whole session to the file argv[1] (for doc tests)."""
+"""Runs a program (argv[2:], default reference/oracle/examples/client.py) and writes the whole session to the file
+argv[1]: "> " lines are what topomark sent, "< " lines what the program sent (for doc and schema tests)."""
 import subprocess
 import sys
 import threading
@@ -7,7 +8,7 @@ from pathlib import Path
 
 CLIENT = Path(__file__).resolve().parents[2] / "reference" / "oracle" / "examples" / "client.py"
 log = open(sys.argv[1], "w")
-child = subprocess.Popen([sys.executable, str(CLIENT)], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
+child = subprocess.Popen(sys.argv[2:] or [sys.executable, str(CLIENT)], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
 lock = threading.Lock()
 
 
