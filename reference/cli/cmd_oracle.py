@@ -194,7 +194,8 @@ def run_external_command(args) -> int:
     data = {"world": args.world, "command": command, **result.to_json()}
     text = (f"{'PASS' if result.passed else 'FAIL'} [{result.reason}] {result.message}\n"
             f"cost {result.cost} traversals (n={world.n}, m={world.m}), {result.snapshots} snapshots checked, "
-            f"{result.wall:.2f} s")
+            f"{result.wall:.2f} s: the program {result.program_seconds:.2f} s (limited by --timeout), "
+            f"topomark's checking {result.topomark_seconds:.2f} s")
     if not result.passed and result.stderr:
         text += "\nprogram stderr (tail):\n  " + "\n  ".join(result.stderr[-5:])
     emit(args, data, text)
