@@ -111,7 +111,9 @@ def _limits(p) -> None:
     p.add_argument("--max-operations", type=int, metavar="N",
                    help="end a run (outcome limit) whose program makes more marker or thread operations; they are "
                         "not traversals and are counted apart (default: 2 x the traversal limit, >= 1000)")
-    p.add_argument("--timeout", type=float, default=60.0, metavar="SECONDS", help="wall-time limit (default 60)")
+    p.add_argument("--timeout", type=float, default=60.0, metavar="SECONDS",
+                   help="the program's time limit: the time topomark waits for it, its own checking not counted "
+                        "(default 60)")
     p.add_argument("--message-timeout", type=float, default=10.0, metavar="SECONDS",
                    help="longest wait for one message (default 10)")
 
