@@ -193,7 +193,7 @@ def test_cli_run_external_failure_exits_1(capsys):
     (["run-external", "cycle:n=5"], "give the program to run after --"),
     (["run-external", "cycle:n=5", "--"], "give the program to run after --"),
     (["run-external", "cycle:n=5", "--", "/nonexistent/explorer"], "cannot start"),
-    (["run-external", "wheel-a:marker=undirected", "--", "true"], "only a directional vertex marker"),
+    (["run-external", "wheel-a:marker=undirected", "--", "true"], "or the one Algorithm 3.1's robot drops"),
     (["run-external", "cycle:n=5", "--timeout", "0", "--", "true"], "--timeout must be positive"),
     (["run-external", "nosuch.json", "--", "true"], "cannot read the file"),
 ])

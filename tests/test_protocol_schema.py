@@ -123,7 +123,7 @@ def scripted(tmp_path):
 def test_a_malformed_snapshot_is_a_snapshot_failure_naming_the_field(scripted):
     bad = {"type": "snapshot", "S": {"exits": [[None, None]], "marks": [{"vertex": 0, "head": "x"}]}, "U": []}
     result = run_external(TRIANGLE, scripted({"type": "drop", "direction": 0}, bad))
-    assert result.reason == "snapshot" and "snapshot 1: snapshot.S.marks[0].head must be integer or null" \
+    assert result.reason == "snapshot" and "snapshot 1 is malformed: snapshot.S.marks[0].head must be integer or null" \
         in result.message, result.message
 
 

@@ -20,6 +20,11 @@ toward, or null) and ``count`` (``knot`` only: how many knots, default 1).
 The world answers each with a ``signature``; ``rewind`` moves the robot back
 along the last laid edge (a traversal, counted against the limit), its
 ``signature`` is the vertex reached.
+
+:func:`refusal` words an operation the world refused for the verdict
+(``FAIL [marker]``): what the program asked, when, and why — a pick-up
+where fewer markers lie than it asks for says so, in the signature the
+robot sensed there.
 """
 
 from __future__ import annotations
@@ -28,11 +33,12 @@ import json
 from typing import Any
 
 from topomark.spec.errors import clip
-from topomark.spec.kit import THREAD_OPS, MarkerOp, ThreadOp
+from topomark.spec.kit import THREAD_OPS, Kit, MarkerOp, ThreadOp
+from topomark.spec.signature import Signature
 
 from topomark.reference.oracle.protocol import ProtocolError
 
-__all__ = ["MAX_COUNT", "op_from_message", "op_to_message"]
+__all__ = ["MAX_COUNT", "op_from_message", "op_to_message", "refusal"]
 
 MAX_COUNT = 10 ** 6  # markers in one operation, at most
 
@@ -93,3 +99,28 @@ def op_to_message(op: MarkerOp | ThreadOp) -> dict[str, Any]:
         return {"type": "thread", **fields}
     fields = op.to_json()
     return {"type": fields.pop("op"), **fields}
+
+
+def refusal(asked: dict[str, Any], traversals: int, reason: str, op: MarkerOp | ThreadOp | None = None,
+            sensed: Signature | None = None, kit: Kit | None = None) -> str:
+    """Why the world refused the message ``asked`` (sent after ``traversals`` traversals), in words.
+
+    ``reason`` is the simulator's; a pick-up ``op`` of a movable ``kit`` where fewer markers lie than it
+    asks for is worded from ``sensed`` (the signature there, before the pick-up) instead.
+
+    >>> words = refusal({"type": "pick_up", "kind": "vertex"}, 3, "(the simulator's reason)",
+    ...                 MarkerOp("vertex", pick_up=True), Signature(2), Kit(vertex=1, movable=True))
+    >>> words.split(" refused: ")
+    ['pick_up {"kind": "vertex"} after 3 traversals', 'there is no vertex marker here to pick up (the robot senses [2,A,A])']
+    """
+    if isinstance(op, MarkerOp) and op.pick_up and sensed is not None and kit is not None and kit.movable:
+        vertex = op.kind == "vertex"
+        there = sensed.vertex_count if vertex else sum(c for x, c, _ in sensed.edges if x == op.exit)
+        place = "here" if vertex else f"on the edge at exit {op.exit}"
+        if there == 0:
+            reason = f"there is no {op.kind} marker {place} to pick up (the robot senses {sensed})"
+        elif there < op.count:
+            reason = (f"only {there} {op.kind} marker{'s' if there != 1 else ''} lie {place}, not the {op.count} "
+                      f"to pick up (the robot senses {sensed})")
+    fields = {k: v for k, v in asked.items() if k != "type"}
+    return f"{asked['type']} {_shown(fields)} after {traversals} traversals refused: {reason}"

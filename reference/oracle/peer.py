@@ -7,17 +7,27 @@ signal) the program and everything it started are killed
 escapers and orphans, found through ``/proc`` with topomark as a child
 subreaper).  Whatever the program does, the costs are bounded:
 
-* **time** — every receive waits at most ``message_timeout`` and never past
-  the ``wall`` deadline; every send waits at most as long for room in the
-  pipe; killing never waits on a pipe (the readers poll a stop flag and the
-  pipes are closed only after they stopped), so a descendant that keeps a
-  pipe open cannot block topomark;
-* **memory** — stdout is read in chunks of :data:`CHUNK` bytes; a line
-  longer than :data:`~topomark.reference.oracle.protocol.MAX_LINE` is never
-  accumulated (the reader stops and the receiver reports ``garbage``), and
-  at most :data:`QUEUE_BYTES` of complete lines wait unread (then the reader
-  stops reading, and the program blocks on its own write); stderr keeps only
-  the last :data:`TAIL_LINES` lines, each clipped to :data:`TAIL_CHARS`;
+* **time** — the program's time is the time topomark waits for it: for its
+  next message in :meth:`Peer.receive`, for room in its input pipe in
+  :meth:`Peer.send` (:attr:`Peer.waited`).  Every receive waits at most
+  ``message_timeout``, and all waits together at most ``wall``; what topomark
+  does between them (checking a snapshot, judging the map) is topomark's
+  time and counts against neither.  A program that keeps topomark busy
+  without ever making it wait (messages sent ahead of their answers) is
+  stopped by a ceiling on the whole session, :data:`CEILING` × ``wall``
+  (kind ``limit``).  Stdout is read by the receiving thread itself, only
+  when it needs the next line (a hand-over from a reader thread would cost
+  every message a wake-up, which is waiting charged to the program).
+  Killing never waits on a pipe (the stderr reader polls a stop flag and the
+  pipes are closed only after it stopped), so a descendant that keeps a pipe
+  open cannot block topomark;
+* **memory** — stdout is read in chunks of :data:`CHUNK` bytes, and only
+  while no complete line is buffered; a line longer than
+  :data:`~topomark.reference.oracle.protocol.MAX_LINE` is never accumulated
+  (it is ``garbage`` once that much of it is in), so at most
+  :data:`QUEUE_BYTES` wait unread (the program then blocks on its own
+  write); stderr keeps only the last :data:`TAIL_LINES` lines, each clipped
+  to :data:`TAIL_CHARS`;
 * **signals** — while a peer runs, SIGTERM and SIGHUP kill it (and its
   descendants) and exit topomark with 128 + the signal number and one line
   on stderr; the previous handlers are restored when the block ends.
@@ -27,7 +37,6 @@ subreaper).  Whatever the program does, the costs are bounded:
 from __future__ import annotations
 
 import os
-import queue
 import select
 import signal
 import subprocess
@@ -42,43 +51,14 @@ from topomark.spec.errors import InvalidInput
 from topomark.reference.oracle.process_tree import MARKER, kill_tree, subreaper
 from topomark.reference.oracle.protocol import MAX_LINE, ProtocolError, decode, encode
 
-__all__ = ["Peer", "CHUNK", "QUEUE_BYTES", "TAIL_LINES", "TAIL_CHARS"]
+__all__ = ["Peer", "CHUNK", "QUEUE_BYTES", "TAIL_LINES", "TAIL_CHARS", "CEILING"]
 
 CHUNK = 1 << 16
-QUEUE_BYTES = MAX_LINE  # complete lines waiting to be received, at most (plus the one that crossed it)
+QUEUE_BYTES = MAX_LINE + CHUNK  # bytes of stdout read but not yet received, at most
 TAIL_LINES, TAIL_CHARS = 20, 500
-_POLL = 0.1  # seconds between checks of the stop flag by the readers
-_TOO_LONG, _EOF = object(), object()  # markers the stdout reader queues after the lines
+CEILING = 10  # the whole session (the program's time and topomark's) ends at CEILING x wall, at most
+_POLL = 0.1  # seconds between checks of the stop flag by the stderr reader
 _SIGNALS = tuple(getattr(signal, name) for name in ("SIGTERM", "SIGHUP") if hasattr(signal, name))
-
-
-class _Lines:
-    """Complete stdout lines (and the ``_TOO_LONG`` / ``_EOF`` markers), bounded in bytes; the reader waits for room."""
-
-    def __init__(self) -> None:
-        self._items: deque = deque()
-        self._bytes = 0
-        self._cond = threading.Condition()
-
-    def put(self, item: Any, stop: threading.Event) -> bool:
-        with self._cond:
-            while self._bytes >= QUEUE_BYTES:
-                if stop.is_set():
-                    return False
-                self._cond.wait(_POLL)
-            self._items.append(item)
-            self._bytes += _size(item)
-            self._cond.notify_all()
-        return True
-
-    def get(self, timeout: float) -> Any:
-        with self._cond:
-            if not self._cond.wait_for(lambda: self._items, timeout):
-                raise queue.Empty
-            item = self._items.popleft()
-            self._bytes -= _size(item)
-            self._cond.notify_all()
-            return item
 
 
 def _ready(fd: int, event: int, timeout: float) -> bool:
@@ -129,9 +109,11 @@ class _Tail:
 class Peer:
     """A program spoken to over stdin/stdout; stderr is kept (its tail goes into verdicts).
 
-    ``wall`` bounds the whole session from the start of the program: every
-    receive after it fails with kind ``timeout``; ``message_timeout`` bounds
-    each wait.  Use as a context manager (see the module docstring).
+    ``wall`` bounds the program's time, :attr:`waited` (the time spent
+    waiting for it); a receive or send that would wait past it fails with kind
+    ``timeout``; ``message_timeout`` bounds each wait.  The whole session
+    ends at :data:`CEILING` × ``wall`` (kind ``limit``).  Use as a context
+    manager (see the module docstring).
     """
 
     def __init__(self, command: Sequence[str], message_timeout: float = 10.0, wall: float = 60.0,
@@ -140,11 +122,12 @@ class Peer:
             raise InvalidInput("no command given after --")
         self.command, self.cwd = list(command), cwd
         self.message_timeout, self.wall = message_timeout, wall
-        self.deadline = time.monotonic() + wall
+        self.started = time.monotonic()
+        self.waited = 0.0  # seconds spent waiting for the program: its time, bounded by ``wall``
         self.received = 0
         self.proc: subprocess.Popen | None = None
         self._token = uuid.uuid4().hex
-        self._lines, self._tail = _Lines(), _Tail()
+        self._buffer, self._eof, self._tail = bytearray(), False, _Tail()
         self._stop = threading.Event()
         self._threads: list[threading.Thread] = []
         self._saved: dict[int, Any] = {}
@@ -177,11 +160,10 @@ class Peer:
             self._release()
             raise InvalidInput(f"cannot start {self.command[0]!r}: "
                                f"{getattr(exc, 'strerror', None) or exc}") from None
-        self.deadline = time.monotonic() + self.wall
-        for target, stream in ((self._read_stdout, self.proc.stdout), (self._read_stderr, self.proc.stderr)):
-            thread = threading.Thread(target=target, args=(stream.fileno(),), daemon=True)
-            thread.start()
-            self._threads.append(thread)
+        self.started = time.monotonic()
+        thread = threading.Thread(target=self._read_stderr, args=(self.proc.stderr.fileno(),), daemon=True)
+        thread.start()
+        self._threads.append(thread)
 
     def _install_handlers(self) -> None:
         if threading.current_thread() is not threading.main_thread():
@@ -214,22 +196,6 @@ class Peer:
                 return
             yield chunk
 
-    def _read_stdout(self, fd: int) -> None:
-        partial = bytearray()
-        for chunk in self._chunks(fd):
-            start = 0
-            while (end := chunk.find(b"\n", start)) >= 0 and len(partial) + end - start < MAX_LINE:
-                partial += chunk[start:end + 1]
-                if not self._lines.put(bytes(partial), self._stop):
-                    return
-                partial.clear()
-                start = end + 1
-            partial += chunk[start:]
-            if len(partial) > MAX_LINE:  # never held whole: the rest cannot matter, stop reading
-                self._lines.put(_TOO_LONG, self._stop)
-                return
-        self._lines.put(_EOF, self._stop)
-
     def _read_stderr(self, fd: int) -> None:
         for chunk in self._chunks(fd):
             self._tail.feed(chunk)
@@ -240,7 +206,7 @@ class Peer:
 
         A closed pipe means the program died (kind ``crash``); a pipe that stays
         full for ``timeout`` (default ``message_timeout``) means it stopped reading
-        (kind ``timeout``).
+        (kind ``timeout``).  The wait for room is the program's time (:attr:`waited`).
         Writes go in chunks of at most PIPE_BUF bytes once ``poll`` reports
         the pipe writable, so a single write cannot block.
         """
@@ -248,9 +214,13 @@ class Peer:
         try:
             fd = self.proc.stdin.fileno()
             while data:
-                limit = self.message_timeout if timeout is None else timeout
-                wait = max(0.0, min(limit, self.deadline - time.monotonic()))
-                if not _ready(fd, select.POLLOUT, wait):
+                wait = self._allowed(self.message_timeout if timeout is None else timeout)
+                began = time.monotonic()
+                try:
+                    ready = _ready(fd, select.POLLOUT, wait)
+                finally:
+                    self.waited += time.monotonic() - began
+                if not ready:
                     raise ProtocolError("timeout", f"the program stopped reading its input (no room in the pipe "
                                                    f"for {wait:g} s)")
                 data = data[os.write(fd, data[:select.PIPE_BUF]):]
@@ -259,27 +229,71 @@ class Peer:
 
     def receive(self, expect: Sequence[str] | None = None) -> dict[str, Any]:
         """The next message, validated; raises :class:`ProtocolError` on timeout, EOF or garbage."""
-        remaining = self.deadline - time.monotonic()
-        if remaining <= 0:
-            raise ProtocolError("timeout", f"wall-time limit of {self.wall:g} s exceeded")
-        wait = min(self.message_timeout, remaining)
+        wait = self._allowed(self.message_timeout)
+        began = time.monotonic()
         try:
-            item = self._lines.get(wait)
-        except queue.Empty:
+            item = self._next_line(began + wait)
+        finally:
+            self.waited += time.monotonic() - began
+        if item is None:
             if wait < self.message_timeout:
-                raise ProtocolError("timeout", f"wall-time limit of {self.wall:g} s exceeded") from None
+                self._allowed(0.0)  # the wall or the ceiling ran out: raises saying which
+                raise ProtocolError("timeout", self._over_wall())
             raise ProtocolError("timeout", f"no message within {self.message_timeout:g} s "
-                                           f"(after {self.received} messages)") from None
-        if item is _EOF:
-            raise ProtocolError("crash", self._died("closed its output"))
-        self.received += 1
-        if item is _TOO_LONG:
-            raise ProtocolError("garbage", f"message {self.received} is longer than {MAX_LINE} bytes")
+                                           f"(after {self.received} messages)")
         try:
             line = item.decode("utf-8")
         except UnicodeDecodeError:
             raise ProtocolError("garbage", f"message {self.received} is not UTF-8") from None
         return decode(line, expect)
+
+    def _next_line(self, until: float) -> bytes | None:
+        """The next complete stdout line, read in this thread (no hand-over between threads, which would cost
+        each message a wake-up); None if none came by ``until``.  A line longer than MAX_LINE is never held
+        whole: it is ``garbage`` as soon as its first MAX_LINE bytes are in."""
+        while True:
+            end = self._buffer.find(b"\n", 0, MAX_LINE + 1)
+            if end >= 0:
+                line = bytes(self._buffer[:end + 1])
+                del self._buffer[:end + 1]
+                self.received += 1
+                return line
+            if len(self._buffer) > MAX_LINE:
+                self.received += 1
+                raise ProtocolError("garbage", f"message {self.received} is longer than {MAX_LINE} bytes")
+            if self._eof:
+                raise ProtocolError("crash", self._died("closed its output"))
+            fd = self.proc.stdout.fileno()
+            if not _ready(fd, select.POLLIN, max(0.0, until - time.monotonic())):
+                return None
+            try:
+                chunk = os.read(fd, CHUNK)
+            except OSError:
+                chunk = b""
+            self._eof = not chunk
+            self._buffer += chunk
+
+    def _allowed(self, limit: float) -> float:
+        """How long the next wait may last: ``limit``, within what is left of the program's ``wall``; raises
+        :class:`ProtocolError` when nothing is left (``timeout``) or the session passed its ceiling (``limit``)."""
+        if self.waited >= self.wall:
+            raise ProtocolError("timeout", self._over_wall())
+        elapsed = time.monotonic() - self.started
+        if elapsed >= CEILING * self.wall:
+            raise ProtocolError("limit", f"the session ran {elapsed:.1f} s, the ceiling of {CEILING} x the time "
+                                         f"limit of {self.wall:g} s (the program {self.waited:.1f} s, topomark's "
+                                         f"checking {elapsed - self.waited:.1f} s: a program that sends messages "
+                                         f"ahead of their answers keeps topomark busy without making it wait); a "
+                                         f"larger --timeout raises the ceiling")
+        return max(0.0, min(limit, self.wall - self.waited, CEILING * self.wall - elapsed))
+
+    def _over_wall(self) -> str:
+        return (f"wall-time limit of {self.wall:g} s exceeded: topomark waited {self.waited:.1f} s for the program "
+                f"(topomark's own {self.topomark_seconds():.1f} s of checking not counted)")
+
+    def topomark_seconds(self) -> float:
+        """Seconds since the program started that topomark did not spend waiting for it."""
+        return max(0.0, time.monotonic() - self.started - self.waited)
 
     def _died(self, what: str) -> str:
         try:
@@ -313,7 +327,7 @@ class Peer:
             pass
         self._release()
         if self._threads:
-            self._threads[1].join(0.5)  # every writer is dead: let stderr drain to EOF, briefly
+            self._threads[0].join(0.5)  # every writer is dead: let stderr drain to EOF, briefly
         self._stop.set()
         for thread in self._threads:
             thread.join(2 * _POLL + 1.0)

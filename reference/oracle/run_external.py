@@ -10,6 +10,19 @@ markers) and the limits, checks I-1 and I-2 (§3.4) on every ``snapshot`` of
 (S, U) the program sends, and judges the final ``map`` by extended
 isomorphism (§3.1.3) against the world with the markers the program left in it.
 
+Time is the program's time: the ``--timeout`` and ``--message-timeout``
+limits count only the time topomark waits for the program
+(:class:`~topomark.reference.oracle.peer.Peer`); what topomark spends
+checking snapshots and judging the map is reported apart
+(:attr:`ExternalResult.program_seconds`, :attr:`ExternalResult.topomark_seconds`)
+and never makes a ``timeout``.
+
+The world is played without markers: the program drops its own from its
+kit.  A world file may carry the marker Algorithm 3.1's robot drops at the
+start (a directional vertex marker pointing at the faced exit, §3.3: the
+marker of a map written by an explorer), which is taken away whatever the
+kit; any other marker, or a thread, is bad input that says so.
+
 Whatever the program does, the session ends with an :class:`ExternalResult`:
 a crash, a hang, garbage on stdout, an exit that does not exist, a second
 marker — each is a ``fail`` verdict with a reason and a message, never a
@@ -18,42 +31,48 @@ hang or a traceback.
 
 from __future__ import annotations
 
+import json
 import time
 from dataclasses import dataclass, field
 from typing import Any, Sequence
 
-from topomark.spec.errors import CheckFailure, InvalidInput, InvalidWorld, Violation, clip
+from topomark.spec.errors import CheckFailure, InvalidInput, InvalidWorld, TopomarkFault, Violation, clip
 from topomark.spec.invariants import check_invariants, lighthouse_anchor
 from topomark.spec.isomorphism import find_isomorphism, verify_witness
-from topomark.spec.kit import Kit
+from topomark.spec.kit import Kit, MarkerOp
+from topomark.spec.marker import VertexMarker
+from topomark.spec.worldfile import marker_to_json
 from topomark.spec.world import World
 from topomark.spec.worldfile import world_from_json
 
 from topomark.reference.algorithms.bounds import upper_bound
 from topomark.reference.run.explore import prepare_world
-from topomark.reference.run.map_check import MapVerdict, check_map
+from topomark.reference.run.map_check import MapVerdict
 from topomark.reference.oracle.peer import Peer
 from topomark.reference.oracle.protocol import MAX_MESSAGE, PROTOCOL, PROTOCOL2, Expect, ProtocolError, shape_error
 from topomark.reference.run.simulator import Simulator
-from topomark.reference.oracle.snapshot_wire import snapshot_to_map
-from topomark.reference.oracle.marker_messages import op_from_message
+from topomark.reference.oracle.snapshot_wire import MalformedSnapshot, snapshot_to_map
+from topomark.reference.oracle.marker_messages import op_from_message, refusal
 
 __all__ = ["Limits", "ExternalResult", "run_external", "REASONS", "LIGHTHOUSE_KIT", "START_ANCHOR", "GAVE_UP"]
 
 LIGHTHOUSE_KIT = Kit(vertex=1, directional=True)  # Algorithm 3.1's kit: @1's only one, @2's default
 GAVE_UP = "the program gave up"  # how a verdict starts when the program reported failure (sent ``error``)
+COMPARED = "the markers the program left in the world are compared with the map's"
 START_ANCHOR = ("topomark/protocol@2 anchors φ at the start: map vertex 0 is the vertex the robot started at "
                 "and its exit 0 the exit the robot faced there")
 
 REASONS = {
     "ok": "the map is extended-isomorphic to the world",
     "crash": "the program died or closed its output before sending its map",
-    "timeout": "the program did not answer in time",
+    "timeout": "the program did not answer in time (its own time: topomark's checking is not counted)",
     "garbage": "the program printed something that is not a protocol message",
     "protocol": "the program sent a valid message at the wrong time",
-    "limit": "the program exceeded the maximum number of traversals or of marker operations",
+    "limit": "the program exceeded the maximum number of traversals or of marker operations, or kept topomark busy "
+             "past the session's ceiling",
     "bad-exit": "the program asked for an exit that does not exist",
-    "marker": "the program did a marker operation its kit (or the markers lying there) does not allow",
+    "marker": "the program did a marker operation its kit (or the markers lying there) does not allow, or a move "
+              "its thread does not allow",
     "invariant": "a snapshot of (S, U) violated I-1 or I-2",
     "snapshot": "a snapshot is malformed",
     "map-invalid": "the final map is not a valid world",
@@ -95,7 +114,9 @@ class ExternalResult:
     snapshots: int = 0
     operations: int = 0  # marker and thread operations: counted apart from the cost (§3.1.2)
     marker_operations: dict[str, int] = field(default_factory=dict)  # the same by kind (drop, pick_up, tie, ...)
-    wall: float = 0.0
+    wall: float = 0.0  # the whole run: program_seconds + topomark_seconds
+    program_seconds: float = 0.0  # topomark waiting for the program: what --timeout limits
+    topomark_seconds: float = 0.0  # topomark checking (snapshots, the map) and starting up: not limited
     stderr: list[str] = field(default_factory=list)
     violation: Violation | None = None
     map: World | None = None
@@ -107,9 +128,10 @@ class ExternalResult:
 
     def to_json(self) -> dict[str, Any]:
         return {"verdict": self.verdict, "reason": self.reason, "message": self.message, "cost": self.cost,
-                "operations": self.operations,
-                "marker_operations": self.marker_operations, "snapshots": self.snapshots, "wall_seconds": round(self.wall, 3),
-                "stderr_tail": self.stderr,
+                "operations": self.operations, "marker_operations": self.marker_operations,
+                "snapshots": self.snapshots, "wall_seconds": round(self.wall, 3),
+                "program_seconds": round(self.program_seconds, 3),
+                "topomark_seconds": round(self.topomark_seconds, 3), "stderr_tail": self.stderr,
                 "violation": None if self.violation is None else self.violation.to_json(), "marker_rule": self.rule}
 
 
@@ -174,8 +196,9 @@ class _Session:
                                     f"degree {degree} (allowed 0..{degree - 1})")
         try:
             sig = self.robot.move(motion, "other")
-        except CheckFailure as exc:  # a move the thread refuses (it would run out): the kit's refusal
-            raise _Fail("marker", f"move: {exc}", exc.violation) from None
+        except CheckFailure as exc:  # the thread would run out (§6.3): the kit refuses the move
+            raise _Fail("marker", refusal({"type": "move", "motion": motion}, self.sim.cost,
+                                          exc.violation.detail or str(exc)), exc.violation) from None
         self.peer.send({"type": "signature", "value": str(sig), "step": self.sim.cost})
 
     def _count_operation(self) -> None:
@@ -197,7 +220,8 @@ class _Session:
         try:
             self.robot.drop_marker(direction)
         except CheckFailure as exc:
-            raise _Fail("marker", f"drop: {exc}", exc.violation) from None
+            raise _Fail("marker", refusal({"type": "drop", "direction": direction}, self.sim.cost,
+                                          exc.violation.detail or str(exc)), exc.violation) from None
         self.peer.send({"type": "signature", "value": str(self.robot.sense()), "step": self.sim.cost})
 
     def operate(self, msg: dict) -> None:
@@ -207,13 +231,15 @@ class _Session:
         op = op_from_message(msg, self.sim.world.degree(v))
         if getattr(op, "op", None) == "rewind" and self.sim.cost >= self.max_traversals:  # a rewind is a move
             raise _Fail("limit", f"traversal {self.sim.cost + 1} exceeds the limit of {self.max_traversals}")
+        sensed = self.robot.sense()
         try:
             if getattr(op, "op", None) == "rewind":
                 self.robot.rewind("other")
             else:
                 self.robot.operate(op)
         except CheckFailure as exc:
-            raise _Fail("marker", f"{msg['type']}: {exc}", exc.violation) from None
+            words = refusal(msg, self.sim.cost, exc.violation.detail or str(exc), op, sensed, self.kit)
+            raise _Fail("marker", words, exc.violation) from None
         self.peer.send({"type": "signature", "value": str(self.robot.sense()), "step": self.sim.cost})
 
     def snapshot(self, msg: dict) -> None:
@@ -223,9 +249,12 @@ class _Session:
             return
         try:
             S = snapshot_to_map(msg["S"], msg["U"], self.version)
-        except CheckFailure as exc:  # the schema names the field where it can (run on every snapshot, it is slow)
-            raise _Fail("snapshot", f"{label}: {shape_error(msg, self.version) or exc}") from None
-        bad = self._invariants(S)
+            bad = self._invariants(S)
+        except MalformedSnapshot as exc:  # the schema names the field where it can (run on every snapshot, slow)
+            raise _Fail("snapshot", f"{label} is malformed: {shape_error(msg, self.version) or exc}",
+                        exc.violation) from None
+        except CheckFailure as exc:  # a vertex marked twice: I-1 (snapshot_wire)
+            bad = exc.violation
         if bad is not None:
             note = f" ({START_ANCHOR})" if self.version >= 2 else ""
             raise _Fail("invariant", f"{label}, after {self.sim.cost} traversals: {bad}{note}", bad)
@@ -263,7 +292,8 @@ def run_external(world: World, command: Sequence[str], limits: Limits | None = N
     """
     limits = limits or Limits()
     kit = _checked_kit(version, kit)
-    prepare_world(world)  # bad input (a marker the algorithm cannot use) before anything is started
+    _check_world_markers(world, kit)  # bad input before anything is started
+    prepare_world(world)
     started = time.monotonic()
     session = None
     with Peer(command, limits.message, limits.wall) as peer:
@@ -284,6 +314,8 @@ def run_external(world: World, command: Sequence[str], limits: Limits | None = N
         result.marker_operations = dict(sorted(session.sim.operations.items()))
     result.message = clip(result.message, MAX_MESSAGE)
     result.wall = time.monotonic() - started
+    result.program_seconds = min(peer.waited, result.wall)
+    result.topomark_seconds = result.wall - result.program_seconds
     result.stderr = peer.stderr_tail()
     return result
 
@@ -292,9 +324,13 @@ def _judge(world: World, session: _Session) -> ExternalResult:
     """Play the session to its map and judge the map against the world."""
     map_ = session.play()
     truth = session.sim.world.with_start(world.start)
-    verdict = check_map(truth, map_) if session.version == 1 else _dropped_markers(truth, map_)
+    verdict = _dropped_markers(truth, map_)
+    if verdict.isomorphic:
+        words = f"isomorphic (extended isomorphism; {COMPARED}; witness verified)"
+    else:
+        words = f"not isomorphic ({COMPARED}): {verdict.result.mismatch}"
     return ExternalResult("pass" if verdict.isomorphic else "fail", "ok" if verdict.isomorphic else "not-isomorphic",
-                          verdict.words(), violation=None if verdict.isomorphic else verdict.result.mismatch,
+                          words, violation=None if verdict.isomorphic else verdict.result.mismatch,
                           map=map_, rule=verdict.rule)
 
 
@@ -310,13 +346,41 @@ def _checked_kit(version: int, kit: Kit | None) -> Kit:
 
 
 def _dropped_markers(truth: World, map_: World) -> MapVerdict:
-    """@2: the map must show exactly the markers the program left in the world, where it left them."""
+    """The map must show exactly the markers the program left in the world, where it left them (both versions:
+    ``spec/protocol.md``, "Verdicts of run-external"); a witness that fails its own re-verification is topomark's
+    fault (exit 3)."""
     result = find_isomorphism(truth, map_, markers=True)
     if result.isomorphic:
         bad = verify_witness(truth, map_, result.witness, markers=True)
         if bad is not None:
-            raise CheckFailure(bad)
+            raise TopomarkFault(f"the isomorphism witness found for the map fails its re-verification: {bad}")
     return MapVerdict(result.isomorphic, "markers", result)
+
+
+def _check_world_markers(world: World, kit: Kit) -> None:
+    """A world file's markers: none, or the lighthouse Algorithm 3.1's robot drops at the start (taken away).
+
+    The world is played bare and the program drops its own markers, whatever its kit, so any other marker or a
+    thread in the file is bad input, worded as what run-external judges (the module docstring).
+    """
+    thread = getattr(world, "thread", None)
+    if not world.markers and thread is None:
+        return
+    lighthouse = None
+    if world.start is not None:
+        v0, facing = world.start_state()
+        lighthouse = VertexMarker(v0, 1, world.neighbour(v0, facing))
+        if thread is None and world.markers == (lighthouse,):
+            return
+    others = [m for m in world.markers if m != lighthouse]
+    found = json.dumps(marker_to_json(others[0])) if others else "a thread"
+    wheel = (" (Figure 3.4's wheels: wheel-a:marker=none)"
+             if others and isinstance(others[0], VertexMarker) and not others[0].directional else "")
+    allowed = (f"none, or the one Algorithm 3.1's robot drops at the start ("
+               f"{json.dumps(marker_to_json(lighthouse))}, taken away)" if lighthouse is not None else "none")
+    raise InvalidInput(f"run-external plays the world without markers and the program drops its own, from its kit "
+                       f"({kit.describe()}); the world file may carry {allowed}, but it carries {found}: remove "
+                       f"the file's markers{wheel}")
 
 
 def _say(peer: Peer, msg: dict) -> None:

@@ -18,8 +18,15 @@
   (:class:`~topomark.spec.thread.ThreadMark`); every field but ``tied``
   optional, at most one per vertex.
 
-A malformed snapshot raises :class:`~topomark.spec.errors.CheckFailure`
-naming the defect, never anything else.
+A malformed snapshot raises :class:`MalformedSnapshot` (a
+:class:`~topomark.spec.errors.CheckFailure`: the program's fault, exit 1)
+naming the field, never anything else.
+
+A vertex listed twice in ``S.marks`` (vertex marks) is not malformed but
+wrong: a world vertex's markers are one entry with a count
+(``spec/world.py``), so no world vertex matches it and I-1 (L595: S is
+isomorphic to the explored subgraph, markers included) fails; it raises a
+:class:`~topomark.spec.errors.CheckFailure` whose violation is ``I-1``.
 """
 
 from __future__ import annotations
@@ -27,14 +34,25 @@ from __future__ import annotations
 import json
 from typing import Any
 
-from topomark.spec.errors import CheckFailure, clip
+from topomark.spec.errors import CheckFailure, Violation, clip
 from topomark.spec.mapstate import PartialMap
 from topomark.spec.signature import Signature
 from topomark.spec.thread import ThreadMark
 from topomark.spec.world import DartMark
 
 
-__all__ = ["snapshot_to_map", "map_to_snapshot"]
+__all__ = ["snapshot_to_map", "map_to_snapshot", "MalformedSnapshot"]
+
+
+
+class MalformedSnapshot(CheckFailure):
+    """A snapshot not in the protocol's form; its text names the field (``S.marks[2] must be ...``)."""
+
+    def __init__(self, message: str):
+        super().__init__(Violation("snapshot", "the snapshot message", "(S, U) in the form of spec/protocol.md",
+                                   "a malformed field", message))
+        self.args = (self.violation.detail,)
+
 
 _FLIP = {"H": "T", "T": "H", None: None}
 _MAX_COUNT = 10 ** 6
@@ -46,7 +64,7 @@ def _int(x: Any) -> bool:
 
 def _dart(x: Any, what: str) -> tuple[int, int]:
     if not (isinstance(x, list) and len(x) == 2 and all(_int(k) for k in x)):
-        raise CheckFailure(f"{what} must be a map dart [vertex, exit], got {clip(json.dumps(x))}")
+        raise MalformedSnapshot(f"{what} must be a map dart [vertex, exit], got {clip(json.dumps(x))}")
     return (x[0], x[1])
 
 
@@ -54,7 +72,7 @@ def _exits(S: PartialMap, exits: list) -> None:
     """The vertices and explored edges of ``S.exits``, checked symmetric."""
     for v, row in enumerate(exits):
         if not isinstance(row, list) or not row:
-            raise CheckFailure(f"snapshot S.exits[{v}] must be a non-empty list (one entry per exit)")
+            raise MalformedSnapshot(f"S.exits[{v}] must be a non-empty list (one entry per exit)")
         S.add_vertex(len(row))
     for v, row in enumerate(exits):
         for i, x in enumerate(row):
@@ -62,28 +80,39 @@ def _exits(S: PartialMap, exits: list) -> None:
                 continue
             w, j = _dart(x, f"S.exits[{v}][{i}]")
             if not (0 <= w < len(exits) and 0 <= j < len(exits[w])) or exits[w][j] != [v, i]:
-                raise CheckFailure(f"snapshot S: exit {i} of vertex {v} leads to {[w, j]}, "
-                                   f"which does not lead back to {[v, i]}")
+                raise MalformedSnapshot(f"S: exit {i} of vertex {v} leads to {[w, j]}, "
+                                        f"which does not lead back to {[v, i]}")
             if (v, i) < (w, j):
                 S.add_edge((v, i), (w, j))
 
 
 def snapshot_to_map(S_obj: dict[str, Any], U: list[Any], version: int = 1) -> PartialMap:
-    """Rebuild S and U from a snapshot of protocol ``version``; a malformed one raises CheckFailure."""
+    """Rebuild S and U from a snapshot of protocol ``version``; a malformed one raises MalformedSnapshot, a
+    vertex marked twice a CheckFailure for I-1 (the module docstring)."""
+    try:
+        return _rebuild(S_obj, U, version)
+    except CheckFailure as exc:
+        if isinstance(exc, MalformedSnapshot) or exc.violation.check != "internal check":
+            raise
+        raise MalformedSnapshot(f"S: {exc.violation.detail}") from None  # PartialMap's own (a loop, ...)
+
+
+def _rebuild(S_obj: dict[str, Any], U: list[Any], version: int) -> PartialMap:
     exits = S_obj.get("exits")
     marks = S_obj.get("marks", [])
     if set(S_obj) - {"exits", "marks"} or not isinstance(exits, list) or not isinstance(marks, list):
-        raise CheckFailure("snapshot S must be {\"exits\": [...], \"marks\": [...]}")
+        raise MalformedSnapshot("S must be {\"exits\": [...], \"marks\": [...]}")
     S = PartialMap()
     _exits(S, exits)
     darts: dict[tuple[int, int], tuple[int, str | None]] = {}
+    marked: dict[int, int] = {}  # vertex -> the index in S.marks of its vertex mark
     for k, mark in enumerate(marks):
         if version >= 2 and isinstance(mark, dict) and "thread" in mark:
             _thread_mark(S, k, mark)
         elif version >= 2 and isinstance(mark, dict) and "exit" in mark:
             _edge_mark(S, k, mark, darts)
         else:
-            _vertex_mark(S, k, mark, version)
+            _vertex_mark(S, k, mark, version, marked)
     for (v, i), (count, end) in sorted(darts.items()):
         S.mark_dart(v, DartMark(i, count, end))
     S.unexplored = [_dart(x, f"U[{k}]") for k, x in enumerate(U)]
@@ -93,23 +122,29 @@ def snapshot_to_map(S_obj: dict[str, Any], U: list[Any], version: int = 1) -> Pa
 def _count(mark: dict, k: int) -> int:
     count = mark.get("count", 1)
     if not (_int(count) and 1 <= count <= _MAX_COUNT):
-        raise CheckFailure(f"snapshot S.marks[{k}]: count must be an integer 1..{_MAX_COUNT}, "
-                           f"got {clip(json.dumps(count))}")
+        raise MalformedSnapshot(f"S.marks[{k}]: count must be an integer 1..{_MAX_COUNT}, "
+                                f"got {clip(json.dumps(count))}")
     return count
 
 
-def _vertex_mark(S: PartialMap, k: int, mark: Any, version: int) -> None:
+def _vertex_mark(S: PartialMap, k: int, mark: Any, version: int, marked: dict[int, int]) -> None:
     keys = {"vertex", "head"} | ({"count"} if version >= 2 else set())
     if not (isinstance(mark, dict) and {"vertex"} <= set(mark) <= keys and _int(mark["vertex"])
             and (mark.get("head") is None or _int(mark["head"])) and 0 <= mark["vertex"] < S.n):
         form = "{\"vertex\": v, \"head\": exit or null}"
         if version >= 2:
             form += " or {\"vertex\": v, \"exit\": i, \"count\": k, \"end\": \"H\", \"T\" or null}"
-        raise CheckFailure(f"snapshot S.marks[{k}] must be {form}")
+        raise MalformedSnapshot(f"S.marks[{k}] must be {form} on a vertex of S, got {clip(json.dumps(mark))}")
     head = mark.get("head")
     if head is not None and not 0 <= head < S.degree(mark["vertex"]):
-        raise CheckFailure(f"snapshot S.marks[{k}]: head {head} is not an exit of vertex {mark['vertex']}")
-    S.mark_vertex(mark["vertex"], _count(mark, k), head=head)
+        raise MalformedSnapshot(f"S.marks[{k}]: head {head} is not an exit of vertex {mark['vertex']}")
+    v = mark["vertex"]
+    if v in marked:
+        raise CheckFailure(Violation("I-1", f"map vertex {v}", "one vertex mark, holding all the markers there (a "
+                                     "world vertex's markers are one entry with a count)",
+                                     f"two: S.marks[{marked[v]}] and S.marks[{k}]"))
+    marked[v] = k
+    S.mark_vertex(v, _count(mark, k), head=head)
 
 
 def _edge_mark(S: PartialMap, k: int, mark: dict, darts: dict) -> None:
@@ -117,8 +152,9 @@ def _edge_mark(S: PartialMap, k: int, mark: dict, darts: dict) -> None:
     v, i, end = mark.get("vertex"), mark.get("exit"), mark.get("end")
     if not (set(mark) <= {"vertex", "exit", "count", "end"} and _int(v) and _int(i) and end in ("H", "T", None)
             and 0 <= v < S.n and 0 <= i < S.degree(v)):
-        raise CheckFailure(f"snapshot S.marks[{k}] must be an edge mark {{\"vertex\": v, \"exit\": i, \"count\": k, "
-                           f"\"end\": \"H\", \"T\" or null}} on an exit of a vertex of S")
+        raise MalformedSnapshot(f"S.marks[{k}] must be an edge mark {{\"vertex\": v, \"exit\": i, \"count\": k, "
+                                f"\"end\": \"H\", \"T\" or null}} on an exit of a vertex of S, got "
+                                f"{clip(json.dumps(mark))}")
     count = _count(mark, k)
     places = [((v, i), (count, end))]
     far = S.arc((v, i))
@@ -126,8 +162,8 @@ def _edge_mark(S: PartialMap, k: int, mark: dict, darts: dict) -> None:
         places.append((far, (count, end if far[0] == v else _FLIP[end])))  # a loop's ends are one vertex
     for dart, value in places:
         if darts.setdefault(dart, value) != value:
-            raise CheckFailure(f"snapshot S.marks[{k}]: dart {list(dart)} is marked twice, differently "
-                               f"({darts[dart]} and {value}, as (count, end))")
+            raise MalformedSnapshot(f"S.marks[{k}]: dart {list(dart)} is marked twice, differently "
+                                    f"({darts[dart]} and {value}, as (count, end))")
 
 
 def _thread_mark(S: PartialMap, k: int, mark: dict) -> None:
@@ -146,8 +182,8 @@ def _thread_mark(S: PartialMap, k: int, mark: dict) -> None:
               and 0 <= t.get("knots", 0) <= _MAX_COUNT and S.thread_mark(v) is None
               and (t["tied"] or edges or t.get("end", False) or t.get("knots", 0)))  # something lies there
     if not ok:
-        raise CheckFailure(f"snapshot S.marks[{k}] must be {form} on a vertex of S, its exits < its degree, once, "
-                           "showing something")
+        raise MalformedSnapshot(f"S.marks[{k}] must be {form} on a vertex of S, its exits < its degree, once, "
+                                f"showing something, got {clip(json.dumps(mark))}")
     tm = ThreadMark(t["tied"], head, tuple(sorted(tuple(e) for e in edges)), t.get("end", False), t.get("knots", 0))
     S.mark_as_sensed(v, Signature(S.degree(v), thread=tm), 0)
 
