@@ -57,6 +57,7 @@ from topomark.spec.world import World
 
 from topomark.reference.replay.algorithm31_layer import Algorithm31Layer
 from topomark.reference.replay.divergence import Diverged
+from topomark.reference.replay.rerun_layer import RerunLayer, rerun_spec
 from topomark.reference.replay.robot_layer import RobotLayer
 from topomark.reference.trace.header import header_family, header_kit, header_lighthouse
 from topomark.reference.trace.reader import EVENTS, EVENTS_2, load_trace, parse_trace
@@ -89,9 +90,20 @@ class _Replay:
         light, family = header_lighthouse(header), header_family(header)
         self.robot = RobotLayer(world, light, header_kit(header))
         self.algorithm = Algorithm31Layer(self.robot, world, header, light, source) if family.events else None
-        self.layers = family.layers
+        spec = rerun_spec(header)
+        self.rerun = RerunLayer(world, header, spec, source) if spec is not None else None
+        self.layers = family.layers + (("re-run",) if self.rerun is not None else ())
         self.family = family.name
+        self.name = header["algorithm"]
         self.trace2 = "family" in header
+
+    def begin(self) -> None:
+        if self.rerun is not None:
+            self.rerun.begin()
+
+    def close(self) -> None:
+        if self.rerun is not None:
+            self.rerun.close()
 
     @property
     def iterations(self) -> int:
@@ -118,6 +130,8 @@ class _Replay:
             robot.end(rec)
             if alg is not None:
                 alg.end(rec)
+        if self.rerun is not None:
+            self.rerun.record(rec, where)
 
 
 def _claim(end: dict) -> str:
@@ -141,15 +155,20 @@ def replay(world: World, records: Iterable[dict[str, Any]], source: str = "<trac
     r = _Replay(world, header, source)
     line, rec = 1, header
     try:
+        r.begin()
         for line, rec in enumerate(records, 2):
             r.record(rec, f"{source} line {line}")
     except Diverged as exc:
+        r.close()
         rest = deque(records, maxlen=1)  # read (and so check) every later line: bad input outranks a divergence
         rec = rest[0] if rest else rec  # the trace's own last record: its end, with the recorder's verdict
         failed = rec["violation"] is not None
         note = f"; consistent: the trace records its own failure ({_claim(rec)})" if failed else ""
         return ReplayResult(False, f"line {line}: {exc.violation}{note}", r.robot.steps, r.iterations, exc.violation,
                             line, failed, r.layers)
+    r.close()
+    if r.algorithm is None and r.rerun is None and (rec["verified"] or rec["violation"] is not None or "outcome" in rec):
+        return _refused(r, rec, line)
     if rec["violation"] is not None:
         false = Violation("trace claim", "end", "no violation (replay verifies the run)", _claim(rec),
                           "the trace claims a failure but replay finds none")
@@ -160,9 +179,24 @@ def replay(world: World, records: Iterable[dict[str, Any]], source: str = "<trac
     return ReplayResult(True, _verified(r) + note, r.robot.steps, r.iterations, layers=r.layers)
 
 
+def _refused(r: _Replay, end: dict, line: int) -> ReplayResult:
+    """A robot-layer-only trace whose end claims what replay cannot check: refused, not accepted (exit 1)."""
+    claim = _claim(end) if "outcome" not in end else f"a stopped run: {end['outcome']} ({end['reason']})"
+    v = Violation("trace claim", "end", "an unjudged end (verified false, no violation, no outcome): the "
+                  f"family {r.family} defines no algorithm layer and topomark does not run {r.name}, so replay "
+                  "judges what the robot did only", claim,
+                  f"{r.robot.steps} traversals and {_ops(r.robot.ops)} match the world (robot layer only); the "
+                  "claim about the run cannot be checked, so it is refused")
+    return ReplayResult(False, f"line {line}: {v}", r.robot.steps, r.iterations, v, line, layers=r.layers)
+
+
 def _verified(r: _Replay) -> str:
     """What a positive verdict verified: every layer the trace's family has (trace@1's words as they were)."""
     steps = r.robot.steps
+    if r.rerun is not None:
+        return (f"{steps} traversals and {_ops(r.robot.ops)}, every perception and signature matches the world, "
+                f"the header's kit is {r.name}'s, and every record and the end are {r.name}'s own run, re-run on "
+                "the world and checked (robot and re-run layers)")
     if r.algorithm is None:
         return (f"{steps} traversals and {_ops(r.robot.ops)}, every perception and signature matches "
                 f"the world (robot layer only: the family {r.family} defines no algorithm layer)")
@@ -175,7 +209,8 @@ def _verified(r: _Replay) -> str:
 
 def _stopped(r: _Replay, end: dict) -> str:
     """A run that stopped before it had a map (trace@2 ``end.outcome``): what replay verified up to there."""
-    layers = " and the algorithm-3.1 layer's records" if r.algorithm is not None else ""
+    layers = " and the algorithm-3.1 layer's records" if r.algorithm is not None else \
+        f" and {r.name}'s re-run stops here too" if r.rerun is not None else ""
     return (f"{r.robot.steps} traversals and {_ops(r.robot.ops)}, every perception and signature matches the world"
             f"{layers}; the run stopped before it had a map: {end['outcome']} ({end['reason']})")
 

@@ -86,7 +86,10 @@ class RobotLayer:
         if not 0 <= rec["motion"] < degree:
             diverge(where, f"a motion 0..{degree - 1} (the robot is at a vertex of degree {degree})",
                     f"motion {rec['motion']}")
-        got = str(self.robot.move(rec["motion"], "other"))
+        try:
+            got = str(self.robot.move(rec["motion"], "other"))
+        except CheckFailure as exc:  # the kit refuses the move (a thread laid past its length)
+            diverge(where, "a move the kit allows", f"motion {rec['motion']}", exc.violation.detail, check="marker kit")
         if rec["perception"] != got:
             diverge(where, f"perception {got} (motion {rec['motion']} on the world)", f"perception {rec['perception']}")
         return got

@@ -173,7 +173,7 @@ def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: 
     emit_move = emit if wanted is None or "move" in wanted else None
     tally = _Tally()
     if emit:
-        emit(trace_header(spec.name, policies, run.light, world, run.kit, spec.family))
+        emit(trace_header(spec.name, policies, run.light, world, run.kit, spec.family, _given(spec, run.options)))
     layer = ALGORITHM_FAMILIES[spec.family].events
 
     def on_move(motion, purpose, sig, true_state):
@@ -208,6 +208,11 @@ def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: 
     if emit:
         emit(end_record(outcome))
     return outcome
+
+
+def _given(spec: AlgorithmSpec, options: dict[str, Any]) -> dict[str, Any]:
+    """The options given other than their defaults (the trace header's ``options``: replay re-runs with them)."""
+    return {p.name: options[p.name] for p in spec.parameters if options.get(p.name) != p.default}
 
 
 class _WrongJoins:

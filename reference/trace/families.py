@@ -20,7 +20,10 @@ family             algorithms                                        algorithm l
 Decision (the thesis is silent): the ``robot`` family is for a recorder
 whose algorithm has no algorithm layer here yet (e.g. the Chapter 6
 algorithms, which drop markers mid-run); its trace is verified as far as
-what the robot did, and its ``end`` only for the cost.  Threads (§6.3) are
+what the robot did, and its ``end`` only for the cost — unless topomark
+runs the algorithm itself (registered with ``family="robot"``), when replay
+re-runs it beside the trace (:mod:`topomark.reference.replay.rerun_layer`);
+for any other name an end that claims anything about the run is refused.  Threads (§6.3) are
 not in the robot kernel yet, so no record for them is reserved.
 
 Examples

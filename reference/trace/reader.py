@@ -73,7 +73,7 @@ EVENTS: dict[str, Schema] = {
 }
 EVENTS_2: dict[str, Schema] = {
     "header": ({"format": _S, "family": _S, "algorithm": _S, "policies": _O, "lighthouse": _S_OR_NULL, "kit": _O,
-                "n": _I, "m": _I}, {}),
+                "n": _I, "m": _I}, {"options": _O}),
     "op": ({"step": _N, "op": OPS, "kind": KINDS, "count": _POS, "signature": _SIG}, {"exit": _N, "direction": _DIR}),
     **{k: v for k, v in EVENTS.items() if k not in ("header", "drop", "end")},
     "end": ({"cost": _I, "verified": _B, "violation": _OBJ_OR_NULL}, {"outcome": STOPPED, "reason": _S}),

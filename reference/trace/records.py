@@ -29,16 +29,19 @@ TRACE_FORMAT_2 = "topomark/trace@2"
 
 
 def trace_header(algorithm: str, policies: Policies, light: Lighthouse | None, world: World,
-                 kit: Kit | None = None, family: str | None = None) -> dict:
+                 kit: Kit | None = None, family: str | None = None, options: dict | None = None) -> dict:
     """The trace's first record: trace@1 for Algorithm 3.1's own lighthouse (byte-for-byte as before trace@2
     existed), trace@2 with the algorithm's family, the lighthouse (null for a kit algorithm) and the kit for
-    every other run."""
+    every other run, and ``options`` — a kit algorithm's options given other than their defaults, so that
+    replay re-runs it as it ran — when there are any."""
     header = {"event": "header", "format": TRACE_FORMAT, "algorithm": algorithm, "policies": policies.to_json(),
               "n": world.n, "m": world.m}
     if light is None or light.name != "directional-vertex":
         header.update(format=TRACE_FORMAT_2, family=family or family_of(algorithm).name,
                       lighthouse=None if light is None else light.name,
                       kit=(light.kit if kit is None else kit).to_json())
+        if options:
+            header["options"] = dict(sorted(options.items()))
     return header
 
 

@@ -1,0 +1,193 @@
+"""Replaying the algorithm layer of a registered kit algorithm: its explorer re-run beside the trace (``spec/trace.md``).
+
+A trace of the ``robot`` family records what the robot did and nothing of
+what the algorithm believed: no map, no iterations.  Its end's claims — a
+verified run, a violation, or a stop (``outcome`` ``failed``/``limit`` with a
+reason) — say something about the algorithm, which the robot layer alone
+cannot judge.  For an algorithm topomark runs itself (registered with
+``family="robot"``: the Chapter 6 algorithms, Dudek et al.'s movable marker,
+the tree of models), :class:`RerunLayer` is that algorithm layer: the
+registered explorer is re-run on the world with the header's policies and
+``options`` (a checked run: every check its registry entry names, the final
+map extended-isomorphic to the world with the markers the ops left there),
+and the trace must be that run, record for record:
+
+* the header's kit is the kit the algorithm carries on this world (its
+  ``kit_fn`` of n, m and the options, §6.2's Σ k markers, Case 2's m + n, …):
+  a smaller or a larger one is a false claim (check ``marker kit``);
+* every move and op is the one the algorithm makes next (so an operation
+  left out — the last pick-up of a movable marker, the last drop — is found
+  where it is missing, and the world's markers at the end are the map's);
+* the end's ``cost``, ``verified``, ``violation``, ``outcome`` and ``reason``
+  are the re-run's: a ``failed`` claim for a run that maps the world is
+  false, and so is a verified claim for a run that runs out of markers
+  (``OutOfMarkers``: the kit really was exhausted) or whose map is wrong.
+  An unjudged end (``verified: false``, no violation, no outcome: ``explore
+  --no-check``) claims nothing and takes the re-run's verdict.
+
+Decision (the thesis leaves an algorithm's choices open only where §3.3 and
+Chapter 6 say "any"; topomark's explorers make each one by a named,
+deterministic rule): the re-run is topomark's own explorer, so a trace of a
+registered algorithm recorded by another implementation that chose
+differently is reported where it first differs.  Such a recorder should name
+its algorithm as its own (any other name): the ``robot`` family then judges
+what the robot did only, and replay refuses any end claim it cannot check
+(:mod:`~topomark.reference.replay.replay`).
+
+The explorer runs in a thread of its own, a bounded number of records ahead
+of the trace, so a long trace is still read one line at a time and the re-run never
+goes further than the trace does.
+"""
+
+from __future__ import annotations
+
+import json
+import queue
+import threading
+from typing import Any
+
+from topomark.spec.errors import InvalidInput, Violation
+from topomark.spec.kit import Kit
+from topomark.spec.world import World
+
+from topomark.reference.algorithms.algorithm_spec import AlgorithmSpec
+from topomark.reference.algorithms.registry import algorithm_spec, in_family
+from topomark.reference.explorers.policies import Policies
+from topomark.reference.replay.divergence import Diverged, diverge
+from topomark.reference.run.explore import explore
+
+__all__ = ["RerunLayer", "rerun_spec"]
+
+_END = object()  # the re-run ended (after its end record)
+
+
+class _Stop(BaseException):
+    """Raised in the re-run's thread to end it once replay needs no more of its records."""
+
+
+def rerun_spec(header: dict[str, Any]) -> AlgorithmSpec | None:
+    """The registered kit algorithm a ``robot``-family header names, or None (an algorithm topomark does not run)."""
+    if header.get("family") != "robot" or header["algorithm"] not in in_family("robot"):
+        return None
+    spec = algorithm_spec(header["algorithm"])
+    return spec if spec.own else None
+
+
+class RerunLayer:
+    """The registered explorer, re-run on ``world``; :meth:`record` compares each trace record with its next."""
+
+    def __init__(self, world: World, header: dict[str, Any], spec: AlgorithmSpec, source: str):
+        where = f"{source} line 1"
+        self.given = header.get("options", {})  # as the header gives them; explore parses them again
+        try:
+            self.options = spec.parse_options(self.given)
+            self.policies = Policies(**header["policies"])
+        except (InvalidInput, TypeError) as exc:
+            raise InvalidInput(f"{where}: header.options/policies: not an option set {spec.name} takes ({exc})") from None
+        self.spec, self.world, self.header = spec, world, header
+        self.kit = spec.kit_for(world.n, world.m, self.options)
+        self._queue: queue.Queue = queue.Queue(maxsize=4096)
+        self._stop = threading.Event()
+        self._thread: threading.Thread | None = None
+
+    # -- the re-run ------------------------------------------------------------------
+    def _run(self) -> None:
+        try:
+            explore(self.world, self.spec, self.policies, check=True, sink=self, options=self.given)
+            self._put(_END)
+        except _Stop:
+            pass
+        except BaseException as exc:  # handed to the replay, which raises it (topomark's own failure)
+            self._put(exc)
+
+    def _put(self, item: Any) -> None:
+        while not self._stop.is_set():
+            try:
+                self._queue.put(item, timeout=0.05)
+                return
+            except queue.Full:
+                continue
+        raise _Stop
+
+    def emit(self, record: dict) -> None:
+        """The re-run's trace sink: its records, one at a time, to :meth:`record`."""
+        self._put(record)
+
+    def _next(self) -> Any:
+        if self._thread is None:
+            self._thread = threading.Thread(target=self._run, name="topomark-replay-rerun", daemon=True)
+            self._thread.start()
+        item = self._queue.get()
+        if isinstance(item, BaseException):
+            raise item
+        return item
+
+    def close(self) -> None:
+        """Stop the re-run (replay needs no more of it)."""
+        self._stop.set()
+        if self._thread is not None:
+            self._thread.join()
+
+    # -- the comparison --------------------------------------------------------------
+    def begin(self) -> None:
+        """The header: its kit must be the algorithm's on this world."""
+        header = self._next()
+        claimed = Kit.from_json(self.header["kit"])
+        if claimed != self.kit:
+            diverge("header", f"the kit {self.spec.name} carries on this world (n={self.world.n}, m={self.world.m}"
+                              f"{_given(self.header)}): {json.dumps(self.kit.to_json())} ({self.kit.describe()})",
+                    f"{json.dumps(self.header['kit'])} ({claimed.describe()})", check="marker kit")
+        assert header["event"] == "header"
+
+    def record(self, rec: dict[str, Any], where: str) -> None:
+        """The trace's next record must be the re-run's next (its end: the re-run's verdict, below)."""
+        want = self._next()
+        if want is _END:
+            diverge(where, f"the end of {self.spec.name}'s run", _show(rec), "the algorithm, re-run, stops here",
+                    check="algorithm")
+        if rec["event"] == "end" and want["event"] == "end":
+            return self._end(rec, want)
+        if rec != want:
+            detail = ("the algorithm, re-run on the world, does this next; a record left out or added, or a "
+                      "different choice")
+            diverge(where, f"{_show(want)} ({self.spec.name}, re-run)", _show(rec), detail, check="algorithm")
+
+    def _end(self, rec: dict[str, Any], want: dict[str, Any]) -> None:
+        if not rec["verified"] and rec["violation"] is None and "outcome" not in rec:
+            if want["violation"] is not None:  # an unjudged run: the re-run's verdict stands
+                raise Diverged(_violation(want))
+            return
+        if _claim(rec) != _claim(want):
+            diverge("end", f"{_words(want)} (what {self.spec.name}, re-run on the world and checked, ends with)",
+                    _words(rec), "the end record's claim about the run is false", check="trace claim")
+        if want["violation"] is not None:  # the trace records the failure the re-run finds
+            raise Diverged(_violation(want))
+
+
+def _claim(end: dict) -> tuple:
+    return end["verified"], end["violation"], end.get("outcome"), end.get("reason")
+
+
+def _words(end: dict) -> str:
+    if end["verified"]:
+        return "a verified run (the map extended-isomorphic to the world)"
+    if end["violation"] is not None:
+        return f"a violation: {_violation(end)}"
+    if "outcome" in end:
+        return f"a stopped run: {end['outcome']} ({end['reason']})"
+    return "an unjudged run"
+
+
+def _violation(end: dict) -> Violation:
+    v = end["violation"]
+    return Violation(v["check"], v["where"], v["expected"], v["found"], v["detail"])
+
+
+def _given(header: dict) -> str:
+    options = header.get("options")
+    return f", options {json.dumps(options, sort_keys=True)}" if options else ""
+
+
+def _show(rec: dict) -> str:
+    text = json.dumps(rec, sort_keys=True, separators=(",", ":"))
+    return text if len(text) <= 200 else text[:197] + "..."
