@@ -106,3 +106,18 @@ def test_the_edge_marker_client_one_marker_short_stops_and_the_world_refuses_the
     blind = seeded(tmp_path, "case-1a", "if self.markers == 0:", "if False:")
     code, report = run(capsys, blind, "cycle:n=3", short)
     assert (code, report["reason"]) == (1, "marker") and "holds 2 edge marker(s): none left, 1 asked for" in report["message"]
+
+
+@pytest.mark.parametrize("algorithm", CLIENTS)
+def test_each_client_passes_its_algorithms_conformance_suite(algorithm, tmp_path, capsys):
+    """``conformance export --algorithm NAME`` then ``conformance run --algorithm NAME -- python CLIENT``: every
+    case of the algorithm's own suite, each with the kit the registry gives it on that world, passes — including a
+    case where the budget runs out, which passes only if the client reports failure."""
+    suite = tmp_path / "suite"
+    assert main(["conformance", "export", str(suite), "--algorithm", algorithm]) == 0
+    capsys.readouterr()
+    code = main(["conformance", "run", str(suite), "--algorithm", algorithm, "--json", "--",
+                 sys.executable, str(EXAMPLES / CLIENTS[algorithm])])
+    report = json.loads(capsys.readouterr().out)
+    assert code == 0, report
+    assert len(report["cases"]) >= 4 and all(r["verdict"] == "pass" for r in report["cases"])
