@@ -76,7 +76,7 @@ def test_a_client_refuses_a_kit_it_cannot_use(capsys, algorithm, other):
 
 FAULTS = [  # (algorithm, old, new, world, reason, words in the verdict)
     pytest.param("dudek", '            self.step((i - self.pos[1]) % len(self.exits[vk]))\n            self.operate(',
-                 "            self.operate(", "complete:n=4", "marker", "cannot pick up 1 marker(s)",
+                 "            self.operate(", "complete:n=4", "marker", "there is no vertex marker here to pick up",
                  id="dudek-pick-up-where-nothing-lies"),
     pytest.param("case-1a", *TWO_ON_E, "chain:n=2", "marker", "holds 1 edge marker(s): 1 left, 2 asked for",
                  id="case-1a-one-marker-too-many-for-the-kit"),

@@ -54,6 +54,12 @@ _SECTIONS = (("§2.3.1", "movable-markers"), ("§5", "marker-less"), ("§6.2.1",
              ("§6.2.2", "directional-markers"), ("§6.3", "threads"))
 
 
+CHIRAL = World({"0": ("1", "2", "4"), "1": ("0", "2"), "2": ("1", "0", "3"), "3": ("2",), "4": ("0",)}, (),
+               Start("0", "1"))
+"""The smallest connected planar world (networkx's atlas) not extended-isomorphic to its mirror image: a map
+with every rotation reversed fails on it, where on the wheels, the cycles and K4 it would pass."""
+
+
 def started(world: World) -> World:
     """The world with an explicit start: its own, or its first vertex facing exit 0."""
     if world.start is not None:
@@ -97,6 +103,7 @@ def _algorithm_worlds() -> list[tuple[str, str, World]]:
         ("cycle-4", "Figure 3.3: the cycle C4", g.cycle(4)),
         ("lattice-2x3", "§3.5.3: the 2x3 lattice", g.lattice(2, 3)),
         ("complete-4", "§3.5.3: the complete graph K4 (non-planar rotation)", g.complete(4)),
+        ("chiral-5", "a triangle with a leaf at two of its corners: its mirror image is another world", CHIRAL),
     )]
 
 

@@ -12,7 +12,9 @@ expects ``failed`` — the kit runs out before the map is complete — passes
 only when the program reports failure (sends ``error``, which the verdict
 quotes as ":data:`~topomark.reference.oracle.run_external.GAVE_UP`: ...")
 without overdrawing its kit: a map, an overdrawn kit or a crash fails it.
-Each row compares the program's cost (edge traversals, §3.1.2, L399) and
+A correct map that cost more edge traversals than the algorithm's exact cost
+bound on that world (where the thesis states one, :mod:`~topomark.reference.algorithms.bounds`) fails
+with reason ``bound``: it is not that algorithm.  Each row compares the program's cost (edge traversals, §3.1.2, L399) and
 marker operations with topomark's own run *of the same algorithm* on the same
 case, and the columns say what they compare.
 """
@@ -94,24 +96,42 @@ class AlgorithmRow:
     result: ExternalResult
 
     @property
+    def within_bound(self) -> bool:
+        """The program's cost is at most the algorithm's exact cost bound on this world, where the thesis states
+        one (the ``cost-bound`` check topomark's own runs pass): an implementation that maps correctly but
+        spends more is not that algorithm."""
+        return self.case["bound"] is None or self.result.cost <= self.case["bound"]
+
+    @property
     def passed(self) -> bool:
         if self.case["expected"] == "correct":
-            return self.result.passed
+            return self.result.passed and self.within_bound
         return self.result.reason == "crash" and self.result.message.startswith(GAVE_UP)
 
     @property
     def reason(self) -> str:
-        """The program's reason, or ``expected-failure`` when it sent a map where the kit runs out."""
+        """The program's reason; ``expected-failure`` when it sent a map where the kit runs out; ``bound`` when
+        its correct map cost more than the algorithm's exact bound."""
         if self.case["expected"] == "failed" and self.result.passed:
             return "expected-failure"
+        if self.case["expected"] == "correct" and self.result.passed and not self.within_bound:
+            return "bound"
         return "failed" if self.passed and self.case["expected"] == "failed" else self.result.reason
+
+    @property
+    def message(self) -> str:
+        if self.reason == "bound":
+            return (f"the map is right, but it cost {self.result.cost} edge traversals, more than {self.algorithm}'s "
+                    f"exact cost bound {self.case['bound']} on this world (n = {self.case['n']}, m = "
+                    f"{self.case['m']}): not {self.algorithm}")
+        return self.result.message
 
     def to_json(self) -> dict[str, Any]:
         r, ref = self.result, self.case["reference"]
         return {"algorithm": self.algorithm, "case": self.case["name"], "n": self.case["n"], "m": self.case["m"],
                 "kit": self.case["kit"], "options": self.case["options"], "bound": self.case["bound"],
                 "expected": self.case["expected"], "verdict": "pass" if self.passed else "fail",
-                "reason": self.reason, "message": r.message, "cost": r.cost,
+                "reason": self.reason, "message": self.message, "cost": r.cost,
                 "marker_operations": r.marker_operations,
                 "reference": {"algorithm": self.algorithm, "outcome": self.case["expected"], "cost": ref["cost"],
                               "marker_operations": ref["marker_operations"]},
