@@ -102,3 +102,19 @@ def test_a_robot_layer_only_trace_that_claims_a_verified_run_is_refused(tmp_path
     records[-1]["verified"] = False  # an unjudged end claims nothing: the robot layer's verdict stands
     code, data = replay(tmp_path, capsys, world, records)
     assert code == 0 and "robot layer only" in data["message"]
+
+
+@pytest.mark.parametrize("lighthouse", ["undirected-vertex", "local-degree-list"])  # trace@2: its end may say how it stopped
+def test_an_algorithm_3_1_trace_that_claims_failure_after_mapping_is_refuted(tmp_path, capsys, lighthouse):
+    """Algorithm 3.1's layer rebuilds S from the iterations: an end saying ``failed`` (or ``limit``) after all m
+    iterations, with U empty, claims a stop that did not happen."""
+    world = tmp_path / "w.json"
+    assert main(["world", "lattice-hole:rows=4,cols=4,seed=0", "-o", str(world)]) == 0
+    trace = tmp_path / "t.jsonl"
+    assert main(["explore", str(world), "--lighthouse", lighthouse, "--trace", str(trace), "--quiet"]) == 0
+    records = [json.loads(line) for line in trace.read_text().splitlines()]
+    assert replay(tmp_path, capsys, str(world), records)[0] == 0
+    for outcome in ("failed", "limit"):
+        records[-1].update(outcome=outcome, reason="tampered", verified=False)
+        code, data = replay(tmp_path, capsys, str(world), records)
+        assert code == 1 and "trace claim" in json.dumps(data) and "had finished" in json.dumps(data), data

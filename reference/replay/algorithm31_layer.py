@@ -262,7 +262,11 @@ class Algorithm31Layer:
             diverge(it, "a join of two open darts of S", str(exc))
 
     def end(self, rec: dict) -> None:
-        if "outcome" in rec:  # the run stopped (failed, limit) before it had a map: nothing to judge beyond the moves
+        if "outcome" in rec:  # the run stopped (failed, limit) before it had a map
+            if self.S is not None and self.iterations == self.world.m and not self.S.unexplored:
+                diverge("end", f"a run that stopped ({rec['outcome']}) before its map was complete",
+                        f"S complete after all m = {self.world.m} iterations: the algorithm had finished",
+                        check="trace claim")
             return
         S = self.ready("end", "the end", "a marker drop and m iterations", "no drop")
         world = self.world
