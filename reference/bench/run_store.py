@@ -21,8 +21,9 @@ This module keeps that file sound when runs are killed or started twice:
   that is not part of a run's key (``outcome``, ``markers_used``,
   ``marker_bound``, ``d_max``, ``other``: added for §6.2's kit algorithms;
   ``walk_steps``, ``lighthouse_at``, ``completed_models``, ``peak_models``,
-  ``true_world_completed``: added for Chapter 5) reads as missing (empty when
-  rewritten).
+  ``true_world_completed``: added for Chapter 5; ``drop_trips``: the traversals
+  made only to drop markers, part of ``cost``) reads as missing (empty when
+  rewritten), and the reports say "not measured" where they need it.
 """
 
 from __future__ import annotations
@@ -50,14 +51,14 @@ __all__ = ["CSV_FIELDS", "DEFAULTS", "Runs", "read_runs", "rewrite", "row_key", 
 CSV_FIELDS = ("experiment", "size", "seed", "algorithm", "policy", "lighthouse", "options", "n", "m", "d_max", "cost",
               "cost_per_m", "verified", "checked", "outcome", "markers_used", "marker_bound", "walk_steps",
               "lighthouse_at", "completed_models", "peak_models", "true_world_completed", "travel", "new",
-              "validation", "retrace", "expansion", "other", "hypotheses", "pruned",
+              "validation", "retrace", "expansion", "other", "drop_trips", "hypotheses", "pruned",
               "rejected_without_motion", "overlap_saved", "recorded", "upper_bound", "expression_3_3", "seconds",
               "cpu_seconds", "error")
 REQUIRED = ("experiment", "size", "seed", "algorithm", "cost", "checked", "verified", "error")
 INTEGERS = ("size", "seed")
 NUMBERS = ("n", "m", "cost", "cost_per_m", "travel", "new", "validation", "retrace", "expansion", "hypotheses",
            "upper_bound", "expression_3_3", "seconds", "cpu_seconds", "d_max", "markers_used", "marker_bound", "other",
-           "walk_steps", "completed_models", "peak_models")
+           "drop_trips", "walk_steps", "completed_models", "peak_models")
 
 
 DEFAULTS = {"policy": "nearest", "lighthouse": "directional-vertex", "options": ""}

@@ -149,6 +149,8 @@ def _table(o, started: float, lighthouse: bool = True, stated: str | None = None
     iterations and hypotheses.  ``stated`` is the registry's cost bound, in words."""
     rows = [
         ("n", o.n), ("m", o.m), ("cost (edge traversals)", o.cost), ("cost / m", f"{o.cost / o.m:.2f}"),
+        ("drop trips (in the cost)", f"{o.drop_trips} (cost without them: {o.cost - o.drop_trips}, "
+                                     f"{(o.cost - o.drop_trips) / o.m:.2f} m)"),
         ("upper bound (3.1)+(3.2)" if lighthouse else "cost bound (registry)", _bound_text(o, stated)),
         *((f"  {purpose}", count) for purpose, count in o.by_purpose.items()),
         ("marker operations (not cost, §3.1.2)",

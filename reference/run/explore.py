@@ -61,6 +61,7 @@ class Outcome:
     checks: int
     by_purpose: dict[str, int]
     upper_bound: int
+    drop_trips: int = 0  # traversals made only to drop markers (part of cost; the simulator's accounting rule)
     lighthouse: str | None = "directional-vertex"
     marker_operations: dict[str, int] = field(default_factory=dict)
     explorer: Any = None
@@ -76,7 +77,7 @@ class Outcome:
 
     def summary(self) -> dict[str, Any]:
         out = {k: getattr(self, k) for k in (
-            "n", "m", "cost", "verified", "iterations", "loop_iterations", "nonloop_iterations", "hypotheses",
+            "n", "m", "cost", "drop_trips", "verified", "iterations", "loop_iterations", "nonloop_iterations", "hypotheses",
             "hypotheses_rejected", "hypotheses_confirmed", "checks", "by_purpose", "upper_bound", "lighthouse",
             "marker_operations", "outcome", "claimed", "reason")}
         if self.lighthouse is not None:
@@ -303,7 +304,7 @@ def _outcome(world: World, sim: Simulator, explorer, checker: Checker | None, vi
     light = getattr(explorer, "lighthouse", None)
     bound = upper_bound(world.n, world.m) if spec.uses_lighthouse else spec.bound_for(world.n, world.m)
     return Outcome(
-        n=world.n, m=world.m, cost=sim.cost, verified=verified,
+        n=world.n, m=world.m, cost=sim.cost, drop_trips=sim.drop_trips, verified=verified,
         iterations=tally.iterations, loop_iterations=tally.loop, nonloop_iterations=tally.nonloop,
         hypotheses=tally.hypotheses, hypotheses_rejected=tally.rejected, hypotheses_confirmed=tally.confirmed,
         checks=checker.passed if checker else 0, by_purpose=dict(sorted(sim.by_purpose.items())),
