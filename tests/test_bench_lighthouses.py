@@ -47,6 +47,9 @@ def test_a_tiny_sweep_runs_every_lighthouse_checked_and_reports_them_side_by_sid
     ok = k - sum(r["algorithm"] == "basic" for r in wrong)
     assert f"| 72 | basic | 1 | {ok}/{k} | {basic[0]:,} ± 0 | {basic[1]:,} ± 0 |" in report and ratios in report
     assert "§6.1" in report and "§6.2" in report and "never compares their costs" in report
+    trips = {r["lighthouse"]: int(r["drop_trips"]) for r in rows if r["algorithm"] == "basic"}
+    assert trips["three-undirected-vertex"] == 2 and trips["directional-vertex"] == 0  # Figure 3.21(b)'s walk
+    assert "Mean drop trips per run (" in report and f"{SHORT['three-undirected-vertex']} 2.0" in report
     # The directional-vertex rows are the lattice-hole experiment's runs: that report shows them, only them.
     assert main(["bench", "lattice-hole", "--graphs", "1", "--sizes", "72", "--out", str(tmp_path), "--quiet",
                  "--no-plots", "--report-only"]) == 0

@@ -191,7 +191,7 @@ def test_the_default_lighthouse_pays_nothing_for_probing():
     assert plain.explorer.P is plain.explorer.S and not isinstance(plain.explorer.robot, ProbingRobot)
     probed = explore(World(w.rotation, (), w.start), "enh3", lighthouse="three-undirected-vertex", record=False)
     assert probed.verified and isinstance(probed.explorer.robot, ProbingRobot)
-    assert probed.by_purpose["establish"] == 2 and probed.cost == sum(probed.by_purpose.values())
+    assert probed.by_purpose["drop"] == probed.drop_trips == 2 and probed.cost == sum(probed.by_purpose.values())
 
 
 def test_a_probing_lighthouse_keeps_lemma_1_with_its_probed_perception():

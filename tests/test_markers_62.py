@@ -48,8 +48,8 @@ def test_each_algorithm_maps_each_world_with_exactly_the_assured_markers(name, t
 def test_case_3b_validates_nothing_by_motion_and_pays_two_traversals_per_marked_edge(text):
     w = bare(make_world(text))
     out = explore(w, "case-3b")
-    assert set(out.by_purpose) <= {"new", "other", "travel"}  # L1629: "Physical motion ... is avoided"
-    assert out.by_purpose["other"] == 2 * (w.n - 1)  # back over e and back, Algorithm 6.6 line 10
+    assert set(out.by_purpose) <= {"new", "drop", "travel"}  # L1629: "Physical motion ... is avoided"
+    assert out.drop_trips == out.by_purpose["drop"] == 2 * (w.n - 1)  # back over e and back, L1629
 
 
 @pytest.mark.parametrize("text", SMALL_WORLDS)
@@ -129,7 +129,7 @@ def test_the_extensions_map_each_world_within_their_bound_and_below_case_3b(name
     if name == "extension-1":  # dropped in transit at v_k: no trip
         assert set(out.by_purpose) <= {"new", "travel"}
     else:  # Algorithm 6.6 line 10: back on e and back, per marked edge
-        assert drops <= (w.n - 1 + 1) // 2 and out.by_purpose["other"] == 2 * drops
+        assert drops <= (w.n - 1 + 1) // 2 and out.drop_trips == out.by_purpose["drop"] == 2 * drops
 
 
 def test_extension_2_needs_rule_3_the_naive_extension_maps_k4_minus_an_edge_wrong():

@@ -39,8 +39,9 @@ refuses what topomark did not write:
   that is not part of a run's key (``outcome``, ``markers_used``,
   ``marker_bound``, ``d_max``, ``other``: added for §6.2's kit algorithms;
   ``walk_steps``, ``lighthouse_at``, ``completed_models``, ``peak_models``,
-  ``true_world_completed``: added for Chapter 5) reads as missing (empty when
-  rewritten).
+  ``true_world_completed``: added for Chapter 5; ``drop_trips``: the traversals
+  made only to drop markers, part of ``cost``) reads as missing (empty when
+  rewritten), and the reports say "not measured" where they need it.
 """
 
 from __future__ import annotations
@@ -73,14 +74,14 @@ __all__ = ["CSV_FIELDS", "DEFAULTS", "MAX_RUNS_BYTES", "MAX_FIELD_CHARS", "Runs"
 CSV_FIELDS = ("experiment", "size", "seed", "algorithm", "policy", "lighthouse", "options", "n", "m", "d_max", "cost",
               "cost_per_m", "verified", "checked", "outcome", "markers_used", "marker_bound", "walk_steps",
               "lighthouse_at", "completed_models", "peak_models", "true_world_completed", "travel", "new",
-              "validation", "retrace", "expansion", "other", "hypotheses", "pruned",
+              "validation", "retrace", "expansion", "other", "drop_trips", "hypotheses", "pruned",
               "rejected_without_motion", "overlap_saved", "recorded", "upper_bound", "expression_3_3", "seconds",
               "cpu_seconds", "error", "checksum")
 REQUIRED = ("experiment", "size", "seed", "algorithm", "cost", "checked", "verified", "error")
 INTEGERS = ("size", "seed")
 NUMBERS = ("n", "m", "cost", "cost_per_m", "travel", "new", "validation", "retrace", "expansion", "hypotheses",
            "upper_bound", "expression_3_3", "seconds", "cpu_seconds", "d_max", "markers_used", "marker_bound", "other",
-           "walk_steps", "completed_models", "peak_models")
+           "drop_trips", "walk_steps", "completed_models", "peak_models")
 FLAGS = ("checked", "verified")
 MAX_RUNS_BYTES = 64 << 20
 """The largest ``runs.csv`` read (64 MiB: some 150,000 rows; the thesis's sweeps write a few thousand)."""

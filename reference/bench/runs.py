@@ -97,6 +97,7 @@ def run_one(run: Run, check: bool = True) -> dict:
                    if spec.marker_bound_fn else "")
     for p in ("travel", "new", "validation", "retrace", "expansion", "other"):
         row[p] = out.by_purpose.get(p, 0)
+    row["drop_trips"] = out.drop_trips  # part of cost (the simulator's accounting rule)
     for s in ("pruned", "rejected_without_motion", "overlap_saved", "recorded"):
         row[s] = stats.get(s, 0)
     return row

@@ -151,6 +151,8 @@ def _table(o, started: float, spec) -> str:
     lighthouse = spec.uses_lighthouse
     rows = [
         ("n", o.n), ("m", o.m), ("cost (edge traversals)", o.cost), ("cost / m", f"{o.cost / o.m:.2f}"),
+        ("drop trips (in the cost)", f"{o.drop_trips} (cost without them: {o.cost - o.drop_trips}, "
+                                     f"{(o.cost - o.drop_trips) / o.m:.2f} m)"),
         ("cost bound (registry)", _bound_text(o, spec)),
         *((f"  {purpose}", count) for purpose, count in o.by_purpose.items()),
         ("marker operations (not cost, §3.1.2)",

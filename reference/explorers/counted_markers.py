@@ -26,14 +26,14 @@ marked place names itself.  It never uses n or m.
 
 Decisions, with the thesis lines:
 
-* **Dropping on e costs a trip** (the thesis does not say whether it costs
-  traversals).  L1629 "the robot goes back to (non-loop) edge e, dropping", and
-  Algorithm 6.6 line 10 (L1950) "goes back on e, drops i markers on e and back":
-  E-markers are dropped in transit, so Case 3b walks back over e to v_k, drops
-  there on e, and walks back to v_u — two traversals per non-loop edge, purpose
-  ``other``.  (The kernel could drop on e from v_u at no cost; that variant's
-  cost is the measured cost minus ``by_purpose["other"]``, since nothing else
-  changes.)
+* **Dropping on e is a drop trip**, as L1629 describes it: "the robot goes
+  back to (non-loop) edge e, dropping" (and Algorithm 6.6 line 10, L1950, "goes
+  back on e, drops i markers on e and back"): Case 3b walks back over e to v_k,
+  drops there on e, and walks back to v_u — two traversals per non-loop edge,
+  purpose ``drop``, counted in the cost and in the drop-trip sub-count (the
+  accounting rule, and why the §6.2 findings compare the cost without them:
+  :mod:`topomark.reference.run.simulator`).  Nothing else depends on the trip,
+  so the cost without it is exactly the cost of dropping on e from v_u.
 * **Σ^{n−1} against Figure 6.6's Σ^{n}** (Case 3a's title, L1562, and Algorithm
   6.2's, L1579, say Σ_{k=1}^{n−1} k; Figure 6.6's caption, L1569, Σ_{k=1}^{n} k).
   Both hold, for different kits: L1575 "The algorithm marks each of the n
@@ -115,11 +115,12 @@ class EdgeCounts(MarkerWalk):
             self.loop(it, self.identify(it, sig))
 
     def mark_tree_edge(self, it: MarkerStep, u: int) -> None:
-        """Back over e to v_k, drop the next count on e (relative exit 0 there), and back to v_u (L1627)."""
+        """A drop trip: back over e to v_k, drop the next count on e (relative exit 0 there), and back to v_u
+        (L1629)."""
         count = self.next_count
-        self.leave((u, 0), "other")
+        self.leave((u, 0), "drop")
         self.drop(MarkerOp("edge", exit=0, count=count), it)
-        self.leave(it.edge, "other")
+        self.leave(it.edge, "drop")
         self.record_marks()  # v_u now senses the marked e too
         self.tree[count] = it.joined
         self.next_count += 1

@@ -140,7 +140,7 @@ class Lighthouse:
     """A way to make v0 a place of explicit place and back-link information.
 
     ``script`` is ``ops`` with the motions between them (ints), where the
-    robot moves while establishing (Figure 3.21(b)); ``recognition(S, v0)``
+    robot moves while establishing (Figure 3.21(b); a drop trip, purpose ``drop``); ``recognition(S, v0)``
     gives the probing recogniser of a lighthouse whose back-link needs probes
     (None: v0's signatures from its entries differ); ``search`` finds and
     establishes v0 by a random walk (§5.1, §6.1, §5.2.1), with ``seed``,
@@ -189,7 +189,7 @@ class Lighthouse:
         v0 = S.add_vertex(robot.sense().degree)
         for item in self.script or self.ops:
             if isinstance(item, int):
-                robot.move(item, "establish")
+                robot.move(item, "drop")  # a drop trip (Figure 3.21(b): to the neighbour it marks, and back)
             else:
                 robot.operate(item)
         S.mark_as_sensed(v0, robot.sense(), 0)

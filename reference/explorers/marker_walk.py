@@ -11,9 +11,10 @@ ties by U's order — the closest-first pattern Algorithms 6.3 and 6.6 require),
 augments S and records every marker dropped in S as the robot senses it.
 
 Purposes of the moves (the cost splits as §6.2's measurement asks): ``new`` —
-the edge e itself; ``travel`` — walking S to v_k; ``other`` — trips made only to
+the edge e itself; ``travel`` — walking S to v_k; ``drop`` — drop trips, made only to
 drop markers (Algorithm 6.6 line 10: "goes back on e, drops i markers on e and
-back"); ``validation`` / ``retrace`` — back-link probes and their returns
+back"; the accounting rule: :mod:`topomark.reference.run.simulator`);
+``validation`` / ``retrace`` — back-link probes and their returns
 (Algorithm 6.2 lines 21–35).
 
 The map is S (also named ``M`` in these modules: the algorithm's map): every

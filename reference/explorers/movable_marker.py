@@ -60,8 +60,9 @@ Cost accounting (the robot's purposes, :data:`~topomark.reference.explorers.robo
 ``new``         following e to v_u
 ``retrace``     back over e to v_k after the drop
 ``validation``  place validation: walking S looking for the marker
-``other``       marker logistics: back to v_u to fetch it (non-loop); carrying it
-                to v_k and back to v_k' for the back-link search
+``other``       marker logistics: back to v_u to fetch it (non-loop)
+``drop``        a drop trip: carrying it to v_k and back to v_k' for the back-link
+                search (L150; :mod:`topomark.reference.run.simulator`)
 ``probe``       back-link validation: out and back over v_k''s unexplored edges
 ==============  =================================================================
 
@@ -184,9 +185,9 @@ class MovableMarkerExplorer(MapWalker):
         self.robot.operate(PICK_UP)
         if len(open_exits) == 1:
             return open_exits[0]
-        self.walk_to(vk, "other")
+        self.walk_to(vk, "drop")  # a drop trip: to v_k to drop the marker, and back to v_k'
         self.robot.operate(MarkerOp("vertex"))
-        self.walk_to(x, "other")
+        self.walk_to(x, "drop")
         for k, j in enumerate(open_exits):
             it.probes += 1
             got = self.take_exit(j, "probe")

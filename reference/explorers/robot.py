@@ -8,8 +8,9 @@ explorer modules import nothing from :mod:`topomark.reference.run.simulator` or
 :mod:`topomark.spec.world` (``tests/test_wall.py`` enforces this).
 
 ``purpose`` tags each motion for the cost accounting of §3.1.2 (``travel`` to
-v_k, the ``new`` edge, hypothesis ``validation``, ``retrace``); the simulator
-counts every traversal whatever the tag says.
+v_k, the ``new`` edge, hypothesis ``validation``, ``retrace``, a ``drop`` trip);
+the simulator counts every traversal whatever the tag says (the accounting
+rule: :mod:`topomark.reference.run.simulator`).
 
 Threads (§6.3): :meth:`Robot.operate` also takes a
 :class:`~topomark.spec.kit.ThreadOp` (tie, untie, leave, take, knot);
@@ -28,9 +29,11 @@ from topomark.spec.signature import Signature
 
 __all__ = ["Robot", "PURPOSES"]
 
-PURPOSES = ("travel", "new", "validation", "retrace", "expansion", "other", "establish", "probe")
-"""``establish``: moves that set up a lighthouse (Figure 3.21(b)'s walk to the neighbour, §5.1/§6.1's random walk);
-``probe``: out-and-back traversals that sense neighbours (§5.1's D, recognising a lighthouse whose back-link needs them)."""
+PURPOSES = ("travel", "new", "validation", "retrace", "expansion", "other", "establish", "probe", "drop")
+"""``establish``: moves that set up a lighthouse (§5.1/§6.1's random walk to its place);
+``probe``: out-and-back traversals that sense neighbours (§5.1's D, recognising a lighthouse whose back-link needs them);
+``drop``: a *drop trip*, traversals made only to carry markers to where they are dropped and back (the simulator's
+drop-trip sub-count, :attr:`~topomark.reference.run.simulator.Simulator.drop_trips`)."""
 
 
 class Robot:

@@ -18,7 +18,7 @@ marked edge yet:
   for each, so at most (m+1)/2 edges are marked — the ceiling holds);
 * **extension-2** (:class:`SavingEdgeCounts`, Algorithm 6.6): marks non-loop edges
   only (line 9–11: "the robot goes back on e, drops i markers on e and back", two
-  traversals, purpose ``other``); after a loop edge from an unmarked v_k, the
+  traversals: a drop trip, purpose ``drop``, :mod:`topomark.reference.run.simulator`); after a loop edge from an unmarked v_k, the
   robot "comes back to v_k" (line 19–20, purpose ``travel``) — decision: only if
   v_k still has unexplored edges (L1917: "unless v_k has no unexplored edges
   now").  At most Σ_{k=1}^{⌈(n−1)/2⌉} k markers (L1929; Table 6.2's floors,
@@ -86,9 +86,9 @@ class SavingEdgeCounts(MarkerWalk):
         if not sig.edges:  # line 8: v_u has no marked edge: a new place
             u = self.non_loop(it, sig)
             if not self.marked(vk):  # lines 9-11: back on e, drop i markers on e, and back
-                self.leave((u, 0), "other")
+                self.leave((u, 0), "drop")
                 count = self.drop_on(it, it.edge[1])
-                self.leave(it.edge, "other")
+                self.leave(it.edge, "drop")
                 self.record_marks()
                 self.ends[count] = (it.edge, (u, 0))
             return

@@ -151,18 +151,19 @@ class Algorithm31Layer:
     # -- the loop body ---------------------------------------------------------------
     def purpose(self, purpose: str, where: str) -> None:
         """The move's purpose fits the loop body: travel*, then the one new edge, then the rest (lines 5-28);
-        before them only the lighthouse's own ``establish``/``probe`` moves, if it moves to establish."""
+        before them only the lighthouse's own moves, if it moves to establish: a search's ``establish``/``probe``
+        moves, a script's drop trip (``drop``; ``establish`` in traces written before drop trips were tagged)."""
         light = self.lighthouse
-        if self.S is None and purpose in ("establish", "probe") and (light.script or light.search):
-            if purpose == "probe" and not light.search:
+        if self.S is None and purpose in ("establish", "probe", "drop") and (light.script or light.search):
+            if purpose == "probe" and not light.search or purpose == "drop" and not light.script:
                 diverge(where, f"the {light.name} lighthouse's establish moves only before the first iteration",
-                        "a probe move")
-            self.establishing += purpose == "establish"
+                        f"a {purpose} move")
+            self.establishing += purpose in ("establish", "drop")
             return
         self.ready(where, "any move", "the marker drop before any move (Algorithm 3.1 line 1)", f"a {purpose} move")
         after_new = self.new_perception is not None
-        if purpose == "establish":
-            diverge(where, "establish moves only before the first iteration (line 1)", "one after it")
+        if purpose in ("establish", "drop"):
+            diverge(where, f"{purpose} moves only before the first iteration (line 1)", "one after it")
         if purpose == "probe" and not (after_new and light.probing):
             diverge(where, "probe moves only after the new edge, for a lighthouse recognised by probing "
                            "(Figure 3.21(b), §5.1)", f"a probe move ({light.name})")

@@ -60,6 +60,7 @@ class Outcome:
     checks: int
     by_purpose: dict[str, int]
     upper_bound: int | None  # the entry's exact cost bound on this world (None: asymptotic or none stated)
+    drop_trips: int = 0  # traversals made only to drop markers (part of cost; the simulator's accounting rule)
     lighthouse: str | None = "directional-vertex"
     marker_operations: dict[str, int] = field(default_factory=dict)
     explorer: Any = None
@@ -76,7 +77,7 @@ class Outcome:
 
     def summary(self) -> dict[str, Any]:
         out = {k: getattr(self, k) for k in (
-            "n", "m", "cost", "verified", "iterations", "loop_iterations", "nonloop_iterations", "hypotheses",
+            "n", "m", "cost", "drop_trips", "verified", "iterations", "loop_iterations", "nonloop_iterations", "hypotheses",
             "hypotheses_rejected", "hypotheses_confirmed", "checks", "by_purpose", "upper_bound", "lighthouse",
             "marker_operations", "outcome", "claimed", "reason", "bound_checked")}
         if self.lighthouse is not None:
@@ -351,7 +352,7 @@ def _outcome(world: World, sim: Simulator, explorer, checker: Checker | None, vi
     light = getattr(explorer, "lighthouse", None)
     bound = spec.bound_for(world.n, world.m)  # enh4/enh5 state none exact (their registration's docstring)
     return Outcome(
-        n=world.n, m=world.m, cost=sim.cost, verified=verified,
+        n=world.n, m=world.m, cost=sim.cost, drop_trips=sim.drop_trips, verified=verified,
         iterations=tally.iterations, loop_iterations=tally.loop, nonloop_iterations=tally.nonloop,
         hypotheses=tally.hypotheses, hypotheses_rejected=tally.rejected, hypotheses_confirmed=tally.confirmed,
         checks=checker.passed if checker else 0, by_purpose=dict(sorted(sim.by_purpose.items())),

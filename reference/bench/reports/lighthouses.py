@@ -23,7 +23,7 @@ from pathlib import Path
 from topomark.reference.bench.plan import DEFAULT_LIGHTHOUSE, EXPERIMENTS, FAMILIES, Part, fits
 from topomark.reference.bench.reports.kit import write
 from topomark.reference.bench.reports.plots import Draw, curve, finish, new
-from topomark.reference.bench.reports.stats import by_seed, finished, groups, mean, mean_sd, num
+from topomark.reference.bench.reports.stats import by_seed, drop_trips, finished, groups, mean, mean_sd, measured, num
 from topomark.reference.bench.reports.text import fmt_pm, row
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES
 
@@ -122,7 +122,17 @@ def _cost_table(part: Part, worlds: dict) -> list[str]:
         lines.append(f"| {size} | {alg} | {len(seeds)} | {verified}/{len(checked)} | "
                      + " | ".join(fmt_pm(m, sd) for m, sd in stats) + " | "
                      + " | ".join(f"{m / stats[0][0]:.4f}" for m, _ in stats[1:]) + " |")
-    return lines + [""]
+    return lines + ["", _trips_line(part, worlds, names), ""]
+
+
+def _trips_line(part: Part, worlds: dict, names: list[str]) -> str:
+    """The lighthouses' drop trips (part of the cost above): the walks made only to drop their markers."""
+    cells = []
+    for i, name in enumerate(names):
+        trips = [drop_trips(r) for _, _, got, seeds in _rows_of(part, worlds) for r in _on(got[i], seeds)]
+        cells.append(f"{name} {sum(trips) / len(trips):.1f}" if trips and measured(*trips) else f"{name} not measured")
+    return ("Mean drop trips per run (traversals made only to drop markers, part of the cost: Figure 3.21(b)'s walk "
+            "to the neighbour and back): " + ", ".join(cells) + ".")
 
 
 def _validation_table(part: Part, worlds: dict) -> list[str]:

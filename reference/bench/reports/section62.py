@@ -19,9 +19,12 @@ measure on the bench's lattice-hole and complete-hole worlds
   (:data:`SLOPE_TOLERANCE`), where f is m, mn, m·d_max or m²n.  The O(mn)
   algorithms report cost/(mn), the O(m) ones cost/m.
 
-The O(m) algorithms (Case 3b, Σ k directional V-markers, extension-1/2) get the
-breakdown of cost/m — new edges (exactly m), trips made to
-drop markers (purpose ``other``), travel between frontier edges — and every
+Every cost is every edge traversal, drop trips (walks made only to drop
+markers, purpose ``drop``) included; they are also shown in their own column,
+and the findings compare costs without them (the accounting rule and why:
+:mod:`topomark.reference.run.simulator`).  The O(m) algorithms (Case 3b,
+Σ k directional V-markers, extension-1/2) get the breakdown of cost/m — new
+edges (exactly m), drop trips, travel between frontier edges — and every
 lattice-hole world above 3m is listed.  The figures' findings and plots are
 :mod:`~topomark.reference.bench.reports.section62_figures`'s.
 
@@ -45,8 +48,8 @@ from topomark.reference.bench.reports import section62_figures as figures
 from topomark.reference.bench.reports.kit import Body, write
 from topomark.reference.bench.reports.plots import Draw
 from topomark.reference.bench.reports.section62_figures import EDGEINFO
-from topomark.reference.bench.reports.stats import (SLOPE_TOLERANCE, cost_f, cost_per_m, finished, groups, mean, num, sd,
-                                                    slope)
+from topomark.reference.bench.reports.stats import (SLOPE_TOLERANCE, cost_f, cost_per_m, drop_trips, finished, groups,
+                                                    mean, measured, net_cost, num, sd, slope)
 from topomark.reference.bench.reports.text import fmt_pm, yes
 from topomark.reference.explorers.counted_markers import sum_to
 
@@ -128,7 +131,9 @@ def write_report(experiment: str, out: Path, wall: float | None = None, plots: b
         for name in REPORTS[:3]:
             write_report(name, out, None, plots)
     return write(experiment, out, wall, plots,
-                 " (thesis §3.1.2); markers used = the markers the robot dropped (the sum of the counts "
+                 " (thesis §3.1.2), drop trips included; drop trips = the traversals made only to drop markers "
+                 "(Case 3b, L1629; extension-2, Algorithm 6.6 line 10), shown apart; "
+                 "markers used = the markers the robot dropped (the sum of the counts "
                  "of the simulator's drops). Every algorithm of a size explores the same worlds from the same "
                  "start. The thesis's Figures 6.11–6.13, 6.17, 6.18 are lost: only their captions "
                  "and the prose findings are quoted.", _body(experiment, out), plot_line=experiment != "section-6.2")
@@ -244,14 +249,15 @@ def size_tables(exp, g: dict, tried: dict, algs: list[str]) -> list[str]:
             continue
         lines += [f"## {part.family} ({FAMILIES[part.family].figure} worlds): per size", "",
                   "| size | algorithm | worlds | correct | n | m | markers used mean (max) | thesis count (mean) | "
-                  "cost mean ± sd | cost/m | cost/f |", "|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+                  "cost mean ± sd | cost/m | drop trips mean | cost/m without drop trips | cost/f |",
+                  "|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
         for size in sorted({k[3] for k in keys}):
             for a in algs:
                 rs, every = g.get((part.family, a, "", size)), tried.get((part.family, a, "", size))
                 if not every:
                     continue
                 if not rs:
-                    lines.append(f"| {size} | `{a}` | {len(every)} | 0 |" + " — |" * 7)
+                    lines.append(f"| {size} | `{a}` | {len(every)} | 0 |" + " — |" * 9)
                     continue
                 c = CLAIMS[a]
                 stated = f"{mean(rs, lambda r: c.stated(int(r['n']), int(r['m']))):,.1f}" if c.stated else "—"
@@ -261,7 +267,8 @@ def size_tables(exp, g: dict, tried: dict, algs: list[str]) -> list[str]:
                              f"{mean(rs, 'markers_used'):,.1f} "
                              f"({max(num(r, 'markers_used') for r in rs):,.0f}) | {stated} | "
                              f"{fmt_pm(mean(rs, 'cost'), sd(rs, 'cost'))} | "
-                             f"{mean(rs, cost_per_m):.2f} | {f} |")
+                             f"{mean(rs, cost_per_m):.2f} | {trips_text(rs)} | "
+                             f"{per_m_text(mean(rs, lambda r: net_cost(r) / num(r, 'm')))} | {f} |")
         lines.append("")
     return lines
 
@@ -271,32 +278,47 @@ def om_breakdown(exp, g: dict, algs: list[str]) -> list[str]:
     if not algs:
         return []
     lines = ["## The O(m) algorithms against the lower bound m: what cost/m is made of", "",
-             "new = the m new edges (1 per edge); drop trips = purpose `other` (Algorithm 6.6 line 10: back on e "
-             "to drop markers and back; Case 3b's walk back to drop i markers on e); travel = walking S between "
-             "frontier edges; probes = validation + retrace. Means per m over the worlds of the size.", "",
-             "| family | algorithm | size | worlds | cost/m mean | cost/m max | new/m | drop trips/m | travel/m | "
-             "probes/m | worlds > 3m |", "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+             "new = the m new edges (1 per edge); drop trips = walks made only to drop markers (Algorithm 6.6 "
+             "line 10: back on e to drop markers and back; Case 3b's walk back to drop i markers on e, L1629); "
+             "travel = walking S between frontier edges; probes = validation + retrace. Means per m over the worlds "
+             "of the size; cost/m includes the drop trips.", "",
+             "| family | algorithm | size | worlds | cost/m mean | cost/m max | new/m | drop trips/m | "
+             "cost/m without drop trips | travel/m | probes/m | worlds > 3m |",
+             "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
     over = []
     for fam, a, sizes in _family_algs(exp, g, algs):
         for s in sizes:
             rs = g[(fam, a, "", s)]
-            per = lambda col: mean(rs, lambda r: num(r, col) / num(r, "m"))  # noqa: E731
+            def per(col, rs=rs):  # a column (by name) or a function of the row, per m, mean over the worlds
+                return mean(rs, lambda r: (num(r, col) if isinstance(col, str) else col(r)) / num(r, "m"))
             big = [r for r in rs if num(r, "cost") > 3 * num(r, "m")]
             over += [(fam, a, r) for r in big]
             lines.append(f"| {fam} | `{a}` | {s} | {len(rs)} | {per('cost'):.3f} | "
-                         f"{max(cost_per_m(r) for r in rs):.3f} | {per('new'):.2f} | {per('other'):.2f} | "
-                         f"{per('travel'):.2f} | {mean(rs, lambda r: (num(r, 'validation') + num(r, 'retrace')) / num(r, 'm')):.2f} | "
+                         f"{max(cost_per_m(r) for r in rs):.3f} | {per('new'):.2f} | "
+                         f"{per_m_text(per(drop_trips))} | {per_m_text(per(net_cost))} | {per('travel'):.2f} | "
+                         f"{mean(rs, lambda r: (num(r, 'validation') + num(r, 'retrace')) / num(r, 'm')):.2f} | "
                          f"{len(big)} |")
     lattice = [o for o in over if o[0] == "lattice-hole"]
     lines += ["", f"Lattice-hole worlds above 3m (the target: none at the Chapter 4 sizes): "
               f"**{len(lattice)}**" + ("." if not lattice else ":"), ""]
     for fam, a, r in over:
-        parts = {c: num(r, c) / num(r, "m") for c in ("other", "travel", "validation", "retrace")}
+        parts = {c: num(r, c) / num(r, "m") for c in ("drop_trips", "other", "travel", "validation", "retrace")}
         worst = max(parts, key=parts.get)
         lines.append(f"* {fam} size {r['size']} seed {r['seed']} `{a}`: n = {r['n']}, m = {r['m']}, cost/m = "
                      f"{cost_per_m(r):.3f}; the excess over the m new edges is mostly `{worst}` "
                      f"({parts[worst]:.2f} m).")
     return lines + [""]
+
+
+def trips_text(rs: list[dict]) -> str:
+    """The mean drop trips of the runs, or "not measured" (a runs file written before the column)."""
+    value = mean(rs, drop_trips)
+    return f"{value:,.1f}" if measured(value) else "not measured"
+
+
+def per_m_text(value: float) -> str:
+    """A per-m mean to two places, or "—" where drop trips were not measured."""
+    return f"{value:.2f}" if measured(value) else "—"
 
 
 def runs_by_outcome(rows: list[dict]) -> str:
@@ -308,7 +330,8 @@ def runs_by_outcome(rows: list[dict]) -> str:
 def marker_classes(g: dict, tried: dict) -> list[str]:
     """Every marker class of Tables 6.1/6.2 with topomark's command, mean cost and markers at the largest sizes."""
     lines = ["## Every marker class of Tables 6.1 and 6.2: topomark's command, measured cost and markers", "",
-             "Mean cost (cost/m) and mean markers used at the largest size run of each family.", "",
+             "Mean cost (cost/m; mean drop trips, part of the cost) and mean markers used at the largest size run "
+             "of each family.", "",
              "| marker class (thesis) | command | lattice-hole: size, cost (cost/m), markers | "
              "complete-hole: size, cost (cost/m), markers |", "|---|---|---|---|"]
     for a, c in CLAIMS.items():
@@ -321,7 +344,7 @@ def marker_classes(g: dict, tried: dict) -> list[str]:
                 continue
             rs = g[(fam, a, "", max(sizes))]
             cells.append(f"{max(sizes)}: {mean(rs, 'cost'):,.0f} "
-                         f"({mean(rs, cost_per_m):.2f}), "
+                         f"({mean(rs, cost_per_m):.2f}; drop trips {trips_text(rs)}), "
                          f"{mean(rs, 'markers_used'):,.0f}")
         lines.append(f"| Table {c.table}: {' · '.join(x.strip() for x in c.row.strip('|').split('|'))} | "
                      f"`topomark explore WORLD --algorithm {a}` | "

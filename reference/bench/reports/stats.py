@@ -18,6 +18,8 @@ Examples
 1.0
 >>> cost_f("m²n", {"n": "3", "m": "4"})
 48.0
+>>> net_cost({"cost": "50", "drop_trips": "26"}), measured(net_cost({"cost": "50"}))
+(24.0, False)
 """
 
 from __future__ import annotations
@@ -30,7 +32,8 @@ from topomark.reference.bench.plan import DEFAULT_LIGHTHOUSE
 from topomark.reference.bench.run_store import row_key
 
 __all__ = ["latest", "lighthouse_of", "KEY_COLUMNS", "key_of", "finished", "groups", "by_seed", "num", "cost_per_m",
-           "cpu_seconds", "mean", "sd", "mean_sd", "COST_F", "cost_f", "slope", "SLOPE_TOLERANCE", "spearman"]
+           "cpu_seconds", "mean", "sd", "mean_sd", "COST_F", "cost_f", "slope", "SLOPE_TOLERANCE", "spearman",
+           "drop_trips", "net_cost", "measured"]
 
 SLOPE_TOLERANCE = 1.1
 """The largest least-squares slope of log(mean cost) against log(mean f) read as "cost grows no faster than f"."""
@@ -92,6 +95,23 @@ def num(r: dict, column: str) -> float:
 def cost_per_m(r: dict) -> float:
     """The run's cost per edge of its world (the lower bound m: every edge is traversed once)."""
     return num(r, "cost") / num(r, "m")
+
+
+def drop_trips(r: dict) -> float:
+    """The run's drop trips (traversals made only to drop markers, part of its cost); NaN for a row written before
+    the column existed (not measured, never read as 0)."""
+    value = r.get("drop_trips")
+    return math.nan if value in ("", None) else float(value)
+
+
+def net_cost(r: dict) -> float:
+    """The run's cost without its drop trips (NaN where they were not measured)."""
+    return num(r, "cost") - drop_trips(r)
+
+
+def measured(*values: float) -> bool:
+    """None of the values is NaN (a drop-trip figure of a runs file that has the column)."""
+    return not any(math.isnan(v) for v in values)
 
 
 def cpu_seconds(r: dict) -> float:
