@@ -102,8 +102,8 @@ def test_console_script_runs_in_a_subprocess():
 
 
 def test_undirected_marker_world_is_refused_in_a_subprocess():
-    """Figure 3.4's wheel carries an undirected marker: not the basic algorithm's marker class."""
-    proc = subprocess.run([sys.executable, "-m", "topomark.reference.cli.main", "explore", "wheel-b"],
+    """Figure 3.4's wheel with its undirected centre marker (asked for): not the basic algorithm's marker class."""
+    proc = subprocess.run([sys.executable, "-m", "topomark.reference.cli.main", "explore", "wheel-b:marker=undirected"],
                           capture_output=True, text=True, timeout=120)
     assert proc.returncode == 2 and "Traceback" not in proc.stderr
     assert '{"kind": "vertex", "at": "0", "count": 1}' in proc.stderr

@@ -40,10 +40,10 @@ def test_an_entry_cannot_name_cost_bound_without_an_exact_bound_nor_state_one_wi
         replace(algorithm_spec("enh4"), bound_bench=None)
 
 
-@pytest.mark.parametrize("lighthouse, purpose", [("three-undirected-vertex", "establish"),
+@pytest.mark.parametrize("lighthouse, purpose", [("three-undirected-vertex", "drop"),
                                                  ("undirected-vertex", "probe")])
 def test_a_lighthouse_s_setup_and_probes_are_outside_3_1_plus_3_2(lighthouse, purpose):
-    """On one edge (3.1)+(3.2) = 1: Figure 3.21(b)'s lighthouse walks 2 to set up, §5.1's probes 2 to tell its
+    """On one edge (3.1)+(3.2) = 1: Figure 3.21(b)'s lighthouse walks 2 to drop its third marker, §5.1's probes 2 to tell its
     back-link; the run is held to the loop's own traversals (L628) and passes, and counting those moves too
     would fail it."""
     out = explore(EDGE, "basic", lighthouse=lighthouse, record=False)

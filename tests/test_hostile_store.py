@@ -16,7 +16,7 @@ from pathlib import Path
 
 import pytest
 
-from topomark.reference.bench.run_store import MAX_FIELD_CHARS, MAX_RUNS_BYTES
+from topomark.reference.bench.run_store import CSV_FIELDS, MAX_FIELD_CHARS, MAX_RUNS_BYTES
 from topomark.reference.cli.main import main
 
 BENCH = ["bench", "random-20", "--graphs", "2", "--sizes", "15", "--jobs", "1", "--no-plots", "--quiet"]
@@ -99,7 +99,7 @@ def test_a_runs_csv_over_the_size_cap_is_refused(tmp_path, capsys):
     ("cost", "-4", ("column 11 (cost)", "'-4'")),
     ("size", "9" * 5000, ("column 2 (size)", "at most 18 digits")),
     ("seed", "-1", ("column 3 (seed)", "'-1' is not a non-negative integer")),
-    ("error", "x" * (50 << 20), ("column 38 (error)", f"a field of {50 << 20:,} characters (at most "
+    ("error", "x" * (50 << 20), (f"column {CSV_FIELDS.index('error') + 1} (error)", f"a field of {50 << 20:,} characters (at most "
                                                       f"{MAX_FIELD_CHARS:,})")),
     ("verified", "maybe", ("column 13 (verified)", "'maybe' is not True or False")),
 ], ids=["nan", "inf", "1e309", "negative-cost", "5000-digit-size", "negative-seed", "50MB-field", "flag"])
