@@ -65,7 +65,7 @@ def test_world_generate_show_and_json(capsys, here):
 
 
 def test_world_to_stdout_is_a_world_file(capsys, here):
-    code, out, err = run(capsys, "world", "wheel-b")
+    code, out, err = run(capsys, "world", "wheel-b:marker=undirected")
     assert code == 0 and err == ""
     (here / "b.json").write_text(out)
     assert load_world(here / "b.json") == g.wheel_b()

@@ -35,12 +35,9 @@ from __future__ import annotations
 import json
 from functools import lru_cache
 from importlib import resources
-from typing import Any, Sequence
+from typing import TYPE_CHECKING, Any, Sequence
 
-from jsonschema import Draft202012Validator, ValidationError, validators
-from referencing import Registry, Resource
-
-from topomark.spec.errors import InvalidInput, clip
+from topomark.spec.errors import InvalidInput, TopomarkFault, clip
 from topomark.spec.jsontext import parse_json
 from topomark.spec.worldfile import schema as world_schema
 
@@ -56,7 +53,8 @@ MAX_MESSAGE = 2000  # characters of a verdict message; what the other side sent 
 SCHEMA: dict[str, Any] = json.loads(resources.files("topomark.spec").joinpath("protocol.schema.json").read_text())
 """``spec/protocol.schema.json``: one JSON Schema definition per message, the only statement of their shapes."""
 
-_REGISTRY = Registry().with_resources([(s["$id"], Resource.from_contents(s)) for s in (SCHEMA, world_schema())])
+if TYPE_CHECKING:
+    from jsonschema import ValidationError
 _DEFS: dict[str, dict[str, Any]] = SCHEMA["$defs"]
 # version -> message type -> the name of its definition, read from $defs/message@N's if/then dispatch
 MESSAGES: dict[int, dict[str, str]] = {
@@ -65,10 +63,24 @@ MESSAGES: dict[int, dict[str, str]] = {
 # the payloads judged with their message, not when the line is read: a snapshot's S and U (FAIL [snapshot]),
 # a map's world (FAIL [map-invalid])
 PAYLOADS = {"snapshot": ("S", "U"), "map": ("world",)}
-# JSON Schema counts 1.0 as an integer; the protocol does not (a motion, exit or count is written as an integer)
-_Validator = validators.extend(Draft202012Validator, type_checker=Draft202012Validator.TYPE_CHECKER.redefine(
-    "integer", lambda checker, x: isinstance(x, int) and not isinstance(x, bool)))
 _RANK = {"required": 1, "additionalProperties": 2}  # a wrong value is named before a missing or an unknown field
+
+
+@lru_cache(maxsize=None)
+def _schema_tools() -> tuple[Any, Any]:
+    """The validator class and the schema registry, imported when first needed: without the jsonschema package
+    (a dependency of topomark) a command that reads no message still runs, and one that does is topomark's fault."""
+    try:
+        from jsonschema import Draft202012Validator, validators
+        from referencing import Registry, Resource
+    except ImportError as exc:
+        raise TopomarkFault(f"reading protocol messages needs the jsonschema package, a dependency of topomark; "
+                            f"reinstall topomark ({exc})") from None
+    # JSON Schema counts 1.0 as an integer; the protocol does not (a motion, exit or count is written as one)
+    checker = Draft202012Validator.TYPE_CHECKER.redefine(
+        "integer", lambda _, x: isinstance(x, int) and not isinstance(x, bool))
+    registry = Registry().with_resources([(d["$id"], Resource.from_contents(d)) for d in (SCHEMA, world_schema())])
+    return validators.extend(Draft202012Validator, type_checker=checker), registry
 
 
 @lru_cache(maxsize=None)
@@ -79,7 +91,8 @@ def _validator(name: str, envelope: bool) -> Any:
     if skipped:
         props = {k: ({"type": v["type"]} if k in skipped else v) for k, v in definition["properties"].items()}
         definition = {**definition, "properties": props}
-    return _Validator({**definition, "$defs": _DEFS}, registry=_REGISTRY)
+    validator, registry = _schema_tools()
+    return validator({**definition, "$defs": _DEFS}, registry=registry)
 
 
 def shape_error(msg: dict[str, Any], version: int, envelope: bool = False) -> str | None:
@@ -99,7 +112,7 @@ def shape_error(msg: dict[str, Any], version: int, envelope: bool = False) -> st
     return _words(error, kind)
 
 
-def _words(error: ValidationError, kind: str) -> str:
+def _words(error: "ValidationError", kind: str) -> str:
     """One precise sentence for a schema error: the field by its path, and what was expected."""
     where = kind + "".join(f"[{p}]" if isinstance(p, int) else f".{p}" for p in error.absolute_path)
     got = clip(json.dumps(error.instance), 60)
