@@ -226,9 +226,11 @@ def _row(path: Path, line: int, header: list[str], record: list[str], manifest: 
     """The checked row of ``record``; None (noted) if a resume drops it for its checksum."""
     row = dict(zip(header, record))
     _check_row(path, line, header, row)
+    # the checksum covers the file's own columns, as written: a store written before a column was added verifies
+    intact = manifest is None or row.get("checksum") == row_checksum(manifest.store, row, header)
     for name, value in DEFAULTS.items():  # an older file: the column is added with what its runs used
         row[name] = row.get(name) or value
-    if manifest is None or row.get("checksum") == row_checksum(manifest.store, row, CSV_FIELDS):
+    if intact:
         return row
     what = (f"{path} line {line}: the row does not match its checksum (edited, cut short, or copied from another "
             f"run store)")
