@@ -24,6 +24,11 @@ family are in ``tests/families.py``.  The docstring examples of every module run
 
 from __future__ import annotations
 
+import json
+import sys
+
+import pytest
+
 from topomark.reference.worlds.argument import resolve_world
 from topomark.spec.world import World
 
@@ -77,3 +82,26 @@ SMALL_WORLDS = (
 )
 """The thesis's families (§3.5.3) at sizes every algorithm maps in milliseconds, and the Figure 3.4 wheels: the
 worlds that the tests of "every algorithm maps every family" run on.  Explore ``bare(make_world(text))``."""
+
+
+SCRIPTED = """import json, sys, time
+pause, linger = float(sys.argv[2]), float(sys.argv[3])
+for msg in json.loads(sys.argv[1]):
+    if msg == "hello":
+        sys.stdin.readline(); continue
+    time.sleep(pause)
+    sys.stdout.write(json.dumps(msg) + "\\n"); sys.stdout.flush()
+    if msg["type"] in ("move", "drop", "pick_up", "thread"):
+        sys.stdin.readline()
+time.sleep(linger)
+"""
+
+
+@pytest.fixture
+def scripted(tmp_path):
+    """A protocol client that reads ``hello``, then sends ``messages`` (``pause`` seconds before each), reading the
+    answer to each move and marker or thread operation, then waits ``linger`` seconds: a program under test."""
+    path = tmp_path / "scripted.py"
+    path.write_text(SCRIPTED)
+    return lambda *messages, pause=0.0, linger=5.0: [sys.executable, str(path), json.dumps(["hello", *messages]),
+                                                    str(pause), str(linger)]

@@ -21,27 +21,16 @@ ROOT = Path(__file__).resolve().parents[1]
 CLIENT = str(ROOT / "reference" / "oracle" / "examples" / "client.py")
 TRIANGLE = World({"a": ["b", "c"], "b": ["c", "a"], "c": ["a", "b"]}, (), Start("a", "b"))
 
-SCRIPTED = """import json, sys, time
-pause = float(sys.argv[2])
-for msg in json.loads(sys.argv[1]):
-    if msg == "hello":
-        sys.stdin.readline(); continue
-    time.sleep(pause)
-    sys.stdout.write(json.dumps(msg) + "\\n"); sys.stdout.flush()
-    if msg["type"] in ("move", "drop", "pick_up", "thread"):
-        sys.stdin.readline()
-time.sleep(30)
-"""
 LIGHTHOUSE_SNAPSHOT = {"type": "snapshot", "S": {"exits": [[None, None]], "marks": [{"vertex": 0, "head": 0}]},
                        "U": [[0, 0], [0, 1]]}
 
 
+
+
 @pytest.fixture
-def scripted(tmp_path):
-    """A client that reads hello, then sends ``messages`` (``pause`` seconds before each), reading each answer."""
-    path = tmp_path / "scripted.py"
-    path.write_text(SCRIPTED)
-    return lambda *messages, pause=0.0: [sys.executable, str(path), json.dumps(["hello", *messages]), str(pause)]
+def scripted(scripted):
+    """The shared scripted client, lingering 30 s: long enough for every time limit these tests set."""
+    return lambda *messages, pause=0.0: scripted(*messages, pause=pause, linger=30.0)
 
 
 def _slow(seconds: float, calls: list):

@@ -33,23 +33,8 @@ EDGE_KIT = Kit(edge=1, directional=True)
 TRIANGLE = World({"a": ["b", "c"], "b": ["c", "a"], "c": ["a", "b"]}, (), Start("a", "b"))
 CHAIN = World({"a": ["b"], "b": ["a"]}, (), Start("a", "b"))
 
-SCRIPTED = """import json, sys, time
-for msg in json.loads(sys.argv[1]):
-    if msg == "hello":
-        sys.stdin.readline(); continue
-    sys.stdout.write(json.dumps(msg) + "\\n"); sys.stdout.flush()
-    if msg["type"] in ("move", "drop", "pick_up"):
-        sys.stdin.readline()
-time.sleep(5)
-"""
 
 
-@pytest.fixture
-def scripted(tmp_path):
-    """A client that reads hello, then sends ``messages`` (reading the answer to each operation)."""
-    path = tmp_path / "scripted.py"
-    path.write_text(SCRIPTED)
-    return lambda *messages: [sys.executable, str(path), json.dumps(["hello", *messages])]
 
 
 def play(command, world=TRIANGLE, kit=EDGE_KIT, version=2):

@@ -27,15 +27,6 @@ EXAMPLES = ROOT / "reference" / "oracle" / "examples"
 TEE = str(Path(__file__).resolve().parent / "clients" / "tee_client.py")
 TRIANGLE = World({"a": ["b", "c"], "b": ["c", "a"], "c": ["a", "b"]}, (), Start("a", "b"))
 REGISTRY = Registry().with_resources([(s["$id"], Resource.from_contents(s)) for s in (SCHEMA, world_schema())])
-SCRIPTED = """import json, sys, time
-for msg in json.loads(sys.argv[1]):
-    if msg == "hello":
-        sys.stdin.readline(); continue
-    sys.stdout.write(json.dumps(msg) + "\\n"); sys.stdout.flush()
-    if msg["type"] in ("move", "drop", "pick_up"):
-        sys.stdin.readline()
-time.sleep(5)
-"""
 
 
 def message_validator(version: int) -> Draft202012Validator:
@@ -113,11 +104,6 @@ def test_a_line_that_breaks_its_schema_is_garbage_naming_the_field(line, version
     assert exc.value.kind == "garbage" and words in str(exc.value), str(exc.value)
 
 
-@pytest.fixture
-def scripted(tmp_path):
-    path = tmp_path / "scripted.py"
-    path.write_text(SCRIPTED)
-    return lambda *messages: [sys.executable, str(path), json.dumps(["hello", *messages])]
 
 
 def test_a_malformed_snapshot_is_a_snapshot_failure_naming_the_field(scripted):
