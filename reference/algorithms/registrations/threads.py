@@ -12,6 +12,7 @@ thread-carried        ε (0)        ε, retied, O(mn) :func:`directional_bound` 
 thread-circumference  n (or L)     c(G), O(mn)      :func:`circumference_bound`
 thread-knots          m + 1        l ≫ m, O(m)      :func:`knots_bound` = 4m − 2n + 2
 thread-explore        L (default 2) l < c(G), O(mn) :func:`explore_bound`
+thread-fallback       L (default 2) l < c(G), O(m²n) :func:`fallback_bound`
 ===================== ============ ================ ==================================================
 
 Decisions:
@@ -38,6 +39,11 @@ Decisions:
 
 Bounds (ours: the thesis gives O(·) only), derived in the explorer modules:
 
+* The phase-I/phase-II fallback (L2090–L2092, :mod:`~topomark.reference.explorers.threads_fallback`): its
+  phase I is a prefix of Algorithm 6.7's steps (below), the free end left costs no move, and each phase-II step
+  is one pass of Algorithm 3.1's loop body with S at least as large and U no larger than the pass that (3.1)
+  or (3.2) counts for it (§3.5.2, L630–L640): Algorithm 6.7's bound plus (3.1)+(3.2).
+
 * Algorithm 6.7: n − 1 tree edges laid and rewound once each; a loop step lays e, and either rewinds it
   at once or goes back over e, walks the thread back (≤ n − 1) and rewinds e: ≤ n + 2.
 * Algorithm 6.8: every step lays e once and every laid edge is rewound once (2m); a step's search is at
@@ -46,8 +52,8 @@ Bounds (ours: the thesis gives O(·) only), derived in the explorer modules:
 
 Examples
 --------
->>> circumference_bound(3, 3), knots_bound(3, 3), explore_bound(3, 3)
-(9, 8, 30)
+>>> circumference_bound(3, 3), knots_bound(3, 3), explore_bound(3, 3), fallback_bound(3, 3)
+(9, 8, 30, 31)
 """
 
 from __future__ import annotations
@@ -57,10 +63,12 @@ from topomark.spec.kit import Kit
 from topomark.reference.algorithms.algorithm_spec import STEPWISE_MAP_CHECKS, AlgorithmSpec, Parameter
 from topomark.reference.explorers.threads_carried import CarriedThreadExplorer
 from topomark.reference.explorers.threads_explore import CircumferenceThreadExplorer, ThreadExplorer
+from topomark.reference.explorers.threads_fallback import FallbackThreadExplorer
 from topomark.reference.explorers.threads_knots import KnotThreadExplorer
+from topomark.reference.algorithms.bounds import upper_bound
 from topomark.reference.algorithms.registrations.movable import directional_bound
 
-__all__ = ["SPECS", "circumference_bound", "knots_bound", "explore_bound", "directional_bound"]
+__all__ = ["SPECS", "circumference_bound", "knots_bound", "explore_bound", "fallback_bound", "directional_bound"]
 
 
 def circumference_bound(n: int, m: int) -> int:
@@ -76,6 +84,11 @@ def knots_bound(n: int, m: int) -> int:
 def explore_bound(n: int, m: int) -> int:
     """Our bound for Algorithm 6.8: 2m + 2nm + n(n − 1)."""
     return 2 * m + 2 * n * m + n * (n - 1)
+
+
+def fallback_bound(n: int, m: int) -> int:
+    """Our bound for the phase-I/phase-II fallback: Algorithm 6.7's plus Algorithm 3.1's (3.1)+(3.2)."""
+    return circumference_bound(n, m) + upper_bound(n, m)
 
 
 LENGTH = Parameter("thread-length", "the thread's length L in edges (an integer >= 1); the robot knows it",
@@ -117,5 +130,15 @@ SPECS = (
                   options=("thread-length L (default 2, Figure 6.21)",), bound_fn=explore_bound,
                   bound_formula=f"2m + 2nm + n(n − 1), {_OURS} (L2088–L2141)",
                   explorer=ThreadExplorer, parameters=(Parameter("thread-length", LENGTH.help, default=2, minimum=1),),
+                  kit_fn=lambda n, m, opts: Kit(thread=opts["thread-length"]), **_ROBOT),
+    AlgorithmSpec(name="thread-fallback",
+                  thesis="§6.3.3, phase-I/phase-II fallback (L2088–L2092; l < c(G), Algorithm 6.7 then Algorithm 3.1)",
+                  kit=Kit(thread=2), bound="O(m²n) (L2092); bound_fn: ours",
+                  markers="no marker; a thread of --thread-length edges, left laid once it runs out",
+                  options=("thread-length L (default 2, Figure 6.21)",), bound_fn=fallback_bound,
+                  bound_formula="2(n − 1) + (m − n + 1)(n + 2) + (3.1) + (3.2), ours: Algorithm 6.7's bound for "
+                                "phase I and Algorithm 3.1's (§3.5.2, L630–L640) for phase II, behind O(m²n) (L2092)",
+                  explorer=FallbackThreadExplorer,
+                  parameters=(Parameter("thread-length", LENGTH.help, default=2, minimum=1),),
                   kit_fn=lambda n, m, opts: Kit(thread=opts["thread-length"]), **_ROBOT),
 )
