@@ -55,6 +55,13 @@ the registration refuses a false ``cue-n``/``cue-m`` as bad input.
   world edge has been walked, so each model not completed is voided and the
   run ends: with the sole model left, or as :class:`AlgorithmFailed` naming
   how many completed models it cannot tell apart.
+* ``prior single-leaf`` (L1436: "we know that there exists exactly one
+  'leaf vertex' in the world"): a model with two places of degree 1 is
+  voided, and so is a completed one with none.  The thesis's use of it — the
+  leaf as a directional lighthouse, deterministic — is a lighthouse
+  algorithm; here it prunes the tree like a cue.
+* ``rank yes``: the completed models are ranked by P(model | perceptions)
+  (:mod:`.model_prior`, L1438), for the run's summary; it voids nothing.
 * ``cue-planar yes``: a model whose rotation system has genus > 0 is voided
   (planar = a genus-0 embedding, the world being an embedded graph §3.1.1;
   a sub-embedding never has a larger genus than the world).
@@ -87,7 +94,7 @@ from topomark.reference.explorers.walker import ExplorerState
 __all__ = ["ModelTreeExplorer", "Step", "Closing", "DEFAULTS"]
 
 DEFAULTS = {"signatures": "global", "entry-check": "yes", "window": 100, "max-models": 10000, "max-steps": 2000,
-            "cue-n": None, "cue-m": None, "cue-diameter": None, "cue-planar": "no"}
+            "cue-n": None, "cue-m": None, "cue-diameter": None, "cue-planar": "no", "prior": "none", "rank": "no"}
 """The options and their defaults (the registration's parameters carry the same)."""
 
 
@@ -277,6 +284,10 @@ class ModelTreeExplorer(ExplorerState):
             return False
         if o["cue-m"] is not None and (shape.edges > o["cue-m"] or shape.complete() and shape.edges != o["cue-m"]):
             return False
+        if o["prior"] == "single-leaf":
+            leaves = sum(shape.degree(v) == 1 for v in range(shape.n))
+            if leaves > 1 or shape.complete() and leaves == 0:
+                return False
         if o["cue-planar"] == "yes" and shape.genus() > 0:
             return False
         return o["cue-diameter"] is None or not shape.complete() or shape.diameter() <= o["cue-diameter"]

@@ -16,7 +16,8 @@ n and m and refuses a false ``--cue-n``/``--cue-m`` before anything runs;
 against a world, for a caller that has the world (the CLI).
 
 For the CLI: :func:`summary` gives the ``--json`` fields
-``completed_models``, ``peak_models`` and ``true_world_completed``;
+``completed_models``, ``peak_models`` and ``true_world_completed`` (and, with ``--rank yes``,
+``ranked_models``: :func:`ranked_models`);
 :func:`write_models` writes every completed model, in completion order, as
 world files (``--models DIR``).
 
@@ -39,9 +40,10 @@ from topomark.spec.kit import Kit
 from topomark.spec.worldfile import dumps_world
 
 from topomark.reference.algorithms.algorithm_spec import AlgorithmSpec, Parameter
+from topomark.reference.explorers.model_prior import posteriors
 from topomark.reference.explorers.model_tree import DEFAULTS, ModelTreeExplorer
 
-__all__ = ["SPECS", "PARAMETERS", "MAX_MODELS", "MAX_STEPS", "check_cues", "summary", "write_models"]
+__all__ = ["SPECS", "PARAMETERS", "MAX_MODELS", "MAX_STEPS", "check_cues", "summary", "ranked_models", "write_models"]
 
 MAX_MODELS = 100_000
 """The largest ``--max-models``: 10 times the default of 10,000.  Every live model is a partial map kept in
@@ -71,6 +73,10 @@ PARAMETERS = (
     Parameter("cue-diameter", "cue (§5.3): the world's diameter", None, 1),
     Parameter("cue-planar", "cue (§5.3): the world is planar (a genus-0 embedding)", DEFAULTS["cue-planar"], None,
               ("yes", "no")),
+    Parameter("prior", "prior knowledge (§5.3, L1436): single-leaf, the world has exactly one vertex of degree 1",
+              DEFAULTS["prior"], None, ("none", "single-leaf")),
+    Parameter("rank", "rank the completed models by P(model | perceptions), the prior 2^-(n+m+genus) (§5.3, L1438), "
+              "in the summary", DEFAULTS["rank"], None, ("yes", "no")),
 )
 
 
@@ -94,6 +100,9 @@ def check_cues(world, options: dict) -> None:
             raise InvalidInput(f"--cue-diameter {D} is false for this world (diameter = {true})")
     if options.get("cue-planar") == "yes" and world.genus() != 0:
         raise InvalidInput(f"--cue-planar yes is false for this world (its embedding has genus {world.genus()})")
+    leaves = sum(len(world.rotation[v]) == 1 for v in world.vertices)
+    if options.get("prior") == "single-leaf" and leaves != 1:
+        raise InvalidInput(f"--prior single-leaf is false for this world (it has {leaves} vertices of degree 1)")
 
 
 def _diameter(world) -> int:
@@ -116,8 +125,23 @@ def summary(explorer, world) -> dict:
     start = world.start_state()
     true = any(S.n == world.n and anchored(S, world, (0, 0), start, markers=False, partial=False).isomorphic
                for S in explorer.completed_models)
-    return {"completed_models": len(explorer.completed_models), "peak_models": explorer.peak_models,
-            "true_world_completed": true}
+    out = {"completed_models": len(explorer.completed_models), "peak_models": explorer.peak_models,
+           "true_world_completed": true}
+    if explorer.options.get("rank") == "yes":
+        out["ranked_models"] = ranked_models(explorer.completed_models, world)
+    return out
+
+
+def ranked_models(completed, world) -> list[dict]:
+    """The completed models, the most probable first (:mod:`~topomark.reference.explorers.model_prior`): each
+    its number in completion order (``--models``' file), n, m, genus, posterior, and whether it is the world."""
+    start, shapes = world.start_state(), [S.to_world(start=(0, 0)) for S in completed]
+    rows = []
+    for k, p in posteriors([(W.n, W.m, W.genus()) for W in shapes]):
+        S, W = completed[k], shapes[k]
+        true = S.n == world.n and anchored(S, world, (0, 0), start, markers=False, partial=False).isomorphic
+        rows.append({"model": k + 1, "n": W.n, "m": W.m, "genus": W.genus(), "posterior": round(p, 4), "true": true})
+    return rows
 
 
 def write_models(explorer, directory: str | Path) -> list[Path]:
@@ -136,7 +160,8 @@ SPECS = (
     AlgorithmSpec(
         name="model-tree", thesis="§5.2.2, Algorithm 5.1", kit=Kit(), bound=None, markers="0", deterministic=False,
         options=("signatures global|local", "entry-check yes|no", "window=N", "max-models=N", "max-steps=N",
-                 "cue-n=N", "cue-m=M", "cue-diameter=D", "cue-planar=yes|no"),
+                 "cue-n=N", "cue-m=M", "cue-diameter=D", "cue-planar=yes|no",
+                 "prior none|single-leaf", "rank yes|no"),
         checks=("models", "marker-budget", "isomorphism"),
         explorer=ModelTreeExplorer, uses_lighthouse=False, parameters=PARAMETERS, kit_fn=_kit,
         marker_bound_fn=lambda n, m: 0, family="robot", check_world=check_cues, summary_fn=summary,
