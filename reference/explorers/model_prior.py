@@ -28,8 +28,6 @@ Examples
 
 from __future__ import annotations
 
-from fractions import Fraction
-
 __all__ = ["log2_prior", "posteriors"]
 
 
@@ -40,7 +38,8 @@ def log2_prior(n: int, m: int, genus: int) -> int:
 
 def posteriors(models: list[tuple[int, int, int]]) -> list[tuple[int, float]]:
     """(completion index from 0, P(model | perceptions)) for each (n, m, genus), the most probable first."""
-    weights = [Fraction(2) ** log2_prior(*nmg) for nmg in models]
+    logs = [log2_prior(*nmg) for nmg in models]
+    weights = [2 ** (x - min(logs)) for x in logs]  # exact integers: the prior times 2^-(least log)
     total = sum(weights)
     ranked = sorted(range(len(models)), key=lambda k: -weights[k])  # stable: ties in completion order
-    return [(k, float(weights[k] / total)) for k in ranked]
+    return [(k, weights[k] / total) for k in ranked]
