@@ -224,6 +224,7 @@ class ThreadExplorer(ThreadWalker):
 
     name = "thread-explore"
     retie = True
+    iteration_type: type = ThreadIteration  # the record of one step (the fallback adds its phase)
 
     def step(self) -> ThreadIteration:
         """Lines 4–21: lay the thread along the closest unexplored edge, resolve v_u, rewind / retie."""
@@ -232,7 +233,7 @@ class ThreadExplorer(ThreadWalker):
         vk = self.position[0]
         i = self.open_exit(vk)
         self.S.unexplored.remove((vk, i))
-        it = ThreadIteration(len(self.iterations) + 1, (vk, i))
+        it = self.iteration_type(len(self.iterations) + 1, (vk, i))
         it.signature = sig = self.lay(i, "new")
         t = sig.thread
         if t.tied or len(t.edges) > 1 or t.knots:  # lines 6-9: the thread lay at v_u already

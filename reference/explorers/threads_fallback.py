@@ -86,6 +86,7 @@ class FallbackThreadExplorer(CircumferenceThreadExplorer):
     loop_check = "thread fallback loop"
     loop_proof = "the thread's validation (phase I, L2055) or the tied v0 as lighthouse (phase II, §3.4 Lemma 1)"
     hypothesis_type = Hypothesis
+    iteration_type = FallbackIteration  # phase I's steps too, recorded with phase 1
     hypotheses = LighthouseExplorer.hypotheses  # Algorithm 3.1's H over S and its path to v0 (lines 8, 11–12)
     _tail = LighthouseExplorer._tail
 
@@ -102,10 +103,7 @@ class FallbackThreadExplorer(CircumferenceThreadExplorer):
             self.run_out()
         if self.phase == 2:
             return self.phase_two()
-        it = super().step()
-        out = FallbackIteration(**{k: getattr(it, k) for k in it.__dataclass_fields__})
-        self.iterations[-1] = out
-        return out
+        return super().step()
 
     def run_out(self) -> None:
         """Leave the free end where the robot stands; v0, tied with one thread edge, becomes the lighthouse."""
