@@ -38,8 +38,9 @@ Decisions where the thesis is silent (L2090 gives the approach in one sentence):
 * **The thread stays laid** when U is empty, as Case 5's markers stay where
   they were dropped (L1720): phase II may not move it, and the final map
   shows it where it lies.
-* Hypotheses are in U's order, paths are a breadth-first tree to v0
-  (Algorithm 3.1's defaults, ``Policies``).
+* Phase II takes Algorithm 3.1's policies (``--policy edge|hypothesis|path``;
+  by default the closest edge, hypotheses in U's order, a breadth-first tree
+  to v0); phase I is Algorithm 6.7's closest-first and takes none.
 
 Cost purposes: phase I's (``new``, ``retrace``, ``validation``), then
 Algorithm 3.1's (``travel``, ``new``, ``validation``, ``retrace``).

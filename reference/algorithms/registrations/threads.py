@@ -135,7 +135,9 @@ SPECS = (
                   thesis="§6.3.3, phase-I/phase-II fallback (L2088–L2092; l < c(G), Algorithm 6.7 then Algorithm 3.1)",
                   kit=Kit(thread=2), bound="O(m²n) (L2092); bound_fn: ours",
                   markers="no marker; a thread of --thread-length edges, left laid once it runs out",
-                  options=("thread-length L (default 2, Figure 6.21)",), bound_fn=fallback_bound,
+                  options=("thread-length L (default 2, Figure 6.21)", "policy edge=nearest|fifo|lifo (phase II)",
+                           "policy hypothesis=fifo|lifo|shortest (phase II)", "policy path=shortest|dfs (phase II)"),
+                  bound_fn=fallback_bound,
                   bound_formula="2(n − 1) + (m − n + 1)(n + 2) + (3.1) + (3.2), ours: Algorithm 6.7's bound for "
                                 "phase I and Algorithm 3.1's (§3.5.2, L630–L640) for phase II, behind O(m²n) (L2092)",
                   explorer=FallbackThreadExplorer,
