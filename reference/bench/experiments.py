@@ -42,7 +42,10 @@ threads with §2.3.1's movable markers (:mod:`~topomark.reference.bench.reports.
 which also defines the ``lattice-edge-hole`` world family): ``table-6.3`` (with Figure
 6.23), ``figure-6.24``, ``comparison`` and ``section-6.3`` (all three; not part of ``all``);
 ``chapter-5`` (§5.1, §6.1, §5.2.1 and Algorithm 5.1 on the Chapter 3 world families, small worlds and
-Figure 3.4: :mod:`~topomark.reference.bench.reports.chapter5`; not part of ``all``).
+Figure 3.4: :mod:`~topomark.reference.bench.reports.chapter5`; not part of ``all``); ``comparison-markers``
+(the thesis's marker algorithms beside Table 2.3's classic baselines, the footprints model and the labelled
+graph, on lattice-hole and complete-hole worlds: :mod:`~topomark.reference.bench.reports.marker_classes`; not
+part of ``all``).
 
 Runs go to ``DIR/runs.csv`` keyed by (experiment = world family, size, seed,
 algorithm, edge policy, lighthouse); a restarted sweep skips keys already there.  Each
@@ -72,7 +75,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from topomark.reference.bench.reports import chapter5, chapter34, lighthouses, section62, section63  # section63 registers §6.3's runs
+from topomark.reference.bench.reports import chapter5, chapter34, lighthouses, marker_classes, section62, section63  # section63 registers §6.3's runs
 from topomark.reference.bench.plan import (EXPERIMENTS, FAMILIES, HEAVY_GRAPHS, HEAVY_MAX_SIZE, Experiment, Part, Run, fits,
                          is_heavy, plan, world_for)
 from topomark.reference.bench.reports.chapter34 import reduction, summarize
@@ -93,6 +96,8 @@ def write_report(experiment: str, out: Path, wall: float | None = None, plots: b
         return chapter5.write_report(out, wall, plots)
     if experiment in section62.REPORTS:
         return section62.write_report(experiment, out, wall, plots)
+    if experiment == marker_classes.NAME:
+        return marker_classes.write_report(out, wall, plots)
     if experiment in section63.REPORTS:
         return section63.write_report(experiment, out, wall, plots)
     if experiment == "all":
