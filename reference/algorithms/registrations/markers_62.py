@@ -35,7 +35,7 @@ Examples
 ['case-3a', 'case-3b', 'case-3b-saving', 'case-dv-sum', 'extension-1', 'extension-2', 'extension-naive']
 >>> SPECS[1].kit_for(5, 7, {"markers": None}).describe()
 '10 undirected edge markers'
->>> SPECS[2].kit_for(5, 7, {"markers": 3}).describe()
+>>> SPECS[3].kit_for(5, 7, {"markers": 3}).describe()
 '3 directional vertex markers'
 """
 
