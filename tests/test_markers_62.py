@@ -134,18 +134,17 @@ def test_the_extensions_map_each_world_within_their_bound_and_below_case_3b(name
 
 def test_extension_2_needs_rule_3_the_naive_extension_maps_k4_minus_an_edge_wrong():
     """L1910, Figure 6.15(b)-(c): a loop edge from an unmarked v_k, then closest-first from v_k' leaves v_k
-    unmarked and a later entry takes it for a new place.  K4 without an edge, from vertex 2 facing 0, is the
-    smallest world that shows it (no start of C3 or C4 does); with rule (3) it maps correctly."""
-    from topomark.reference.explorers.saving_markers import SavingEdgeCounts
-
-    class Naive(SavingEdgeCounts):
-        come_back = False
-
-    k4_e = World(K4_E.rotation, (), Start("2", "0"))
-    assert explore(k4_e, "extension-2").outcome == "correct"
-    out = explore(k4_e, variant("naive-extension-2", Naive, like="extension-2"))
+    unmarked and a later entry takes it for a new place.  ``figure-6.15`` (K4 without an edge, from vertex 2
+    facing 0) is the smallest world that shows it (no start of C3 or C4 does); with rule (3) it maps correctly."""
+    k4_e = generate("figure-6.15")
+    assert k4_e.rotation == K4_E.rotation and explore(k4_e, "extension-2").outcome == "correct"
+    out = explore(k4_e, "extension-naive")
     # I-1 fails: with the world's live markers the checker sees first that a marked place is mapped unmarked
     assert out.outcome == "wrong-map" and out.violation.check == "I-1"
+    for w in (make_world("cycle:n=3"), make_world("cycle:n=4")):
+        for v in w.vertices:
+            for facing in w.rotation[v]:
+                assert explore(World(w.rotation, (), Start(v, facing)), "extension-naive").outcome == "correct"
 
 
 @pytest.mark.parametrize("name", EXTENSIONS)

@@ -22,6 +22,14 @@ Two shapes of algorithm exist:
   it from the world, the robot never learns n or m (§6.2.1, L1487) — and are
   built as ``cls(robot, policies, observer, options)``.
 
+Every entry carries a **status** (:data:`STATUSES`): ``implemented`` (it is
+expected to map every world it accepts), ``implemented, expected to fail`` (the
+thesis says the idea fails; ``status_reason`` names the lines and the world
+where its runs end ``failed`` or ``wrong-map``, and the checker judges it like
+any other), or ``not implementable from the thesis`` — a :class:`Listed`
+algorithm, listed by ``topomark algorithms`` with the reason, with no explorer,
+which ``topomark explore`` refuses as bad input.
+
 Every explorer keeps the contract of
 :func:`topomark.reference.run.explore.explore`: ``start()``, then ``step()``
 until ``done()``; ``S`` and ``position`` (its map and believed pose) where
@@ -51,7 +59,7 @@ from topomark.spec.kit import Kit
 
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES
 
-__all__ = ["AlgorithmSpec", "Parameter", "CHECKS", "ALGORITHM_3_1_CHECKS", "MARKER_MAP_CHECKS", "STEPWISE_MAP_CHECKS"]
+__all__ = ["AlgorithmSpec", "Listed", "Parameter", "STATUSES", "CHECKS", "ALGORITHM_3_1_CHECKS", "MARKER_MAP_CHECKS", "STEPWISE_MAP_CHECKS"]
 
 CHECKS: dict[str, str] = {
     "pose": "the explorer's believed position is the robot's true state (φ anchored at the believed pose)",
@@ -69,6 +77,11 @@ CHECKS: dict[str, str] = {
     "isomorphism": "the final map is extended-isomorphic to the world, markers included (§3.1.3)",
 }
 """Every check the checker knows, by name, with the condition it states."""
+
+IMPLEMENTED, EXPECTED_TO_FAIL, NOT_IMPLEMENTABLE = ("implemented", "implemented, expected to fail",
+                                                   "not implementable from the thesis")
+STATUSES = (IMPLEMENTED, EXPECTED_TO_FAIL, NOT_IMPLEMENTABLE)
+"""The statuses of a listed algorithm (module docstring); the last is a :class:`Listed` entry's."""
 
 ALGORITHM_3_1_CHECKS = ("pose", "I-1", "I-2", "bound-function", "lemma-1", "marker", "iterations", "isomorphism")
 """Algorithm 3.1's loop conditions (§3.4, L546–L616) and outcome (§3.1.3, L417): the checks of every
@@ -143,8 +156,15 @@ class AlgorithmSpec:
     bound_formula: str | None = None  # the exact bound ``bound_fn`` evaluates, in words, with its thesis lines
     bound_excludes: tuple[str, ...] = ()  # move purposes the exact bound does not count (``cost-bound``)
     bound_bench: str | None = None  # an asymptotic-only bound: the bench experiment that measures it
+    status: str = IMPLEMENTED  # or EXPECTED_TO_FAIL, with its status_reason
+    status_reason: str | None = None  # why it is expected to fail: the thesis lines and the world that shows it
 
     def __post_init__(self) -> None:
+        if self.status not in (IMPLEMENTED, EXPECTED_TO_FAIL):
+            raise ValueError(f"algorithm {self.name}: status {self.status!r} is not one of {IMPLEMENTED!r}, "
+                             f"{EXPECTED_TO_FAIL!r} (one not implementable is a Listed entry)")
+        if (self.status == EXPECTED_TO_FAIL) != bool(self.status_reason):
+            raise ValueError(f"algorithm {self.name}: a status_reason is given exactly when it is expected to fail")
         unknown = set(self.checks) - set(CHECKS)
         if unknown:
             raise ValueError(f"algorithm {self.name}: unknown checks {sorted(unknown)}")
@@ -218,7 +238,33 @@ class AlgorithmSpec:
                "markers": self.markers, "deterministic": self.deterministic, "options": list(self.options),
                "checks": list(self.checks), "family": self.family, "kit_from_world": self.kit_fn is not None,
                "parameters": {p.name: {"help": p.help, "default": p.default} for p in self.parameters},
-               "bound_checked": self.bound_checked, "bound_note": self.bound_note}
+               "bound_checked": self.bound_checked, "bound_note": self.bound_note, "status": self.status}
+        if self.status_reason:
+            out["status_reason"] = self.status_reason
         if self.uses_lighthouse:
             out["lighthouses"] = {h.name: {"thesis": h.thesis, "kit": h.kit.to_json()} for h in LIGHTHOUSES.values()}
         return out
+
+
+@dataclass(frozen=True, kw_only=True)
+class Listed:
+    """An algorithm of the thesis that is listed but cannot be run: the thesis does not give enough of it to
+    implement (``reason`` says what is missing, with its lines).  ``family`` places it in the listing only."""
+
+    name: str
+    thesis: str
+    reason: str
+    family: str = "robot"
+    status: str = NOT_IMPLEMENTABLE
+
+    def __post_init__(self) -> None:
+        if self.status != NOT_IMPLEMENTABLE or not self.reason:
+            raise ValueError(f"listed algorithm {self.name}: status {NOT_IMPLEMENTABLE!r}, with its reason")
+
+    def to_json(self) -> dict[str, Any]:
+        """Its ``topomark algorithms --json`` entry: name, thesis reference, status and reason."""
+        return {"name": self.name, "thesis": self.thesis, "status": self.status, "status_reason": self.reason}
+
+    def refusal(self) -> str:
+        """The one-line message ``topomark explore --algorithm NAME`` exits 2 with."""
+        return f"the algorithm {self.name} ({self.thesis}) is {self.status}: {self.reason}"

@@ -16,6 +16,13 @@ nothing here (``docs/adding-an-algorithm.md``).  :func:`register` adds a spec
 from elsewhere — a program or a test that keeps its explorer outside the
 package — and :func:`unregister` takes it out again.
 
+A module may also define ``LISTED``: algorithms of the thesis that are not
+implementable from it (:class:`~topomark.reference.algorithms.algorithm_spec.Listed`,
+status "not implementable from the thesis", with the reason).  They are kept
+in :data:`LISTED`, not :data:`REGISTRY` (nothing can run them), appear in
+:func:`listing` and ``topomark algorithms``, and :func:`algorithm_spec`
+refuses them as bad input giving the reason.
+
 The listing's order: Algorithm 3.1's family first (``basic``, then Chapter 4),
 then every other algorithm in thesis order (a stable sort on the section
 number keeps registration order within a section).
@@ -42,13 +49,16 @@ from dataclasses import replace
 from topomark.spec.errors import InvalidInput
 
 from topomark.reference.algorithms import registrations
-from topomark.reference.algorithms.algorithm_spec import CHECKS, AlgorithmSpec, Parameter
+from topomark.reference.algorithms.algorithm_spec import CHECKS, STATUSES, AlgorithmSpec, Listed, Parameter
 
-__all__ = ["AlgorithmSpec", "Parameter", "REGISTRY", "algorithm_spec", "variant", "CHECKS", "parameters", "register",
-           "unregister", "in_family"]
+__all__ = ["AlgorithmSpec", "Listed", "Parameter", "REGISTRY", "LISTED", "STATUSES", "algorithm_spec", "variant",
+           "CHECKS", "parameters", "register", "unregister", "in_family", "listing"]
 
 REGISTRY: dict[str, AlgorithmSpec] = {}
 """Every registered algorithm by name, in listing order (module docstring)."""
+
+LISTED: dict[str, Listed] = {}
+"""Every algorithm of the thesis listed as not implementable from it, by name (module docstring)."""
 
 
 def register(spec: AlgorithmSpec) -> AlgorithmSpec:
@@ -57,6 +67,8 @@ def register(spec: AlgorithmSpec) -> AlgorithmSpec:
     run it like any other (the CLI sees what was registered before its parser was built)."""
     if spec.name in REGISTRY:
         raise ValueError(f"algorithm {spec.name!r} is registered twice")
+    if spec.name in LISTED:
+        raise ValueError(f"algorithm {spec.name!r} is listed as not implementable from the thesis")
     REGISTRY[spec.name] = spec
     listed = sorted(REGISTRY.values(), key=_listing_key)
     REGISTRY.clear()
@@ -69,7 +81,12 @@ def unregister(name: str) -> AlgorithmSpec:
     return REGISTRY.pop(algorithm_spec(name).name)
 
 
-def _listing_key(spec: AlgorithmSpec) -> tuple:
+def listing() -> list[AlgorithmSpec | Listed]:
+    """Every registered and every :data:`LISTED` algorithm, in listing order (``topomark algorithms``)."""
+    return sorted([*REGISTRY.values(), *LISTED.values()], key=_listing_key)
+
+
+def _listing_key(spec: AlgorithmSpec | Listed) -> tuple:
     """Algorithm 3.1's family first, then by section: ``"§6.2.1 Case 3a, ..."`` ↦ (True, (6, 2, 1))."""
     head = spec.thesis.lstrip("§").split()[0].rstrip(",")
     return spec.family != "algorithm-3.1", tuple(int(part) for part in head.split(".") if part.isdigit())
@@ -85,6 +102,13 @@ def _register_folder() -> None:
                 register(spec)
             except ValueError as exc:
                 raise ValueError(f"{exc} ({info.name})") from None
+        for entry in getattr(module, "LISTED", ()):
+            if entry.name in LISTED:
+                raise ValueError(f"algorithm {entry.name!r} is listed twice ({info.name})")
+            LISTED[entry.name] = entry
+    clash = sorted(set(LISTED) & set(REGISTRY))
+    if clash:
+        raise ValueError(f"algorithms {clash} are both registered and listed as not implementable")
 
 
 _register_folder()
@@ -115,7 +139,10 @@ def variant(name: str, explorer: type, like: str = "basic") -> AlgorithmSpec:
 
 
 def algorithm_spec(name: str) -> AlgorithmSpec:
-    """The registered algorithm called ``name``; an unknown name is bad input listing the known ones."""
+    """The registered algorithm called ``name``; an unknown name is bad input listing the known ones, and one
+    listed as not implementable from the thesis is bad input giving the reason."""
+    if name in LISTED:
+        raise InvalidInput(LISTED[name].refusal())
     if name not in REGISTRY:
         raise InvalidInput(f"unknown algorithm {name!r} (choose from {', '.join(REGISTRY)})")
     return REGISTRY[name]

@@ -4,16 +4,19 @@ The JSON form is a list of objects with ``name``, ``thesis``, ``kit``,
 ``bound``, ``markers``, ``deterministic``, ``options``, ``checks``,
 ``family`` (the algorithm family its trace@2 traces are written in), ``parameters``,
 ``kit_from_world``, ``bound_checked`` (the exact bound is the ``cost-bound`` check of every
-checked run) and ``bound_note`` (how the bound is held: checked per run, measured by a bench, or none stated)
-and, for the lighthouse algorithms, ``lighthouses``
-(:meth:`topomark.reference.algorithms.algorithm_spec.AlgorithmSpec.to_json`).
+checked run), ``bound_note`` (how the bound is held: checked per run, measured by a bench, or none stated)
+and ``status`` (``implemented``, or ``implemented, expected to fail`` with ``status_reason``: the thesis lines
+and the world where it fails) and, for the lighthouse algorithms, ``lighthouses``
+(:meth:`topomark.reference.algorithms.algorithm_spec.AlgorithmSpec.to_json`).  The algorithms of the thesis
+that are not implementable from it are listed too, in their place, with only ``name``, ``thesis``, ``status``
+(``not implementable from the thesis``) and ``status_reason``; ``topomark explore`` refuses them.
 """
 
 from __future__ import annotations
 
 import json
 
-from topomark.reference.algorithms.registry import CHECKS, REGISTRY
+from topomark.reference.algorithms.registry import CHECKS, Listed, listing
 
 __all__ = ["register", "algorithms_command"]
 
@@ -26,13 +29,18 @@ def register(sub) -> None:
 
 
 def algorithms_command(args) -> int:
-    specs = list(REGISTRY.values())
+    specs = listing()
     if args.json:
         print(json.dumps([s.to_json() for s in specs], indent=1))
         return 0
     width = max(len(s.name) for s in specs)
     for s in specs:
         print(f"{s.name:<{width}}  {s.thesis}")
+        if isinstance(s, Listed):
+            print(f"{'':<{width}}  status: {s.status}: {s.reason}")
+            continue
+        reason = f": {s.status_reason}" if s.status_reason else ""
+        print(f"{'':<{width}}  status: {s.status}{reason}")
         kit = f"computed from n and m ({s.markers})" if s.kit_fn is not None else s.kit.describe()
         lighthouse = "; lighthouse: any (--lighthouse)" if s.uses_lighthouse else ""
         print(f"{'':<{width}}  kit: {kit}{lighthouse}; bound: {s.bound or 'none stated in the thesis'}")

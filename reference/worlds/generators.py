@@ -2,7 +2,8 @@
 
 Every generator returns a :class:`~topomark.spec.world.World` (a rotation
 system, §3.1.1) with no markers and no start, except the Figure 3.4/3.6 wheel
-pair, which carries the marker the thesis places on it.  Generators are
+pair, which carries the marker the thesis places on it, and the Figure 6.10 and
+6.15 worlds, which carry the start their figure needs.  Generators are
 deterministic: random choices come from ``random.Random(seed)`` only, never
 from the global random state.  Impossible parameters raise
 :class:`~topomark.spec.errors.InvalidInput` with a message naming the
@@ -21,7 +22,9 @@ here:
   :func:`complete_hole` (§3.5.3);
 * :mod:`~topomark.reference.worlds.random_worlds` -- :func:`small_world` and
   :func:`random_graph` (§3.5.3);
-* :mod:`~topomark.proofs.wheels` -- the Figure 3.4/3.6 wheel pair (§3.2.2, §3.3).
+* :mod:`~topomark.proofs.wheels` -- the Figure 3.4/3.6 wheel pair (§3.2.2, §3.3);
+* :mod:`~topomark.reference.worlds.figures` -- :func:`figure_6_10` and
+  :func:`figure_6_15`, where §6.2's failing marker savings fail.
 
 This module holds the registry the CLI uses: :data:`GENERATORS`,
 :data:`PARAMETERS`, :func:`generate` and :func:`DEFAULT_WORLD`.
@@ -66,6 +69,7 @@ from topomark.spec.world import World
 
 from topomark.reference.worlds.embedding import circle_positions, from_networkx, from_positions, natural_key, planar
 from topomark.reference.worlds.deterministic import chain, complete, cycle, lattice, wheel_hub_last
+from topomark.reference.worlds.figures import figure_6_10, figure_6_15
 from topomark.reference.worlds.holes import complete_hole, lattice_hole
 from topomark.reference.worlds.random_worlds import OtherPairs, random_graph, small_world  # noqa: F401 - OtherPairs: for tests
 from topomark.proofs.wheels import (WHEEL_A_ROTATION, WHEEL_B_ROTATION, wheel_a, wheel_b, wheel_pair,
@@ -79,6 +83,8 @@ __all__ = [
     "chain",
     "lattice",
     "wheel_hub_last",
+    "figure_6_10",
+    "figure_6_15",
     "lattice_hole",
     "complete",
     "complete_hole",
@@ -112,6 +118,8 @@ GENERATORS: dict[str, Callable[..., World]] = {
     "wheel-a": wheel_a,
     "wheel-b": wheel_b,
     "wheel-hub-last": wheel_hub_last,
+    "figure-6.10": figure_6_10,
+    "figure-6.15": figure_6_15,
 }
 """CLI name -> generator function."""
 
@@ -129,6 +137,9 @@ PARAMETERS: dict[str, dict[str, Any]] = {
     "wheel-a": {"marker": "none"},
     "wheel-b": {"marker": "none"},
     "wheel-hub-last": {"n": 9},
+    # Figures 6.10 and 6.15: the worlds where the failing marker savings of §6.2 fail (worlds/figures.py).
+    "figure-6.10": {},
+    "figure-6.15": {},
 }
 """CLI name -> {parameter name: default}.  The default's type is the parameter's type
 (int, float or str); ``generate`` fills in missing parameters from here."""

@@ -13,6 +13,14 @@ in :mod:`topomark.reference.explorers.counted_markers`).  No exact cost formula
 is stated (only O(m), O(m·d_max)), so none is checked per run: each bound is
 asymptotic, measured by the bench (``table-6.1``, ``table-6.2``).
 
+Two savings the thesis shows fail are registered with the status
+"implemented, expected to fail" (:mod:`topomark.reference.explorers.failing_savings`):
+``case-3b-saving`` (Case 3b marking a non-loop edge only from an unmarked v_k,
+L1706, Figure 6.10) and ``extension-naive`` (extension-2 without coming back to
+v_k, L1910, Figure 6.15(b)–(c)).  Each gets the kit of the algorithm it saves
+on, and that algorithm's marker bound; the thesis states no cost bound for
+either.
+
 ``case-dv-sum`` is registered O(m) (Table 6.2, L2013) with its default kit
 Σ_{k=1}^{n−1} k, which leaves the last new place blank, with no direction.
 Its explorer takes the blank's unexplored edges first, from the blank, so no
@@ -24,10 +32,10 @@ on ``wheel-hub-last``, where the blank is the hub of degree d_max, the cost is
 Examples
 --------
 >>> [s.name for s in SPECS]
-['case-3a', 'case-3b', 'case-dv-sum', 'extension-1', 'extension-2']
+['case-3a', 'case-3b', 'case-3b-saving', 'case-dv-sum', 'extension-1', 'extension-2', 'extension-naive']
 >>> SPECS[1].kit_for(5, 7, {"markers": None}).describe()
 '10 undirected edge markers'
->>> SPECS[2].kit_for(5, 7, {"markers": 3}).describe()
+>>> SPECS[3].kit_for(5, 7, {"markers": 3}).describe()
 '3 directional vertex markers'
 """
 
@@ -37,6 +45,7 @@ from topomark.spec.kit import Kit
 
 from topomark.reference.algorithms.algorithm_spec import MARKER_MAP_CHECKS, AlgorithmSpec, Parameter
 from topomark.reference.explorers.counted_markers import DirectionalVertexCounts, EdgeCounts, VertexCounts, sum_to
+from topomark.reference.explorers.failing_savings import NaiveExtension, UndirectedSaving
 from topomark.reference.explorers.saving_markers import MarkFirstEdges, SavingEdgeCounts, ceil_half
 
 __all__ = ["SPECS"]
@@ -65,6 +74,15 @@ SPECS = (
         uses_lighthouse=False, parameters=(MARKERS,), kit_fn=lambda n, m, o: Kit(edge=_count(n, o)),
         marker_bound_fn=lambda n, m: sum_to(n - 1), family="robot", bound_bench="table-6.1"),
     AlgorithmSpec(
+        name="case-3b-saving", thesis="§6.2.1 Case 3b saving markers like Algorithm 6.3: fails (L1704–L1706, Figure 6.10)",
+        kit=Kit(edge=1), bound=None, markers="at most Σ_{k=1}^{n−1} k undirected E-markers (Case 3b's kit)",
+        deterministic=True, options=("markers",), checks=MARKER_MAP_CHECKS, explorer=UndirectedSaving,
+        uses_lighthouse=False, parameters=(MARKERS,), kit_fn=lambda n, m, o: Kit(edge=_count(n, o)),
+        marker_bound_fn=lambda n, m: sum_to(n - 1), family="robot", status="implemented, expected to fail",
+        status_reason="the marked edges 'may not always identify a visited vertex and its incident edges' "
+                      "(L1706): two neighbours whose only marked edge joins them show the same signature "
+                      "(Figure 6.10(b), L1704); on figure-6.10 the run ends failed (the marks fit two edges)"),
+    AlgorithmSpec(
         name="case-dv-sum", thesis="§6.2.2 Σ_{k=1}^{n−1} k directional V-markers (L1902, Table 6.2)",
         kit=Kit(vertex=1, directional=True), bound="O(m)",
         markers="Σ_{k=1}^{n−1} k directional V-markers (Σ_{k=1}^{n} k if the kit allows)",
@@ -87,4 +105,16 @@ SPECS = (
         uses_lighthouse=False, parameters=(MARKERS,),
         kit_fn=lambda n, m, o: Kit(edge=_count(n, o, sum_to(ceil_half(n - 1))), directional=True),
         marker_bound_fn=lambda n, m: sum_to(ceil_half(n - 1)), family="robot", bound_bench="table-6.2"),
+    AlgorithmSpec(
+        name="extension-naive",
+        thesis="§6.2.2 the naive extension of Case 3b, extension-2 without coming back: fails (L1910, Figure 6.15)",
+        kit=Kit(edge=1, directional=True), bound=None,
+        markers="at most Σ_{k=1}^{⌈(n−1)/2⌉} k directional E-markers (extension-2's kit)",
+        deterministic=True, options=("markers",), checks=MARKER_MAP_CHECKS, explorer=NaiveExtension,
+        uses_lighthouse=False, parameters=(MARKERS,),
+        kit_fn=lambda n, m, o: Kit(edge=_count(n, o, sum_to(ceil_half(n - 1))), directional=True),
+        marker_bound_fn=lambda n, m: sum_to(ceil_half(n - 1)), family="robot", status="implemented, expected to fail",
+        status_reason="'this extension idea does not work when a loop edge e is explored ... and v_k has no "
+                      "marked edges yet' (L1910, Figure 6.15(b)-(c)): v_k is left unmarked and later taken for a "
+                      "new place; on figure-6.15 the checker finds the wrong map"),
 )

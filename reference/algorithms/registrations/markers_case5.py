@@ -101,5 +101,8 @@ SPECS = (
         name="case-0", thesis="§6.2.1 Case 0, n markers, one per visited vertex: fails (L1489–L1491, Figure 6.3)",
         kit=Kit(vertex=1), bound=None, markers="n undirected V-markers", deterministic=False, options=("policy edge",),
         checks=MARKER_MAP_CHECKS, explorer=EveryVertexMarked, uses_lighthouse=False,
-        kit_fn=lambda n, m, o: Kit(vertex=n), marker_bound_fn=lambda n, m: n, family="robot"),
+        kit_fn=lambda n, m, o: Kit(vertex=n), marker_bound_fn=lambda n, m: n, family="robot",
+        status="implemented, expected to fail",
+        status_reason="'this approach does not work in general' (L1491, Figure 6.3): a marked place that several "
+                      "edges fit ends the run failed (on complete:n=4, for one)"),
 )
