@@ -39,7 +39,7 @@ def test_a_kept_world_is_unchanged_by_every_algorithm_run_on_it():
     import copy
     import json
     from topomark.reference.run.explore import explore
-    names = [a["name"] for a in json.loads(_algorithms_json())]
+    names = [a["name"] for a in json.loads(_algorithms_json()) if a["status"] != "not implementable from the thesis"]
     w = bench.world_for("complete-hole", 24, 1)
     before = (copy.deepcopy(w.rotation), w.markers, w.start, w.n, w.m)
     for name in names:

@@ -110,7 +110,7 @@ SPECS = (
         thesis="§6.2.2 the naive extension of Case 3b, extension-2 without coming back: fails (L1910, Figure 6.15)",
         kit=Kit(edge=1, directional=True), bound=None,
         markers="at most Σ_{k=1}^{⌈(n−1)/2⌉} k directional E-markers (extension-2's kit)",
-        deterministic=True, options=("markers",), checks=MARKER_MAP_CHECKS, explorer=NaiveExtension,
+        deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=NaiveExtension,
         uses_lighthouse=False, parameters=(MARKERS,),
         kit_fn=lambda n, m, o: Kit(edge=_count(n, o, sum_to(ceil_half(n - 1))), directional=True),
         marker_bound_fn=lambda n, m: sum_to(ceil_half(n - 1)), family="robot", status="implemented, expected to fail",

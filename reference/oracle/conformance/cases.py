@@ -18,7 +18,7 @@ run of a randomised one fixes nothing a client could be held to.
 :data:`FAMILIES` groups the algorithms for ``--family``: a family's members
 share their worlds and the kind of kit they carry (§3.3 and Chapter 4's
 lighthouse algorithms; §2.3.1's movable marker; §6.2.1's undirected and §6.2.2's
-directional markers; §6.3's threads).
+directional markers; §6.3's threads; §2.3.1's classic baselines, whose markers stay where dropped).
 """
 
 from __future__ import annotations
@@ -49,6 +49,7 @@ FAMILIES: dict[str, str] = {  # family ↦ what its members share (their thesis 
     "directional-markers": "§6.2.2: many directional vertex or edge markers",
     "threads": "§6.3: a thread",
     "marker-less": "§5.2: no marker",
+    "baselines": "§2.3.1, Table 2.3: the classic models the thesis compares with (footprints, a labelled graph)",
 }
 _SECTIONS = (("§2.3.1", "movable-markers"), ("§5", "marker-less"), ("§6.2.1", "undirected-markers"),
              ("§6.2.2", "directional-markers"), ("§6.3", "threads"))
@@ -127,7 +128,8 @@ def family_of(spec: AlgorithmSpec) -> str:
     if spec.uses_lighthouse:
         return "algorithm-3.1"
     section = spec.thesis.split()[0].rstrip(",")
-    return next((family for prefix, family in _SECTIONS if section.startswith(prefix)), spec.family)
+    family = next((family for prefix, family in _SECTIONS if section.startswith(prefix)), spec.family)
+    return "baselines" if family == "movable-markers" and not spec.kit.movable else family
 
 
 def suite_algorithms(names: Iterable[str] = (), families: Iterable[str] = ()) -> list[AlgorithmSpec]:
