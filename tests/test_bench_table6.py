@@ -42,9 +42,26 @@ def _check_rows(rows: list[dict], algorithms: tuple[str, ...], families: set[str
             assert int(r["new"]) == int(r["m"])  # every edge is new exactly once
 
 
+def _check_phase_two(rows: list[dict], algorithms: tuple[str, ...], families: set[str], report: str) -> None:
+    """Case 5 with K = 4, 6, 10: every world mapped correctly, checked, with phase II's traversals > 0, reported."""
+    few = [r for r in rows if r["options"] in bench_plan.CASE_5_K]
+    assert {(r["experiment"], r["algorithm"], r["options"]) for r in few} == \
+        {(f, a, k) for f in families for a in algorithms for k in bench_plan.CASE_5_K}
+    for r in few:
+        assert (r["checked"], r["outcome"], r["verified"]) == ("True", "correct", "True"), r
+        assert 0 < int(r["phase_two"]) < int(r["cost"]) and int(r["markers_used"]) <= int(r["options"][8:])
+    assert "## Case 5 with few markers: phase II's share of the cost" in report
+    assert "Every world mapped correctly: **yes**; phase II tested hypotheses on every world larger than K: **yes**" \
+        in report
+    for r in few:
+        assert f"| {r['experiment']} | `{r['algorithm']}` | {r['options'][8:]} | {r['size']} | 1 | 1/1 |" in report
+
+
 def test_table_61_tiny_sweep_runs_every_undirected_algorithm_checked_and_reports_each_claim(tmp_path):
-    code, rows, report = _sweep(tmp_path, "table-6.1", "72", "24")
+    code, every, report = _sweep(tmp_path, "table-6.1", "72", "24")
+    rows = [r for r in every if r["options"] == ""]
     _check_rows(rows, bench_plan.TABLE_61_ALGS, {"lattice-hole", "complete-hole"})
+    _check_phase_two(every, ("case-5-v1", "case-5-v2", "case-5-edge"), {"lattice-hole", "complete-hole"}, report)
     wrong = [r for r in rows if r["verified"] != "True"]
     assert all(r["algorithm"] == "case-0" for r in wrong) and code == (1 if wrong else 0)
     assert "| ≤ thesis count? |" in report and "| cost held? |" in report
@@ -61,8 +78,10 @@ def test_table_61_tiny_sweep_runs_every_undirected_algorithm_checked_and_reports
 
 
 def test_table_62_tiny_sweep_runs_the_directional_algorithms_and_the_extensions_marker_savings(tmp_path):
-    code, rows, report = _sweep(tmp_path, "table-6.2", "72")
+    code, every, report = _sweep(tmp_path, "table-6.2", "72")
+    rows = [r for r in every if r["options"] == ""]
     _check_rows(rows, bench_plan.TABLE_62_ALGS, {"lattice-hole"})
+    _check_phase_two(every, ("case-5-directional",), {"lattice-hole"}, report)
     assert code == 0
     by = {r["algorithm"]: r for r in rows}
     assert int(by["extension-2"]["markers_used"]) < int(by["extension-1"]["markers_used"]) \
@@ -82,8 +101,15 @@ def test_figure_613_gives_version_1_the_markers_that_mark_each_fraction_of_place
     for f in bench_plan.FRACTIONS:
         places = max(2, int(float(f) * n))  # K = max(4, Σ^{⌊f·n⌋}): the least kit marks 2 places
         assert marked_places(int(v1[f"marked-fraction={f}"]["markers_used"])) == places
-    assert {r["algorithm"] for r in rows} == {"case-5-v1", "basic", "case-3a"}
+    v2 = {r["options"]: r for r in rows if r["algorithm"] == "case-5-v2"}
+    assert set(v2) == set(v1)
+    for f in bench_plan.FRACTIONS:  # K = max(4, ⌊f·n⌋ + 3), 100%: m + 4; never more used than K
+        k = int(rows[0]["m"]) + 4 if f == "1" else max(4, int(float(f) * n) + 3)
+        assert int(v2[f"marked-fraction={f}"]["markers_used"]) <= k
+    assert int(v2["marked-fraction=0"]["cost"]) > int(v2["marked-fraction=1"]["cost"])
+    assert {r["algorithm"] for r in rows} == {"case-5-v1", "case-5-v2", "basic", "case-3a", "case-1b"}
     assert "## Figure 6.13 (lattice-hole)" in report and "| 72 |" in report
+    assert "## Figure 6.13 for Version-2 (lattice-hole)" in report
     assert report.count("* Thesis:") == 3
 
 
@@ -92,6 +118,8 @@ def test_option_sets_resolve_against_the_world_and_bad_ones_are_bad_input():
     assert bench_plan.resolve_options("marked-fraction=0.5", world, "case-5-v1") == {"markers": sum_to(36)}
     assert bench_plan.resolve_options("markers=7", world, "case-3b") == {"markers": "7"}
     assert bench_plan.resolve_options("", world, "case-3b") == {}
+    assert bench_plan.resolve_options("marked-fraction=0.5", world, "case-5-v2") == {"markers": world.n // 2 + 3}
+    assert bench_plan.resolve_options("marked-fraction=1", world, "case-5-v2") == {"markers": world.m + 4}
     with pytest.raises(InvalidInput):
         bench_plan.resolve_options("marked-fraction=0.5", world, "case-3a")
     with pytest.raises(InvalidInput):

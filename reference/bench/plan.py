@@ -42,7 +42,7 @@ from topomark.reference.algorithms.registry import algorithm_spec
 __all__ = ["FAMILIES", "EXPERIMENTS", "Experiment", "Part", "Run", "plan", "world_for", "is_heavy", "fits",
            "HEAVY_GRAPHS", "HEAVY_MAX_SIZE", "DEFAULT_LIGHTHOUSE", "CERTAIN_LIGHTHOUSES", "LIGHTHOUSE_ALGS", "LIGHTHOUSE_COMPLETE_SIZES",
            "NO_LIGHTHOUSE", "DERIVED_OPTIONS", "resolve_options", "option_set", "marked_fraction_markers",
-           "TABLE_61_ALGS", "TABLE_62_ALGS", "UNCUED_MODEL_TREE_GRAPHS", "FRACTIONS", "FIGURE_613_SIZES", "world_seed"]
+           "TABLE_61_ALGS", "TABLE_62_ALGS", "CASE_5_K", "UNCUED_MODEL_TREE_GRAPHS", "FRACTIONS", "FIGURE_613_SIZES", "world_seed"]
 
 DEFAULT_LIGHTHOUSE = "directional-vertex"
 CERTAIN_LIGHTHOUSES = tuple(name for name, h in LIGHTHOUSES.items() if h.certain)
@@ -163,23 +163,30 @@ EXPERIMENTS["lighthouses"] = Experiment(
                     Part("complete-hole", LIGHTHOUSE_ALGS, LIGHTHOUSE_COMPLETE_SIZES, lighthouses=CERTAIN_LIGHTHOUSES)),
     "The lighthouses of §3.3, §6.1 and §6.2 side by side (lattice-hole and complete-hole worlds)")
 TABLE_61_ALGS = ("case-1a", "case-1b", "case-2", "case-3a", "case-3b", "case-4", "case-4-mn", "case-5-v1",
-                 "case-5-v2", "case-0")
+                 "case-5-v2", "case-5-edge", "case-0")
 TABLE_62_ALGS = ("case-dv-sum", "extension-1", "extension-2", "case-3b",  # case-3b: the undirected original
                  "case-1b-edgeinfo", "case-1b", "case-2-edgeinfo", "case-2",  # §6.2.2's edgeINFO and their originals
-                 "case-1a-edgeinfo", "case-1a", "case-4-edgeinfo", "case-4", "case-4-mn-edgeinfo", "case-4-mn")
+                 "case-1a-edgeinfo", "case-1a", "case-4-edgeinfo", "case-4", "case-4-mn-edgeinfo", "case-4-mn",
+                 "case-5-directional")
 FRACTIONS = ("0", "0.1", "0.25", "0.5", "0.75", "1")
 FIGURE_613_SIZES = {"lattice-hole": (72, 90, 108, 152, 202), "complete-hole": (24, 28, 32, 36, 40)}
+CASE_5_K = ("markers=4", "markers=6", "markers=10")
+"""Case 5's few-markers kits (Figure 6.13's low end): K too small to mark every place, so phase II does the work."""
 EXPERIMENTS["table-6.1"] = Experiment(
-    "table-6.1", tuple(Part(f, TABLE_61_ALGS) for f in ("lattice-hole", "complete-hole")),
+    "table-6.1", tuple(Part(f, TABLE_61_ALGS) for f in ("lattice-hole", "complete-hole"))
+    + tuple(Part(f, ("case-5-v1", "case-5-v2", "case-5-edge"), sizes, options=CASE_5_K)
+            for f, sizes in FIGURE_613_SIZES.items()),
     "Table 6.1 and Figures 6.11, 6.12: §6.2.1's undirected marker algorithms, measured")
 EXPERIMENTS["table-6.2"] = Experiment(
-    "table-6.2", tuple(Part(f, TABLE_62_ALGS) for f in ("lattice-hole", "complete-hole")),
+    "table-6.2", tuple(Part(f, TABLE_62_ALGS) for f in ("lattice-hole", "complete-hole"))
+    + tuple(Part(f, ("case-5-directional",), sizes, options=CASE_5_K) for f, sizes in FIGURE_613_SIZES.items()),
     "Table 6.2 and Figures 6.17, 6.18: §6.2.2's directional marker algorithms, measured")
 EXPERIMENTS["figure-6.13"] = Experiment(
     "figure-6.13", tuple(p for f, sizes in FIGURE_613_SIZES.items() for p in (
-        Part(f, ("case-5-v1",), sizes, options=tuple(f"marked-fraction={x}" for x in FRACTIONS)),
-        Part(f, ("basic", "case-3a"), sizes))),
-    "Figure 6.13: Version-1 (Algorithm 6.4) with different fractions of uniquely marked vertices")
+        Part(f, ("case-5-v1", "case-5-v2"), sizes, options=tuple(f"marked-fraction={x}" for x in FRACTIONS)),
+        Part(f, ("basic", "case-3a", "case-1b"), sizes))),
+    "Figure 6.13: Version-1 (Algorithm 6.4) and Version-2 (Algorithm 6.5) with different fractions of marked "
+    "vertices")
 EXPERIMENTS["section-6.2"] = Experiment(
     "section-6.2", EXPERIMENTS["table-6.1"].parts + EXPERIMENTS["table-6.2"].parts + EXPERIMENTS["figure-6.13"].parts,
     "§6.2: every marker algorithm of Tables 6.1 and 6.2 and Figures 6.11-6.13, 6.17, 6.18")
@@ -238,20 +245,30 @@ class Run:
 
 
 def marked_fraction_markers(world: World, algorithm: str, value: str) -> dict:
-    """``marked-fraction=f`` for Case 5 Version-1 (Figure 6.13): the K that uniquely marks ⌊f·n⌋ places.
+    """``marked-fraction=f`` for Case 5 (Figure 6.13): the K that marks ⌊f·n⌋ places.
 
     Version-1 gives v0 one marker and the j-th new place j + 1 until a drop is refused
     (:mod:`~topomark.reference.explorers.case5_v1`), so K = Σ_{i=1}^{p} i marks exactly p places.  The
     thesis gives no fractions and no K (neither Figure 6.13's caption, L1863, nor its text, L1829); we give
     K = max(4, Σ_{i=1}^{⌊f·n⌋} i).  K ≥ 4 is the algorithm's least kit ("k > 3", L1708), which marks 2
     places: "0%" is that least kit (2 of n places marked), and 100% is Σ_{i=1}^{n} i (every place).
+
+    Version-2 ("different fractions of (homogeneously) marked vertices", L1881) drops two markers at v0, two
+    on e0 and one at each other new place, and one on each loop edge met while it has markers
+    (:mod:`~topomark.reference.explorers.case5_v2`).  Decision: K = max(4, ⌊f·n⌋ + 3), the pool that marks
+    ⌊f·n⌋ places if no loop edge took a marker first (loop edges take markers from the same pool, so the
+    fraction marked is at most f: the report shows the markers used), and 100% is the default m + 4, which
+    marks every place and loop edge (the m V-E-marker algorithm's behaviour, L1770, the figure's lower end).
     """
-    if algorithm != "case-5-v1":
-        raise InvalidInput(f"marked-fraction is defined for case-5-v1 only (given for {algorithm})")
+    if algorithm not in ("case-5-v1", "case-5-v2"):
+        raise InvalidInput(f"marked-fraction is defined for case-5-v1 and case-5-v2 only (given for {algorithm})")
     f = float(value)
     if not 0 <= f <= 1:
         raise InvalidInput(f"marked-fraction must be in [0, 1] (given {value})")
-    return {"markers": max(4, sum_to(int(f * world.n + 1e-9)))}
+    places = int(f * world.n + 1e-9)
+    if algorithm == "case-5-v2":
+        return {"markers": world.m + 4 if places == world.n else max(4, places + 3)}
+    return {"markers": max(4, sum_to(places))}
 
 
 DERIVED_OPTIONS: dict[str, Callable[[World, str, str], dict]] = {"marked-fraction": marked_fraction_markers}

@@ -74,14 +74,14 @@ __all__ = ["CSV_FIELDS", "DEFAULTS", "MAX_RUNS_BYTES", "MAX_FIELD_CHARS", "Runs"
 CSV_FIELDS = ("experiment", "size", "seed", "algorithm", "policy", "lighthouse", "options", "n", "m", "d_max", "cost",
               "cost_per_m", "verified", "checked", "outcome", "markers_used", "marker_bound", "walk_steps",
               "lighthouse_at", "completed_models", "peak_models", "true_world_completed", "travel", "new",
-              "validation", "retrace", "expansion", "other", "drop_trips", "hypotheses", "pruned",
+              "validation", "retrace", "expansion", "other", "drop_trips", "phase_two", "hypotheses", "pruned",
               "rejected_without_motion", "overlap_saved", "recorded", "upper_bound", "expression_3_3", "seconds",
               "cpu_seconds", "error", "checksum")
 REQUIRED = ("experiment", "size", "seed", "algorithm", "cost", "checked", "verified", "error")
 INTEGERS = ("size", "seed")
 NUMBERS = ("n", "m", "cost", "cost_per_m", "travel", "new", "validation", "retrace", "expansion", "hypotheses",
            "upper_bound", "expression_3_3", "seconds", "cpu_seconds", "d_max", "markers_used", "marker_bound", "other",
-           "drop_trips", "walk_steps", "completed_models", "peak_models")
+           "drop_trips", "walk_steps", "completed_models", "peak_models", "phase_two")
 SIGNED = ("expression_3_3",)
 """The numbers that may be negative: (3.3)'s leading terms, below zero on the smallest worlds."""
 FLAGS = ("checked", "verified")

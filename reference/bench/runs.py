@@ -100,6 +100,7 @@ def run_one(run: Run, check: bool = True) -> dict:
     row["drop_trips"] = out.drop_trips  # part of cost (the simulator's accounting rule)
     for s in ("pruned", "rejected_without_motion", "overlap_saved", "recorded"):
         row[s] = stats.get(s, 0)
+    row["phase_two"] = stats.get("phase_two", "")  # Case 5: traversals testing phase II's hypotheses
     return row
 
 

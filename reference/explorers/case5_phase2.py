@@ -29,6 +29,13 @@ a :class:`~topomark.reference.explorers.marker_walk.MarkerWalk`'s map, and the
 records are Algorithm 3.1's :class:`~topomark.reference.explorers.algorithm31.Hypothesis`
 (so ``explore`` counts hypotheses, rejections and confirmations as for Chapter 3).
 
+Phase II's share of the cost: every traversal made while testing H (the
+hypothesis walks and their retraces, purposes ``validation`` and ``retrace``)
+is also counted in the host's ``phase_two_moves``
+(:func:`counting`), so a report can say how much of the cost phase II
+accounts for.  The travel to v_k and the new edge of a phase-II iteration are
+the exploration's own (every version pays them) and are not counted there.
+
 Examples
 --------
 >>> expected_walk.__name__
@@ -45,8 +52,9 @@ from topomark.spec.signature import Signature, signature_at
 
 from topomark.reference.explorers.algorithm31 import Hypothesis, hypothesis_darts, retrace_motions, validate_in_turn
 from topomark.reference.explorers.marker_walk import MarkerStep
+from topomark.reference.explorers.robot import Robot
 
-__all__ = ["PhaseTwo", "Host", "PHASE_TWO", "expected_walk", "path_walk", "PhaseStep"]
+__all__ = ["PhaseTwo", "Host", "PHASE_TWO", "expected_walk", "path_walk", "PhaseStep", "counting"]
 
 
 class PhaseStep(MarkerStep):
@@ -89,6 +97,14 @@ def path_walk(M: PartialMap, path: list[MapDart]) -> tuple[tuple[int, ...], tupl
     return tuple(motions), tuple(expected), (v, entry)
 
 
+def counting(robot: Robot, host: "Host") -> Robot:
+    """``robot``, each of whose moves also adds one to ``host.phase_two_moves``."""
+    def move(motion: int, purpose: str = "other") -> Signature:
+        host.phase_two_moves += 1
+        return robot.move(motion, purpose)
+    return Robot(move, robot.sense, robot.operate)
+
+
 class Host(Protocol):
     """What a :class:`PhaseTwo` needs of the explorer holding it: a
     :class:`~topomark.reference.explorers.marker_walk.MarkerWalk` (``M``, ``robot``, ``position``, ``loop``,
@@ -97,6 +113,7 @@ class Host(Protocol):
     M: PartialMap
     robot: object
     position: MapDart
+    phase_two_moves: int  # traversals made testing phase II's hypotheses
 
     def lighthouse_path(self, v: int) -> list[MapDart]:
         """The darts of S from v_k' = ``v`` to a place recognised with its back-link (a simple path)."""
@@ -132,7 +149,7 @@ class PhaseTwo:
         corrected); each other one is retraced, "reject the hypothesis, back to v_u" (Algorithm 6.4 line 28).
         """
         it.hypotheses = self.hypotheses(host, it, sig)
-        robot = host.robot
+        robot = counting(host.robot, host)
         h, heading = validate_in_turn(robot, it.hypotheses, sig.degree,
                                       lambda done, degrees: retrace_motions(robot, done, degrees), host.confirms)
         if h is not None:

@@ -81,6 +81,7 @@ class VertexCountsThenLighthouse(VertexCounts):
     def __init__(self, robot, policies=None, observer=None, options=None):
         super().__init__(robot, policies, observer, options)
         self.phase = 1
+        self.phase_two_moves = 0  # traversals testing phase II's hypotheses (case5_phase2)
         self.phase_two_from: int | None = None  # the iteration that ended phase I
 
     def arrive(self, it: MarkerStep, sig: Signature) -> None:
@@ -102,6 +103,11 @@ class VertexCountsThenLighthouse(VertexCounts):
     def next_count(self) -> int:
         """i at line 13: v0 has 1, the j-th place discovered gets j + 1 (the counter decision above)."""
         return len(self.count_of) + 1
+
+    @property
+    def stats(self) -> dict:
+        """Phase II's traversals (hypothesis walks and retraces), for the bench's share of the cost."""
+        return {"phase_two": self.phase_two_moves}
 
     def lighthouse_path(self, v: int) -> list[MapDart]:
         """Lines 21–24: a shortest path of S from v_k' = ``v`` to the nearest marked v_l, then to v_n."""

@@ -42,13 +42,14 @@ Decisions, with the thesis lines (each tested in ``tests/test_markers_case5.py``
   augmentation needs no drop and no search; from the far end to v0 line 5
   applies.  (A third marker on e0 would break the search's "one more marked
   edge", L1512.)
-* **The pool.**  The thesis's markers are one homogeneous pool (L1474); the
-  kernel's kit counts vertex and edge markers apart, so the kit holds K of
-  each and the robot keeps the pool of K itself (``options["markers"]``: the
-  robot knows what it carries, only not how it compares with the world,
-  L1710): "if the robot has one or more markers" (lines 9, 31) is K minus the
-  markers dropped.  With the default kit (``markers`` not given) the kit is
-  exactly the split phase I spends and the pool is unbounded.
+* **The pool.**  The thesis's markers are one homogeneous pool (L1474): with
+  ``--markers K`` the simulator's kit is a pool of exactly K vertex-or-edge
+  markers and refuses any drop beyond it.  The robot also knows how many it
+  carries (``options["markers"]``: only not how that compares with the world,
+  L1710), so "if the robot has one or more markers" (lines 9, 31) is K minus
+  the markers dropped, asked before a drop is tried.  With the default kit
+  (``markers`` not given) the kit is exactly the split phase I spends and the
+  pool is not counted.
 * **Signature, not only the count** (lines 15–16, 35–36 say "contains one
   marker [no marker] and has the same degree"): H holds the darts whose known
   end shows v_u's whole signature, loop-edge markers included — the signature
@@ -91,6 +92,7 @@ class VertexEdgeThenLighthouse(VertexEdgeFootprints):
     def __init__(self, robot, policies=None, observer=None, options=None):
         super().__init__(robot, policies, observer, options)
         self.pool = self.options.get("markers")  # K, or None: the default kit, enough for phase I
+        self.phase_two_moves = 0  # traversals testing phase II's hypotheses (case5_phase2)
         self.phase_two_from: int | None = None  # the first iteration that found the pool empty
 
     def left(self) -> int | None:
@@ -143,6 +145,11 @@ class VertexEdgeThenLighthouse(VertexEdgeFootprints):
     def mark_loop_edge(self, it: MarkerStep, sig: Signature) -> bool:
         """Line 11: one marker on e (the pool has one: :meth:`has_markers` said so)."""
         return FootprintSearch.mark_loop_edge(self, it, sig)
+
+    @property
+    def stats(self) -> dict:
+        """Phase II's traversals (hypothesis walks and retraces), for the bench's share of the cost."""
+        return {"phase_two": self.phase_two_moves}
 
     def lighthouse_path(self, v: int) -> list[MapDart]:
         """A shortest path of S from v_k' = ``v`` to v0 (L1770: v0 is the directional lighthouse)."""

@@ -14,7 +14,20 @@ case-5-v2   one pool of K undirected markers; m + 4      m + 4                  
                                                                                      every place and loop
                                                                                      edge marked
 case-0      n undirected V-markers                       n                           none: it fails (L1491)
+case-5-     K undirected E-markers; Σ_{k=1}^{n−1} k      Σ_{k=1}^{n−1} k             O(m²n); O(m) with
+edge                                                                                 every tree edge marked
+case-5-     K directional V-markers; Σ_{k=1}^{n} k       Σ_{k=1}^{n} k               O(m²n) (Table 6.2,
+direc-                                                                               directional column)
+tional
 ==========  ==========================================  ==========================  =====================
+
+``case-5-edge`` is the E-marker version L1716 says "can be developed" (Case 3b's
+unique edge counts, then hypotheses to the nearest marked edge:
+:mod:`~topomark.reference.explorers.case5_edge`); its default kit is Case 3b's
+Σ_{k=1}^{n−1} k, enough to mark every edge of the exploration tree.
+``case-5-directional`` is Table 6.2's "unknown k > 3" row with directional
+markers (L2004): Version-1 whose markers point at the entry edge
+(:mod:`~topomark.reference.explorers.case5_directional`); default Σ_{k=1}^{n} k.
 
 Defaults (the thesis gives none: in Case 5 the robot is *not* assured a count,
 L1710): K is what lets phase I run to the end — Σ_{k=1}^{n} k for Version-1
@@ -23,10 +36,11 @@ Version-2 (2 at v0, 2 on one of its edges, 1 at each other place, 1 on each
 loop edge but the double-marked one: "sufficient markers to mark each vertex and
 loop edge", L1770).  ``--markers`` is at least 4 ("k > 3", L1708; Version-2's
 line 1 drops four).  Version-2's K is one pool for vertices and edges (the
-thesis's markers are homogeneous, L1474): the kernel's kit counts the two kinds
-apart, so the kit holds K of each and the robot itself keeps the pool — it
-knows how many markers it carries, only not how that compares with the world
-(L1710) — never dropping more than K in all (tested).
+thesis's markers are homogeneous, L1474): the kit given to the simulator is a
+pool of exactly K vertex-or-edge markers, so a drop beyond K is refused by the
+simulator (``OutOfMarkers``), not only avoided by the robot's own count (the
+robot knows how many it carries, only not how that compares with the world,
+L1710; tested with an explorer that overdraws by one).
 
 Case 0 is registered as *not deterministic* in the thesis's sense of the word
 (an algorithm that always maps the world, L1375): "this approach does not work
@@ -42,13 +56,15 @@ worlds are not isomorphic (``tests/test_markers_case5.py`` certifies them).
 Examples
 --------
 >>> [s.name for s in SPECS]
-['case-5-v1', 'case-5-v2', 'case-0']
+['case-5-v1', 'case-5-v2', 'case-0', 'case-5-edge', 'case-5-directional']
+>>> SPECS[3].kit_for(4, 5, {"markers": 5}).describe(), SPECS[4].kit_for(4, 5, {"markers": None}).describe()
+('5 undirected edge markers', '10 directional vertex markers')
 >>> SPECS[0].kit_for(4, 5, {"markers": None}).describe()
 '10 undirected vertex markers'
 >>> SPECS[1].kit_for(4, 5, {"markers": None}).describe()
 '5 undirected vertex markers, 4 undirected edge markers'
 >>> SPECS[1].kit_for(4, 5, {"markers": 6}).describe()
-'6 undirected vertex markers, 6 undirected edge markers'
+'6 undirected vertex-or-edge markers'
 """
 
 from __future__ import annotations
@@ -57,6 +73,8 @@ from topomark.spec.kit import Kit
 
 from topomark.reference.algorithms.algorithm_spec import MARKER_MAP_CHECKS, AlgorithmSpec, Parameter
 from topomark.reference.explorers.case0_every_vertex import EveryVertexMarked
+from topomark.reference.explorers.case5_directional import DirectionalCountsThenLighthouse
+from topomark.reference.explorers.case5_edge import EdgeCountsThenLighthouse
 from topomark.reference.explorers.case5_v1 import VertexCountsThenLighthouse
 from topomark.reference.explorers.case5_v2 import VertexEdgeThenLighthouse
 from topomark.reference.explorers.counted_markers import sum_to
@@ -78,10 +96,20 @@ def _v1_kit(n: int, m: int, options: dict) -> Kit:
 
 
 def _v2_kit(n: int, m: int, options: dict) -> Kit:
-    """Default: the split m + 4 is spent in (n + 1 V, m − n + 3 E); ``--markers K``: K of each, the robot keeping
-    the pool of K itself (module docstring)."""
+    """Default: the split m + 4 is spent in (n + 1 V, m − n + 3 E); ``--markers K``: one pool of exactly K
+    vertex-or-edge markers, which the simulator keeps (module docstring)."""
     given = options.get("markers")
-    return Kit(vertex=n + 1, edge=m - n + 3) if given is None else Kit(vertex=given, edge=given)
+    return Kit(vertex=n + 1, edge=m - n + 3) if given is None else Kit(either=given)
+
+
+def _edge_kit(n: int, m: int, options: dict) -> Kit:
+    given = options.get("markers")
+    return Kit(edge=sum_to(n - 1) if given is None else given)
+
+
+def _directional_kit(n: int, m: int, options: dict) -> Kit:
+    given = options.get("markers")
+    return Kit(vertex=sum_to(n) if given is None else given, directional=True)
 
 
 SPECS = (
@@ -105,4 +133,19 @@ SPECS = (
         status="implemented, expected to fail",
         status_reason="'this approach does not work in general' (L1491, Figure 6.3): a marked place that several "
                       "edges fit ends the run failed (on complete:n=4, for one)"),
+    AlgorithmSpec(
+        name="case-5-edge", thesis="§6.2.1 Case 5 with E-markers, \"a similar E-marker algorithm\" (L1716)",
+        kit=Kit(edge=1), bound="O(m²n) (Table 6.1; O(m) when every tree edge is marked, as Case 3b)",
+        markers="K > 3 undirected E-markers, any K (Σ_{k=1}^{n−1} k mark every tree edge)", deterministic=True,
+        options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=EdgeCountsThenLighthouse,
+        uses_lighthouse=False, parameters=(MARKERS,), kit_fn=_edge_kit, marker_bound_fn=lambda n, m: sum_to(n - 1),
+        family="robot", bound_bench="table-6.1"),
+    AlgorithmSpec(
+        name="case-5-directional", thesis="§6.2.2 Table 6.2 \"unknown k > 3\", directional (L2004): Version-1 "
+                                         "with directional V-markers (L1716–L1724, L1902)",
+        kit=Kit(vertex=1, directional=True), bound="O(m²n) (Table 6.2, directional column)",
+        markers="K > 3 directional V-markers, any K (Σ_{k=1}^{n} k mark every place)", deterministic=True,
+        options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=DirectionalCountsThenLighthouse,
+        uses_lighthouse=False, parameters=(MARKERS,), kit_fn=_directional_kit, marker_bound_fn=lambda n, m: sum_to(n),
+        family="robot", bound_bench="table-6.2"),
 )

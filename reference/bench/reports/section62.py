@@ -44,6 +44,7 @@ from pathlib import Path
 from typing import Callable
 
 from topomark.reference.bench.plan import EXPERIMENTS, FAMILIES
+from topomark.reference.bench.reports import section62_case5 as case5
 from topomark.reference.bench.reports import section62_figures as figures
 from topomark.reference.bench.reports.kit import Body, write
 from topomark.reference.bench.reports.plots import Draw
@@ -90,6 +91,8 @@ CLAIMS: dict[str, Claim] = {
                        "k > 3, not known relative to the world", None, "Σ_{k=1}^{n} k (K given: any)"),
     "case-5-v2": Claim("6.1", T61.format("unknown k > 3", "vertex, edge, or vertex+edge", "none", "O(m²n)"), "m²n",
                        "k > 3, not known relative to the world", None, "m + 4"),
+    "case-5-edge": Claim("6.1", T61.format("unknown k > 3", "vertex, edge, or vertex+edge", "none", "O(m²n)"),
+                         "m²n", "k > 3, not known relative to the world", None, "Σ_{k=1}^{n−1} k (K given: any)"),
     "case-0": Claim("6.1", "Case 0 (not a row): \"this approach does not work in general\" (L1491)", None,
                     "n", lambda n, m: n, "n"),
     "case-dv-sum": Claim("6.2", "| Σ_{k=1}^{n−1} k | vertex (V-marker) | none | O(m·d_max) | O(m) |", "m",
@@ -112,6 +115,8 @@ CLAIMS.update({
                              "m − ⌊n/2⌋", lambda n, m: m - n // 2, "m − ⌊(n−1)/2⌋ (L1663 corrected)"),
     "case-4-mn-edgeinfo": Claim("6.2", "| m | edge (E-marker) | closest-first | O(mn) | O(mn) |", "mn", "m",
                                 lambda n, m: m, "m + [n even] (L1665 corrected)"),
+    "case-5-directional": Claim("6.2", "| unknown k > 3 | vertex or edge or vertex+edge | none | O(m²n) | O(m²n) |",
+                                "m²n", "k > 3, not known relative to the world", None, "Σ_{k=1}^{n} k (K given: any)"),
 })
 CLAIMS_62_UNDIRECTED = {"case-3b": "| (Σ_{k=1}^{n−1} k) | edge (E-marker) | none | O(m) | O(m) |"}
 REPORTS = ("table-6.1", "table-6.2", "figure-6.13", "section-6.2")
@@ -148,11 +153,12 @@ def _body(experiment: str, out: Path) -> Body:
             return ["The reports: `table-6.1.md`, `table-6.2.md`, `figure-6.13.md` (written beside this one).", ""] \
                 + marker_classes(g, tried), None
         if experiment == "figure-6.13":
-            lines = figures.figure_613(exp, g)
+            lines = figures.figure_613(exp, g) + case5.figure_613_v2(g, figures.FAMILIES6)
         else:
             table = experiment.split("-")[1]
             algs = [a for a in exp.parts[0].algorithms]
             lines = thesis_rows(table, algs) + claims_table(exp, g, tried, algs) + size_tables(exp, g, tried, algs)
+            lines += case5.phase_two_shares(g, tried, algs)
             lines += om_breakdown(exp, g, [a for a in algs if a in O_M])
             lines += figures.findings(experiment, exp, g)
         return lines, lambda plt: figures.plots(plt, experiment, g, out)
@@ -181,12 +187,17 @@ def thesis_rows(table: str, algs: list[str]) -> list[str]:
     return lines + [""]
 
 
+def _families(exp) -> list[str]:
+    """The experiment's world families, each once (a family may have several parts: Case 5's K rows)."""
+    return list(dict.fromkeys(part.family for part in exp.parts))
+
+
 def _family_algs(exp, g: dict, algs: list[str]):
-    for part in exp.parts:
+    for family in _families(exp):
         for a in algs:
-            sizes = sorted(k[3] for k in g if k[0] == part.family and k[1] == a and k[2] == "")
+            sizes = sorted(k[3] for k in g if k[0] == family and k[1] == a and k[2] == "")
             if sizes:
-                yield part.family, a, sizes
+                yield family, a, sizes
 
 
 def claim_verdicts(family: str, alg: str, g: dict, tried: dict, sizes: list[int]) -> dict:
@@ -233,8 +244,9 @@ def claims_table(exp, g: dict, tried: dict, algs: list[str]) -> list[str]:
                      f"{ratio} | {stated_ok} | {c.checked_text} | {yes(not v['over_checked'])} | "
                      f"{'—' if v['ratio_f'] is None else format(v['ratio_f'], '.4g')} | "
                      f"{'—' if v['slope'] is None else v['slope']} | {cost_ok} |")
-    return lines + ["", "Case 5's count is not a claim (the robot is given any K > 3); its rows run with the default "
-                    "K that lets phase I mark every place (`figure-6.13` varies K). Case 0 is expected to stop with "
+    return lines + ["", "Case 5's count is not a claim (the robot is given any K > 3); these rows run with the default "
+                    "K that lets phase I mark every place, and the rows with K = 4, 6, 10 below show phase II at work "
+                    "(`figure-6.13` varies K too). Case 0 is expected to stop with "
                     "`failed` on worlds where several unexplored edges fit a marked place (\"the robot cannot "
                     "determine\" which, L1491; the certified pairs in `tests/test_markers_case5.py` show that no "
                     "pick could be right).", ""]
@@ -243,17 +255,17 @@ def claims_table(exp, g: dict, tried: dict, algs: list[str]) -> list[str]:
 def size_tables(exp, g: dict, tried: dict, algs: list[str]) -> list[str]:
     """Per family and size: worlds and correct maps (every run); markers, cost, cost/m, cost/f (correct runs)."""
     lines = []
-    for part in exp.parts:
-        keys = [k for k in tried if k[0] == part.family and k[1] in algs and k[2] == ""]
+    for family in _families(exp):
+        keys = [k for k in tried if k[0] == family and k[1] in algs and k[2] == ""]
         if not keys:
             continue
-        lines += [f"## {part.family} ({FAMILIES[part.family].figure} worlds): per size", "",
+        lines += [f"## {family} ({FAMILIES[family].figure} worlds): per size", "",
                   "| size | algorithm | worlds | correct | n | m | markers used mean (max) | thesis count (mean) | "
                   "cost mean ± sd | cost/m | drop trips mean | cost/m without drop trips | cost/f |",
                   "|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
         for size in sorted({k[3] for k in keys}):
             for a in algs:
-                rs, every = g.get((part.family, a, "", size)), tried.get((part.family, a, "", size))
+                rs, every = g.get((family, a, "", size)), tried.get((family, a, "", size))
                 if not every:
                     continue
                 if not rs:

@@ -278,8 +278,7 @@ def figure_613(exp, g: dict) -> list[str]:
                           "Σ_{k=1}^{n−1} k V-marker algorithm.\"", f"at 100% nearer case-3a than basic at "
                           f"{sum(high)}/{len(high)} sizes", all(high) if high else None)
         lines.append("")
-    return lines + [_trips_613(g), "", "Version-2 (\"Similar results were observed\", text only) is not swept here.",
-                    ""]
+    return lines + [_trips_613(g), ""]
 
 
 def _trips_613(g: dict) -> str:
@@ -304,7 +303,8 @@ PLOTS = {
                   ("6.12", "markers_used", ("case-1a", "case-2", "case-4", "case-4-mn"))],
     "table-6.2": [("6.17", "cost", ("case-dv-sum", "extension-1", "extension-2", "case-3b")),
                   ("6.18", "markers_used", ("case-3b", "extension-1", "extension-2"))],
-    "figure-6.13": [("6.13", "cost", ("basic", "case-3a") + tuple(f"case-5-v1@{f}" for f in FRACTIONS))],
+    "figure-6.13": [("6.13", "cost", ("basic", "case-3a") + tuple(f"case-5-v1@{f}" for f in FRACTIONS)),
+                    ("6.13-v2", "cost", ("basic", "case-1b") + tuple(f"case-5-v2@{f}" for f in FRACTIONS))],
 }
 """Each report's figures: (figure, column plotted, algorithms; ``alg@f``: with ``marked-fraction=f``)."""
 

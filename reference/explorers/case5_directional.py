@@ -1,0 +1,70 @@
+"""§6.2.2 Table 6.2's row "unknown k > 3" with *directional* markers: Case 5 Version-1 (Algorithm 6.4) whose
+V-markers point at the entry edge, so every marked place is a directional lighthouse (thesis Table 6.2, L2004;
+Version-1, L1716–L1724, listing L1728–L1768; directional counts, L1902).
+
+Table 6.2 gives the row an O(m²n) bound in its directional column and no
+algorithm of its own.  This is the one we give it: Version-1, with the
+markers of the Σ k directional V-marker algorithm (§6.2.2, L1902: "the robot
+drops the markers in such a way that the entry edge is indicated ... each
+visited vertex is a directional lighthouse").
+
+* **Phase I**: the i-th place discovered gets i markers pointing at its entry
+  edge (v0's at the exit it faces).  A marked v_u is known by its count and its
+  entry edge by where the markers point: loop augmentation at once, no probing
+  (L1902), where Version-1 probes its other edges (Algorithm 6.4 line 8).
+* **Phase II** (the first refused drop, as in Version-1): an unmarked v_u is
+  tested against every unexplored dart at an unmarked known end of its degree
+  (Algorithm 6.4 lines 17–18), each hypothesis driving the robot along a
+  shortest path of S from v_k' to the nearest marked place v_l.  Decision
+  (L1720–L1722 ask for v_l *then a marked neighbour v_n* to fix the entry at an
+  undirected v_l): with directional markers the path ends at v_l, since the
+  direction of its markers, sensed relative to the entry, already gives the
+  entry edge — the expected perception P^E at v_l holds its count and
+  direction, so a full match fixes the embedded path (L1722).  A marked v_u in
+  phase II is, as in phase I, known at once.
+
+Cost O(m²n) with few markers (Table 6.2); with Σ_{k=1}^{n} k markers (every
+place marked) it is the Σ k directional V-marker algorithm's O(m)-like
+exploration without the blank place (tested: no hypothesis).
+
+Examples
+--------
+>>> DirectionalCountsThenLighthouse.name, DirectionalCountsThenLighthouse.directional
+('case-5-directional', True)
+"""
+
+from __future__ import annotations
+
+from topomark.spec.errors import AlgorithmFailed
+from topomark.spec.mapstate import MapDart
+from topomark.spec.signature import Signature
+
+from topomark.reference.explorers.case5_v1 import VertexCountsThenLighthouse
+from topomark.reference.explorers.marker_walk import MarkerStep
+from topomark.reference.explorers.policies import nearest
+from topomark.reference.explorers.walker import tree_path
+
+__all__ = ["DirectionalCountsThenLighthouse"]
+
+
+class DirectionalCountsThenLighthouse(VertexCountsThenLighthouse):
+    """Version-1 with directional V-markers: each marked place names itself and its entry edge (module docstring)."""
+
+    name = "case-5-directional"
+    directional = True
+
+    def arrive(self, it: MarkerStep, sig: Signature) -> None:
+        if sig.vertex_count and sig.vertex_direction is not None:  # a directional lighthouse: place and back-link
+            place = self.vertex_of.get(sig.vertex_count)
+            if place is None or self.M.degree(place) != sig.degree:
+                raise AlgorithmFailed(f"iteration {it.number} senses {sig}, which no marked place of the map shows")
+            self.loop(it, (place, (0 - sig.vertex_direction) % sig.degree))
+            return
+        super().arrive(it, sig)
+
+    def lighthouse_path(self, v: int) -> list[MapDart]:
+        """A shortest path of S from v_k' = ``v`` to the nearest marked v_l (its direction gives the entry)."""
+        light, parent = nearest(self.M, v, self.count_of)
+        if light is None:
+            raise AlgorithmFailed(f"no marked place is connected to map vertex {v}")
+        return tree_path(parent, v, light)
