@@ -45,7 +45,7 @@ from topomark.spec.mapstate import MapDart
 from topomark.spec.signature import Signature
 
 from topomark.reference.explorers.algorithm31 import Hypothesis
-from topomark.reference.explorers.case5_phase2 import PHASE_TWO, PhaseStep
+from topomark.reference.explorers.case5_phase2 import TwoPhases
 from topomark.reference.explorers.counted_markers import EdgeCounts
 from topomark.reference.explorers.marker_walk import MarkerStep
 from topomark.reference.explorers.policies import nearest
@@ -54,23 +54,10 @@ from topomark.reference.explorers.walker import tree_path
 __all__ = ["EdgeCountsThenLighthouse"]
 
 
-class EdgeCountsThenLighthouse(EdgeCounts):
+class EdgeCountsThenLighthouse(TwoPhases, EdgeCounts):
     """Case 3b's unique edge counts (phase I), then hypotheses to the nearest marked edge (phase II)."""
 
     name = "case-5-edge"
-    step_type = PhaseStep
-    phase_two = PHASE_TWO
-
-    def __init__(self, robot, policies=None, observer=None, options=None):
-        super().__init__(robot, policies, observer, options)
-        self.phase = 1
-        self.phase_two_moves = 0  # traversals testing phase II's hypotheses (case5_phase2)
-        self.phase_two_from: int | None = None  # the iteration that ended phase I
-
-    @property
-    def stats(self) -> dict:
-        """Phase II's traversals (hypothesis walks and retraces), for the bench's share of the cost."""
-        return {"phase_two": self.phase_two_moves}
 
     def arrive(self, it: MarkerStep, sig: Signature) -> None:
         if sig.edges:  # a phase-I place: its marked edges name it and the entry (Case 3b)

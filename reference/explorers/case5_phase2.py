@@ -54,7 +54,7 @@ from topomark.reference.explorers.algorithm31 import Hypothesis, hypothesis_dart
 from topomark.reference.explorers.marker_walk import MarkerStep
 from topomark.reference.explorers.robot import Robot
 
-__all__ = ["PhaseTwo", "Host", "PHASE_TWO", "expected_walk", "path_walk", "PhaseStep", "counting"]
+__all__ = ["PhaseTwo", "Host", "PHASE_TWO", "TwoPhases", "expected_walk", "path_walk", "PhaseStep", "counting"]
 
 
 class PhaseStep(MarkerStep):
@@ -162,4 +162,23 @@ class PhaseTwo:
 
 
 PHASE_TWO = PhaseTwo()
+
+
+class TwoPhases:
+    """What a counted-marker explorer with a phase II keeps (mixed in before it): the phase it is in, the iteration
+    that ended phase I, and phase II's traversals, which :attr:`stats` reports for the bench's share of the cost."""
+
+    step_type = PhaseStep  # the step's record keeps phase II's hypotheses
+    phase_two = PHASE_TWO
+
+    def __init__(self, robot, policies=None, observer=None, options=None):
+        super().__init__(robot, policies, observer, options)
+        self.phase = 1
+        self.phase_two_moves = 0  # traversals testing phase II's hypotheses
+        self.phase_two_from: int | None = None  # the iteration that ended phase I
+
+    @property
+    def stats(self) -> dict:
+        """Phase II's traversals (hypothesis walks and retraces)."""
+        return {"phase_two": self.phase_two_moves}
 """The phase II both versions of Case 5 hold."""

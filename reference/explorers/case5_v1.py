@@ -62,7 +62,7 @@ from topomark.spec.signature import Signature
 
 from topomark.reference.explorers.algorithm31 import Hypothesis
 from topomark.reference.explorers.policies import nearest
-from topomark.reference.explorers.case5_phase2 import PHASE_TWO, PhaseStep
+from topomark.reference.explorers.case5_phase2 import TwoPhases
 from topomark.reference.explorers.counted_markers import VertexCounts
 from topomark.reference.explorers.marker_walk import MarkerStep
 from topomark.reference.explorers.walker import tree_path
@@ -70,19 +70,11 @@ from topomark.reference.explorers.walker import tree_path
 __all__ = ["VertexCountsThenLighthouse"]
 
 
-class VertexCountsThenLighthouse(VertexCounts):
+class VertexCountsThenLighthouse(TwoPhases, VertexCounts):
     """Algorithm 6.4: unique V-marker counts (phase I), then hypotheses with the nearest marked lighthouse
     (phase II, held: :data:`~.case5_phase2.PHASE_TWO`, which asks :meth:`lighthouse_path` and :meth:`confirms`)."""
 
     name = "case-5-v1"
-    step_type = PhaseStep  # the step's record keeps phase II's hypotheses
-    phase_two = PHASE_TWO
-
-    def __init__(self, robot, policies=None, observer=None, options=None):
-        super().__init__(robot, policies, observer, options)
-        self.phase = 1
-        self.phase_two_moves = 0  # traversals testing phase II's hypotheses (case5_phase2)
-        self.phase_two_from: int | None = None  # the iteration that ended phase I
 
     def arrive(self, it: MarkerStep, sig: Signature) -> None:
         if sig.vertex_count:  # lines 7-10: the count names v_u; its back-link by probing
@@ -103,11 +95,6 @@ class VertexCountsThenLighthouse(VertexCounts):
     def next_count(self) -> int:
         """i at line 13: v0 has 1, the j-th place discovered gets j + 1 (the counter decision above)."""
         return len(self.count_of) + 1
-
-    @property
-    def stats(self) -> dict:
-        """Phase II's traversals (hypothesis walks and retraces), for the bench's share of the cost."""
-        return {"phase_two": self.phase_two_moves}
 
     def lighthouse_path(self, v: int) -> list[MapDart]:
         """Lines 21–24: a shortest path of S from v_k' = ``v`` to the nearest marked v_l, then to v_n."""
