@@ -41,6 +41,7 @@ goes further than the trace does.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import queue
 import threading
@@ -94,11 +95,13 @@ class RerunLayer:
     def _run(self) -> None:
         try:
             explore(self.world, self.spec, self.policies, check=True, sink=self, options=self.given)
-            self._put(_END)
+            last: Any = _END
         except _Stop:
-            pass
+            return  # replay has stopped reading: the re-run ends with nothing more to hand over
         except BaseException as exc:  # handed to the replay, which raises it (topomark's own failure)
-            self._put(exc)
+            last = exc
+        with contextlib.suppress(_Stop):  # replay may stop reading before it takes the last item
+            self._put(last)
 
     def _put(self, item: Any) -> None:
         while not self._stop.is_set():
