@@ -46,7 +46,8 @@ from topomark.spec.world import World
 from topomark.spec.worldfile import world_from_json
 
 from topomark.reference.algorithms.bounds import upper_bound
-from topomark.reference.run.explore import prepare_world
+from topomark.reference.explorers.lighthouses import LIGHTHOUSES
+from topomark.reference.run.explore import dropped_at_start, prepare_world
 from topomark.reference.run.map_check import MapVerdict
 from topomark.reference.oracle.peer import Peer
 from topomark.reference.oracle.protocol import MAX_MESSAGE, PROTOCOL, PROTOCOL2, Expect, ProtocolError, shape_error
@@ -368,8 +369,8 @@ def _check_world_markers(world: World, kit: Kit) -> None:
         return
     lighthouse = None
     if world.start is not None:
-        v0, facing = world.start_state()
-        lighthouse = VertexMarker(v0, 1, world.neighbour(v0, facing))
+        bare = World(world.rotation, (), world.start)
+        [lighthouse] = dropped_at_start(bare, world.start_state(), LIGHTHOUSES["directional-vertex"]).markers()
         if thread is None and world.markers == (lighthouse,):
             return
     others = [m for m in world.markers if m != lighthouse]

@@ -43,7 +43,7 @@ from topomark.reference.trace.families import ALGORITHM_FAMILIES
 from topomark.reference.trace.records import end_record, op_record, trace_header
 from topomark.reference.trace.sink import ListSink, TraceSink
 
-__all__ = ["Outcome", "explore", "check_run", "prepare_world"]
+__all__ = ["Outcome", "explore", "check_run", "prepare_world", "dropped_at_start"]
 
 @dataclass
 class Outcome:
@@ -89,6 +89,15 @@ class Outcome:
         return out
 
 
+def dropped_at_start(bare: World, state: tuple[str, int], lighthouse: Lighthouse) -> MarkerLayer:
+    """``bare``'s marker layer once the robot, starting at ``state``, has established ``lighthouse``: each of its
+    operations done where the robot does it (Figure 3.21(b)'s moves included)."""
+    layer = MarkerLayer(bare)
+    for place, op in lighthouse.placed_ops(bare, state):
+        apply_op(layer, place, op)
+    return layer
+
+
 def prepare_world(world: World, lighthouse: Lighthouse = LIGHTHOUSES["directional-vertex"],
                   algorithm: str = "basic") -> tuple[World, tuple[str, int]]:
     """The world without markers and the start state, checked against the lighthouse (§3.3, §6.1, §6.2).
@@ -106,9 +115,7 @@ def prepare_world(world: World, lighthouse: Lighthouse = LIGHTHOUSES["directiona
                            f"{lighthouse.min_degree}; the start vertex {v0!r} has degree {bare.degree(v0)}")
     thread = getattr(world, "thread", None)
     if world.markers or thread is not None:
-        layer = MarkerLayer(bare)
-        for place, op in lighthouse.placed_ops(bare, state):  # where the robot does each (Figure 3.21(b) moves)
-            apply_op(layer, place, op)
+        layer = dropped_at_start(bare, state, lighthouse)
         if thread is not None and getattr(layer.world(), "thread", None) != thread:
             raise InvalidInput(f"the {algorithm} algorithm with the {lighthouse.name} lighthouse cannot use the "
                                f"thread in the world file: only {lighthouse.drops}, at the start vertex {v0!r}, "
