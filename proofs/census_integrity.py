@@ -48,7 +48,7 @@ from typing import Any
 
 from topomark.proofs.census_shards import RECORD, checksum, digest, done_path, map_path, reduce_path
 
-__all__ = ["Damaged", "code_version", "read_record", "read_record_text", "check_done", "check_reduce",
+__all__ = ["Damaged", "code_version", "package_version", "read_record", "read_record_text", "check_done", "check_reduce",
            "inputs_digest", "file_digest", "CODE_MODULES"]
 
 CODE_MODULES = ("topomark.proofs.census", "topomark.proofs.census_map", "topomark.proofs.census_language",
@@ -62,12 +62,17 @@ class Damaged(Exception):
 
 
 @lru_cache(maxsize=1)
+def package_version() -> str:
+    """The installed topomark's version (``unknown`` when it runs from a source tree that is not installed)."""
+    try:
+        return version("topomark")
+    except PackageNotFoundError:  # pragma: no cover - the test environment installs it
+        return "unknown"
+
+
 def code_version() -> str:
     """``topomark VERSION, census code DIGEST``: the package version and a digest of :data:`CODE_MODULES`."""
-    try:
-        package = version("topomark")
-    except PackageNotFoundError:
-        package = "unknown"
+    package = package_version()
     h = hashlib.blake2b(digest_size=8)
     for name in CODE_MODULES:
         spec = importlib.util.find_spec(name)

@@ -33,12 +33,11 @@ from __future__ import annotations
 
 import json
 import os
-import sys
 import time
 from pathlib import Path
 from typing import Any, Callable
 
-from topomark.proofs.census import CensusResult, SizeRow, recheck_pair
+from topomark.proofs.census import CensusResult, SizeRow, recheck_pair, stderr_progress
 from topomark.proofs.census_exec import Executor, Progress, executor
 from topomark.proofs.census_map import plan, run_map, world_at
 from topomark.proofs.census_integrity import (Damaged, check_done, check_reduce, code_version, inputs_digest,
@@ -52,10 +51,6 @@ __all__ = ["sharded_census", "reduce_shard", "default_shards", "prepare"]
 
 PLACEMENTS_PER_WORLD = 100  # a generous average, to size shards
 RECORDS_PER_SHARD = 2_000_000  # ~100 MB of records per shard at most
-
-
-def _stderr(line: str) -> None:
-    print(line, file=sys.stderr, flush=True)
 
 
 def default_shards(estimated_worlds: int) -> int:
@@ -213,7 +208,7 @@ def sharded_census(class_name: str, max_vertices: int, max_degree: int, root: st
                    jobs: int = 1, scheduler: str | None = None, min_vertices: int = 2,
                    progress: Callable[[str], None] | None = None, task_worlds: int = 2000,
                    shards: int | None = None, verify_all: bool = False,
-                   note: Callable[[str], None] = _stderr) -> CensusResult:
+                   note: Callable[[str], None] = stderr_progress) -> CensusResult:
     """The census of ``class_name`` as map and reduce over shards in directory ``root`` (resumed if present).
 
     ``jobs`` local worker processes (1: inline), or ``scheduler``: a Dask

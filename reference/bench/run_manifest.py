@@ -36,12 +36,13 @@ import json
 import re
 import secrets
 from dataclasses import dataclass, field
-from importlib import metadata
 from pathlib import Path
 from typing import Any, Iterable
 
 from topomark.spec.errors import InvalidInput, clip
 from topomark.spec.jsontext import parse_json, read_text_file
+
+from topomark.proofs.census_integrity import package_version
 
 __all__ = ["FORMAT", "MANIFEST_NAME", "MAX_MANIFEST_BYTES", "MAX_SWEEPS", "Manifest", "code_version",
            "read_manifest", "row_checksum"]
@@ -55,10 +56,7 @@ _STORE = re.compile(r"[0-9a-f]{32}")
 
 def code_version() -> str:
     """The installed topomark's version (``unknown`` when it runs from a source tree that is not installed)."""
-    try:
-        return metadata.version("topomark")
-    except metadata.PackageNotFoundError:  # pragma: no cover - the test environment installs it
-        return "unknown"
+    return package_version()
 
 
 def row_checksum(store: str, row: dict, fields: Iterable[str] | None = None) -> str:

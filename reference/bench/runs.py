@@ -156,7 +156,7 @@ def run_sweep(runs: list[Run], out: Path, jobs: int | None = None, check: bool =
         manifest = existing.manifest or Manifest()
         manifest.add_sweep({**(parameters or {}), "check": check, "planned": len(runs)})
         manifest.rows = len(existing.rows)
-        if path.exists():
+        if existing.needs_rewrite and path.exists():  # adds checksums, drops what a resume left out
             rewrite(path, existing, manifest)
         write_manifest(out, manifest)
         # A checked sweep does not accept an unchecked row for the same key (it reruns it; the report then

@@ -29,6 +29,7 @@ from __future__ import annotations
 import math
 
 from topomark.reference.bench.plan import CASE_5_K, FRACTIONS
+from topomark.reference.bench.reports.section62_figures import means
 from topomark.reference.bench.reports.stats import mean, num
 from topomark.reference.bench.reports.text import yes
 
@@ -76,9 +77,9 @@ def figure_613_v2(g: dict, families: tuple[str, ...]) -> list[str]:
              "on e0, one per other place; loop edges draw from the same pool, so at most ⌊f·n⌋ places are marked) "
              "and 100% the default m + 4 (every place and loop edge marked). Markers used in brackets.", ""]
     for fam in families:
-        fr = {f: _means(g, fam, "case-5-v2", "cost", f"marked-fraction={f}") for f in FRACTIONS}
-        used = {f: _means(g, fam, "case-5-v2", "markers_used", f"marked-fraction={f}") for f in FRACTIONS}
-        basic, v1b = _means(g, fam, "basic", "cost", ""), _means(g, fam, "case-1b", "cost", "")
+        fr = {f: means(g, fam, "case-5-v2", "cost", f"marked-fraction={f}") for f in FRACTIONS}
+        used = {f: means(g, fam, "case-5-v2", "markers_used", f"marked-fraction={f}") for f in FRACTIONS}
+        basic, v1b = means(g, fam, "basic", "cost", ""), means(g, fam, "case-1b", "cost", "")
         sizes = sorted(s for s in fr["0"] if s in basic and s in v1b)
         if not sizes:
             continue
@@ -95,7 +96,3 @@ def figure_613_v2(g: dict, families: tuple[str, ...]) -> list[str]:
                   f"{sum(mono)}/{len(mono)} sizes; at 0% nearer basic than case-1b (log scale) at "
                   f"{sum(near)}/{len(near)} sizes.", ""]
     return lines
-
-
-def _means(g: dict, fam: str, alg: str, column: str, options: str) -> dict[int, float]:
-    return {k[3]: mean(rs, column) for k, rs in g.items() if k[0] == fam and k[1] == alg and k[2] == options and rs}
