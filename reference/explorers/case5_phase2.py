@@ -162,6 +162,7 @@ class PhaseTwo:
 
 
 PHASE_TWO = PhaseTwo()
+"""The phase II every version of Case 5 holds."""
 
 
 class TwoPhases:
@@ -181,4 +182,3 @@ class TwoPhases:
     def stats(self) -> dict:
         """Phase II's traversals (hypothesis walks and retraces)."""
         return {"phase_two": self.phase_two_moves}
-"""The phase II both versions of Case 5 hold."""

@@ -70,7 +70,7 @@ from topomark.spec.signature import Signature
 
 from topomark.reference.explorers.algorithm31 import Hypothesis
 from topomark.reference.explorers.policies import nearest
-from topomark.reference.explorers.case5_phase2 import PHASE_TWO, PhaseStep
+from topomark.reference.explorers.case5_phase2 import TwoPhases
 from topomark.reference.explorers.edge_footprints import FootprintSearch, VertexEdgeFootprints
 from topomark.reference.explorers.marker_walk import MarkerStep
 from topomark.reference.explorers.walker import tree_path
@@ -81,19 +81,15 @@ E0: MapDart = (0, 0)
 """The double-marked edge e0, as v0's map exit: the exit the robot faces at the start."""
 
 
-class VertexEdgeThenLighthouse(VertexEdgeFootprints):
+class VertexEdgeThenLighthouse(TwoPhases, VertexEdgeFootprints):
     """Algorithm 6.5: Case 1b's search with a double-marked v0 and e0 (phase I), then hypotheses to v0 (phase
     II, held: :data:`~.case5_phase2.PHASE_TWO`, which asks :meth:`lighthouse_path` and :meth:`confirms`)."""
 
     name = "case-5-v2"
-    step_type = PhaseStep  # the step's record keeps phase II's hypotheses
-    phase_two = PHASE_TWO
 
     def __init__(self, robot, policies=None, observer=None, options=None):
         super().__init__(robot, policies, observer, options)
         self.pool = self.options.get("markers")  # K, or None: the default kit, enough for phase I
-        self.phase_two_moves = 0  # traversals testing phase II's hypotheses (case5_phase2)
-        self.phase_two_from: int | None = None  # the first iteration that found the pool empty
 
     def left(self) -> int | None:
         """Markers left in the pool (None: not counted, the default kit)."""
@@ -145,11 +141,6 @@ class VertexEdgeThenLighthouse(VertexEdgeFootprints):
     def mark_loop_edge(self, it: MarkerStep, sig: Signature) -> bool:
         """Line 11: one marker on e (the pool has one: :meth:`has_markers` said so)."""
         return FootprintSearch.mark_loop_edge(self, it, sig)
-
-    @property
-    def stats(self) -> dict:
-        """Phase II's traversals (hypothesis walks and retraces), for the bench's share of the cost."""
-        return {"phase_two": self.phase_two_moves}
 
     def lighthouse_path(self, v: int) -> list[MapDart]:
         """A shortest path of S from v_k' = ``v`` to v0 (L1770: v0 is the directional lighthouse)."""

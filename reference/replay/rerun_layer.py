@@ -47,7 +47,7 @@ import queue
 import threading
 from typing import Any
 
-from topomark.spec.errors import InvalidInput, Violation
+from topomark.spec.errors import InvalidInput, Violation, clip
 from topomark.spec.kit import Kit
 from topomark.spec.world import World
 
@@ -192,5 +192,4 @@ def _given(header: dict) -> str:
 
 
 def _show(rec: dict) -> str:
-    text = json.dumps(rec, sort_keys=True, separators=(",", ":"))
-    return text if len(text) <= 200 else text[:197] + "..."
+    return clip(json.dumps(rec, sort_keys=True, separators=(",", ":")), 200, note="")

@@ -123,25 +123,22 @@ def summary(explorer, world) -> dict:
     """The model tree's counts for ``--json``: how many models became completed, the most live at once, and
     whether the true world (anchored at the start, as the checker anchors it) is among the completed ones."""
     start = world.start_state()
-    true = any(S.n == world.n and anchored(S, world, (0, 0), start, markers=False, partial=False).isomorphic
-               for S in explorer.completed_models)
+    truth = [S.n == world.n and anchored(S, world, (0, 0), start, markers=False, partial=False).isomorphic
+             for S in explorer.completed_models]
     out = {"completed_models": len(explorer.completed_models), "peak_models": explorer.peak_models,
-           "true_world_completed": true}
+           "true_world_completed": any(truth)}
     if explorer.options.get("rank") == "yes":
-        out["ranked_models"] = ranked_models(explorer.completed_models, world)
+        out["ranked_models"] = ranked_models(explorer.completed_models, world, truth)
     return out
 
 
-def ranked_models(completed, world) -> list[dict]:
+def ranked_models(completed, world, truth: list[bool]) -> list[dict]:
     """The completed models, the most probable first (:mod:`~topomark.reference.explorers.model_prior`): each
-    its number in completion order (``--models``' file), n, m, genus, posterior, and whether it is the world."""
-    start, shapes = world.start_state(), [S.to_world(start=(0, 0)) for S in completed]
-    rows = []
-    for k, p in posteriors([(W.n, W.m, W.genus()) for W in shapes]):
-        S, W = completed[k], shapes[k]
-        true = S.n == world.n and anchored(S, world, (0, 0), start, markers=False, partial=False).isomorphic
-        rows.append({"model": k + 1, "n": W.n, "m": W.m, "genus": W.genus(), "posterior": round(p, 4), "true": true})
-    return rows
+    its number in completion order (``--models``' file), n, m, genus, posterior, and whether it is the world
+    (``truth``, in completion order)."""
+    shapes = [(W.n, W.m, W.genus()) for W in (S.to_world(start=(0, 0)) for S in completed)]
+    return [{"model": k + 1, "n": shapes[k][0], "m": shapes[k][1], "genus": shapes[k][2], "posterior": round(p, 4),
+             "true": truth[k]} for k, p in posteriors(shapes)]
 
 
 def write_models(explorer, directory: str | Path) -> list[Path]:
