@@ -114,6 +114,7 @@ class ExternalResult:
     cost: int = 0
     snapshots: int = 0
     operations: int = 0  # marker and thread operations: counted apart from the cost (§3.1.2)
+    gave_up: bool = False  # the program reported failure itself (sent ``error``)
     marker_operations: dict[str, int] = field(default_factory=dict)  # the same by kind (drop, pick_up, tie, ...)
     wall: float = 0.0  # the whole run: program_seconds + topomark_seconds
     program_seconds: float = 0.0  # topomark waiting for the program: what --timeout limits
@@ -137,9 +138,9 @@ class ExternalResult:
 
 
 class _Fail(Exception):
-    def __init__(self, reason: str, message: str, violation: Violation | None = None):
+    def __init__(self, reason: str, message: str, violation: Violation | None = None, gave_up: bool = False):
         super().__init__(clip(message, MAX_MESSAGE))
-        self.reason, self.violation = reason, violation
+        self.reason, self.violation, self.gave_up = reason, violation, gave_up
 
 
 class _Session:
@@ -183,7 +184,7 @@ class _Session:
             elif kind == "snapshot":
                 self.snapshot(msg)
             elif kind == "error":
-                raise _Fail("crash", f"{GAVE_UP}: {clip(msg['message'], 500)}")
+                raise _Fail("crash", f"{GAVE_UP}: {clip(msg['message'], 500)}", gave_up=True)
             else:
                 return self.read_map(msg["world"])
 
@@ -307,7 +308,7 @@ def run_external(world: World, command: Sequence[str], limits: Limits | None = N
             result = ExternalResult("fail", exc.kind, str(exc))
             _say(peer, {"type": "error", "message": str(exc)})
         except _Fail as exc:
-            result = ExternalResult("fail", exc.reason, str(exc), violation=exc.violation)
+            result = ExternalResult("fail", exc.reason, str(exc), violation=exc.violation, gave_up=exc.gave_up)
             _say(peer, {"type": "error", "message": str(exc)})
     if session is not None:
         result.cost, result.snapshots = session.sim.cost, session.snapshots

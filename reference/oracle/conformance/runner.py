@@ -32,7 +32,7 @@ from topomark.spec.worldfile import load_world
 
 from topomark.reference.oracle.conformance.lint import lint
 from topomark.reference.oracle.conformance.manifest import SUITE_FORMAT
-from topomark.reference.oracle.run_external import GAVE_UP, ExternalResult, Limits, run_external
+from topomark.reference.oracle.run_external import ExternalResult, Limits, run_external
 
 __all__ = ["Row", "AlgorithmRow", "run", "run_algorithms", "render_table", "render_algorithm_table", "timed_run"]
 
@@ -106,7 +106,7 @@ class AlgorithmRow:
     def passed(self) -> bool:
         if self.case["expected"] == "correct":
             return self.result.passed and self.within_bound
-        return self.result.reason == "crash" and self.result.message.startswith(GAVE_UP)
+        return self.result.gave_up
 
     @property
     def reason(self) -> str:
