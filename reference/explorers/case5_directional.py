@@ -53,14 +53,12 @@ class DirectionalCountsThenLighthouse(VertexCountsThenLighthouse):
     name = "case-5-directional"
     directional = True
 
-    def arrive(self, it: MarkerStep, sig: Signature) -> None:
-        if sig.vertex_count and sig.vertex_direction is not None:  # a directional lighthouse: place and back-link
-            place = self.vertex_of.get(sig.vertex_count)
-            if place is None or self.M.degree(place) != sig.degree:
-                raise AlgorithmFailed(f"iteration {it.number} senses {sig}, which no marked place of the map shows")
+    def join_marked(self, it: MarkerStep, place: int, sig: Signature) -> None:
+        """A directional lighthouse gives place and back-link at once: the head points at exit 0 (L1902)."""
+        if sig.vertex_direction is None:
+            super().join_marked(it, place, sig)
+        else:
             self.loop(it, (place, (0 - sig.vertex_direction) % sig.degree))
-            return
-        super().arrive(it, sig)
 
     def lighthouse_path(self, v: int) -> list[MapDart]:
         """A shortest path of S from v_k' = ``v`` to the nearest marked v_l (its direction gives the entry)."""

@@ -81,7 +81,7 @@ class VertexCountsThenLighthouse(TwoPhases, VertexCounts):
             place = self.vertex_of.get(sig.vertex_count)
             if place is None or self.M.degree(place) != sig.degree:
                 raise AlgorithmFailed(f"iteration {it.number} senses {sig}, which no marked place of the map shows")
-            self.probe(it, place, sig.degree)
+            self.join_marked(it, place, sig)
         elif self.phase == 1:  # lines 11-15
             u = self.non_loop(it, sig)
             count = self.next_count()
@@ -91,6 +91,10 @@ class VertexCountsThenLighthouse(TwoPhases, VertexCounts):
                 self.phase, self.phase_two_from = 2, it.number
         else:  # lines 16-35
             self.phase_two.run(self, it, sig)
+
+    def join_marked(self, it: MarkerStep, place: int, sig: Signature) -> None:
+        """Lines 7-10: v_u is the marked ``place``; its back-link by probing."""
+        self.probe(it, place, sig.degree)
 
     def next_count(self) -> int:
         """i at line 13: v0 has 1, the j-th place discovered gets j + 1 (the counter decision above)."""
