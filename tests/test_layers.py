@@ -19,7 +19,7 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 LAYERS = (
     ("reference.cli",),
-    ("reference.oracle", "reference.bench", "reference.claims"),
+    ("reference.oracle", "reference.bench", "reference.claims", "reference.worstcase"),
     ("reference.replay",),
     ("reference.run",),
     ("reference.trace",),
