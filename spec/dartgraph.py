@@ -19,17 +19,19 @@ True
 
 from __future__ import annotations
 
+from typing import Any
+
 import networkx as nx
 from networkx.algorithms.isomorphism import DiGraphMatcher
 
 from topomark.spec.errors import Violation
 from topomark.spec.isomorphism import IsoResult, Witness
-from topomark.spec.signature import signature_at
+from topomark.spec.signature import Embedded, signature_at
 
 __all__ = ["dart_graph", "find_isomorphism_nx"]
 
 
-def _label(g, v, i: int, markers: bool) -> tuple:
+def _label(g: Embedded, v: Any, i: int, markers: bool) -> tuple[Any, ...]:
     """What a robot entering ``v`` by exit ``i`` senses (:func:`~topomark.spec.signature.signature_at`), or
     only the degree when markers are ignored: an extended isomorphism maps darts to darts of equal label."""
     if not markers:
@@ -37,9 +39,9 @@ def _label(g, v, i: int, markers: bool) -> tuple:
     return (signature_at(g, v, i),)
 
 
-def dart_graph(g, markers: bool = True) -> nx.DiGraph:
+def dart_graph(g: Embedded, markers: bool = True) -> nx.DiGraph[tuple[Any, int]]:
     """The labelled dart graph of a complete world or map."""
-    dg = nx.DiGraph()
+    dg: nx.DiGraph[tuple[Any, int]] = nx.DiGraph()
     for v in g.vertices:
         for i in range(g.degree(v)):
             dg.add_node((v, i), label=_label(g, v, i, markers))
@@ -51,7 +53,7 @@ def dart_graph(g, markers: bool = True) -> nx.DiGraph:
     return dg
 
 
-def find_isomorphism_nx(a, b, markers: bool = True) -> IsoResult:
+def find_isomorphism_nx(a: Embedded, b: Embedded, markers: bool = True) -> IsoResult:
     """Decide extended isomorphism by VF2 on dart graphs; the witness is read off (v, 0)'s image."""
     ga, gb = dart_graph(a, markers), dart_graph(b, markers)
     matcher = DiGraphMatcher(
@@ -63,7 +65,8 @@ def find_isomorphism_nx(a, b, markers: bool = True) -> IsoResult:
         return IsoResult(False, mismatch=Violation(
             "extended isomorphism (dart graph)", "dart graphs", "an isomorphism of the labelled dart graphs",
             "none exists"))
-    vertex_map, offsets = {}, {}
+    vertex_map: dict[Any, Any] = {}
+    offsets: dict[Any, int] = {}
     for v in a.vertices:
         w, k = matcher.mapping[(v, 0)]
         vertex_map[v], offsets[v] = w, k

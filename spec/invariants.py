@@ -32,6 +32,7 @@ I-2 violated at world dart ('a', 0): expected an entry in U (the edge 'a'-'b' is
 from __future__ import annotations
 
 from collections import Counter
+from typing import Any, Iterable
 
 from topomark.spec.errors import Violation, TopomarkFault
 from topomark.spec.isomorphism import IsoResult, Witness, anchored
@@ -47,12 +48,11 @@ Anchor = tuple[MapDart, Dart]
 
 def lighthouse_anchor(S: PartialMap, world: World) -> Anchor | None:
     """The anchor fixed by a directional vertex marker: the map's head dart ↦ the world's head dart."""
-    mapped = [(v, S.vertex_mark(v)) for v in S.vertices if S.vertex_mark(v) and S.vertex_mark(v).head is not None]
-    real = [(v, world.vertex_mark(v)) for v in world.vertices
-            if world.vertex_mark(v) and world.vertex_mark(v).head is not None]
+    mapped = [(v, m.head) for v in S.vertices if (m := S.vertex_mark(v)) and m.head is not None]
+    real = [(v, m.head) for v in world.vertices if (m := world.vertex_mark(v)) and m.head is not None]
     if len(mapped) != 1 or len(real) != 1:
         return None
-    return ((mapped[0][0], mapped[0][1].head), (real[0][0], real[0][1].head))
+    return (mapped[0], real[0])
 
 
 def correspondence(S: PartialMap, world: World, anchor: Anchor) -> IsoResult:
@@ -67,8 +67,11 @@ def check_I1(S: PartialMap, world: World, anchor: Anchor, phi: IsoResult | None 
     phi = phi or correspondence(S, world, anchor)
     if not phi.isomorphic:
         m = phi.mismatch
+        assert m is not None, "a negative IsoResult carries its mismatch"
         return Violation("I-1", m.where, m.expected, m.found, m.detail or "S is not isomorphic to G_s")
-    missing = [v for v in S.vertices if v not in phi.witness.vertex_map]
+    witness = phi.witness
+    assert witness is not None, "a positive IsoResult carries its witness"
+    missing = [v for v in S.vertices if v not in witness.vertex_map]
     if missing:
         return Violation("I-1", f"map vertex {missing[0]}", "connected to v0 through explored edges",
                          "not connected", "S must be connected")
@@ -78,15 +81,15 @@ def check_I1(S: PartialMap, world: World, anchor: Anchor, phi: IsoResult | None 
 def explored_subgraph(S: PartialMap, phi: Witness) -> tuple[frozenset[str], frozenset[frozenset[str]]]:
     """G_s (§3.4): the world vertices φ(V_S) and world edges φ(E_S) explored so far."""
     vertices = frozenset(phi.vertex_map[v] for v in S.vertices)
-    edges = frozenset(frozenset((phi.vertex_map[v], phi.vertex_map[S.arc((v, i))[0]]))
-                      for v, i in S.darts() if S.arc((v, i)) is not None)
+    edges = frozenset(frozenset((phi.vertex_map[v], phi.vertex_map[t[0]]))
+                      for v, i in S.darts() if (t := S.arc((v, i))) is not None)
     return vertices, edges
 
 
 def explored_world_darts(S: PartialMap, phi: Witness) -> set[Dart]:
     """φ(E_S) as world darts (both directions of each explored edge)."""
     f, r = phi.vertex_map, phi.offsets
-    out = set()
+    out: set[Dart] = set()
     for v in S.vertices:
         d, fv, rv = S.degree(v), f[v], r[v]
         out.update((fv, (i + rv) % d) for i in range(d) if S.arc((v, i)) is not None)
@@ -130,13 +133,13 @@ def check_I2(S: PartialMap, world: World, phi: Witness) -> Violation | None:
     return None
 
 
-def check_lemma1(hypotheses) -> Violation | None:
+def check_lemma1(hypotheses: Iterable[Any]) -> Violation | None:
     """Lemma 1 (§3.4): the pairs (M, P^E) of one iteration's hypotheses are pairwise distinct.
 
     ``hypotheses`` are objects with ``dart``, ``motions`` and ``expected``
     (tuples); the first pair of hypotheses sharing (M, P^E), or None.
     """
-    seen: dict[tuple, list] = {}  # M -> the hypotheses with that M (P^E compared only when M is shared)
+    seen: dict[tuple[Any, ...], list[Any]] = {}  # M -> the hypotheses with that M (P^E compared only when M is shared)
     for h in hypotheses:
         same_m = seen.setdefault(tuple(h.motions), [])
         for other in same_m:
@@ -153,6 +156,7 @@ def check_invariants(S: PartialMap, world: World, anchor: Anchor) -> Violation |
     v = check_I1(S, world, anchor, phi)
     if v is not None:
         return v
+    assert phi.witness is not None, "I-1 holds, so φ is an embedding"
     return check_I2(S, world, phi.witness)
 
 
@@ -208,8 +212,10 @@ class IncrementalInvariants:
         self._anchor = (v0, x0, (k0 - i0))
         self.S = S
         self._passed: tuple[int, World | None, set[int]] = (-1, None, set())  # _marks_once's (S, world, passed)
-        self._u = None  # the U last counted (_count_u), how much of its record was taken in, and the counts
-        self._u_seen, self._u_len, self._u_count, self._u_off = 0, 0, Counter(), set()
+        self._u: Unexplored | None = None  # the U last counted (_count_u), how much of its record was taken in,
+        self._u_seen, self._u_len = 0, 0  # and the counts
+        self._u_count: Counter[Any] = Counter()
+        self._u_off: set[Any] = set()
 
     def _map_vertex(self, v: int, x: str, r: int) -> Violation | None:
         d = self.degrees.get(v)
@@ -341,7 +347,7 @@ class IncrementalInvariants:
             self._u_seen = len(U.changes)
         return not self._u_off and self._u_len == len(U)
 
-    def _recount(self, darts) -> None:
+    def _recount(self, darts: Iterable[Any]) -> None:
         """Note whether each of ``darts`` is listed in U as often as it is open (once, or never)."""
         if self._u is None:
             return

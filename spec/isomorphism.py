@@ -36,7 +36,7 @@ from dataclasses import dataclass
 from typing import Any, Hashable
 
 from topomark.spec.errors import Violation
-from topomark.spec.signature import signature_at
+from topomark.spec.signature import Embedded, Marked, signature_at
 
 __all__ = ["Witness", "IsoResult", "anchored", "find_isomorphism", "verify_witness", "local_class", "marks_at",
            "describe_marks"]
@@ -49,7 +49,7 @@ class Witness:
     vertex_map: dict[Any, Any]
     offsets: dict[Any, int]
 
-    def image(self, g_a, dart: tuple[Any, int]) -> tuple[Any, int]:
+    def image(self, g_a: Marked, dart: tuple[Any, int]) -> tuple[Any, int]:
         v, i = dart
         return (self.vertex_map[v], (i + self.offsets[v]) % g_a.degree(v))
 
@@ -77,7 +77,7 @@ def _mismatch(where: str, expected: str, found: str, detail: str = "") -> Violat
     return Violation("extended isomorphism", where, expected, found, detail)
 
 
-def marks_at(g, v, r: int) -> tuple:
+def marks_at(g: Marked, v: Any, r: int) -> tuple[Any, ...]:
     """The marks at ``v`` with exit indices shifted by ``r`` (for comparison across graphs).
 
     Derived from what a robot senses (:func:`~topomark.spec.signature.signature_at`): exit
@@ -88,7 +88,7 @@ def marks_at(g, v, r: int) -> tuple:
     return (vpart, sig.edges) if sig.thread is None else (vpart, sig.edges, sig.thread)
 
 
-def describe_marks(marks: tuple) -> str:
+def describe_marks(marks: tuple[Any, ...]) -> str:
     vpart, dpart = marks[:2]
     parts = [] if len(marks) == 2 else [f"the thread ({marks[2]})"]
     if vpart is not None:
@@ -98,7 +98,7 @@ def describe_marks(marks: tuple) -> str:
     return ", ".join(parts) or "no markers"
 
 
-def _marks_mismatch(a, b, v, fv, rv: int) -> Violation | None:
+def _marks_mismatch(a: Marked, b: Marked, v: Any, fv: Any, rv: int) -> Violation | None:
     """The mismatch if the marks at ``v`` (exits shifted by ``rv``) differ from those at its image ``fv``."""
     ma, mb = marks_at(a, v, rv), marks_at(b, fv, 0)
     if ma == mb:
@@ -107,7 +107,8 @@ def _marks_mismatch(a, b, v, fv, rv: int) -> Violation | None:
                      "markers are not preserved")
 
 
-def _edge_mismatch(a, v, i: int, w, j: int, k: int, fv, bw, bj: int, f: dict, r: dict) -> Violation:
+def _edge_mismatch(a: Marked, v: Any, i: int, w: Any, j: int, k: int, fv: Any, bw: Any, bj: int,
+                   f: dict[Any, Any], r: dict[Any, int]) -> Violation:
     """Why the dart (v, i) to the matched vertex ``w`` does not land where ``f`` says: wrong vertex or index."""
     if f[w] != bw:
         return _mismatch(f"vertex {v!r} exit {i}",
@@ -118,7 +119,7 @@ def _edge_mismatch(a, v, i: int, w, j: int, k: int, fv, bw, bj: int, f: dict, r:
                      f"exit {bj} of {bw!r}", "the edge's index at its far end is not preserved")
 
 
-def _new_vertex_mismatch(a, b, v, i: int, w, bw, inv: dict) -> Violation:
+def _new_vertex_mismatch(a: Marked, b: Marked, v: Any, i: int, w: Any, bw: Any, inv: dict[Any, Any]) -> Violation:
     """Why the unmatched vertex ``w`` cannot map to ``bw``: already an image, or another degree."""
     if bw in inv:
         return _mismatch(f"vertex {v!r} exit {i}", f"a vertex not yet matched (it leads to {w!r})",
@@ -127,7 +128,7 @@ def _new_vertex_mismatch(a, b, v, i: int, w, bw, inv: dict) -> Violation:
                      f"{bw!r} of degree {b.degree(bw)}")
 
 
-def _not_bijective(a, b, f: dict) -> Violation | None:
+def _not_bijective(a: Embedded, b: Embedded, f: dict[Any, Any]) -> Violation | None:
     """The mismatch if the propagated map ``f`` misses a vertex of ``b`` or of ``a``."""
     if len(f) != len(b.vertices):
         return _mismatch("the vertex sets", f"{len(b.vertices)} vertices reached from the anchor", f"{len(f)}")
@@ -137,7 +138,8 @@ def _not_bijective(a, b, f: dict) -> Violation | None:
     return None
 
 
-def anchored(a, b, a_dart, b_dart, markers: bool = True, partial: bool = False) -> IsoResult:
+def anchored(a: Embedded, b: Embedded, a_dart: tuple[Any, int], b_dart: tuple[Any, int], markers: bool = True,
+             partial: bool = False) -> IsoResult:
     """Extend ``a_dart ↦ b_dart`` to an extended isomorphism from ``a`` to ``b``.
 
     ``a`` and ``b`` are worlds or partial maps (anything with ``degree``,
@@ -196,7 +198,7 @@ def anchored(a, b, a_dart, b_dart, markers: bool = True, partial: bool = False) 
     return IsoResult(True, Witness(f, r), mapped=len(f))
 
 
-def local_class(g, v, markers: bool = True) -> Hashable:
+def local_class(g: Marked, v: Any, markers: bool = True) -> tuple[Any, ...]:
     """What any extended isomorphism preserves at a single vertex (degree and marks, rotation-free).
 
     With ``markers=False`` only the degree: marks are then not part of the isomorphism.
@@ -208,7 +210,7 @@ def local_class(g, v, markers: bool = True) -> Hashable:
     return (sig.degree, vpart, tuple(sorted((count, end or "") for _, count, end in sig.edges)))
 
 
-def _summary(g, markers: bool) -> dict[str, Any]:
+def _summary(g: Embedded, markers: bool) -> dict[str, Any]:
     degrees = Counter(g.degree(v) for v in g.vertices)
     out: dict[str, Any] = {
         "vertices": len(g.vertices),
@@ -221,11 +223,11 @@ def _summary(g, markers: bool) -> dict[str, Any]:
     return out
 
 
-def _render_markers(summary: list) -> str:
+def _render_markers(summary: list[tuple[str, int]]) -> str:
     return "; ".join(f"{k}× {words}" for words, k in summary) or "no markers"
 
 
-def _marker_words(cls: tuple) -> str:
+def _marker_words(cls: tuple[Any, ...]) -> str:
     """A vertex's local class in words, e.g. 'a degree-4 vertex with 1 directional vertex marker'."""
     degree, vpart, dpart = cls
     parts = []
@@ -236,7 +238,7 @@ def _marker_words(cls: tuple) -> str:
     return f"a degree-{degree} vertex with " + " and ".join(parts)
 
 
-def find_isomorphism(a, b, markers: bool = True) -> IsoResult:
+def find_isomorphism(a: Embedded, b: Embedded, markers: bool = True) -> IsoResult:
     """Decide extended isomorphism of two complete worlds by anchored propagation.
 
     Returns an :class:`IsoResult` carrying a witness, or the mismatch of the
@@ -248,16 +250,18 @@ def find_isomorphism(a, b, markers: bool = True) -> IsoResult:
             render = _render_markers if key == "markers" else str
             return IsoResult(False, mismatch=Violation("extended isomorphism", key, render(sa[key]), render(sb[key]),
                                                        "the worlds differ in an isomorphism invariant"))
-    classes_b: dict[Hashable, list] = {}
+    classes_b: dict[Hashable, list[Any]] = {}
     for w in b.vertices:
         classes_b.setdefault(local_class(b, w, markers), []).append(w)
     # Anchor at the vertex of A whose class is rarest in B; prefer a directional head dart.
     v = min(a.vertices, key=lambda x: len(classes_b.get(local_class(a, x, markers), ())))
-    head = a.vertex_mark(v).head if markers and a.vertex_mark(v) is not None else None
+    mark = a.vertex_mark(v) if markers else None
+    head = mark.head if mark is not None else None
     i = 0 if head is None else head
     best: IsoResult | None = None
     for w in classes_b.get(local_class(a, v, markers), ()):
-        bhead = b.vertex_mark(w).head if head is not None else None
+        bmark = b.vertex_mark(w) if head is not None else None
+        bhead = bmark.head if bmark is not None else None
         for j in ([bhead] if bhead is not None else range(b.degree(w))):
             res = anchored(a, b, (v, i), (w, j), markers=markers)
             if res.isomorphic:
@@ -270,7 +274,7 @@ def find_isomorphism(a, b, markers: bool = True) -> IsoResult:
     return best
 
 
-def verify_witness(a, b, witness: Witness, markers: bool = True) -> Violation | None:
+def verify_witness(a: Embedded, b: Embedded, witness: Witness, markers: bool = True) -> Violation | None:
     """Check ``witness`` against the definition of extended isomorphism; None if it holds.
 
     Independent of the search: every dart of ``a`` must land where the witness says.

@@ -98,7 +98,7 @@ def no_duplicate_keys(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
 
 
 def parse_json(text: str, source: str, error: type[InvalidInput] = InvalidInput,
-               object_pairs_hook: Callable | None = None) -> Any:
+               object_pairs_hook: Callable[[list[tuple[str, Any]]], Any] | None = None) -> Any:
     """Parse ``text`` as JSON within the limits above; anything else raises ``error`` prefixed with ``source``.
 
     ``object_pairs_hook`` is passed to :func:`json.loads` (the world loader

@@ -182,8 +182,8 @@ class MarkerOp:
     count: int = 1
     pick_up: bool = False
 
-    def to_json(self) -> dict:
-        out = {"op": "pick_up" if self.pick_up else "drop", "kind": self.kind, "count": self.count}
+    def to_json(self) -> dict[str, Any]:
+        out: dict[str, Any] = {"op": "pick_up" if self.pick_up else "drop", "kind": self.kind, "count": self.count}
         if self.exit is not None:
             out["exit"] = self.exit
         if self.direction is not None:
@@ -213,8 +213,8 @@ class ThreadOp:
 
     kind = "thread"
 
-    def to_json(self) -> dict:
-        out: dict = {"op": self.op, "kind": "thread", "count": self.count}
+    def to_json(self) -> dict[str, Any]:
+        out: dict[str, Any] = {"op": self.op, "kind": "thread", "count": self.count}
         if self.direction is not None:
             out["direction"] = self.direction
         return out

@@ -27,13 +27,16 @@ Examples
 from __future__ import annotations
 
 from bisect import insort
-from typing import Iterator
+from typing import TYPE_CHECKING, Any, Iterable, Iterator, cast
 
 from topomark.spec.errors import require
-from topomark.spec.marker import EdgeMarker, VertexMarker
-from topomark.spec.thread import Thread, ThreadedWorld, unshifted, walk_from_marks
+from topomark.spec.marker import EdgeMarker, Marker, VertexMarker
+from topomark.spec.thread import Thread, ThreadedWorld, ThreadMark, unshifted, walk_from_marks
 from topomark.spec.unexplored import Unexplored
 from topomark.spec.world import DartMark, Start, VertexMark, World
+
+if TYPE_CHECKING:
+    from topomark.spec.signature import Signature
 
 __all__ = ["PartialMap", "MapDart"]
 
@@ -46,11 +49,11 @@ class PartialMap:
     def __init__(self) -> None:
         self._adj: list[list[MapDart | None]] = []
         self._joined: list[list[tuple[int, int]]] = []  # per vertex: (exit, neighbour) of each explored exit
-        self.journal: list[tuple] = []  # ("vertex", v, degree) | ("edge", a, b) | ("mark", v): S only grows
+        self.journal: list[tuple[Any, ...]] = []  # ("vertex", v, degree) | ("edge", a, b) | ("mark", v): S only grows
         self.edge_count = 0
         self._vmarks: dict[int, VertexMark] = {}
         self._dmarks: dict[int, tuple[DartMark, ...]] = {}
-        self.thread_marks: dict = {}  # map vertex -> spec.thread.ThreadMark (absolute exits), §6.3
+        self.thread_marks: dict[int, ThreadMark] = {}  # map vertex -> its thread mark (absolute exits), §6.3
         self._unexplored = Unexplored()
 
     @property
@@ -60,7 +63,7 @@ class PartialMap:
         return self._unexplored
 
     @unexplored.setter
-    def unexplored(self, entries) -> None:
+    def unexplored(self, entries: Iterable[Any]) -> None:
         self._unexplored = entries if isinstance(entries, Unexplored) else Unexplored(entries)
 
     # -- building ------------------------------------------------------------
@@ -92,7 +95,7 @@ class PartialMap:
         self._dmarks[v] = tuple(sorted(self._dmarks.get(v, ()) + (mark,), key=lambda d: d.exit))
         self.journal.append(("mark", v))
 
-    def mark_as_sensed(self, v: int, sig, entry: int) -> None:
+    def mark_as_sensed(self, v: int, sig: Signature, entry: int) -> None:
         """Record at ``v`` the marks in ``sig``, sensed by a robot that entered ``v`` by exit ``entry``.
 
         The inverse of :func:`~topomark.spec.signature.signature_at`: afterwards
@@ -148,7 +151,7 @@ class PartialMap:
     def dart_marks(self, v: int) -> tuple[DartMark, ...]:
         return self._dmarks.get(v, ())
 
-    def thread_mark(self, v: int):
+    def thread_mark(self, v: int) -> ThreadMark | None:
         """The thread sensed at ``v`` (a :class:`~topomark.spec.thread.ThreadMark`), or None."""
         return self.thread_marks.get(v)
 
@@ -189,31 +192,36 @@ class PartialMap:
     def to_world(self, start: MapDart | None = None) -> World:
         """The complete map as a :class:`World` (markers included); S must be complete."""
         require(self.complete(), f"the map still has unexplored darts: {self.open_darts()[:5]}")
-        rotation = {self.name(v): [self.name(w) for (w, _) in row] for v, row in enumerate(self._adj)}
-        markers: list = []
+        rotation = {self.name(v): [self.name(self._far(v, i)) for i in range(len(row))]
+                    for v, row in enumerate(self._adj)}
+        markers: list[Marker] = []
         for v, mark in sorted(self._vmarks.items()):
-            points = None if mark.head is None else self.name(self._adj[v][mark.head][0])
+            points = None if mark.head is None else self.name(self._far(v, mark.head))
             markers.append(VertexMarker(self.name(v), mark.count, points))
-        done = set()
+        done: set[frozenset[int]] = set()
         for v, marks in sorted(self._dmarks.items()):
             for dm in marks:
-                w = self._adj[v][dm.exit][0]
+                w = self._far(v, dm.exit)
                 if frozenset((v, w)) in done:
                     continue
                 done.add(frozenset((v, w)))
                 head = None if dm.end is None else self.name(v if dm.end == "H" else w)
                 markers.append(EdgeMarker((self.name(v), self.name(w)), dm.count, head))
-        s = None if start is None else Start(self.name(start[0]), self.name(self._adj[start[0]][start[1]][0]))
+        s = None if start is None else Start(self.name(start[0]), self.name(self._far(*start)))
         if self.thread_marks:
             return ThreadedWorld(rotation, markers, s, self._thread())
         return World(rotation, markers, s)
+
+    def _far(self, v: int, i: int) -> int:
+        """The far end of exit ``i`` of ``v``, a joined dart (S is complete where it is asked)."""
+        return cast(MapDart, self._adj[v][i])[0]
 
     def _thread(self) -> Thread:
         """The thread S's marks show, in map names (one tied vertex, one simple walk from it)."""
         tied = [v for v, t in self.thread_marks.items() if t.tied]
         require(len(tied) == 1, f"the map's thread marks show {len(tied)} tied ends")
-        walk = walk_from_marks(lambda v, i: self._adj[v][i][0], self.thread_marks, tied[0])
+        walk = walk_from_marks(self._far, self.thread_marks, tied[0])
         t = self.thread_marks[tied[0]]
-        head = None if t.head is None else self.name(self._adj[tied[0]][t.head][0])
+        head = None if t.head is None else self.name(self._far(tied[0], t.head))
         knots = tuple((k, self.thread_marks[v].knots) for k, v in enumerate(walk) if self.thread_marks[v].knots)
         return Thread(tuple(self.name(v) for v in walk), head, self.thread_marks[walk[-1]].end, knots)

@@ -60,41 +60,41 @@ class MarkerClass:
                     yield World(world.rotation, markers, Start(v, facing))
 
 
-def _none(world, v):
+def _none(world: World, v: str) -> Iterator[list[Marker]]:
     yield []
 
 
-def _undirected_vertex(world, v):
+def _undirected_vertex(world: World, v: str) -> Iterator[list[Marker]]:
     yield [VertexMarker(v)]
 
 
-def _directional_vertex(world, v):
+def _directional_vertex(world: World, v: str) -> Iterator[list[Marker]]:
     for w in world.rotation[v]:
         yield [VertexMarker(v, 1, w)]
 
 
-def _two_undirected(world, v):
+def _two_undirected(world: World, v: str) -> Iterator[list[Marker]]:
     for w in world.rotation[v]:
         yield [VertexMarker(v), VertexMarker(w)]
 
 
-def _three_undirected(world, v):
+def _three_undirected(world: World, v: str) -> Iterator[list[Marker]]:
     for w in world.rotation[v]:
         yield [VertexMarker(v), VertexMarker(w, 2)]
 
 
-def _undirected_edge(world, v):
+def _undirected_edge(world: World, v: str) -> Iterator[list[Marker]]:
     for w in world.rotation[v]:
         yield [EdgeMarker((v, w))]
 
 
-def _directional_edge(world, v):
+def _directional_edge(world: World, v: str) -> Iterator[list[Marker]]:
     for w in world.rotation[v]:
         for head in (v, w):
             yield [EdgeMarker((v, w), 1, head)]
 
 
-def _vertex_and_edge(world, v):
+def _vertex_and_edge(world: World, v: str) -> Iterator[list[Marker]]:
     for w in world.rotation[v]:
         yield [VertexMarker(v), EdgeMarker((v, w))]
 

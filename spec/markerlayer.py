@@ -47,7 +47,7 @@ True
 
 from __future__ import annotations
 
-from typing import Iterator
+from typing import Iterator, TypeVar
 
 from topomark.spec.errors import InvalidInput
 from topomark.spec.kit import MarkerOp, ThreadOp
@@ -59,6 +59,8 @@ from topomark.spec.world import DartMark, VertexMark, World
 __all__ = ["MarkerLayer", "apply_op"]
 
 _FLIP = {"H": "T", "T": "H", None: None}
+P = TypeVar("P", str, frozenset[str])  # a place: a vertex or an edge
+M = TypeVar("M", VertexMarker, EdgeMarker)
 
 
 def _exit(mark: DartMark) -> int:
@@ -75,10 +77,10 @@ class MarkerLayer:
         self.base = world
         # The rotation's queries are the world's own (bound here, not forwarded: they are on the robot's hot path).
         self.degree, self.target, self.neighbour = world.degree, world.target, world.neighbour
-        self._vmarks: dict[str, VertexMark] = {v: world.vertex_mark(v) for v in world.vertices
-                                               if world.vertex_mark(v) is not None}
+        self._vmarks: dict[str, VertexMark] = {v: mark for v in world.vertices
+                                               if (mark := world.vertex_mark(v)) is not None}
         # edge -> (tail-side dart (v, exit), count, end seen from that dart); insertion order kept
-        self._emarks: dict[frozenset, tuple[tuple[str, int], int, str | None]] = {}
+        self._emarks: dict[frozenset[str], tuple[tuple[str, int], int, str | None]] = {}
         for v in world.vertices:
             for dm in world.dart_marks(v):
                 key = frozenset((v, world.neighbour(v, dm.exit)))
@@ -87,7 +89,7 @@ class MarkerLayer:
                                                          if world.dart_marks(v)}
         # place -> the Marker lying there, kept per change so a snapshot is O(markers) at C speed, not a rebuild
         self._vobjects: dict[str, VertexMarker] = {}
-        self._eobjects: dict[frozenset, EdgeMarker] = {}
+        self._eobjects: dict[frozenset[str], EdgeMarker] = {}
         self.lying = 0  # the number of markers now lying in the world (the sum of the counts of markers())
         self._sensed = KeptSignatures()  # what is sensed at each vertex, until it changes there
         for v in self._vmarks:
@@ -136,28 +138,24 @@ class MarkerLayer:
         self._world = None
         self._sensed.forget(vertices or None)
 
-    def _place_changed(self, place) -> None:
+    def _place_changed(self, place: str | frozenset[str]) -> None:
         """Rebuild the one :class:`Marker` at ``place`` (a vertex, or an edge's frozenset) after a change.
 
         ``_vobjects``/``_eobjects`` keep the order of ``_vmarks``/``_emarks`` (a count change keeps a place's
         position, a place emptied and marked again goes last, as in those dicts)."""
         self._forget(*([place] if isinstance(place, str) else place))
         if isinstance(place, str):
-            mark, objects = self._vmarks.get(place), self._vobjects
-            obj = None if mark is None else VertexMarker(
+            mark = self._vmarks.get(place)
+            vobj = None if mark is None else VertexMarker(
                 place, mark.count, None if mark.head is None else self.base.neighbour(place, mark.head))
+            self.lying += _put(self._vobjects, place, vobj)
         else:
-            entry, objects, obj = self._emarks.get(place), self._eobjects, None
+            entry, eobj = self._emarks.get(place), None
             if entry is not None:
                 (v, exit), count, end = entry
                 w = self.base.neighbour(v, exit)
-                obj = EdgeMarker((v, w), count, None if end is None else (v if end == "H" else w))
-        old = objects.get(place)
-        self.lying += (obj.count if obj else 0) - (old.count if old else 0)
-        if obj is None:
-            objects.pop(place, None)
-        else:
-            objects[place] = obj
+                eobj = EdgeMarker((v, w), count, None if end is None else (v if end == "H" else w))
+            self.lying += _put(self._eobjects, place, eobj)
 
     def _refresh(self, v: str, exit: int) -> None:
         """Redo the dart mark of the edge at exit ``exit`` of ``v`` at both its ends after a change (the world is
@@ -250,12 +248,23 @@ class MarkerLayer:
         return self._world
 
 
+def _put(objects: dict[P, M], place: P, obj: M | None) -> int:
+    """Make ``obj`` the marker at ``place`` in ``objects`` (None: none); the change in the count lying there."""
+    old = objects.get(place)
+    if obj is None:
+        objects.pop(place, None)
+    else:
+        objects[place] = obj
+    return (obj.count if obj else 0) - (old.count if old else 0)
+
+
 def apply_op(layer: MarkerLayer, state: tuple[str, int], op: MarkerOp | ThreadOp) -> None:
     """Carry out ``op`` by a robot in ``state`` = (vertex, entry); refusals are InvalidInput naming why."""
     if isinstance(op, ThreadOp):
         layer._forget()
         try:
-            return layer.thread.apply(layer.base, state, op, 0)
+            layer.thread.apply(layer.base, state, op, 0)
+            return
         finally:
             layer.thread_marks = layer.thread.marks(layer.base)
     v, entry = state

@@ -49,23 +49,34 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
-from typing import Any, Callable, Protocol
+from typing import Any, Callable, Iterable, Protocol, Sequence
 
 from topomark.spec.errors import InvalidInput, Violation, clip
 from topomark.spec.thread import ThreadMark, shifted
 from topomark.spec.world import MAX_DEGREE, DartMark, VertexMark
 
-__all__ = ["Signature", "signature_at", "depends_on_entry", "KeptSignatures", "reads_as", "back_link_table", "Marked"]
+__all__ = ["Signature", "signature_at", "depends_on_entry", "KeptSignatures", "reads_as", "back_link_table", "Marked",
+           "Embedded"]
 
 
 class Marked(Protocol):
     """Anything with degrees and marks: a :class:`World` or a partial map."""
 
-    def degree(self, v) -> int: ...
+    def degree(self, v: Any) -> int: ...
 
-    def vertex_mark(self, v) -> VertexMark | None: ...
+    def vertex_mark(self, v: Any) -> VertexMark | None: ...
 
-    def dart_marks(self, v) -> tuple[DartMark, ...]: ...
+    def dart_marks(self, v: Any) -> tuple[DartMark, ...]: ...
+
+
+class Embedded(Marked, Protocol):
+    """A marked embedded graph with its darts: a complete :class:`World` or a (partial) map; ``arc`` is the
+    dart at the other end of a dart's edge (None where a map has not joined it)."""
+
+    @property
+    def vertices(self) -> Sequence[Any]: ...
+
+    def arc(self, dart: Any) -> Any: ...
 
 
 @dataclass(frozen=True, order=True)
@@ -217,7 +228,7 @@ def _parse_thread(items: list[str], text: str) -> ThreadMark:
     return ThreadMark(tied, head, tuple(sorted(edges)), end, knots)
 
 
-def signature_at(g: Marked, v, entry: int) -> Signature:
+def signature_at(g: Marked, v: Any, entry: int) -> Signature:
     """The signature sensed at ``v`` by a robot whose entry edge is exit ``entry`` (§3.1.1).
 
     A directional marker pointing at exit ``h`` reads ``V-((h - entry) mod deg)``;
@@ -239,7 +250,7 @@ def signature_at(g: Marked, v, entry: int) -> Signature:
     return Signature(d, count, direction, edges, None if tm is None else shifted(tm, entry, d))
 
 
-def depends_on_entry(g: Marked, v) -> bool:
+def depends_on_entry(g: Marked, v: Any) -> bool:
     """Whether :func:`signature_at` may differ between entries of ``v``: only a directional
     vertex marker, an edge marker or a thread's direction or edges is read relative to the entry edge (§3.1.1)."""
     mark = g.vertex_mark(v)
@@ -256,9 +267,9 @@ class KeptSignatures:
     __slots__ = ("_at",)
 
     def __init__(self) -> None:
-        self._at: dict = {}  # v -> entry -> Signature
+        self._at: dict[Any, dict[int, Signature]] = {}  # v -> entry -> Signature
 
-    def get(self, g: Marked, v, entry: int) -> Signature:
+    def get(self, g: Marked, v: Any, entry: int) -> Signature:
         at = self._at.get(v)
         if at is None:
             at = self._at[v] = {}
@@ -267,7 +278,7 @@ class KeptSignatures:
             sig = at[entry] = signature_at(g, v, entry)
         return sig
 
-    def forget(self, vertices=None) -> None:
+    def forget(self, vertices: Iterable[Any] | None = None) -> None:
         """Drop what was kept at ``vertices`` (None: everywhere)."""
         if vertices is None:
             self._at.clear()
@@ -280,9 +291,9 @@ def reads_as(g: Marked, sig: Signature) -> Callable[[Any, int], bool]:
     """``reads(v, entry)``: whether a robot entering ``v`` by ``entry`` senses ``sig`` in ``g`` — asked of every
     unexplored dart; a vertex whose signature is the same from every entry (:func:`depends_on_entry`) is
     compared once."""
-    same: dict = {}
+    same: dict[Any, bool] = {}
 
-    def reads(v, entry: int) -> bool:
+    def reads(v: Any, entry: int) -> bool:
         match = same.get(v)
         if match is None:
             match = g.degree(v) == sig.degree and signature_at(g, v, entry) == sig
@@ -292,7 +303,7 @@ def reads_as(g: Marked, sig: Signature) -> Callable[[Any, int], bool]:
     return reads
 
 
-def back_link_table(g: Marked, v, where: str) -> tuple[dict[Signature, int], Violation | None]:
+def back_link_table(g: Marked, v: Any, where: str) -> tuple[dict[Signature, int], Violation | None]:
     """What a robot entering ``v`` senses ↦ the entry it came by, and whether that is a function.
 
     ``v`` gives *explicit back-link information* (§3.2.2) exactly when its

@@ -72,12 +72,12 @@ True
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Iterable, NamedTuple
+from typing import Any, Callable, Iterable, Mapping, NamedTuple, Sequence
 
 from topomark.spec.errors import InvalidInput
 from topomark.spec.kit import ThreadOp
 from topomark.spec.marker import Marker
-from topomark.spec.world import Start, World
+from topomark.spec.world import DartMark, Start, VertexMark, World
 
 __all__ = ["ThreadMark", "ThreadState", "Thread", "ThreadedWorld", "shifted"]
 
@@ -266,7 +266,7 @@ def _need(cond: bool, why: str) -> None:
         raise InvalidInput(why)
 
 
-def _int(x) -> bool:
+def _int(x: Any) -> bool:
     return isinstance(x, int) and not isinstance(x, bool)
 
 
@@ -312,6 +312,10 @@ class Thread:
         return cls(walk, head, not t.held, tuple(sorted(t.knots.items())))
 
 
+# What ThreadedWorld.of_layer keeps to make its Thread when asked: base, tied, head, laid, held, knots
+_Snapshot = tuple[World, str, "int | None", tuple[tuple[str, int], ...], bool, tuple[tuple[int, int], ...]]
+
+
 class ThreadedWorld(World):
     """A :class:`World` with a laid :class:`Thread` in it; :meth:`thread_mark` is what lies at ``v``.
 
@@ -322,16 +326,18 @@ class ThreadedWorld(World):
 
     __slots__ = ("_thread", "_snapshot", "thread_marks")
 
-    def __init__(self, rotation, markers: Iterable[Marker] = (), start: Start | None = None,
-                 thread: Thread | None = None):
+    def __init__(self, rotation: Mapping[str, Sequence[str]], markers: Iterable[Marker] = (),
+                 start: Start | None = None, thread: Thread | None = None) -> None:
         super().__init__(rotation, markers, start)
-        self._thread, self._snapshot = thread, None
+        self._thread = thread
+        self._snapshot: _Snapshot | None = None
         state = thread.state(self) if thread is not None else ThreadState()
         self.thread_marks = state.marks(self)
 
     @classmethod
-    def of_layer(cls, base: World, markers: tuple[Marker, ...], vmarks: dict, dmarks: dict,
-                 state: ThreadState) -> "ThreadedWorld":
+    def of_layer(  # type: ignore[override]  # a threaded snapshot also takes the layer's thread state
+            cls, base: World, markers: tuple[Marker, ...], vmarks: dict[str, VertexMark],
+            dmarks: dict[str, tuple[DartMark, ...]], state: ThreadState) -> "ThreadedWorld":
         """A snapshot of a run: ``base``'s rotation and start, the layer's markers (``vmarks``/``dmarks``
         in :class:`World`'s form, already checked by the layer) and its tied thread ``state`` — copied,
         never re-validated (the layer's operations keep every invariant of §3.1.1 and of the thread)."""
@@ -339,6 +345,7 @@ class ThreadedWorld(World):
         w.rotation, w._index, w.start, w._m = base.rotation, base._index, base.start, base.m
         w.markers, w._vmarks, w._dmarks = markers, dict(vmarks), dict(dmarks)
         w._thread = None
+        assert state.tied is not None, "a threaded snapshot is of a tied thread"
         w._snapshot = (base, state.tied, state.head, tuple(state.laid), state.held, tuple(sorted(state.knots.items())))
         w.thread_marks = dict(state.marks(base))
         return w
@@ -373,7 +380,8 @@ class ThreadedWorld(World):
         return World.__repr__(self)[:-1] + f", thread={self.thread!r})"
 
 
-def walk_from_marks(neighbour, marks: dict, tied) -> tuple:
+def walk_from_marks(neighbour: Callable[[Any, int], Any], marks: Mapping[Any, ThreadMark],
+                    tied: Any) -> tuple[Any, ...]:
     """The walk a thread's per-vertex marks describe, followed from ``tied`` along its stringed edges.
 
     ``neighbour(v, exit)`` names the far end.  Only a thread that lies along each edge once and

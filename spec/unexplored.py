@@ -37,12 +37,12 @@ from __future__ import annotations
 
 from bisect import bisect_left
 from itertools import chain
-from typing import Any, Iterable, KeysView
+from typing import Any, Callable, Iterable, KeysView, SupportsIndex
 
 __all__ = ["Unexplored"]
 
 
-def _first(pair: tuple) -> Any:
+def _first(pair: tuple[Any, ...]) -> Any:
     return pair[0]
 
 
@@ -53,12 +53,12 @@ def _end(entry: Any) -> int | None:
     return None
 
 
-class Unexplored(list):
+class Unexplored(list[Any]):
     """U: a list of map darts that keeps, per end vertex, its entries by stamp in U's order."""
 
     __slots__ = ("_stamps", "_by_end", "_next", "changes")
 
-    def __init__(self, entries: Iterable = ()):
+    def __init__(self, entries: Iterable[Any] = ()) -> None:
         super().__init__()
         self.changes: list[tuple[int, Any]] = []  # (+1, entry) added, (-1, entry) removed, in order
         self._stamps: list[int] = []  # one per entry, increasing along U
@@ -66,7 +66,7 @@ class Unexplored(list):
         self._next = 0
         self.extend(entries)
 
-    def __reduce__(self):
+    def __reduce__(self) -> tuple[type[Unexplored], tuple[list[Any]]]:
         return (Unexplored, (list(self),))  # a copy keeps U's entries and order (not its history)
 
     # -- the questions ---------------------------------------------------------
@@ -80,7 +80,7 @@ class Unexplored(list):
         stamps = [next(iter(by_end[v])) for v in ends if v in by_end]
         return bisect_left(self._stamps, min(stamps)) if stamps else None
 
-    def at(self, ends: Iterable[int]) -> list:
+    def at(self, ends: Iterable[int]) -> list[Any]:
         """The entries whose end is in ``ends`` (each vertex once), in U's order."""
         by_end = self._by_end
         mine = [by_end[v] for v in dict.fromkeys(ends) if v in by_end]
@@ -98,15 +98,16 @@ class Unexplored(list):
         self._next += 1
         self.changes.append((1, entry))
 
-    def extend(self, entries: Iterable) -> None:
+    def extend(self, entries: Iterable[Any]) -> None:
         for entry in list(entries):  # U.extend(U) adds U's entries once, as a list does
             self.append(entry)
 
-    def __iadd__(self, entries: Iterable) -> "Unexplored":
+    # list's own += takes any iterable too; typeshed's list.__add__ takes only lists, hence the ignore
+    def __iadd__(self, entries: Iterable[Any]) -> "Unexplored":  # type: ignore[misc]
         self.extend(entries)
         return self
 
-    def pop(self, index: int = -1) -> Any:
+    def pop(self, index: SupportsIndex = -1) -> Any:
         entry = super().pop(index)
         stamp = self._stamps.pop(index)
         v = _end(entry)
@@ -125,14 +126,14 @@ class Unexplored(list):
             raise ValueError("list.remove(x): x not in list") from None
         self.pop(index)
 
-    def __delitem__(self, index) -> None:
+    def __delitem__(self, index: SupportsIndex | slice) -> None:
         if isinstance(index, slice):
             self._rewrite(list.__delitem__, index)
         else:
             self.pop(index)
 
     # -- every other change: a pass over U ------------------------------------------
-    def _rewrite(self, change, *args) -> Any:
+    def _rewrite(self, change: Callable[..., Any], *args: Any) -> Any:
         before = list(self)
         result = change(self, *args)
         self.changes.extend((-1, entry) for entry in before)
@@ -149,20 +150,20 @@ class Unexplored(list):
                 self._by_end.setdefault(v, {})[stamp] = entry
         self._next = len(self)
 
-    def insert(self, index: int, entry: Any) -> None:
+    def insert(self, index: SupportsIndex, entry: Any) -> None:
         self._rewrite(list.insert, index, entry)
 
-    def __setitem__(self, index, value) -> None:
+    def __setitem__(self, index: Any, value: Any) -> None:
         self._rewrite(list.__setitem__, index, value)
 
-    def __imul__(self, times: int) -> "Unexplored":
+    def __imul__(self, times: SupportsIndex) -> "Unexplored":
         self._rewrite(list.__imul__, times)
         return self
 
     def clear(self) -> None:
         self._rewrite(list.clear)
 
-    def sort(self, *args, **kwargs) -> None:
+    def sort(self, *args: Any, **kwargs: Any) -> None:
         list.sort(self, *args, **kwargs)
         self._renumber()  # the same entries: nothing added or removed
 

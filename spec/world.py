@@ -25,7 +25,7 @@ from __future__ import annotations
 
 from collections import Counter, deque
 from dataclasses import dataclass
-from typing import Iterable, Iterator, Mapping, Sequence
+from typing import Iterable, Iterator, Mapping, NoReturn, Sequence
 
 from topomark.spec.errors import InvalidWorld, require_input
 from topomark.spec.marker import EdgeMarker, Marker, VertexMarker
@@ -115,7 +115,7 @@ class DartMark:
     end: str | None
 
 
-def _fail(message: str) -> None:
+def _fail(message: str) -> NoReturn:
     raise InvalidWorld(message)
 
 
@@ -145,14 +145,16 @@ class World:
         self._index = {v: {w: i for i, w in enumerate(ns)} for v, ns in self.rotation.items()}
         self._check_connected()
         self._vmarks: dict[str, VertexMark] = {}
-        self._dmarks: dict = {}
+        dmarks: dict[str, list[DartMark]] = {}
+        self._dmarks: dict[str, tuple[DartMark, ...]] = {}
         for marker in self.markers:
-            self._add_marker(marker)
-        self._dmarks = {v: tuple(sorted(ms, key=lambda d: d.exit)) for v, ms in self._dmarks.items()}
+            self._add_marker(marker, dmarks)
+        self._dmarks = {v: tuple(sorted(ms, key=lambda d: d.exit)) for v, ms in dmarks.items()}
         self._check_start()
 
     @classmethod
-    def of_layer(cls, base: "World", markers: tuple[Marker, ...], vmarks: dict, dmarks: dict) -> "World":
+    def of_layer(cls, base: "World", markers: tuple[Marker, ...], vmarks: dict[str, VertexMark],
+                 dmarks: dict[str, tuple[DartMark, ...]]) -> "World":
         """A snapshot of a run's marker layer (:meth:`topomark.spec.markerlayer.MarkerLayer.world`): ``base``'s
         rotation and start with the layer's markers, ``vmarks``/``dmarks`` already in this class's form and
         checked by the layer's own operations — copied, never re-validated (a marker dropped mid-run would
@@ -205,7 +207,8 @@ class World:
             lost = next(v for v in self.rotation if v not in seen)
             _fail(f"the world is disconnected: vertex {lost!r} cannot be reached from {first!r}")
 
-    def _add_marker(self, marker: Marker) -> None:
+    def _add_marker(self, marker: Marker, dmarks: dict[str, list[DartMark]]) -> None:
+        """Record ``marker``: a vertex mark at once, dart marks into ``dmarks`` (sorted into tuples later)."""
         if not isinstance(marker.count, int) or isinstance(marker.count, bool) or marker.count < 1:
             _fail(f"marker count must be a positive integer, got {marker.count!r}")
         if isinstance(marker, VertexMarker):
@@ -231,10 +234,10 @@ class World:
         if marker.head is not None and marker.head not in (u, v):
             _fail(f"edge marker on ({u!r}, {v!r}) has head {marker.head!r}, which is not an end of that edge")
         for a, b in ((u, v), (v, u)):
-            if any(d.exit == self._index[a][b] for d in self._dmarks.get(a, ())):
+            if any(d.exit == self._index[a][b] for d in dmarks.get(a, ())):
                 _fail(f"two marker entries on edge ({u!r}, {v!r}) (use one entry with a count)")
             end = None if marker.head is None else ("H" if marker.head == a else "T")
-            self._dmarks.setdefault(a, []).append(DartMark(self._index[a][b], marker.count, end))  # tuples later
+            dmarks.setdefault(a, []).append(DartMark(self._index[a][b], marker.count, end))
 
     def _check_start(self) -> None:
         s = self.start

@@ -54,12 +54,12 @@ from __future__ import annotations
 import json
 from importlib import resources
 from pathlib import Path
-from typing import Any
+from typing import Any, cast
 
 from topomark.spec.errors import InvalidWorld
 from topomark.spec.jsontext import no_duplicate_keys, parse_json, read_text_file
 from topomark.spec.errors import InvalidInput, clip
-from topomark.spec.marker import EdgeMarker, VertexMarker
+from topomark.spec.marker import EdgeMarker, Marker, VertexMarker
 from topomark.spec.thread import Thread, ThreadedWorld
 from topomark.spec.world import Start, World, check_size
 
@@ -80,7 +80,7 @@ parsing 256 MiB of JSON into Python objects needs a few GB, while the general
 
 def schema() -> dict[str, Any]:
     """The published JSON Schema of the world format."""
-    return json.loads(resources.files(__package__).joinpath("world.schema.json").read_text())
+    return cast(dict[str, Any], json.loads(resources.files(__package__).joinpath("world.schema.json").read_text()))
 
 
 def _expect(cond: bool, message: str) -> None:
@@ -88,7 +88,7 @@ def _expect(cond: bool, message: str) -> None:
         raise InvalidWorld(message)
 
 
-def _keys(obj: dict, allowed: set[str], required: set[str], what: str) -> None:
+def _keys(obj: dict[str, Any], allowed: set[str], required: set[str], what: str) -> None:
     unknown = sorted(set(obj) - allowed)
     _expect(not unknown, f"{what}: unknown key {unknown[0]!r}" if unknown else "")
     missing = sorted(required - set(obj))
@@ -102,10 +102,10 @@ def _show(x: Any, limit: int = 60) -> str:
 
 def _string(x: Any, what: str) -> str:
     _expect(isinstance(x, str), f"{what} must be a string, got {_show(x)}")
-    return x
+    return cast(str, x)  # _expect raised otherwise
 
 
-def _marker(obj: Any, k: int):
+def _marker(obj: Any, k: int) -> Marker:
     what = f"markers[{k}]"
     _expect(isinstance(obj, dict), f"{what} must be an object")
     kind = obj.get("kind")
@@ -195,7 +195,7 @@ def world_to_json(world: World) -> dict[str, Any]:
     return out
 
 
-def marker_to_json(m) -> dict[str, Any]:
+def marker_to_json(m: Marker) -> dict[str, Any]:
     """One marker as its JSON object in the world format."""
     if isinstance(m, VertexMarker):
         item: dict[str, Any] = {"kind": "vertex", "at": m.at, "count": m.count}
