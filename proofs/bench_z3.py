@@ -71,6 +71,7 @@ def _row(kind: str, marker: str, n: int, d: int, res: z3search.SearchResult, out
            "seconds": round(res.seconds, 2), "cpu_seconds": round(sum(c.cpu_seconds for c in res.checks), 2),
            "largest_pair_seconds": round(max(c.seconds for c in res.checks), 2) if res.checks else 0.0}
     if res.found:
+        assert res.worlds is not None and res.relation is not None and res.motions is not None
         a, b = res.worlds
         row.update({"sizes": [a.n, b.n], "edges": [a.m, b.m], "genus": [a.genus(), b.genus()],
                     "relation": len(res.relation), "walk": len(res.motions)})
@@ -95,7 +96,7 @@ def bench_proofs(max_vertices: int, max_degree: int = 4, timeout: float | None =
 def language_key(world) -> tuple:
     """Canonical minimal Moore machine reachable from the start (equal iff bisimilar)."""
     states = [(v, j) for v in world.vertices for j in range(world.degree(v))]
-    block = {s: str(sense(world, s)) for s in states}
+    block: dict[tuple[Any, int], Any] = {s: str(sense(world, s)) for s in states}  # then block numbers
     while True:
         key = {s: (block[s], tuple(block[step(world, s, l)] for l in range(world.degree(s[0])))) for s in states}
         ids = {k: i for i, k in enumerate(sorted(set(key.values()), key=repr))}
@@ -140,7 +141,7 @@ def bench_cross_check(max_vertices: int = 5, max_degree: int = 4) -> list[dict]:
         brute = brute_force_smallest(m, max_vertices, max_degree)
         t1 = time.monotonic()
         res = z3search.search(m, max_vertices, max_degree)
-        z3_size = max(w.n for w in res.worlds) if res.found else None
+        z3_size = max(w.n for w in res.worlds) if res.found and res.worlds is not None else None
         rows.append({"kind": "cross-check", "marker": m, "max_vertices": max_vertices, "max_degree": max_degree,
                      "brute_force": brute, "z3": z3_size, "z3_outcome": res.outcome,
                      "agree": res.outcome != "unknown" and brute == z3_size,
@@ -165,16 +166,20 @@ def main(argv: list[str] | None = None) -> int:
     print(f"z3 {z3.get_version_string()}", flush=True)
     rows: list[dict] = []
     for row in bench_smallest(6, 4, args.timeout):
-        rows.append(row), _print(row)
+        rows.append(row)
+        _print(row)
     if args.planar:
         for row in bench_smallest(6, 3, args.timeout, planar=True):
-            rows.append(row), _print(row)
+            rows.append(row)
+            _print(row)
     for n in (5, 6) if args.stretch else (5,):
         for row in bench_proofs(n, 4, args.timeout):
-            rows.append(row), _print(row)
+            rows.append(row)
+            _print(row)
     if args.cross_check:
         for row in bench_cross_check(5, 4):
-            rows.append(row), _print(row)
+            rows.append(row)
+            _print(row)
     if args.json:
         print(json.dumps(rows, indent=1))
     return 0 if all(r.get("agree", True) for r in rows) else 1

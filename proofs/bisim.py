@@ -73,8 +73,8 @@ class Distinction:
 def _path(parent: dict[Pair, tuple[Pair, int] | None], pair: Pair) -> list[int]:
     """The motions leading from the start pair to ``pair`` in the BFS tree."""
     motions: list[int] = []
-    while parent[pair] is not None:
-        pair, motion = parent[pair]
+    while (step := parent[pair]) is not None:
+        pair, motion = step
         motions.append(motion)
     motions.reverse()
     return motions

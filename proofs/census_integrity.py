@@ -76,6 +76,7 @@ def code_version() -> str:
     h = hashlib.blake2b(digest_size=8)
     for name in CODE_MODULES:
         spec = importlib.util.find_spec(name)
+        assert spec is not None and spec.origin is not None, f"{name} is one of this package's modules"
         h.update(name.encode() + b"\0" + Path(spec.origin).read_bytes() + b"\0")
     return f"topomark {package}, census code {h.hexdigest()}"
 

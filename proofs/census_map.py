@@ -54,7 +54,7 @@ from topomark.proofs.census_integrity import code_version
 from topomark.proofs.census_shards import (combine, digest, done_path, map_path, records, seal, shard_of, write_atomic,
                                            write_json)
 from topomark.proofs.enumerate import connected_graphs, graph_automorphisms, world_of_rotation
-from topomark.spec.world import World
+from topomark.spec.world import DartMark, World
 
 __all__ = ["Unit", "plan", "estimate", "rotation_count", "run_map", "unit_worlds", "world_at", "world_records",
            "marked"]
@@ -191,7 +191,7 @@ def _layout_code(key: frozenset, sigma: dict[int, int]) -> tuple:
     def f(name: str | None) -> int:
         return -1 if name is None else sigma[int(name[1:])]
 
-    items = []
+    items: list[tuple[int, ...]] = []
     for item in key:
         if isinstance(item[0], str):
             at, count, points_to = item
@@ -217,10 +217,11 @@ def marked(world: World, markers: tuple) -> World:
     """
     w = object.__new__(World)
     w.rotation, w.markers, w.start, w._index = world.rotation, tuple(markers), None, world._index
-    w._vmarks, w._dmarks = {}, {}
+    w._vmarks = {}
+    dmarks: dict[str, list[DartMark]] = {}
     for marker in w.markers:
-        w._add_marker(marker)
-    w._dmarks = {v: tuple(sorted(ms, key=lambda d: d.exit)) for v, ms in w._dmarks.items()}
+        w._add_marker(marker, dmarks)
+    w._dmarks = {v: tuple(sorted(ms, key=lambda d: d.exit)) for v, ms in dmarks.items()}
     return w
 
 

@@ -200,8 +200,12 @@ def _rows(manifest: dict[str, Any], total: dict[str, Any], done: list[dict[str, 
             tally = sizes.setdefault(int(n), [0, 0])
             tally[0] += w
             tally[1] += pl
-    return tuple(SizeRow(n, *sizes.get(n, [0, 0]), total["languages"][j], total["languages_upto"][j],
-                         total["ambiguous_upto"][j]) for j, n in enumerate(range(p["min_n"], p["max_vertices"] + 1)))
+    rows = []
+    for j, n in enumerate(range(p["min_n"], p["max_vertices"] + 1)):
+        worlds, placements = sizes.get(n, [0, 0])
+        rows.append(SizeRow(n, worlds, placements, total["languages"][j], total["languages_upto"][j],
+                            total["ambiguous_upto"][j]))
+    return tuple(rows)
 
 
 def sharded_census(class_name: str, max_vertices: int, max_degree: int, root: str | os.PathLike,

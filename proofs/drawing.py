@@ -29,6 +29,7 @@ from xml.sax.saxutils import escape
 import networkx as nx
 
 from topomark.spec.errors import InvalidInput
+from topomark.spec.marker import EdgeMarker
 from topomark.spec.world import World
 
 __all__ = ["layout", "world_svg", "pair_svg", "save_pair", "clockwise_ok"]
@@ -39,7 +40,7 @@ RADIUS = 11         # vertex radius
 
 
 def _graph(world: World) -> nx.Graph:
-    g = nx.Graph()
+    g: nx.Graph[str] = nx.Graph()
     g.add_nodes_from(world.vertices)
     g.add_edges_from(world.edges())
     return g
@@ -122,7 +123,7 @@ def _planar_candidates(world: World) -> list[dict[str, tuple[float, float]]]:
 
 
 def _grid_positions(world: World) -> dict[str, tuple[float, float]] | None:
-    emb = nx.PlanarEmbedding()
+    emb: nx.PlanarEmbedding[str] = nx.PlanarEmbedding()
     emb.set_data({v: list(ns) for v, ns in world.rotation.items()})
     try:
         emb.check_structure()
@@ -215,7 +216,7 @@ def _exit_labels(world: World, pos) -> list[str]:
 def _edge_markers(world: World, pos) -> list[str]:
     out = []
     for m in world.markers:
-        if not hasattr(m, "between"):
+        if not isinstance(m, EdgeMarker):  # the world's markers are vertex or edge markers
             continue
         u, v = m.between
         p, q = pos[u], pos[v]

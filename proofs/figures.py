@@ -150,6 +150,7 @@ FIGURES = {
 def _facing_marked(world: World) -> bool:
     """The start faces a marked neighbour or a marked edge."""
     s = world.start
+    assert s is not None, "a census world has its start"
     for m in world.markers:
         if isinstance(m, EdgeMarker) and set(m.between) == {s.at, s.facing}:
             return True

@@ -89,7 +89,7 @@ class GraphClass:
         return [w for w in range(self.n) if self.adjacency[v] >> w & 1]
 
     def graph(self) -> nx.Graph:
-        g = nx.Graph()
+        g: nx.Graph[int] = nx.Graph()
         g.add_nodes_from(range(self.n))
         g.add_edges_from((v, w) for v in range(self.n) for w in self.neighbours(v) if v < w)
         return g

@@ -55,9 +55,11 @@ def _decode_world(model: z3.ModelRef, wv: WorldVars) -> World:
     v0 = _name(0)
     markers: list = []
     m = wv.marker
-    other = _name(_value(model, wv.tv[0, _value(model, wv.e)])) if wv.e is not None else None
     if m in ("undirected-vertex", "two-undirected-vertex", "three-undirected-vertex", "vertex-and-edge"):
         markers.append(VertexMarker(v0))
+    if wv.e is None:  # every other class has the exit variable e (z3markers._NEEDS_EXIT)
+        return World(rotation, markers, Start(v0, rotation[v0][0]))
+    other = _name(_value(model, wv.tv[0, _value(model, wv.e)]))
     if m == "directional-vertex":
         markers.append(VertexMarker(v0, 1, other))
     if m == "two-undirected-vertex":
@@ -152,7 +154,8 @@ def recheck(marker: str, a: World, b: World, relation: frozenset) -> None:
             raise CheckFailure(f"decoded world {name} does not carry the {marker} markers and start: {w!r}")
     iso = find_isomorphism(a, b, markers=True)
     if iso.isomorphic:
-        raise CheckFailure(f"decoded worlds are extended-isomorphic ({iso.witness.to_json()}), not a counterexample")
+        raise CheckFailure(f"decoded worlds are extended-isomorphic ({iso.witness and iso.witness.to_json()}), "
+                           "not a counterexample")
     violation = bisim.check_relation(a, b, relation)
     if violation is not None:
         raise CheckFailure(f"decoded relation is not a bisimulation: {violation}")

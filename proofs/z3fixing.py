@@ -43,6 +43,7 @@ def canonical_labelling(world: World) -> tuple[dict[str, int], dict[str, int]]:
 
 def _other_marked(world: World) -> str | None:
     """The vertex the exit variable e of vertex 0 leads to (head, marked neighbour, far end of the marked edge)."""
+    assert world.start is not None, "a census world has its start"
     at = world.start.at
     for m in world.markers:
         if isinstance(m, EdgeMarker):
@@ -65,12 +66,14 @@ def _fixing_literals(wv: WorldVars, world: World) -> list[str]:
             w = world.neighbour(v, (i + shift[v]) % d)
             lits += [wv.tv[k, i][order[w]], wv.te[k, i][(world.index(w, v) - shift[w]) % world.degree(w)]]
     other = _other_marked(world)
+    start = world.start
+    assert start is not None, "a census world has its start"
     if wv.e is not None and other is not None:
-        at, d0 = world.start.at, world.degree(world.start.at)
+        at, d0 = start.at, world.degree(start.at)
         lits.append(wv.e[next(i for i in range(d0) if world.neighbour(at, (i + shift[at]) % d0) == other)])
     if wv.head0 is not None:
         head = next(m.head for m in world.markers if isinstance(m, EdgeMarker))
-        lits.append(wv.head0 if head == world.start.at else not_(wv.head0))
+        lits.append(wv.head0 if head == start.at else not_(wv.head0))
     return [x for x in lits if x is not True]
 
 

@@ -15,6 +15,8 @@ indistinguishability relation of :mod:`topomark.proofs.z3pair` requires.
 
 from __future__ import annotations
 
+from typing import Any, Callable
+
 from topomark.proofs.z3formula import and_, iff, not_, or_
 
 __all__ = ["MarkerVars", "sig_equal"]  # for the z3search modules
@@ -30,32 +32,45 @@ class MarkerVars:
     builder ``b``, ``n``, ``D``, ``marker``, ``deg``, ``tv``, ``te`` and ``exists``.
     """
 
+    # supplied by WorldVars (z3 expressions are untyped)
+    b: Any
+    tag: str
+    n: int
+    D: int
+    marker: str
+    deg: dict[int, dict[int, Any]]
+    tv: dict[tuple[int, int], dict[int, Any]]
+    te: dict[tuple[int, int], dict[int, Any]]
+    exists: Callable[[int, int], Any]
+
     def _marker_vars(self) -> None:
         b, n, D = self.b, self.n, self.D
-        self.e = b.onehot(f"{self.tag}e", range(D)) if self.marker in _NEEDS_EXIT else None
+        self.e: dict[int, Any] | None = b.onehot(f"{self.tag}e", range(D)) if self.marker in _NEEDS_EXIT else None
         self.head0 = b.var(f"{self.tag}head0") if self.marker == "directional-edge" else None
-        self.nb = {v: False for v in range(n)}  # v is the marked neighbour / other end of the marked edge
-        self.mk = {(v, y): False for v in range(n) for y in range(D)}  # dart (v, y) carries the edge marker
-        if self.e is None:
+        self.nb: dict[int, Any] = {v: False for v in range(n)}  # v is the marked neighbour / other end of the marked edge
+        self.mk: dict[tuple[int, int], Any] = {(v, y): False for v in range(n) for y in range(D)}  # dart (v, y) carries the edge marker
+        e = self.e
+        if e is None:
             return
         for x in range(D):
-            b.implies([self.e[x]], self.exists(0, x))
+            b.implies([e[x]], self.exists(0, x))
         for v in range(1, n):
             self.nb[v] = b.var(f"{self.tag}nb{v}")
-            b.add(iff(self.nb[v], or_([and_([self.e[x], self.tv[0, x][v]]) for x in range(D)])))
+            b.add(iff(self.nb[v], or_([and_([e[x], self.tv[0, x][v]]) for x in range(D)])))
         if self.marker in ("undirected-edge", "directional-edge", "vertex-and-edge"):
             for y in range(D):
-                self.mk[0, y] = self.e[y]
+                self.mk[0, y] = e[y]
             for v in range(1, n):
                 for y in range(D):
                     self.mk[v, y] = b.var(f"{self.tag}mk{v},{y}")
-                    b.add(iff(self.mk[v, y], or_([and_([self.e[x], self.tv[0, x][v], self.te[0, x][y]])
+                    b.add(iff(self.mk[v, y], or_([and_([e[x], self.tv[0, x][v], self.te[0, x][y]])
                                                       for x in range(D)])))
 
     # -- signature features (each a dict value -> literal/bool, exactly one true) --
-    def features(self, v: int, j: int) -> list[dict]:
+    def features(self, v: int, j: int) -> list[dict[Any, Any]]:
         """Everything but the degree that :func:`signature_at` reads at state (v, j)."""
-        m, feats = self.marker, []
+        m, e = self.marker, self.e
+        feats: list[dict[Any, Any]] = []
         if m in ("undirected-vertex", "directional-vertex", "vertex-and-edge"):
             feats.append({1: v == 0, 0: v != 0})
         elif m == "two-undirected-vertex":
@@ -63,7 +78,8 @@ class MarkerVars:
         elif m == "three-undirected-vertex":
             feats.append({1: True} if v == 0 else {2: self.nb[v], 0: not_(self.nb[v])})
         if m == "directional-vertex":
-            feats.append(self._relative(v, j, {y: self.e[y] for y in range(self.D)}) if v == 0 else {None: True})
+            assert e is not None, "a directional vertex marker has its exit"
+            feats.append(self._relative(v, j, {y: e[y] for y in range(self.D)}) if v == 0 else {None: True})
         if m in ("undirected-edge", "directional-edge", "vertex-and-edge"):
             feats.append(self._relative(v, j, {y: self.mk[v, y] for y in range(self.D)}))
         if m == "directional-edge":
@@ -74,9 +90,9 @@ class MarkerVars:
                               None: not_(self.nb[v])})
         return feats
 
-    def _relative(self, v: int, j: int, marked: dict) -> dict:
+    def _relative(self, v: int, j: int, marked: dict[int, Any]) -> dict[int | None, Any]:
         """Value (y - j) mod deg(v) of the marked exit y at v, None if no exit is marked."""
-        out: dict = {None: not_(or_(marked.values()))}
+        out: dict[int | None, Any] = {None: not_(or_(marked.values()))}
         for c in range(self.D):
             out[c] = or_(and_([self.deg[v][d], marked[y]]) for d in range(1, self.D + 1)
                          for y in range(d) if (y - j) % d == c)

@@ -117,7 +117,7 @@ class PairEncoding:
                     b.implies([h, lw, lk], self.R[p2, (w2, k2)])
 
     # -- non-isomorphism by anchored propagation -------------------------------------
-    def _anchors(self) -> Iterator[tuple[str, int]]:
+    def _anchors(self) -> Iterator[tuple[int | str, int]]:  # (B vertex or "other", exit)
         kind = _ANCHORS[self.marker]
         if kind == "start":
             yield (0, 0)

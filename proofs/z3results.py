@@ -65,6 +65,7 @@ class SearchResult:
         if self.reason:
             out["reason"] = self.reason
         if self.found:
+            assert self.worlds is not None and self.motions is not None and self.perceptions is not None
             out["worlds"] = [world_to_json(w) for w in self.worlds]
             out["relation"] = relation_to_json(self.relation)
             out["motions"] = list(self.motions)
