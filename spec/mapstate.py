@@ -129,6 +129,11 @@ class PartialMap:
         """The reverse dart ``dart`` is joined to, or None if unexplored (same name as World.arc)."""
         return self._adj[dart[0]][dart[1]]
 
+    def target(self, dart: MapDart) -> MapDart:
+        """Where an explored ``dart`` leads, for a caller that knows it is joined (:meth:`arc` is None on an open
+        dart)."""
+        return cast(MapDart, self._adj[dart[0]][dart[1]])
+
     def links(self, v: int) -> list[MapDart | None]:
         """The reverse dart of each exit of ``v`` in index order, None where unexplored.
 

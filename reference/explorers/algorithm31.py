@@ -56,7 +56,7 @@ from topomark.spec.signature import Signature, reads_as, signature_at
 
 from topomark.reference.explorers.policies import Policies, bfs, tree_to_v0
 from topomark.reference.explorers.robot import Robot
-from topomark.reference.explorers.lighthouses import LIGHTHOUSES, Lighthouse
+from topomark.reference.explorers.lighthouses import LIGHTHOUSES, Beacon, Lighthouse
 from topomark.reference.explorers.walker import MapWalker, StepRecord
 
 __all__ = ["Hypothesis", "Iteration", "LighthouseExplorer", "V0", "hypothesis_darts", "walk_hypothesis",
@@ -167,7 +167,7 @@ class LighthouseExplorer(MapWalker):
         super().__init__(robot, policies, observer)  # S, position (v0, exit 0), iterations
         self.lighthouse = lighthouse
         self.P = self.S  # S as the explorer perceives it (a probing lighthouse's v0 carries its virtual head)
-        self.beacon = None
+        self.beacon: Beacon | None = None
         self._v0_entries: dict[Signature, int] = {}
         self._v0_sigs: list[Signature] = []
 
@@ -267,7 +267,7 @@ class LighthouseExplorer(MapWalker):
         path = []
         x = v
         while x != V0 and x not in tails:
-            y, entry = self.S.arc((x, toward[x]))
+            y, entry = self.S.target((x, toward[x]))
             path.append((x, y, entry))
             x = y
         motions, expected, arrival = ((), (), None) if x == V0 else tails[x]

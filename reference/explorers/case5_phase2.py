@@ -44,7 +44,7 @@ Examples
 
 from __future__ import annotations
 
-from typing import Protocol
+from typing import Protocol, cast
 
 from topomark.spec.errors import AlgorithmFailed
 from topomark.spec.mapstate import MapDart, PartialMap
@@ -86,15 +86,16 @@ def path_walk(M: PartialMap, path: list[MapDart]) -> tuple[tuple[int, ...], tupl
     """Along ``path`` (darts of S, non-empty): the motions after the first, the signatures sensed after each
     move, and the dart of arrival."""
     motions, expected = [], []
-    v, entry = path[0][0], None
+    v = path[0][0]
+    entry: int | None = None
     for x, exit_ in path:
         if x != v:
             raise AlgorithmFailed(f"internal: the path {path} is not a walk of S")
         if entry is not None:
             motions.append((exit_ - entry) % M.degree(x))
-        v, entry = M.arc((x, exit_))
+        v, entry = M.target((x, exit_))
         expected.append(signature_at(M, v, entry))
-    return tuple(motions), tuple(expected), (v, entry)
+    return tuple(motions), tuple(expected), (v, cast(int, entry))  # the path has an edge
 
 
 def counting(robot: Robot, host: "Host") -> Robot:

@@ -97,7 +97,8 @@ class VertexEdgeThenLighthouse(TwoPhases, VertexEdgeFootprints):
 
     def has_markers(self, it: MarkerStep) -> bool:
         """Lines 9 and 31: "if the robot has one or more markers"; the first no ends phase I."""
-        if self.left() is None or self.left() > 0:
+        left = self.left()
+        if left is None or left > 0:
             return True
         if self.phase_two_from is None:
             self.phase_two_from = it.number

@@ -82,6 +82,8 @@ Examples
 
 from __future__ import annotations
 
+from typing import Any
+
 from topomark.spec.errors import AlgorithmFailed
 from topomark.spec.kit import MarkerOp
 from topomark.spec.signature import Signature, signature_at
@@ -105,7 +107,7 @@ class EdgeCounts(MarkerWalk):
     def __init__(self, robot, policies=None, observer=None, options=None):
         super().__init__(robot, policies, observer, options)
         self.next_count = 1  # markers for the next non-loop edge
-        self.tree: dict[int, tuple] = {}  # count -> (dart, dart) of the marked map edge
+        self.tree: dict[int, tuple[Any, ...] | None] = {}  # count -> (dart, dart) of the marked map edge
 
     def arrive(self, it: MarkerStep, sig: Signature) -> None:
         if not sig.edges:  # observation (1): no marked edge at v_u iff v_u is new
@@ -197,7 +199,7 @@ class VertexCounts(MarkerWalk):
             t = self.explored_exit(x, got)
             if t is not None:  # lines 25-31: e'' is x's exit t, reached by relative exit p; e' is p before it
                 self.loop(it, (x, (t - p) % degree))
-                self.position = self.M.arc((x, t))
+                self.position = self.M.target((x, t))
                 return
             self.robot.move(0, "retrace")  # line 33/35: back to v_k'
         raise AlgorithmFailed(f"out of markers (fewer than the assured Σ k): iteration {it.number}: no edge of "

@@ -23,6 +23,8 @@ from T before any motion; Enhancement-3).
 
 from __future__ import annotations
 
+from typing import cast
+
 from topomark.spec.signature import Signature
 
 from topomark.reference.explorers.inconsistency import inconsistent
@@ -38,13 +40,14 @@ class TrieNode:
     def __init__(self, sig: Signature, parent: "TrieNode | None", motion: int | None, kind: str):
         self.sig, self.parent, self.motion, self.kind = sig, parent, motion, kind
         self.children: dict[int, TrieNode] = {}
-        self.depth = 0 if parent is None else parent.depth + 1
+        self.depth: int = 0 if parent is None else parent.depth + 1
 
     def path(self) -> list[int]:
         """The motions from v_u to this node."""
-        out, x = [], self
+        out: list[int] = []
+        x = self
         while x.parent is not None:
-            out.append(x.motion)
+            out.append(cast(int, x.motion))  # every node but v_u has its motion
             x = x.parent
         return out[::-1]
 
@@ -52,7 +55,7 @@ class TrieNode:
         """The first motion of the path from v_u to this node (None at v_u)."""
         node = self
         while node.depth > 1:
-            node = node.parent
+            node = cast(TrieNode, node.parent)  # below depth 1, a node has its parent
         return node.motion
 
 
@@ -106,7 +109,7 @@ class ExecutionTrie:
         """The reverse motion (line 17): back to the parent, facing the exit the robot came back through."""
         node = self.at
         self.robot.move((-self.offset) % node.sig.degree, purpose)
-        self.at, self.offset = node.parent, node.motion
+        self.at, self.offset = cast(TrieNode, node.parent), cast(int, node.motion)  # the robot is not at v_u
 
     def goto(self, depth: int, purpose: str = "retrace") -> None:
         """Retrace up the robot's path to the node at ``depth``."""

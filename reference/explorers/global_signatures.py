@@ -82,12 +82,12 @@ def validate(walker: Walker, shape: Shape, root: int, entry: int, entry_check: b
             stack.pop()
             if stack:  # up to the parent
                 robot.move((back[v] - ent) % shape.degree(v), "validation")
-                ent = shape.arc((v, back[v]))[1]
+                ent = shape.target((v, back[v]))[1]
                 moves += 1
             continue
         stack[-1] = (v, k + 1)
         y = children[v][k]
-        w, j = shape.arc((v, y))
+        w, j = shape.target((v, y))
         sig = robot.move((y - ent) % shape.degree(v), "validation")
         moves += 1
         if sig.degree != shape.degree(w):  # mismatch: back through the entry edge, then up the branch
@@ -102,7 +102,7 @@ def validate(walker: Walker, shape: Shape, root: int, entry: int, entry_check: b
     if not ok:  # up the branch the robot is on, by the edges it came down
         for u, _ in reversed(stack[1:]):
             robot.move((back[u] - ent) % shape.degree(u), "retrace")
-            ent = shape.arc((u, back[u]))[1]
+            ent = shape.target((u, back[u]))[1]
             moves += 1
     walker.turn = (ent - entry) % shape.degree(root)
     return ok, moves
@@ -111,8 +111,8 @@ def validate(walker: Walker, shape: Shape, root: int, entry: int, entry_check: b
 def shows_entry(shape: Shape, v: int) -> bool:
     """L1369: ``v``'s neighbours are all known and their degree list D has no proper rotation onto itself,
     so the robot entering ``v`` can tell its entry edge by visiting them (§5.1's test)."""
-    row = shape.rows[v]
-    if any(x is None for x in row):
+    row = [x for x in shape.rows[v] if x is not None]
+    if len(row) < shape.degree(v):
         return False
     D = tuple(shape.degree(x[0]) for x in row)
     return all(D[r:] + D[:r] != D for r in range(1, len(D)))
@@ -127,7 +127,7 @@ def _probe(robot, shape: Shape, v: int, ent: int) -> tuple[bool, int, int]:
         sig = robot.move((x - ent) % d, "probe")
         robot.move(0, "probe")
         ent, moves = x, moves + 2
-        if sig.degree != shape.degree(shape.arc((v, x))[0]):
+        if sig.degree != shape.degree(shape.target((v, x))[0]):
             return False, ent, moves
     return True, ent, moves
 

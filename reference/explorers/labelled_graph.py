@@ -50,6 +50,8 @@ Examples
 
 from __future__ import annotations
 
+from typing import cast
+
 from topomark.spec.errors import AlgorithmFailed
 from topomark.spec.kit import MarkerOp
 from topomark.spec.signature import Signature
@@ -66,7 +68,7 @@ DEPTH_FIRST = Policies(edge="lifo")
 def entry_exit(sig: Signature) -> tuple[int, int]:
     """(map vertex, map exit entered by) that a labelled place's signature ``sig`` names: label L is map vertex
     L − 1; its markers point along its exit 0, ``vertex_direction`` exits clockwise of the entry."""
-    return sig.vertex_count - 1, (-sig.vertex_direction) % sig.degree
+    return sig.vertex_count - 1, (-cast(int, sig.vertex_direction)) % sig.degree  # labels are directional
 
 
 class LabelledGraphDFS(MarkerWalk):

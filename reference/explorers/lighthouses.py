@@ -76,7 +76,7 @@ Examples
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
-from typing import Any, Callable, Iterator
+from typing import Any, Callable, Iterator, cast
 
 from topomark.spec.errors import InvalidInput, clip
 from topomark.spec.kit import Kit, MarkerOp, ThreadOp
@@ -208,7 +208,8 @@ class Lighthouse:
         if not self.probing:
             return Beacon(table, P, walk_steps=walk_steps)
         raw = frozenset(signature_at(S, v0, e) for e in range(S.degree(v0)))
-        return Beacon(table, P, recognise or self.recognition(S, v0), raw, walk_steps)
+        recognition = cast(Callable[..., Any], self.recognition)  # probing: it has one
+        return Beacon(table, P, recognise or recognition(S, v0), raw, walk_steps)
 
     def placed_ops(self, world, state: tuple) -> Iterator[tuple[tuple, MarkerOp | ThreadOp]]:
         """(robot state, op) for each op the start makes, walking the script's motions on ``world`` (anything

@@ -242,7 +242,8 @@ def search_pair(light, robot, S: PartialMap):
     for _ in range(L):
         exits.append(rng.below(degrees[-1]))
         degrees.append(robot.move(exits[-1], "establish").degree)
-    counts, last = Counter(), {}
+    counts: Counter[Any] = Counter()
+    last: dict[Any, int] = {}
     for s in range(1, L + 1):
         pair = tuple(sorted((degrees[s - 1], degrees[s])))
         if pair[0] != pair[1]:
@@ -286,11 +287,12 @@ def search_degree_list(light, robot, S: PartialMap):
         exits.append((f + move) % sig.degree)
         known0 = sig.degree if depth == 1 else None
         sig = robot.move(move, "establish")
-    counts, last = Counter(), {}
-    for t, D in enumerate(lists):
-        if aperiodic(D):
-            counts[canonical(D)] += 1
-            last[canonical(D)] = t
+    counts: Counter[Any] = Counter()
+    last: dict[Any, int] = {}
+    for t, seen_list in enumerate(lists):
+        if aperiodic(seen_list):
+            counts[canonical(seen_list)] += 1
+            last[canonical(seen_list)] = t
     if not counts:
         raise AlgorithmFailed(f"no vertex whose neighbour {'degrees' if depth == 1 else 'views'} D (distance "
                               f"{depth}) have no proper cyclic rotation onto themselves in a walk of {L} steps "

@@ -37,6 +37,8 @@ True
 
 from __future__ import annotations
 
+from typing import cast
+
 from collections import deque
 
 from topomark.spec.mapstate import MapDart, PartialMap
@@ -68,6 +70,10 @@ class Shape:
 
     def arc(self, dart: MapDart) -> MapDart | None:
         return self.rows[dart[0]][dart[1]]
+
+    def target(self, dart: MapDart) -> MapDart:
+        """Where an explored ``dart`` leads (the caller knows it is joined)."""
+        return cast(MapDart, self.rows[dart[0]][dart[1]])
 
     def complete(self) -> bool:
         """No unexplored exit: a "completed model" (L1373)."""
@@ -178,7 +184,7 @@ def walk_equivalent(a: Shape, pose_a: MapDart, b: Shape, pose_b: MapDart) -> boo
         if d != b.degree(vb):
             return False
         for k in range(d):
-            pair = (a.arc((va, (ea + k) % d)), b.arc((vb, (eb + k) % d)))
+            pair = (a.target((va, (ea + k) % d)), b.target((vb, (eb + k) % d)))
             if pair not in seen:
                 seen.add(pair)
                 queue.append(pair)

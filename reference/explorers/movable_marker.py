@@ -80,7 +80,7 @@ Examples
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Callable
+from typing import Callable, cast
 
 from topomark.spec.errors import ExplorerFault
 from topomark.spec.kit import MarkerOp
@@ -218,4 +218,4 @@ class DirectionalMovableMarkerExplorer(MovableMarkerExplorer):
         the marker is picked up where it lies, v_k'."""
         x, entry = self.position
         self.robot.operate(PICK_UP)
-        return (entry + sig.vertex_direction) % self.S.degree(x)
+        return (entry + cast(int, sig.vertex_direction)) % self.S.degree(x)  # the directional marker's reading

@@ -16,7 +16,7 @@
 from __future__ import annotations
 
 from collections import deque
-from typing import Container
+from typing import Container, cast
 
 from topomark.spec.errors import InvalidInput
 from topomark.spec.mapstate import MapDart, PartialMap
@@ -52,7 +52,7 @@ class Policies:
         if self.edge == "nearest" and type(self).choose_edge is Policies.choose_edge:
             U = S.unexplored
             found, _, parent = _layers(S, root, U.ends())
-            return U.pop(U.first_at(found)), parent
+            return U.pop(cast(int, U.first_at(found))), parent  # _layers stops at a layer with an end in U
         dist, _, parent = bfs(S, root)
         return self.choose_edge(S, dist), parent
 
@@ -89,8 +89,9 @@ def bfs(S: PartialMap, root: int) -> tuple[dict[int, int], dict[int, int], dict[
     memo = getattr(S, "_bfs_memo", None)
     if memo is not None and memo[0] == key:
         return memo[1]
-    S._bfs_memo = (key, _bfs(S, root))
-    return S._bfs_memo[1]
+    memo = (key, _bfs(S, root))
+    setattr(S, "_bfs_memo", memo)  # kept on the map itself, not a field of PartialMap
+    return memo[1]
 
 
 def _bfs(S: PartialMap, root: int) -> tuple[dict[int, int], dict[int, int], dict[int, MapDart]]:
@@ -121,7 +122,8 @@ def _layers(S: PartialMap, root: int, wanted: Container[int]) -> tuple[list[int]
     """:func:`bfs` layer by layer from ``root``, stopped after the first layer holding a vertex of ``wanted``:
     those vertices, and the distances and parents of every vertex reached (bfs's, as the queue meets the
     layers in the same order)."""
-    dist, parent, layer, d = {root: 0}, {}, [root], 0
+    parent: dict[int, MapDart] = {}
+    dist, layer, d = {root: 0}, [root], 0
     if root in wanted:
         return [root], dist, parent
     joined = S.joined

@@ -103,7 +103,7 @@ def migrate(S: PartialMap, T: dict, stats: Counter, darts, light=None) -> None:
     for dart in darts or ():
         rec = T.pop(dart, None)
         if rec is not None:
-            far = S.arc(dart)
+            far = S.target(dart)
             if signature_at(S, far[0], far[1]) != rec.sig:
                 raise _contradiction(S, f"T[{dart}]", far, rec.sig, light, "a recorded perception contradicts the map")
             _absorb(S, T, stats, far, rec, lambda _: True, light)

@@ -40,6 +40,8 @@ Examples
 
 from __future__ import annotations
 
+from typing import cast
+
 from topomark.spec.errors import TopomarkFault
 from topomark.spec.kit import MarkerOp, ThreadOp
 from topomark.spec.signature import Signature
@@ -78,7 +80,7 @@ class ThreadAsMarker:
         if op.pick_up:
             self._robot.operate(ThreadOp("untie"))
         else:
-            self._robot.operate(ThreadOp("tie", direction=op.direction))
+            self._robot.operate(ThreadOp("tie", direction=cast("int | None", op.direction)))  # a vertex marker
             self._robot.operate(ThreadOp("leave"))
 
 

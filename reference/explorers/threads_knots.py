@@ -52,8 +52,11 @@ Examples
 
 from __future__ import annotations
 
+from typing import cast
+
 from topomark.spec.errors import ExplorerFault
 from topomark.spec.signature import Signature
+from topomark.spec.thread import ThreadMark
 
 from topomark.reference.explorers.threads_explore import ThreadIteration, ThreadWalker
 
@@ -71,16 +74,17 @@ class KnotThreadExplorer(ThreadWalker):
             self.tie()
             self.knot(1)  # v0 = map vertex 0
         vk = self.position[0]
-        i = self.open_exit(vk)
+        i = cast(int, self.open_exit(vk))  # the closest unexplored edge leaves vk
         self.S.unexplored.remove((vk, i))
         it = ThreadIteration(len(self.iterations) + 1, (vk, i))
         it.signature = sig = self.lay(i, "new")
-        if not sig.thread.knots:
+        thread = cast(ThreadMark, sig.thread)  # the thread was just laid in here
+        if not thread.knots:
             it.how = "new"
             self.non_loop_augment(it, sig)
             self.knot(self.position[0] + 1)
         else:
-            w = sig.thread.knots - 1
+            w = thread.knots - 1
             self.check_knots(it, w, sig)
             opens = self.open_exits(w)
             if len(opens) == 1:
@@ -106,7 +110,7 @@ class KnotThreadExplorer(ThreadWalker):
     def probe(self, it: ThreadIteration, w: int, sig: Signature) -> int:
         """L2086: over the lowest thread-marked exit p ≠ e to a known neighbour (its knots say which) and back;
         returns e' (absolute exit of w); the robot ends at w entered by that probed edge."""
-        p = min(x for x, _ in sig.thread.edges if x != 0)
+        p = min(x for x, _ in cast(ThreadMark, sig.thread).edges if x != 0)  # the thread lies at w
         seen = self.robot.move(p, "probe")
         t = seen.thread.knots - 1 if seen.thread is not None else -1
         back = [y for y, link in enumerate(self.S.links(t)) if link is not None and link[0] == w] if t >= 0 else []
@@ -115,7 +119,7 @@ class KnotThreadExplorer(ThreadWalker):
             # (L2086): anything else is a bug, not an outcome.
             raise ExplorerFault(f"thread probe: {seen} at iteration {it.number} is no known neighbour of map vertex "
                                 f"{w} by its knots, which L2086 rules out: a bug in the explorer")
-        x = self.S.arc((t, back[0]))[1]  # the probed edge's exit at w
+        x = self.S.target((t, back[0]))[1]  # the probed edge's exit at w
         self.laid.append((w, x))
         self.position = (t, back[0])
         self.rewind("probe")

@@ -29,6 +29,8 @@ Examples
 
 from __future__ import annotations
 
+from typing import cast
+
 from topomark.spec.errors import ExplorerFault
 from topomark.spec.mapstate import MapDart
 
@@ -78,24 +80,29 @@ class TraversalMap:
 
     def path(self, source: int, target: int) -> list[MapDart]:
         """The exits (TM vertex, exit) the robot leaves by, walking the tree from ``source`` to ``target``."""
-        up, down = [], []
+        up: list[MapDart] = []
+        down: list[MapDart] = []
         a, b = source, target
         while self.depth[a] > self.depth[b]:
             up.append((a, 0))
-            a = self.parent[a][0]
+            a = self._up(a)[0]
         while self.depth[b] > self.depth[a]:
-            down.append(self.parent[b])
-            b = self.parent[b][0]
+            down.append(self._up(b))
+            b = self._up(b)[0]
         while a != b:
             up.append((a, 0))
-            a = self.parent[a][0]
-            down.append(self.parent[b])
-            b = self.parent[b][0]
+            a = self._up(a)[0]
+            down.append(self._up(b))
+            b = self._up(b)[0]
         return up + down[::-1]
+
+    def _up(self, v: int) -> MapDart:
+        """The parent edge of ``v``, not the start (only the start has none)."""
+        return cast(MapDart, self.parent[v])
 
     def arrive(self, dart: MapDart) -> MapDart:
         """Where leaving by ``dart`` leads: (TM vertex, entry exit)."""
         v, x = dart
         if x == 0 and v != 0:
-            return self.parent[v]
+            return self._up(v)
         return (self.children[dart], 0)

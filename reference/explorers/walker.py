@@ -154,7 +154,7 @@ class MapWalker(ExplorerState):
         vertex entered where ``stop(vertex, entry, signature)`` holds: (vertex, entry, signature), else None."""
         for dart in path:
             sig = self.take_exit(dart[1], purpose)
-            self.position = self.S.arc(dart)
+            self.position = self.S.target(dart)
             if stop is not None and stop(self.position[0], self.position[1], sig):
                 return self.position[0], self.position[1], sig
         return None
