@@ -115,6 +115,8 @@ Examples
 
 from __future__ import annotations
 
+from typing import cast
+
 from topomark.spec.kit import MarkerOp
 from topomark.spec.mapstate import PartialMap
 from topomark.spec.signature import Signature, signature_at
@@ -162,7 +164,8 @@ class EdgeInfo(Marking):
     def candidates(self, walker: FootprintSearch, it: MarkerStep, places: list[int]) -> list[int]:
         """The case's own candidates that are potentially confusing by edgeINFO: some unexplored entry reads what
         was sensed at v_u (``it.signature``)."""
-        return [w for w in places if matching_darts(walker.M, w, it.signature)]
+        sig = cast(Signature, it.signature)  # sensed at v_u before its candidates are asked
+        return [w for w in places if matching_darts(walker.M, w, sig)]
 
     def drop_on_entry(self, walker: FootprintSearch, it: MarkerStep, count: int) -> None:
         """The marker(s) on a non-loop e, head at v_u (the new vertex, where they are dropped), tail at v_k."""

@@ -37,7 +37,7 @@ Examples
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 from topomark.spec.errors import AlgorithmFailed, OutOfMarkers
@@ -58,6 +58,8 @@ class MarkerStep(StepRecord):
 
     dropped: int = 0  # markers dropped in this iteration
     probes: int = 0  # back-link probes (Algorithm 6.2 lines 21-35)
+    candidates: list[int] = field(default_factory=list)  # known vertices that could be v_u (footprint searches)
+    found: int | None = None  # the known vertex v_u turned out to be (footprint searches)
 
     def to_json(self) -> dict[str, Any]:
         return {"iteration": self.number, "edge": list(self.edge), "signature": str(self.signature),

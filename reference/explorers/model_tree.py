@@ -80,7 +80,7 @@ Example: ``topomark explore chain:n=5 --algorithm model-tree --window 5``.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Callable
+from typing import Callable, cast
 
 from topomark.spec.errors import AlgorithmFailed, LimitReached, TopomarkFault
 from topomark.spec.mapstate import MapDart, PartialMap
@@ -153,6 +153,15 @@ class ModelTreeExplorer(ExplorerState):
         self._sole: tuple[Shape | None, int] = (None, 0)  # the sole completed shape and the step it became so
         self._checked: tuple[tuple, bool] = ((), False)  # the live shapes last compared walk by walk, and the answer
 
+    @property
+    def _tm(self) -> TraversalMap:
+        """TM, made by :meth:`start`, which runs before every step."""
+        return cast(TraversalMap, self.tm)
+
+    @property
+    def _walker(self) -> Walker:
+        return cast(Walker, self.walker)
+
     # -- the explorer contract -------------------------------------------------------
     def start(self) -> None:
         """TM and the one model hold the start vertex, entered by exit 0 (the exit the robot faces)."""
@@ -182,7 +191,7 @@ class ModelTreeExplorer(ExplorerState):
         if number > self.options["max-steps"]:
             raise LimitReached(f"--max-steps {self.options['max-steps']} reached: {len(self.live)} live model(s), "
                                f"{self._completed_count()} completed, none returned")
-        frontier = self.tm.frontier()
+        frontier = self._tm.frontier()
         if frontier is None:
             return self._tm_complete(number)
         record = Step(number, frontier)
@@ -199,12 +208,12 @@ class ModelTreeExplorer(ExplorerState):
     # -- lines 1-2: TM -----------------------------------------------------------------
     def _walk_tm(self, frontier: MapDart) -> tuple[list[int], list[int]]:
         """Walk TM to the frontier vertex and take its next exit; the logical motions and the degrees sensed."""
-        tm, (here, entry) = self.tm, self._tm_pose
+        tm, (here, entry) = self._tm, self._tm_pose
         motions, degrees = [], []
         for v, x in tm.path(here, frontier[0]) + [frontier]:
             k = (x - entry) % tm.degree[v]
             new = (v, x) == frontier
-            degree = self.walker.move(k, "new" if new else "travel")
+            degree = self._walker.move(k, "new" if new else "travel")
             motions.append(k)
             degrees.append(degree)
             if new:
@@ -258,7 +267,7 @@ class ModelTreeExplorer(ExplorerState):
             if self.options["signatures"] == "local":
                 closing.outcome = "local"
             else:
-                ok, closing.moves = validate(self.walker, child, w, hyp[1], self.options["entry-check"] == "yes")
+                ok, closing.moves = validate(self._walker, child, w, hyp[1], self.options["entry-check"] == "yes")
                 closing.outcome = "case 3" if ok else "case 2"
                 if not ok:
                     continue
@@ -295,7 +304,7 @@ class ModelTreeExplorer(ExplorerState):
     def _apply_cues_after(self, record: Step) -> None:
         """``cue-diameter``: once TM is explored to depth D, every model not completed is voided."""
         D = self.options["cue-diameter"]
-        if D is not None and self.tm.explored_depth() >= D:
+        if D is not None and self._tm.explored_depth() >= D:
             kept = [m for m in self.live if m.shape.complete()]
             record.voided += len(self.live) - len(kept)
             self.live = kept
@@ -314,7 +323,7 @@ class ModelTreeExplorer(ExplorerState):
         o = self.options
         if len(self.live) == 1 and self.live[0].shape.complete():  # the truth is never voided: this is it
             return self._finish(self.live[0])
-        if o["cue-diameter"] is not None and self.tm.explored_depth() >= o["cue-diameter"]:
+        if o["cue-diameter"] is not None and self._tm.explored_depth() >= o["cue-diameter"]:
             shapes = {id(m.shape) for m in self.live}
             if len(shapes) == 1:
                 return self._finish(self.live[0])

@@ -37,7 +37,7 @@ def integer_param(name: str, value: Any, minimum: int) -> int:
     """``value`` as an int of at most 18 digits (like every JSON and CLI integer) and ``>= minimum``."""
     if isinstance(value, bool) or not isinstance(value, Integral):
         raise InvalidInput(f"{name} must be an integer, got {value!r}")
-    if abs(value) >= 10**18:  # checked first: a 5,000-digit int cannot even be printed in the message
+    if abs(int(value)) >= 10**18:  # checked first: a 5,000-digit int cannot even be printed in the message
         raise InvalidInput(f"{name} is out of range (at most 18 digits)")
     if value < minimum:
         raise InvalidInput(f"{name} must be >= {minimum}, got {value}")
@@ -143,6 +143,6 @@ def wheel_hub_last(n: int) -> World:
     check_size(n, 2 * (n - 1), f"wheel-hub-last:n={n}")
     k = n - 1  # rim vertices
     hub = str(k)
-    rotation = {str(i): (str((i + 1) % k), hub, str((i - 1) % k)) for i in range(k)}
+    rotation: dict[str, tuple[str, ...]] = {str(i): (str((i + 1) % k), hub, str((i - 1) % k)) for i in range(k)}
     rotation[hub] = tuple(str(i) for i in range(k))
     return World(rotation, (), None)

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import math
 import re
-from typing import Any, Hashable, Iterable, Mapping
+from typing import Any, Hashable, Iterable, Mapping, cast
 
 import networkx as nx
 
@@ -86,7 +86,7 @@ def _graph_of(graph_or_edges: nx.Graph | Iterable[tuple[Hashable, Hashable]]) ->
     """The simple graph given as is, or built from an edge list (a duplicate edge is refused)."""
     if isinstance(graph_or_edges, nx.Graph):
         return _simple_graph(graph_or_edges, "from_positions")
-    graph = nx.Graph()
+    graph: nx.Graph[Hashable] = nx.Graph()
     for edge in graph_or_edges:
         try:
             u, v = edge
@@ -134,7 +134,7 @@ def _clockwise(graph: nx.Graph, v: Hashable, points: Mapping[Hashable, tuple[flo
 
 
 def from_positions(graph_or_edges: nx.Graph | Iterable[tuple[Hashable, Hashable]],
-                   pos: Mapping[Hashable, tuple[float, float]]) -> World:
+                   pos: Mapping[Any, tuple[float, float]]) -> World:
     """Embed a graph drawn in the plane: neighbours listed clockwise by angle (§3.1.1).
 
     ``graph_or_edges`` is an undirected simple networkx graph or an iterable of
@@ -174,7 +174,7 @@ def circle_positions(n: int) -> dict[int, tuple[float, float]]:
 
 
 def on_circle(n: int, edges: Iterable[tuple[int, int]]) -> World:
-    graph = nx.Graph()
+    graph: nx.Graph[int] = nx.Graph()
     graph.add_nodes_from(range(n))
     graph.add_edges_from(edges)
     return from_positions(graph, circle_positions(n))
@@ -198,6 +198,7 @@ def planar(graph: nx.Graph) -> World:
             "give node positions to embed it anyway"
         )
     names = _names(graph.nodes)
+    embedding = cast("nx.PlanarEmbedding[Hashable]", embedding)  # planar: the embedding, not a counterexample
     order = {v: list(embedding.neighbors_cw_order(v)) if graph.degree(v) else [] for v in graph.nodes}
     return _world_from_neighbours(names, order)
 

@@ -55,7 +55,7 @@ def small_world(n: int, k: int, p: float, seed: int = 0) -> World:
     check_size(n, min(n * k, n * (n - 1) // 2) if p > 0 else n * k // 2, f"small-world:n={n},k={k},p={p!r}")
     rng = random.Random(seed_param(seed))
     ring = [(u, (u + j) % n) for u in range(n) for j in range(1, k // 2 + 1)]
-    graph = nx.Graph()
+    graph: nx.Graph[int] = nx.Graph()
     graph.add_nodes_from(range(n))
     graph.add_edges_from(ring)
     for u, _v in ring:
@@ -66,7 +66,12 @@ def small_world(n: int, k: int, p: float, seed: int = 0) -> World:
     return from_positions(graph, circle_positions(n))
 
 
-class OtherPairs(Sequence):
+def _pair(u: int, v: int) -> tuple[int, int]:
+    """The pair sorted."""
+    return (u, v) if u < v else (v, u)
+
+
+class OtherPairs(Sequence[tuple[int, int]]):
     """The vertex pairs ``(i, j)``, ``i < j < n``, in lexicographic order, minus the sorted ``taken`` ones.
 
     Equal, element by element, to the list of those pairs, but computed on
@@ -91,7 +96,7 @@ class OtherPairs(Sequence):
     def __len__(self) -> int:
         return self._len
 
-    def __getitem__(self, k: int) -> tuple[int, int]:
+    def __getitem__(self, k: int) -> tuple[int, int]:  # type: ignore[override]  # indices only (no slices)
         if not 0 <= k < self._len:
             raise IndexError(k)
         r = k + bisect.bisect_right(self._gaps, k)
@@ -128,7 +133,7 @@ def random_graph(n: int, fraction: float, seed: int = 0) -> World:
     rng = random.Random(seed_param(seed))
     order = list(range(n))
     rng.shuffle(order)
-    edges = {tuple(sorted((order[i], order[rng.randrange(i)]))) for i in range(1, n)}
+    edges = {_pair(order[i], order[rng.randrange(i)]) for i in range(1, n)}
     edges.update(rng.sample(OtherPairs(n, edges), count - len(edges)))
     return on_circle(n, sorted(edges))
 
