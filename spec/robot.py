@@ -23,18 +23,26 @@ Examples
 
 from __future__ import annotations
 
-from typing import Iterable, Sequence
+from typing import Iterable, Protocol, Sequence
 
 from topomark.spec.errors import InvalidInput
 from topomark.spec.signature import Signature, signature_at
 from topomark.spec.world import World
 
-__all__ = ["State", "exit_of", "step", "run", "perceive", "sense"]
+__all__ = ["State", "Rotation", "exit_of", "step", "run", "perceive", "sense"]
 
 State = tuple[str, int]
 
 
-def exit_of(world: World, state: State, motion: int) -> int:
+class Rotation(Protocol):
+    """What a motion needs: degrees and where each dart leads (a :class:`World`, or a run's marker layer)."""
+
+    def degree(self, v: str) -> int: ...
+
+    def target(self, dart: State) -> State: ...
+
+
+def exit_of(world: Rotation, state: State, motion: int) -> int:
     """The absolute exit index motion ``motion`` leaves ``state`` through."""
     v, entry = state
     d = world.degree(v)
@@ -43,7 +51,7 @@ def exit_of(world: World, state: State, motion: int) -> int:
     return (entry + motion) % d
 
 
-def step(world: World, state: State, motion: int) -> State:
+def step(world: Rotation, state: State, motion: int) -> State:
     """The state reached by one motion: the far end of the chosen exit, entered by its reverse dart."""
     return world.target((state[0], exit_of(world, state, motion)))
 

@@ -38,6 +38,7 @@ import tomllib
 from collections import Counter
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 from topomark.spec.errors import TopomarkFault
 
@@ -93,7 +94,8 @@ class Claim:
         if row.get("backing") not in BACKINGS:
             raise TopomarkFault(f"claims.toml: claim {name!r}: backing {row.get('backing')!r} is not one of "
                                 + ", ".join(BACKINGS))
-        claim = cls(**{k: tuple(v) if isinstance(v, list) else v for k, v in row.items()})
+        fields: dict[str, Any] = {k: tuple(v) if isinstance(v, list) else v for k, v in row.items()}
+        claim = cls(**fields)
         claim._validate()
         return claim
 

@@ -44,7 +44,7 @@ layer (:class:`~topomark.reference.replay.robot_layer.RobotLayer`), and raises
 from __future__ import annotations
 
 import json
-from typing import Any
+from typing import Any, cast
 
 from topomark.spec.errors import CheckFailure, Violation
 from topomark.spec.invariants import IncrementalInvariants
@@ -81,7 +81,7 @@ class Algorithm31Layer:
         self.new_perception: str | None = None  # the perception of this iteration's new move, once made
         self.purposes: dict[str, int] = {}  # this iteration's moves by purpose
         self.invariants: IncrementalInvariants | None = None
-        self.P = None  # S as the explorer perceives it (lighthouses.Lighthouse.perceive)
+        self.P: PartialMap | None = None  # S as the explorer perceives it (lighthouses.Lighthouse.perceive)
         self.raw: set[str] = set()  # v0's own signatures, for a lighthouse recognised by probing
         self.anchor = robot.start
         self.establishing = 0  # establish moves before v0 is established
@@ -203,7 +203,7 @@ class Algorithm31Layer:
         S.unexplored.remove(e)
         # H is judged on S and U as they were before the join, reported after I-1/I-2: a wrong join outranks
         # records that contradict it.
-        false = None if rec["by_marker"] else check_hypotheses(self.P, rec, sig, self.policies, self.enhancement, it,
+        false = None if rec["by_marker"] else check_hypotheses(cast(PartialMap, self.P), rec, sig, self.policies, self.enhancement, it,
                                                                where)
         self.new_perception, self.purposes = None, {}
         self.join(rec, sig, it)
@@ -240,7 +240,7 @@ class Algorithm31Layer:
             diverge(it, "validation and retrace moves only to test hypotheses", f"{tested} moves, no hypotheses")
 
     def join(self, rec: dict, sig: Signature, it: str) -> None:
-        S = self.S
+        S = cast(PartialMap, self.S)  # ready: v0 is established
         e = tuple(rec["edge"])
         a, b = tuple(rec["joined"][0]), tuple(rec["joined"][1])
         if a != e:
@@ -279,5 +279,5 @@ class Algorithm31Layer:
             diverge("end", "U empty and S complete", f"U = {S.unexplored[:5]}")
         verdict = check_map(self.robot.sim.world.with_start(world.start), S.to_world())
         if not verdict.isomorphic:
-            m = verdict.result.mismatch
+            m = cast(Violation, verdict.result.mismatch)  # not isomorphic: the mismatch
             raise Diverged(Violation("extended isomorphism", m.where, m.expected, m.found, "the final map"))

@@ -9,6 +9,8 @@ verdict (exit 1) naming the line.
 
 from __future__ import annotations
 
+from typing import NoReturn
+
 from topomark.spec.errors import Violation
 
 __all__ = ["Diverged", "diverge"]
@@ -20,6 +22,6 @@ class Diverged(Exception):
         self.violation = violation
 
 
-def diverge(where: str, expected: str, found: str, detail: str = "", check: str = "replay") -> None:
+def diverge(where: str, expected: str, found: str, detail: str = "", check: str = "replay") -> NoReturn:
     """Raise the divergence ``check`` at ``where``: ``expected`` by the world or the spec, ``found`` in the trace."""
     raise Diverged(Violation(check, where, expected, found, detail))

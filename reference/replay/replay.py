@@ -50,11 +50,12 @@ from __future__ import annotations
 
 from collections import deque
 from dataclasses import dataclass
-from typing import Any, Iterable
+from typing import Any, Iterable, cast
 
 from topomark.spec.errors import InvalidInput, Violation
 from topomark.spec.world import World
 
+from topomark.reference.explorers.lighthouses import Lighthouse
 from topomark.reference.replay.algorithm31_layer import Algorithm31Layer
 from topomark.reference.replay.divergence import Diverged
 from topomark.reference.replay.rerun_layer import RerunLayer, rerun_spec
@@ -89,7 +90,8 @@ class _Replay:
     def __init__(self, world: World, header: dict[str, Any], source: str):
         light, family = header_lighthouse(header), header_family(header)
         self.robot = RobotLayer(world, light, header_kit(header))
-        self.algorithm = Algorithm31Layer(self.robot, world, header, light, source) if family.events else None
+        self.algorithm = Algorithm31Layer(self.robot, world, header, cast(Lighthouse, light), source) \
+            if family.events else None  # Algorithm 3.1's family always has its lighthouse
         spec = rerun_spec(header)
         self.rerun = RerunLayer(world, header, spec, source) if spec is not None else None
         self.layers = family.layers + (("re-run",) if self.rerun is not None else ())
@@ -122,10 +124,10 @@ class _Replay:
             sensed = robot.op(rec)
             if alg is not None:
                 alg.op(rec, sensed)
-        elif kind == "drop":
-            alg.drop(rec)
+        elif kind == "drop":  # Algorithm 3.1's events: alg is there (the trace's checked family records them)
+            cast(Algorithm31Layer, alg).drop(rec)
         elif kind == "iteration":
-            alg.iteration(rec, where)
+            cast(Algorithm31Layer, alg).iteration(rec, where)
         elif kind == "end":
             robot.end(rec)
             if alg is not None:

@@ -48,9 +48,11 @@ them to agree.  The end-of-run verdict always uses the full predicates.
 
 from __future__ import annotations
 
+from typing import Any, NoReturn, cast
+
 from topomark.spec.errors import CheckFailure, TopomarkFault, Violation
-from topomark.spec.invariants import IncrementalInvariants, check_I1, check_I2, check_lemma1, correspondence
-from topomark.spec.isomorphism import anchored, verify_witness
+from topomark.spec.invariants import Anchor, IncrementalInvariants, check_I1, check_I2, check_lemma1, correspondence
+from topomark.spec.isomorphism import Witness, anchored, verify_witness
 
 from topomark.reference.algorithms.algorithm_spec import ALGORITHM_3_1_CHECKS, CHECKS
 
@@ -77,15 +79,15 @@ class Checker:
         self.sim = simulator
         self.world = simulator.world
         self.t_prev = simulator.world.m
-        self.markers = None
+        self.markers: tuple[Any, ...] | None = None
         self.passed = 0
         self.mode = mode
         self.checks = frozenset(checks)
-        self.anchor = None
+        self.anchor: Anchor = cast(Anchor, None)  # φ's anchor, fixed by after_start before any check reads it
         self.incremental: IncrementalInvariants | None = None
         self.spec = spec  # the algorithm's registry entry: its marker bound, and whether it is topomark's own
 
-    def _fail(self, it, violation: Violation) -> None:
+    def _fail(self, it: Any, violation: Violation) -> NoReturn:
         detail = f"iteration {it}" + (f"; {violation.detail}" if violation.detail else "")
         raise CheckFailure(Violation(violation.check, violation.where, violation.expected, violation.found, detail,
                                      {"iteration": it}))
@@ -139,7 +141,7 @@ class Checker:
         models = list(explorer.models())
         for S, pose in models:
             phi = correspondence(S, self.sim.world, self.anchor)
-            if check_I1(S, self.sim.world, self.anchor, phi) is None and \
+            if check_I1(S, self.sim.world, self.anchor, phi) is None and phi.witness is not None and \
                     phi.witness.image(S, pose) == self.sim.state:
                 self.passed += 1
                 return
@@ -155,7 +157,7 @@ class Checker:
         self.world = self.sim.world  # markers dropped during the run are part of the world from then on
         if self.incremental is None:
             self.incremental = IncrementalInvariants(S, self.world, anchor)
-        phi = None
+        phi: Witness | IncrementalInvariants | None = None
         if self.mode in ("incremental", "both"):
             quick = self.incremental.rebase(self.world) or self.incremental.update("I-2" in self.checks)
             if self.mode == "incremental":
@@ -165,7 +167,7 @@ class Checker:
             result = correspondence(S, self.world, anchor)
             full = check_I1(S, self.world, anchor, result)
             if full is None and "I-2" in self.checks:
-                full = check_I2(S, self.world, result.witness)
+                full = check_I2(S, self.world, cast(Witness, result.witness))  # I-1 holds: φ exists
             if self.mode == "both" and (quick is None) != (full is None):
                 raise TopomarkFault(f"iteration {n}: topomark's incremental and full I-1/I-2 checks disagree "
                                     f"(full: {full}; incremental: {quick})")
@@ -173,7 +175,8 @@ class Checker:
             phi = result.witness
         if "pose" not in self.checks:
             return
-        believed = phi.image(S, explorer.position) if phi is not self.incremental else phi.image(explorer.position)
+        believed = phi.image(explorer.position) if isinstance(phi, IncrementalInvariants) \
+            else cast(Witness, phi).image(S, explorer.position)
         self._ok(n, None if believed == self.sim.state else Violation(
             "position", f"map dart {explorer.position}", f"the robot at world state {believed}",
             f"the robot at {self.sim.state}", "the explorer does not know where it is"))
@@ -185,7 +188,7 @@ class Checker:
             self._ok(n, None if not S.unexplored else Violation("termination", "U", "empty", str(S.unexplored[:5])))
             result = anchored(S, world, self.anchor[0], self.anchor[1], markers=True, partial=False)
             self._ok(n, result.mismatch)
-            bad = verify_witness(S, world, result.witness)
+            bad = verify_witness(S, world, cast(Witness, result.witness))  # _ok raised on a mismatch
             if bad is not None:
                 raise TopomarkFault(f"the isomorphism's witness fails re-verification: {bad}")
             self.passed += 1

@@ -27,7 +27,7 @@ import json
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
-from topomark.spec.errors import AlgorithmStopped, CheckFailure, InvalidInput, LimitReached, OutOfMarkers
+from topomark.spec.errors import AlgorithmStopped, CheckFailure, InvalidInput, LimitReached, OutOfMarkers, Violation
 from topomark.spec.kit import Kit
 from topomark.spec.marker import EdgeMarker, VertexMarker
 from topomark.spec.markerlayer import MarkerLayer, apply_op
@@ -238,7 +238,7 @@ class _WrongJoins:
 
     def __init__(self, world: World, light: Lighthouse | None):
         self.world, self.deferred = world, light is not None and not light.certain
-        self.first = None
+        self.first: Violation | None = None
 
     def after_iteration(self, checker: Checker | None, explorer, it) -> None:
         """The checker's per-iteration checks, until the first violation; then whether the map outgrew G."""

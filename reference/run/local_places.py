@@ -39,10 +39,12 @@ from __future__ import annotations
 
 from typing import Any
 
+from topomark.spec.world import World
+
 __all__ = ["view", "neighbour_views", "unique_place"]
 
 
-def view(world, v, entry: int, depth: int) -> Any:
+def view(world: World, v: str, entry: int, depth: int) -> Any:
     """What a robot entering ``v`` by ``entry`` learns by probing to ``depth`` (as ``probing.view_here``)."""
     d = world.degree(v)
     if depth == 0:
@@ -50,7 +52,7 @@ def view(world, v, entry: int, depth: int) -> Any:
     return d, tuple(view(world, *world.target((v, (entry + r) % d)), depth - 1) for r in range(1, d))
 
 
-def neighbour_views(world, v, entry: int, depth: int) -> tuple:
+def neighbour_views(world: World, v: str, entry: int, depth: int) -> tuple[Any, ...]:
     """D at ``v`` from ``entry``: each neighbour's view to ``depth`` − 1, by exit counted from ``entry``."""
     d = world.degree(v)
     return tuple(view(world, *world.target((v, (entry + r) % d)), depth - 1) for r in range(d))

@@ -22,10 +22,10 @@ positive verdict's witness is re-verified independently.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, cast
 
 from topomark.spec.errors import CheckFailure
-from topomark.spec.isomorphism import IsoResult, find_isomorphism, verify_witness
+from topomark.spec.isomorphism import IsoResult, Witness, find_isomorphism, verify_witness
 from topomark.spec.marker import VertexMarker
 from topomark.spec.world import World
 
@@ -47,9 +47,9 @@ class MapVerdict:
 
     def to_json(self) -> dict[str, Any]:
         out: dict[str, Any] = {"isomorphic": self.isomorphic, "rule": self.rule, "rule_text": RULES[self.rule]}
-        if self.isomorphic:
+        if self.result.witness is not None:  # present exactly when isomorphic
             out["witness"] = self.result.witness.to_json()
-        else:
+        if self.result.mismatch is not None:
             out["mismatch"] = self.result.mismatch.to_json()
         return out
 
@@ -75,7 +75,7 @@ def check_map(world: World, map_: World) -> MapVerdict:
     markers = rule != "graph"
     result = find_isomorphism(target, map_, markers=markers)  # mismatches read "expected <world>, found <map>"
     if result.isomorphic:
-        bad = verify_witness(target, map_, result.witness, markers=markers)
+        bad = verify_witness(target, map_, cast(Witness, result.witness), markers=markers)
         if bad is not None:
             raise CheckFailure(bad)
     return MapVerdict(result.isomorphic, rule, result)

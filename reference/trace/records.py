@@ -14,6 +14,8 @@ Examples
 
 from __future__ import annotations
 
+from typing import cast
+
 from topomark.spec.kit import Kit
 from topomark.spec.world import World
 
@@ -39,7 +41,7 @@ def trace_header(algorithm: str, policies: Policies, light: Lighthouse | None, w
     if light is None or light.name != "directional-vertex":
         header.update(format=TRACE_FORMAT_2, family=family or family_of(algorithm).name,
                       lighthouse=None if light is None else light.name,
-                      kit=(light.kit if kit is None else kit).to_json())
+                      kit=(cast(Lighthouse, light).kit if kit is None else kit).to_json())  # a kit run gives its kit
         if options:
             header["options"] = dict(sorted(options.items()))
     return header
