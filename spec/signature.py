@@ -56,7 +56,7 @@ from topomark.spec.thread import ThreadMark, shifted
 from topomark.spec.world import MAX_DEGREE, DartMark, VertexMark
 
 __all__ = ["Signature", "signature_at", "depends_on_entry", "KeptSignatures", "reads_as", "back_link_table", "Marked",
-           "Embedded"]
+           "Embedded", "ThreadMark"]  # ThreadMark: the thread part of a signature, for explorers
 
 
 class Marked(Protocol):

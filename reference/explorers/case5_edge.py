@@ -39,6 +39,8 @@ Examples
 
 from __future__ import annotations
 
+from typing import cast
+
 from topomark.spec.errors import AlgorithmFailed
 from topomark.spec.kit import MarkerOp
 from topomark.spec.mapstate import MapDart
@@ -78,7 +80,7 @@ class EdgeCountsThenLighthouse(TwoPhases, EdgeCounts):
         self.leave(it.edge, "drop")
         if dropped:
             self.record_marks()  # v_u now senses the marked e too
-            self.tree[count] = it.joined
+            self.tree[count] = cast("tuple[MapDart, MapDart]", it.joined)  # e was joined
             self.next_count += 1
         return dropped
 

@@ -112,7 +112,7 @@ class Host(Protocol):
     ``non_loop_augment``) with the version's two answers."""
 
     M: PartialMap
-    robot: object
+    robot: Robot
     position: MapDart
     phase_two_moves: int  # traversals made testing phase II's hypotheses
 
@@ -170,7 +170,7 @@ class TwoPhases:
     """What a counted-marker explorer with a phase II keeps (mixed in before it): the phase it is in, the iteration
     that ended phase I, and phase II's traversals, which :attr:`stats` reports for the bench's share of the cost."""
 
-    step_type = PhaseStep  # the step's record keeps phase II's hypotheses
+    step_type: type = PhaseStep  # the step's record keeps phase II's hypotheses
     phase_two = PHASE_TWO
 
     def __init__(self, robot, policies=None, observer=None, options=None):

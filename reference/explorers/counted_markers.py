@@ -82,10 +82,11 @@ Examples
 
 from __future__ import annotations
 
-from typing import Any
+from typing import cast
 
 from topomark.spec.errors import AlgorithmFailed
 from topomark.spec.kit import MarkerOp
+from topomark.spec.mapstate import MapDart
 from topomark.spec.signature import Signature, signature_at
 
 from topomark.reference.explorers.marker_walk import MarkerStep, MarkerWalk
@@ -107,7 +108,7 @@ class EdgeCounts(MarkerWalk):
     def __init__(self, robot, policies=None, observer=None, options=None):
         super().__init__(robot, policies, observer, options)
         self.next_count = 1  # markers for the next non-loop edge
-        self.tree: dict[int, tuple[Any, ...] | None] = {}  # count -> (dart, dart) of the marked map edge
+        self.tree: dict[int, tuple[MapDart, MapDart]] = {}  # count -> (dart, dart) of the marked map edge
 
     def arrive(self, it: MarkerStep, sig: Signature) -> None:
         if not sig.edges:  # observation (1): no marked edge at v_u iff v_u is new
@@ -116,7 +117,7 @@ class EdgeCounts(MarkerWalk):
         else:
             self.loop(it, self.identify(it, sig))
 
-    def mark_tree_edge(self, it: MarkerStep, u: int) -> None:
+    def mark_tree_edge(self, it: MarkerStep, u: int) -> bool | None:  # None here; Case 5 tells if it dropped
         """A drop trip: back over e to v_k, drop the next count on e (relative exit 0 there), and back to v_u
         (L1629)."""
         count = self.next_count
@@ -124,8 +125,9 @@ class EdgeCounts(MarkerWalk):
         self.drop(MarkerOp("edge", exit=0, count=count), it)
         self.leave(it.edge, "drop")
         self.record_marks()  # v_u now senses the marked e too
-        self.tree[count] = it.joined
+        self.tree[count] = cast("tuple[MapDart, MapDart]", it.joined)  # e was joined
         self.next_count += 1
+        return None
 
     def identify(self, it: MarkerStep, sig: Signature) -> tuple[int, int]:
         """Observation (2): the unexplored dart e' = (v_k', j) whose marks, entered by j, read ``sig``."""

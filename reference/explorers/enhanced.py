@@ -40,6 +40,8 @@ in T).
 
 from __future__ import annotations
 
+from typing import cast
+
 from collections import Counter
 from dataclasses import dataclass
 
@@ -70,7 +72,11 @@ class Technique:
     prunes = False  # filters H with expanded signatures
     stays = False  # stage 2: the robot remains where it stopped
     expands_new = False  # senses the neighbours of each new vertex
-    expands_place = 0  # senses the places within this distance of v_u
+
+    @property
+    def expands_place(self) -> int:
+        """Senses the places within this distance of v_u."""
+        return 0
 
     def known_on_entering(self, explorer: "EnhancedExplorer", it: "EnhancedIteration") -> None:
         """Add to the trie what is known at v_u before any motion."""
@@ -173,13 +179,13 @@ class EnhancedExplorer(LighthouseExplorer):
         super().__init__(robot, policies, observer, lighthouse)
         self.T: dict[MapDart, Record] = {}
         self.stats: Counter[str] = Counter()
-        self.trie: ExecutionTrie | None = None
+        self.trie: ExecutionTrie = cast(ExecutionTrie, None)  # made on entering v_u (on_enter), before any use
         self.techniques = self.enhancement.techniques
         self._tracers = tuple(t for t in self.techniques if t.rejected_by)
         self._states: dict = {}
 
     # -- the template's hooks ------------------------------------------------------
-    def on_enter(self, it: EnhancedIteration, sig: Signature) -> None:
+    def on_enter(self, it: EnhancedIteration, sig: Signature) -> None:  # type: ignore[override]  # its own iterations
         """Begin the iteration's execution trie at v_u; add what is known; let the techniques move."""
         self.trie = ExecutionTrie(self.robot, sig, self.lighthouse)
         self._states = {}
@@ -189,7 +195,8 @@ class EnhancedExplorer(LighthouseExplorer):
         for t in self.techniques:
             t.on_enter(self, it)
 
-    def validate(self, it: EnhancedIteration, sig: Signature) -> tuple[EnhancedHypothesis | None, int]:
+    def validate(  # type: ignore[override]  # its own iterations
+            self, it: EnhancedIteration, sig: Signature) -> tuple[EnhancedHypothesis | None, int]:
         """Lines 8–20 on the trie: H (pruned), motion-free rejections after every executed path, the next
         hypothesis from the overlapped node.  Returns the confirmed hypothesis or None, and the robot's
         offset (at v_u, counted from e, when none is confirmed)."""
@@ -214,19 +221,20 @@ class EnhancedExplorer(LighthouseExplorer):
         v, entry = h.arrival
         return v, (entry + self.trie.offset) % self.S.degree(v)
 
-    def after_non_loop(self, it: EnhancedIteration) -> None:
+    def after_non_loop(self, it: EnhancedIteration) -> None:  # type: ignore[override]  # its own iterations
         for t in self.techniques:
             t.after_non_loop(self, it)
         self.position = (self.position[0], self.trie.offset)
 
-    def after_join(self, it: EnhancedIteration) -> None:
+    def after_join(self, it: EnhancedIteration) -> None:  # type: ignore[override]  # its own iterations
         """Records under darts just explored move on; the techniques' share of the trie goes into T."""
         migrate(self.P, self.T, self.stats, it.joined, self.lighthouse)
         if it.by_marker:
             return
         depth = max((t.recorded_depth(it.kind == "non-loop") for t in self.techniques), default=0)
         if depth:
-            record_trie(self.P, self.T, self.stats, self.trie, it.joined[1], depth, self.lighthouse)
+            joined = cast("tuple[MapDart, MapDart]", it.joined)  # after a join
+            record_trie(self.P, self.T, self.stats, self.trie, joined[1], depth, self.lighthouse)
 
     # -- validation on the trie --------------------------------------------------------
     def choose(self, remaining: list) -> tuple[EnhancedHypothesis, int]:

@@ -70,7 +70,7 @@ from __future__ import annotations
 
 from collections import Counter
 from dataclasses import dataclass, field
-from typing import Callable
+from typing import Callable, TypeVar, cast
 
 from topomark.spec.errors import AlgorithmFailed, ExplorerFault
 from topomark.spec.kit import ThreadOp
@@ -101,6 +101,9 @@ class ThreadIteration(StepRecord):
                 "resolved": self.how, "candidates": self.candidates, "laid": self.laid, "tied": self.tied}
 
 
+It = TypeVar("It", bound=ThreadIteration)  # a step's record, a ThreadIteration or one of its kinds
+
+
 class ThreadWalker(MapWalker):
     """S, U and the believed pose (a :class:`~.walker.MapWalker`'s start, termination, walks and augmentations;
     the thread is tied in the first step), and the robot's record of its thread: tied at ``tied`` (map
@@ -123,7 +126,7 @@ class ThreadWalker(MapWalker):
         self.held = True
         self.knots: dict[int, int] = {}  # position along ``laid`` ↦ knots tied there (thread-knots)
 
-    def finish(self, it: ThreadIteration) -> ThreadIteration:
+    def finish(self, it: It) -> It:
         """End a step: the thread recorded in ``it`` and shown in S, then the step recorded."""
         it.laid, it.tied = len(self.laid), self.tied
         self.show_thread()
@@ -201,14 +204,14 @@ class ThreadWalker(MapWalker):
 
     def on_thread(self, upto: int | None = None) -> list[int]:
         """The thread's vertices in order from the tied one (the laid darts ``laid[:upto]``)."""
-        return [self.tied] + [self.S.arc(d)[0] for d in self.laid[:upto]]
+        return [cast(int, self.tied)] + [self.S.target(d)[0] for d in self.laid[:upto]]  # the thread is tied
 
     def thread_edges(self, upto: int | None = None) -> dict[int, dict[int, int]]:
         """Map vertex ↦ exit ↦ how often the thread lies along it (``laid[:upto]``, as recorded)."""
         out: dict[int, dict[int, int]] = {}
-        arc = self.S.arc
+        target = self.S.target
         for d in self.laid[:upto]:
-            for v, x in (d, arc(d)):
+            for v, x in (d, target(d)):
                 at = out.setdefault(v, {})
                 at[x] = at.get(x, 0) + 1
         return out
@@ -231,11 +234,11 @@ class ThreadExplorer(ThreadWalker):
         if self.tied is None:
             self.tie()
         vk = self.position[0]
-        i = self.open_exit(vk)
+        i = cast(int, self.open_exit(vk))  # an unexplored edge leaves vk
         self.S.unexplored.remove((vk, i))
         it = self.iteration_type(len(self.iterations) + 1, (vk, i))
         it.signature = sig = self.lay(i, "new")
-        t = sig.thread
+        t = cast(ThreadMark, sig.thread)  # the thread was just laid in here
         if t.tied or len(t.edges) > 1 or t.knots:  # lines 6-9: the thread lay at v_u already
             self.loop_on_thread(it, sig)
         elif self.retie:  # lines 10-15
@@ -262,7 +265,7 @@ class ThreadExplorer(ThreadWalker):
         self.leave_and_return(it)
         found = None
         for d in reversed(self.laid[:-1]):  # line 7: back along the thread from v_k toward v_s
-            self.walk([self.S.arc(d)], "validation")
+            self.walk([self.S.target(d)], "validation")
             w, entry = self.position
             extra = _sensed_edges(self.robot.sense(), entry) - Counter(marks.get(w, {}))
             if w in it.candidates and sum(extra.values()) == 1:
@@ -281,7 +284,7 @@ class ThreadExplorer(ThreadWalker):
         """Whether w entered by exit j, the thread as recorded plus e at j, senses the thread ``sig`` shows."""
         d = self.S.degree(w)
         edges = sorted([((x - j) % d, k) for x, k in marks.get(w, {}).items()] + [(0, 1)])
-        t = sig.thread
+        t = cast(ThreadMark, sig.thread)  # asked of places the thread shows
         return (t.tied, t.head, t.end, t.knots, t.edges) == (w == self.tied, None, False, 0, tuple(edges))
 
     def off_thread(self, it: ThreadIteration, sig: Signature) -> None:

@@ -53,6 +53,8 @@ Examples
 
 from __future__ import annotations
 
+from typing import Callable, cast
+
 from dataclasses import dataclass
 
 from topomark.spec.signature import Signature, signature_at
@@ -88,7 +90,8 @@ class FallbackThreadExplorer(CircumferenceThreadExplorer):
     loop_proof = "the thread's validation (phase I, L2055) or the tied v0 as lighthouse (phase II, §3.4 Lemma 1)"
     hypothesis_type = Hypothesis
     iteration_type = FallbackIteration  # phase I's steps too, recorded with phase 1
-    hypotheses = LighthouseExplorer.hypotheses  # Algorithm 3.1's H over S and its path to v0 (lines 8, 11–12)
+    # Algorithm 3.1's H over S and its path to v0 (lines 8, 11–12)
+    hypotheses: Callable[..., list[Hypothesis]] = LighthouseExplorer.hypotheses
     _tail = LighthouseExplorer._tail
 
     def __init__(self, robot, policies=None, observer=None, options: dict | None = None):
@@ -104,7 +107,7 @@ class FallbackThreadExplorer(CircumferenceThreadExplorer):
             self.run_out()
         if self.phase == 2:
             return self.phase_two()
-        return super().step()
+        return cast(FallbackIteration, super().step())  # of this explorer's iteration_type
 
     def run_out(self) -> None:
         """Leave the free end where the robot stands; v0, tied with one thread edge, becomes the lighthouse."""

@@ -55,8 +55,7 @@ from __future__ import annotations
 from typing import cast
 
 from topomark.spec.errors import ExplorerFault
-from topomark.spec.signature import Signature
-from topomark.spec.thread import ThreadMark
+from topomark.spec.signature import Signature, ThreadMark
 
 from topomark.reference.explorers.threads_explore import ThreadIteration, ThreadWalker
 
