@@ -39,11 +39,11 @@ import time
 from pathlib import Path
 from types import SimpleNamespace
 from dataclasses import dataclass, field
-from typing import Any, Sequence
+from typing import Any, Callable, Sequence, cast
 
 from topomark.spec.errors import (AlgorithmStopped, CheckFailure, ExplorerFault, InvalidInput, OutOfMarkers,
                                   TopomarkFault, Violation, clip)
-from topomark.spec.kit import Kit, MarkerOp
+from topomark.spec.kit import Kit, MarkerOp, ThreadOp
 from topomark.spec.signature import Signature
 from topomark.spec.world import World
 from topomark.spec.worldfile import world_to_json
@@ -92,7 +92,7 @@ class _Link:
         self.peer, self.max_traversals, self.sink, self.light = peer, max_traversals, sink, light
         self.cost = 0
         self.version = 1
-        self.here: Signature | None = None
+        self.here: Signature = cast(Signature, None)  # what the robot senses now: set by the hello, before moves
 
     def hello(self) -> None:
         msg = self.peer.receive(Expect(("hello",), None))  # any version this topomark speaks
@@ -174,7 +174,8 @@ class _Link:
             self.sink.emit(op_record({"step": self.cost, **op.to_json(), "signature": str(self.here)}, self.light))
 
     def robot(self) -> Robot:
-        return Robot(self.move, lambda: self.here, self.operate)
+        operate = cast("Callable[[MarkerOp | ThreadOp], None]", self.operate)  # the protocol carries no thread
+        return Robot(self.move, lambda: self.here, operate)
 
 
 def drive(command: Sequence[str], policies: Policies | None = None, world: World | None = None,
@@ -195,7 +196,7 @@ def drive(command: Sequence[str], policies: Policies | None = None, world: World
             result = _run(link, policies, sink, world)
         result.message = clip(result.message, MAX_MESSAGE)
         size = result.map if result.map is not None else SimpleNamespace(n=0, m=0)
-        header = trace_header("basic", policies, light, size)  # trace@1, or trace@2 for another lighthouse
+        header = trace_header("basic", policies, light, cast(World, size))  # n and m read; trace@1 or @2
         end = {"event": "end", "cost": link.cost, "verified": result.check is not None and result.check.isomorphic,
                "violation": None}
         if kept is not None:

@@ -30,7 +30,7 @@ robot sensed there.
 from __future__ import annotations
 
 import json
-from typing import Any
+from typing import Any, TypeGuard
 
 from topomark.spec.errors import clip
 from topomark.spec.kit import THREAD_OPS, Kit, MarkerOp, ThreadOp
@@ -43,7 +43,7 @@ __all__ = ["MAX_COUNT", "op_from_message", "op_to_message", "refusal"]
 MAX_COUNT = 10 ** 6  # markers in one operation, at most
 
 
-def _int(x: Any) -> bool:
+def _int(x: Any) -> TypeGuard[int]:
     return isinstance(x, int) and not isinstance(x, bool)
 
 

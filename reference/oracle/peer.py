@@ -44,7 +44,7 @@ import threading
 import time
 import uuid
 from collections import deque
-from typing import Any, Sequence
+from typing import IO, Any, Sequence, cast
 
 from topomark.spec.errors import InvalidInput
 
@@ -161,7 +161,7 @@ class Peer:
             raise InvalidInput(f"cannot start {self.command[0]!r}: "
                                f"{getattr(exc, 'strerror', None) or exc}") from None
         self.started = time.monotonic()
-        thread = threading.Thread(target=self._read_stderr, args=(self.proc.stderr.fileno(),), daemon=True)
+        thread = threading.Thread(target=self._read_stderr, args=(self._pipes()[2].fileno(),), daemon=True)
         thread.start()
         self._threads.append(thread)
 
@@ -212,7 +212,7 @@ class Peer:
         """
         data = encode(msg).encode()
         try:
-            fd = self.proc.stdin.fileno()
+            fd = self._pipes()[0].fileno()
             while data:
                 wait = self._allowed(self.message_timeout if timeout is None else timeout)
                 began = time.monotonic()
@@ -263,7 +263,7 @@ class Peer:
                 raise ProtocolError("garbage", f"message {self.received} is longer than {MAX_LINE} bytes")
             if self._eof:
                 raise ProtocolError("crash", self._died("closed its output"))
-            fd = self.proc.stdout.fileno()
+            fd = self._pipes()[1].fileno()
             if not _ready(fd, select.POLLIN, max(0.0, until - time.monotonic())):
                 return None
             try:
@@ -295,9 +295,18 @@ class Peer:
         """Seconds since the program started that topomark did not spend waiting for it."""
         return max(0.0, time.monotonic() - self.started - self.waited)
 
+    def _started(self) -> subprocess.Popen[bytes]:
+        """The program, once started (every caller runs after :meth:`start`)."""
+        return cast("subprocess.Popen[bytes]", self.proc)
+
+    def _pipes(self) -> tuple[IO[bytes], IO[bytes], IO[bytes]]:
+        """The program's stdin, stdout and stderr: pipes, opened with it."""
+        proc = self._started()
+        return cast(IO[bytes], proc.stdin), cast(IO[bytes], proc.stdout), cast(IO[bytes], proc.stderr)
+
     def _died(self, what: str) -> str:
         try:
-            code = self.proc.wait(timeout=1.0)
+            code = self._started().wait(timeout=1.0)
         except subprocess.TimeoutExpired:
             code = None
         time.sleep(0.05)  # let the stderr reader catch up
@@ -308,11 +317,11 @@ class Peer:
     def finish(self, grace: float = 2.0) -> int | None:
         """Close stdin and give the program ``grace`` seconds to exit (the ``with`` block then kills the rest)."""
         try:
-            self.proc.stdin.close()
+            self._pipes()[0].close()
         except OSError:
             pass
         try:
-            return self.proc.wait(timeout=grace)
+            return self._started().wait(timeout=grace)
         except subprocess.TimeoutExpired:
             return None
 
@@ -331,7 +340,7 @@ class Peer:
         self._stop.set()
         for thread in self._threads:
             thread.join(2 * _POLL + 1.0)
-        for stream in (self.proc.stdin, self.proc.stdout, self.proc.stderr):
+        for stream in self._pipes():
             try:
                 stream.close()
             except OSError:

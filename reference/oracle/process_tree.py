@@ -92,7 +92,7 @@ subreaper = _Subreaper()
 
 def _table() -> dict[int, tuple[int, int, int, bool]]:
     """pid -> (parent pid, process group, session, is a zombie) for every process visible in /proc."""
-    table = {}
+    table: dict[int, tuple[int, int, int, bool]] = {}
     try:
         entries = os.listdir(_PROC)
     except OSError:

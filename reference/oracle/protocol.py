@@ -116,13 +116,16 @@ def _words(error: "ValidationError", kind: str) -> str:
     """One precise sentence for a schema error: the field by its path, and what was expected."""
     where = kind + "".join(f"[{p}]" if isinstance(p, int) else f".{p}" for p in error.absolute_path)
     got = clip(json.dumps(error.instance), 60)
-    rule, want = error.validator, error.validator_value
+    rule = error.validator
+    want: Any = error.validator_value
+    instance: Any = error.instance  # the JSON value and schema the rule failed on
+    schema: Any = error.schema
     if rule == "required":
-        missing = next(name for name in want if name not in error.instance)
+        missing = next(name for name in want if name not in instance)
         return f"{where if error.absolute_path else kind + ' message'}: missing field {missing!r}"
     if rule == "additionalProperties":
-        known = set(error.schema.get("properties", {}))
-        unknown = sorted(set(error.instance) - known)[0]
+        known = set(schema.get("properties", {}))
+        unknown = sorted(set(instance) - known)[0]
         return f"{where if error.absolute_path else kind + ' message'}: unknown field {clip(unknown)!r}"
     if rule == "type":
         names = [want] if isinstance(want, str) else list(want)
@@ -132,13 +135,13 @@ def _words(error: "ValidationError", kind: str) -> str:
         shown = [v if isinstance(v, str) and v.isidentifier() else json.dumps(v) for v in values]
         return f"{where} must be {'one of ' if len(shown) > 1 else ''}{', '.join(shown)}, got {got}"
     if rule in ("minimum", "maximum", "exclusiveMinimum"):
-        low, high = error.schema.get("minimum"), error.schema.get("maximum")
+        low, high = schema.get("minimum"), schema.get("maximum")
         span = f"{low}..{high}" if low is not None and high is not None else (
-            f"at least {low}" if low is not None else f"above {error.schema.get('exclusiveMinimum', high)}"
+            f"at least {low}" if low is not None else f"above {schema.get('exclusiveMinimum', high)}"
             if high is None else f"at most {high}")
         return f"{where} must be {'an integer ' if high is not None and low is not None else ''}{span}, got {got}"
     if rule in ("minItems", "maxItems"):
-        low, high = error.schema.get("minItems", 0), error.schema.get("maxItems")
+        low, high = schema.get("minItems", 0), schema.get("maxItems")
         size = f"{low} item(s)" if low == high else f"at least {low} item(s)" if high is None else f"{low}..{high} items"
         return f"{where} must have {size}, got {got}"
     return f"{where}: {clip(error.message, 200)}"

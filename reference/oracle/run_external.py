@@ -34,11 +34,11 @@ from __future__ import annotations
 import json
 import time
 from dataclasses import dataclass, field
-from typing import Any, Sequence
+from typing import Any, Sequence, cast
 
 from topomark.spec.errors import CheckFailure, InvalidInput, InvalidWorld, TopomarkFault, Violation, clip
 from topomark.spec.invariants import check_invariants, lighthouse_anchor
-from topomark.spec.isomorphism import find_isomorphism, verify_witness
+from topomark.spec.isomorphism import Witness, find_isomorphism, verify_witness
 from topomark.spec.kit import Kit, MarkerOp
 from topomark.spec.marker import VertexMarker
 from topomark.spec.worldfile import marker_to_json
@@ -353,7 +353,7 @@ def _dropped_markers(truth: World, map_: World) -> MapVerdict:
     fault (exit 3)."""
     result = find_isomorphism(truth, map_, markers=True)
     if result.isomorphic:
-        bad = verify_witness(truth, map_, result.witness, markers=True)
+        bad = verify_witness(truth, map_, cast(Witness, result.witness), markers=True)  # isomorphic: witnessed
         if bad is not None:
             raise TopomarkFault(f"the isomorphism witness found for the map fails its re-verification: {bad}")
     return MapVerdict(result.isomorphic, "markers", result)

@@ -149,7 +149,9 @@ def _vertex_mark(S: PartialMap, k: int, mark: Any, version: int, marked: dict[in
 
 def _edge_mark(S: PartialMap, k: int, mark: dict, darts: dict) -> None:
     """An edge mark at its dart and, if that dart is explored, at the far dart (end seen from there)."""
-    v, i, end = mark.get("vertex"), mark.get("exit"), mark.get("end")
+    v: Any = mark.get("vertex")  # JSON values, checked next
+    i: Any = mark.get("exit")
+    end = mark.get("end")
     if not (set(mark) <= {"vertex", "exit", "count", "end"} and _int(v) and _int(i) and end in ("H", "T", None)
             and 0 <= v < S.n and 0 <= i < S.degree(v)):
         raise MalformedSnapshot(f"S.marks[{k}] must be an edge mark {{\"vertex\": v, \"exit\": i, \"count\": k, "
@@ -168,7 +170,8 @@ def _edge_mark(S: PartialMap, k: int, mark: dict, darts: dict) -> None:
 
 def _thread_mark(S: PartialMap, k: int, mark: dict) -> None:
     """A thread mark at a vertex of S: the thread as :class:`ThreadMark` says, in that vertex's exits."""
-    v, t = mark.get("vertex"), mark.get("thread")
+    v: Any = mark.get("vertex")  # JSON values, checked next
+    t: Any = mark.get("thread")
     form = ("a thread mark {\"vertex\": v, \"thread\": {\"tied\": bool, \"head\": exit or null, \"edges\": "
             "[[exit, times], ...], \"end\": bool, \"knots\": k}}")
     ok = (set(mark) == {"vertex", "thread"} and _int(v) and 0 <= v < S.n and isinstance(t, dict)
@@ -190,7 +193,7 @@ def _thread_mark(S: PartialMap, k: int, mark: dict) -> None:
 
 def map_to_snapshot(S: PartialMap, version: int = 1) -> dict[str, Any]:
     """The ``snapshot`` message for (S, U) in protocol ``version`` (edge marks need ``@2``)."""
-    exits = [[None if S.arc((v, i)) is None else list(S.arc((v, i))) for i in range(S.degree(v))]
+    exits = [[None if (far := S.arc((v, i))) is None else list(far) for i in range(S.degree(v))]
              for v in S.vertices]
     marks: list[dict[str, Any]] = []
     for v in S.vertices:

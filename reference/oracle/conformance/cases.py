@@ -111,7 +111,8 @@ def _algorithm_worlds() -> list[tuple[str, str, World]]:
 def algorithm_cases(spec: AlgorithmSpec) -> list[tuple[str, str, str, World, dict[str, Any]]]:
     """(name, world name, description, world, options) of ``spec``'s suite: the shared worlds with the registry's
     default kit, and a smallest kit where the kit's size is an option (``--markers``)."""
-    cases = [(name, name, f"{text}, with the kit {spec.name} is given on it", world, {})
+    cases: list[tuple[str, str, str, World, dict[str, Any]]] = [
+        (name, name, f"{text}, with the kit {spec.name} is given on it", world, {})
              for name, text, world in _algorithm_worlds()]
     markers = next((p for p in spec.parameters if p.name == "markers"), None)
     if markers is not None:

@@ -141,7 +141,7 @@ def _check_world_fields(root: Path, where: str, case: dict) -> None:
 
 def _check_case(root: Path, where: str, case: dict, policies: dict) -> None:
     _check_world_fields(root, where, case)
-    reference = case.get("reference")
+    reference: Any = case.get("reference")  # JSON, checked here
     if not isinstance(reference, dict) or set(reference) != set(policies):
         bad(root, f"manifest.json: {where}.reference must have one entry per named policy "
                   f"({', '.join(policies)})")
@@ -156,7 +156,7 @@ def _check_suite(root: Path, where: str, suite: dict) -> None:
     """One algorithm's suite: ``family`` and ``thesis`` strings, a non-empty list of ``cases``."""
     for key in ("family", "thesis"):
         field(root, f"{where}.{key}", suite.get(key), isinstance(suite.get(key), str), "a string")
-    cases = suite.get("cases")
+    cases: Any = suite.get("cases")  # JSON, checked next
     field(root, f"{where}.cases", cases, isinstance(cases, list) and bool(cases), "a non-empty list")
     names: set[str] = set()
     for k, case in enumerate(cases):
@@ -179,7 +179,7 @@ def _check_algorithm_case(root: Path, where: str, case: dict) -> None:
     reason = case.get("reason")
     field(root, f"{where}.reason", reason, isinstance(reason, str) if expected == "failed" else reason is None,
           "a string (why the run fails)" if expected == "failed" else "null (the run ends with a map)")
-    ref = case.get("reference")
+    ref: Any = case.get("reference")  # JSON, checked next
     field(root, f"{where}.reference", ref, isinstance(ref, dict), "an object {cost, marker_operations, trace, map}")
     count(root, f"{where}.reference.cost", ref.get("cost"), minimum=0)
     ops = ref.get("marker_operations")

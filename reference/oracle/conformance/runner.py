@@ -180,7 +180,7 @@ def _number(value: float | None) -> str:
 def render_table(rows: list[Row], wall: float) -> str:
     head = ("case", "n", "m", "verdict", "cost", "ref cost (basic)", "ratio", "best cost (basic)", "ratio",
             "reason")
-    body = []
+    body: list[tuple[str, ...]] = []
     for row in rows:
         j = row.to_json()
         body.append((row.name, str(row.n), str(row.m), j["verdict"].upper(), str(j["cost"]), str(row.reference),
@@ -203,7 +203,7 @@ def render_algorithm_table(rows: list[AlgorithmRow], wall: float) -> str:
     label = names[0] if len(names) == 1 else "its algorithm"
     head = ("algorithm", "case", "n", "m", "expected", "verdict", "cost", f"ref cost ({label})", "ratio", "bound",
             "ops", f"ref ops ({label})", "reason")
-    body = []
+    body: list[tuple[str, ...]] = []
     for row in rows:
         j = row.to_json()
         note = "" if row.passed and row.case["expected"] == "correct" else f"{j['reason']}: {j['message']}"[:100]
@@ -223,6 +223,7 @@ def timed_run(directory, command, limits=None, select=None, progress=None, versi
               kit: Kit | None = None, algorithms: Sequence[str] = ()) -> tuple[list, float]:
     """:func:`run` (no ``algorithms``) or :func:`run_algorithms`, and the wall time it took."""
     started = time.monotonic()
+    rows: list[Any]  # Row or AlgorithmRow
     if algorithms:
         rows = run_algorithms(directory, command, algorithms, limits, select, progress)
     else:
