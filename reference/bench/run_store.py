@@ -55,7 +55,7 @@ import re
 import sys
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Callable, Iterator
+from typing import Callable, Iterator, cast
 
 from topomark.spec.errors import InvalidInput, clip
 from topomark.spec.jsontext import MAX_INT_DIGITS, open_regular_fd, read_text_file
@@ -66,7 +66,7 @@ from topomark.reference.files.outputs import guarded
 try:  # POSIX; elsewhere a sweep runs unlocked (rows are still appended whole)
     import fcntl
 except ImportError:  # pragma: no cover - not on the platforms topomark supports
-    fcntl = None
+    fcntl = None  # type: ignore[assignment]  # no module: a sweep runs unlocked
 
 __all__ = ["CSV_FIELDS", "DEFAULTS", "MAX_RUNS_BYTES", "MAX_FIELD_CHARS", "Runs", "read_runs", "rewrite", "row_key",
            "locked", "Appender", "write_atomic", "write_manifest"]
@@ -178,7 +178,7 @@ def read_runs(path: str | Path, note: Callable[[str], None] | None = _note, resu
     if os.path.lexists(path):
         _parse(path, read_text_file(path, max_bytes=MAX_RUNS_BYTES), runs, resume)
     for message in runs.notes if note else ():
-        note(message)
+        cast(Callable[[str], None], note)(message)
     return runs
 
 
@@ -298,6 +298,12 @@ def write_manifest(directory: str | Path, manifest: Manifest) -> None:
     write_atomic(Path(directory) / MANIFEST_NAME, manifest.to_text())
 
 
+def _stamp(fd: int) -> None:
+    """Our pid in the lock file, for the message of a bench that finds it taken."""
+    os.ftruncate(fd, 0)
+    os.pwrite(fd, f"{os.getpid()}\n".encode(), 0)
+
+
 @contextlib.contextmanager
 def locked(directory: str | Path) -> Iterator[None]:
     """Hold ``directory/.lock`` for a sweep; InvalidInput naming the holder's pid if another sweep has it, or
@@ -311,7 +317,7 @@ def locked(directory: str | Path) -> Iterator[None]:
             except BlockingIOError:
                 pid = clip(os.pread(fd, 32, 0).decode("ascii", "replace").strip() or "unknown", 20)
                 raise InvalidInput(f"{directory} is in use by another topomark bench (pid {pid})") from None
-        guarded(lock, lambda: (os.ftruncate(fd, 0), os.pwrite(fd, f"{os.getpid()}\n".encode(), 0)))
+        guarded(lock, lambda: _stamp(fd))
         yield
     finally:
         os.close(fd)
@@ -334,7 +340,7 @@ class Appender:
         data = text.encode("utf-8")
         guarded(self.path, lambda: os.write(self.fd, data) == len(data) or self._short())
 
-    def _short(self) -> None:
+    def _short(self) -> bool:  # never returns: it raises (typed for _write's `or`)
         raise OSError(0, "a short write (is the disk full?)")
 
     def append(self, row: dict) -> None:

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import time
+from typing import Any
 
 from topomark.spec.errors import InvalidInput
 
@@ -57,7 +58,7 @@ def bench_command(args) -> int:
         raise InvalidInput(f"no runs planned for {args.experiment} with --sizes {' '.join(map(str, args.sizes))} "
                            f"(see topomark bench --help for each experiment's sizes)")
     out = check_output_dir(args.out, create=not args.report_only)
-    result = {"planned": len(runs), "ran": 0, "skipped": len(runs), "failures": 0}
+    result: dict[str, Any] = {"planned": len(runs), "ran": 0, "skipped": len(runs), "failures": 0}
     if not args.report_only:
         parameters = {"experiment": args.experiment, "graphs": args.graphs, "sizes": args.sizes,
                       "heavy_graphs": args.heavy_graphs, "heavy_max_size": args.heavy_max_size}

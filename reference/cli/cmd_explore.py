@@ -6,6 +6,7 @@ import contextlib
 import json
 import sys
 import time
+from typing import Any, Callable, cast
 
 from topomark.reference.cli.args import seed as seed_option
 from topomark.spec.errors import InvalidInput
@@ -203,7 +204,8 @@ def explore_command(args) -> int:
                           keep_hypotheses=False, lighthouse=light, options=options)
     unwritten = _write_map(args.map, outcome)
     if args.models is not None:
-        guarded(args.models, lambda: spec.write_models(outcome.explorer, args.models))
+        write_models = cast(Callable[[Any, str], list[Any]], spec.write_models)  # checked when --models was read
+        guarded(args.models, lambda: write_models(outcome.explorer, args.models))
     last = ring.records[:-1]  # the records before the end record
     data = {"world": label, "policies": policies.to_json(), "algorithm": args.algorithm, **outcome.summary(),
             "checked": not args.no_check}

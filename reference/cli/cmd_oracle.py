@@ -8,11 +8,13 @@ Every command takes ``--json``.
 from __future__ import annotations
 
 import argparse
+from typing import cast
 import sys
 
 from topomark.spec.errors import InvalidInput
 from topomark.spec.jsontext import no_duplicate_keys, parse_json
 from topomark.spec.kit import Kit
+from topomark.spec.world import World
 from topomark.spec.worldfile import load_world, save_world
 
 from topomark.reference.oracle import conformance
@@ -210,7 +212,7 @@ def run_external_command(args) -> int:
     version, kit = _protocol_choice(args)
     result = run_external(world, command, _make_limits(args), version=version, kit=kit)
     if args.map and result.map is not None:
-        guarded(args.map, lambda: save_world(result.map, args.map))
+        guarded(args.map, lambda: save_world(cast(World, result.map), args.map))
     data = {"world": args.world, "command": command, **result.to_json()}
     text = (f"{'PASS' if result.passed else 'FAIL'} [{result.reason}] {result.message}\n"
             f"cost {result.cost} traversals (n={world.n}, m={world.m}), {result.snapshots} snapshots checked, "
@@ -244,10 +246,10 @@ def drive_command(args) -> int:
     policies = parse_policies(args.policy)
     world = load_world(args.check) if args.check else None
     light = lighthouse(args.lighthouse)
-    result = drive(command, policies, world, limits.max_traversals, limits.wall, limits.message, light,
+    result = drive(command, policies, world, cast(int, limits.max_traversals), limits.wall, limits.message, light,
                    trace=args.trace or None)
     if args.map and result.map is not None:
-        guarded(args.map, lambda: save_world(result.map, args.map))
+        guarded(args.map, lambda: save_world(cast(World, result.map), args.map))
     data = {"command": command, **result.to_json()}
     text = f"{'PASS' if result.passed else 'FAIL'} [{result.reason}] {result.message}\ncost {result.cost} traversals"
     if not result.passed and result.stderr:

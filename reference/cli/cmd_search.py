@@ -82,6 +82,7 @@ def write_outputs(result: z3search.SearchResult, out: str) -> list[str]:
 
     d = Path(out)
     d.mkdir(parents=True, exist_ok=True)
+    assert result.worlds is not None and result.motions is not None and result.perceptions is not None
     a, b = result.worlds
     save_world(a, d / "a.json")
     save_world(b, d / "b.json")
@@ -100,7 +101,9 @@ def _text(result: z3search.SearchResult, report) -> str:
         body = f"unknown ({result.reason or 'timeout'}) after {result.seconds:.1f} s [{checks}]"
     elif result.outcome == "none":
         body = f"no counterexample within the bounds ({result.seconds:.1f} s) [{checks}]"
-    else:
+    else:  # found: the pair and its certificate are there
+        assert result.worlds is not None and result.relation is not None and result.motions is not None \
+            and result.perceptions is not None
         a, b = result.worlds
         body = ("counterexample found (indistinguishable, not extended-isomorphic; re-checked)\n"
                 + describe_world("A", a) + "\n" + describe_world("B", b) + "\n"
@@ -130,5 +133,5 @@ def search_command(args: argparse.Namespace) -> int:
     else:
         print(_text(result, report))
     if args.prove:
-        return 0 if report.proved else 1
+        return 0 if report is not None and report.proved else 1
     return 0 if result.found else 1

@@ -5,11 +5,12 @@ from __future__ import annotations
 import json
 import sys
 from collections import Counter
+from typing import cast
 
 from topomark.reference.cli.args import seed as seed_option
 from topomark.spec.dartgraph import find_isomorphism_nx
-from topomark.spec.errors import InvalidInput, TopomarkFault
-from topomark.spec.isomorphism import find_isomorphism, verify_witness
+from topomark.spec.errors import InvalidInput, TopomarkFault, Violation
+from topomark.spec.isomorphism import Witness, find_isomorphism, verify_witness
 from topomark.spec.worldfile import dumps_world, load_world, world_to_json
 
 from topomark.reference.worlds.generators import GENERATORS, PARAMETERS
@@ -93,15 +94,15 @@ def iso_command(args) -> int:
     result = next(iter(results.values()))
     if result.isomorphic:
         for name, r in results.items():
-            bad = verify_witness(a, b, r.witness, markers=markers)
+            bad = verify_witness(a, b, cast(Witness, r.witness), markers=markers)  # isomorphic: witnessed
             if bad is not None:
                 raise TopomarkFault(f"the {name} isomorphism's witness fails re-verification: {bad}")
-        data = {"isomorphic": True, "witness": result.witness.to_json(), "methods": list(results)}
+        data = {"isomorphic": True, "witness": cast(Witness, result.witness).to_json(), "methods": list(results)}
         text = (f"isomorphic: {args.a} ≅ {args.b} (extended isomorphism"
                 + (", markers preserved" if markers else ", markers ignored") + "; witness verified)")
         print(json.dumps(data, indent=1) if args.json else text)
         return 0
-    data = {"isomorphic": False, "mismatch": result.mismatch.to_json(), "methods": list(results)}
+    data = {"isomorphic": False, "mismatch": cast(Violation, result.mismatch).to_json(), "methods": list(results)}
     text = f"not isomorphic: {result.mismatch}"
     print(json.dumps(data, indent=1) if args.json else text)
     return 1

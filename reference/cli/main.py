@@ -47,7 +47,7 @@ def build_parser() -> argparse.ArgumentParser:
         kw.setdefault("epilog", EXIT_CODES_HELP)
         return _add_parser(*a, **kw)
 
-    sub.add_parser = add_parser
+    sub.add_parser = add_parser  # type: ignore[method-assign]  # wrapped: every --help ends with the exit codes
     for module in COMMAND_MODULES:
         module.register(sub)
     return parser

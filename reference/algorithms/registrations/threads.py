@@ -58,6 +58,8 @@ Examples
 
 from __future__ import annotations
 
+from typing import Any
+
 from topomark.spec.kit import Kit
 
 from topomark.reference.algorithms.algorithm_spec import STEPWISE_MAP_CHECKS, AlgorithmSpec, Parameter
@@ -101,8 +103,8 @@ def _circumference_kit(n: int, m: int, opts: dict) -> Kit:
     return Kit(thread=n if length in ("n", None) else length)
 
 
-_ROBOT = dict(deterministic=True, checks=STEPWISE_MAP_CHECKS, uses_lighthouse=False,
-              marker_bound_fn=lambda n, m: 0, family="robot")
+_ROBOT: dict[str, Any] = dict(deterministic=True, checks=STEPWISE_MAP_CHECKS, uses_lighthouse=False,
+                              marker_bound_fn=lambda n, m: 0, family="robot")
 """What every thread algorithm shares: one edge joins S per step, and no marker is ever dropped (a thread is
 no marker, so the marker bound is 0)."""
 _O_MN = "O(mn) (Table 6.3); bound_fn: ours"
