@@ -28,7 +28,7 @@ from __future__ import annotations
 import functools
 import random
 from dataclasses import dataclass
-from typing import Callable, Iterable
+from typing import Callable, Iterable, Sequence
 
 from topomark.spec.errors import InvalidInput
 from topomark.spec.world import Start, World
@@ -344,7 +344,7 @@ def plan(experiment: str, graphs: int = 30, sizes: list[int] | None = None,
     runs: set[Run] = set()
     for part in EXPERIMENTS[experiment].parts:
         fam = FAMILIES[part.family]
-        chosen = part.sizes or fam.sizes
+        chosen: Sequence[int] = part.sizes or fam.sizes
         if sizes:  # a selection among the world family's (the thesis's) sizes
             chosen = [s for s in chosen if s in sizes]
         for size in chosen:

@@ -28,6 +28,7 @@ import os
 import sys
 import time
 from pathlib import Path
+from typing import Any
 
 from topomark.spec.errors import clip
 
@@ -74,7 +75,7 @@ def run_one(run: Run, check: bool = True) -> dict:
     try:
         spec = algorithm_spec(run.algorithm)
         options = resolve_options(run.options, world, run.algorithm)
-        kwargs = {"sink": (drops := DropCount())}
+        kwargs: dict[str, Any] = {"sink": (drops := DropCount())}
         if spec.uses_lighthouse:  # a lighthouse algorithm's option set is its searched lighthouse's (seed=1)
             kwargs = {"lighthouse": lighthouse(run.lighthouse).with_options(
                 **{k.replace("-", "_"): v for k, v in options.items()}) if options else run.lighthouse}

@@ -40,10 +40,9 @@ in T).
 
 from __future__ import annotations
 
-from typing import cast
-
 from collections import Counter
 from dataclasses import dataclass
+from typing import cast
 
 from topomark.spec.errors import ExplorerFault
 from topomark.spec.mapstate import MapDart

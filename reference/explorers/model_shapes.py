@@ -37,9 +37,8 @@ True
 
 from __future__ import annotations
 
-from typing import cast
-
 from collections import deque
+from typing import cast
 
 from topomark.spec.mapstate import MapDart, PartialMap
 

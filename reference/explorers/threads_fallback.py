@@ -53,9 +53,8 @@ Examples
 
 from __future__ import annotations
 
-from typing import Callable, cast
-
 from dataclasses import dataclass
+from typing import Callable, cast
 
 from topomark.spec.signature import Signature, signature_at
 

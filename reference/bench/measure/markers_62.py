@@ -33,7 +33,8 @@ PURPOSES = ("new", "other", "travel", "validation", "retrace")
 
 def measure(algorithm: str, world_family: str, size: int, seeds: int) -> dict:
     """cost/m over seeds 0..seeds−1 of one size: median, max, the world of the max, mean purpose shares."""
-    ratios, shares, worst, failures, saved = [], {p: [] for p in PURPOSES}, None, [], []
+    shares: dict[str, list[float]] = {p: [] for p in PURPOSES}
+    ratios, worst, failures, saved = [], None, [], []
     for seed in range(seeds):
         world = world_for(world_family, size, seed)
         out = explore(world, algorithm, record=False)

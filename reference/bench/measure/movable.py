@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import statistics
 import sys
+from typing import Any
 
 from topomark.reference.run.explore import explore
 from topomark.reference.worlds.generators import complete_hole, lattice_hole, small_world
@@ -59,7 +60,7 @@ def measure(sizes, seeds, algorithms=ALGORITHMS, family: str = "lattice-hole") -
 def table(rows: list[dict], algorithms=ALGORITHMS) -> str:
     """Medians per size and algorithm, and per-world wins of each movable marker over ``basic`` and ``enh3``."""
     lines = ["size   alg                 n    m   cost  cost/m  cost/(mn)  all correct"]
-    by = {}
+    by: dict[tuple[Any, Any], list[dict]] = {}
     for row in rows:
         by.setdefault((row["size"], row["algorithm"]), []).append(row)
     sizes = list(dict.fromkeys(row["size"] for row in rows))

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import statistics
 from pathlib import Path
+from typing import cast
 
 from topomark.reference.bench import thesis_figures as tf
 from topomark.reference.bench.plan import DEFAULT_LIGHTHOUSE, EXPERIMENTS, FAMILIES, Experiment, Part, is_heavy
@@ -145,7 +146,7 @@ def _policy_table(part: Part, summary: dict) -> list[str]:
             got = [summary.get((part.family, alg, pol, size)) for pol in part.policies]
             if not all(got):
                 continue
-            means, worlds = _shared_mean(got)
+            means, worlds = _shared_mean(cast(list[dict], got))  # every policy ran
             lines.append(row(size, alg, worlds, *(fmt_pm(*x) if x else "—" for x in means)))
     return lines + [""]
 
@@ -195,7 +196,7 @@ def _absolute_costs(exp: Experiment, summary: dict) -> list[str]:
              "|---|---|---:|---:|---:|---|"]
     for fam, alg, size in sorted(headline, key=lambda x: (x[0], x[2], x[1])):
         s = summary.get((fam, alg, "nearest", size))
-        tc = tf.thesis_cost(fam, alg, size)[0]
+        tc = cast("tuple[int, str]", tf.thesis_cost(fam, alg, size))[0]  # a headline row has its thesis cost
         lines.append(row(fam, alg, size, fmt(s["mean"]) if s else "—", fmt(tc),
                          "yes" if s and s["mean"] <= tc else ("no" if s else "")))
     return lines + [""]

@@ -19,6 +19,7 @@ the costs side by side, per family, size and algorithm:
 from __future__ import annotations
 
 from pathlib import Path
+from typing import Any, cast
 
 from topomark.reference.bench.plan import DEFAULT_LIGHTHOUSE, EXPERIMENTS, FAMILIES, Part, fits
 from topomark.reference.bench.reports.kit import write
@@ -90,7 +91,8 @@ def _cells(part: Part, worlds: dict, alg: str, size: int) -> tuple[list[dict[int
     got = [worlds.get((part.family, alg, size, lh)) for lh in part.lighthouses]
     if not all(got):
         return None
-    return got, sorted(set.intersection(*(set(g) for g in got)))
+    runs = cast(list[dict[int, dict]], got)  # every one ran
+    return runs, sorted(set.intersection(*(set(g) for g in runs)))
 
 
 def _on(runs: dict[int, dict], seeds: list[int]) -> list[dict]:
@@ -166,7 +168,7 @@ def _skipped(part: Part, worlds: dict) -> list[str]:
 
 def _deltas(parts: tuple[Part, ...], worlds: dict, lh: str) -> dict:
     """Over every shared world of every row: how ``lh`` compares with the default lighthouse, move by move."""
-    d = dict.fromkeys(("worlds", "cheaper", "equal", "dearer", "cost", "validation", "retrace", "travel+new",
+    d: dict[str, Any] = dict.fromkeys(("worlds", "cheaper", "equal", "dearer", "cost", "validation", "retrace", "travel+new",
                        "hypotheses", "max_excess"), 0.0)
     d["dearer_algs"] = set()
     for part in parts:

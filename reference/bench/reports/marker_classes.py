@@ -17,6 +17,7 @@ True
 from __future__ import annotations
 
 from pathlib import Path
+from typing import cast
 
 from topomark.reference.algorithms.registry import algorithm_spec
 from topomark.reference.bench.plan_marker_classes import BASELINES, COMPARED, NAME, SIZES
@@ -96,5 +97,5 @@ def _stated(ok: list[dict]) -> str:
     sizes = [kit_size(r) for r in ok]
     if any(k is None for k in sizes):
         return "—"
-    return f"{sum(k / num(r, 'n') for k, r in zip(sizes, ok)) / len(ok):.2f}"
+    return f"{sum(cast(int, k) / num(r, 'n') for k, r in zip(sizes, ok)) / len(ok):.2f}"
 

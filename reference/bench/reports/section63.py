@@ -277,11 +277,11 @@ def _comparison(gr: dict) -> tuple[list[str], dict]:
     for s in SIZES:
         for mv in MOVABLE:
             for im in IMMOVABLE:
-                a, b = stats[(mv, s)], stats[(im, s)]
-                if a and b:
-                    shared = [k for k in a["by_seed"] if k in b["by_seed"]]
-                    wins = sum(a["by_seed"][k] < b["by_seed"][k] for k in shared)
-                    lines.append(f"| {s} | {mv} | {im} | {a['mean'] / b['mean']:.2f} | {wins}/{len(shared)} |")
+                smv, sim = stats[(mv, s)], stats[(im, s)]
+                if smv and sim:
+                    shared = [k for k in smv["by_seed"] if k in sim["by_seed"]]
+                    wins = sum(smv["by_seed"][k] < sim["by_seed"][k] for k in shared)
+                    lines.append(f"| {s} | {mv} | {im} | {smv['mean'] / sim['mean']:.2f} | {wins}/{len(shared)} |")
     return lines + [""], {"lattice-hole": {a: [(s, stats[(a, s)]) for s in SIZES if stats[(a, s)]] for a in COMPARED}}
 
 
