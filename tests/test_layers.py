@@ -19,7 +19,8 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 LAYERS = (
     ("reference.cli",),
-    ("reference.oracle", "reference.bench", "reference.claims", "reference.worstcase"),
+    ("reference.worstcase",),
+    ("reference.oracle", "reference.bench", "reference.claims"),
     ("reference.replay",),
     ("reference.run",),
     ("reference.trace",),

@@ -23,7 +23,7 @@ from topomark.spec.errors import (EXIT_BAD_INPUT, EXIT_CODES_HELP, EXIT_FAULT, E
                                   InvalidInput, TopomarkFault, clip)
 
 from topomark.reference.cli import (cmd_algorithms, cmd_bench, cmd_claims, cmd_count, cmd_distinguish, cmd_explore,
-                                    cmd_oracle, cmd_search, cmd_world)
+                                    cmd_oracle, cmd_search, cmd_world, cmd_worst_case)
 from topomark.reference.cli.parser import Parser
 from topomark.reference.cli.pipes import closed_pipe_safe
 
@@ -34,7 +34,7 @@ STDERR_LIMIT, STDERR_NOTE = 1000, " ({n:,} characters in all)"
 
 # The modules that contribute commands, in --help order: each has register(subparsers).
 COMMAND_MODULES = (cmd_world, cmd_explore, cmd_oracle, cmd_bench, cmd_algorithms, cmd_distinguish, cmd_search,
-                   cmd_count, cmd_claims)
+                   cmd_count, cmd_claims, cmd_worst_case)
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -109,7 +109,7 @@ def prepare_world(world: World, lighthouse: Lighthouse = LIGHTHOUSES["directiona
     """
     state = world.start_state()
     v0, facing = state
-    bare = World(world.rotation, (), world.start)
+    bare = world if type(world) is World and not world.markers else World(world.rotation, (), world.start)
     if bare.degree(v0) < lighthouse.min_degree:
         raise InvalidInput(f"the {lighthouse.name} lighthouse needs a start vertex of degree >= "
                            f"{lighthouse.min_degree}; the start vertex {v0!r} has degree {bare.degree(v0)}")
