@@ -34,6 +34,7 @@ from typing import Any
 from topomark.spec.errors import InvalidInput, TopomarkFault
 
 from topomark.reference.cli.args import MAX_JOBS, check_jobs, check_max_degree, seed
+from topomark.reference.cli.cmd_worst_search import add_search_arguments, search_command, setup_of
 
 __all__ = ["register", "worst_case_command"]
 
@@ -64,27 +65,8 @@ def register(sub) -> None:
     p.add_argument("--out", metavar="DIR", help="write worst-case.json, the argmax world files, worst-case.md and plots")
     p.add_argument("--quiet", action="store_true", help="no progress line")
     p.add_argument("--json", action="store_true", help="print one JSON object")
-    from topomark.reference.cli.cmd_worst_search import add_search_arguments
     add_search_arguments(p)
     p.set_defaults(handler=worst_case_command)
-
-
-def _setup(args: argparse.Namespace):
-    from topomark.reference.algorithms.registry import algorithm_spec
-    from topomark.reference.cli.cmd_explore import check_policy_kinds, parse_policies
-    from topomark.reference.run.explore import check_run
-    from topomark.reference.worlds.generators import generate
-    from topomark.reference.worstcase.exhaustive import Setup
-
-    spec = algorithm_spec(args.algorithm)
-    policies = parse_policies(args.policy)
-    check_policy_kinds(args.policy, spec)
-    if not 0 <= args.sample <= 1:
-        raise InvalidInput(f"--sample must be a fraction between 0 and 1, not {args.sample}")
-    if args.lighthouse is not None:
-        check_run(generate("complete", n=5), spec, args.lighthouse)  # an unknown or misplaced lighthouse: exit 2
-    return Setup(spec.name, args.lighthouse, (policies.edge, policies.hypothesis, policies.path), args.sample,
-                 args.seed)
 
 
 def _validate(args: argparse.Namespace) -> None:
@@ -104,10 +86,9 @@ def _validate(args: argparse.Namespace) -> None:
 
 def worst_case_command(args: argparse.Namespace) -> int:
     if args.search:
-        from topomark.reference.cli.cmd_worst_search import search_command
         return search_command(args)
     _validate(args)
-    setup = _setup(args)
+    setup = setup_of(args)
     progress = None if args.quiet or args.json else (lambda line: print(line, file=sys.stderr, flush=True))
     degree = min(args.max_degree, args.max_vertices - 1)
     if args.shards is not None:
@@ -155,6 +136,10 @@ def _table(data: dict[str, Any]) -> str:
              f"degree <= {data['max_degree']} (exhaustive, exact)", table(data["per_n"])]
     lines.append(f"{data['checked_runs']} runs re-run checked (sample and argmaxes); {data['refused_starts']} starts "
                  f"refused by the algorithm; {data['problem_count']} problems")
+    wrong = {k: v for r in data["per_n"] for k, v in r["outcomes"].items() if k != "correct"}
+    if wrong:
+        lines.append(f"runs that did not map their world: {sum(r['runs'] - r['outcomes'].get('correct', 0) for r in data['per_n'])} "
+                     f"({', '.join(sorted(wrong))}); their costs are left out of the maxima (exit 1)")
     for p in data["problems"][:5]:
         lines.append(f"  problem: {json.dumps(p)}")
     if "cross_check" in data:

@@ -18,7 +18,7 @@ from typing import Any
 
 from topomark.spec.errors import InvalidInput
 
-__all__ = ["add_search_arguments", "search_command"]
+__all__ = ["add_search_arguments", "search_command", "setup_of"]
 
 OBJECTIVES = ("cost", "cost-per-m", "ratio")
 
@@ -35,10 +35,28 @@ def add_search_arguments(p) -> None:
     g.add_argument("--family", choices=("lattice-hole",), help="search within a family of worlds")
 
 
+def setup_of(args: argparse.Namespace):
+    """The shared setup of a worst-case search from the command line (bad input: exit 2)."""
+    from topomark.reference.algorithms.registry import algorithm_spec
+    from topomark.reference.cli.cmd_explore import check_policy_kinds, parse_policies
+    from topomark.reference.run.explore import check_run
+    from topomark.reference.worlds.generators import generate
+    from topomark.reference.worstcase.exhaustive import Setup
+
+    spec = algorithm_spec(args.algorithm)
+    policies = parse_policies(args.policy)
+    check_policy_kinds(args.policy, spec)
+    if not 0 <= args.sample <= 1:
+        raise InvalidInput(f"--sample must be a fraction between 0 and 1, not {args.sample}")
+    if args.lighthouse is not None:
+        check_run(generate("complete", n=5), spec, args.lighthouse)  # an unknown or misplaced lighthouse: exit 2
+    return Setup(spec.name, args.lighthouse, (policies.edge, policies.hypothesis, policies.path), args.sample,
+                 args.seed)
+
+
 def search_command(args: argparse.Namespace) -> int:
-    from topomark.reference.cli.cmd_worst_case import _setup
     from topomark.reference.worstcase.search import adversarial_search, fit_exponents, random_baseline
-    setup = _setup(args)
+    setup = setup_of(args)
     if args.evaluations < 1:
         raise InvalidInput(f"--evaluations must be at least 1, not {args.evaluations}")
     progress = None if args.quiet or args.json else _progress

@@ -18,7 +18,7 @@ Examples
 >>> from topomark.reference.worstcase.exhaustive import Setup
 >>> found = brute_force(Setup("basic", sample=0), 3, 2)
 >>> sorted((n, t.max_cost) for n, t in found.items())
-[(2, 1), (3, 4)]
+[(2, 1), (3, 3)]
 """
 
 from __future__ import annotations

@@ -9,11 +9,11 @@ the exact bound at that world), in the bench's plotting style.
 
 Examples
 --------
->>> print(table([{"n": 3, "worlds": 2, "runs": 3, "max_cost": 7, "max_cost_per_m": 2.333,
+>>> print(table([{"n": 3, "worlds": 2, "runs": 3, "outcomes": {"correct": 3}, "max_cost": 7, "max_cost_per_m": 2.333,
 ...               "max_ratio_to_bound": 0.3182, "quantiles_cost_per_m": {"0.5": 1.5, "0.9": 2.333},
 ...               "argmax_at": {"graph": 1, "rotation": 0, "start": "v0", "exit": 1}}]))
-  n    worlds     runs  max cost  max cost/m  max cost/bound  median c/m  p90 c/m  argmax (graph, rotation, start)
-  3         2        3         7       2.333          0.3182         1.5    2.333  g1 r0 v0:1
+  n    worlds     runs  not correct  max cost  max cost/m  max cost/bound  median c/m  p90 c/m  argmax (graph, rotation, start)
+  3         2        3            0         7       2.333          0.3182         1.5    2.333  g1 r0 v0:1
 """
 
 from __future__ import annotations
@@ -36,13 +36,14 @@ def _cell(value: Any, width: int) -> str:
 
 def table(per_n: list[dict[str, Any]]) -> str:
     """The rows as a fixed-width table."""
-    head = (f"{'n':>3}  {'worlds':>8}  {'runs':>7}  {'max cost':>8}  {'max cost/m':>10}  {'max cost/bound':>14}  "
+    head = (f"{'n':>3}  {'worlds':>8}  {'runs':>7}  {'not correct':>11}  {'max cost':>8}  {'max cost/m':>10}  {'max cost/bound':>14}  "
             f"{'median c/m':>10}  {'p90 c/m':>7}  argmax (graph, rotation, start)")
     lines = [head]
     for r in per_n:
         q, at = r.get("quantiles_cost_per_m") or {}, r.get("argmax_at")
         where = "-" if at is None else f"g{at['graph']} r{at['rotation']} {at['start']}:{at['exit']}"
-        lines.append(f"{r['n']:>3}  {r['worlds']:>8}  {r['runs']:>7}  {_cell(r['max_cost'], 8)}  "
+        wrong = r["runs"] - r.get("outcomes", {}).get("correct", 0)
+        lines.append(f"{r['n']:>3}  {r['worlds']:>8}  {r['runs']:>7}  {wrong:>11}  {_cell(r['max_cost'], 8)}  "
                      f"{_cell(r['max_cost_per_m'], 10)}  {_cell(r['max_ratio_to_bound'], 14)}  "
                      f"{_cell(q.get('0.5'), 10)}  {_cell(q.get('0.9'), 7)}  {where}")
     return "\n".join(lines)
@@ -58,12 +59,13 @@ def _markdown(data: dict[str, Any]) -> str:
              "Every embedded world up to extended isomorphism, every start up to the world's automorphisms; "
              "the maxima below are exact (proved by enumeration), not estimates.", "",
              f"- **Thesis:** {THESIS}", f"- **Here:** the bound {held}.", "",
-             "| n | worlds | runs | max cost | max cost/m | max cost/bound | bound at argmax | median cost/m | "
-             "p90 cost/m | argmax world |", "|---|---|---|---|---|---|---|---|---|---|"]
+             "| n | worlds | runs | not correct | max cost | max cost/m | max cost/bound | bound at argmax | median cost/m | "
+             "p90 cost/m | argmax world |", "|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         q, at = r.get("quantiles_cost_per_m") or {}, r.get("argmax_at")
         where = "-" if at is None else f"`argmax-cost-n{r['n']}.json` (start {at['start']}, exit {at['exit']})"
-        lines.append(f"| {r['n']} | {r['worlds']} | {r['runs']} | {r['max_cost']} | {r['max_cost_per_m']} | "
+        wrong = r["runs"] - r["outcomes"].get("correct", 0)
+        lines.append(f"| {r['n']} | {r['worlds']} | {r['runs']} | {wrong} | {r['max_cost']} | {r['max_cost_per_m']} | "
                      f"{r['max_ratio_to_bound']} | {r.get('bound_at_argmax')} | {q.get('0.5')} | {q.get('0.9')} | "
                      f"{where} |")
     lines += ["", f"{data['checked_runs']} runs were re-run checked (a seeded sample and every argmax) with every "
