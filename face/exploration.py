@@ -37,13 +37,10 @@ from topomark.reference.trace.reader import load_trace, parse_trace
 from topomark.reference.trace.sink import FileSink, trace_line
 from topomark.spec.errors import CheckFailure, InvalidInput
 from topomark.spec.isomorphism import Witness, find_isomorphism, verify_witness
-from topomark.spec.world import World
-from topomark.worlds import resolve
+from topomark.worlds import WorldLike, resolve
 
 __all__ = ["explore", "check_map", "isomorphic", "replay", "algorithms", "Outcome", "MapVerdict", "Witness",
            "ReplayResult"]
-
-WorldLike = World | str | os.PathLike[str]
 
 
 def explore(world: WorldLike, algorithm: str = "basic", lighthouse: str | Lighthouse | None = None,

@@ -38,20 +38,20 @@ from topomark.reference.cli.args import MAX_JOBS
 from topomark.spec.errors import CheckFailure, InvalidInput
 from topomark.spec.markerclass import marker_class
 from topomark.spec.world import World
-from topomark.worlds import resolve
+from topomark.worlds import WorldLike, resolve
 
 __all__ = ["distinguish", "search", "prove", "census", "Distinction", "SearchResult", "ProofReport",
            "CensusResult"]
 
 
-def _started(world: World | str | os.PathLike[str], name: str) -> World:
+def _started(world: WorldLike, name: str) -> World:
     the_world = resolve(world)
     if the_world.start is None:
         raise InvalidInput(f"world {name} has no start (distinguish compares the two robots' starts)")
     return the_world
 
 
-def distinguish(a: World | str | os.PathLike[str], b: World | str | os.PathLike[str]) -> Distinction | None:
+def distinguish(a: WorldLike, b: WorldLike) -> Distinction | None:
     """The shortest motion sequence after which a robot perceives differently in ``a`` and ``b``, or None.
 
     Both worlds need a start.  The result's ``motions`` is the sequence M (empty when the start signatures

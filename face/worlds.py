@@ -19,7 +19,7 @@ Examples
 from __future__ import annotations
 
 import os
-from typing import Any
+from typing import Any, TypeAlias
 
 from topomark.reference.files.outputs import write_output
 from topomark.reference.worlds.argument import resolve_world
@@ -28,7 +28,10 @@ from topomark.spec.errors import InvalidInput
 from topomark.spec.world import World
 from topomark.spec.worldfile import dumps_world, load_world as _load_world
 
-__all__ = ["load_world", "save_world", "generate", "resolve", "World"]
+__all__ = ["load_world", "save_world", "generate", "resolve", "World", "WorldLike"]
+
+WorldLike: TypeAlias = "World | str | os.PathLike[str]"
+"""What a function of the API takes as a world: a World, a world file, or a generator text."""
 
 
 def load_world(path: str | os.PathLike[str]) -> World:
@@ -78,7 +81,7 @@ def generate(name: str, **params: Any) -> World:
     return _generate(name, **params)
 
 
-def resolve(world: World | str | os.PathLike[str]) -> World:
+def resolve(world: WorldLike) -> World:
     """``world`` itself, or the world a world file or a ``GENERATOR[:NAME=VALUE,...]`` text names.
 
     Examples
