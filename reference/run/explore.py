@@ -75,6 +75,20 @@ class Outcome:
     extra: dict[str, Any] = field(default_factory=dict)  # the algorithm's own counts (its registry's summary_fn)
     bound_checked: bool = False  # the run was held to ``upper_bound`` (the ``cost-bound`` check)
 
+    @property
+    def map(self) -> World | None:
+        """The explored map as a world (the markers the robot left included), or None when there is none.
+
+        The map is the explorer's S once the algorithm claims a correct end (a ``wrong-map`` run's map is
+        returned all the same: it is what the algorithm claims, to be compared with the world).  None when
+        the algorithm stopped (outcome ``failed`` or ``limit``), when the checker stopped the run before the
+        algorithm finished, or when the explorer keeps no single completed map (``model-tree`` keeps models).
+        """
+        S = getattr(self.explorer, "S", None)
+        if self.claimed != "correct" or S is None or not S.complete():
+            return None
+        return S.to_world()
+
     def summary(self) -> dict[str, Any]:
         out = {k: getattr(self, k) for k in (
             "n", "m", "cost", "drop_trips", "verified", "iterations", "loop_iterations", "nonloop_iterations", "hypotheses",
