@@ -172,3 +172,30 @@ def test_a_lighthouse_start_it_cannot_use_is_refused_not_run(capsys):
 
 def test_argmax_witness_names_a_census_world():
     assert world_at(4, 3, 5, 0).m == 6  # K4, the argmax family of small worlds
+
+
+def test_every_kept_worst_world_costs_what_its_index_says():
+    from topomark.reference.worlds.worst_cases import WORST_CASES, worst_case_world
+    from topomark.reference.run.explore import explore
+    assert WORST_CASES
+    for name, entry in WORST_CASES.items():
+        world = worst_case_world(name)
+        assert (world.n, world.m) == (entry["n"], entry["m"])
+        assert max(world.degree(v) for v in world.vertices) <= entry["max_degree"]
+        run = explore(world, entry["algorithm"])
+        assert run.verified and run.cost == entry["cost"], name
+
+
+def test_worst_worlds_are_stress_cases_of_the_conformance_suites():
+    from topomark.reference.oracle.conformance.cases import algorithm_cases, default_cases
+    from topomark.reference.algorithms.registry import algorithm_spec
+    names = {name for name, _, _ in default_cases()}
+    assert "worst-basic-n5-d4" in names
+    assert any(c[0].startswith("worst-") for c in algorithm_cases(algorithm_spec("basic")))
+
+
+def test_worst_worlds_are_a_generator():
+    from topomark.reference.worlds.generators import generate
+    assert generate("worst-case", case="basic-n5-d4").start is not None
+    with pytest.raises(Exception, match="unknown worst-case world"):
+        generate("worst-case", case="nope")
