@@ -199,3 +199,15 @@ def test_worst_worlds_are_a_generator():
     assert generate("worst-case", case="basic-n5-d4").start is not None
     with pytest.raises(Exception, match="unknown worst-case world"):
         generate("worst-case", case="nope")
+
+
+def test_the_summary_says_what_is_proved_and_describes_the_worst_worlds(tmp_path, capsys):
+    out = tmp_path / "basic"
+    assert main(["worst-case", "--max-vertices", "5", "--max-degree", "3", "--quiet", "--out", str(out)]) == 0
+    capsys.readouterr()
+    assert main(["worst-case", "--summarise", str(out)]) == 0
+    text = capsys.readouterr().out
+    assert "L2260–L2262" in text and "## Proved" in text
+    row = next(line for line in text.splitlines() if line.startswith("| basic | 3 | 5 |"))
+    assert "hypotheses rejected" in row and "diam" in row
+    assert main(["worst-case", "--summarise", str(tmp_path / "missing")]) == 2

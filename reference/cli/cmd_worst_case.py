@@ -63,6 +63,8 @@ def register(sub) -> None:
     p.add_argument("--cross-check", action="store_true",
                    help="also run the brute force over labelled rotation systems and require the same maxima (n <= 5)")
     p.add_argument("--out", metavar="DIR", help="write worst-case.json, the argmax world files, worst-case.md and plots")
+    p.add_argument("--summarise", nargs="+", metavar="DIR",
+                   help="print worst-case.md (Markdown) from the --out directories of earlier runs, exhaustive and --search")
     p.add_argument("--quiet", action="store_true", help="no progress line")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     add_search_arguments(p)
@@ -85,6 +87,13 @@ def _validate(args: argparse.Namespace) -> None:
 
 
 def worst_case_command(args: argparse.Namespace) -> int:
+    if args.summarise:
+        from topomark.reference.worstcase.summary import summarise
+        missing = [d for d in args.summarise if not Path(d).is_dir()]
+        if missing:
+            raise InvalidInput(f"--summarise: {missing[0]!r} is not a directory (give the --out directories of runs)")
+        print(summarise([Path(d) for d in args.summarise]))
+        return 0
     if args.search:
         return search_command(args)
     _validate(args)
