@@ -6,7 +6,7 @@ from __future__ import annotations
 import json
 import time
 
-from topomark.spec.errors import InvalidInput
+from topomark.spec.errors import InvalidInput, unknown_name
 
 from topomark.reference.bench.experiments import EXPERIMENTS, HEAVY_GRAPHS, HEAVY_MAX_SIZE, plan, run_sweep, write_report
 from topomark.reference.files.outputs import check_output_dir
@@ -46,7 +46,7 @@ def register(sub) -> None:
 
 def bench_command(args) -> int:
     if args.experiment not in EXPERIMENTS:
-        raise InvalidInput(f"unknown experiment {args.experiment!r} (choose from {', '.join(EXPERIMENTS)})")
+        raise unknown_name("experiment", args.experiment, EXPERIMENTS)
     if args.graphs < 1 or args.heavy_graphs < 1:
         raise InvalidInput("--graphs and --heavy-graphs must be >= 1")
     if args.jobs is not None:

@@ -8,7 +8,7 @@ from collections import Counter
 
 from topomark.reference.cli.args import seed as seed_option
 from topomark.spec.dartgraph import find_isomorphism_nx
-from topomark.spec.errors import InvalidInput, TopomarkFault
+from topomark.spec.errors import InvalidInput, TopomarkFault, unknown_name
 from topomark.spec.isomorphism import find_isomorphism, verify_witness
 from topomark.spec.worldfile import dumps_world, load_world, world_to_json
 
@@ -64,7 +64,7 @@ def world_command(args) -> int:
         raise InvalidInput(f"world needs a GENERATOR ({', '.join(GENERATORS)}) or --show FILE")
     name = args.generator.partition(":")[0]
     if name not in GENERATORS:
-        raise InvalidInput(f"unknown generator {name!r}; known generators: {', '.join(GENERATORS)}")
+        raise unknown_name("generator", name, GENERATORS)
     if args.output:
         check_output(args.output)  # before generating: a large world must not be built for nothing
     world = resolve_world(args.generator, args.seed)
