@@ -111,7 +111,9 @@ def did_you_mean(name: str, choices: Iterable[str]) -> str:
     """
     if not isinstance(name, str) or len(name) > 200:  # a hostile megabyte name is close to nothing
         return ""
-    close = difflib.get_close_matches(name, [str(c) for c in choices], n=3, cutoff=0.6)
+    choices = [str(c) for c in choices]
+    close = set(difflib.get_close_matches(name, choices, n=3, cutoff=0.6))
+    close = [c for c in choices if c in close]  # in the choices' own order
     if not close:
         return ""
     return " (did you mean " + " or ".join(repr(c) for c in close) + "?)"
