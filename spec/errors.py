@@ -18,7 +18,6 @@ they survive ``python -O``.
 
 from __future__ import annotations
 
-import difflib
 from dataclasses import dataclass, field
 from typing import Any, Iterable
 
@@ -111,6 +110,8 @@ def did_you_mean(name: str, choices: Iterable[str]) -> str:
     """
     if not isinstance(name, str) or len(name) > 200:  # a hostile megabyte name is close to nothing
         return ""
+    import difflib  # only when a name is wrong: the command line's start stays fast
+
     choices = [str(c) for c in choices]
     close = set(difflib.get_close_matches(name, choices, n=3, cutoff=0.6))
     close = [c for c in choices if c in close]  # in the choices' own order

@@ -17,8 +17,7 @@ __all__ = ["register"]
 
 def register(sub) -> None:
     p = sub.add_parser(
-        "bench", help="run a thesis experiment (figures 3.10-3.12, tables 4.1-4.8, lighthouses, tables 6.1-6.2) and "
-             "write CSV + report",
+        "bench",
         description="Run EXPERIMENT over fixed-seed worlds, every run checked (invariants after every iteration, "
                     "final isomorphism) unless --no-check; append each run to DIR/runs.csv (a restarted sweep "
                     "skips finished runs; one sweep at a time per DIR) and write DIR/EXPERIMENT.md and plots. "

@@ -32,7 +32,7 @@ __all__ = ["register", "distinguish_command", "census_command", "format_motions"
 
 
 def register(sub) -> None:
-    p = sub.add_parser("distinguish", help="shortest motion sequence telling two worlds apart",
+    p = sub.add_parser("distinguish",
                        description="Exit 0 if some motion sequence gives different perceptions in A and B "
                                    "(prints the shortest), 1 if they are indistinguishable, 2 on bad input. "
                                    "Both files need a start.")
@@ -40,8 +40,7 @@ def register(sub) -> None:
     p.add_argument("b", metavar="B")
     p.add_argument("--json", action="store_true", help="machine-readable output")
     p.set_defaults(handler=distinguish_command)
-    q = sub.add_parser("census", help="group all small worlds by what a robot perceives",
-                       description="For every embedded world with 2..N vertices and max degree D (up to "
+    q = sub.add_parser("census", description="For every embedded world with 2..N vertices and max degree D (up to "
                                    "extended isomorphism), every placement of the marker class and every start, "
                                    "group placements by the robot's language. Exit 0 if no two non-isomorphic "
                                    "marked worlds are indistinguishable, 1 if some are, 2 on bad input, 130 when "

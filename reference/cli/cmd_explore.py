@@ -26,7 +26,7 @@ __all__ = ["register", "parse_policies"]
 
 def register(sub) -> None:
     p = sub.add_parser(
-        "explore", help="explore a world with every invariant checked after every step",
+        "explore",
         description="Explore WORLD (a world file or GENERATOR[:NAME=VALUE,...]; default: a built-in 5x5 lattice "
                     "with 2 cells removed) and verify the map. Exit 0 when the map is verified isomorphic, 1 on an "
                     "invariant violation or when the algorithm stops without a map (outcome failed or limit), "

@@ -136,7 +136,7 @@ def _make_limits(args) -> Limits:
 
 
 def register(sub) -> None:
-    p = sub.add_parser("run-external", help="play a world to another program over topomark/protocol@1 and judge it",
+    p = sub.add_parser("run-external",
                        description="Run CMD as the explorer of WORLD (a world file or generator) over JSON Lines on "
                                    "its stdin/stdout (spec/protocol.md). Exit 0 if its map is extended-isomorphic "
                                    "and every snapshot satisfied I-1/I-2, 1 on any failure, 2 on bad input.")
@@ -145,7 +145,7 @@ def register(sub) -> None:
     _run_options(p)
     p.set_defaults(handler=run_external_command, add_options=_run_options)
 
-    q = sub.add_parser("check-map", help="judge a map file against a world file (extended isomorphism)",
+    q = sub.add_parser("check-map",
                        description="Exit 0 if MAP is extended-isomorphic to WORLD, 1 if not (with the first mismatch "
                                    "in words), 2 on bad input. Markers: compared if the world file has any; else, if "
                                    "the world has a start and the map one directional vertex marker, the lighthouse "
@@ -155,8 +155,7 @@ def register(sub) -> None:
     q.add_argument("--json", action="store_true")
     q.set_defaults(handler=check_map_command)
 
-    r = sub.add_parser("replay", help="verify a topomark/trace@1 trace recorded by any implementation",
-                       description="Replay TRACE on WORLD: every perception, the cost, I-1/I-2 after every "
+    r = sub.add_parser("replay", description="Replay TRACE on WORLD: every perception, the cost, I-1/I-2 after every "
                                    "iteration (S and U rebuilt from the joins) and the final map. Exit 0 if it "
                                    "holds up, 1 at the first divergence (step, expected, found), 2 on bad input.")
     r.add_argument("world", metavar="WORLD")
@@ -164,8 +163,7 @@ def register(sub) -> None:
     r.add_argument("--json", action="store_true")
     r.set_defaults(handler=replay_command)
 
-    d = sub.add_parser("drive", help="drive an external world provider (simulator or robot bridge) with "
-                                     "Algorithm 3.1",
+    d = sub.add_parser("drive",
                        description="Run CMD as the world (spec/protocol.md, provider role): topomark sends motions "
                                    "and marker drops, CMD answers with signatures. Exit 0 when a map was made (and, "
                                    "with --check WORLD, is extended-isomorphic to it), 1 on failure, 2 on bad input.")
@@ -178,7 +176,7 @@ def register(sub) -> None:
 
 def _register_conformance(sub) -> None:
     """``conformance export|lint|run``."""
-    c = sub.add_parser("conformance", help="export, lint or run the conformance suite (topomark/conformance@2)",
+    c = sub.add_parser("conformance",
                        description="export DIR: write the versioned suite topomark/conformance@2 (worlds, kits, "
                                    "bounds, reference runs: costs, marker operations, maps, traces; Algorithm 3.1's "
                                    "cases and a suite per deterministic algorithm). lint DIR: check a suite (@2 or "

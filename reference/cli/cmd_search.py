@@ -34,8 +34,7 @@ __all__ = ["register", "search_command", "validate_args", "describe_world", "wri
 
 def register(sub) -> None:
     p = sub.add_parser(
-        "search", help="SAT search for indistinguishable non-isomorphic worlds (Z3)",
-        description="Search with Z3 for two worlds carrying the marker class that no motion sequence tells "
+        "search", description="Search with Z3 for two worlds carrying the marker class that no motion sequence tells "
                     "apart but that are not extended-isomorphic. Exit 0 if found (or, with --prove, if none "
                     "exists within the bounds), 1 otherwise (including unknown/timeout), 2 on bad input.")
     p.add_argument("--marker", required=True, metavar="CLASS", help="one of: " + ", ".join(MARKER_CLASSES))

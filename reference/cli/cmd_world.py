@@ -21,7 +21,7 @@ __all__ = ["register", "describe"]
 
 def register(sub) -> None:
     gens = "; ".join(f"{g}({', '.join(f'{k}={v}' for k, v in p.items())})" for g, p in PARAMETERS.items())
-    p = sub.add_parser("world", help="generate a world file, or --show one",
+    p = sub.add_parser("world",
                        description="Generate a world: GENERATOR[:NAME=VALUE,...]. Generators and defaults: " + gens)
     p.add_argument("generator", nargs="?", metavar="GENERATOR", help="generator name with optional :NAME=VALUE,...")
     p.add_argument("--seed", type=seed_option, help="seed for random generators")
@@ -29,7 +29,7 @@ def register(sub) -> None:
     p.add_argument("--show", metavar="FILE", help="summarise a world file instead")
     p.add_argument("--json", action="store_true", help="machine-readable output")
     p.set_defaults(handler=world_command)
-    q = sub.add_parser("iso", help="extended-isomorphism verdict for two world/map files",
+    q = sub.add_parser("iso",
                        description="Exit 0 if A and B are extended-isomorphic (markers preserved; starts ignored), "
                                    "1 if not (with the first mismatch), 2 on bad input.")
     q.add_argument("a", metavar="A")
