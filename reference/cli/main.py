@@ -14,12 +14,15 @@ imports none: it stays fast, whatever the commands need).
 
 Under ``--json`` (anywhere before a ``--``) every outcome is one JSON object on stdout, an error too:
 ``{"error": "...", "exit": 2}``.  A first Ctrl-C ends the command with ``topomark: interrupted``, exit
-130; a second one, during the clean-up the first started, ends the process at once and silently, exit 130.
+130; a second one, during the clean-up the first started, ends the process at once and silently, exit 130;
+one that comes once only the interpreter's own exit is left is ignored, so it too ends quietly with 130.
+Worker processes leave Ctrl-C to the command (their initializer ignores it) so it is reported once.
 """
 
 from __future__ import annotations
 
 import argparse
+import atexit
 import importlib
 import json
 import os
@@ -116,8 +119,10 @@ def main(argv: Sequence[str] | None = None) -> int:
             code = _main(list(sys.argv[1:] if argv is None else argv))
         return code
     finally:
-        if previous is not None and code != EXIT_INTERRUPTED:  # after a Ctrl-C, a second one stays quiet
+        if previous is not None and code != EXIT_INTERRUPTED:
             signal.signal(signal.SIGINT, previous)
+        elif previous is not None:  # after a Ctrl-C, a second one stays quiet to the end, the interpreter's too
+            atexit.register(signal.signal, signal.SIGINT, signal.SIG_IGN)
 
 
 def _catch_second_interrupt():
