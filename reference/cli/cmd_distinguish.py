@@ -36,8 +36,8 @@ def register(sub) -> None:
                        description="Exit 0 if some motion sequence gives different perceptions in A and B "
                                    "(prints the shortest), 1 if they are indistinguishable, 2 on bad input. "
                                    "Both files need a start.")
-    p.add_argument("a", metavar="A")
-    p.add_argument("b", metavar="B")
+    p.add_argument("a", metavar="A", help="the first world file (with a start)")
+    p.add_argument("b", metavar="B", help="the second world file (with a start)")
     p.add_argument("--json", action="store_true", help="machine-readable output")
     p.set_defaults(handler=distinguish_command)
     q = sub.add_parser("census", description="For every embedded world with 2..N vertices and max degree D (up to "
@@ -49,8 +49,9 @@ def register(sub) -> None:
                                    "computed again (said on stderr); a damaged, older-format or other census's "
                                    "manifest is exit 2 naming it. Worker processes die with the census.")
     q.add_argument("--marker", required=True, metavar="CLASS", help="one of: " + ", ".join(MARKER_CLASSES))
-    q.add_argument("--max-vertices", type=int, required=True, metavar="N")
-    q.add_argument("--max-degree", type=int, required=True, metavar="D")
+    q.add_argument("--max-vertices", type=int, required=True, metavar="N",
+                   help=f"largest world size, 2..{MAX_VERTICES}")
+    q.add_argument("--max-degree", type=int, required=True, metavar="D", help="largest vertex degree, >= 1")
     q.add_argument("--jobs", type=int, default=1, metavar="J", help=f"worker processes, 1 to {MAX_JOBS} (default 1)")
     q.add_argument("--shards", metavar="DIR", help="keep the map/reduce shards in DIR; a killed census run again "
                    "with the same DIR resumes from its finished, verified tasks (default: a temporary directory)")

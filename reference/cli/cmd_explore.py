@@ -31,7 +31,8 @@ def register(sub) -> None:
                     "with 2 cells removed) and verify the map. Exit 0 when the map is verified isomorphic, 1 on an "
                     "invariant violation or when the algorithm stops without a map (outcome failed or limit), "
                     "2 on bad input.")
-    p.add_argument("world", nargs="?", metavar="WORLD_OR_GENERATOR")
+    p.add_argument("world", nargs="?", metavar="WORLD_OR_GENERATOR",
+                   help="a world file, or GENERATOR[:NAME=VALUE,...] (default: the built-in world)")
     p.add_argument("--algorithm", default="basic", help=f"one of: {', '.join(REGISTRY)} (default basic; "
                                                           "topomark algorithms lists them)")
     p.add_argument("--lighthouse", default=None,

@@ -32,12 +32,12 @@ def register(sub) -> None:
     q = sub.add_parser("iso",
                        description="Exit 0 if A and B are extended-isomorphic (markers preserved; starts ignored), "
                                    "1 if not (with the first mismatch), 2 on bad input.")
-    q.add_argument("a", metavar="A")
-    q.add_argument("b", metavar="B")
+    q.add_argument("a", metavar="A", help="the first world or map file")
+    q.add_argument("b", metavar="B", help="the second world or map file")
     q.add_argument("--method", choices=("anchored", "networkx", "both"), default="anchored",
                    help="which implementation decides (both: each, and they must agree)")
     q.add_argument("--ignore-markers", action="store_true", help="compare the embedded graphs only")
-    q.add_argument("--json", action="store_true")
+    q.add_argument("--json", action="store_true", help="machine-readable output")
     q.set_defaults(handler=iso_command)
 
 

@@ -24,9 +24,10 @@ from typing import Any
 
 from topomark.spec.errors import InvalidInput, clip, did_you_mean
 
-__all__ = ["PROG", "Parser", "emit"]
+__all__ = ["PROG", "JSON_HELP", "Parser", "emit"]
 
 PROG = "topomark"
+JSON_HELP = "print one JSON object on stdout (an error too: {\"error\": ..., \"exit\": 2})"
 
 
 class Parser(argparse.ArgumentParser):
