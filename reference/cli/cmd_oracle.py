@@ -163,7 +163,7 @@ def register(sub) -> None:
                        description="Replay TRACE on WORLD: every perception, the cost, I-1/I-2 after every "
                                    "iteration (S and U rebuilt from the joins) and the final map. Exit 0 if it "
                                    "holds up, 1 at the first divergence (step, expected, found), 2 on bad input.")
-    r.add_argument("world", metavar="WORLD", help=WORLD_HELP)
+    r.add_argument("world", metavar="WORLD", help="the world file the trace was recorded on")
     r.add_argument("trace", metavar="TRACE", help="the JSON Lines trace file to replay")
     r.add_argument("--json", action="store_true", help=JSON_HELP)
     r.set_defaults(handler=replay_command)
