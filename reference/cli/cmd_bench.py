@@ -32,9 +32,9 @@ def register(sub) -> None:
     p.add_argument("--heavy-max-size", type=int, default=HEAVY_MAX_SIZE,
                    help=f"largest size for enh5-d2 on complete(-hole) worlds (default {HEAVY_MAX_SIZE})")
     p.add_argument("--sizes", type=int, nargs="+", metavar="SIZE", help="only these sizes (the thesis's n)")
-    p.add_argument("--jobs", type=int, default=None,
+    p.add_argument("--jobs", type=int, default=None, metavar="N",
                    help=f"worker processes, 1 to {MAX_JOBS} (default: one per CPU; never more than the runs)")
-    p.add_argument("--out", default="bench-out", metavar="DIR", help="output directory (default bench-out)")
+    p.add_argument("-o", "--out", default="bench-out", metavar="DIR", help="output directory (default bench-out)")
     p.add_argument("--no-check", action="store_true", help="skip the checker (rows record verified=False)")
     p.add_argument("--no-plots", action="store_true", help="do not draw plots")
     p.add_argument("--report-only", action="store_true", help="regenerate the report from the CSV, run nothing")

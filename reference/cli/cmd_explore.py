@@ -35,7 +35,7 @@ def register(sub) -> None:
                    help="a world file, or GENERATOR[:NAME=VALUE,...] (default: the built-in world)")
     p.add_argument("--algorithm", default="basic", help=f"one of: {', '.join(REGISTRY)} (default basic; "
                                                           "topomark algorithms lists them)")
-    p.add_argument("--lighthouse", default=None,
+    p.add_argument("--lighthouse", default=None, metavar="NAME",
                    help=f"how v0 is marked: {', '.join(LIGHTHOUSES)} (default directional-vertex, Algorithm 3.1's; "
                         "for Algorithm 3.1 and the Chapter 4 enhancements only)")
     for param in parameters().values():

@@ -43,8 +43,9 @@ def register(sub) -> None:
     p.add_argument("--max-degree", type=int, required=True, metavar="D", help="largest vertex degree, >= 1")
     p.add_argument("--planar", action="store_true", help="only planar embeddings (genus 0), like the figures")
     p.add_argument("--prove", action="store_true", help="report a bounded proof: exit 0 iff UNSAT")
-    p.add_argument("--timeout", type=float, default=None, metavar="S", help="give up after S seconds (unknown)")
-    p.add_argument("--out", default=None, metavar="DIR", help="write a.json, b.json, relation.json, pair.svg")
+    p.add_argument("--timeout", type=float, default=None, metavar="SECONDS",
+                   help="give up after SECONDS (outcome unknown)")
+    p.add_argument("-o", "--out", default=None, metavar="DIR", help="write a.json, b.json, relation.json, pair.svg")
     p.add_argument("--json", action="store_true", help="machine-readable output")
     p.set_defaults(handler=search_command)
 

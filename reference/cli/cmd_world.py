@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import argparse
 import json
 import sys
 from collections import Counter
@@ -25,7 +26,8 @@ def register(sub) -> None:
                        description="Generate a world: GENERATOR[:NAME=VALUE,...]. Generators and defaults: " + gens)
     p.add_argument("generator", nargs="?", metavar="GENERATOR", help="generator name with optional :NAME=VALUE,...")
     p.add_argument("--seed", type=seed_option, help="seed for random generators")
-    p.add_argument("-o", "--output", metavar="FILE", help="write the world here (default: stdout)")
+    p.add_argument("-o", "--out", dest="output", metavar="FILE", help="write the world here (default: stdout)")
+    p.add_argument("--output", dest="output", help=argparse.SUPPRESS)  # the former spelling, still accepted
     p.add_argument("--show", metavar="FILE", help="summarise a world file instead")
     p.add_argument("--json", action="store_true", help="machine-readable output")
     p.set_defaults(handler=world_command)
@@ -53,7 +55,7 @@ def describe(world) -> dict:
 def world_command(args) -> int:
     if args.show:
         if args.generator or args.output or args.seed is not None:
-            raise InvalidInput("world --show FILE takes no generator, --seed or -o")
+            raise InvalidInput("world --show FILE takes no generator, --seed or -o/--out")
         info = describe(load_world(args.show))
         text = (f"{args.show}: n={info['n']} m={info['m']} genus={info['genus']} faces={info['faces']}\n"
                 f"degree histogram: " + ", ".join(f"{k}:{v}" for k, v in info["degree_histogram"].items()) +
