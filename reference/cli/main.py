@@ -17,6 +17,14 @@ Under ``--json`` (anywhere before a ``--``) every outcome is one JSON object on 
 130; a second one, during the clean-up the first started, ends the process at once and silently, exit 130;
 one that comes once only the interpreter's own exit is left is ignored, so it too ends quietly with 130.
 Worker processes leave Ctrl-C to the command (their initializer ignores it) so it is reported once.
+
+An option is spelled one way in every command: ``-o/--out`` names where the output goes (a file for
+``world``, a directory for ``bench`` and ``search``; ``world --output`` is still accepted, unlisted);
+``--jobs N`` is 1 to 256 worker processes everywhere (0 is refused: no command runs without a process,
+and each has its default: ``bench`` one per CPU, its runs being small and independent; ``census`` 1,
+all in the leader, since a census's memory grows with its workers and its long runs are started
+deliberately); ``--seed N`` is one integer type (:func:`.args.seed`); ``--timeout SECONDS``;
+``--quiet`` silences progress; ``--json``.
 """
 
 from __future__ import annotations
