@@ -33,8 +33,8 @@ def register(sub) -> None:
                     "2 on bad input.")
     p.add_argument("world", nargs="?", metavar="WORLD_OR_GENERATOR",
                    help="a world file, or GENERATOR[:NAME=VALUE,...] (default: the built-in world)")
-    p.add_argument("--algorithm", default="basic", help=f"one of: {', '.join(REGISTRY)} (default basic; "
-                                                          "topomark algorithms lists them)")
+    p.add_argument("--algorithm", default="basic", metavar="NAME",
+                   help=f"one of: {', '.join(REGISTRY)} (default basic; topomark algorithms lists them)")
     p.add_argument("--lighthouse", default=None, metavar="NAME",
                    help=f"how v0 is marked: {', '.join(LIGHTHOUSES)} (default directional-vertex, Algorithm 3.1's; "
                         "for Algorithm 3.1 and the Chapter 4 enhancements only)")
