@@ -113,8 +113,9 @@ def did_you_mean(name: str, choices: Iterable[str]) -> str:
     import difflib  # only when a name is wrong: the command line's start stays fast
 
     choices = [str(c) for c in choices]
-    close = set(difflib.get_close_matches(name, choices, n=3, cutoff=0.6))
-    close = [c for c in choices if c in close]  # in the choices' own order
+    close = difflib.get_close_matches(name, choices, n=3, cutoff=0.6)
+    score = {c: difflib.SequenceMatcher(None, c, name).ratio() for c in close}
+    close.sort(key=lambda c: (-score[c], choices.index(c)))  # closest first; a tie in the choices' own order
     if not close:
         return ""
     return " (did you mean " + " or ".join(repr(c) for c in close) + "?)"

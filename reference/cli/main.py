@@ -87,7 +87,8 @@ class _Version(argparse.Action):
             text = f"{PROG} {version(PROG)}"
         except PackageNotFoundError:
             text = f"{PROG} (version unknown: the package is not installed)"
-        parser.exit(message=text + "\n")
+        print(text)  # on stdout, as argparse's own version action does
+        parser.exit()
 
 
 def build_parser(only: str | None = None) -> argparse.ArgumentParser:
