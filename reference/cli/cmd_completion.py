@@ -10,6 +10,8 @@ or for zsh, into a directory of ``$fpath`` as ``_topomark``.  Exit 0.
 
 from __future__ import annotations
 
+from topomark.spec.errors import TopomarkFault
+
 __all__ = ["register", "completion_command", "SHELLS"]
 
 SHELLS = ("bash", "zsh", "tcsh")
@@ -22,8 +24,11 @@ def register(sub) -> None:
 
 
 def completion_command(args) -> int:
-    import shtab  # only here: nothing else needs it
-
+    try:
+        import shtab  # only here: nothing else needs it
+    except ImportError:
+        raise TopomarkFault("completion needs shtab, a dependency of topomark that is not installed here "
+                            "(pip install shtab)") from None
     from topomark.reference.cli.main import build_parser
 
     print(shtab.complete(build_parser(), shell=args.shell), end="")
