@@ -42,8 +42,7 @@ MAX_EXHAUSTIVE = 8  # the census's enumeration reaches n = 8 (topomark.proofs.en
 
 
 def register(sub) -> None:
-    p = sub.add_parser("worst-case", help="the worst cost of an algorithm over every small world (§7.2)",
-                       description="Run an algorithm from every start of every embedded world up to a size and "
+    p = sub.add_parser("worst-case", description="Run an algorithm from every start of every embedded world up to a size and "
                                    "degree (exhaustive, exact), or search larger worlds for bad ones (--search, a "
                                    "lower bound); report the largest cost, cost/m and cost / bound per n.")
     p.add_argument("--algorithm", default="basic", metavar="NAME", help="registered algorithm (default basic; "

@@ -27,7 +27,7 @@ import json
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
-from topomark.spec.errors import AlgorithmStopped, CheckFailure, InvalidInput, LimitReached, OutOfMarkers
+from topomark.spec.errors import AlgorithmStopped, CheckFailure, InvalidInput, LimitReached, OutOfMarkers, unknown_name
 from topomark.spec.kit import Kit
 from topomark.spec.marker import EdgeMarker, VertexMarker
 from topomark.spec.markerlayer import MarkerLayer, apply_op
@@ -187,7 +187,7 @@ def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: 
     run = _setup(world, spec, lighthouse, options or {})
     policies = policies or Policies()
     if check_mode not in Checker.MODES:
-        raise InvalidInput(f"unknown check mode {check_mode!r} (choose from {', '.join(Checker.MODES)})")
+        raise unknown_name("check mode", check_mode, Checker.MODES)
     sink = ListSink() if sink is None and record else sink
     trace = sink.records if isinstance(sink, ListSink) else []
     emit = sink.emit if sink is not None else None

@@ -66,7 +66,7 @@ import re
 from numbers import Integral
 from typing import Any, Callable
 
-from topomark.spec.errors import InvalidInput, clip
+from topomark.spec.errors import InvalidInput, clip, unknown_name, did_you_mean
 from topomark.spec.world import World
 
 from topomark.reference.worlds.embedding import circle_positions, from_networkx, from_positions, natural_key, planar
@@ -190,13 +190,14 @@ def generate(name: str, **params: Any) -> World:
     12
     """
     if name not in GENERATORS:
-        raise InvalidInput(f"unknown generator {name!r}; known generators: {', '.join(GENERATORS)}")
+        raise unknown_name("generator", name, GENERATORS)
     defaults = PARAMETERS[name]
     unknown = sorted(set(params) - set(defaults))
     if unknown:
         accepted = ", ".join(defaults) if defaults else "none"
         raise InvalidInput(
-            f"generator {name!r} has no parameter {', '.join(map(repr, unknown))} (accepted: {accepted})"
+            f"generator {name!r} has no parameter {', '.join(map(repr, unknown))}{did_you_mean(unknown[0], defaults)} "
+            f"(accepted: {accepted})"
         )
     args = {p: _coerce(name, p, params.get(p, d), d) for p, d in defaults.items()}
     return GENERATORS[name](**args)

@@ -29,7 +29,7 @@ from __future__ import annotations
 
 from typing import Any, Iterable
 
-from topomark.spec.errors import InvalidInput
+from topomark.spec.errors import InvalidInput, unknown_name
 from topomark.spec.world import Start, World
 
 from topomark.reference.algorithms.registry import REGISTRY, AlgorithmSpec, algorithm_spec
@@ -150,7 +150,7 @@ def suite_algorithms(names: Iterable[str] = (), families: Iterable[str] = ()) ->
     names, families = list(names), list(families)
     for family in families:
         if family not in FAMILIES:
-            raise InvalidInput(f"unknown family {family!r} (choose from {', '.join(FAMILIES)})")
+            raise unknown_name("family", family, FAMILIES)
     for name in names:
         if not algorithm_spec(name).deterministic:
             raise InvalidInput(f"the algorithm {name} is randomised: it has no conformance suite (its reference run "
