@@ -53,7 +53,7 @@ def register(sub) -> None:
     p.add_argument("--max-vertices", type=int, metavar="N", help=f"largest world size (exhaustive: 2..{MAX_EXHAUSTIVE})")
     p.add_argument("--max-degree", type=int, default=4, metavar="D", help="largest vertex degree (default 4)")
     p.add_argument("--min-vertices", type=int, default=2, metavar="M", help="smallest world size (default 2)")
-    p.add_argument("--jobs", type=int, default=1, metavar="J", help=f"worker processes, 1 to {MAX_JOBS} (default 1)")
+    p.add_argument("--jobs", type=int, default=1, metavar="N", help=f"worker processes, 1 to {MAX_JOBS} (default 1)")
     p.add_argument("--scheduler", metavar="ADDRESS", help="run the tasks on a Dask cluster (an address, or 'local')")
     p.add_argument("--shards", metavar="DIR", help="keep the tasks' results in DIR; run again, it resumes")
     p.add_argument("--sample", type=float, default=0.001, metavar="FRACTION",
@@ -61,7 +61,7 @@ def register(sub) -> None:
     p.add_argument("--seed", type=seed, default=0, help="seed of the checked sample and of --search (default 0)")
     p.add_argument("--cross-check", action="store_true",
                    help="also run the brute force over labelled rotation systems and require the same maxima (n <= 5)")
-    p.add_argument("--out", metavar="DIR", help="write worst-case.json, the argmax world files, worst-case.md and plots")
+    p.add_argument("-o", "--out", metavar="DIR", help="write worst-case.json, the argmax world files, worst-case.md and plots")
     p.add_argument("--summarise", nargs="+", metavar="DIR",
                    help="print worst-case.md (Markdown) from the --out directories of earlier runs, exhaustive and --search")
     p.add_argument("--quiet", action="store_true", help="no progress line")

@@ -32,7 +32,8 @@ def add_search_arguments(p) -> None:
                    help="runs per size for the search, and as many random worlds (default 400)")
     g.add_argument("--objective", choices=OBJECTIVES, default="cost",
                    help="what to maximise: cost, cost-per-m, or ratio (cost / the exact bound)")
-    g.add_argument("--family", choices=("lattice-hole",), help="search within a family of worlds")
+    g.add_argument("--world-family", choices=("lattice-hole",),
+                   help="search within a family of worlds: lattice-hole (a lattice, which cells are removed)")
 
 
 def setup_of(args: argparse.Namespace):
@@ -63,13 +64,13 @@ def search_command(args: argparse.Namespace) -> int:
     rows: list[dict[str, Any]] = []
     for n in args.vertices:
         kw = dict(objective=args.objective, evaluations=args.evaluations, seed=args.seed, lighthouse=setup.lighthouse,
-                  policies=setup.policy(), family=args.family)
+                  policies=setup.policy(), family=args.world_family)
         found = adversarial_search(setup.algorithm, n, args.max_degree, progress=progress, **kw).to_json()
         baseline = random_baseline(setup.algorithm, n, args.max_degree, **kw).to_json()
         rows.append({"n": n, "search": found, "random": baseline})
     best = [{**r["search"]["best"], "n": r["n"]} for r in rows if r["search"].get("best")]
     data = {"algorithm": setup.algorithm, "setup": setup.to_json(), "max_degree": args.max_degree,
-            "objective": args.objective, "family": args.family, "evaluations": args.evaluations, "per_n": rows,
+            "objective": args.objective, "family": args.world_family, "evaluations": args.evaluations, "per_n": rows,
             "fit": fit_exponents(best) if len(best) >= 2 else None,
             "method": "seeded local search: a lower bound on the worst case, not the worst case"}
     if args.out:
