@@ -86,10 +86,8 @@ def random_world(n: int, max_degree: int, rng: random.Random) -> World:
     return World(rotation, (), _random_start(rotation, rng))
 
 
-def _new_cyclic_order(ns: tuple[str, ...], rng: random.Random) -> list[str] | None:
-    """A clockwise order of ``ns`` that is a different cyclic order (None for degree <= 2: there is one)."""
-    if len(ns) < 3:
-        return None
+def _new_cyclic_order(ns: tuple[str, ...], rng: random.Random) -> list[str]:
+    """A clockwise order of ``ns`` (3 or more neighbours) that is a different cyclic order."""
     rest = list(ns[1:])
     while True:  # fixing the first neighbour, the orders of the rest are the cyclic orders
         rng.shuffle(rest)
@@ -114,11 +112,11 @@ def _try_move(world: World, kind: str, max_degree: int, rng: random.Random) -> W
     rot = {v: list(ns) for v, ns in world.rotation.items()}
     vertices = list(world.vertices)
     if kind == "rotation":
-        v = rng.choice(vertices)
-        order = _new_cyclic_order(world.rotation[v], rng)
-        if order is None:
+        branching = [v for v in vertices if len(rot[v]) >= 3]
+        if not branching:
             return None
-        rot[v] = order
+        v = rng.choice(branching)
+        rot[v] = _new_cyclic_order(world.rotation[v], rng)
         return _with(world, rot)
     if kind == "add-edge":
         u, v = rng.sample(vertices, 2)

@@ -15,15 +15,17 @@ A run that does not end with the algorithm claiming ``correct`` scores −∞ an
 world the algorithm refuses, e.g. a start its lighthouse cannot use, counts the same way).  Every run is
 unchecked (``check=False``): the search measures cost, the checks are ``topomark explore``'s job.
 
-The optimiser is DEAP's (μ+λ) evolution strategy (``deap.algorithms.eaMuPlusLambda``), mutation only, with
-the moves of :mod:`.moves` as its mutation: a population keeps several different bad worlds alive (a graph
-family and its embedding are found together, and one annealing walk tends to lock into one of them), and
-DEAP is maintained, documented and small.  ``simanneal`` was the alternative; its last release is from 2019
-and its own auto-tuning of temperatures spends evaluations we count.  DEAP draws from the global ``random``
-module: the search seeds it with ``seed`` and restores its state afterwards, and the moves draw from their
-own ``random.Random`` — the same seed gives the same best world and cost (in one process, as runs are
-deterministic).  The budget is exact: the generations are sized to it and an offspring past the budget is
-not run (it scores −∞ and is not counted).
+The optimiser is DEAP's (μ+λ) evolution strategy (``deap.algorithms.eaMuPlusLambda``), mutation only, with the
+moves of :mod:`.moves` as its mutation. Its first generation is a quarter of the budget of random candidates, of
+which the best μ go on: a single move changes a large world little, and on n = 100 a search started from only μ
+random worlds was beaten by the best of as many random worlds. A population keeps several different bad worlds
+alive (a graph family and its embedding are found together, and one annealing walk tends to lock into one of
+them), and DEAP is maintained, documented and small. ``simanneal`` was the alternative; its last release is from
+2019 and its own auto-tuning of temperatures spends evaluations we count. DEAP draws from the global ``random``
+module: the search seeds it with ``seed`` and restores its state afterwards, and the moves draw from their own
+``random.Random`` — the same seed gives the same best world and cost (in one process, as runs are
+deterministic). The budget is exact: the generations are sized to it and an offspring past the budget is not run
+(it scores −∞ and is not counted).
 
 :func:`random_baseline` is the comparison the search must beat: the best of as many random worlds
 (:func:`~.moves.random_world`, or random hole patterns for the ``lattice-hole`` family).  :func:`adversarial_search`
@@ -55,11 +57,12 @@ from topomark.reference.worstcase.fit import fit_exponents
 from topomark.reference.worstcase.moves import LatticeHoles, move_lattice, move_world, random_lattice, random_world
 
 __all__ = ["adversarial_search", "random_baseline", "fit_exponents", "SearchResult", "Found", "OBJECTIVES",
-           "FAMILIES", "MU", "LAMBDA"]
+           "FAMILIES", "MU", "LAMBDA", "START_SHARE"]
 
 OBJECTIVES = ("cost", "cost-per-m", "ratio")
 FAMILIES = ("general", "lattice-hole")
 MU, LAMBDA = 8, 16  # the (μ+λ) sizes: 8 parents, 16 offspring per generation
+START_SHARE = 4  # the first generation: a quarter of the budget (at least μ) of random candidates
 HISTORY_POINTS = 20  # the history holds the best score after about every 1/20 of the budget
 
 
@@ -284,7 +287,8 @@ def adversarial_search(algorithm: str = "basic", n: int = 20, max_degree: int = 
                        progress: Callable[[int, float], None] | None = None, baseline: bool = True) -> SearchResult:
     """Search for a world (start included) of ``n`` vertices and degrees <= ``max_degree`` maximising
     ``objective`` for ``algorithm``, in ``evaluations`` runs, by DEAP's (μ+λ) strategy (:data:`MU`,
-    :data:`LAMBDA`); with ``baseline`` (the default), :func:`random_baseline` with the same budget and seed is
+    :data:`LAMBDA`) from a first generation of a quarter of the budget (at least μ) of random candidates
+    (:data:`START_SHARE`), the best μ of which the strategy keeps; with ``baseline`` (the default), :func:`random_baseline` with the same budget and seed is
     run too and kept in ``.random``.  ``family="lattice-hole"`` searches hole patterns of the
     ⌊√n⌋ x ⌊n/⌊√n⌋⌋ lattice (8 x 8 for n = 64) instead.  ``progress(evaluations_done, best_score)`` is called
     after about every 1/20 of the budget.  Bad parameters raise InvalidInput naming the first wrong one."""
@@ -296,11 +300,11 @@ def adversarial_search(algorithm: str = "basic", n: int = 20, max_degree: int = 
     toolbox.register("mutate", lambda ind: (_mutated(ind, problem, rng),))
     toolbox.register("select", tools.selBest)
     toolbox.register("clone", _clone)
-    mu = min(MU, problem.evaluations)
-    population = [_Individual([problem.draw(rng)]) for _ in range(mu)]
-    generations = math.ceil((problem.evaluations - mu) / LAMBDA)
+    first = min(problem.evaluations, max(MU, problem.evaluations // START_SHARE))
+    population = [_Individual([problem.draw(rng)]) for _ in range(first)]
+    generations = math.ceil((problem.evaluations - first) / LAMBDA)
     with _global_random(problem.seed):
-        algorithms.eaMuPlusLambda(population, toolbox, mu=mu, lambda_=LAMBDA, cxpb=0.0, mutpb=1.0,
+        algorithms.eaMuPlusLambda(population, toolbox, mu=min(MU, first), lambda_=LAMBDA, cxpb=0.0, mutpb=1.0,
                                   ngen=generations, verbose=False)
     result = tally.result()
     if baseline:
