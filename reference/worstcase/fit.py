@@ -7,13 +7,15 @@ of log(cost) against log(x) (``numpy.polyfit``, degree 1) with its R², and the 
 cost ≈ c·m^a·n^b (``numpy.linalg.lstsq`` on [1, log m, log n]).  A factor with fewer than two distinct values
 (or a two-factor fit with fewer than three rows or collinear log m and log n) has no fit: ``None``.
 
->>> rows = [{"n": n, "m": m, "diameter": 3, "max_degree": 4, "cost": 3 * m * m} for n, m in ((4, 5), (8, 12), (16, 30))]
+>>> rows = [{"n": n, "m": m, "diameter": 3, "max_degree": 4, "cost": 3 * m * m}
+...         for n, m in ((4, 5), (8, 12), (16, 30))]
 >>> fit = fit_exponents(rows)
 >>> fit["m"]
 {'exponent': 2.0, 'r2': 1.0}
 >>> fit["diameter"] is None
 True
->>> rows = [{"n": n, "m": m, "diameter": 1, "max_degree": 3, "cost": 2 * m**2 * n} for n, m in ((4, 5), (8, 9), (6, 14))]
+>>> rows = [{"n": n, "m": m, "diameter": 1, "max_degree": 3, "cost": 2 * m**2 * n}
+...         for n, m in ((4, 5), (8, 9), (6, 14))]
 >>> fit_exponents(rows)["m_n"]
 {'c': 2.0, 'a': 2.0, 'b': 1.0, 'r2': 1.0}
 """
@@ -51,7 +53,8 @@ def _two_factor(logm: np.ndarray, logn: np.ndarray, y: np.ndarray) -> dict[str, 
     if len(y) < 3 or np.linalg.matrix_rank(design) < 3:
         return None
     (b0, a, b), *_ = np.linalg.lstsq(design, y, rcond=None)
-    return {"c": round(float(np.exp(b0)), _DIGITS), "a": round(float(a), _DIGITS), "b": round(float(b), _DIGITS),
+    c = float(f"{float(np.exp(b0)):.{_DIGITS}g}")
+    return {"c": c, "a": round(float(a), _DIGITS), "b": round(float(b), _DIGITS),
             "r2": _r2(y, design @ np.array([b0, a, b]))}
 
 
@@ -67,9 +70,9 @@ def _column(rows: list[Mapping[str, Any]], key: str) -> np.ndarray:
 
 def fit_exponents(rows: Iterable[Mapping[str, Any]]) -> dict[str, Any]:
     """The exponents of ``cost`` against each of :data:`FACTORS` and the fit cost ≈ c·m^a·n^b, as plain dicts
-    rounded to 6 decimals: ``{factor: {"exponent", "r2"} or None, "m_n": {"c", "a", "b", "r2"} or None,
-    "rows": count}``.  ``r2`` is None where log(cost) does not vary.  A row missing a positive number for a
-    factor or the cost is bad input."""
+    rounded to 6 decimals (``c`` to 6 significant digits): ``{factor: {"exponent", "r2"} or None,
+    "m_n": {"c", "a", "b", "r2"} or None, "rows": count}``.  ``r2`` is None where log(cost) does not vary.
+    A row missing a positive number for a factor or the cost is bad input."""
     rows = list(rows)
     if not rows:
         raise InvalidInput("fit_exponents needs at least one row")

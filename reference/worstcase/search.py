@@ -1,4 +1,4 @@
-"""Adversarial search for bad worlds past exhaustive sizes: a lower bound on the worst case (thesis §7.2, L2260–L2262).
+"""Adversarial search for bad worlds past exhaustive sizes, a lower bound on the worst case (§7.2, L2260–L2262).
 
 §7.2 finds the O(m²n) bound of Algorithm 3.1 "quite loose" (L2260), asks whether its pessimistic assumptions can
 happen together and on which classes of graphs, and suggests bounds in terms of the diameter and the maximum
@@ -288,10 +288,11 @@ def adversarial_search(algorithm: str = "basic", n: int = 20, max_degree: int = 
     """Search for a world (start included) of ``n`` vertices and degrees <= ``max_degree`` maximising
     ``objective`` for ``algorithm``, in ``evaluations`` runs, by DEAP's (μ+λ) strategy (:data:`MU`,
     :data:`LAMBDA`) from a first generation of a quarter of the budget (at least μ) of random candidates
-    (:data:`START_SHARE`), the best μ of which the strategy keeps; with ``baseline`` (the default), :func:`random_baseline` with the same budget and seed is
-    run too and kept in ``.random``.  ``family="lattice-hole"`` searches hole patterns of the
-    ⌊√n⌋ x ⌊n/⌊√n⌋⌋ lattice (8 x 8 for n = 64) instead.  ``progress(evaluations_done, best_score)`` is called
-    after about every 1/20 of the budget.  Bad parameters raise InvalidInput naming the first wrong one."""
+    (:data:`START_SHARE`), the best μ of which the strategy keeps; with ``baseline`` (the default),
+    :func:`random_baseline` with the same budget and seed is run too and kept in ``.random``.
+    ``family="lattice-hole"`` searches hole patterns of the ⌊√n⌋ x ⌊n/⌊√n⌋⌋ lattice (8 x 8 for n = 64) instead.
+    ``progress(evaluations_done, best_score)`` is called after about every 1/20 of the budget.  Bad parameters
+    raise InvalidInput naming the first wrong one."""
     problem = _problem(algorithm, n, max_degree, objective, evaluations, seed, lighthouse, policies, family)
     tally = _Tally(problem, progress)
     rng = random.Random(f"adversarial-search:{problem.seed}")
