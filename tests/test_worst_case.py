@@ -211,3 +211,30 @@ def test_the_summary_says_what_is_proved_and_describes_the_worst_worlds(tmp_path
     row = next(line for line in text.splitlines() if line.startswith("| basic | 3 | 5 |"))
     assert "hypotheses rejected" in row and "diam" in row
     assert main(["worst-case", "--summarise", str(tmp_path / "missing")]) == 2
+
+
+def test_the_search_reports_the_best_world_beside_random_and_repeats_with_its_seed(tmp_path, capsys):
+    argv = ["worst-case", "--search", "--vertices", "8", "9", "10", "--evaluations", "40", "--max-degree", "3",
+            "--json"]
+    assert main([*argv, "-o", str(tmp_path)]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert [r["n"] for r in data["per_n"]] == [8, 9, 10] and data["fit"]["rows"] == 3
+    best = data["per_n"][0]["search"]["best"]
+    world = world_from_json(json.loads((tmp_path / "search-best-n8.json").read_text()))
+    assert world.n == 8 and max(world.degree(v) for v in world.vertices) <= 3
+    from topomark.reference.run.explore import explore
+    assert explore(world, "basic").cost == best["cost"]
+    assert data["per_n"][0]["random"]["best"]["cost"] > 0
+    assert main(argv) == 0
+    assert json.loads(capsys.readouterr().out)["per_n"] == data["per_n"]
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["--evaluations", "0"], "--evaluations"),
+    (["--algorithm", "enh4", "--objective", "ratio"], "ratio"),
+    (["--vertices", "2"], "n"),
+])
+def test_bad_search_input_is_one_message(argv, message, capsys):
+    assert main(["worst-case", "--search", "--quiet", *argv]) == 2
+    err = capsys.readouterr().err
+    assert message in err and "Traceback" not in err

@@ -3,9 +3,9 @@
 For each size ``--vertices N ...`` the search (:func:`topomark.reference.worstcase.search.adversarial_search`)
 changes one vertex's rotation, adds or removes an edge, or moves the start, keeping the world connected and within
 ``--max-degree``, and keeps what raises the ``--objective``; the same number of random worlds
-(:func:`~topomark.reference.worstcase.search.random_baseline`) is the yardstick.  What it finds is a lower bound on
+(:func:`~topomark.reference.worstcase.search.random_baseline`, run by the search) is the yardstick.  What it finds is a lower bound on
 the worst case, not the worst case.  The growth of the best cost with m, n, the diameter and the maximum degree is
-fitted on log-log axes (:func:`~topomark.reference.worstcase.search.fit_exponents`).
+fitted on log-log axes (:func:`~topomark.reference.worstcase.fit.fit_exponents`).
 """
 
 from __future__ import annotations
@@ -13,6 +13,7 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+import time
 from pathlib import Path
 from typing import Any
 
@@ -56,22 +57,22 @@ def setup_of(args: argparse.Namespace):
 
 
 def search_command(args: argparse.Namespace) -> int:
-    from topomark.reference.worstcase.search import adversarial_search, fit_exponents, random_baseline
+    from topomark.reference.worstcase.fit import fit_exponents
+    from topomark.reference.worstcase.search import adversarial_search
     setup = setup_of(args)
     if args.evaluations < 1:
         raise InvalidInput(f"--evaluations must be at least 1, not {args.evaluations}")
-    progress = None if args.quiet or args.json else _progress
     rows: list[dict[str, Any]] = []
     for n in args.vertices:
+        progress = None if args.quiet or args.json else _Progress(n, args.evaluations)
         kw = dict(objective=args.objective, evaluations=args.evaluations, seed=args.seed, lighthouse=setup.lighthouse,
                   policies=setup.policy(), family=args.world_family)
         found = adversarial_search(setup.algorithm, n, args.max_degree, progress=progress, **kw).to_json()
-        baseline = random_baseline(setup.algorithm, n, args.max_degree, **kw).to_json()
-        rows.append({"n": n, "search": found, "random": baseline})
+        rows.append({"n": n, "search": found, "random": found.pop("random")})
     best = [{**r["search"]["best"], "n": r["n"]} for r in rows if r["search"].get("best")]
     data = {"algorithm": setup.algorithm, "setup": setup.to_json(), "max_degree": args.max_degree,
             "objective": args.objective, "family": args.world_family, "evaluations": args.evaluations, "per_n": rows,
-            "fit": fit_exponents(best) if len(best) >= 2 else None,
+            "fit": fit_exponents(best) if len(best) >= 3 else None,  # two points fit any power exactly
             "method": "seeded local search: a lower bound on the worst case, not the worst case"}
     if args.out:
         _write(Path(args.out), data)
@@ -82,8 +83,18 @@ def search_command(args: argparse.Namespace) -> int:
     return 0
 
 
-def _progress(done: int, best: float) -> None:
-    print(f"worst-case search: {done} evaluations, best {best:g}", file=sys.stderr, flush=True)
+class _Progress:
+    """One progress line per size at most every 2 seconds, and one when the size is done."""
+
+    def __init__(self, n: int, budget: int):
+        self.n, self.budget, self.last = n, budget, time.perf_counter()
+
+    def __call__(self, done: int, best: float) -> None:
+        now = time.perf_counter()
+        if now - self.last >= 2 or done >= self.budget:
+            self.last = now
+            print(f"worst-case search: n = {self.n}, {done}/{self.budget} runs, best {best:g}", file=sys.stderr,
+                  flush=True)
 
 
 def _write(out: Path, data: dict[str, Any]) -> None:
