@@ -23,6 +23,7 @@ from topomark.reference.cli.main import build_parser
 ROOT = Path(__file__).resolve().parent.parent
 README = ROOT / "README.md"
 README_MAX_LINES = 260
+SEPARATORS, REDIRECTIONS = {"&&", "||", "|", ";"}, {">", ">>", "<", "2>", "2>&1"}
 GENERATED_PAGES = {"cli.md", "api.md", "checks.md", "claims.md", "marker-classes.md"}
 FORBIDDEN = {  # what a reader of the repository cannot follow, and why
     "an issue number": re.compile(r"\bissues?\s*#?\d+|(?<![\w&#/])#\d+\b", re.IGNORECASE),
@@ -46,9 +47,11 @@ def commands(text: str) -> list[list[str]]:
         for line in block.replace("\\\n", " ").splitlines():
             words = shlex.split(line, comments=True)
             while words:
-                cut = words.index("&&") if "&&" in words else len(words)
+                cut = next((i for i, w in enumerate(words) if w in SEPARATORS), len(words))
                 if words[0] == "topomark":
-                    found.append(words[1:cut])
+                    command = words[1:cut]
+                    redirect = next((i for i, w in enumerate(command) if w in REDIRECTIONS), len(command))
+                    found.append(command[:redirect])  # a redirection and its file belong to the shell
                 words = words[cut + 1:]
     return found
 
@@ -93,7 +96,9 @@ def test_every_topomark_command_shown_parses(page):
 
 
 def test_a_command_that_does_not_parse_is_caught():
-    (argv,) = commands("```sh\ntopomark explore --no-such-option  # a comment\n```\n")
+    (argv, redirected) = commands("```sh\ntopomark explore --no-such-option  # a comment\n"
+                                  "topomark world cycle > c.json && echo done\n```\n")
+    assert redirected == ["world", "cycle"]
     with pytest.raises(Exception, match="no-such-option"):
         build_parser(only="explore").parse_args(argv)
 
