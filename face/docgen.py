@@ -48,7 +48,8 @@ def _section(qualified: str, obj: object, level: int) -> str:
             out.append(_section(f"{qualified}.{name}", getattr(obj, name), level + 1))
         return "".join(out)
     if not callable(obj):
-        return f"\n{heading} `{qualified}`\n\nA `{type(obj).__name__}`: the installed package's value.\n"
+        value = "the installed package's version" if qualified.endswith("__version__") else f"`{obj!r}`"
+        return f"\n{heading} `{qualified}`\n\nA `{type(obj).__name__}`: {value}.\n"
     try:
         signature = str(inspect.signature(obj))
     except (TypeError, ValueError):
@@ -83,6 +84,8 @@ def _docstring(doc: str, level: int) -> str:
             continue
         paragraph = []
         while i < len(lines) and lines[i].strip() and not lines[i].lstrip().startswith(">>>"):
+            if paragraph and lines[i].lstrip().startswith(("* ", "- ")):
+                break  # a list item starts its own paragraph
             paragraph.append(lines[i].strip())
             i += 1
         text = " ".join(paragraph)
