@@ -76,7 +76,7 @@ def generate(name: str, **params: Any) -> World:
     >>> generate("torus")  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    topomark.spec.errors.InvalidInput: unknown generator 'torus'; known generators: cycle, chain, lattice, ...
+    topomark.spec.errors.InvalidInput: unknown generator 'torus' (choose from cycle, chain, lattice, ...)
     """
     return _generate(name, **params)
 

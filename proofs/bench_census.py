@@ -1,6 +1,6 @@
 """A measured slice of the census at n = 8, max degree 4, on a local Dask cluster (§3.7's census).
 
-Speed is measured here and reported in the README ("Results past n = 7"), never asserted by a test.
+Speed is measured here and reported in docs/census.md ("Results past n = 7"), never asserted by a test.
 
 Plans the n = 8 map tasks exactly as ``topomark census`` does (census_map.plan, task_worlds=2000,
 min_vertices=8, default shard count for the whole n <= 8 plan), picks K tasks at random (seeded: a
@@ -9,7 +9,7 @@ distributed.LocalCluster of 2 single-thread workers, then reduces every shard of
 census_run.reduce_shard; per task it records CPU seconds, wall, worlds, placements, records and the
 worker's peak RSS, as JSON lines on standard output.
 
-Example (the README's figures)::
+Example (the figures of docs/census.md)::
 
     python -m topomark.proofs.bench_census directional-vertex 4 14 /tmp/slice-dv
 """

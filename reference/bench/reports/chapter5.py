@@ -22,7 +22,7 @@ This report puts beside each statement of the thesis (quoted, with its line)
 what we measured and whether it held (:data:`USUALLY` is how we read
 "usually").  Figure 3.4's reproduction from the thesis's own start (the centre)
 is run when the report is written (:func:`figure_3_4`; a fraction of a second)
-so its time is measured on this machine.
+so its time is measured on the machine that writes the report.
 
 Examples
 --------

@@ -1,0 +1,97 @@
+"""The documentation's generated pages are what their generators write, and the site's navigation is whole.
+
+``docs/cli.md`` comes from the parsers (:mod:`topomark.reference.cli.docgen`), ``docs/api.md`` from the
+docstrings of ``topomark.__all__`` (:mod:`topomark.docgen`), ``docs/results/`` from bench run stores
+(:mod:`topomark.reference.bench.publish`); ``mkdocs.yml`` names only pages that exist.
+"""
+
+from __future__ import annotations
+
+import re
+import shutil
+from pathlib import Path
+
+import pytest
+
+from topomark import docgen as api_docgen
+from topomark.reference.bench import publish
+from topomark.reference.cli import docgen as cli_docgen
+from topomark.reference.cli.main import COMMANDS, main
+
+ROOT = Path(__file__).resolve().parent.parent
+DOCS = ROOT / "docs"
+
+
+def test_docs_cli_md_is_what_the_generator_writes():
+    assert (DOCS / "cli.md").read_text(encoding="utf-8") == cli_docgen.markdown(), \
+        "docs/cli.md is out of date: run python -m topomark.reference.cli.docgen > docs/cli.md"
+
+
+def test_docs_api_md_is_what_the_generator_writes():
+    assert (DOCS / "api.md").read_text(encoding="utf-8") == api_docgen.markdown(), \
+        "docs/api.md is out of date: run python -m topomark.docgen > docs/api.md"
+
+
+def test_the_cli_reference_has_every_command_and_every_option():
+    text = cli_docgen.markdown()
+    for name in COMMANDS:
+        assert f"\n## topomark {name}\n" in text, name
+    for option in ("`--graphs GRAPHS`", "`--report-only`", "`--marker CLASS`", "`--kit", "### topomark conformance run"):
+        assert option in text, option
+
+
+def test_the_api_reference_has_every_public_name_and_its_signature():
+    import topomark
+
+    text = api_docgen.markdown()
+    for name in topomark.__all__:
+        assert f"`topomark.{name}`" in text, name
+    assert "explore(world: 'WorldLike', algorithm: 'str' = 'basic'" in text
+    assert "`topomark.strategies.worlds`" in text  # a submodule's own names
+
+
+def test_every_page_the_site_names_exists_and_every_hand_written_page_is_named():
+    config = (ROOT / "mkdocs.yml").read_text(encoding="utf-8")
+    named = set(re.findall(r"[\w./-]+\.md", config))
+    assert named and not [page for page in named if not (DOCS / page).is_file()]
+    assert {p.name for p in DOCS.glob("*.md")} <= named
+
+
+def test_a_small_sweep_is_published_under_its_command(tmp_path):
+    out, docs = tmp_path / "out", tmp_path / "results"
+    assert main(["bench", "figure-3.11", "--graphs", "1", "--sizes", "20", "--no-plots", "--quiet", "-o", str(out)]) == 0
+    (out / "figure-3.11-extra.png").write_bytes(b"\x89PNG")  # a plot the report names by its prefix
+    assert publish.main([str(out), "--docs", str(docs)]) == 0
+    page = (docs / "figure-3.11.md").read_text(encoding="utf-8")
+    report = (out / "figure-3.11.md").read_text(encoding="utf-8")
+    title, _, body = report.partition("\n")
+    assert page.startswith(title + "\n\n> Produced by `topomark bench figure-3.11 --graphs 1 --sizes 20`")
+    assert "**A small sweep**: 1 worlds per size" in page and body.rstrip("\n") in page
+    assert "![figure-3.11-extra](figure-3.11-extra.png)" in page and (docs / "figure-3.11-extra.png").exists()
+    index = (docs / "index.md").read_text(encoding="utf-8")
+    assert "## Chapter 3" in index and "(figure-3.11.md)" in index
+
+
+def test_a_full_sweep_says_so():
+    text = publish.header({"experiment": "section-6.2", "graphs": 30, "sizes": None, "check": True})
+    assert "The full experiment" in text and "small sweep" not in text
+
+
+@pytest.mark.parametrize("what", ["no manifest", "no report"])
+def test_a_directory_that_is_not_a_bench_run_is_bad_input(tmp_path, what, capsys):
+    out = tmp_path / "out"
+    out.mkdir()
+    if what == "no report":
+        assert main(["bench", "figure-3.11", "--graphs", "1", "--sizes", "20", "--no-plots", "--quiet",
+                     "-o", str(out)]) == 0
+        for report in out.glob("*.md"):
+            report.unlink()
+    assert publish.main([str(out), "--docs", str(tmp_path / "docs")]) == 2
+    assert str(out) in capsys.readouterr().err
+
+
+def test_the_committed_results_name_their_command():
+    pages = [p for p in (DOCS / "results").glob("*.md") if p.name != "index.md"]
+    assert pages
+    for page in pages:
+        assert "\n\n> Produced by `topomark bench " in page.read_text(encoding="utf-8"), page.name
