@@ -82,7 +82,7 @@ def _docstring(doc: str, level: int) -> str:
             out.append(_table(lines, i) if line.startswith("=====") else "")
             i = _skip_table(lines, i) if line.startswith("=====") else i + 1
             continue
-        paragraph = []
+        paragraph: list[str] = []
         while i < len(lines) and lines[i].strip() and not lines[i].lstrip().startswith(">>>"):
             if paragraph and lines[i].lstrip().startswith(("* ", "- ")):
                 break  # a list item starts its own paragraph
