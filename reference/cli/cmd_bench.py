@@ -8,6 +8,7 @@ import time
 
 from topomark.spec.errors import InvalidInput
 
+from topomark.reference.bench.reports.plots import INSTALL_HINT
 from topomark.reference.bench.verdict import judge_plan
 from topomark.reference.bench.experiments import EXPERIMENTS, HEAVY_GRAPHS, HEAVY_MAX_SIZE, plan, run_sweep, write_report
 from topomark.reference.files.outputs import check_output_dir
@@ -78,5 +79,5 @@ def bench_command(args) -> int:
               f"{wall:.0f} s; report {report}")
         print(f"{args.experiment}: {verdict.line()}")
         if result["plots_skipped"]:
-            print("plots skipped: matplotlib is not installed (pip install 'topomark[plot]')")
+            print(f"plots skipped: matplotlib is not installed ({INSTALL_HINT})")
     return 1 if result["failures"] else 0

@@ -20,7 +20,7 @@ from pathlib import Path
 from typing import Callable
 
 from topomark.reference.bench.plan import EXPERIMENTS, NO_LIGHTHOUSE, Experiment
-from topomark.reference.bench.reports.plots import Draw, drawn
+from topomark.reference.bench.reports.plots import INSTALL_HINT, Draw, drawn
 from topomark.reference.bench.reports.stats import cpu_seconds, latest, lighthouse_of
 from topomark.reference.bench.run_store import read_runs, write_atomic
 from topomark.reference.bench.verdict import expectation_of, outcome_of, row_as_expected, tally
@@ -86,6 +86,6 @@ def run_totals(exp: Experiment, rows: list[dict], wall: float | None) -> list[st
 def plot_lines(made: list[Path] | None, plots: bool) -> list[str]:
     """The report's last lines: the plots drawn, or why there are none."""
     if made is None:
-        return ["Plots: skipped (matplotlib is not installed; `pip install topomark[plot]`)." if plots
+        return [f"Plots: skipped (matplotlib is not installed: `{INSTALL_HINT}`)." if plots
                 else "Plots: not requested.", ""]
     return ["Plots: " + ", ".join(f"`{p.name}`" for p in made), ""]
