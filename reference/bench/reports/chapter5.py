@@ -358,7 +358,7 @@ def _plots(plt, runs: dict, out: Path) -> list[Path]:
               for k, v in runs.items() if k[0] == fam and k[3] == "cue=n" for r in v.values()]
     if not points:
         return []
-    fig, axes = new(plt, 2)
+    fig, axes = new(plt, 2, sharey=False)
     for ax, col, label in ((axes[0], 2, "peak live models"), (axes[1], 3, "seconds")):
         for fam in MODEL_FAMILIES[:2]:
             mine = [p for p in points if p[0] == fam]

@@ -100,6 +100,7 @@ def curve(ax, xs: list[float], ys: list[float], label: str, key: str | None = No
 
 def points(ax, xs: list[float], ys: list[float], label: str) -> None:
     """A series of unjoined points (one per run)."""
+    _note_xs(ax, xs)
     ax.plot(xs, ys, ls="none", ms=4, alpha=0.8, label=label, **_next(ax, label))
 
 
