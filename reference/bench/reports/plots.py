@@ -22,7 +22,7 @@ look (:func:`new`: one panel or several side by side, each 6 × 4.2 inches, at
 Examples
 --------
 >>> [style(i)["marker"] for i in (0, 1, 7, 10)], style(10)["color"] == style(0)["color"]
-(['o', 's', 'o', 'o'], True)
+(['o', 's', 'o', 'D'], True)
 >>> len({(style(i)["color"], style(i)["marker"]) for i in range(70)})
 70
 """
