@@ -299,7 +299,8 @@ def _world_group(world: World, title: str, dx: float, size: float, note: str = "
     pos, faithful = layout(world, size)
     pos = {v: (x + dx, y + 18) for v, (x, y) in pos.items()}
     bottom = (max(y for _, y in pos.values()) + MARGIN - 6) if crop else size + 30
-    note = ("" if faithful else " (non-planar embedding: exit labels give the rotation)") + (f"; {note}" if note else "")
+    note = ("" if faithful else " (non-planar embedding: exit labels give the rotation)") + \
+        (f"; {note}" if note else "")
     caption = textwrap.wrap(f"n={world.n}, m={world.m}, genus {world.genus()}{note}", int((size - 16) / 5))
     parts = [f'<text x="{dx + 8:.1f}" y="16" font-size="12" font-weight="bold">{escape(title)}</text>']
     parts += [f'<text x="{dx + 8:.1f}" y="{bottom + 12 * k:.1f}" font-size="9" fill="#666">{escape(line)}</text>'

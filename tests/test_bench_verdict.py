@@ -32,7 +32,7 @@ def test_recorded_rows_are_judged_by_their_entry_family_and_lighthouse():
     assert not row_as_expected(_row("case-3a", "error"))
     assert row_as_expected(_row("basic", "wrong-map", "lattice-hole", "local-pair"))  # L1346
     assert not row_as_expected(_row("basic", "wrong-map", "lattice-hole", "directional-vertex"))
-    assert row_as_expected(_row("basic", "failed", "small-world-k2-p10", "undirected-vertex"))  # the walk, L1332
+    assert row_as_expected(_row("basic", "failed", "small-world-k2-p10", "undirected-vertex"))  # the walk, L1332–L1334
     assert row_as_expected({**_row("case-3a", "unchecked"), "checked": "False"})
     assert row_as_expected(_row("model-tree", "limit", "small-random-40"))
     tally = Tally()

@@ -195,7 +195,8 @@ class AlgorithmSpec:
 
     def expectation(self, family: str | None = None, lighthouse: str | None = None) -> tuple[str, str]:
         """The outcome a run on a world of ``family`` with ``lighthouse`` is expected to end with, and why (the
-        broadest of the entry's, on that family, and the lighthouse's: :mod:`~topomark.reference.algorithms.expectation`);
+        broadest of the entry's, on that family, and the lighthouse's:
+        :mod:`~topomark.reference.algorithms.expectation`);
         by default ``correct`` when implemented and ``fails-by-design`` when expected to fail (its status_reason)."""
         what, why = ((self.expected, self.expected_reason or "") if self.expected else
                      (FAILS_BY_DESIGN, self.status_reason or "") if self.status == EXPECTED_TO_FAIL else (CORRECT, ""))

@@ -23,7 +23,7 @@ as the algorithm stopped it; nothing is judged of it, so it is as expected whate
 The expectation of a run is the broadest (:data:`ORDER`) of its algorithm's, for the run's world family (an
 entry's ``expected_by_family`` where it differs, else its own), and its lighthouse's (:func:`lighthouse_expectation`:
 §5.2.1's marker-less lighthouses may pick a place whose signature repeats, L1346; a lighthouse that is searched for
-by a walk may find none within the threshold, and "the algorithm terminates reporting failure", L1332).
+by a walk may find none within the threshold, and "the algorithm terminates reporting failure", L1332–L1334).
 
 Examples
 --------
@@ -58,7 +58,7 @@ UNJUDGED = "unchecked"
 """The outcome of a run made without the checker: nothing is judged of it (module docstring)."""
 
 SEARCH_REASON = ("a lighthouse searched for by a random walk may not be found: \"if the robot cannot find a "
-                 "lighthouse within the threshold, the algorithm terminates reporting failure\" (§5.1, L1332)")
+                 "lighthouse within the threshold, the algorithm terminates reporting failure\" (§5.1, L1332–L1334)")
 UNCERTAIN_REASON = ("a marker-less lighthouse of §5.2.1 \"cannot guarantee the explicitness of place or back-link\": "
                     "it may report failure, never terminate or end with an incorrect world model (L1346)")
 
@@ -77,7 +77,7 @@ def broadest(*expectations: str) -> str:
 
 def lighthouse_expectation(name: str) -> tuple[str, str]:
     """What running with the lighthouse ``name`` allows, and why: ``may-fail`` for §5.2.1's marker-less
-    lighthouses (L1346) and for those found by a walk (L1332), else ``correct`` (no reason)."""
+    lighthouses (L1346) and for those found by a walk (L1332–L1334), else ``correct`` (no reason)."""
     light = LIGHTHOUSES.get(name)
     if light is None:  # a kit algorithm's run ("none"): the algorithm's own expectation decides
         return CORRECT, ""

@@ -79,7 +79,8 @@ def write_report(experiment: str, out: Path, wall: float | None = None, plots: b
                 lines += _family_tables(part, summary)
         for part in exp.parts:
             lines += _policy_table(part, summary)
-        return lines + _thesis_tables(exp, summary) + _absolute_costs(exp, summary), chapter34_plots.draw(exp, summary, out, reduction)
+        lines += _thesis_tables(exp, summary) + _absolute_costs(exp, summary)
+        return lines, chapter34_plots.draw(exp, summary, out, reduction)
     return write(experiment, out, wall, plots, COST_NOTE, body)
 
 
