@@ -13,6 +13,7 @@ Example (the README's figures)::
 
     python -m topomark.proofs.bench_census directional-vertex 4 14 /tmp/slice-dv
 """
+import argparse
 import json
 import os
 import random
@@ -47,9 +48,15 @@ def timed_reduce(root, s, slices):
             "rss_gb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1e6}
 
 
-def main():
+def main(argv: list[str] | None = None) -> int:
     """Plan, sample K map tasks (seeded), map them and reduce every shard on a 2-worker local Dask cluster."""
-    cls, k, seed, root = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), sys.argv[4]
+    ap = argparse.ArgumentParser(prog="python -m topomark.proofs.bench_census", description=__doc__.split("\n\n")[0])
+    ap.add_argument("cls", metavar="CLASS", help="the marker class, e.g. directional-vertex")
+    ap.add_argument("k", metavar="K", type=int, help="how many n = 8 map tasks to sample")
+    ap.add_argument("seed", metavar="SEED", type=int, help="seed of the sample")
+    ap.add_argument("root", metavar="DIR", help="where the slice's shard files are written")
+    args = ap.parse_args(argv)
+    cls, k, seed, root = args.cls, args.k, args.seed, args.root
     os.makedirs(root, exist_ok=True)
     t0 = time.perf_counter()
     tasks = plan(8, 4, 8, 2000)
@@ -74,7 +81,8 @@ def main():
                                  "ambiguous": sum(r["ambiguous"] for r in red),
                                  "max_rss_gb": max(r["rss_gb"] for r in red)},
                       "wall_total_s": round(time.perf_counter() - t0, 1)}), flush=True)
+    return 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

@@ -160,7 +160,7 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--planar", action="store_true", help="smallest planar counterexamples, N <= 6, D <= 3")
     ap.add_argument("--cross-check", action="store_true", help="compare with brute force for N <= 5, D <= 4")
     ap.add_argument("--timeout", type=float, default=None, help="per search, seconds")
-    ap.add_argument("--json", action="store_true")
+    ap.add_argument("--json", action="store_true", help="also print every row as one JSON list")
     args = ap.parse_args(argv)
     print(f"z3 {z3.get_version_string()}", flush=True)
     rows: list[dict] = []

@@ -212,8 +212,9 @@ class Progress:
     task runs) for the bar and the time left, and in worlds for the count shown.
     """
 
-    def __init__(self, estimated: int, sink: Callable[[str], None] | None, every: float = 2.0):
-        self.estimated, self.sink, self.every = max(estimated, 1), sink, every
+    def __init__(self, estimated: int, sink: Callable[[str], None] | None, every: float = 2.0,
+                 label: str = "census"):
+        self.estimated, self.sink, self.every, self.label = max(estimated, 1), sink, every, label
         self.est_done = self.est_session = self.worlds = 0
         self.t0 = self.last = time.perf_counter()
 
@@ -236,7 +237,7 @@ class Progress:
         rate = self.est_session / elapsed
         left = (self.estimated - self.est_done) / rate if rate > 0 else float("inf")
         eta = "?" if left == float("inf") else f"{max(left, 0) / 60:.1f} min"
-        return f"census: [{bar}] {self.count()}, {rate:,.1f} worlds/s, ~{eta} left"
+        return f"{self.label}: [{bar}] {self.count()}, {rate:,.1f} worlds/s, ~{eta} left"
 
     def count(self) -> str:
         """Worlds so far out of the estimate; once the count passes the estimate, the count alone.

@@ -20,18 +20,35 @@ module             concept (thesis section)
 Everything else in topomark uses these predicates and restates none of them.
 """
 
-from topomark.spec.errors import CheckFailure, InvalidInput, InvalidWorld, Violation
-from topomark.spec.isomorphism import IsoResult, Witness, find_isomorphism, verify_witness
-from topomark.spec.marker import EdgeMarker, VertexMarker
-from topomark.spec.robot import perceive, sense, step
-from topomark.spec.signature import Signature, signature_at
-from topomark.spec.world import Start, World
-from topomark.spec.worldfile import dumps_world, load_world, loads_world, save_world
+import importlib
 
-__all__ = [
-    "CheckFailure", "InvalidInput", "InvalidWorld", "Violation",
-    "IsoResult", "Witness", "find_isomorphism", "verify_witness",
-    "EdgeMarker", "VertexMarker", "perceive", "sense", "step",
-    "Signature", "signature_at", "Start", "World",
-    "dumps_world", "load_world", "loads_world", "save_world",
-]
+_EXPORTS = {  # name: the module of this package that defines it
+    **dict.fromkeys(("CheckFailure", "InvalidInput", "InvalidWorld", "Violation"), "errors"),
+    **dict.fromkeys(("IsoResult", "Witness", "find_isomorphism", "verify_witness"), "isomorphism"),
+    **dict.fromkeys(("EdgeMarker", "VertexMarker"), "marker"),
+    **dict.fromkeys(("perceive", "sense", "step"), "robot"),
+    **dict.fromkeys(("Signature", "signature_at"), "signature"),
+    **dict.fromkeys(("Start", "World"), "world"),
+    **dict.fromkeys(("dumps_world", "load_world", "loads_world", "save_world"), "worldfile"),
+}
+
+__all__ = list(_EXPORTS)
+
+
+def __getattr__(name: str):
+    """Each name is imported from its module when first used (PEP 562): importing one module of the package,
+    as the command line does to start, does not import them all."""
+    if name in _EXPORTS:
+        value = getattr(importlib.import_module(f"{__name__}.{_EXPORTS[name]}"), name)
+        globals()[name] = value
+        return value
+    try:
+        return importlib.import_module(f"{__name__}.{name}")
+    except ModuleNotFoundError as exc:
+        if exc.name != f"{__name__}.{name}":  # the module exists but needs one that is missing: say that
+            raise
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}") from None
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_EXPORTS))

@@ -19,7 +19,7 @@ they survive ``python -O``.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, Iterable
 
 __all__ = [
     "TopomarkError",
@@ -40,6 +40,8 @@ __all__ = [
     "bounded",
     "clip",
     "CLIP_NOTE",
+    "did_you_mean",
+    "unknown_name",
     "EXIT_OK",
     "EXIT_NEGATIVE",
     "EXIT_BAD_INPUT",
@@ -91,6 +93,45 @@ def clip(text: str, limit: int = 120, *, note: str = CLIP_NOTE, quote: bool = Fa
         return repr(text) if quote else text
     kept = text[:limit] if note else text[:max(0, limit - 3)]
     return (repr(kept) if quote else kept) + "..." + note.format(n=len(text))
+
+
+def did_you_mean(name: str, choices: Iterable[str]) -> str:
+    """`` (did you mean 'x'?)`` naming the choices closest to a misspelled ``name``, or ``""`` when none is close.
+
+    The one place a misspelling gets a suggestion: a command, an option, and every name looked up by the
+    commands (generator, algorithm, lighthouse, experiment, marker class, policy, family).
+
+    >>> did_you_mean("explor", ["world", "explore", "drive"])
+    " (did you mean 'explore'?)"
+    >>> did_you_mean("enh", ["basic", "enh1", "enh2"])
+    " (did you mean 'enh1' or 'enh2'?)"
+    >>> did_you_mean("zzz", ["basic"])
+    ''
+    """
+    if not isinstance(name, str) or len(name) > 200:  # a hostile megabyte name is close to nothing
+        return ""
+    import difflib  # only when a name is wrong: the command line's start stays fast
+
+    choices = [str(c) for c in choices]
+    close = difflib.get_close_matches(name, choices, n=3, cutoff=0.6)
+    score = {c: difflib.SequenceMatcher(None, c, name).ratio() for c in close}
+    close.sort(key=lambda c: (-score[c], choices.index(c)))  # closest first; a tie in the choices' own order
+    if not close:
+        return ""
+    return " (did you mean " + " or ".join(repr(c) for c in close) + "?)"
+
+
+def unknown_name(kind: str, name: str, choices: Iterable[str]) -> "InvalidInput":
+    """The bad input of a name that is not one of ``choices``: what it is, the closest names, and the choices.
+
+    Raise it where the name is looked up (``raise unknown_name("algorithm", name, REGISTRY)``).
+
+    >>> print(unknown_name("generator", "latice", ["lattice", "complete"]))
+    unknown generator 'latice' (did you mean 'lattice'?) (choose from lattice, complete)
+    """
+    choices = [str(c) for c in choices]
+    return InvalidInput(f"unknown {kind} {clip(str(name), 80, quote=True)}{did_you_mean(name, choices)} "
+                        f"(choose from {', '.join(choices)})")
 
 
 class InvalidInput(TopomarkError, ValueError):

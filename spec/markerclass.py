@@ -33,7 +33,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Callable, Iterator
 
-from topomark.spec.errors import InvalidInput
+from topomark.spec.errors import unknown_name
 from topomark.spec.kit import Kit
 from topomark.spec.marker import EdgeMarker, Marker, VertexMarker
 from topomark.spec.world import Start, World
@@ -121,5 +121,5 @@ MARKER_CLASSES: dict[str, MarkerClass] = {c.name: c for c in (
 def marker_class(name: str) -> MarkerClass:
     """The marker class called ``name``; an unknown name is :class:`InvalidInput` listing the known ones."""
     if name not in MARKER_CLASSES:
-        raise InvalidInput(f"unknown marker class {name!r} (choose from {', '.join(MARKER_CLASSES)})")
+        raise unknown_name("marker class", name, MARKER_CLASSES)
     return MARKER_CLASSES[name]

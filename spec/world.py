@@ -328,7 +328,17 @@ class World:
         return World(self.rotation, markers, start)
 
     def with_start(self, start: Start | None) -> "World":
-        return World(self.rotation, self.markers, start)
+        """This world with another start.  The rotation and markers were checked when this world was made and do
+        not change, so only the start is checked (a search runs every start of a world: O(1) per start, not
+        O(n + m))."""
+        if type(self) is not World:  # a subclass may carry more (a thread): rebuild it whole
+            return World(self.rotation, self.markers, start)
+        w = World.__new__(World)
+        w.rotation, w._index, w.markers, w._vmarks, w._dmarks = (self.rotation, self._index, self.markers,
+                                                                 self._vmarks, self._dmarks)
+        w._m, w.start = self.m, start
+        w._check_start()
+        return w
 
     # -- equality is structural (names matter); isomorphism lives elsewhere ---
     def __eq__(self, other: object) -> bool:

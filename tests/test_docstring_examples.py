@@ -1,4 +1,5 @@
-"""Every ``>>>`` example in topomark runs, in every module of topomark.spec, topomark.reference and topomark.proofs.
+"""Every ``>>>`` example in topomark runs, in every module of topomark (the API), topomark.spec, topomark.reference
+and topomark.proofs.
 
 The modules are found by walking the installed packages (a new module is covered without editing a list), and
 each is imported under its installed name, so an example's ``topomark.spec.errors.InvalidInput: ...`` traceback
@@ -17,11 +18,12 @@ from pathlib import Path
 
 import pytest
 
+import topomark
 import topomark.proofs
 import topomark.reference
 import topomark.spec
 
-PACKAGES = (topomark.spec, topomark.reference, topomark.proofs)
+PACKAGES = (topomark, topomark.spec, topomark.reference, topomark.proofs)
 PROMPT = re.compile(r"^\s*>>>", re.M)
 
 
@@ -61,6 +63,7 @@ def test_every_source_file_is_a_walked_module():
                for path in Path(folder).rglob("*.py") if path.parent != SCRIPTS}
     assert sorted(map(str, on_disk - walked)) == []
     assert "topomark.proofs.census" in MODULES and "topomark.reference.worlds.generators" in MODULES
+    assert "topomark" in MODULES and "topomark.exploration" in MODULES
 
 
 def test_the_scripts_shipped_as_package_data_hold_no_examples():

@@ -4,7 +4,9 @@ The folders of ``reference/`` are ranked top to bottom (:data:`LAYERS`); a
 module may import its own folder's modules and those of any folder ranked
 below its own, never one above.  ``proofs/`` sits under every folder of
 ``reference/`` that uses it (the CLI's search commands, the wheel worlds) and
-``spec/`` under everything.  Imports are read from the source (every ``import``
+``spec/`` under everything.  The package's face (``face/``, installed as
+``topomark`` itself: ``import topomark``, ``python -m topomark``) sits on top of
+everything: it may import any folder, and no folder may import it.  Imports are read from the source (every ``import``
 statement, including those inside functions), so a lazy import cannot hide an
 arrow pointing up.
 """
@@ -17,9 +19,13 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
+FACE = "face"
+"""The folder of the ``topomark`` package's own modules (``topomark``, ``topomark.exploration``, ...)."""
 LAYERS = (
+    (FACE,),
     ("reference.cli",),
-    ("reference.oracle", "reference.bench", "reference.claims", "reference.worstcase"),
+    ("reference.worstcase",),
+    ("reference.oracle", "reference.bench", "reference.claims"),
     ("reference.replay",),
     ("reference.run",),
     ("reference.trace",),
@@ -32,14 +38,19 @@ LAYERS = (
 RANK = {folder: rank for rank, folders in enumerate(LAYERS) for folder in folders}
 
 
+SUBPACKAGES = ("spec", "reference", "proofs")
+
+
 def modules() -> dict[str, Path]:
     found = {}
-    for top in ("spec", "reference", "proofs"):
+    for top in (*SUBPACKAGES, FACE):
         for path in (ROOT / top).rglob("*.py"):
             if "examples" in path.parts:
                 continue  # standalone programs that speak the protocol; they import nothing of topomark
             parts = list(path.relative_to(ROOT).with_suffix("").parts)
-            if parts[-1] == "__init__":
+            if parts[0] == FACE:  # face/ is installed as topomark itself
+                parts.pop(0)
+            if parts and parts[-1] == "__init__":
                 parts.pop()
             found[".".join(["topomark", *parts])] = path
     return found
@@ -63,6 +74,8 @@ def imports_of(name: str, path: Path, known: set[str]) -> set[str]:
 
 def folder_of(name: str) -> str:
     parts = name.split(".")[1:]
+    if not parts or parts[0] not in SUBPACKAGES:
+        return FACE
     if parts[0] != "reference":
         return parts[0]
     return ".".join(parts[:2]) if len(parts) > 2 or (len(parts) == 2 and parts[1] in
@@ -120,6 +133,21 @@ def test_no_circles():
 
 def test_the_circle_finder_finds_one():
     assert circles({"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}}) == [["a", "b", "c"]]
+
+
+def test_the_face_is_walked_and_nothing_imports_it():
+    face = {name for name in GRAPH if folder_of(name) == FACE}
+    assert {"topomark", "topomark.exploration", "topomark.worlds"} <= face
+    importers = sorted(name for name in GRAPH if folder_of(name) != FACE and GRAPH[name] & face)
+    assert importers == []
+
+
+def test_an_import_of_the_face_is_caught(tmp_path):
+    fake = tmp_path / "fake.py"
+    fake.write_text("import topomark\nfrom topomark.exploration import explore\n")
+    found = imports_of("topomark.reference.run.fake", fake, set(modules()))
+    assert found == {"topomark", "topomark.exploration"}
+    assert all(folder_of(t) == FACE and RANK[FACE] < RANK["reference.run"] for t in found)
 
 
 def test_explorers_import_only_spec_and_themselves():

@@ -46,7 +46,7 @@ import importlib
 import pkgutil
 from dataclasses import replace
 
-from topomark.spec.errors import InvalidInput
+from topomark.spec.errors import InvalidInput, unknown_name
 
 from topomark.reference.algorithms import registrations
 from topomark.reference.algorithms.algorithm_spec import CHECKS, STATUSES, AlgorithmSpec, Listed, Parameter
@@ -144,5 +144,5 @@ def algorithm_spec(name: str) -> AlgorithmSpec:
     if name in LISTED:
         raise InvalidInput(LISTED[name].refusal())
     if name not in REGISTRY:
-        raise InvalidInput(f"unknown algorithm {name!r} (choose from {', '.join(REGISTRY)})")
+        raise unknown_name("algorithm", name, REGISTRY)
     return REGISTRY[name]

@@ -30,7 +30,7 @@ import random
 from dataclasses import dataclass
 from typing import Callable, Iterable
 
-from topomark.spec.errors import InvalidInput
+from topomark.spec.errors import InvalidInput, unknown_name
 from topomark.spec.world import Start, World
 
 from topomark.reference.worlds import generators as g
@@ -340,7 +340,7 @@ def plan(experiment: str, graphs: int = 30, sizes: list[int] | None = None,
     A sweep stopped early thus leaves every size with (about) the same number of worlds done, and the
     largest runs of each round start first (load balance)."""
     if experiment not in EXPERIMENTS:
-        raise InvalidInput(f"unknown experiment {experiment!r} (choose from {', '.join(EXPERIMENTS)})")
+        raise unknown_name("experiment", experiment, EXPERIMENTS)
     runs: set[Run] = set()
     for part in EXPERIMENTS[experiment].parts:
         fam = FAMILIES[part.family]

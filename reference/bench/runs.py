@@ -40,7 +40,7 @@ from topomark.reference.algorithms.registry import algorithm_spec
 from topomark.reference.bench.run_manifest import Manifest
 from topomark.reference.bench.verdict import row_as_expected
 from topomark.reference.bench.run_store import Appender, locked, read_runs, rewrite, row_key, write_manifest
-from topomark.proofs.census_exec import worker_count
+from topomark.proofs.census_exec import die_with_leader, worker_count
 
 __all__ = ["run_one", "run_sweep", "Progress", "DropCount", "CHAPTER_5_COLUMNS"]
 
@@ -192,7 +192,8 @@ def _run_all(todo: list[Run], store: Appender, jobs: int, check: bool, bar: Prog
     else:
         import multiprocessing as mp
         ctx = mp.get_context("fork") if "fork" in mp.get_all_start_methods() else mp.get_context()
-        with ctx.Pool(worker_count(jobs, len(todo))) as pool:
+        # workers leave Ctrl-C to the leader (which reports it once) and die with it, as the census's do
+        with ctx.Pool(worker_count(jobs, len(todo)), initializer=die_with_leader, initargs=(os.getpid(),)) as pool:
             for row in pool.imap_unordered(_worker, [(r, check) for r in todo], chunksize=1):
                 emit(row)
     return failures

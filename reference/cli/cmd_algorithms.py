@@ -22,8 +22,7 @@ __all__ = ["register", "algorithms_command"]
 
 
 def register(sub) -> None:
-    p = sub.add_parser("algorithms", help="list the registered algorithms with their thesis references and bounds",
-                       description=__doc__.split("\n\n")[0])
+    p = sub.add_parser("algorithms", description=__doc__.split("\n\n")[0])
     p.add_argument("--json", action="store_true", help="a JSON list on stdout")
     p.set_defaults(handler=algorithms_command)
 

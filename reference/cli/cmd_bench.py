@@ -6,7 +6,7 @@ from __future__ import annotations
 import json
 import time
 
-from topomark.spec.errors import InvalidInput
+from topomark.spec.errors import InvalidInput, unknown_name
 
 from topomark.reference.bench.reports.plots import INSTALL_HINT
 from topomark.reference.bench.verdict import judge_plan
@@ -19,8 +19,7 @@ __all__ = ["register"]
 
 def register(sub) -> None:
     p = sub.add_parser(
-        "bench", help="run a thesis experiment (figures 3.10-3.12, tables 4.1-4.8, lighthouses, tables 6.1-6.2) and "
-             "write CSV + report",
+        "bench",
         description="Run EXPERIMENT over fixed-seed worlds, every run checked (invariants after every iteration, "
                     "final isomorphism) unless --no-check; append each run to DIR/runs.csv (a restarted sweep "
                     "skips finished runs; one sweep at a time per DIR) and write DIR/EXPERIMENT.md and plots. "
@@ -36,9 +35,9 @@ def register(sub) -> None:
     p.add_argument("--heavy-max-size", type=int, default=HEAVY_MAX_SIZE,
                    help=f"largest size for enh5-d2 on complete(-hole) worlds (default {HEAVY_MAX_SIZE})")
     p.add_argument("--sizes", type=int, nargs="+", metavar="SIZE", help="only these sizes (the thesis's n)")
-    p.add_argument("--jobs", type=int, default=None,
+    p.add_argument("--jobs", type=int, default=None, metavar="N",
                    help=f"worker processes, 1 to {MAX_JOBS} (default: one per CPU; never more than the runs)")
-    p.add_argument("--out", default="bench-out", metavar="DIR", help="output directory (default bench-out)")
+    p.add_argument("-o", "--out", default="bench-out", metavar="DIR", help="output directory (default bench-out)")
     p.add_argument("--no-check", action="store_true", help="skip the checker (rows record verified=False)")
     p.add_argument("--no-plots", action="store_true", help="do not draw plots")
     p.add_argument("--report-only", action="store_true", help="regenerate the report from the CSV, run nothing")
@@ -49,7 +48,7 @@ def register(sub) -> None:
 
 def bench_command(args) -> int:
     if args.experiment not in EXPERIMENTS:
-        raise InvalidInput(f"unknown experiment {args.experiment!r} (choose from {', '.join(EXPERIMENTS)})")
+        raise unknown_name("experiment", args.experiment, EXPERIMENTS)
     if args.graphs < 1 or args.heavy_graphs < 1:
         raise InvalidInput("--graphs and --heavy-graphs must be >= 1")
     if args.jobs is not None:

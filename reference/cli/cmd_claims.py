@@ -17,8 +17,7 @@ __all__ = ["register", "claims_command"]
 
 
 def register(sub) -> None:
-    p = sub.add_parser("claims", help="every claim of the thesis and how topomark backs it (the claims ledger)",
-                       description=__doc__.split("\n\n")[0] + " Exit 0.")
+    p = sub.add_parser("claims", description=__doc__.split("\n\n")[0] + " Exit 0.")
     form = p.add_mutually_exclusive_group()
     form.add_argument("--json", action="store_true", help="one JSON object: the claims and per-chapter counts")
     form.add_argument("--markdown", action="store_true", help="the Markdown page docs/claims.md")

@@ -31,7 +31,7 @@ __all__ = ["register", "count_command", "validate_args"]
 
 def register(sub) -> None:
     p = sub.add_parser(
-        "census-count", help="how many embedded worlds there are per size (Burnside's lemma)",
+        "census-count",
         description="Count connected graphs of max degree D and the embedded worlds on them (up to extended "
                     "isomorphism) for every size up to N, by Burnside's lemma over each graph's automorphism "
                     "group, without enumerating the worlds. Exit 0 on success, 2 on bad input, 3 if "

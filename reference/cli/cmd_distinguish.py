@@ -32,16 +32,15 @@ __all__ = ["register", "distinguish_command", "census_command", "format_motions"
 
 
 def register(sub) -> None:
-    p = sub.add_parser("distinguish", help="shortest motion sequence telling two worlds apart",
+    p = sub.add_parser("distinguish",
                        description="Exit 0 if some motion sequence gives different perceptions in A and B "
                                    "(prints the shortest), 1 if they are indistinguishable, 2 on bad input. "
                                    "Both files need a start.")
-    p.add_argument("a", metavar="A")
-    p.add_argument("b", metavar="B")
+    p.add_argument("a", metavar="A", help="the first world file (with a start)")
+    p.add_argument("b", metavar="B", help="the second world file (with a start)")
     p.add_argument("--json", action="store_true", help="machine-readable output")
     p.set_defaults(handler=distinguish_command)
-    q = sub.add_parser("census", help="group all small worlds by what a robot perceives",
-                       description="For every embedded world with 2..N vertices and max degree D (up to "
+    q = sub.add_parser("census", description="For every embedded world with 2..N vertices and max degree D (up to "
                                    "extended isomorphism), every placement of the marker class and every start, "
                                    "group placements by the robot's language. Exit 0 if no two non-isomorphic "
                                    "marked worlds are indistinguishable, 1 if some are, 2 on bad input, 130 when "
@@ -50,9 +49,10 @@ def register(sub) -> None:
                                    "computed again (said on stderr); a damaged, older-format or other census's "
                                    "manifest is exit 2 naming it. Worker processes die with the census.")
     q.add_argument("--marker", required=True, metavar="CLASS", help="one of: " + ", ".join(MARKER_CLASSES))
-    q.add_argument("--max-vertices", type=int, required=True, metavar="N")
-    q.add_argument("--max-degree", type=int, required=True, metavar="D")
-    q.add_argument("--jobs", type=int, default=1, metavar="J", help=f"worker processes, 1 to {MAX_JOBS} (default 1)")
+    q.add_argument("--max-vertices", type=int, required=True, metavar="N",
+                   help=f"largest world size, 2..{MAX_VERTICES}")
+    q.add_argument("--max-degree", type=int, required=True, metavar="D", help="largest vertex degree, >= 1")
+    q.add_argument("--jobs", type=int, default=1, metavar="N", help=f"worker processes, 1 to {MAX_JOBS} (default 1)")
     q.add_argument("--shards", metavar="DIR", help="keep the map/reduce shards in DIR; a killed census run again "
                    "with the same DIR resumes from its finished, verified tasks (default: a temporary directory)")
     q.add_argument("--scheduler", metavar="ADDRESS", help="run the map and reduce on a Dask cluster "
@@ -60,6 +60,7 @@ def register(sub) -> None:
                    f"exit 2 if no Dask scheduler answers at ADDRESS within {CONNECT_TIMEOUT} s, or it has no "
                    f"worker within {WORKER_WAIT} s")
     q.add_argument("--json", action="store_true", help="machine-readable output")
+    q.add_argument("--quiet", action="store_true", help="no progress on stderr")
     q.set_defaults(handler=census_command)
 
 
@@ -136,13 +137,14 @@ def census_table(result: CensusResult) -> str:
 
 def census_command(args: argparse.Namespace) -> int:
     _validate(args)
+    progress = None if args.quiet else stderr_progress
     if args.shards is not None:
         result = sharded_census(args.marker, args.max_vertices, args.max_degree, args.shards, jobs=args.jobs,
-                                scheduler=args.scheduler, progress=stderr_progress)
+                                scheduler=args.scheduler, progress=progress)
     else:
         with tempfile.TemporaryDirectory(prefix="topomark-census-") as root:
             result = sharded_census(args.marker, args.max_vertices, args.max_degree, root, jobs=args.jobs,
-                                    scheduler=args.scheduler, progress=stderr_progress)
+                                    scheduler=args.scheduler, progress=progress)
     pair = result.smallest_counterexample
     data = {"marker": result.marker, "max_vertices": result.max_vertices, "max_degree": result.max_degree,
             "rows": [r.to_json() for r in result.rows], "languages": result.languages,

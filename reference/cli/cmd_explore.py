@@ -26,15 +26,16 @@ __all__ = ["register", "parse_policies"]
 
 def register(sub) -> None:
     p = sub.add_parser(
-        "explore", help="explore a world with every invariant checked after every step",
+        "explore",
         description="Explore WORLD (a world file or GENERATOR[:NAME=VALUE,...]; default: a built-in 5x5 lattice "
                     "with 2 cells removed) and verify the map. Exit 0 when the map is verified isomorphic, 1 on an "
                     "invariant violation or when the algorithm stops without a map (outcome failed or limit), "
                     "2 on bad input.")
-    p.add_argument("world", nargs="?", metavar="WORLD_OR_GENERATOR")
-    p.add_argument("--algorithm", default="basic", help=f"one of: {', '.join(REGISTRY)} (default basic; "
-                                                          "topomark algorithms lists them)")
-    p.add_argument("--lighthouse", default=None,
+    p.add_argument("world", nargs="?", metavar="WORLD_OR_GENERATOR",
+                   help="a world file, or GENERATOR[:NAME=VALUE,...] (default: the built-in world)")
+    p.add_argument("--algorithm", default="basic", metavar="NAME",
+                   help=f"one of: {', '.join(REGISTRY)} (default basic; topomark algorithms lists them)")
+    p.add_argument("--lighthouse", default=None, metavar="NAME",
                    help=f"how v0 is marked: {', '.join(LIGHTHOUSES)} (default directional-vertex, Algorithm 3.1's; "
                         "for Algorithm 3.1 and the Chapter 4 enhancements only)")
     for param in parameters().values():

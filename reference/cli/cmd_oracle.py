@@ -16,7 +16,7 @@ from topomark.spec.kit import Kit
 from topomark.spec.worldfile import load_world, save_world
 
 from topomark.reference.oracle import conformance
-from topomark.reference.cli.parser import Parser, emit
+from topomark.reference.cli.parser import JSON_HELP, Parser, emit
 from topomark.reference.cli.args import check_count, check_seconds
 from topomark.reference.cli.args import seed as seed_option
 from topomark.reference.cli.cmd_explore import parse_policies
@@ -30,6 +30,8 @@ from topomark.reference.oracle.marker_messages import MAX_COUNT
 from topomark.reference.worlds.argument import resolve_world
 
 __all__ = ["register"]
+
+WORLD_HELP = "a world file, or a generator GENERATOR[:NAME=VALUE,...] (topomark world --help lists them)"
 
 
 def _command(args) -> list[str]:
@@ -51,7 +53,7 @@ def _run_options(p) -> None:
     _protocol_options(p)
     p.add_argument("--seed", type=seed_option, help="seed for a random generator")
     p.add_argument("--map", metavar="FILE", help="write the program's map here")
-    p.add_argument("--json", action="store_true")
+    p.add_argument("--json", action="store_true", help=JSON_HELP)
 
 
 def _drive_options(p) -> None:
@@ -63,11 +65,12 @@ def _drive_options(p) -> None:
     p.add_argument("--max-traversals", type=int, default=1_000_000, metavar="N",
                    help="fail after this many edge traversals (default 1,000,000)")
     p.add_argument("--timeout", type=float, default=600.0, metavar="SECONDS", help="wall-time limit (default 600)")
-    p.add_argument("--message-timeout", type=float, default=10.0, metavar="SECONDS")
+    p.add_argument("--message-timeout", type=float, default=10.0, metavar="SECONDS",
+                   help="longest wait for one message (default 10)")
     p.add_argument("--lighthouse", default="directional-vertex", metavar="NAME",
                    help=f"the markers the explorer drops at v0: {', '.join(LIGHTHOUSES)} (default directional-vertex; "
                         "another one needs a provider speaking topomark/protocol@2)")
-    p.add_argument("--json", action="store_true")
+    p.add_argument("--json", action="store_true", help=JSON_HELP)
 
 
 def _conformance_options(p) -> None:
@@ -76,7 +79,7 @@ def _conformance_options(p) -> None:
     _suite_choice(p, "run the suite of the algorithm NAME through topomark/protocol@2, each case with its own kit "
                      "(repeatable; without it and --family: Algorithm 3.1's cases)")
     p.add_argument("-k", "--select", metavar="TEXT", help="only the cases whose name contains TEXT")
-    p.add_argument("--json", action="store_true")
+    p.add_argument("--json", action="store_true", help=JSON_HELP)
 
 
 def _suite_choice(p, what: str) -> None:
@@ -136,40 +139,41 @@ def _make_limits(args) -> Limits:
 
 
 def register(sub) -> None:
-    p = sub.add_parser("run-external", help="play a world to another program over topomark/protocol@1 and judge it",
+    p = sub.add_parser("run-external",
                        description="Run CMD as the explorer of WORLD (a world file or generator) over JSON Lines on "
                                    "its stdin/stdout (spec/protocol.md). Exit 0 if its map is extended-isomorphic "
                                    "and every snapshot satisfied I-1/I-2, 1 on any failure, 2 on bad input.")
-    p.add_argument("world", metavar="WORLD")
-    p.add_argument("cmd", nargs=argparse.REMAINDER, metavar="-- CMD [ARGS...]")
+    p.add_argument("world", metavar="WORLD", help=WORLD_HELP)
+    p.add_argument("cmd", nargs=argparse.REMAINDER, metavar="-- CMD [ARGS...]",
+                   help="the program and its arguments, after --")
     _run_options(p)
     p.set_defaults(handler=run_external_command, add_options=_run_options)
 
-    q = sub.add_parser("check-map", help="judge a map file against a world file (extended isomorphism)",
+    q = sub.add_parser("check-map",
                        description="Exit 0 if MAP is extended-isomorphic to WORLD, 1 if not (with the first mismatch "
                                    "in words), 2 on bad input. Markers: compared if the world file has any; else, if "
                                    "the world has a start and the map one directional vertex marker, the lighthouse "
                                    "Algorithm 3.1 drops at the start is added; else ignored.")
-    q.add_argument("world", metavar="WORLD")
-    q.add_argument("map", metavar="MAP")
-    q.add_argument("--json", action="store_true")
+    q.add_argument("world", metavar="WORLD", help="the world file")
+    q.add_argument("map", metavar="MAP", help="the map file to judge (world format)")
+    q.add_argument("--json", action="store_true", help=JSON_HELP)
     q.set_defaults(handler=check_map_command)
 
-    r = sub.add_parser("replay", help="verify a topomark/trace@1 trace recorded by any implementation",
+    r = sub.add_parser("replay",
                        description="Replay TRACE on WORLD: every perception, the cost, I-1/I-2 after every "
                                    "iteration (S and U rebuilt from the joins) and the final map. Exit 0 if it "
                                    "holds up, 1 at the first divergence (step, expected, found), 2 on bad input.")
-    r.add_argument("world", metavar="WORLD")
-    r.add_argument("trace", metavar="TRACE")
-    r.add_argument("--json", action="store_true")
+    r.add_argument("world", metavar="WORLD", help="the world file the trace was recorded on")
+    r.add_argument("trace", metavar="TRACE", help="the JSON Lines trace file to replay")
+    r.add_argument("--json", action="store_true", help=JSON_HELP)
     r.set_defaults(handler=replay_command)
 
-    d = sub.add_parser("drive", help="drive an external world provider (simulator or robot bridge) with "
-                                     "Algorithm 3.1",
+    d = sub.add_parser("drive",
                        description="Run CMD as the world (spec/protocol.md, provider role): topomark sends motions "
                                    "and marker drops, CMD answers with signatures. Exit 0 when a map was made (and, "
                                    "with --check WORLD, is extended-isomorphic to it), 1 on failure, 2 on bad input.")
-    d.add_argument("cmd", nargs=argparse.REMAINDER, metavar="-- CMD [ARGS...]")
+    d.add_argument("cmd", nargs=argparse.REMAINDER, metavar="-- CMD [ARGS...]",
+                   help="the world provider and its arguments, after --")
     _drive_options(d)
     d.set_defaults(handler=drive_command, add_options=_drive_options)
 
@@ -178,7 +182,7 @@ def register(sub) -> None:
 
 def _register_conformance(sub) -> None:
     """``conformance export|lint|run``."""
-    c = sub.add_parser("conformance", help="export, lint or run the conformance suite (topomark/conformance@2)",
+    c = sub.add_parser("conformance",
                        description="export DIR: write the versioned suite topomark/conformance@2 (worlds, kits, "
                                    "bounds, reference runs: costs, marker operations, maps, traces; Algorithm 3.1's "
                                    "cases and a suite per deterministic algorithm). lint DIR: check a suite (@2 or "
@@ -188,17 +192,18 @@ def _register_conformance(sub) -> None:
                                    "case giving its kit in hello (exit 0 iff all pass).")
     csub = c.add_subparsers(dest="action", metavar="ACTION", parser_class=Parser)
     ce = csub.add_parser("export", help="write the suite to DIR (new or empty)")
-    ce.add_argument("dir", metavar="DIR")
+    ce.add_argument("dir", metavar="DIR", help="the directory to write (new or empty)")
     _suite_choice(ce, "write the suite of the algorithm NAME only (repeatable; default: every deterministic one)")
-    ce.add_argument("--json", action="store_true")
+    ce.add_argument("--json", action="store_true", help=JSON_HELP)
     ce.set_defaults(handler=conformance_export)
     cl = csub.add_parser("lint", help="check a suite directory")
-    cl.add_argument("dir", metavar="DIR")
-    cl.add_argument("--json", action="store_true")
+    cl.add_argument("dir", metavar="DIR", help="the suite directory")
+    cl.add_argument("--json", action="store_true", help=JSON_HELP)
     cl.set_defaults(handler=conformance_lint)
     cr = csub.add_parser("run", help="run CMD on every case (of Algorithm 3.1, or of --algorithm/--family)")
-    cr.add_argument("dir", metavar="DIR")
-    cr.add_argument("cmd", nargs=argparse.REMAINDER, metavar="-- CMD [ARGS...]")
+    cr.add_argument("dir", metavar="DIR", help="the suite directory (topomark conformance export DIR)")
+    cr.add_argument("cmd", nargs=argparse.REMAINDER, metavar="-- CMD [ARGS...]",
+                    help="the implementation under test and its arguments, after --")
     _conformance_options(cr)
     cr.set_defaults(handler=conformance_run, add_options=_conformance_options)
     c.set_defaults(handler=lambda args: _no_action())

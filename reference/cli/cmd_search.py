@@ -34,8 +34,7 @@ __all__ = ["register", "search_command", "validate_args", "describe_world", "wri
 
 def register(sub) -> None:
     p = sub.add_parser(
-        "search", help="SAT search for indistinguishable non-isomorphic worlds (Z3)",
-        description="Search with Z3 for two worlds carrying the marker class that no motion sequence tells "
+        "search", description="Search with Z3 for two worlds carrying the marker class that no motion sequence tells "
                     "apart but that are not extended-isomorphic. Exit 0 if found (or, with --prove, if none "
                     "exists within the bounds), 1 otherwise (including unknown/timeout), 2 on bad input.")
     p.add_argument("--marker", required=True, metavar="CLASS", help="one of: " + ", ".join(MARKER_CLASSES))
@@ -44,8 +43,9 @@ def register(sub) -> None:
     p.add_argument("--max-degree", type=int, required=True, metavar="D", help="largest vertex degree, >= 1")
     p.add_argument("--planar", action="store_true", help="only planar embeddings (genus 0), like the figures")
     p.add_argument("--prove", action="store_true", help="report a bounded proof: exit 0 iff UNSAT")
-    p.add_argument("--timeout", type=float, default=None, metavar="S", help="give up after S seconds (unknown)")
-    p.add_argument("--out", default=None, metavar="DIR", help="write a.json, b.json, relation.json, pair.svg")
+    p.add_argument("--timeout", type=float, default=None, metavar="SECONDS",
+                   help="give up after SECONDS (outcome unknown)")
+    p.add_argument("-o", "--out", default=None, metavar="DIR", help="write a.json, b.json, relation.json, pair.svg")
     p.add_argument("--json", action="store_true", help="machine-readable output")
     p.set_defaults(handler=search_command)
 

@@ -2,13 +2,14 @@
 
 from __future__ import annotations
 
+import argparse
 import json
 import sys
 from collections import Counter
 
 from topomark.reference.cli.args import seed as seed_option
 from topomark.spec.dartgraph import find_isomorphism_nx
-from topomark.spec.errors import InvalidInput, TopomarkFault
+from topomark.spec.errors import InvalidInput, TopomarkFault, unknown_name
 from topomark.spec.isomorphism import find_isomorphism, verify_witness
 from topomark.spec.worldfile import dumps_world, load_world, world_to_json
 
@@ -21,26 +22,27 @@ __all__ = ["register", "describe"]
 
 def register(sub) -> None:
     gens = "; ".join(f"{g}({', '.join(f'{k}={v}' for k, v in p.items())})" for g, p in PARAMETERS.items())
-    p = sub.add_parser("world", help="generate a world file, or --show one",
+    p = sub.add_parser("world",
                        description="Generate a world: GENERATOR[:NAME=VALUE,...]. Generators and defaults: " + gens)
     p.add_argument("generator", nargs="?", metavar="GENERATOR", help="generator name with optional :NAME=VALUE,...")
     p.add_argument("--seed", type=seed_option, help="seed for random generators")
-    p.add_argument("-o", "--output", metavar="FILE", help="write the world here (default: stdout)")
+    p.add_argument("-o", "--out", dest="output", metavar="FILE", help="write the world here (default: stdout)")
+    p.add_argument("--output", dest="output", help=argparse.SUPPRESS)  # the former spelling, still accepted
     p.add_argument("--show", metavar="FILE", help="summarise a world file instead")
     p.add_argument("--draw", metavar="GENERATOR_OR_FILE",
                    help="draw a world (a generator or a world file) to -o FILE, .svg or .png by its suffix (PNG needs "
                         "matplotlib): vertex names, exit indices clockwise, markers, the start and the edge it faces")
     p.add_argument("--json", action="store_true", help="machine-readable output")
     p.set_defaults(handler=world_command)
-    q = sub.add_parser("iso", help="extended-isomorphism verdict for two world/map files",
+    q = sub.add_parser("iso",
                        description="Exit 0 if A and B are extended-isomorphic (markers preserved; starts ignored), "
                                    "1 if not (with the first mismatch), 2 on bad input.")
-    q.add_argument("a", metavar="A")
-    q.add_argument("b", metavar="B")
+    q.add_argument("a", metavar="A", help="the first world or map file")
+    q.add_argument("b", metavar="B", help="the second world or map file")
     q.add_argument("--method", choices=("anchored", "networkx", "both"), default="anchored",
                    help="which implementation decides (both: each, and they must agree)")
     q.add_argument("--ignore-markers", action="store_true", help="compare the embedded graphs only")
-    q.add_argument("--json", action="store_true")
+    q.add_argument("--json", action="store_true", help="machine-readable output")
     q.set_defaults(handler=iso_command)
 
 
@@ -83,7 +85,7 @@ def world_command(args) -> int:
         return draw_command(args)
     if args.show:
         if args.generator or args.output or args.seed is not None:
-            raise InvalidInput("world --show FILE takes no generator, --seed or -o")
+            raise InvalidInput("world --show FILE takes no generator, --seed or -o/--out")
         info = describe(load_world(args.show))
         text = (f"{args.show}: n={info['n']} m={info['m']} genus={info['genus']} faces={info['faces']}\n"
                 f"degree histogram: " + ", ".join(f"{k}:{v}" for k, v in info["degree_histogram"].items()) +
@@ -94,7 +96,7 @@ def world_command(args) -> int:
         raise InvalidInput(f"world needs a GENERATOR ({', '.join(GENERATORS)}) or --show FILE")
     name = args.generator.partition(":")[0]
     if name not in GENERATORS:
-        raise InvalidInput(f"unknown generator {name!r}; known generators: {', '.join(GENERATORS)}")
+        raise unknown_name("generator", name, GENERATORS)
     if args.output:
         check_output(args.output)  # before generating: a large world must not be built for nothing
     world = resolve_world(args.generator, args.seed)

@@ -8,88 +8,196 @@ on stdout.
 
 Each command is a module of this folder (``cmd_*``) with a
 ``register(subparsers)`` function that adds a subparser whose ``handler``
-default is ``handler(args) -> int``; :data:`COMMAND_MODULES` lists them.
+default is ``handler(args) -> int``; :data:`COMMANDS` lists them with the one-line summary
+``topomark --help`` shows.  Only the module of the command being run is imported (``topomark --help``
+imports none: it stays fast, whatever the commands need).
+
+Under ``--json`` (anywhere before a ``--``) every outcome is one JSON object on stdout, an error too:
+``{"error": "...", "exit": 2}``.  A first Ctrl-C ends the command with ``topomark: interrupted``, exit
+130; a second one, during the clean-up the first started, ends the process at once and silently, exit 130;
+one that comes once only the interpreter's own exit is left is ignored, so it too ends quietly with 130.
+Worker processes leave Ctrl-C to the command (their initializer ignores it) so it is reported once.
+
+An option is spelled one way in every command: ``-o/--out`` names where the output goes (a file for
+``world``, a directory for ``bench`` and ``search``; ``world --output`` is still accepted, unlisted);
+``--jobs N`` is 1 to 256 worker processes everywhere (0 is refused: no command runs without a process,
+and each has its default: ``bench`` one per CPU, its runs being small and independent; ``census`` 1,
+all in the leader, since a census's memory grows with its workers and its long runs are started
+deliberately); ``--seed N`` is one integer type (:func:`.args.seed`); ``--timeout SECONDS``;
+``--quiet`` silences progress; ``--json``.
 """
 
 from __future__ import annotations
 
 import argparse
+import atexit
+import importlib
+import json
 import os
+import signal
 import sys
+import threading
 import traceback
 from typing import Sequence
 
 from topomark.spec.errors import (EXIT_BAD_INPUT, EXIT_CODES_HELP, EXIT_FAULT, EXIT_NEGATIVE, CheckFailure,
                                   InvalidInput, TopomarkFault, clip)
 
-from topomark.reference.cli import (cmd_algorithms, cmd_bench, cmd_claims, cmd_count, cmd_distinguish, cmd_explore,
-                                    cmd_oracle, cmd_search, cmd_world)
-from topomark.reference.cli.parser import Parser
+from topomark.reference.cli.parser import PROG, Parser
 from topomark.reference.cli.pipes import closed_pipe_safe
 
-__all__ = ["main", "build_parser"]
+__all__ = ["main", "build_parser", "COMMANDS", "EXIT_INTERRUPTED"]
 
 STDERR_LIMIT, STDERR_NOTE = 1000, " ({n:,} characters in all)"
 """One message, bounded: whatever an input quotes back, stderr gets at most 1000 characters of it."""
 
-# The modules that contribute commands, in --help order: each has register(subparsers).
-COMMAND_MODULES = (cmd_world, cmd_explore, cmd_oracle, cmd_bench, cmd_algorithms, cmd_distinguish, cmd_search,
-                   cmd_count, cmd_claims)
+EXIT_INTERRUPTED = 130  # 128 + SIGINT, as shells report a process ended by Ctrl-C
+
+COMMANDS = {  # name: (module of this folder that registers it, summary for topomark --help), in --help order
+    "world": ("cmd_world", "generate a world file, or --show one"),
+    "iso": ("cmd_world", "extended-isomorphism verdict for two world/map files"),
+    "explore": ("cmd_explore", "explore a world with every invariant checked after every step"),
+    "run-external": ("cmd_oracle", "play a world to another program over topomark/protocol@1 and judge it"),
+    "check-map": ("cmd_oracle", "judge a map file against a world file (extended isomorphism)"),
+    "replay": ("cmd_oracle", "verify a topomark/trace@1 trace recorded by any implementation"),
+    "drive": ("cmd_oracle", "drive an external world provider (simulator or robot bridge) with Algorithm 3.1"),
+    "conformance": ("cmd_oracle", "export, lint or run the conformance suite (topomark/conformance@2)"),
+    "bench": ("cmd_bench", "run a thesis experiment (figures 3.10-3.12, tables 4.1-4.8, lighthouses, "
+                           "tables 6.1-6.2) and write CSV + report"),
+    "algorithms": ("cmd_algorithms", "list the registered algorithms with their thesis references and bounds"),
+    "distinguish": ("cmd_distinguish", "shortest motion sequence telling two worlds apart"),
+    "census": ("cmd_distinguish", "group all small worlds by what a robot perceives"),
+    "search": ("cmd_search", "SAT search for indistinguishable non-isomorphic worlds (Z3)"),
+    "census-count": ("cmd_count", "how many embedded worlds there are per size (Burnside's lemma)"),
+    "claims": ("cmd_claims", "every claim of the thesis and how topomark backs it (the claims ledger)"),
+    "worst-case": ("cmd_worst_case", "the worst cost of an algorithm over every small world, or found by search "
+                                     "past them (§7.2)"),
+    "completion": ("cmd_completion", "print a shell completion script (bash, zsh or tcsh)"),
+}
 
 
-def build_parser() -> argparse.ArgumentParser:
-    parser = Parser(prog="topomark", description="Marker-based topological SLAM: the thesis's reference "
-                                                    "implementation, checker and proofs.", epilog=EXIT_CODES_HELP)
+class _Version(argparse.Action):
+    """``--version``: ``topomark X.Y.Z``, the installed package's version, looked up only when asked for."""
+
+    def __init__(self, option_strings, dest=argparse.SUPPRESS, default=argparse.SUPPRESS, help=None):
+        super().__init__(option_strings, dest, nargs=0, default=default, help=help)
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        from importlib.metadata import PackageNotFoundError, version
+
+        try:
+            text = f"{PROG} {version(PROG)}"
+        except PackageNotFoundError:
+            text = f"{PROG} (version unknown: the package is not installed)"
+        print(text)  # on stdout, as argparse's own version action does
+        parser.exit()
+
+
+def build_parser(only: str | None = None) -> argparse.ArgumentParser:
+    """The whole command line; with ``only``, the full parser of that command alone (its module imported)
+    and, for every other command, its name and summary (enough for ``--help`` and for suggestions)."""
+    parser = Parser(prog=PROG, description="Marker-based topological SLAM: the thesis's reference "
+                                           "implementation, checker and proofs.", epilog=EXIT_CODES_HELP)
+    parser.add_argument("--version", action=_Version, help="print the version (topomark X.Y.Z) and exit")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=Parser)
     _add_parser = sub.add_parser
 
-    def add_parser(*a, **kw):  # every command's --help ends with the four exit codes
+    def add_parser(name, **kw):  # every command's --help ends with the four exit codes
         kw.setdefault("epilog", EXIT_CODES_HELP)
-        return _add_parser(*a, **kw)
+        if name in COMMANDS:
+            kw.setdefault("help", COMMANDS[name][1])
+        return _add_parser(name, **kw)
 
     sub.add_parser = add_parser
-    for module in COMMAND_MODULES:
-        module.register(sub)
+    done: set[str] = set()
+    for name, (module, summary) in COMMANDS.items():
+        if module in done:
+            continue
+        if only is None or COMMANDS.get(only, ("",))[0] == module:
+            importlib.import_module(f"{__package__}.{module}").register(sub)
+            done.add(module)
+        else:
+            _add_parser(name, help=summary, add_help=False)
     return parser
 
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Run one command; its exit code, whether or not anyone still reads stdout (:mod:`.pipes`)."""
-    with closed_pipe_safe():
-        return _main(list(sys.argv[1:] if argv is None else argv))
+    previous = _catch_second_interrupt()
+    code = EXIT_INTERRUPTED
+    try:
+        with closed_pipe_safe():
+            code = _main(list(sys.argv[1:] if argv is None else argv))
+        return code
+    finally:
+        if previous is not None and code != EXIT_INTERRUPTED:
+            signal.signal(signal.SIGINT, previous)
+        elif previous is not None:  # after a Ctrl-C, a second one stays quiet to the end, the interpreter's too
+            atexit.register(signal.signal, signal.SIGINT, signal.SIG_IGN)
+
+
+def _catch_second_interrupt():
+    """From the first Ctrl-C on, a second one exits 130 at once, silently; the handler it replaces (None when
+    Ctrl-C is not Python's to handle here: another thread, or a handler someone else installed)."""
+    if threading.current_thread() is not threading.main_thread():
+        return None
+    previous = signal.getsignal(signal.SIGINT)
+    if previous is not signal.default_int_handler:
+        return None
+
+    def first(signum, frame):
+        signal.signal(signal.SIGINT, _second)
+        raise KeyboardInterrupt
+
+    signal.signal(signal.SIGINT, first)
+    return previous
+
+
+def _second(signum, frame) -> None:
+    os._exit(EXIT_INTERRUPTED)
 
 
 def _main(argv: list[str]) -> int:
+    as_json = "--json" in (argv[:argv.index("--")] if "--" in argv else argv)
     try:
-        parser = build_parser()
         if not argv:
             argv = ["explore"]  # the main job: a checked exploration of the built-in default world
+        command = next((a for a in argv if not a.startswith("-")), None)
+        parser = build_parser(only=command if command in COMMANDS else "")
         args = parser.parse_args(argv)
         if not getattr(args, "command", None):
-            parser.print_help()
-            return 2
+            raise InvalidInput(f"give a COMMAND ({', '.join(COMMANDS)}); {PROG} --help describes them")
         return int(args.handler(args))
     except InvalidInput as exc:
-        print(f"topomark: error: {clip(str(exc), STDERR_LIMIT, note=STDERR_NOTE)}", file=sys.stderr)
-        return EXIT_BAD_INPUT
+        return _say("error", str(exc), EXIT_BAD_INPUT, as_json)
     except CheckFailure as exc:
-        print(f"topomark: check failed: {clip(str(exc), STDERR_LIMIT, note=STDERR_NOTE)}", file=sys.stderr)
-        return EXIT_NEGATIVE
+        return _say("check failed", str(exc), EXIT_NEGATIVE, as_json)
     except KeyboardInterrupt:
-        print("topomark: interrupted", file=sys.stderr)
-        return 130
+        return _say("interrupted", "", EXIT_INTERRUPTED, as_json)
     except TopomarkFault as exc:
-        return _fault(f"{exc}")
+        return _fault(f"{exc}", as_json=as_json)
     except Exception as exc:  # noqa: BLE001 - anything else is a bug in topomark, reported as one
-        return _fault(f"unexpected {exc.__class__.__name__}: {exc}", traceback.format_exc())
+        return _fault(f"unexpected {exc.__class__.__name__}: {exc}", traceback.format_exc(), as_json)
 
 
-def _fault(message: str, detail: str = "") -> int:
+def _say(what: str, message: str, code: int, as_json: bool) -> int:
+    """One line on stderr, ``topomark: WHAT: message``; under --json also the one JSON object on stdout."""
+    message = clip(message, STDERR_LIMIT, note=STDERR_NOTE)
+    print(f"{PROG}: {what}: {message}" if message else f"{PROG}: {what}", file=sys.stderr)
+    if as_json:
+        print(json.dumps({"error": message or what, "exit": code}))
+    return code
+
+
+def _fault(message: str, detail: str = "", as_json: bool = False) -> int:
     """Exit 3: topomark itself failed.  The traceback goes to stderr only with TOPOMARK_DEBUG=1."""
-    print(f"topomark: internal fault (a bug in topomark, not in what it checked): {message[:2000]}\n"
+    message = message[:2000]
+    print(f"{PROG}: internal fault (a bug in topomark, not in what it checked): {message}\n"
           "please report it with the command line and input that caused it", file=sys.stderr)
     if detail and os.environ.get("TOPOMARK_DEBUG"):
         print(detail, file=sys.stderr)
+    if as_json:
+        print(json.dumps({"error": f"internal fault: {message}", "exit": EXIT_FAULT}))
     return EXIT_FAULT
 
 

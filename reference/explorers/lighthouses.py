@@ -78,7 +78,7 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 from typing import Any, Callable, Iterator
 
-from topomark.spec.errors import InvalidInput, clip
+from topomark.spec.errors import InvalidInput, clip, unknown_name
 from topomark.spec.kit import Kit, MarkerOp, ThreadOp
 from topomark.spec.mapstate import PartialMap
 from topomark.spec.signature import Signature, back_link_table, signature_at
@@ -337,5 +337,5 @@ def configured(name: str | None, seed=None, walk_limit=None, neighbourhood=None,
 def lighthouse(name: str) -> Lighthouse:
     """The lighthouse called ``name``; an unknown name is bad input listing the known ones."""
     if name not in LIGHTHOUSES:
-        raise InvalidInput(f"unknown lighthouse {name!r} (choose from {', '.join(LIGHTHOUSES)})")
+        raise unknown_name("lighthouse", name, LIGHTHOUSES)
     return LIGHTHOUSES[name]

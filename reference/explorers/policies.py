@@ -18,7 +18,7 @@ from __future__ import annotations
 from collections import deque
 from typing import Container
 
-from topomark.spec.errors import InvalidInput
+from topomark.spec.errors import unknown_name
 from topomark.spec.mapstate import MapDart, PartialMap
 
 __all__ = ["EDGE_POLICIES", "HYPOTHESIS_POLICIES", "PATH_POLICIES", "Policies", "bfs", "bfs_preorder", "in_preorder",
@@ -36,7 +36,7 @@ class Policies:
         for name, value, allowed in (("edge", edge, EDGE_POLICIES), ("hypothesis", hypothesis, HYPOTHESIS_POLICIES),
                                      ("path", path, PATH_POLICIES)):
             if value not in allowed:
-                raise InvalidInput(f"unknown {name} policy {value!r} (choose from {', '.join(allowed)})")
+                raise unknown_name(f"{name} policy", value, allowed)
         self.edge, self.hypothesis, self.path = edge, hypothesis, path
 
     def to_json(self) -> dict[str, str]:

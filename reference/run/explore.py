@@ -27,7 +27,7 @@ import json
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
-from topomark.spec.errors import AlgorithmStopped, CheckFailure, InvalidInput, LimitReached, OutOfMarkers
+from topomark.spec.errors import AlgorithmStopped, CheckFailure, InvalidInput, LimitReached, OutOfMarkers, unknown_name
 from topomark.spec.kit import Kit
 from topomark.spec.marker import EdgeMarker, VertexMarker
 from topomark.spec.markerlayer import MarkerLayer, apply_op
@@ -75,6 +75,20 @@ class Outcome:
     extra: dict[str, Any] = field(default_factory=dict)  # the algorithm's own counts (its registry's summary_fn)
     bound_checked: bool = False  # the run was held to ``upper_bound`` (the ``cost-bound`` check)
 
+    @property
+    def map(self) -> World | None:
+        """The explored map as a world (the markers the robot left included), or None when there is none.
+
+        The map is the explorer's S once the algorithm claims a correct end (a ``wrong-map`` run's map is
+        returned all the same: it is what the algorithm claims, to be compared with the world).  None when
+        the algorithm stopped (outcome ``failed`` or ``limit``), when the checker stopped the run before the
+        algorithm finished, or when the explorer keeps no single completed map (``model-tree`` keeps models).
+        """
+        S = getattr(self.explorer, "S", None)
+        if self.claimed != "correct" or S is None or not S.complete():
+            return None
+        return S.to_world()
+
     def summary(self) -> dict[str, Any]:
         out = {k: getattr(self, k) for k in (
             "n", "m", "cost", "drop_trips", "verified", "iterations", "loop_iterations", "nonloop_iterations", "hypotheses",
@@ -109,7 +123,7 @@ def prepare_world(world: World, lighthouse: Lighthouse = LIGHTHOUSES["directiona
     """
     state = world.start_state()
     v0, facing = state
-    bare = World(world.rotation, (), world.start)
+    bare = world if type(world) is World and not world.markers else World(world.rotation, (), world.start)
     if bare.degree(v0) < lighthouse.min_degree:
         raise InvalidInput(f"the {lighthouse.name} lighthouse needs a start vertex of degree >= "
                            f"{lighthouse.min_degree}; the start vertex {v0!r} has degree {bare.degree(v0)}")
@@ -173,7 +187,7 @@ def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: 
     run = _setup(world, spec, lighthouse, options or {})
     policies = policies or Policies()
     if check_mode not in Checker.MODES:
-        raise InvalidInput(f"unknown check mode {check_mode!r} (choose from {', '.join(Checker.MODES)})")
+        raise unknown_name("check mode", check_mode, Checker.MODES)
     sink = ListSink() if sink is None and record else sink
     trace = sink.records if isinstance(sink, ListSink) else []
     emit = sink.emit if sink is not None else None

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from topomark.spec.errors import InvalidInput, clip
+from topomark.spec.errors import InvalidInput, clip, did_you_mean
 from topomark.spec.world import World
 from topomark.spec.worldfile import load_world
 
@@ -67,5 +67,5 @@ def resolve_world(text: str, seed: int | None = None) -> World:
         if seed is not None:
             raise InvalidInput(f"--seed has no effect on a world file ({text})")
         return load_world(text)
-    raise InvalidInput(f"{clip(text, 80, quote=True)} is neither a world file nor a generator "
-                       f"(generators: {', '.join(GENERATORS)})")
+    raise InvalidInput(f"{clip(text, 80, quote=True)} is neither a world file nor a generator"
+                       f"{did_you_mean(name, GENERATORS)} (generators: {', '.join(GENERATORS)})")

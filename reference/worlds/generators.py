@@ -24,7 +24,9 @@ here:
   :func:`random_graph` (§3.5.3);
 * :mod:`~topomark.proofs.wheels` -- the Figure 3.4/3.6 wheel pair (§3.2.2, §3.3);
 * :mod:`~topomark.reference.worlds.figures` -- :func:`figure_6_10` and
-  :func:`figure_6_15`, where §6.2's failing marker savings fail.
+  :func:`figure_6_15`, where §6.2's failing marker savings fail;
+* :mod:`~topomark.reference.worlds.worst_cases` -- ``worst-case``: the worst
+  worlds ``topomark worst-case`` found, with their starts (§7.2).
 
 This module holds the registry the CLI uses: :data:`GENERATORS`,
 :data:`PARAMETERS`, :func:`generate` and :func:`DEFAULT_WORLD`.
@@ -64,12 +66,13 @@ import re
 from numbers import Integral
 from typing import Any, Callable
 
-from topomark.spec.errors import InvalidInput, clip
+from topomark.spec.errors import InvalidInput, clip, unknown_name, did_you_mean
 from topomark.spec.world import World
 
 from topomark.reference.worlds.embedding import circle_positions, from_networkx, from_positions, natural_key, planar
 from topomark.reference.worlds.deterministic import chain, complete, cycle, lattice, wheel_hub_last
 from topomark.reference.worlds.figures import figure_6_10, figure_6_15
+from topomark.reference.worlds.worst_cases import worst_case_world
 from topomark.reference.worlds.holes import complete_hole, lattice_hole
 from topomark.reference.worlds.random_worlds import OtherPairs, random_graph, small_world  # noqa: F401 - OtherPairs: for tests
 from topomark.proofs.wheels import (WHEEL_A_ROTATION, WHEEL_B_ROTATION, wheel_a, wheel_b, wheel_pair,
@@ -120,6 +123,7 @@ GENERATORS: dict[str, Callable[..., World]] = {
     "wheel-hub-last": wheel_hub_last,
     "figure-6.10": figure_6_10,
     "figure-6.15": figure_6_15,
+    "worst-case": worst_case_world,
 }
 """CLI name -> generator function."""
 
@@ -140,6 +144,8 @@ PARAMETERS: dict[str, dict[str, Any]] = {
     # Figures 6.10 and 6.15: the worlds where the failing marker savings of §6.2 fail (worlds/figures.py).
     "figure-6.10": {},
     "figure-6.15": {},
+    # The worst worlds topomark worst-case found, with their starts (worlds/worst_cases.py).
+    "worst-case": {"case": "basic-n5-d4"},
 }
 """CLI name -> {parameter name: default}.  The default's type is the parameter's type
 (int, float or str); ``generate`` fills in missing parameters from here."""
@@ -184,13 +190,14 @@ def generate(name: str, **params: Any) -> World:
     12
     """
     if name not in GENERATORS:
-        raise InvalidInput(f"unknown generator {name!r}; known generators: {', '.join(GENERATORS)}")
+        raise unknown_name("generator", name, GENERATORS)
     defaults = PARAMETERS[name]
     unknown = sorted(set(params) - set(defaults))
     if unknown:
         accepted = ", ".join(defaults) if defaults else "none"
         raise InvalidInput(
-            f"generator {name!r} has no parameter {', '.join(map(repr, unknown))} (accepted: {accepted})"
+            f"generator {name!r} has no parameter {', '.join(map(repr, unknown))}{did_you_mean(unknown[0], defaults)} "
+            f"(accepted: {accepted})"
         )
     args = {p: _coerce(name, p, params.get(p, d), d) for p, d in defaults.items()}
     return GENERATORS[name](**args)

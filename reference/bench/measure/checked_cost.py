@@ -57,12 +57,13 @@ def run(seeds: int, repeats: int) -> list[dict]:
     return rows
 
 
-def main() -> None:
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--seeds", type=int, default=5)
-    ap.add_argument("--repeats", type=int, default=3)
-    ap.add_argument("--json", action="store_true")
-    args = ap.parse_args()
+def main(argv: list[str] | None = None) -> None:
+    ap = argparse.ArgumentParser(prog="python -m topomark.reference.bench.measure.checked_cost",
+                                 description=__doc__.splitlines()[0])
+    ap.add_argument("--seeds", type=int, default=5, help="worlds per size (default 5)")
+    ap.add_argument("--repeats", type=int, default=3, help="timed runs per world; the median is kept (default 3)")
+    ap.add_argument("--json", action="store_true", help="print the rows as one JSON list")
+    args = ap.parse_args(argv)
     rows = run(args.seeds, args.repeats)
     if args.json:
         print(json.dumps(rows, indent=1))

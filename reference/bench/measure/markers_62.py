@@ -54,12 +54,15 @@ def measure(algorithm: str, world_family: str, size: int, seeds: int) -> dict:
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("algorithms", nargs="*", default=list(O_M_ALGORITHMS))
-    parser.add_argument("--seeds", type=int, default=5)
+    parser = argparse.ArgumentParser(prog="python -m topomark.reference.bench.measure.markers_62",
+                                     description=__doc__.split("\n\n")[0])
+    parser.add_argument("algorithms", nargs="*", default=list(O_M_ALGORITHMS), metavar="ALGORITHM",
+                        help=f"the algorithms to measure (default: {', '.join(O_M_ALGORITHMS)})")
+    parser.add_argument("--seeds", type=int, default=5, help="worlds per size (default 5)")
     parser.add_argument("--family", default="lattice-hole", choices=sorted(FAMILIES), metavar="WORLD_FAMILY",
                         help="the bench's world family (default lattice-hole)")
-    parser.add_argument("--sizes", type=int, nargs="*")
+    parser.add_argument("--sizes", type=int, nargs="*", metavar="SIZE",
+                        help="only these sizes (default: the family's sizes)")
     args = parser.parse_args(argv)
     print("algorithm     size  worlds  cost/m median  max    | per m: new  other  travel  valid  retrace | "
           "markers/Σ^{n−1} | worst")

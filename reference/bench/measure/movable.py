@@ -22,6 +22,7 @@ Examples
 
 from __future__ import annotations
 
+import argparse
 import statistics
 import sys
 
@@ -81,9 +82,15 @@ def table(rows: list[dict], algorithms=ALGORITHMS) -> str:
     return "\n".join(lines)
 
 
-def main(argv: list[str]) -> int:
-    family = argv[0] if argv else "lattice-hole"
-    seeds = range(int(argv[1]) if len(argv) > 1 else 5)
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(prog="python -m topomark.reference.bench.measure.movable",
+                                 description=__doc__.split("\n\n")[0])
+    ap.add_argument("family", nargs="?", default="lattice-hole", choices=sorted(FAMILIES), metavar="FAMILY",
+                    help=f"the world family: {', '.join(FAMILIES)} (default lattice-hole)")
+    ap.add_argument("seeds", nargs="?", type=int, default=5, metavar="SEEDS",
+                    help="worlds per size: seeds 0 to SEEDS-1 (default 5)")
+    args = ap.parse_args(argv)
+    family, seeds = args.family, range(args.seeds)
     print(f"{family}, seeds {seeds.start}-{seeds.stop - 1}")
     print(table(measure(FAMILIES[family][0], list(seeds), family=family)))
     return 0

@@ -118,9 +118,10 @@ def search_circumference(count: int = 200, seed: int = 0) -> dict:
 
 
 def main(argv=None) -> int:
-    p = argparse.ArgumentParser(prog="bench_threads", description=__doc__.split("\n\n")[0])
-    p.add_argument("--worlds", type=int, default=200)
-    p.add_argument("--json", action="store_true")
+    p = argparse.ArgumentParser(prog="python -m topomark.reference.bench.measure.thread_length",
+                                description=__doc__.split("\n\n")[0])
+    p.add_argument("--worlds", type=int, default=200, help="worlds searched (default 200)")
+    p.add_argument("--json", action="store_true", help="one JSON line instead of indented JSON")
     a = p.parse_args(argv)
     t = time.perf_counter()
     out = search_circumference(a.worlds)

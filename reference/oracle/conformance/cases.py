@@ -2,7 +2,9 @@
 
 :func:`default_cases` are Algorithm 3.1's worlds — the thesis's figures (the
 Figure 3.4/3.6 wheel pair, the trace.md triangle, the Figure 3.3 cycles,
-chains) and generated world families of §3.5.3 across sizes — each run under
+chains), generated world families of §3.5.3 across sizes, and the worst worlds
+``topomark worst-case`` found for Algorithm 3.1 and its §4.1 enhancements
+(stress cases, §7.2) — each run under
 every named policy of :data:`POLICIES` (§3.3 leaves the edge, hypothesis and
 path choices open).
 
@@ -12,7 +14,9 @@ each (``kit_for(n, m, options)``: the thesis's exact budgets, e.g. Case 3a's
 Σ_{k=1}^{n−1} k, L1562–L1575), and, for an algorithm whose kit size is an
 option (``--markers``), the 2×3 lattice with the smallest kit it takes — where
 most run out of markers and must report failure (§6.2.1: "running out is the
-``failed`` outcome").  Only deterministic algorithms have suites: a reference
+``failed`` outcome"); and, as stress cases, the worst worlds ``topomark
+worst-case`` found for it (:mod:`topomark.reference.worlds.worst_cases`,
+§7.2).  Only deterministic algorithms have suites: a reference
 run of a randomised one fixes nothing a client could be held to.
 
 :data:`FAMILIES` groups the algorithms for ``--family``: a family's members
@@ -25,12 +29,13 @@ from __future__ import annotations
 
 from typing import Any, Iterable
 
-from topomark.spec.errors import InvalidInput
+from topomark.spec.errors import InvalidInput, unknown_name
 from topomark.spec.world import Start, World
 
 from topomark.reference.algorithms.registry import REGISTRY, AlgorithmSpec, algorithm_spec
 from topomark.reference.explorers.policies import Policies
 from topomark.reference.worlds import generators as g
+from topomark.reference.worlds.worst_cases import worst_case_worlds
 
 __all__ = ["POLICIES", "FAMILIES", "default_cases", "algorithm_cases", "family_of", "suite_algorithms", "started"]
 
@@ -94,7 +99,14 @@ def default_cases() -> list[tuple[str, str, World]]:
     for seed in (5, 6):
         cases.append((f"random-9-s{seed}", f"§3.5.3: random graph n=9, 40% density, seed {seed}",
                       g.random_graph(9, 0.4, seed)))
+    cases += _stress_cases(("basic", "enh1", "enh2", "enh3"))
     return [(name, text, started(w)) for name, text, w in cases]
+
+
+def _stress_cases(algorithms: Iterable[str]) -> list[tuple[str, str, World]]:
+    """The worst worlds ``topomark worst-case`` found for ``algorithms`` (§7.2), each from its worst start: stress
+    cases, where an implementation walks the longest of any world of that size."""
+    return [case for name in algorithms for case in worst_case_worlds(name)]
 
 
 def _algorithm_worlds() -> list[tuple[str, str, World]]:
@@ -112,7 +124,7 @@ def algorithm_cases(spec: AlgorithmSpec) -> list[tuple[str, str, str, World, dic
     """(name, world name, description, world, options) of ``spec``'s suite: the shared worlds with the registry's
     default kit, and a smallest kit where the kit's size is an option (``--markers``)."""
     cases = [(name, name, f"{text}, with the kit {spec.name} is given on it", world, {})
-             for name, text, world in _algorithm_worlds()]
+             for name, text, world in _algorithm_worlds() + _stress_cases([spec.name])]
     markers = next((p for p in spec.parameters if p.name == "markers"), None)
     if markers is not None:
         k = max(2, markers.minimum or 0)
@@ -138,7 +150,7 @@ def suite_algorithms(names: Iterable[str] = (), families: Iterable[str] = ()) ->
     names, families = list(names), list(families)
     for family in families:
         if family not in FAMILIES:
-            raise InvalidInput(f"unknown family {family!r} (choose from {', '.join(FAMILIES)})")
+            raise unknown_name("family", family, FAMILIES)
     for name in names:
         if not algorithm_spec(name).deterministic:
             raise InvalidInput(f"the algorithm {name} is randomised: it has no conformance suite (its reference run "

@@ -1,0 +1,176 @@
+"""Exploring from Python: a checked run, its map judged, extended isomorphism, trace replay (thesis §3.1.3, §3.3).
+
+:func:`explore` is ``topomark explore``: the algorithm of the registry (Algorithm 3.1 by default, §3.3) runs
+over the robot interface only, and the checker, which sees the world, checks every invariant the algorithm's
+registry entry names after every iteration.  The returned
+:class:`~topomark.reference.run.explore.Outcome` carries ``map`` (the explored map as a world, or None when
+the run ended without one), ``cost`` (edge traversals), ``outcome`` (``correct``, ``wrong-map``, ``failed``,
+``limit``...), ``verified`` and ``violation``.
+
+:func:`isomorphic` decides extended isomorphism (§3.1.3) and returns its witness — the vertex bijection and
+each vertex's rotation offset, re-verified by an independent check — or None.  :func:`check_map` judges a map
+against the world it was made in, deciding which markers take part as ``topomark check-map`` does (a map
+carries the lighthouse the robot dropped; the world file usually does not).
+
+Examples
+--------
+>>> run = explore("cycle:n=5")
+>>> run.outcome, run.cost > 0, run.map.n
+('correct', True, 5)
+>>> replay("cycle:n=5", run.trace).ok
+True
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterable, Mapping
+from typing import Any
+
+from topomark.reference.algorithms.registry import AlgorithmSpec, Listed, listing
+from topomark.reference.explorers.lighthouses import Lighthouse
+from topomark.reference.explorers.policies import Policies
+from topomark.reference.replay.replay import ReplayResult, replay as _replay
+from topomark.reference.run.explore import Outcome, explore as _explore
+from topomark.reference.run.map_check import MapVerdict, check_map as _check_map
+from topomark.reference.trace.reader import load_trace, parse_trace
+from topomark.reference.trace.sink import FileSink, trace_line
+from topomark.spec.errors import CheckFailure, InvalidInput
+from topomark.spec.isomorphism import Witness, find_isomorphism, verify_witness
+from topomark.worlds import WorldLike, resolve
+
+__all__ = ["explore", "check_map", "isomorphic", "replay", "algorithms", "Outcome", "MapVerdict", "Witness",
+           "ReplayResult"]
+
+
+def explore(world: WorldLike, algorithm: str = "basic", lighthouse: str | Lighthouse | None = None,
+            policies: Policies | Mapping[str, str] | None = None, check: bool = True, *,
+            trace: str | os.PathLike[str] | None = None, record: bool = True, **options: Any) -> Outcome:
+    """Explore ``world`` with ``algorithm`` and return the outcome, as ``topomark explore`` does.
+
+    ``world`` is a World, a world file or a generator text (``"lattice:rows=3,cols=3"``).  ``lighthouse``
+    names the strategy of a lighthouse algorithm (default ``directional-vertex``, §3.3); ``policies`` the
+    edge, hypothesis and path policies (a :class:`~topomark.reference.explorers.policies.Policies` or a
+    mapping such as ``{"edge": "lifo"}``).  ``check=False`` runs without the checker (``verified`` is then
+    False and ``outcome`` ``unchecked``).  The trace goes to the file ``trace`` if given, else it is kept in
+    ``outcome.trace`` unless ``record=False``.  Other keywords are the algorithm's own options
+    (``topomark algorithms``), an underscore standing for the option's hyphen: ``max_models=50``.
+
+    A violated invariant does not raise: it ends the run with ``outcome.violation`` set (exit 1 in the CLI).
+    Bad input — an unknown algorithm, option or policy, a world the lighthouse cannot use — raises InvalidInput.
+
+    Examples
+    --------
+    >>> run = explore("wheel-a", algorithm="enh3", policies={"edge": "lifo"})
+    >>> run.verified, run.violation is None, isomorphic(run.map, resolve("wheel-a"), markers=False) is not None
+    (True, True, True)
+    >>> explore("cycle:n=4", algorithm="model-tree", max_steps=10).map is None  # stopped: no map
+    True
+    >>> explore("cycle:n=4", colour="red")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    topomark.spec.errors.InvalidInput: the algorithm basic takes no option --colour (its options: ...)
+    """
+    given = {name.replace("_", "-"): value for name, value in options.items()}
+    chosen = _policies(policies)
+    the_world = resolve(world)
+    if trace is None:
+        return _explore(the_world, algorithm, chosen, check, record=record, lighthouse=lighthouse, options=given)
+    with FileSink(trace) as sink:
+        return _explore(the_world, algorithm, chosen, check, sink=sink, lighthouse=lighthouse, options=given)
+
+
+def _policies(policies: Policies | Mapping[str, str] | None) -> Policies | None:
+    """A Policies from a mapping ``{"edge": ..., "hypothesis": ..., "path": ...}`` (a kind given at most once)."""
+    if policies is None or isinstance(policies, Policies):
+        return policies
+    if not isinstance(policies, Mapping):
+        raise InvalidInput(f"policies must be a Policies or a mapping of edge, hypothesis and path policies, "
+                           f"not {type(policies).__name__}")
+    unknown = sorted(set(policies) - {"edge", "hypothesis", "path"})
+    if unknown:
+        raise InvalidInput(f"unknown policy kind {', '.join(map(repr, unknown))} (the kinds: edge, hypothesis, path)")
+    return Policies(**policies)
+
+
+def isomorphic(a: WorldLike, b: WorldLike, markers: bool = True) -> Witness | None:
+    """The extended isomorphism from ``a`` to ``b`` (§3.1.3), or None when they are not isomorphic.
+
+    The witness maps every vertex of ``a`` to one of ``b`` (``witness.vertex_map``) and shifts each vertex's
+    exit indices by ``witness.offsets[v]``; it is checked against the definition by a second implementation
+    before it is returned (CheckFailure if the two disagree).  With ``markers=False`` the embedded graphs
+    are compared and the markers ignored (a map carries the lighthouse its robot dropped; the world it was
+    made in usually does not).
+
+    Examples
+    --------
+    >>> w = isomorphic("lattice:rows=2,cols=2", "cycle:n=4")
+    >>> sorted(w.vertex_map.values())
+    ['0', '1', '2', '3']
+    >>> isomorphic("cycle:n=4", "chain:n=4") is None
+    True
+    """
+    first, second = resolve(a), resolve(b)
+    result = find_isomorphism(first, second, markers=markers)
+    if not result.isomorphic:
+        return None
+    bad = verify_witness(first, second, result.witness, markers=markers)
+    if bad is not None:
+        raise CheckFailure(bad)
+    return result.witness
+
+
+def check_map(world: WorldLike, map_: WorldLike) -> MapVerdict:
+    """Is ``map_`` extended-isomorphic to ``world``?  The verdict of ``topomark check-map``.
+
+    Which markers take part follows one rule (``spec/protocol.md``, "Judging a map"): the world's own
+    markers if it has any; else, when the map carries one directional marker, Algorithm 3.1's lighthouse at
+    the world's start; else none.  ``verdict.isomorphic``, ``verdict.rule`` and ``verdict.words()`` tell.
+
+    Examples
+    --------
+    >>> run = explore("lattice:rows=2,cols=3")
+    >>> verdict = check_map("lattice:rows=2,cols=3", run.map)
+    >>> verdict.isomorphic, verdict.rule  # a generated world has no start: the graphs are compared
+    (True, 'graph')
+    >>> check_map("cycle:n=6", run.map).isomorphic
+    False
+    """
+    return _check_map(resolve(world), resolve(map_))
+
+
+def replay(world: WorldLike, trace: str | os.PathLike[str] | Iterable[dict[str, Any]]) -> ReplayResult:
+    """Re-check every claim of a recorded trace against ``world`` (``topomark replay``).
+
+    ``trace`` is a trace file or its records (``explore(...).trace``); records are read back through the
+    trace format's reader, so they are checked exactly as a file's lines are.  ``result.ok`` is the
+    verdict, ``result.message`` says what was verified or where the trace first diverges from the world.
+
+    Examples
+    --------
+    >>> run = explore("cycle:n=4")
+    >>> bad = [dict(r) for r in run.trace]
+    >>> bad[-1]["cost"] += 1
+    >>> replay("cycle:n=4", bad).ok
+    False
+    """
+    the_world = resolve(world)
+    if isinstance(trace, (str, os.PathLike)):
+        return _replay(the_world, load_trace(trace), os.fspath(trace))
+    records = parse_trace("".join(trace_line(r) for r in trace), "<records>")
+    return _replay(the_world, records, "<records>")
+
+
+def algorithms() -> list[AlgorithmSpec | Listed]:
+    """Every algorithm of the registry, in ``topomark algorithms`` order (Algorithm 3.1 first).
+
+    Each entry has its ``name``, ``thesis`` reference, marker ``kit``, stated bounds, options and checks;
+    the thesis's algorithms that cannot be implemented from it are listed too (``status``, with the reason).
+
+    Examples
+    --------
+    >>> specs = algorithms()
+    >>> specs[0].name, specs[0].thesis
+    ('basic', '§3.3, Algorithm 3.1')
+    """
+    return listing()

@@ -1,0 +1,159 @@
+"""``topomark worst-case``: the worst cost of an algorithm, exhaustive over small worlds (thesis §7.2, L2260–L2262).
+
+``topomark worst-case --algorithm basic --max-vertices 5 --max-degree 4``
+runs the algorithm unchecked from every start of every embedded world with
+n ≤ 5 vertices and degrees ≤ 4 (one world per isomorphism class, one start per
+orbit of its automorphisms), re-runs a seeded sample and every argmax checked,
+and prints per n the worlds, runs, largest cost, largest cost/m and largest
+ratio of the cost to the algorithm's exact bound (for Algorithm 3.1, (3.1) +
+(3.2), §3.5.2), with the world that reaches it.  ``--shards DIR`` keeps the
+tasks on disk so a killed run resumes; ``--jobs``/``--scheduler`` spread them
+(:mod:`topomark.reference.worstcase.resumable`); ``--out DIR`` writes the JSON,
+the argmax worlds as world files, the report and its plot;
+``--cross-check`` also runs the independent brute force over labelled rotation
+systems (n ≤ 5) and requires the same maxima.
+
+``--search`` looks past exhaustive sizes by seeded local search
+(:mod:`topomark.reference.worstcase.search`): a lower bound on the worst case.
+
+Exit 0 when every run mapped its world (and the checked runs agree), 1 when a
+run did not (a failure, a wrong map, a violated invariant), 2 on bad input, 3
+when topomark's checked and unchecked runs, or the two exhaustive searches,
+disagree.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+import tempfile
+from pathlib import Path
+from typing import Any
+
+from topomark.spec.errors import InvalidInput, TopomarkFault
+
+from topomark.reference.cli.args import MAX_JOBS, check_jobs, check_max_degree, seed
+from topomark.reference.cli.cmd_worst_search import add_search_arguments, search_command, setup_of
+
+__all__ = ["register", "worst_case_command"]
+
+MAX_EXHAUSTIVE = 8  # the census's enumeration reaches n = 8 (topomark.proofs.enumerate.MAX_VERTICES)
+
+
+def register(sub) -> None:
+    p = sub.add_parser("worst-case", description="Run an algorithm from every start of every embedded world up to a size and "
+                                   "degree (exhaustive, exact), or search larger worlds for bad ones (--search, a "
+                                   "lower bound); report the largest cost, cost/m and cost / bound per n.")
+    p.add_argument("--algorithm", default="basic", metavar="NAME", help="registered algorithm (default basic; "
+                                                                         "see topomark algorithms)")
+    p.add_argument("--lighthouse", metavar="NAME", help="lighthouse strategy for a Chapter 3-4 algorithm")
+    p.add_argument("--policy", action="append", default=[], metavar="KIND=NAME",
+                   help="edge, hypothesis or path policy, as for explore (repeatable)")
+    p.add_argument("--max-vertices", type=int, metavar="N", help=f"largest world size (exhaustive: 2..{MAX_EXHAUSTIVE})")
+    p.add_argument("--max-degree", type=int, default=4, metavar="D", help="largest vertex degree (default 4)")
+    p.add_argument("--min-vertices", type=int, default=2, metavar="M", help="smallest world size (default 2)")
+    p.add_argument("--jobs", type=int, default=1, metavar="N", help=f"worker processes, 1 to {MAX_JOBS} (default 1)")
+    p.add_argument("--scheduler", metavar="ADDRESS", help="run the tasks on a Dask cluster (an address, or 'local')")
+    p.add_argument("--shards", metavar="DIR", help="keep the tasks' results in DIR; run again, it resumes")
+    p.add_argument("--sample", type=float, default=0.001, metavar="FRACTION",
+                   help="fraction of the runs re-run checked (default 0.001; every argmax is always re-checked)")
+    p.add_argument("--seed", type=seed, default=0, help="seed of the checked sample and of --search (default 0)")
+    p.add_argument("--cross-check", action="store_true",
+                   help="also run the brute force over labelled rotation systems and require the same maxima (n <= 5)")
+    p.add_argument("-o", "--out", metavar="DIR", help="write worst-case.json, the argmax world files, worst-case.md and plots")
+    p.add_argument("--summarise", nargs="+", metavar="DIR",
+                   help="print worst-case.md (Markdown) from the --out directories of earlier runs, exhaustive and --search")
+    p.add_argument("--quiet", action="store_true", help="no progress line")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
+    add_search_arguments(p)
+    p.set_defaults(handler=worst_case_command)
+
+
+def _validate(args: argparse.Namespace) -> None:
+    if args.max_vertices is None:
+        raise InvalidInput("--max-vertices is required (the largest world size of the exhaustive search)")
+    if not 2 <= args.max_vertices <= MAX_EXHAUSTIVE:
+        raise InvalidInput(f"--max-vertices must be between 2 and {MAX_EXHAUSTIVE} for the exhaustive search "
+                           f"(use --search past it), not {args.max_vertices}")
+    if not 2 <= args.min_vertices <= args.max_vertices:
+        raise InvalidInput(f"--min-vertices must be between 2 and --max-vertices ({args.max_vertices}), "
+                           f"not {args.min_vertices}")
+    check_max_degree(args.max_degree)
+    check_jobs(args.jobs)
+    if args.cross_check and args.max_vertices > 5:
+        raise InvalidInput(f"--cross-check runs the brute force for n <= 5 only, not --max-vertices {args.max_vertices}")
+
+
+def worst_case_command(args: argparse.Namespace) -> int:
+    if args.summarise:
+        from topomark.reference.worstcase.summary import summarise
+        missing = [d for d in args.summarise if not Path(d).is_dir()]
+        if missing:
+            raise InvalidInput(f"--summarise: {missing[0]!r} is not a directory (give the --out directories of runs)")
+        print(summarise([Path(d) for d in args.summarise]))
+        return 0
+    if args.search:
+        return search_command(args)
+    _validate(args)
+    setup = setup_of(args)
+    progress = None if args.quiet or args.json else (lambda line: print(line, file=sys.stderr, flush=True))
+    degree = min(args.max_degree, args.max_vertices - 1)
+    if args.shards is not None:
+        return _finish(args, setup, degree, _run(args, setup, degree, Path(args.shards), progress))
+    with tempfile.TemporaryDirectory(prefix="topomark-worst-case-") as root:
+        return _finish(args, setup, degree, _run(args, setup, degree, Path(root), progress))
+
+
+def _run(args, setup, degree: int, root: Path, progress) -> dict[str, Any]:
+    from topomark.reference.worstcase.resumable import worst_case
+    return worst_case(setup, args.max_vertices, degree, root, args.min_vertices, args.jobs, args.scheduler, progress)
+
+
+def _finish(args, setup, degree: int, found: dict[str, Any]) -> int:
+    from topomark.reference.worstcase.result import rows, write_outputs
+    tallies = found["tallies"]
+    per_n = rows(tallies, degree, setup.spec)
+    data = {"algorithm": setup.algorithm, "setup": setup.to_json(), "max_vertices": args.max_vertices,
+            "max_degree": args.max_degree, "per_n": per_n, "refused_starts": found["refused"],
+            "checked_runs": found["checked"], "problems": found["problems"], "problem_count": found["problem_count"],
+            "method": "exhaustive: every embedded world up to isomorphism, every start up to automorphism"}
+    if args.cross_check:
+        from topomark.reference.worstcase.brute import brute_force, compare
+        brute = brute_force(setup, args.max_vertices, degree, args.min_vertices)
+        compare(tallies, brute)  # exit 3 if the two searches disagree
+        data["cross_check"] = {n: t.to_summary() for n, t in brute.items()}
+    if args.out:
+        written = write_outputs(Path(args.out), data, degree, tallies)
+        from topomark.reference.worstcase.report import write_report
+        written += write_report(Path(args.out), data)
+        data["written"] = [str(p) for p in written]
+    if any(p["kind"] == "disagree" for p in found["problems"]):
+        raise TopomarkFault(f"a checked re-run disagrees with its unchecked run: {found['problems'][0]}")
+    failed = found["problem_count"] + sum(r["runs"] - r["outcomes"].get("correct", 0) for r in per_n)
+    if args.json:
+        print(json.dumps(data, indent=1, sort_keys=True))
+    else:
+        print(_table(data))
+    return 1 if failed else 0
+
+
+def _table(data: dict[str, Any]) -> str:
+    from topomark.reference.worstcase.report import table
+    lines = [f"worst case of {data['algorithm']} over every world with n <= {data['max_vertices']}, "
+             f"degree <= {data['max_degree']} (exhaustive, exact)", table(data["per_n"])]
+    lines.append(f"{data['checked_runs']} runs re-run checked (sample and argmaxes); {data['refused_starts']} starts "
+                 f"refused by the algorithm; {data['problem_count']} problems")
+    wrong = {k: v for r in data["per_n"] for k, v in r["outcomes"].items() if k != "correct"}
+    if wrong:
+        lines.append(f"runs that did not map their world: {sum(r['runs'] - r['outcomes'].get('correct', 0) for r in data['per_n'])} "
+                     f"({', '.join(sorted(wrong))}); their costs are left out of the maxima (exit 1)")
+    for p in data["problems"][:5]:
+        lines.append(f"  problem: {json.dumps(p)}")
+    if "cross_check" in data:
+        runs = sum(t["runs"] for t in data["cross_check"].values())
+        lines.append(f"cross-check: the brute force over every labelled rotation system ({runs} runs, no isomorphism "
+                     "reduction) found the same maxima and the same (m, cost) values at every n")
+    if "written" in data:
+        lines.append(f"wrote {len(data['written'])} files, {data['written'][0]} ...")
+    return "\n".join(lines)

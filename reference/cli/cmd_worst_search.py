@@ -1,0 +1,120 @@
+"""``topomark worst-case --search``: bad worlds past exhaustive sizes, by seeded local search (thesis §7.2).
+
+For each size ``--vertices N ...`` the search (:func:`topomark.reference.worstcase.search.adversarial_search`)
+changes one vertex's rotation, adds or removes an edge, or moves the start, keeping the world connected and within
+``--max-degree``, and keeps what raises the ``--objective``; the same number of random worlds
+(:func:`~topomark.reference.worstcase.search.random_baseline`, run by the search) is the yardstick.  What it finds is a lower bound on
+the worst case, not the worst case.  The growth of the best cost with m, n, the diameter and the maximum degree is
+fitted on log-log axes (:func:`~topomark.reference.worstcase.fit.fit_exponents`).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+import time
+from pathlib import Path
+from typing import Any
+
+from topomark.spec.errors import InvalidInput
+
+__all__ = ["add_search_arguments", "search_command", "setup_of"]
+
+OBJECTIVES = ("cost", "cost-per-m", "ratio")
+
+
+def add_search_arguments(p) -> None:
+    g = p.add_argument_group("adversarial search (--search)")
+    g.add_argument("--search", action="store_true", help="search worlds past exhaustive sizes for a bad one")
+    g.add_argument("--vertices", type=int, nargs="+", default=[20], metavar="N",
+                   help="world sizes to search (default 20)")
+    g.add_argument("--evaluations", type=int, default=400, metavar="K",
+                   help="runs per size for the search, and as many random worlds (default 400)")
+    g.add_argument("--objective", choices=OBJECTIVES, default="cost",
+                   help="what to maximise: cost, cost-per-m, or ratio (cost / the exact bound)")
+    g.add_argument("--world-family", choices=("lattice-hole",),
+                   help="search within a family of worlds: lattice-hole (a lattice, which cells are removed)")
+
+
+def setup_of(args: argparse.Namespace):
+    """The shared setup of a worst-case search from the command line (bad input: exit 2)."""
+    from topomark.reference.algorithms.registry import algorithm_spec
+    from topomark.reference.cli.cmd_explore import check_policy_kinds, parse_policies
+    from topomark.reference.run.explore import check_run
+    from topomark.reference.worlds.generators import generate
+    from topomark.reference.worstcase.exhaustive import Setup
+
+    spec = algorithm_spec(args.algorithm)
+    policies = parse_policies(args.policy)
+    check_policy_kinds(args.policy, spec)
+    if not 0 <= args.sample <= 1:
+        raise InvalidInput(f"--sample must be a fraction between 0 and 1, not {args.sample}")
+    if args.lighthouse is not None:
+        check_run(generate("complete", n=5), spec, args.lighthouse)  # an unknown or misplaced lighthouse: exit 2
+    return Setup(spec.name, args.lighthouse, (policies.edge, policies.hypothesis, policies.path), args.sample,
+                 args.seed)
+
+
+def search_command(args: argparse.Namespace) -> int:
+    from topomark.reference.worstcase.fit import fit_exponents
+    from topomark.reference.worstcase.search import adversarial_search
+    setup = setup_of(args)
+    if args.evaluations < 1:
+        raise InvalidInput(f"--evaluations must be at least 1, not {args.evaluations}")
+    rows: list[dict[str, Any]] = []
+    for n in args.vertices:
+        progress = None if args.quiet or args.json else _Progress(n, args.evaluations)
+        kw = dict(objective=args.objective, evaluations=args.evaluations, seed=args.seed, lighthouse=setup.lighthouse,
+                  policies=setup.policy(), family=args.world_family)
+        found = adversarial_search(setup.algorithm, n, args.max_degree, progress=progress, **kw).to_json()
+        rows.append({"n": n, "search": found, "random": found.pop("random")})
+    best = [{**r["search"]["best"], "n": r["n"]} for r in rows if r["search"].get("best")]
+    data = {"algorithm": setup.algorithm, "setup": setup.to_json(), "max_degree": args.max_degree,
+            "objective": args.objective, "family": args.world_family, "evaluations": args.evaluations, "per_n": rows,
+            "fit": fit_exponents(best) if len(best) >= 3 else None,  # two points fit any power exactly
+            "method": "seeded local search: a lower bound on the worst case, not the worst case"}
+    if args.out:
+        _write(Path(args.out), data)
+    if args.json:
+        print(json.dumps(data, indent=1, sort_keys=True))
+    else:
+        print(_lines(data))
+    return 0
+
+
+class _Progress:
+    """One progress line per size at most every 2 seconds, and one when the size is done."""
+
+    def __init__(self, n: int, budget: int):
+        self.n, self.budget, self.last = n, budget, time.perf_counter()
+
+    def __call__(self, done: int, best: float) -> None:
+        now = time.perf_counter()
+        if now - self.last >= 2 or done >= self.budget:
+            self.last = now
+            print(f"worst-case search: n = {self.n}, {done}/{self.budget} runs, best {best:g}", file=sys.stderr,
+                  flush=True)
+
+
+def _write(out: Path, data: dict[str, Any]) -> None:
+    out.mkdir(parents=True, exist_ok=True)
+    (out / "worst-case-search.json").write_text(json.dumps(data, indent=1, sort_keys=True) + "\n")
+    for r in data["per_n"]:
+        for kind in ("search", "random"):
+            best = r[kind].get("best")
+            if best and best.get("world"):
+                (out / f"{kind}-best-n{r['n']}.json").write_text(json.dumps(best["world"], indent=1) + "\n")
+
+
+def _lines(data: dict[str, Any]) -> str:
+    lines = [f"adversarial search for {data['algorithm']} ({data['objective']}, {data['evaluations']} runs per n, "
+             f"degree <= {data['max_degree']}): a lower bound on the worst case",
+             f"{'n':>4}  {'m':>4}  {'best cost':>9}  {'cost/m':>7}  {'cost/bound':>10}  {'random best':>11}"]
+    for r in data["per_n"]:
+        s, b = r["search"].get("best") or {}, r["random"].get("best") or {}
+        lines.append(f"{r['n']:>4}  {s.get('m', '-'):>4}  {s.get('cost', '-'):>9}  {s.get('cost_per_m', '-'):>7}  "
+                     f"{str(s.get('ratio_to_bound', '-')):>10}  {b.get('cost', '-'):>11}")
+    if data["fit"]:
+        lines.append(f"fitted exponents of the best cost: {json.dumps(data['fit'])}")
+    return "\n".join(lines)

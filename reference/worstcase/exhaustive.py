@@ -1,0 +1,151 @@
+"""Every run on every small world: the exhaustive worst case of an algorithm's cost (thesis §7.2, L2260–L2262).
+
+The thesis bounds the cost of Algorithm 3.1 by (3.1) + (3.2) = O(m²n)
+(§3.5.2, L630–L640) and calls the bound "quite loose" (§7.2, L2260).  Over
+every embedded world with n ≤ N vertices and degrees ≤ D — one per
+extended-isomorphism class, from the census's enumeration
+(:func:`topomark.proofs.census_map.unit_worlds`) — and every start, this
+module runs the algorithm unchecked and keeps, per n, the largest cost, cost
+per edge and cost ÷ bound (:class:`~topomark.reference.worstcase.tally.SizeTally`).
+For n ≤ N those maxima are exact: the worst case itself, not an estimate.
+
+A *start* is a dart: the robot at v facing its exit i (§3.1.1; under a
+lighthouse it drops its kit there, §3.3).  Two starts that an automorphism of
+the world maps onto each other give the same run up to renaming, so only the
+least dart of each orbit runs (:func:`start_darts`).  A start the algorithm
+cannot use (a lighthouse needing a start vertex of higher degree, §6.1) is
+counted as *refused*, not run.
+
+A seeded sample of the runs (:func:`sampled`) runs again checked — every
+invariant the algorithm's entry names, after every step — and must give the
+same cost and a verified map; the argmax runs are re-checked by the caller
+(:mod:`~topomark.reference.worstcase.resumable`).
+
+Examples
+--------
+>>> from topomark.proofs.census_map import world_at
+>>> world = world_at(3, 2, 0, 0)  # the path v1 - v0 - v2, whose automorphisms swap v1 and v2
+>>> world.rotation
+{'v0': ('v1', 'v2'), 'v1': ('v0',), 'v2': ('v0',)}
+>>> start_darts(world, ({0: 0, 1: 1, 2: 2}, {0: 0, 1: 2, 2: 1}))
+[('v0', 0), ('v1', 0)]
+"""
+
+from __future__ import annotations
+
+import hashlib
+from dataclasses import dataclass
+from typing import Any
+
+from topomark.proofs.census_map import Unit, unit_worlds
+from topomark.spec.errors import InvalidInput
+from topomark.spec.world import Start, World
+
+from topomark.reference.algorithms.registry import AlgorithmSpec, algorithm_spec
+from topomark.reference.explorers.policies import Policies
+from topomark.reference.run.explore import explore
+from topomark.reference.worstcase.tally import SizeTally, Witness
+
+__all__ = ["Setup", "start_darts", "sampled", "run_start", "run_task"]
+
+
+@dataclass(frozen=True)
+class Setup:
+    """What every run of one worst-case search shares: the algorithm, its lighthouse and policies, and the
+    checked sample (``sample``: the fraction of runs re-run checked, drawn by ``seed``)."""
+
+    algorithm: str
+    lighthouse: str | None = None
+    policies: tuple[str, str, str] = ("nearest", "fifo", "shortest")
+    sample: float = 0.001
+    seed: int = 0
+
+    @property
+    def spec(self) -> AlgorithmSpec:
+        return algorithm_spec(self.algorithm)
+
+    def policy(self) -> Policies:
+        return Policies(*self.policies)
+
+    def to_json(self) -> dict[str, Any]:
+        return {"algorithm": self.algorithm, "lighthouse": self.lighthouse, "policies": list(self.policies),
+                "sample": self.sample, "seed": self.seed}
+
+
+def _image(world: World, sigma: dict[int, int], v: str, i: int) -> tuple[int, int]:
+    """The dart (v, i) moved by the automorphism ``sigma`` (vertex numbers of ``v0, v1, …``)."""
+    w = world.neighbour(v, i)
+    sv, sw = f"v{sigma[int(v[1:])]}", f"v{sigma[int(w[1:])]}"
+    return int(sv[1:]), world.index(sv, sw)
+
+
+def start_darts(world: World, autos: tuple[dict[int, int], ...]) -> list[tuple[str, int]]:
+    """The least dart of each orbit of the world's automorphisms ``autos`` (identity included) on its darts."""
+    out = []
+    for v in world.vertices:
+        for i in range(world.degree(v)):
+            here = (int(v[1:]), i)
+            if all(_image(world, sigma, v, i) >= here for sigma in autos):
+                out.append((v, i))
+    return out
+
+
+def sampled(setup: Setup, n: int, witness: Witness) -> bool:
+    """Whether the run from ``witness`` is in the checked sample: a hash of the seed and the run, not a
+    random draw, so a resumed search samples the same runs."""
+    if setup.sample <= 0:
+        return False
+    h = hashlib.blake2b(f"{setup.seed}:{n}:{witness}".encode(), digest_size=8).digest()
+    return int.from_bytes(h, "little") < setup.sample * 2 ** 64
+
+
+def run_start(setup: Setup, world: World, dart: tuple[str, int], check: bool = False):
+    """The outcome of one run of the algorithm from ``dart`` on ``world`` (unchecked unless ``check``)."""
+    v, i = dart
+    started = world.with_start(Start(v, world.neighbour(v, i)))
+    return explore(started, setup.spec, setup.policy(), check=check, record=False, lighthouse=setup.lighthouse)
+
+
+def _counted(setup: Setup, outcome) -> int:
+    """The part of the cost the exact bound counts (the ``cost-bound`` check's rule)."""
+    return outcome.cost - sum(outcome.by_purpose.get(p, 0) for p in setup.spec.bound_excludes)
+
+
+def _recheck(setup: Setup, world: World, dart: tuple[str, int], unchecked, witness: Witness) -> dict | None:
+    """Run again checked; the disagreement with the unchecked run, or None."""
+    checked = run_start(setup, world, dart, check=True)
+    if checked.cost != unchecked.cost or checked.claimed != unchecked.claimed:
+        return {"witness": list(witness), "kind": "disagree", "unchecked": [unchecked.cost, unchecked.claimed],
+                "checked": [checked.cost, checked.claimed]}
+    if unchecked.claimed == "correct" and not checked.verified:
+        detail = checked.violation.to_json() if checked.violation is not None else checked.outcome
+        return {"witness": list(witness), "kind": "violation", "detail": detail}
+    return None
+
+
+def run_task(setup: Setup, max_degree: int, units: list[Unit]) -> dict[str, Any]:
+    """Every world of ``units`` and every start: the tallies per n, the refused starts, the checked sample."""
+    tallies: dict[int, SizeTally] = {}
+    refused = checked = 0
+    problems: list[dict] = []
+    for unit in units:
+        n, gi = unit[0], unit[1]
+        tally = tallies.setdefault(n, SizeTally(n))
+        for rank, world, autos in unit_worlds(unit, max_degree):
+            tally.add_world()
+            bound = setup.spec.bound_for(world.n, world.m)
+            for dart in start_darts(world, autos):
+                witness = (gi, rank, dart[0], dart[1])
+                try:
+                    out = run_start(setup, world, dart)
+                except InvalidInput:
+                    refused += 1
+                    continue
+                tally.add_run(witness, world.m, out.cost, _counted(setup, out), bound, out.claimed)
+                if sampled(setup, n, witness):
+                    checked += 1
+                    problem = _recheck(setup, world, dart, out, witness)
+                    if problem is not None:
+                        problems.append({"n": n, **problem})
+    return {"tallies": [t.to_json() for t in tallies.values()], "refused": refused, "checked": checked,
+            "problems": problems[:20], "problem_count": len(problems)}

@@ -1,0 +1,189 @@
+"""The exhaustive worst case as resumable tasks on disk, on local processes or a Dask cluster (thesis §7.2).
+
+:func:`worst_case` plans the census's map tasks
+(:func:`topomark.proofs.census_map.plan`: every embedded world up to
+isomorphism, split into tasks of about ``task_worlds`` worlds), runs each
+task's worlds and starts (:func:`~topomark.reference.worstcase.exhaustive.run_task`)
+and merges their tallies.  Memory is set by the task size, never by the
+number of worlds: a task keeps only its tallies.
+
+On disk (``topomark/worst-case@1``), in one directory::
+
+    manifest.json     the parameters, the code version and the task list (written once)
+    task-T.json       task T's tallies, refused starts and checked sample (written last, atomically)
+
+Every file is a record sealed with its BLAKE2b checksum
+(:func:`topomark.proofs.census_shards.seal`), and a task file names the
+manifest's checksum, so a resume trusts only files of this search written by
+this code; a task whose file is missing or damaged runs again.  A killed
+search so resumes where it stopped.
+
+At the end every argmax run is re-run checked and must reproduce its cost
+with a verified map (exit 3 otherwise: topomark's two runs disagree).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import time
+import importlib.util
+from pathlib import Path
+from typing import Any, Callable
+
+from topomark.proofs.census_exec import Progress, executor
+from topomark.proofs.census_integrity import Damaged, package_version, read_record
+from topomark.proofs.census_map import plan, world_at
+from topomark.proofs.census_shards import seal, write_json
+from topomark.spec.errors import InvalidInput, TopomarkFault
+
+from topomark.reference.worstcase.exhaustive import Setup, run_start, run_task
+from topomark.reference.worstcase.tally import SizeTally, Witness, merge_tallies
+
+__all__ = ["FORMAT", "Search", "worst_case", "code_version", "task_path"]
+
+FORMAT = "topomark/worst-case@1"
+CODE_PACKAGES = ("topomark.spec", "topomark.reference.explorers", "topomark.reference.algorithms",
+                 "topomark.reference.run", "topomark.reference.worstcase")
+CODE_MODULES = ("topomark.proofs.census_map", "topomark.proofs.enumerate")
+
+
+def code_version() -> str:
+    """``topomark VERSION, worst-case code DIGEST``: a digest of every source file a run's cost depends on."""
+    h = hashlib.blake2b(digest_size=8)
+    files: list[Path] = []
+    for name in CODE_PACKAGES:
+        spec = importlib.util.find_spec(name)
+        assert spec is not None and spec.submodule_search_locations, name
+        for root in spec.submodule_search_locations:
+            files += sorted(Path(root).rglob("*.py"))
+    for name in CODE_MODULES:
+        spec = importlib.util.find_spec(name)
+        assert spec is not None and spec.origin, name
+        files.append(Path(spec.origin))
+    for path in files:
+        h.update(path.name.encode() + b"\0" + path.read_bytes() + b"\0")
+    return f"topomark {package_version()}, worst-case code {h.hexdigest()}"
+
+
+def task_path(root: Path, task: int) -> Path:
+    return root / f"task-{task}.json"
+
+
+class Search:
+    """One exhaustive search: its parameters, directory and manifest (read on resume, else written)."""
+
+    def __init__(self, setup: Setup, max_vertices: int, max_degree: int, min_vertices: int, root: Path,
+                 task_worlds: int = 2000):
+        self.setup, self.root = setup, root
+        self.max_degree = max_degree
+        self.params = {**setup.to_json(), "max_vertices": max_vertices, "max_degree": max_degree,
+                       "min_vertices": min_vertices}
+        self.manifest = self._prepare(task_worlds)
+
+    def _prepare(self, task_worlds: int) -> dict[str, Any]:
+        try:
+            self.root.mkdir(parents=True, exist_ok=True)
+        except OSError as e:
+            raise InvalidInput(f"worst-case directory {str(self.root)!r} cannot be made: {e.strerror or e}") from None
+        path = self.root / "manifest.json"
+        p = self.params
+        if not path.exists():
+            planned = plan(p["max_vertices"], p["max_degree"], p["min_vertices"], task_worlds)
+            manifest = seal({"format": FORMAT, "code": code_version(), "params": p,
+                             "tasks": [[list(u) for u, _ in task] for task in planned],
+                             "estimated": [sum(e for _, e in task) for task in planned]})
+            write_json(path, manifest)
+            return manifest
+        try:
+            manifest = read_record(path)
+        except Damaged as e:
+            raise InvalidInput(f"{path}: damaged: {e}; remove {self.root} or choose an empty directory") from None
+        if manifest.get("format") != FORMAT:
+            raise InvalidInput(f"{path}: not a {FORMAT} manifest; choose an empty directory")
+        if manifest.get("params") != p or manifest.get("code") != code_version():
+            raise InvalidInput(f"{self.root} holds another worst-case search ({manifest.get('params')}, "
+                               f"{manifest.get('code')}); use an empty directory or the same options and code")
+        return manifest
+
+    def finished(self, note: Callable[[str], None]) -> dict[int, dict[str, Any]]:
+        """The tasks whose files pass their checks; a damaged one is reported and will run again."""
+        good = {}
+        for t in range(len(self.manifest["tasks"])):
+            path = task_path(self.root, t)
+            if not path.exists():
+                continue
+            try:
+                record = read_record(path)
+                if record.get("search") != self.manifest["checksum"] or record.get("task") != t:
+                    raise Damaged("it belongs to another search or task")
+                good[t] = record
+            except Damaged as e:
+                note(f"worst-case: {path}: {e}; running task {t} again")
+        return good
+
+    def run(self, jobs: int, scheduler: str | None, progress: Callable[[str], None] | None) -> dict[int, dict]:
+        """Run every unfinished task; every task's record."""
+        tasks, est = self.manifest["tasks"], self.manifest["estimated"]
+        done = self.finished(progress or (lambda _: None))
+        bar = Progress(sum(est), progress, label="worst-case")
+        for t in done:
+            bar.skip(est[t], _worlds(done[t]))
+        todo = [t for t in range(len(tasks)) if t not in done]
+        calls = [(_task, (str(self.root), t, self.manifest["checksum"], self.setup, self.max_degree,
+                          [tuple(u) for u in tasks[t]])) for t in todo]
+        with executor(jobs, scheduler, len(calls)) as ex:
+            for i, record in ex.run(calls):
+                done[todo[i]] = record
+                bar.done(est[todo[i]], _worlds(record))
+        if progress is not None:
+            progress(f"worst-case: {bar.count()} run in {time.perf_counter() - bar.t0:.1f} s")
+        return done
+
+
+def _worlds(record: dict[str, Any]) -> int:
+    return sum(t["worlds"] for t in record["tallies"])
+
+
+def _task(root: str, task: int, search: str, setup: Setup, max_degree: int, units: list) -> dict[str, Any]:
+    """A worker's task: run it, write its sealed record, return it."""
+    record = seal({"search": search, "task": task, **run_task(setup, max_degree, units)})
+    write_json(task_path(Path(root), task), record)
+    return record
+
+
+def recheck_argmax(setup: Setup, max_degree: int, tally: SizeTally) -> tuple[list[Witness], list[dict]]:
+    """Re-run every argmax of ``tally`` checked: it must reproduce the tallied cost (else exit 3: topomark's two
+    runs disagree) with a verified map (else a problem: the algorithm's map or an invariant is wrong)."""
+    seen: list[Witness] = []
+    problems: list[dict] = []
+    for witness, want in ((tally.argmax_cost, tally.max_cost), (tally.argmax_cost_m, None), (tally.argmax_ratio, None)):
+        if witness is None or witness in seen:
+            continue
+        seen.append(witness)
+        world = world_at(tally.n, max_degree, witness[0], witness[1])
+        out = run_start(setup, world, (witness[2], witness[3]), check=True)
+        if want is not None and out.cost != want:
+            raise TopomarkFault(f"the worst run at n = {tally.n} (graph {witness[0]}, rotation {witness[1]}, start "
+                                f"{witness[2]} exit {witness[3]}) cost {want} unchecked but {out.cost} checked: "
+                                "the checked and unchecked runs disagree")
+        if not out.verified:
+            detail = out.violation.to_json() if out.violation is not None else out.outcome
+            problems.append({"n": tally.n, "witness": list(witness), "kind": "violation", "detail": detail})
+    return seen, problems
+
+
+def worst_case(setup: Setup, max_vertices: int, max_degree: int, root: Path, min_vertices: int = 2,
+               jobs: int = 1, scheduler: str | None = None, progress: Callable[[str], None] | None = None,
+               task_worlds: int = 2000) -> dict[str, Any]:
+    """Run (or resume) the exhaustive search in ``root``; the merged tallies and what the checks found."""
+    search = Search(setup, max_vertices, max_degree, min_vertices, root, task_worlds)
+    records = search.run(jobs, scheduler, progress)
+    parts = [{t["n"]: SizeTally.from_json(t) for t in r["tallies"]} for r in records.values()]
+    tallies = merge_tallies(parts)
+    problems = [p for r in records.values() for p in r["problems"]]
+    count, checked = sum(r["problem_count"] for r in records.values()), sum(r["checked"] for r in records.values())
+    for tally in tallies.values():
+        seen, found = recheck_argmax(setup, max_degree, tally)
+        checked, count, problems = checked + len(seen), count + len(found), problems + found
+    return {"tallies": tallies, "refused": sum(r["refused"] for r in records.values()), "checked": checked,
+            "problem_count": count, "problems": problems[:20], "manifest": search.manifest}

@@ -1,0 +1,119 @@
+"""``worst-case.md``: what the exhaustive and adversarial searches say about the thesis's open question (§7.2).
+
+:func:`summarise` reads the outputs of ``topomark worst-case --out DIR`` (an
+exhaustive search, ``worst-case.json``) and ``topomark worst-case --search
+--out DIR`` (``worst-case-search.json``) and writes one report: per algorithm
+the exact maxima per n beside the thesis's bound, the structure of the worst
+worlds (:func:`structure`: what makes them bad), and the adversarial maxima
+with their fitted growth.  It states which numbers are proved (exhaustive,
+exact for every world of that size) and which are only found (search: a lower
+bound on the worst case).
+
+Examples
+--------
+>>> from topomark.reference.worlds.worst_cases import worst_case_world
+>>> s = structure(worst_case_world("basic-n5-d4"), "basic")
+>>> (s["n"], s["m"], s["cost"], s["max_degree"])
+(5, 10, 89, 4)
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+import networkx as nx
+
+from topomark.spec.world import World
+from topomark.spec.worldfile import world_from_json
+
+from topomark.reference.run.explore import explore
+from topomark.reference.worstcase.report import THESIS
+
+__all__ = ["structure", "summarise"]
+
+QUESTION = ("\"the derived upper cost bound O(m²n) of the basic single directional immovable marker algorithm is "
+            "quite loose for some environments … it is worth investigating whether the worst case scenarios exist (at "
+            "the same time). If these worst case scenarios can happen together for some environment, then what "
+            "classes of graphs are they? … it might be helpful to derive the bound by considering some other factors "
+            "such as graph diameter and maximum vertex degrees\" (§7.2, L2260–L2262).")
+
+
+def structure(world: World, algorithm: str) -> dict[str, Any]:
+    """What the worst run on ``world`` (from its start) looks like: the world's shape and the run's work."""
+    g = nx.Graph([(v, w) for v in world.vertices for w in world.rotation[v]])
+    start = world.start_state()[0]
+    run = explore(world, algorithm)
+    return {"n": world.n, "m": world.m, "diameter": nx.diameter(g), "max_degree": max(dict(g.degree()).values()),
+            "genus": world.genus(), "start_degree": world.degree(start),
+            "start_eccentricity": nx.eccentricity(g, start), "cost": run.cost, "verified": run.verified,
+            "loop_iterations": run.loop_iterations, "hypotheses": run.hypotheses,
+            "hypotheses_rejected": run.hypotheses_rejected,
+            "degrees": "".join(str(d) for d in sorted((d for _, d in g.degree()), reverse=True))}
+
+
+def _load(dirs: list[Path]) -> tuple[list[dict], list[dict]]:
+    exhaustive, searched = [], []
+    for d in dirs:
+        if (d / "worst-case.json").exists():
+            exhaustive.append(json.loads((d / "worst-case.json").read_text()))
+        if (d / "worst-case-search.json").exists():
+            searched.append(json.loads((d / "worst-case-search.json").read_text()))
+    return exhaustive, searched
+
+
+def _exhaustive_section(runs: list[dict]) -> list[str]:
+    lines = ["## Proved: the exact worst case for every world up to a size", "",
+             "Every embedded world up to extended isomorphism with n vertices and degrees ≤ D, from every start up to "
+             "the world's automorphisms; the maxima are exact for those sizes.", "",
+             "| algorithm | D | n | worlds | runs | max cost | max cost/m | max cost / exact bound | structure of the "
+             "worst world (m, diameter, degrees, genus, start eccentricity; loop iterations, hypotheses rejected) |",
+             "|---|---|---|---|---|---|---|---|---|"]
+    for data in sorted(runs, key=lambda d: (d["algorithm"], d["max_degree"])):
+        for r in data["per_n"]:
+            if r["argmax"] is None or r["n"] < 4:
+                continue
+            s = structure(world_from_json(r["argmax"]), data["algorithm"])
+            shape = (f"m={s['m']}, diam {s['diameter']}, degrees {s['degrees']}, genus {s['genus']}, "
+                     f"ecc {s['start_eccentricity']}; {s['loop_iterations']} loops, "
+                     f"{s['hypotheses_rejected']}/{s['hypotheses']} hypotheses rejected")
+            lines.append(f"| {data['algorithm']} | {data['max_degree']} | {r['n']} | {r['worlds']} | {r['runs']} | "
+                         f"{r['max_cost']} | {r['max_cost_per_m']} | {r['max_ratio_to_bound']} | {shape} |")
+    return lines + [""]
+
+
+def _search_section(runs: list[dict]) -> list[str]:
+    lines = ["## Found: bad worlds past exhaustive sizes (lower bounds)", "",
+             "Seeded local search; the best world found is a lower bound on the worst case, set beside the best of as "
+             "many random worlds.", "",
+             "| algorithm | objective | n | m | diameter | max degree | best found | best random | found / bound |",
+             "|---|---|---|---|---|---|---|---|---|"]
+    fits = []
+    for data in sorted(runs, key=lambda d: d["algorithm"]):
+        for r in data["per_n"]:
+            s, b = r["search"].get("best") or {}, r["random"].get("best") or {}
+            lines.append(f"| {data['algorithm']} | {data['objective']} | {r['n']} | {s.get('m')} | "
+                         f"{s.get('diameter')} | {s.get('max_degree')} | {s.get('cost')} | {b.get('cost')} | "
+                         f"{s.get('ratio_to_bound')} |")
+        if data.get("fit"):
+            fits.append(f"- {data['algorithm']}: {json.dumps(data['fit'])}")
+    if fits:
+        lines += ["", "Fitted growth of the best cost found (log-log least squares over the sizes searched):", "",
+                  *fits]
+    return lines + [""]
+
+
+def summarise(dirs: list[Path]) -> str:
+    """The report over every output directory in ``dirs``."""
+    exhaustive, searched = _load(dirs)
+    lines = ["# Worst cases: the thesis's open question, measured", "", f"> {QUESTION}", "",
+             f"- **Thesis:** {THESIS}",
+             "- **Proved here** (exhaustive): the largest cost of each algorithm over every world up to the sizes "
+             "below, exactly.", "- **Found here** (search): worlds at least this bad exist at larger sizes; the "
+             "true worst case may be worse.", ""]
+    if exhaustive:
+        lines += _exhaustive_section(exhaustive)
+    if searched:
+        lines += _search_section(searched)
+    return "\n".join(lines)
