@@ -21,7 +21,7 @@ An :class:`Executor` runs a list of calls ``(function, args)`` and yields
   the census reached no verdict, so it is exit 2 (the address names a cluster
   that cannot run it), not 1 (a verdict).
 
-Dask is optional (``pip install topomark[cluster]``); it is imported only
+Dask is optional (``pip install 'dask[distributed]'``, from a checkout ``pip install '.[cluster]'``); it is imported only
 when a scheduler is asked for.
 
 Examples
@@ -114,7 +114,7 @@ def _distributed():
     try:
         import distributed
     except ImportError:
-        raise InvalidInput("--scheduler needs Dask: pip install 'topomark[cluster]'") from None
+        raise InvalidInput("--scheduler needs Dask: pip install 'dask[distributed]' (from a checkout: pip install '.[cluster]')") from None
     return distributed
 
 

@@ -11,7 +11,11 @@ are placed with networkx's straight-line drawing of *that* embedding and
 mirrored if needed so that exits run clockwise on screen, as in the thesis;
 otherwise (the embedding lives on a torus or higher surface) a spring layout
 is used and only the exit labels carry the rotation.  No plotting library is
-needed: the SVG is written by hand.
+needed for SVG, written by hand; a PNG is the same drawing rendered by matplotlib
+(:mod:`~topomark.proofs.drawing_png`).  Each vertex's disc fits its name, exit
+indices sit just outside it beside their edges (clockwise on screen when the
+layout is faithful), and the start's arrow runs beside the edge it faces with its
+label "start" past its tip, clear of the vertex's name.
 
 >>> from topomark.spec.world import World, Start
 >>> w = World({"a": ["b", "c"], "b": ["c", "a"], "c": ["a", "b"]}, start=Start("a", "b"))
@@ -22,17 +26,19 @@ True
 from __future__ import annotations
 
 import math
+import textwrap
 from pathlib import Path
 from typing import Sequence
 from xml.sax.saxutils import escape
 
 import networkx as nx
 
-from topomark.spec.errors import InvalidInput
 from topomark.spec.marker import EdgeMarker
 from topomark.spec.world import World
 
-__all__ = ["layout", "world_svg", "pair_svg", "save_pair", "clockwise_ok"]
+from topomark.proofs.drawing_png import save_drawing
+
+__all__ = ["layout", "world_svg", "pair_svg", "save_pair", "save_world", "drawing_size", "clockwise_ok"]
 
 SIZE = 320          # drawing area of one world (px)
 MARGIN = 40
@@ -61,11 +67,21 @@ def _faces(world: World) -> list[list[str]]:
     return faces
 
 
-def _tutte_positions(world: World) -> dict[str, tuple[float, float]] | None:
-    """Tutte's barycentric drawing with the longest face as a convex outer polygon (planar worlds only)."""
+def _named_grid(world: World) -> dict[str, tuple[float, float]] | None:
+    """Vertices named "row,col" (the lattice generators' names) at their row and column, if every name is one."""
+    pos = {}
+    for v in world.vertices:
+        parts = str(v).split(",")
+        if len(parts) != 2 or not all(p.strip().lstrip("-").isdigit() for p in parts):
+            return None
+        pos[v] = (float(parts[1]), float(parts[0]))
+    return pos
+
+
+def _tutte_positions(world: World, outer: list[str]) -> dict[str, tuple[float, float]] | None:
+    """Tutte's barycentric drawing with the face ``outer`` as a convex outer polygon (planar worlds only)."""
     import numpy as np
 
-    outer = max(_faces(world), key=len)
     if len(set(outer)) != len(outer) or len(outer) < 3:
         return None
     pos = {v: (math.cos(2 * math.pi * k / len(outer)), math.sin(2 * math.pi * k / len(outer)))
@@ -111,13 +127,17 @@ def _crossing_free(world: World, pos) -> bool:
 
 
 def _planar_candidates(world: World) -> list[dict[str, tuple[float, float]]]:
-    """Straight-line drawings of a planar rotation system: Tutte's if it is clean, then networkx's grid one."""
+    """Straight-line drawings of a planar rotation system: the lattice's own grid (vertices named "row,col"),
+    Tutte's with the longest face that gives a clean one as the outer face, then networkx's grid one."""
     if world.genus() != 0 or world.n < 3:
         return []
-    out = []
-    tutte = _tutte_positions(world)
-    if tutte is not None and _crossing_free(world, tutte):
-        out.append(tutte)
+    named = _named_grid(world)
+    out = [named] if named is not None and _crossing_free(world, named) else []
+    for face in sorted(_faces(world), key=len, reverse=True)[:8]:  # the longest simple face that draws cleanly
+        tutte = _tutte_positions(world, face)
+        if tutte is not None and _crossing_free(world, tutte):
+            out.append(tutte)
+            break
     grid = _grid_positions(world)
     return out + ([grid] if grid is not None else [])
 
@@ -172,6 +192,11 @@ def layout(world: World, size: float = SIZE) -> tuple[dict[str, tuple[float, flo
     return cand, clockwise_ok(world, cand)
 
 
+def _radius(v: str) -> float:
+    """The disc of vertex ``v``: wide enough for its name at font size 9 ("10,12" of a lattice)."""
+    return max(RADIUS, 2.7 * len(str(v)) + 4)
+
+
 def _along(p, q, t: float, side: float = 0.0):
     """The point a fraction t from p to q, shifted ``side`` px to the right of the direction."""
     dx, dy = q[0] - p[0], q[1] - p[1]
@@ -207,7 +232,7 @@ def _exit_labels(world: World, pos) -> list[str]:
         for i, w in enumerate(ns):
             x, y = _along(pos[v], pos[w], 0.0, 0.0)
             dist = math.dist(pos[v], pos[w]) or 1.0
-            lx, ly = _along(pos[v], pos[w], min(0.45, (RADIUS + 11) / dist), 7.0)
+            lx, ly = _along(pos[v], pos[w], min(0.45, (_radius(v) + 9) / dist), 7.0)
             out.append(f'<text x="{lx:.1f}" y="{ly + 3:.1f}" font-size="10" fill="#1f4e9e" '
                        f'text-anchor="middle">{i}</text>')
     return out
@@ -236,13 +261,14 @@ def _vertices(world: World, pos) -> list[str]:
     out = []
     for v in world.vertices:
         x, y = pos[v]
+        r = _radius(v)
         mark = world.vertex_mark(v)
         fill = "#fff" if mark is None else "#222"
-        out.append(f'<circle cx="{x:.1f}" cy="{y:.1f}" r="{RADIUS}" fill="{fill}" stroke="#222" stroke-width="1.5"/>')
+        out.append(f'<circle cx="{x:.1f}" cy="{y:.1f}" r="{r:.1f}" fill="{fill}" stroke="#222" stroke-width="1.5"/>')
         if mark is not None and mark.count > 1:
-            out.append(f'<circle cx="{x:.1f}" cy="{y:.1f}" r="{RADIUS + 4}" fill="none" stroke="#222" '
+            out.append(f'<circle cx="{x:.1f}" cy="{y:.1f}" r="{r + 4:.1f}" fill="none" stroke="#222" '
                        f'stroke-width="1.5"/>')
-            out.append(f'<text x="{x + RADIUS + 6:.1f}" y="{y + RADIUS + 10:.1f}" font-size="10">x{mark.count}</text>')
+            out.append(f'<text x="{x + r + 6:.1f}" y="{y + r + 10:.1f}" font-size="10">x{mark.count}</text>')
         if mark is not None and mark.head is not None:
             w = world.neighbour(v, mark.head)
             out += _arrow(pos[v], _along(pos[v], pos[w], min(0.4, 34 / (math.dist(pos[v], pos[w]) or 1))), "#e67e22")
@@ -258,21 +284,31 @@ def _start(world: World, pos) -> list[str]:
     v, w = world.start.at, world.start.facing
     p = pos[v]
     dist = math.dist(p, pos[w]) or 1.0
-    a = _along(p, pos[w], (RADIUS + 2) / dist, -10.0)
-    b = _along(p, pos[w], min(0.45, (RADIUS + 26) / dist), -10.0)
+    r = _radius(v)
+    a = _along(p, pos[w], (r + 2) / dist, -10.0)
+    b = _along(p, pos[w], min(0.45, (r + 26) / dist), -10.0)
+    # The label sits past the arrow's tip, further off the edge than the arrow: never over v0's name or disc.
+    c = _along(p, pos[w], min(0.5, (r + 40) / dist), -17.0)
     return _arrow(a, b, "#27ae60", 2.0) + [
-        f'<text x="{a[0]:.1f}" y="{a[1] - 4:.1f}" font-size="9" fill="#27ae60">start</text>']
+        f'<text x="{c[0]:.1f}" y="{c[1] + 3:.1f}" font-size="9" fill="#27ae60" text-anchor="middle">start</text>']
 
 
-def _world_group(world: World, title: str, dx: float, size: float) -> list[str]:
+def _world_group(world: World, title: str, dx: float, size: float, note: str = "",
+                 crop: bool = False) -> tuple[list[str], float]:
+    """The drawing of one world at ``dx``, and the height it takes (``crop``: only as tall as the layout, not
+    ``size``); ``note`` follows the n, m, genus line under it."""
     pos, faithful = layout(world, size)
     pos = {v: (x + dx, y + 18) for v, (x, y) in pos.items()}
-    note = "" if faithful else " (non-planar embedding: exit labels give the rotation)"
-    parts = [f'<text x="{dx + 8:.1f}" y="16" font-size="12" font-weight="bold">{escape(title)}</text>',
-             f'<text x="{dx + 8:.1f}" y="{size + 30:.1f}" font-size="9" fill="#666">n={world.n}, m={world.m}, '
-             f'genus {world.genus()}{escape(note)}</text>']
+    bottom = (max(y for _, y in pos.values()) + MARGIN - 6) if crop else size + 30
+    note = ("" if faithful else " (non-planar embedding: exit labels give the rotation)") + \
+        (f"; {note}" if note else "")
+    caption = textwrap.wrap(f"n={world.n}, m={world.m}, genus {world.genus()}{note}", int((size - 16) / 5))
+    parts = [f'<text x="{dx + 8:.1f}" y="16" font-size="12" font-weight="bold">{escape(title)}</text>']
+    parts += [f'<text x="{dx + 8:.1f}" y="{bottom + 12 * k:.1f}" font-size="9" fill="#666">{escape(line)}</text>'
+              for k, line in enumerate(caption)]
+    bottom += 12 * (len(caption) - 1)
     return parts + _edges(world, pos) + _edge_markers(world, pos) + _exit_labels(world, pos) + \
-        _vertices(world, pos) + _start(world, pos)
+        _vertices(world, pos) + _start(world, pos), bottom + 10
 
 
 def _svg(body: list[str], width: float, height: float) -> str:
@@ -281,16 +317,17 @@ def _svg(body: list[str], width: float, height: float) -> str:
     return "\n".join([head, f'<rect width="100%" height="100%" fill="white"/>'] + body + ["</svg>"]) + "\n"
 
 
-def world_svg(world: World, title: str = "", size: float = SIZE) -> str:
-    """One world as an SVG document."""
-    return _svg(_world_group(world, title, 0.0, size), size, size + 40)
+def world_svg(world: World, title: str = "", size: float = SIZE, note: str = "") -> str:
+    """One world as an SVG document, as tall as its layout; ``note`` follows the n, m, genus line."""
+    body, height = _world_group(world, title, 0.0, size, note, crop=True)
+    return _svg(body, size, height)
 
 
 def pair_svg(a: World, b: World, titles: Sequence[str] = ("(a)", "(b)"), caption: str = "",
              size: float = SIZE) -> str:
     """Two worlds side by side with an optional caption (e.g. the shared M and P), as in Figure 3.4."""
-    body = _world_group(a, titles[0], 0.0, size) + _world_group(b, titles[1], size + 20, size)
-    height = size + 40
+    (left, ha), (right, hb) = _world_group(a, titles[0], 0.0, size), _world_group(b, titles[1], size + 20, size)
+    body, height = left + right, max(ha, hb) + 10
     lines = [caption[i:i + 110] for i in range(0, len(caption), 110)]
     for k, line in enumerate(lines):
         body.append(f'<text x="8" y="{height + 14 * k + 4:.1f}" font-size="10">{escape(line)}</text>')
@@ -298,9 +335,16 @@ def pair_svg(a: World, b: World, titles: Sequence[str] = ("(a)", "(b)"), caption
 
 
 def save_pair(a: World, b: World, path: str | Path, **kwargs) -> Path:
-    """Write :func:`pair_svg` to ``path`` (``.svg``; PNG would need matplotlib, which topomark avoids)."""
-    path = Path(path)
-    if path.suffix.lower() != ".svg":
-        raise InvalidInput(f"cannot draw to {str(path)!r}: only .svg output is supported (no plotting library)")
-    path.write_text(pair_svg(a, b, **kwargs))
-    return path
+    """Write :func:`pair_svg` to ``path``: ``.svg``, or ``.png`` with matplotlib
+    (:func:`~topomark.proofs.drawing_png.save_drawing`)."""
+    return save_drawing(pair_svg(a, b, **kwargs), path)
+
+
+def drawing_size(world: World) -> float:
+    """The side of a drawing of one world: :data:`SIZE`, larger for a larger world so its discs do not touch."""
+    return max(SIZE, 64 * math.sqrt(world.n))
+
+
+def save_world(world: World, path: str | Path, title: str = "", note: str = "") -> Path:
+    """Write :func:`world_svg` of ``world`` (sized by :func:`drawing_size`) to ``path``, ``.svg`` or ``.png``."""
+    return save_drawing(world_svg(world, title, drawing_size(world), note), path)

@@ -253,7 +253,7 @@ def test_drawing_pair_svg_is_wellformed(tmp_path):
     circles = root.findall("{http://www.w3.org/2000/svg}circle")
     assert len(circles) >= a.n + b.n
     with pytest.raises(InvalidInput, match="svg"):
-        save_pair(a, b, tmp_path / "pair.png")
+        save_pair(a, b, tmp_path / "pair.gif")
 
 
 def test_every_small_planar_world_is_drawn_faithfully():

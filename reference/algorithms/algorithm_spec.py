@@ -28,7 +28,11 @@ thesis says the idea fails; ``status_reason`` names the lines and the world
 where its runs end ``failed`` or ``wrong-map``, and the checker judges it like
 any other), or ``not implementable from the thesis`` — a :class:`Listed`
 algorithm, listed by ``topomark algorithms`` with the reason, with no explorer,
-which ``topomark explore`` refuses as bad input.
+which ``topomark explore`` refuses as bad input.  What its runs are expected to end with
+(:meth:`AlgorithmSpec.expectation`, :mod:`~topomark.reference.algorithms.expectation`) follows from the status —
+``correct`` when implemented, ``fails-by-design`` when expected to fail — unless the entry states otherwise
+(``expected``, with its thesis line), per world family where it differs (``expected_by_family``), and broadened
+by the lighthouse a run uses (§5.2.1's may fail, L1346).
 
 Every explorer keeps the contract of
 :func:`topomark.reference.run.explore.explore`: ``start()``, then ``step()``
@@ -58,6 +62,8 @@ from topomark.spec.errors import InvalidInput, clip
 from topomark.spec.kit import Kit
 
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES
+from topomark.reference.algorithms.expectation import (CORRECT, EXPECTATIONS, FAILS_BY_DESIGN, broadest,
+                                                       lighthouse_expectation)
 
 __all__ = ["AlgorithmSpec", "Listed", "Parameter", "STATUSES", "CHECKS", "ALGORITHM_3_1_CHECKS", "MARKER_MAP_CHECKS", "STEPWISE_MAP_CHECKS"]
 
@@ -158,6 +164,9 @@ class AlgorithmSpec:
     bound_bench: str | None = None  # an asymptotic-only bound: the bench experiment that measures it
     status: str = IMPLEMENTED  # or EXPECTED_TO_FAIL, with its status_reason
     status_reason: str | None = None  # why it is expected to fail: the thesis lines and the world that shows it
+    expected: str | None = None  # the runs' expected outcome (expectation module); None: from the status
+    expected_reason: str | None = None  # the thesis line of an expected outcome other than the status's
+    expected_by_family: tuple[tuple[str, str, str], ...] = ()  # (world family, expectation, reason) where it differs
 
     def __post_init__(self) -> None:
         if self.status not in (IMPLEMENTED, EXPECTED_TO_FAIL):
@@ -177,8 +186,41 @@ class AlgorithmSpec:
         if self.bound_fn is None and self.bound and not self.bound_bench:
             raise ValueError(f"algorithm {self.name}: an asymptotic bound ({self.bound}) names the bench "
                              "experiment that measures it (bound_bench)")
+        for family, what, why in (("", self.expected, self.expected_reason), *self.expected_by_family):
+            if what is not None and (what not in EXPECTATIONS or (what != CORRECT and not why)):
+                raise ValueError(f"algorithm {self.name}: expected outcome {what!r}{' on ' + family if family else ''}"
+                                 f" is one of {', '.join(EXPECTATIONS)}, with its thesis line unless 'correct'")
         if self.bound_fn is not None and "cost-bound" not in self.checks:  # every exact bound is checked
             object.__setattr__(self, "checks", (*self.checks, "cost-bound"))
+
+    def expectation(self, family: str | None = None, lighthouse: str | None = None) -> tuple[str, str]:
+        """The outcome a run on a world of ``family`` with ``lighthouse`` is expected to end with, and why (the
+        broadest of the entry's, on that family, and the lighthouse's:
+        :mod:`~topomark.reference.algorithms.expectation`);
+        by default ``correct`` when implemented and ``fails-by-design`` when expected to fail (its status_reason)."""
+        what, why = ((self.expected, self.expected_reason or "") if self.expected else
+                     (FAILS_BY_DESIGN, self.status_reason or "") if self.status == EXPECTED_TO_FAIL else (CORRECT, ""))
+        what, why = next(((w, y) for f, w, y in self.expected_by_family if f == family), (what, why))
+        if lighthouse is not None and self.uses_lighthouse:
+            light, reason = lighthouse_expectation(lighthouse)
+            if broadest(what, light) != what:
+                what, why = light, reason
+        return what, why
+
+    def _expectation_json(self) -> dict[str, Any]:
+        """The expected outcomes of ``topomark algorithms --json``: the entry's, then each world family and each
+        lighthouse where it differs."""
+        what, why = self.expectation()
+        out: dict[str, Any] = {"expected": what}
+        if why:
+            out["expected_reason"] = why
+        if self.expected_by_family:
+            out["expected_by_family"] = {f: {"expected": w, "reason": y} for f, w, y in self.expected_by_family}
+        if self.uses_lighthouse:
+            lights = {h: self.expectation(None, h) for h in LIGHTHOUSES}
+            out["expected_by_lighthouse"] = {h: {"expected": w, "reason": y} for h, (w, y) in lights.items()
+                                             if (w, y) != (what, why)}
+        return out
 
     @property
     def bound_checked(self) -> bool:
@@ -241,6 +283,7 @@ class AlgorithmSpec:
                "bound_checked": self.bound_checked, "bound_note": self.bound_note, "status": self.status}
         if self.status_reason:
             out["status_reason"] = self.status_reason
+        out.update(self._expectation_json())
         if self.uses_lighthouse:
             out["lighthouses"] = {h.name: {"thesis": h.thesis, "kit": h.kit.to_json()} for h in LIGHTHOUSES.values()}
         return out

@@ -39,6 +39,7 @@ from topomark.reference.explorers.policies import Policies
 from topomark.reference.explorers.lighthouses import lighthouse
 from topomark.reference.algorithms.registry import algorithm_spec
 from topomark.reference.bench.run_manifest import Manifest
+from topomark.reference.bench.verdict import row_as_expected
 from topomark.reference.bench.run_store import Appender, locked, read_runs, rewrite, row_key, write_manifest
 from topomark.proofs.census_exec import die_with_leader, worker_count
 
@@ -175,13 +176,14 @@ def run_sweep(runs: list[Run], out: Path, jobs: int | None = None, check: bool =
 
 
 def _run_all(todo: list[Run], store: Appender, jobs: int, check: bool, bar: Progress) -> int:
-    """Run ``todo`` (in ``jobs`` processes), appending each row as it finishes; the number not verified."""
+    """Run ``todo`` (in ``jobs`` processes), appending each row as it finishes; the number whose outcome is not what
+    its algorithm's entry expects (:mod:`~topomark.reference.bench.verdict`)."""
     failures = 0
 
     def emit(row):
         nonlocal failures
         store.append(row)
-        if check and not row.get("verified"):
+        if check and not row_as_expected(row):
             failures += 1
         bar.step(row)
 

@@ -24,7 +24,7 @@ import math
 from topomark.spec.errors import InvalidInput, clip
 from topomark.spec.world import MAX_DEGREE
 
-__all__ = ["MAX_SECONDS", "MAX_COUNT", "MAX_JOBS", "SEED_DIGITS", "check_seconds", "check_count", "check_max_degree",
+__all__ = ["MAX_SECONDS", "MAX_COUNT", "MAX_JOBS", "SEED_DIGITS", "check_seconds", "check_count", "check_max_degree", "check_min_vertices",
            "check_jobs", "seed"]
 
 SEED_DIGITS = 18
@@ -66,6 +66,19 @@ def check_jobs(value: int) -> int:
     if not 1 <= value <= MAX_JOBS:
         raise InvalidInput(f"--jobs must be at least 1 and at most {MAX_JOBS}; got {value}")
     return value
+
+
+def check_min_vertices(minimum: int, maximum: int) -> int:
+    """``--min-vertices`` of the commands that enumerate worlds: between 2 and ``--max-vertices``.
+
+    >>> check_min_vertices(1, 5)
+    Traceback (most recent call last):
+    ...
+    topomark.spec.errors.InvalidInput: --min-vertices must be between 2 and --max-vertices (5), not 1
+    """
+    if not 2 <= minimum <= maximum:
+        raise InvalidInput(f"--min-vertices must be between 2 and --max-vertices ({maximum}), not {minimum}")
+    return minimum
 
 
 def check_max_degree(value: int) -> int:

@@ -9,6 +9,8 @@ from typing import Any
 
 from topomark.spec.errors import InvalidInput, unknown_name
 
+from topomark.reference.bench.reports.plots import INSTALL_HINT
+from topomark.reference.bench.verdict import judge_plan
 from topomark.reference.bench.experiments import EXPERIMENTS, HEAVY_GRAPHS, HEAVY_MAX_SIZE, plan, run_sweep, write_report
 from topomark.reference.files.outputs import check_output_dir
 from topomark.reference.cli.args import MAX_JOBS, check_jobs
@@ -25,7 +27,8 @@ def register(sub) -> None:
                     "DIR/runs.json records each sweep's parameters and every row carries a checksum: a sweep "
                     "recomputes a row that fails it, --report-only refuses it. runs.csv must be a regular file "
                     "of at most 64 MiB, no field longer than 10,000 characters. "
-                    "Exit 0 when every checked run was verified, 1 otherwise, 2 on bad input.")
+                    "Exit 0 when every checked run of the experiment ended as its algorithm's registry entry "
+                    "expects (topomark algorithms --json: expected), 1 when one did not, 2 on bad input.")
     p.add_argument("experiment", metavar="EXPERIMENT", help=f"one of: {', '.join(EXPERIMENTS)}")
     p.add_argument("--graphs", type=int, default=30, help="worlds per size (default 30)")
     p.add_argument("--heavy-graphs", type=int, default=HEAVY_GRAPHS,
@@ -66,12 +69,15 @@ def bench_command(args) -> int:
     wall = time.monotonic() - started
     report = write_report(args.experiment, out, None if args.report_only else wall, plots=not args.no_plots)
     text = report.read_text()
+    verdict = judge_plan((r.key for r in runs), out / "runs.csv")
+    result.update(failures=verdict.failures, outcomes=verdict.to_json())
     result.update(report=str(report), wall_seconds=round(wall, 1), plots_skipped="Plots: skipped" in text)
     if args.json:
         print(json.dumps(result, indent=1, sort_keys=True))
     else:
         print(f"{args.experiment}: {result['ran']} runs done, {result['skipped']} already in {out / 'runs.csv'}, "
-              f"{result['failures']} not verified; {wall:.0f} s; report {report}")
+              f"{wall:.0f} s; report {report}")
+        print(f"{args.experiment}: {verdict.line()}")
         if result["plots_skipped"]:
-            print("plots skipped: matplotlib is not installed (pip install 'topomark[plot]')")
+            print(f"plots skipped: matplotlib is not installed ({INSTALL_HINT})")
     return 1 if result["failures"] else 0

@@ -23,7 +23,7 @@ import argparse
 import json
 
 from topomark.proofs import burnside, enumerate as enumeration, graphs
-from topomark.reference.cli.args import check_max_degree
+from topomark.reference.cli.args import check_max_degree, check_min_vertices
 from topomark.spec.errors import InvalidInput, TopomarkFault
 
 __all__ = ["register", "count_command", "validate_args"]
@@ -58,9 +58,7 @@ def validate_args(args: argparse.Namespace) -> None:
     if args.enumerate and args.max_vertices > enumeration.MAX_VERTICES:
         raise InvalidInput(f"--enumerate lists worlds of at most {enumeration.MAX_VERTICES} vertices, "
                            f"not {args.max_vertices}")
-    if not 2 <= args.min_vertices <= args.max_vertices:
-        raise InvalidInput(f"--min-vertices must be between 2 and --max-vertices ({args.max_vertices}), "
-                           f"not {args.min_vertices}")
+    check_min_vertices(args.min_vertices, args.max_vertices)
     check_max_degree(args.max_degree)
 
 

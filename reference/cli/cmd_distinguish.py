@@ -56,7 +56,7 @@ def register(sub) -> None:
     q.add_argument("--shards", metavar="DIR", help="keep the map/reduce shards in DIR; a killed census run again "
                    "with the same DIR resumes from its finished, verified tasks (default: a temporary directory)")
     q.add_argument("--scheduler", metavar="ADDRESS", help="run the map and reduce on a Dask cluster "
-                   "(tcp://host:8786), or 'local' for a local Dask cluster of J workers (needs topomark[cluster]); "
+                   "(tcp://host:8786), or 'local' for a local Dask cluster of J workers (needs Dask: pip install '.[cluster]' from a checkout); "
                    f"exit 2 if no Dask scheduler answers at ADDRESS within {CONNECT_TIMEOUT} s, or it has no "
                    f"worker within {WORKER_WAIT} s")
     q.add_argument("--json", action="store_true", help="machine-readable output")

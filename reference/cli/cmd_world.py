@@ -30,6 +30,9 @@ def register(sub) -> None:
     p.add_argument("-o", "--out", dest="output", metavar="FILE", help="write the world here (default: stdout)")
     p.add_argument("--output", dest="output", help=argparse.SUPPRESS)  # the former spelling, still accepted
     p.add_argument("--show", metavar="FILE", help="summarise a world file instead")
+    p.add_argument("--draw", metavar="GENERATOR_OR_FILE",
+                   help="draw a world (a generator or a world file) to -o FILE, .svg or .png by its suffix (PNG needs "
+                        "matplotlib): vertex names, exit indices clockwise, markers, the start and the edge it faces")
     p.add_argument("--json", action="store_true", help="machine-readable output")
     p.set_defaults(handler=world_command)
     q = sub.add_parser("iso",
@@ -53,7 +56,34 @@ def describe(world) -> dict:
             "start": data.get("start")}
 
 
+def draw_command(args) -> int:
+    """``world --draw GENERATOR_OR_FILE -o FILE``: the world drawn (:mod:`topomark.proofs.drawing`); a world
+    without a start is drawn with the start exploration gives it (the first vertex facing exit 0)."""
+    from topomark.proofs.drawing import save_world
+    from topomark.proofs.drawing_png import check_drawable
+    from topomark.spec.world import Start
+
+    if args.generator or args.show or not args.output:
+        raise InvalidInput("world --draw GENERATOR_OR_FILE takes -o FILE (.svg or .png) and no other GENERATOR or "
+                           "--show")
+    check_drawable(args.output)
+    check_output(args.output)
+    world = resolve_world(args.draw, args.seed)
+    note = ""
+    if world.start is None:
+        at, exit_ = world.start_state()
+        world = world.with_start(Start(at, world.neighbour(at, exit_)))
+        note = "no start given: drawn at the default, the first vertex facing exit 0"
+    save_world(world, args.output, args.draw, note)
+    info = describe(world)
+    print(json.dumps({"file": args.output, "n": info["n"], "m": info["m"]}) if args.json else
+          f"drew {args.output}: n={info['n']} m={info['m']} genus={info['genus']}")
+    return 0
+
+
 def world_command(args) -> int:
+    if args.draw:
+        return draw_command(args)
     if args.show:
         if args.generator or args.output or args.seed is not None:
             raise InvalidInput("world --show FILE takes no generator, --seed or -o/--out")

@@ -33,7 +33,7 @@ from typing import Any
 
 from topomark.spec.errors import InvalidInput, TopomarkFault
 
-from topomark.reference.cli.args import MAX_JOBS, check_jobs, check_max_degree, seed
+from topomark.reference.cli.args import MAX_JOBS, check_jobs, check_max_degree, check_min_vertices, seed
 from topomark.reference.cli.cmd_worst_search import add_search_arguments, search_command, setup_of
 
 __all__ = ["register", "worst_case_command"]
@@ -76,9 +76,7 @@ def _validate(args: argparse.Namespace) -> None:
     if not 2 <= args.max_vertices <= MAX_EXHAUSTIVE:
         raise InvalidInput(f"--max-vertices must be between 2 and {MAX_EXHAUSTIVE} for the exhaustive search "
                            f"(use --search past it), not {args.max_vertices}")
-    if not 2 <= args.min_vertices <= args.max_vertices:
-        raise InvalidInput(f"--min-vertices must be between 2 and --max-vertices ({args.max_vertices}), "
-                           f"not {args.min_vertices}")
+    check_min_vertices(args.min_vertices, args.max_vertices)
     check_max_degree(args.max_degree)
     check_jobs(args.jobs)
     if args.cross_check and args.max_vertices > 5:

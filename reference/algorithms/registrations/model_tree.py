@@ -162,5 +162,8 @@ SPECS = (
         checks=("models", "marker-budget", "isomorphism"),
         explorer=ModelTreeExplorer, uses_lighthouse=False, parameters=PARAMETERS, kit_fn=_kit,
         marker_bound_fn=lambda n, m: 0, family="robot", check_world=check_cues, summary_fn=summary,
-        write_models=write_models),
+        write_models=write_models, expected="may-fail",
+        expected_reason="\"Without a marker, the robot cannot map a world deterministically\" (§5.2, L1338): the "
+                        "models may never meet the termination window (L1373) and end at a cap, or the sole "
+                        "completed model may be wrong (Figure 3.4, L1421)"),
 )

@@ -20,7 +20,8 @@ from typing import cast
 from topomark.reference.bench import thesis_figures as tf
 from topomark.reference.bench.plan import DEFAULT_LIGHTHOUSE, EXPERIMENTS, FAMILIES, Experiment, Part, is_heavy
 from topomark.reference.bench.reports.kit import write
-from topomark.reference.bench.reports.plots import Draw, errorbars, finish, new
+from topomark.reference.bench.reports import chapter34_plots
+from topomark.reference.bench.reports.plots import Draw
 from topomark.reference.bench.reports.stats import (cost_per_m, cpu_seconds, finished, groups, lighthouse_of, mean,
                                                     mean_sd, num)
 from topomark.reference.bench.reports.text import fmt, fmt_pm, pct, row, yes
@@ -79,7 +80,8 @@ def write_report(experiment: str, out: Path, wall: float | None = None, plots: b
                 lines += _family_tables(part, summary)
         for part in exp.parts:
             lines += _policy_table(part, summary)
-        return lines + _thesis_tables(exp, summary) + _absolute_costs(exp, summary), _draw(exp, summary, out)
+        lines += _thesis_tables(exp, summary) + _absolute_costs(exp, summary)
+        return lines, chapter34_plots.draw(exp, summary, out, reduction)
     return write(experiment, out, wall, plots, COST_NOTE, body)
 
 
@@ -200,36 +202,3 @@ def _absolute_costs(exp: Experiment, summary: dict) -> list[str]:
         lines.append(row(fam, alg, size, fmt(s["mean"]) if s else "—", fmt(tc),
                          "yes" if s and s["mean"] <= tc else ("no" if s else "")))
     return lines + [""]
-
-
-def _draw(exp: Experiment, summary: dict, out: Path) -> Draw:
-    """Per part (Algorithm 3.1's own lighthouse) and edge policy: every algorithm's mean cost ± sd against the
-    size, between the bound (3.3) and the lower bound m."""
-    def draw(plt) -> list[Path]:
-        made = [_plot(plt, exp, part, pol, summary, out) for part in exp.parts
-                if part.lighthouses == (DEFAULT_LIGHTHOUSE,) for pol in part.policies]
-        return [p for p in made if p]
-    return draw
-
-
-def _plot(plt, exp: Experiment, part: Part, pol: str, summary: dict, out: Path) -> Path | None:
-    series = {alg: sorted(k for k in summary if k[0] == part.family and k[1] == alg and k[2] == pol)
-              for alg in part.algorithms}
-    if not any(series.values()):
-        return None
-    every: dict[int, dict] = {}
-    for k in summary:
-        if k[0] == part.family and k[2] == pol and k[1] in part.algorithms:
-            every.setdefault(k[3], summary[k])
-    fig, ax = new(plt)
-    xs = sorted(every)
-    ax.plot(xs, [every[x]["bound"] for x in xs], "k--", lw=1, label="upper bound (3.3)")
-    ax.plot(xs, [every[x]["m"] for x in xs], "k:", lw=1, label="lower bound m")
-    for alg, keys in series.items():
-        if keys:
-            errorbars(ax, [k[3] for k in keys], [summary[k]["mean"] for k in keys], [summary[k]["sd"] for k in keys],
-                      alg)
-    figure = "Figures 4.2-4.8" if len(part.algorithms) > 1 else FAMILIES[part.family].figure
-    return finish(plt, fig, ax, out / f"{exp.name}-{part.family}{'' if pol == 'nearest' else '-' + pol}.png",
-                  f"{figure}: {part.family}" + (f" (edge policy {pol})" if pol != "nearest" else ""),
-                  "size of graph (vertices)", "cost (edge traversals)", log=FAMILIES[part.family].log)

@@ -46,7 +46,8 @@ from topomark.spec.world import World
 from topomark.reference.worlds import generators as g
 from topomark.reference.bench.plan import CHAPTER_5_FAMILIES, UNCUED_MODEL_TREE_GRAPHS
 from topomark.reference.bench.reports.kit import write
-from topomark.reference.bench.reports.plots import Draw, save
+from topomark.reference.bench.reports.plots import Draw, decorate, new, save
+from topomark.reference.bench.reports.plots import points as _points
 from topomark.reference.bench.reports.stats import by_seed, groups, mean, num
 
 __all__ = ["NAME", "USUALLY", "write_report", "figure_3_4", "OUTCOMES"]
@@ -357,15 +358,11 @@ def _plots(plt, runs: dict, out: Path) -> list[Path]:
               for k, v in runs.items() if k[0] == fam and k[3] == "cue=n" for r in v.values()]
     if not points:
         return []
-    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+    fig, axes = new(plt, 2, sharey=False)
     for ax, col, label in ((axes[0], 2, "peak live models"), (axes[1], 3, "seconds")):
         for fam in MODEL_FAMILIES[:2]:
             mine = [p for p in points if p[0] == fam]
-            ax.scatter([p[1] for p in mine], [max(p[col], 1e-3) for p in mine], s=12, label=fam)
-        ax.set_yscale("log")
-        ax.set_xlabel("n (vertices)")
-        ax.set_ylabel(label)
-        ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=8)
+            _points(ax, [p[1] for p in mine], [max(p[col], 1e-3) for p in mine], fam)
+        decorate(ax, f"{label} against n", "n (vertices)", label)
     fig.suptitle("Algorithm 5.1 with the n cue: peak models and time against n")
     return [save(plt, fig, out / f"{NAME}-model-tree.png")]

@@ -20,9 +20,10 @@ from pathlib import Path
 from typing import Callable
 
 from topomark.reference.bench.plan import EXPERIMENTS, NO_LIGHTHOUSE, Experiment
-from topomark.reference.bench.reports.plots import Draw, drawn
+from topomark.reference.bench.reports.plots import INSTALL_HINT, Draw, drawn
 from topomark.reference.bench.reports.stats import cpu_seconds, latest, lighthouse_of
 from topomark.reference.bench.run_store import read_runs, write_atomic
+from topomark.reference.bench.verdict import expectation_of, outcome_of, row_as_expected, tally
 
 __all__ = ["Body", "write", "report_head", "run_totals", "plot_lines", "in_experiment"]
 
@@ -63,7 +64,9 @@ def in_experiment(exp: Experiment, row: dict) -> bool:
 
 
 def run_totals(exp: Experiment, rows: list[dict], wall: float | None) -> list[str]:
-    """The report lines on this invocation's wall time, the experiment's runs, their CPU time and failures."""
+    """The report lines on this invocation's wall time, the experiment's runs, their CPU time, the runs not verified
+    and the runs against their expected outcomes (:mod:`~topomark.reference.bench.verdict`; the first 20 not as
+    expected are named)."""
     lines = [f"Wall time of this invocation: {wall:.0f} s.", ""] if wall is not None else []
     mine = [r for r in latest(rows) if in_experiment(exp, r)]
     cpu = sum(cpu_seconds(r) for r in mine)
@@ -71,12 +74,18 @@ def run_totals(exp: Experiment, rows: list[dict], wall: float | None) -> list[st
               f"(on an otherwise idle 2-core machine about {cpu / 2 / 60:.0f} min of wall time).", ""]
     problems = [r for r in rows if in_experiment(exp, r)
                 and str(r.get("checked")) == "True" and str(r.get("verified")) != "True"]
-    return lines + [f"Checked runs whose map was **not** verified: {len(problems)}.", ""]
+    lines += [f"Checked runs whose map was **not** verified: {len(problems)}.", "",
+              f"Runs against their algorithm's expected outcome (`topomark algorithms --json`, `expected`): "
+              f"{tally(mine).line()}.", ""]
+    odd = sorted((r for r in mine if not row_as_expected(r)), key=lambda r: (r["algorithm"], r["experiment"]))
+    return lines + [f"- not as expected: {r['algorithm']} on {r['experiment']} size {r['size']} seed {r['seed']} "
+                    f"({r.get('lighthouse') or 'directional-vertex'}): {outcome_of(r)}, expected "
+                    f"{expectation_of(r)[0]}" for r in odd[:20]] + ([""] if odd else [])
 
 
 def plot_lines(made: list[Path] | None, plots: bool) -> list[str]:
     """The report's last lines: the plots drawn, or why there are none."""
     if made is None:
-        return ["Plots: skipped (matplotlib is not installed; `pip install topomark[plot]`)." if plots
+        return [f"Plots: skipped (matplotlib is not installed: `{INSTALL_HINT}`)." if plots
                 else "Plots: not requested.", ""]
     return ["Plots: " + ", ".join(f"`{p.name}`" for p in made), ""]

@@ -1,14 +1,30 @@
-"""How the bench reports draw their plots: one style for every cost plot, and none at all without matplotlib.
+"""How the bench reports draw their plots: one style for every plot, and none at all without matplotlib.
 
 Part of the report kit (:mod:`~topomark.reference.bench.reports.kit`).  A report
 hands :func:`drawn` a *draw* function that takes ``matplotlib.pyplot`` and
-returns the files it saved; without matplotlib (``pip install topomark[plot]``)
-nothing is drawn and the report says so.  Every plot of a cost (or a marker
-count, or a ratio) against the size of the world or a thread's length has the
-same look: a 6 × 4.2 inch figure at 110 dpi, points marked ``o`` (error bars:
-one standard deviation, small caps), a log y axis where costs span decades, a
-small legend and a light grid (:func:`new`, :func:`curve`, :func:`errorbars`,
-:func:`finish`).
+returns the files it saved; without matplotlib (:data:`INSTALL_HINT`) nothing is
+drawn and the report says so.  Every plot — a cost, a marker count, a ratio or a
+reduction against the size of the world or a thread's length — has the same
+look (:func:`new`: one panel or several side by side, each 6 × 4.2 inches, at
+110 dpi):
+
+* every series its own colour *and* marker: a cycle of 10 colours × 7 markers
+  (:data:`COLOURS`, :data:`MARKERS`; 10 and 7 are coprime, so the first 70
+  series differ in at least one of the two — the lighthouse plot has 14);
+* our measurements filled, joined by solid lines (:func:`curve`, or
+  :func:`errorbars` with one standard deviation); the thesis's published
+  numbers (:mod:`~topomark.reference.bench.thesis_figures`) in the same colour as
+  our series of that algorithm, hollow markers on a dashed line, labelled
+  "thesis" (:func:`thesis`); bounds and references black or grey (:func:`reference`);
+* x ticks at the sizes measured (:func:`decorate`; never between them, as 72.5),
+  a log y axis where costs span decades, a small legend, a light grid.
+
+Examples
+--------
+>>> [style(i)["marker"] for i in (0, 1, 7, 10)], style(10)["color"] == style(0)["color"]
+(['o', 's', 'o', 'D'], True)
+>>> len({(style(i)["color"], style(i)["marker"]) for i in range(70)})
+70
 """
 
 from __future__ import annotations
@@ -16,12 +32,24 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any, Callable
 
-__all__ = ["Draw", "FIGSIZE", "DPI", "pyplot", "drawn", "new", "curve", "errorbars", "finish", "save"]
+from topomark.proofs.drawing_png import INSTALL_HINT  # how to get matplotlib, the package's ``plot`` extra
+
+__all__ = ["Draw", "FIGSIZE", "DPI", "COLOURS", "MARKERS", "INSTALL_HINT", "style", "pyplot", "drawn", "new",
+           "curve", "points", "errorbars", "thesis", "reference", "decorate", "finish", "save"]
 
 Draw = Callable[[Any], list[Path]]
 """Given ``matplotlib.pyplot``: draw, save and return the plot files."""
 FIGSIZE = (6, 4.2)
 DPI = 110
+COLOURS = ("#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22",
+           "#17becf")
+MARKERS = ("o", "s", "^", "D", "v", "P", "X")
+MAX_TICKS = 12  # more measured sizes than this: matplotlib's own ticks (they would overlap)
+
+
+def style(i: int) -> dict[str, str]:
+    """The colour and marker of the ``i``-th series of a panel."""
+    return {"color": COLOURS[i % len(COLOURS)], "marker": MARKERS[i % len(MARKERS)]}
 
 
 def pyplot() -> Any | None:
@@ -41,30 +69,83 @@ def drawn(draw: Draw) -> list[Path] | None:
     return None if plt is None else draw(plt)
 
 
-def new(plt) -> tuple[Any, Any]:
-    """A figure of the shared size and its axes."""
-    return plt.subplots(figsize=FIGSIZE)
+def new(plt, panels: int = 1, sharey: bool = True) -> tuple[Any, Any]:
+    """A figure of the shared size (``panels`` side by side, sharing the y axis unless ``sharey`` is False) and its
+    axes (a list when ``panels`` > 1)."""
+    fig, axes = plt.subplots(1, panels, figsize=(FIGSIZE[0] * panels, FIGSIZE[1]), sharey=sharey and panels > 1,
+                             squeeze=False)
+    return fig, (axes[0][0] if panels == 1 else list(axes[0]))
 
 
-def curve(ax, xs: list[float], ys: list[float], label: str) -> None:
-    """A series of points joined by lines."""
-    ax.plot(xs, ys, marker="o", ms=3, label=label)
+def _next(ax, key: str | None) -> dict[str, str]:
+    """The style of the panel's next series; a series of a ``key`` already drawn (thesis beside ours) keeps its
+    colour and marker."""
+    seen: dict = ax.__dict__.setdefault("_topomark_styles", {})
+    if key is not None and key in seen:
+        return seen[key]
+    got = style(len(seen))
+    seen[key if key is not None else object()] = got
+    return got
 
 
-def errorbars(ax, xs: list[float], means: list[float], sds: list[float], label: str) -> None:
+def _note_xs(ax, xs) -> None:
+    ax.__dict__.setdefault("_topomark_xs", set()).update(xs)
+
+
+def curve(ax, xs: list[float], ys: list[float], label: str, key: str | None = None) -> None:
+    """A series of points joined by lines (``key``, default the label, pairs it with its :func:`thesis` series)."""
+    _note_xs(ax, xs)
+    ax.plot(xs, ys, ms=4, lw=1.2, label=label, **_next(ax, key or label))
+
+
+def points(ax, xs: list[float], ys: list[float], label: str) -> None:
+    """A series of unjoined points (one per run)."""
+    _note_xs(ax, xs)
+    ax.plot(xs, ys, ls="none", ms=4, alpha=0.8, label=label, **_next(ax, label))
+
+
+def errorbars(ax, xs: list[float], means: list[float], sds: list[float], label: str, key: str | None = None) -> None:
     """A series of means with one standard deviation either side."""
-    ax.errorbar(xs, means, yerr=sds, marker="o", ms=3, capsize=2, label=label)
+    _note_xs(ax, xs)
+    ax.errorbar(xs, means, yerr=sds, ms=4, lw=1.2, capsize=2, label=label, **_next(ax, key or label))
+
+
+def thesis(ax, xs: list[float], ys: list[float], key: str, label: str | None = None) -> None:
+    """The thesis's numbers for the series ``key``: its colour and marker, hollow, on a dashed line, labelled
+    "thesis"."""
+    if not xs:
+        return
+    _note_xs(ax, xs)
+    got = _next(ax, key)
+    ax.plot(xs, ys, ls="--", lw=1, ms=6, mfc="none", mew=1.2, label=label or f"{key} (thesis)", **got)
+
+
+def reference(ax, xs: list[float], ys: list[float], label: str, dotted: bool = False) -> None:
+    """A bound or reference curve: black, dashed (``dotted``: dotted), no markers."""
+    ax.plot(xs, ys, color="k", ls=":" if dotted else "--", lw=1, label=label)
+
+
+def decorate(ax, title: str, xlabel: str, ylabel: str, log: bool = True) -> None:
+    """Label a panel (log y axis unless ``log`` is False), tick the sizes it measured, legend and grid."""
+    if log:
+        ax.set_yscale("log")
+    xs = sorted(ax.__dict__.get("_topomark_xs", ()))
+    if 0 < len(xs) <= MAX_TICKS:
+        ax.set_xticks(xs)
+        ax.set_xticklabels([f"{x:g}" for x in xs], fontsize=8, rotation=45 if len(xs) > 7 else 0)
+        if ax.get_xscale() != "linear":  # the measured values are the ticks: no minor ones between them
+            ax.tick_params(axis="x", which="minor", bottom=False, labelbottom=False)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title, fontsize=10)
+    if ax.get_legend_handles_labels()[0]:
+        ax.legend(fontsize=7)
+    ax.grid(True, which="both", alpha=0.3)
 
 
 def finish(plt, fig, ax, path: Path, title: str, xlabel: str, ylabel: str, log: bool = True) -> Path:
-    """Label the axes (log y axis unless ``log`` is False), add the legend and grid, and :func:`save`."""
-    if log:
-        ax.set_yscale("log")
-    ax.set_xlabel(xlabel)
-    ax.set_ylabel(ylabel)
-    ax.set_title(title)
-    ax.legend(fontsize=7)
-    ax.grid(True, which="both", alpha=0.3)
+    """:func:`decorate` the one panel and :func:`save`."""
+    decorate(ax, title, xlabel, ylabel, log)
     return save(plt, fig, path)
 
 

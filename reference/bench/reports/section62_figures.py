@@ -38,7 +38,7 @@ import math
 from pathlib import Path
 
 from topomark.reference.bench.plan import FIGURE_613_SIZES, FRACTIONS
-from topomark.reference.bench.reports.plots import curve, finish, new
+from topomark.reference.bench.reports.plots import curve, finish, new, reference
 from topomark.reference.bench.reports.stats import cost_per_m, drop_trips, mean, measured, net_cost, num
 
 __all__ = ["EDGEINFO", "PLOTS", "findings", "figure_613", "plots", "marked_places", "means"]
@@ -331,7 +331,7 @@ def _plot(plt, experiment: str, g: dict, out: Path, fam: str, fig_no: str, colum
     for pts in (means(g, fam, a.partition("@")[0], "m") for a in algs):
         m.update(_within(experiment, fam, pts))
     if column == "cost" and m:
-        ax.plot(sorted(m), [m[s] for s in sorted(m)], "k:", lw=1, label="lower bound m")
+        reference(ax, sorted(m), [m[s] for s in sorted(m)], "lower bound m", dotted=True)
     for label, pts in series.items():
         curve(ax, sorted(pts), [pts[s] for s in sorted(pts)], label)
     return finish(plt, fig, ax, out / f"figure-{fig_no}-{fam}.png", f"Figure {fig_no}: {fam}",

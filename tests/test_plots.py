@@ -1,0 +1,70 @@
+"""The bench's one plotting style: distinct colour × marker per series, the thesis hollow and dashed beside ours,
+ticks at the measured sizes, the policies in one figure and the reductions plot of Tables 4.1-4.8."""
+
+from __future__ import annotations
+
+from topomark.reference.bench import thesis_figures as tf
+from topomark.reference.bench.plan import EXPERIMENTS
+from topomark.reference.bench.reports import chapter34_plots, plots
+from topomark.reference.bench.reports.chapter34 import reduction
+
+plt = plots.pyplot()
+
+
+def _summary(family: str, algs: tuple[str, ...], sizes: tuple[int, ...], policies=("nearest",)) -> dict:
+    """Synthetic per-(family, algorithm, policy, size) summaries: each enhancement costs a fixed share of basic."""
+    out = {}
+    for pol in policies:
+        for k, alg in enumerate(algs):
+            for size in sizes:
+                cost = 100.0 * size * (1 - 0.1 * k)
+                out[(family, alg, pol, size)] = {"mean": cost, "sd": 1.0, "bound": 1e6, "m": 2.0 * size,
+                                                 "seeds": {0: cost, 1: cost}}
+    return out
+
+
+def test_fourteen_series_get_fourteen_distinct_styles():
+    fig, ax = plots.new(plt)
+    for i in range(14):
+        plots.curve(ax, [72, 90], [i, i + 1], f"series {i}")
+    seen = {(line.get_color(), line.get_marker()) for line in ax.get_lines()}
+    plt.close(fig)
+    assert len(seen) == 14
+
+
+def test_thesis_numbers_are_hollow_dashed_in_their_series_colour_and_ticks_are_the_sizes():
+    fig, ax = plots.new(plt)
+    plots.curve(ax, [72, 90, 108], [1, 2, 3], "enh1")
+    plots.thesis(ax, [72, 90], [2, 3], "enh1")
+    plots.decorate(ax, "t", "x", "y", log=False)
+    ours, theirs = ax.get_lines()
+    plt.close(fig)
+    assert theirs.get_color() == ours.get_color() and theirs.get_marker() == ours.get_marker()
+    assert theirs.get_markerfacecolor() == "none" and theirs.get_linestyle() == "--" and ours.get_linestyle() == "-"
+    assert "thesis" in theirs.get_label()
+    assert list(ax.get_xticks()) == [72, 90, 108]
+
+
+def test_policies_draw_one_figure_and_tables_a_reductions_plot(tmp_path):
+    exp = EXPERIMENTS["policies"]
+    summary = _summary("lattice-hole", ("basic", "enh3"), (90, 260), ("nearest", "fifo", "lifo"))
+    made = chapter34_plots.draw(exp, summary, tmp_path, reduction)(plt)
+    assert [p.name for p in made] == ["policies-lattice-hole-policies.png"]
+    exp = EXPERIMENTS["table-4.1"]
+    summary = _summary("lattice-hole", ("basic", "enh1", "enh2", "enh3"), (72, 90))
+    made = chapter34_plots.draw(exp, summary, tmp_path, reduction)(plt)
+    assert [p.name for p in made] == ["table-4.1-lattice-hole.png", "table-4.1-reductions.png"]
+    assert all(p.read_bytes()[:4] == b"\x89PNG" for p in made)
+
+
+def test_the_reductions_panel_holds_ours_and_the_tables(monkeypatch, tmp_path):
+    panels = []
+    monkeypatch.setattr(chapter34_plots, "save", lambda plt_, fig, path: panels.append(fig) or path)
+    summary = _summary("lattice-hole", ("basic", "enh1"), (72, 90))
+    chapter34_plots.draw(EXPERIMENTS["table-4.1"], summary, tmp_path, reduction)(plt)
+    ax = panels[-1].axes[0]
+    lines = {line.get_label(): line for line in ax.get_lines()}
+    assert [round(y, 6) for y in lines["enh1"].get_ydata()] == [10.0, 10.0]  # 90% of basic's cost, every world
+    row, _ = tf.REDUCTIONS[("lattice-hole", "enh1")]
+    assert list(lines["enh1 (thesis, Table 4.1)"].get_ydata()) == [row[s] for s in sorted(row)]
+    plt.close("all")
