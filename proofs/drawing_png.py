@@ -79,7 +79,9 @@ def _render(plt, svg: str, path: Path) -> None:
 
 
 def _element(plt, ax, tag: str, a: dict, text: str, z: int) -> None:
-    f = lambda k, d=0.0: float(a.get(k, d))  # noqa: E731 - a number attribute
+    def f(k: str, d: float = 0.0) -> float:  # a number attribute
+        return float(a.get(k, d))
+
     if tag == "line":
         ax.plot([f("x1"), f("x2")], [f("y1"), f("y2")], color=a.get("stroke", "black"), lw=f("stroke-width", 1),
                 solid_capstyle="butt", zorder=z)

@@ -38,7 +38,7 @@ import re
 import statistics
 import time
 from pathlib import Path
-from typing import Callable
+from typing import Callable, cast
 
 from topomark.spec.isomorphism import find_isomorphism
 from topomark.spec.world import World
@@ -362,7 +362,7 @@ def _plots(plt, runs: dict, out: Path) -> list[Path]:
     for ax, col, label in ((axes[0], 2, "peak live models"), (axes[1], 3, "seconds")):
         for fam in MODEL_FAMILIES[:2]:
             mine = [p for p in points if p[0] == fam]
-            _points(ax, [p[1] for p in mine], [max(p[col], 1e-3) for p in mine], fam)
+            _points(ax, [p[1] for p in mine], [max(cast(float, p[col]), 1e-3) for p in mine], fam)
         decorate(ax, f"{label} against n", "n (vertices)", label)
     fig.suptitle("Algorithm 5.1 with the n cue: peak models and time against n")
     return [save(plt, fig, out / f"{NAME}-model-tree.png")]

@@ -30,7 +30,7 @@ Examples
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any, Callable, Sequence
 
 from topomark.proofs.drawing_png import INSTALL_HINT  # how to get matplotlib, the package's ``plot`` extra
 
@@ -120,7 +120,7 @@ def thesis(ax, xs: list[float], ys: list[float], key: str, label: str | None = N
     ax.plot(xs, ys, ls="--", lw=1, ms=6, mfc="none", mew=1.2, label=label or f"{key} (thesis)", **got)
 
 
-def reference(ax, xs: list[float], ys: list[float], label: str, dotted: bool = False) -> None:
+def reference(ax, xs: Sequence[float], ys: Sequence[float], label: str, dotted: bool = False) -> None:
     """A bound or reference curve: black, dashed (``dotted``: dotted), no markers."""
     ax.plot(xs, ys, color="k", ls=":" if dotted else "--", lw=1, label=label)
 
