@@ -63,7 +63,8 @@ def register(sub) -> None:
                    help="also run the brute force over labelled rotation systems and require the same maxima (n <= 5)")
     p.add_argument("-o", "--out", metavar="DIR", help="write worst-case.json, the argmax world files, worst-case.md and plots")
     p.add_argument("--summarise", nargs="+", metavar="DIR",
-                   help="print worst-case.md (Markdown) from the --out directories of earlier runs, exhaustive and --search")
+                   help="the report over the --out directories of earlier runs, exhaustive and --search: Markdown on "
+                        "stdout, or worst-case.md and its plot in -o DIR")
     p.add_argument("--quiet", action="store_true", help="no progress line")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     add_search_arguments(p)
@@ -89,7 +90,12 @@ def worst_case_command(args: argparse.Namespace) -> int:
         missing = [d for d in args.summarise if not Path(d).is_dir()]
         if missing:
             raise InvalidInput(f"--summarise: {missing[0]!r} is not a directory (give the --out directories of runs)")
-        print(summarise([Path(d) for d in args.summarise]))
+        if args.out:
+            text = summarise([Path(d) for d in args.summarise], Path(args.out))
+            (Path(args.out) / "worst-case.md").write_text(text)
+            print(f"wrote {Path(args.out) / 'worst-case.md'}")
+        else:
+            print(summarise([Path(d) for d in args.summarise]), end="")
         return 0
     if args.search:
         return search_command(args)

@@ -5,7 +5,8 @@ diameter and the maximum degree as well as m and n (L2262).  Given the worst wor
 :func:`fit_exponents` measures the growth: for each of m, n, the diameter and the maximum degree, the slope
 of log(cost) against log(x) (``numpy.polyfit``, degree 1) with its R², and the two-factor fit
 cost ≈ c·m^a·n^b (``numpy.linalg.lstsq`` on [1, log m, log n]).  A factor with fewer than two distinct values
-(or a two-factor fit with fewer than three rows or collinear log m and log n) has no fit: ``None``.
+(or a two-factor fit with no more rows than its three parameters — three points fit any c, a, b exactly, with
+R² = 1 — or collinear log m and log n) has no fit: ``None``.
 
 >>> rows = [{"n": n, "m": m, "diameter": 3, "max_degree": 4, "cost": 3 * m * m}
 ...         for n, m in ((4, 5), (8, 12), (16, 30))]
@@ -15,7 +16,7 @@ cost ≈ c·m^a·n^b (``numpy.linalg.lstsq`` on [1, log m, log n]).  A factor wi
 >>> fit["diameter"] is None
 True
 >>> rows = [{"n": n, "m": m, "diameter": 1, "max_degree": 3, "cost": 2 * m**2 * n}
-...         for n, m in ((4, 5), (8, 9), (6, 14))]
+...         for n, m in ((4, 5), (8, 9), (6, 14), (10, 20))]
 >>> fit_exponents(rows)["m_n"]
 {'c': 2.0, 'a': 2.0, 'b': 1.0, 'r2': 1.0}
 """
@@ -50,7 +51,7 @@ def _one_factor(x: np.ndarray, y: np.ndarray) -> dict[str, Any] | None:
 
 def _two_factor(logm: np.ndarray, logn: np.ndarray, y: np.ndarray) -> dict[str, Any] | None:
     design = np.column_stack([np.ones_like(logm), logm, logn])
-    if len(y) < 3 or np.linalg.matrix_rank(design) < 3:
+    if len(y) <= 3 or np.linalg.matrix_rank(design) < 3:
         return None
     (b0, a, b), *_ = np.linalg.lstsq(design, y, rcond=None)
     c = float(f"{float(np.exp(b0)):.{_DIGITS}g}")

@@ -21,7 +21,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-from topomark.reference.bench.reports.plots import curve, drawn, finish, new
+from topomark.reference.bench.reports.plots import curve, drawn, finish, new, reference
 
 __all__ = ["table", "write_report", "THESIS"]
 
@@ -89,9 +89,7 @@ def _plots(out: Path, rows: list[dict[str, Any]], algorithm: str):
         curve(ax, ns, [r["max_cost"] for r in rows if r["max_cost"] is not None], "largest cost (exhaustive)")
         bounds = [(r["n"], r["bound_at_argmax"]) for r in rows if r.get("bound_at_argmax")]
         if bounds:
-            ax.plot([b[0] for b in bounds], [b[1] for b in bounds], ls="--", marker="s", ms=3, mfc="none",
-                    label="exact bound (3.1)+(3.2) at that world")
-        ax.set_xticks(ns)
+            reference(ax, [b[0] for b in bounds], [b[1] for b in bounds], "the exact bound at that world")
         second = finish(plt, fig, ax, out / "worst-case-max.png", f"{algorithm}: the worst case per n",
                         "n (vertices)", "edge traversals")
         return [first, second]

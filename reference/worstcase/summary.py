@@ -29,6 +29,8 @@ from topomark.spec.world import World
 from topomark.spec.worldfile import world_from_json
 
 from topomark.reference.run.explore import explore
+from topomark.reference.bench.reports.plots import curve, drawn, finish, new, points
+from topomark.reference.worstcase.fit import fit_exponents
 from topomark.reference.worstcase.report import THESIS
 
 __all__ = ["structure", "summarise"]
@@ -93,19 +95,49 @@ def _search_section(runs: list[dict]) -> list[str]:
     for data in sorted(runs, key=lambda d: d["algorithm"]):
         for r in data["per_n"]:
             s, b = r["search"].get("best") or {}, r["random"].get("best") or {}
-            lines.append(f"| {data['algorithm']} | {data['objective']} | {r['n']} | {s.get('m')} | "
-                         f"{s.get('diameter')} | {s.get('max_degree')} | {s.get('cost')} | {b.get('cost')} | "
-                         f"{s.get('ratio_to_bound')} |")
-        if data.get("fit"):
-            fits.append(f"- {data['algorithm']}: {json.dumps(data['fit'])}")
+            holes = f" (holes: {', '.join(s['holes']) or 'none'})" if "holes" in s else ""
+            lines.append(f"| {data['algorithm']}{' lattice-hole' if data.get('family') else ''} | "
+                         f"{data['objective']} | {r['n']} | {s.get('m')} | {s.get('diameter')} | {s.get('max_degree')} "
+                         f"| {s.get('cost')}{holes} | {b.get('cost')} | {s.get('ratio_to_bound')} |")
+        best = [{**r["search"]["best"], "n": r["n"]} for r in data["per_n"] if r["search"].get("best")]
+        if len(best) >= 3:  # fitted here, from the rows, so every report fits alike
+            fits.append(f"- {data['algorithm']}: {_fit_text(fit_exponents(best))}")
     if fits:
         lines += ["", "Fitted growth of the best cost found (log-log least squares over the sizes searched):", "",
                   *fits]
     return lines + [""]
 
 
-def summarise(dirs: list[Path]) -> str:
-    """The report over every output directory in ``dirs``."""
+def _fit_text(fit: dict[str, Any]) -> str:
+    """``cost ∝ m^2.02 (R² 0.984), …`` for the factors that varied."""
+    parts = [f"{f}^{fit[f]['exponent']:.2f} (R² {fit[f]['r2']})" for f in ("m", "n", "diameter", "max_degree")
+             if fit.get(f)]
+    two = fit.get("m_n")
+    if two:
+        parts.append(f"c·m^{two['a']:.2f}·n^{two['b']:.2f} (R² {two['r2']})")
+    return f"cost ∝ {', '.join(parts)} over {fit['rows']} sizes" if parts else "no factor varied"
+
+
+def _plot(out: Path, exhaustive: list[dict], searched: list[dict]) -> list[Path] | None:
+    """The largest cost per n: exact (exhaustive, joined) and found (search, unjoined), log-log."""
+    def draw(plt) -> list[Path]:
+        fig, ax = new(plt)
+        for data in sorted(exhaustive, key=lambda d: (d["algorithm"], d["max_degree"])):
+            rows = [r for r in data["per_n"] if r["max_cost"]]
+            curve(ax, [r["n"] for r in rows], [r["max_cost"] for r in rows],
+                  f"{data['algorithm']}, exact, D ≤ {data['max_degree']}")
+        for data in sorted(searched, key=lambda d: d["algorithm"]):
+            rows = [r for r in data["per_n"] if r["search"].get("best")]
+            points(ax, [r["n"] for r in rows], [r["search"]["best"]["cost"] for r in rows],
+                   f"{data['algorithm']}{' lattice-hole' if data.get('family') else ''}, found")
+        ax.set_xscale("log")
+        return [finish(plt, fig, ax, out / "worst-case-summary.png", "The worst cost per n: proved and found",
+                       "n (vertices)", "edge traversals")]
+    return drawn(draw)
+
+
+def summarise(dirs: list[Path], out: Path | None = None) -> str:
+    """The report over every output directory in ``dirs``; with ``out``, also its plot, drawn there."""
     exhaustive, searched = _load(dirs)
     lines = ["# Worst cases: the thesis's open question, measured", "", f"> {QUESTION}", "",
              f"- **Thesis:** {THESIS}",
@@ -116,4 +148,8 @@ def summarise(dirs: list[Path]) -> str:
         lines += _exhaustive_section(exhaustive)
     if searched:
         lines += _search_section(searched)
-    return "\n".join(lines)
+    if out is not None:
+        out.mkdir(parents=True, exist_ok=True)
+        plots = _plot(out, exhaustive, searched)
+        lines += [f"![{p.stem}]({p.name})" for p in plots or []]
+    return "\n".join(lines) + "\n"
