@@ -145,7 +145,7 @@ PARAMETERS: dict[str, dict[str, Any]] = {
     "figure-6.10": {},
     "figure-6.15": {},
     # The worst worlds topomark worst-case found, with their starts (worlds/worst_cases.py).
-    "worst-case": {"case": "basic-n5-d4"},
+    "worst-case": {"case": "basic-n7-d4"},
 }
 """CLI name -> {parameter name: default}.  The default's type is the parameter's type
 (int, float or str); ``generate`` fills in missing parameters from here."""
