@@ -210,6 +210,7 @@ def test_the_summary_says_what_is_proved_and_describes_the_worst_worlds(tmp_path
     assert "L2260–L2262" in text and "## Proved" in text
     row = next(line for line in text.splitlines() if line.startswith("| basic | 3 | 5 |"))
     assert "hypotheses rejected" in row and "diam" in row
+    assert "of its exact bound" in text and "the bound holds with room to spare" in text
     assert main(["worst-case", "--summarise", str(tmp_path / "missing")]) == 2
 
 

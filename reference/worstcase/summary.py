@@ -20,6 +20,7 @@ Examples
 from __future__ import annotations
 
 import json
+import shutil
 from pathlib import Path
 from typing import Any
 
@@ -59,10 +60,30 @@ def _load(dirs: list[Path]) -> tuple[list[dict], list[dict]]:
     exhaustive, searched = [], []
     for d in dirs:
         if (d / "worst-case.json").exists():
-            exhaustive.append(json.loads((d / "worst-case.json").read_text()))
+            exhaustive.append({**json.loads((d / "worst-case.json").read_text()), "dir": str(d)})
         if (d / "worst-case-search.json").exists():
             searched.append(json.loads((d / "worst-case-search.json").read_text()))
     return exhaustive, searched
+
+
+def _findings(runs: list[dict], shapes: list[dict]) -> list[str]:
+    """What the exhaustive tables say, computed from them."""
+    out = []
+    for data in sorted(runs, key=lambda d: (d["algorithm"], d["max_degree"])):
+        rows = [r for r in data["per_n"] if r["n"] >= 4 and r["max_ratio_to_bound"] is not None]
+        if rows:
+            last, top = rows[-1], max(r["max_ratio_to_bound"] for r in rows)
+            verdict = "the bound holds with room to spare" if top < 1 else "the bound is reached" if top == 1 else \
+                "the bound does NOT hold"
+            out.append(f"- `{data['algorithm']}`, degree ≤ {data['max_degree']}: at n = {last['n']} the worst run costs "
+                       f"{last['max_ratio_to_bound']} of its exact bound (largest over 4 ≤ n: {top}); {verdict}.")
+    if shapes:
+        far = sum(1 for s in shapes if s["start_eccentricity"] == s["diameter"])
+        full = sum(1 for s in shapes if s["degrees"].count(str(s["max_degree"])) >= s["n"] - 1)
+        out.append(f"- In {far} of {len(shapes)} worst worlds the start (where the lighthouse is) is as far from some "
+                   f"place as any two places are (eccentricity = diameter); in {full} of {len(shapes)} all but at most "
+                   "one place have the largest degree: the worst worlds are dense and the robot starts on their rim.")
+    return out
 
 
 def _exhaustive_section(runs: list[dict]) -> list[str]:
@@ -72,17 +93,19 @@ def _exhaustive_section(runs: list[dict]) -> list[str]:
              "| algorithm | D | n | worlds | runs | max cost | max cost/m | max cost / exact bound | structure of the "
              "worst world (m, diameter, degrees, genus, start eccentricity; loop iterations, hypotheses rejected) |",
              "|---|---|---|---|---|---|---|---|---|"]
+    shapes = []
     for data in sorted(runs, key=lambda d: (d["algorithm"], d["max_degree"])):
         for r in data["per_n"]:
             if r["argmax"] is None or r["n"] < 4:
                 continue
             s = structure(world_from_json(r["argmax"]), data["algorithm"])
+            shapes.append(s)
             shape = (f"m={s['m']}, diam {s['diameter']}, degrees {s['degrees']}, genus {s['genus']}, "
                      f"ecc {s['start_eccentricity']}; {s['loop_iterations']} loops, "
                      f"{s['hypotheses_rejected']}/{s['hypotheses']} hypotheses rejected")
             lines.append(f"| {data['algorithm']} | {data['max_degree']} | {r['n']} | {r['worlds']} | {r['runs']} | "
                          f"{r['max_cost']} | {r['max_cost_per_m']} | {r['max_ratio_to_bound']} | {shape} |")
-    return lines + [""]
+    return lines + ["", *_findings(runs, shapes), ""]
 
 
 def _search_section(runs: list[dict]) -> list[str]:
@@ -136,6 +159,18 @@ def _plot(out: Path, exhaustive: list[dict], searched: list[dict]) -> list[Path]
     return drawn(draw)
 
 
+def _distributions(out: Path, exhaustive: list[dict]) -> list[Path]:
+    """Each exhaustive search's cost/m distribution plot, copied beside the report under its own name."""
+    copied = []
+    for data in exhaustive:
+        source = Path(data["dir"]) / "worst-case-cost-per-m.png"
+        if source.exists():
+            target = out / f"worst-case-{data['algorithm']}-n{data['max_vertices']}-d{data['max_degree']}-cost-per-m.png"
+            shutil.copyfile(source, target)
+            copied.append(target)
+    return copied
+
+
 def summarise(dirs: list[Path], out: Path | None = None) -> str:
     """The report over every output directory in ``dirs``; with ``out``, also its plot, drawn there."""
     exhaustive, searched = _load(dirs)
@@ -150,6 +185,6 @@ def summarise(dirs: list[Path], out: Path | None = None) -> str:
         lines += _search_section(searched)
     if out is not None:
         out.mkdir(parents=True, exist_ok=True)
-        plots = _plot(out, exhaustive, searched)
-        lines += [f"![{p.stem}]({p.name})" for p in plots or []]
+        plots = (_plot(out, exhaustive, searched) or []) + _distributions(out, exhaustive)
+        lines += [f"![{p.stem}]({p.name})" for p in plots]
     return "\n".join(lines) + "\n"
