@@ -124,11 +124,21 @@ def _search_section(runs: list[dict]) -> list[str]:
                          f"| {s.get('cost')}{holes} | {b.get('cost')} | {s.get('ratio_to_bound')} |")
         best = [{**r["search"]["best"], "n": r["n"]} for r in data["per_n"] if r["search"].get("best")]
         if len(best) >= 3:  # fitted here, from the rows, so every report fits alike
-            fits.append(f"- {data['algorithm']}: {_fit_text(fit_exponents(best))}")
+            name = f"{data['algorithm']}{' lattice-hole' if data.get('family') else ''}"
+            fits.append(f"- {name}: {_fit_text(fit_exponents(best))}{_bound_growth(best)}")
     if fits:
         lines += ["", "Fitted growth of the best cost found (log-log least squares over the sizes searched):", "",
                   *fits]
     return lines + [""]
+
+
+def _bound_growth(best: list[dict[str, Any]]) -> str:
+    """How the exact bound grows over the same worlds (the cost each found world would need to reach it)."""
+    bounds = [{**b, "cost": b["cost"] / b["ratio_to_bound"]} for b in best if b.get("ratio_to_bound")]
+    if len(bounds) < 3:
+        return ""
+    fit = fit_exponents(bounds)["n"]
+    return f"; the exact bound at those worlds grows as n^{fit['exponent']:.2f}" if fit else ""
 
 
 def _fit_text(fit: dict[str, Any]) -> str:
@@ -159,6 +169,20 @@ def _plot(out: Path, exhaustive: list[dict], searched: list[dict]) -> list[Path]
     return drawn(draw)
 
 
+def _commands(exhaustive: list[dict], searched: list[dict]) -> list[str]:
+    """The command line each summarised run repeats (its seed and sample are the defaults unless shown)."""
+    out = []
+    for d in sorted(exhaustive, key=lambda d: (d["algorithm"], d["max_degree"], d["max_vertices"])):
+        out.append(f"topomark worst-case --algorithm {d['algorithm']} --max-vertices {d['max_vertices']} "
+                   f"--max-degree {d['max_degree']}")
+    for d in sorted(searched, key=lambda d: (d["algorithm"], d.get("family") or "")):
+        family = f" --world-family {d['family']}" if d.get("family") else ""
+        sizes = " ".join(str(r["n"]) for r in d["per_n"])
+        out.append(f"topomark worst-case --search --algorithm {d['algorithm']}{family} --vertices {sizes} "
+                   f"--evaluations {d['evaluations']} --max-degree {d['max_degree']}")
+    return out
+
+
 def _distributions(out: Path, exhaustive: list[dict]) -> list[Path]:
     """Each exhaustive search's cost/m distribution plot, copied beside the report under its own name."""
     copied = []
@@ -183,6 +207,8 @@ def summarise(dirs: list[Path], out: Path | None = None) -> str:
         lines += _exhaustive_section(exhaustive)
     if searched:
         lines += _search_section(searched)
+    lines += ["## How this page was made", "", "`topomark worst-case --summarise` over the outputs (`-o DIR`) of:", "",
+              *[f"- `{c}`" for c in _commands(exhaustive, searched)], ""]
     if out is not None:
         out.mkdir(parents=True, exist_ok=True)
         plots = (_plot(out, exhaustive, searched) or []) + _distributions(out, exhaustive)
