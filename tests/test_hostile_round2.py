@@ -185,7 +185,7 @@ def test_bench_starts_no_more_workers_than_runs(monkeypatch, tmp_path, capsys):
     started = []
 
     class FakePool:
-        def __init__(self, n):
+        def __init__(self, n, **_):  # initializer: the workers' own set-up (they ignore Ctrl-C, die with the leader)
             started.append(n)
 
         def __enter__(self):

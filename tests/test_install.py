@@ -171,11 +171,13 @@ def test_editable_install_into_a_fresh_venv(tmp_path, outside):
 def test_repository_layout_matches_the_packages():
     meta = tomllib.loads((ROOT / "pyproject.toml").read_text())
     dirs = meta["tool"]["setuptools"]["package-dir"]
-    assert dirs == {"topomark.spec": "spec", "topomark.reference": "reference", "topomark.proofs": "proofs"}
+    assert dirs == {"topomark": "face", "topomark.spec": "spec", "topomark.reference": "reference",
+                    "topomark.proofs": "proofs"}
     packages = meta["tool"]["setuptools"]["packages"]
-    folders = {str(p.parent.relative_to(ROOT)) for top in ("spec", "reference", "proofs")
+    folders = {str(p.parent.relative_to(ROOT)) for top in ("face", "spec", "reference", "proofs")
                for p in (ROOT / top).rglob("__init__.py") if "examples" not in p.parts}
-    declared = {"/".join([dirs[".".join(p.split(".")[:2])], *p.split(".")[2:]]) for p in packages}
+    declared = {"/".join([dirs[".".join(p.split(".")[:2])] if "." in p else dirs[p], *p.split(".")[2:]])
+                for p in packages}
     assert folders == declared  # a new package folder must be declared, or a wheel would miss it
     for d in declared:
         assert (ROOT / d / "__init__.py").is_file()
