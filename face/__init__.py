@@ -17,6 +17,8 @@ the same checks, the same verdicts and the same errors (:class:`topomark.spec.er
 :func:`search`, :func:`prove`              Z3: indistinguishable non-isomorphic pairs (``topomark search``)
 :func:`census`                             every small world grouped by language (``topomark census``)
 :func:`algorithms`                         the algorithm registry (``topomark algorithms``)
+:func:`worst_case`                         the exact worst cost over every small world (``topomark worst-case``)
+:func:`adversarial_search`                 bad worlds past those sizes, by search (``worst-case --search``)
 :mod:`topomark.strategies`                 hypothesis strategies for random worlds and isomorphic copies
 =========================================  =====================================================================
 
@@ -44,9 +46,11 @@ if TYPE_CHECKING:  # for type checkers only: at run time each name is imported w
     from topomark.exploration import algorithms, check_map, explore, isomorphic, replay
     from topomark.indistinguishability import census, distinguish, prove, search
     from topomark.worlds import generate, load_world, save_world
+    from topomark.worst import adversarial_search, worst_case
 
 __all__ = ["__version__", "load_world", "save_world", "generate", "explore", "check_map", "isomorphic", "replay",
-           "distinguish", "search", "prove", "census", "algorithms", "strategies"]
+           "distinguish", "search", "prove", "census", "algorithms", "worst_case", "adversarial_search",
+           "strategies"]
 
 try:
     __version__: str = version("topomark")
@@ -59,6 +63,7 @@ _LAZY = {
     "replay": "topomark.exploration", "algorithms": "topomark.exploration",
     "distinguish": "topomark.indistinguishability", "search": "topomark.indistinguishability",
     "prove": "topomark.indistinguishability", "census": "topomark.indistinguishability",
+    "worst_case": "topomark.worst", "adversarial_search": "topomark.worst",
 }
 
 

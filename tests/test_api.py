@@ -188,3 +188,18 @@ def test_strategies_are_the_reference_strategies():
         assert witness is not None and verify_witness(world, copy, witness) is None
 
     copies_are_isomorphic()
+
+
+def test_worst_case_gives_the_exact_maxima_and_the_world_that_reaches_them():
+    rows = topomark.worst_case("basic", max_vertices=4, max_degree=3)
+    last = rows[-1]
+    assert [r["n"] for r in rows] == [2, 3, 4] and last["max_ratio_to_bound"] <= 1
+    from topomark.spec.worldfile import world_from_json
+    run = topomark.explore(world_from_json(last["argmax"]))
+    assert run.verified and run.cost == last["max_cost"]
+
+
+def test_adversarial_search_is_reproducible_from_python():
+    a = topomark.adversarial_search("basic", n=8, max_degree=3, evaluations=20, seed=4).to_json()
+    b = topomark.adversarial_search("basic", n=8, max_degree=3, evaluations=20, seed=4).to_json()
+    assert a["best"]["cost"] == b["best"]["cost"] > 0 and a["best"]["world"] == b["best"]["world"]
