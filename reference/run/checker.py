@@ -204,8 +204,8 @@ class Checker:
         """``cost-bound``: the run's cost, less the moves its bound does not count, against the exact bound."""
         spec, world, sim = self.spec, self.sim.world, self.sim
         bound = spec.bound_for(world.n, world.m)
-        skipped = sum(sim.by_purpose[p] for p in spec.bound_excludes)
-        cost = sim.cost - skipped
+        cost = spec.counted_cost(sim.cost, sim.by_purpose)
+        skipped = sim.cost - cost
         if cost <= bound:
             return None
         counted = f"{cost}" + (f" ({sim.cost} less {skipped} {' and '.join(spec.bound_excludes)} moves)"

@@ -36,7 +36,7 @@ from topomark.spec.world import World
 from topomark.spec.worldfile import marker_to_json
 
 from topomark.reference.run.checker import Checker
-from topomark.reference.explorers.lighthouses import LIGHTHOUSES, Lighthouse, lighthouse as lighthouse_named
+from topomark.reference.explorers.lighthouses import LIGHTHOUSES, Lighthouse
 from topomark.reference.algorithms.registry import AlgorithmSpec, algorithm_spec
 from topomark.reference.explorers.policies import Policies
 from topomark.reference.run.simulator import Simulator
@@ -302,15 +302,10 @@ def check_run(world: World, spec: AlgorithmSpec, lighthouse: "str | Lighthouse |
 def _setup(world: World, spec: AlgorithmSpec, lighthouse: "str | Lighthouse | None", options: dict) -> _Run:
     """Check the world, lighthouse and options against the algorithm (bad input before anything runs)."""
     opts = spec.parse_options(options)
-    if spec.uses_lighthouse:
-        light = lighthouse if isinstance(lighthouse, Lighthouse) else lighthouse_named(lighthouse or
-                                                                                       "directional-vertex")
+    light = spec.lighthouse_for(lighthouse)
+    if light is not None:
         bare, state = prepare_world(world, light, spec.name)
         return _Run(bare, state, light.kit, light, opts)
-    if lighthouse is not None:
-        name = lighthouse if isinstance(lighthouse, str) else lighthouse.name
-        raise InvalidInput(f"the algorithm {spec.name} takes no lighthouse (given {name!r}): it carries its own kit, "
-                           f"{spec.kit.describe()}")
     if world.markers or getattr(world, "thread", None) is not None:
         what = f"{len(world.markers)} marker(s)" if world.markers else "a thread"
         raise InvalidInput(f"the algorithm {spec.name} drops its own markers: the world file must carry none "

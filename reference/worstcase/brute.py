@@ -90,7 +90,7 @@ def brute_force(setup: Setup, max_vertices: int, max_degree: int, min_vertices: 
                     tally.runs += 1
                     if run.claimed != "correct":
                         continue
-                    counted = run.cost - sum(run.by_purpose.get(p, 0) for p in spec.bound_excludes)
+                    counted = spec.counted_cost(run.cost, run.by_purpose)
                     tally.max_cost = max(tally.max_cost, run.cost)
                     tally.max_cost_m = max(tally.max_cost_m, Fraction(run.cost, world.m))
                     if bound is not None:

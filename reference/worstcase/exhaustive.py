@@ -106,11 +106,6 @@ def run_start(setup: Setup, world: World, dart: tuple[str, int], check: bool = F
     return explore(started, setup.spec, setup.policy(), check=check, record=False, lighthouse=setup.lighthouse)
 
 
-def _counted(setup: Setup, outcome) -> int:
-    """The part of the cost the exact bound counts (the ``cost-bound`` check's rule)."""
-    return outcome.cost - sum(outcome.by_purpose.get(p, 0) for p in setup.spec.bound_excludes)
-
-
 def _recheck(setup: Setup, world: World, dart: tuple[str, int], unchecked, witness: Witness) -> dict | None:
     """Run again checked; the disagreement with the unchecked run, or None."""
     checked = run_start(setup, world, dart, check=True)
@@ -141,7 +136,8 @@ def run_task(setup: Setup, max_degree: int, units: list[Unit]) -> dict[str, Any]
                 except InvalidInput:
                     refused += 1
                     continue
-                tally.add_run(witness, world.m, out.cost, _counted(setup, out), bound, out.claimed)
+                tally.add_run(witness, world.m, out.cost, setup.spec.counted_cost(out.cost, out.by_purpose), bound,
+                              out.claimed)
                 if sampled(setup, n, witness):
                     checked += 1
                     problem = _recheck(setup, world, dart, out, witness)

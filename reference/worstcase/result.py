@@ -19,7 +19,7 @@ from pathlib import Path
 from typing import Any
 
 from topomark.proofs.census_map import world_at
-from topomark.spec.world import Start
+from topomark.spec.world import Start, World
 from topomark.spec.worldfile import world_to_json
 
 from topomark.reference.algorithms.registry import AlgorithmSpec
@@ -30,11 +30,16 @@ __all__ = ["QUANTILES", "argmax_world", "histogram", "rows", "write_outputs"]
 QUANTILES = (0.0, 0.25, 0.5, 0.75, 0.9, 0.99, 1.0)
 
 
-def argmax_world(n: int, max_degree: int, witness: Witness) -> dict[str, Any]:
-    """The world and start of ``witness`` as a world file's object."""
+def started_world(n: int, max_degree: int, witness: Witness) -> World:
+    """The world of ``witness``, started where its run started."""
     gi, rank, v, i = witness
     world = world_at(n, max_degree, gi, rank)
-    return world_to_json(world.with_start(Start(v, world.neighbour(v, i))))
+    return world.with_start(Start(v, world.neighbour(v, i)))
+
+
+def argmax_world(n: int, max_degree: int, witness: Witness) -> dict[str, Any]:
+    """The world and start of ``witness`` as a world file's object."""
+    return world_to_json(started_world(n, max_degree, witness))
 
 
 def histogram(tally: SizeTally, width: float = 0.5) -> list[list[float]]:
@@ -60,7 +65,7 @@ def row(tally: SizeTally, max_degree: int, spec: AlgorithmSpec) -> dict[str, Any
         "max_cost_per_m": None if cost_m is None else round(cost_m[0] / cost_m[1], 3),
         "max_ratio_to_bound": None if ratio is None else round(ratio[0] / ratio[1], 4),
         "cost_per_m_exact": cost_m, "ratio_exact": ratio,
-        "argmax": None if tally.argmax_cost is None else argmax_world(tally.n, max_degree, tally.argmax_cost),
+        "argmax": None,
         "argmax_at": _where(tally.argmax_cost), "argmax_cost_per_m_at": _where(tally.argmax_cost_m),
         "argmax_ratio_at": _where(tally.argmax_ratio),
         "quantiles_cost_per_m": dict(zip((str(q) for q in QUANTILES), tally.quantiles(QUANTILES))) if tally.pairs
@@ -68,10 +73,8 @@ def row(tally: SizeTally, max_degree: int, spec: AlgorithmSpec) -> dict[str, Any
         "histogram_cost_per_m": histogram(tally),
     }
     if tally.argmax_cost is not None:
-        world = out["argmax"]
-        m = sum(len(ns) for ns in world["rotation"].values()) // 2
-        out["argmax_m"] = m
-        out["bound_at_argmax"] = spec.bound_for(tally.n, m) if spec.bound_fn is not None else None
+        world = started_world(tally.n, max_degree, tally.argmax_cost)
+        out.update(argmax=world_to_json(world), argmax_m=world.m, bound_at_argmax=spec.bound_for(tally.n, world.m))
     return out
 
 

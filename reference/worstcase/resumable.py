@@ -181,6 +181,9 @@ def worst_case(setup: Setup, max_vertices: int, max_degree: int, root: Path, min
     parts = [{t["n"]: SizeTally.from_json(t) for t in r["tallies"]} for r in records.values()]
     tallies = merge_tallies(parts)
     problems = [p for r in records.values() for p in r["problems"]]
+    disagree = next((p for p in problems if p["kind"] == "disagree"), None)
+    if disagree is not None:
+        raise TopomarkFault(f"a checked re-run disagrees with its unchecked run: {disagree}")
     count, checked = sum(r["problem_count"] for r in records.values()), sum(r["checked"] for r in records.values())
     for tally in tallies.values():
         seen, found = recheck_argmax(setup, max_degree, tally)

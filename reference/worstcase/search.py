@@ -49,7 +49,6 @@ from topomark.spec.world import World
 from topomark.spec.worldfile import world_to_json
 
 from topomark.reference.algorithms.registry import AlgorithmSpec, algorithm_spec
-from topomark.reference.explorers.lighthouses import lighthouse as lighthouse_named
 from topomark.reference.explorers.policies import Policies
 from topomark.reference.run.explore import explore
 from topomark.reference.worlds.deterministic import integer_param, seed_param
@@ -68,11 +67,13 @@ HISTORY_POINTS = 20  # the history holds the best score after about every 1/20 o
 
 @dataclass
 class Found:
-    """The best candidate of a run: its world (start included), score and cost; ``holes`` for a lattice."""
+    """The best candidate of a run: its world (start included), score, cost and the part of the cost its exact
+    bound counts (``AlgorithmSpec.counted_cost``); ``holes`` for a lattice."""
 
     world: World
     score: float
     cost: int
+    counted: int
     holes: list[str] | None = None
 
     def to_json(self, spec: AlgorithmSpec) -> dict[str, Any]:
@@ -81,7 +82,7 @@ class Found:
         bound = spec.bound_for(w.n, w.m)
         out: dict[str, Any] = {"cost": self.cost, "m": w.m, "n": w.n, "diameter": nx.diameter(graph),
                "max_degree": max(w.degree(v) for v in w.vertices), "cost_per_m": round(self.cost / w.m, 3),
-               "ratio_to_bound": None if bound is None else round(self.cost / bound, 6), "world": world_to_json(w)}
+               "ratio_to_bound": None if bound is None else round(self.counted / bound, 6), "world": world_to_json(w)}
         if self.holes is not None:
             out["holes"] = self.holes
         return out
@@ -144,8 +145,8 @@ class _Problem:
             return move_lattice(cand, rng)
         return move_world(cand, self.max_degree, rng)
 
-    def run(self, cand: World | LatticeHoles) -> tuple[float, int | None]:
-        """(score, cost) of one run; (−∞, None) for a run that does not end ``correct``."""
+    def run(self, cand: World | LatticeHoles) -> tuple[float, tuple[int, int] | None]:
+        """(score, (cost, counted cost)) of one run; (−∞, None) for a run that does not end ``correct``."""
         world = self.world_of(cand)
         try:
             out = explore(world, self.spec, lighthouse=self.lighthouse, policies=self.policies, check=False,
@@ -154,11 +155,12 @@ class _Problem:
             return -math.inf, None
         if out.claimed != "correct":
             return -math.inf, None
+        costs = (out.cost, self.spec.counted_cost(out.cost, out.by_purpose))
         if self.objective == "cost":
-            return float(out.cost), out.cost
+            return float(out.cost), costs
         if self.objective == "cost-per-m":
-            return out.cost / world.m, out.cost
-        return out.cost / self.spec.bound_for(world.n, world.m), out.cost  # type: ignore[operator]
+            return out.cost / world.m, costs
+        return costs[1] / self.spec.bound_for(world.n, world.m), costs  # type: ignore[operator]
 
 
 def _problem(algorithm: str, n: Any, max_degree: Any, objective: str, evaluations: Any, seed: Any,
@@ -177,11 +179,7 @@ def _problem(algorithm: str, n: Any, max_degree: Any, objective: str, evaluation
     family = family or "general"
     if family not in FAMILIES:
         raise InvalidInput(f"unknown family {family!r} (choose from {', '.join(FAMILIES)})")
-    if lighthouse is not None:
-        if not spec.uses_lighthouse:
-            raise InvalidInput(f"the algorithm {spec.name} takes no lighthouse (given {lighthouse!r}): it carries "
-                               f"its own kit, {spec.kit.describe()}")
-        lighthouse_named(lighthouse)
+    spec.lighthouse_for(lighthouse)
     problem = _Problem(spec, objective, n, max_degree, evaluations, seed, family, lighthouse, policies)
     if family == "lattice-hole":
         if max_degree < 4:
@@ -197,7 +195,7 @@ class _Tally:
     def __init__(self, problem: _Problem, progress: Callable[[int, float], None] | None):
         self.problem, self.progress = problem, progress
         self.done = self.failures = 0
-        self.best: tuple[float, World | LatticeHoles, int] | None = None
+        self.best: tuple[float, World | LatticeHoles, tuple[int, int]] | None = None
         self.every = max(1, problem.evaluations // HISTORY_POINTS)
         self.history: list[tuple[int, float]] = []
 
@@ -209,12 +207,12 @@ class _Tally:
         """The score of ``cand`` (−∞, not run and not counted, once the budget is spent)."""
         if self.done >= self.problem.evaluations:
             return -math.inf
-        score, cost = self.problem.run(cand)
+        score, costs = self.problem.run(cand)
         self.done += 1
-        if cost is None:
+        if costs is None:
             self.failures += 1
         elif score > self.best_score:
-            self.best = (score, cand, cost)
+            self.best = (score, cand, costs)
         if self.done % self.every == 0 or self.done == self.problem.evaluations:
             self.history.append((self.done, self.best_score))
             if self.progress is not None:
@@ -225,9 +223,9 @@ class _Tally:
         p = self.problem
         found = None
         if self.best is not None:
-            score, cand, cost = self.best
+            score, cand, (cost, counted) = self.best
             holes = cand.hole_names() if isinstance(cand, LatticeHoles) else None
-            found = Found(p.world_of(cand), score, cost, holes)
+            found = Found(p.world_of(cand), score, cost, counted, holes)
         return SearchResult(p.spec.name, p.objective, p.n, p.max_degree, self.done, p.seed, p.family, found,
                             self.failures, self.history, spec=p.spec)
 
