@@ -29,7 +29,7 @@ from __future__ import annotations
 import math
 
 from topomark.reference.bench.plan import CASE_5_K, FRACTIONS
-from topomark.reference.bench.reports.section62_figures import means
+from topomark.reference.bench.reports.section62_figures import fraction_table, means
 from topomark.reference.bench.reports.stats import mean, num
 from topomark.reference.bench.reports.text import yes
 
@@ -83,12 +83,9 @@ def figure_613_v2(g: dict, families: tuple[str, ...]) -> list[str]:
         sizes = sorted(s for s in fr["0"] if s in basic and s in v1b)
         if not sizes:
             continue
-        lines += [f"## Figure 6.13 for Version-2 ({fam}): mean cost per fraction of marked places", "",
-                  "| size | basic (single dir. V-marker) | " + " | ".join(f"{float(f):.0%}" for f in FRACTIONS)
-                  + " | case-1b (m V-E-markers) |", "|---:|---:|" + "---:|" * len(FRACTIONS) + "---:|"]
-        for s in sizes:
-            cells = [f"{fr[f][s]:,.0f} [{used[f][s]:,.0f}]" if s in fr[f] else "—" for f in FRACTIONS]
-            lines.append(f"| {s} | {basic[s]:,.0f} | " + " | ".join(cells) + f" | {v1b[s]:,.0f} |")
+        lines += fraction_table(f"## Figure 6.13 for Version-2 ({fam}): mean cost per fraction of marked places",
+                                sizes, basic, lambda f, s: f"{fr[f][s]:,.0f} [{used[f][s]:,.0f}]" if s in fr[f] else "—",
+                                v1b, "case-1b (m V-E-markers)")
         mono = [all(fr[a][s] >= fr[b][s] for a, b in zip(FRACTIONS, FRACTIONS[1:]) if s in fr[a] and s in fr[b])
                 for s in sizes]
         near = [abs(math.log(fr["0"][s] / basic[s])) < abs(math.log(fr["0"][s] / v1b[s])) for s in sizes]

@@ -41,7 +41,7 @@ from topomark.reference.bench.plan import FIGURE_613_SIZES, FRACTIONS
 from topomark.reference.bench.reports.plots import curve, finish, new, reference
 from topomark.reference.bench.reports.stats import cost_per_m, drop_trips, mean, measured, net_cost, num
 
-__all__ = ["EDGEINFO", "PLOTS", "findings", "figure_613", "plots", "marked_places", "means"]
+__all__ = ["EDGEINFO", "PLOTS", "findings", "figure_613", "fraction_table", "plots", "marked_places", "means"]
 
 FAMILIES6 = ("lattice-hole", "complete-hole")
 
@@ -244,6 +244,17 @@ def _over_bound(g: dict, fam: str, alg: str) -> bool:
                if k[0] == fam and k[1] == alg and k[2] == "" for r in rs)
 
 
+def fraction_table(heading: str, sizes: list[int], basic: dict[int, float], cells, right: dict[int, float],
+                   right_label: str) -> list[str]:
+    """Figure 6.13's table: per size, basic's mean cost, ``cells(f, s)`` for each fraction of :data:`FRACTIONS`,
+    and the fully marked algorithm's mean cost (``right``, headed ``right_label``)."""
+    lines = [heading, "", "| size | basic (single dir. V-marker) | " + " | ".join(f"{float(f):.0%}" for f in FRACTIONS)
+             + f" | {right_label} |", "|---:|---:|" + "---:|" * len(FRACTIONS) + "---:|"]
+    for s in sizes:
+        lines.append(f"| {s} | {basic[s]:,.0f} | " + " | ".join(cells(f, s) for f in FRACTIONS) + f" | {right[s]:,.0f} |")
+    return lines
+
+
 def figure_613(exp, g: dict) -> list[str]:
     lines = ["Fractions (the thesis gives none): `marked-fraction=f` gives Version-1 K = max(4, Σ_{i=1}^{⌊f·n⌋} i) "
              "markers, which mark exactly ⌊f·n⌋ places uniquely (v0 one marker, the j-th new place j + 1); K ≥ 4 is "
@@ -257,13 +268,10 @@ def figure_613(exp, g: dict) -> list[str]:
         sizes = sorted(s for s in fr["0"] if s in basic and s in v3a)
         if not sizes:
             continue
-        lines += [f"## Figure 6.13 ({fam}): mean cost of Version-1 per fraction of uniquely marked places", "",
-                  "| size | basic (single dir. V-marker) | " + " | ".join(f"{float(f):.0%}" for f in FRACTIONS)
-                  + " | case-3a (Σ V-markers) |", "|---:|---:|" + "---:|" * len(FRACTIONS) + "---:|"]
-        for s in sizes:
-            cells = [f"{fr[f][s]:,.0f} [{marked_places(used[f][s]) / n.get(s, math.inf):.0%}]" if s in fr[f] else "—"
-                     for f in FRACTIONS]
-            lines.append(f"| {s} | {basic[s]:,.0f} | " + " | ".join(cells) + f" | {v3a[s]:,.0f} |")
+        lines += fraction_table(
+            f"## Figure 6.13 ({fam}): mean cost of Version-1 per fraction of uniquely marked places", sizes, basic,
+            lambda f, s: f"{fr[f][s]:,.0f} [{marked_places(used[f][s]) / n.get(s, math.inf):.0%}]" if s in fr[f]
+            else "—", v3a, "case-3a (Σ V-markers)")
         lines.append("")
         mono = [all(fr[a][s] >= fr[b][s] for a, b in zip(FRACTIONS, FRACTIONS[1:])) for s in sizes]
         near = lambda x, a, b: abs(math.log(x / a)) < abs(math.log(x / b))  # noqa: E731
