@@ -5,10 +5,12 @@ runtime dependencies -- networkx, z3, hypothesis -- come from the running
 interpreter, or, when the tests run in a venv themselves, from that venv) with
 ``pip install --no-deps --no-build-isolation``.  Without build
 isolation the venv must already hold the build backend the project declares
-(``[build-system] requires``); the venv's bundled setuptools may be older than
-that, and only setuptools >= 70.1 builds wheels without the separate ``wheel``
-package, so those requirements and ``wheel`` are installed into the venv first,
-through pip as configured on this machine.
+(``[build-system] requires``), so it is installed into the venv first, through
+pip as configured on this machine.
+
+The layout these tests pin: ``topomark/`` is the package, and its ``spec``,
+``reference`` and ``proofs`` are links to the root folders of those names, so
+the checkout imports as ``topomark`` and the wheel is built straight from it.
 """
 
 from __future__ import annotations
@@ -23,6 +25,7 @@ import sys
 import tempfile
 import tomllib
 import venv
+import zipfile
 from pathlib import Path
 
 import pytest
@@ -92,13 +95,13 @@ def _make_venv(where: Path) -> Path:
     venv.EnvBuilder(system_site_packages=True, with_pip=True, clear=True).create(where)
     python = where / "bin" / "python"
     _share_running_environment(python, where.parent)
-    _run([python, "-m", "pip", "install", "-q", *BUILD_REQUIRES, "wheel"], cwd=where)
+    _run([python, "-m", "pip", "install", "-q", *BUILD_REQUIRES], cwd=where)
     return python
 
 
 @contextlib.contextmanager
 def _build_lock():
-    """pip builds in the source tree (build/, *.egg-info): one install of ROOT at a time, across processes."""
+    """One install of ROOT at a time, across processes (a build reads the tree while another may write to it)."""
     with open(Path(tempfile.gettempdir()) / "topomark-install-test.lock", "w") as fh:
         fcntl.flock(fh, fcntl.LOCK_EX)
         try:
@@ -168,18 +171,45 @@ def test_editable_install_into_a_fresh_venv(tmp_path, outside):
     _console_script(venv_dir, outside)
 
 
-def test_repository_layout_matches_the_packages():
+LINKS = ("spec", "reference", "proofs")
+"""The root folders that ``topomark/`` reaches through links of the same name."""
+
+
+def checkout_files() -> set[str]:
+    """Every file of the package in the checkout, as its path inside the wheel (``topomark/spec/world.py``)."""
+    found = set()
+    for path in (ROOT / "topomark").rglob("*"):
+        if path.is_file() and "__pycache__" not in path.parts:
+            found.add(str(path.relative_to(ROOT)))
+    for link in LINKS:
+        for path in (ROOT / link).rglob("*"):
+            if path.is_file() and "__pycache__" not in path.parts:
+                found.add(str(Path("topomark") / path.relative_to(ROOT)))
+    return found
+
+
+def test_repository_layout_is_the_package():
+    for link in LINKS:
+        path = ROOT / "topomark" / link
+        assert path.is_symlink() and path.resolve() == ROOT / link, f"topomark/{link} must link to ../{link}"
+        assert (ROOT / link / "__init__.py").is_file()
     meta = tomllib.loads((ROOT / "pyproject.toml").read_text())
-    dirs = meta["tool"]["setuptools"]["package-dir"]
-    assert dirs == {"topomark": "face", "topomark.spec": "spec", "topomark.reference": "reference",
-                    "topomark.proofs": "proofs"}
-    packages = meta["tool"]["setuptools"]["packages"]
-    folders = {str(p.parent.relative_to(ROOT)) for top in ("face", "spec", "reference", "proofs")
-               for p in (ROOT / top).rglob("__init__.py") if "examples" not in p.parts}
-    declared = {"/".join([dirs[".".join(p.split(".")[:2])] if "." in p else dirs[p], *p.split(".")[2:]])
-                for p in packages}
-    assert folders == declared  # a new package folder must be declared, or a wheel would miss it
-    for d in declared:
-        assert (ROOT / d / "__init__.py").is_file()
+    assert meta["tool"]["hatch"]["build"]["targets"]["wheel"]["packages"] == ["topomark"]
     assert meta["project"]["scripts"]["topomark"] == "topomark.reference.cli.main:main"
+    # every folder holding modules is a package, or it would import as a namespace package from the checkout
+    for top in ("topomark", *LINKS):
+        for path in (ROOT / top).rglob("*.py"):
+            if "examples" not in path.parts and "__pycache__" not in path.parts:
+                assert (path.parent / "__init__.py").is_file(), f"{path.parent} holds modules but no __init__.py"
     assert sys.version_info >= (3, 11)
+
+
+def test_the_wheel_holds_exactly_the_checkouts_files(tmp_path):
+    """A module deleted from the checkout is gone from the wheel, a new one is in it: no stale build copy."""
+    with _build_lock():
+        _run([sys.executable, "-m", "pip", "wheel", "-q", "--no-deps", "--no-build-isolation", "-w", tmp_path, ROOT],
+             cwd=tmp_path)
+    (wheel,) = tmp_path.glob("topomark-*.whl")
+    with zipfile.ZipFile(wheel) as z:
+        names = {n for n in z.namelist() if ".dist-info/" not in n}
+    assert names == checkout_files(), (sorted(names - checkout_files()), sorted(checkout_files() - names))

@@ -4,7 +4,7 @@ The folders of ``reference/`` are ranked top to bottom (:data:`LAYERS`); a
 module may import its own folder's modules and those of any folder ranked
 below its own, never one above.  ``proofs/`` sits under every folder of
 ``reference/`` that uses it (the CLI's search commands, the wheel worlds) and
-``spec/`` under everything.  The package's face (``face/``, installed as
+``spec/`` under everything.  The package's face (``topomark/``, imported as
 ``topomark`` itself: ``import topomark``, ``python -m topomark``) sits on top of
 everything: it may import any folder, and no folder may import it.  Imports are read from the source (every ``import``
 statement, including those inside functions), so a lazy import cannot hide an
@@ -19,7 +19,7 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
-FACE = "face"
+FACE = "topomark"
 """The folder of the ``topomark`` package's own modules (``topomark``, ``topomark.exploration``, ...)."""
 LAYERS = (
     (FACE,),

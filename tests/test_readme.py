@@ -5,7 +5,7 @@ file points at anything a reader of the repository cannot see.
   of the hand-written pages of ``docs/`` is accepted by the command's own parser.
 * The README stays short (at most :data:`README_MAX_LINES` lines): the rest lives in ``docs/``.
 * No prose — README, CHANGELOG, ``docs/**/*.md``, the module docstrings of ``spec/``, ``reference/``,
-  ``proofs/`` and ``face/`` — mentions an issue number, "this session", "this machine", a guide outside the
+  ``proofs/`` and ``topomark/`` — mentions an issue number, "this session", "this machine", a guide outside the
   repository, or a path outside it.
 """
 
@@ -63,7 +63,7 @@ def prose_files() -> list[Path]:
 
 def module_docstrings() -> dict[str, str]:
     found = {}
-    for folder in ("spec", "reference", "proofs", "face"):
+    for folder in ("spec", "reference", "proofs", "topomark"):
         for path in sorted((ROOT / folder).rglob("*.py")):
             doc = ast.get_docstring(ast.parse(path.read_text(encoding="utf-8")))
             if doc:
