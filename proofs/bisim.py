@@ -36,7 +36,7 @@ from collections import deque
 from dataclasses import dataclass
 from typing import Iterable
 
-from topomark.spec.errors import Violation
+from topomark.spec.errors import Violation, clip
 from topomark.spec.isomorphism import find_isomorphism
 from topomark.spec.robot import State, sense, step
 from topomark.spec.signature import Signature
@@ -55,7 +55,7 @@ __all__ = [
 Pair = tuple[State, State]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class Distinction:
     """A motion sequence ``M`` after which the robot perceives different things in A and B.
 
@@ -68,6 +68,14 @@ class Distinction:
     motions: tuple[int, ...]
     perceptions_a: tuple[Signature, ...]
     perceptions_b: tuple[Signature, ...]
+
+    def __repr__(self) -> str:
+        """``Distinction(motions=(1, 0, 2), last perceptions [3,V,A] and [3,-,A])``: the sequence (cut when
+        long) and the perceptions that differ."""
+        motions = clip(repr(self.motions), 300, note="")
+        a = clip(str(self.perceptions_a[-1]), 200) if self.perceptions_a else "-"
+        b = clip(str(self.perceptions_b[-1]), 200) if self.perceptions_b else "-"
+        return f"Distinction(motions={motions}, last perceptions {a} and {b})"
 
 
 def _path(parent: dict[Pair, tuple[Pair, int] | None], pair: Pair) -> list[int]:

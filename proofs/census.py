@@ -263,8 +263,15 @@ class SizeRow:
         return dict(self.__dict__)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class CensusResult:
+    """Every placement of a marker class on every small world, grouped by the language the robot perceives.
+
+    ``rows`` counts worlds, placements and languages per size (:class:`SizeRow`); :attr:`languages` and
+    :attr:`ambiguous` are the totals up to ``max_vertices``; ``smallest_counterexample`` is the smallest
+    indistinguishable, non-isomorphic pair (re-checked), or None when the class suffices at these sizes.
+    """
+
     marker: str
     max_vertices: int
     max_degree: int
@@ -279,6 +286,15 @@ class CensusResult:
     @property
     def ambiguous(self) -> int:
         return self.rows[-1].ambiguous_upto if self.rows else 0
+
+    def __repr__(self) -> str:
+        """``CensusResult(marker='none', max_vertices=4, max_degree=3, 96 placements, 29 languages, 2 ambiguous,
+        counterexample n=3 and n=4, 0.1 s)``."""
+        pair = self.smallest_counterexample
+        found = "no counterexample" if pair is None else f"counterexample n={pair[0].n} and n={pair[1].n}"
+        return (f"CensusResult(marker={self.marker!r}, max_vertices={self.max_vertices}, "
+                f"max_degree={self.max_degree}, {sum(r.placements for r in self.rows)} placements, "
+                f"{self.languages} languages, {self.ambiguous} ambiguous, {found}, {self.seconds:.1f} s)")
 
 
 def placement(world: World, class_name: str, k: int) -> World:

@@ -12,6 +12,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
+from topomark.spec.errors import clip
+
 from topomark.spec.signature import Signature
 from topomark.spec.world import World
 
@@ -33,9 +35,18 @@ class SizeCheck:
                 "cpu_seconds": round(self.cpu_seconds, 3)}
 
 
-@dataclass
+def _worlds(pair: tuple[World, World] | None) -> str:
+    return "" if pair is None else f", worlds n={pair[0].n} and n={pair[1].n}"
+
+
+@dataclass(repr=False)
 class SearchResult:
-    """Outcome ``found`` | ``none`` | ``unknown`` with, when found, the re-checked witness."""
+    """Outcome ``found`` | ``none`` | ``unknown`` with, when found, the re-checked witness.
+
+    ``worlds`` is the pair found (indistinguishable and not extended-isomorphic, re-checked), ``motions``
+    and ``perceptions`` a walk covering both, ``relation`` the bisimulation; ``checks`` holds one
+    :class:`SizeCheck` per solver call and ``reason`` why the search answered ``unknown``.
+    """
 
     outcome: str
     marker: str
@@ -53,6 +64,14 @@ class SearchResult:
     @property
     def found(self) -> bool:
         return self.outcome == "found"
+
+    def __repr__(self) -> str:
+        """``SearchResult(found, marker='none', max_vertices=4, max_degree=3, worlds n=3 and n=4, 5 size checks,
+        0.3 s)``: the answer in one short line (the worlds and the walk stay attributes)."""
+        reason = f", reason: {clip(self.reason, 300)}" if self.reason else ""
+        return (f"SearchResult({self.outcome}, marker={self.marker!r}, max_vertices={self.max_vertices}, "
+                f"max_degree={self.max_degree}{', planar' if self.planar else ''}{_worlds(self.worlds)}, "
+                f"{len(self.checks)} size checks, {self.seconds:.1f} s{reason})")
 
     def to_json(self) -> dict[str, Any]:
         from topomark.spec.worldfile import world_to_json
@@ -73,9 +92,13 @@ class SearchResult:
         return out
 
 
-@dataclass
+@dataclass(repr=False)
 class ProofReport:
-    """A bounded proof attempt: ``proved`` | ``counterexample`` | ``unknown``."""
+    """A bounded proof attempt: ``proved`` | ``counterexample`` | ``unknown``.
+
+    ``bounds`` are the sizes it covers, ``symmetry_breaking`` the constraints added to the solver's problem,
+    ``search`` the search behind it (its pair when there is a counterexample).
+    """
 
     outcome: str
     marker: str
@@ -88,6 +111,12 @@ class ProofReport:
     @property
     def proved(self) -> bool:
         return self.outcome == "proved"
+
+    def __repr__(self) -> str:
+        """``ProofReport(proved, marker='directional-vertex', max_vertices=3, max_degree=2, 0.1 s)``."""
+        bounds = ", ".join(f"{k}={v}" for k, v in self.bounds.items())
+        return (f"ProofReport({self.outcome}, marker={self.marker!r}, {clip(bounds, 200)}"
+                f"{_worlds(self.search.worlds)}, {self.seconds:.1f} s)")
 
     def to_json(self) -> dict[str, Any]:
         out = self.search.to_json()

@@ -25,6 +25,7 @@ __all__ = [
     "TopomarkError",
     "InvalidInput",
     "InvalidWorld",
+    "InvalidKeyword",
     "Violation",
     "CheckFailure",
     "require",
@@ -145,6 +146,14 @@ class InvalidWorld(InvalidInput):
     """A rotation system, marker or start that violates §3.1.1."""
 
 
+class InvalidKeyword(InvalidInput, TypeError):
+    """A keyword argument a Python function of topomark does not take (a misspelt option, say).
+
+    Both bad input (an :class:`InvalidInput`, as every refusal of topomark) and a :class:`TypeError`, as Python
+    raises for an unexpected keyword of any function, so either ``except`` catches it.
+    """
+
+
 @dataclass(frozen=True)
 class Violation:
     """A structured description of a failed check.
@@ -202,7 +211,7 @@ class ExplorerFault(TopomarkFault):
 
     A bug in the explorer (exit 3), never the checker's verdict: an explorer does not raise
     :class:`CheckFailure`.  Where the thesis predicts such an inconsistency (a lighthouse whose place or
-    back-link may not be explicit, L1346) the explorer raises :class:`AlgorithmFailed` instead.  Under
+    back-link may not be explicit, §5.2.1) the explorer raises :class:`AlgorithmFailed` instead.  Under
     ``drive`` the world is an outside program, and the same finding shows that its answers fit no world.
     """
 
@@ -232,7 +241,7 @@ class AlgorithmStopped(TopomarkError):
 class AlgorithmFailed(AlgorithmStopped):
     """The algorithm reports that it cannot go on (e.g. no lighthouse within the walk limit, §5.1).
 
-    :attr:`walk_steps`: the steps a lighthouse search walked before it gave up (the whole limit, L1332), which
+    :attr:`walk_steps`: the steps a lighthouse search walked before it gave up (the whole limit, §5.1), which
     the run reports as it reports a found lighthouse's walk; None for any other failure.
     """
 

@@ -35,19 +35,24 @@ from collections import Counter, deque
 from dataclasses import dataclass
 from typing import Any, Hashable
 
-from topomark.spec.errors import Violation
+from topomark.spec.errors import Violation, clip
 from topomark.spec.signature import Embedded, Marked, signature_at
 
 __all__ = ["Witness", "IsoResult", "anchored", "find_isomorphism", "verify_witness", "local_class", "marks_at",
            "describe_marks"]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class Witness:
     """An extended isomorphism: ``vertex_map[v] = f(v)``; exit i of v ↦ exit (i + offsets[v]) mod deg."""
 
     vertex_map: dict[Any, Any]
     offsets: dict[Any, int]
+
+    def __repr__(self) -> str:
+        """``Witness(4 vertices: '0'->'a' +1, '1'->'b' +0, ...)``: the first pairs of the map, in one short line."""
+        pairs = ", ".join(f"{v!r}->{w!r} +{self.offsets.get(v, 0)}" for v, w in self.vertex_map.items())
+        return f"Witness({len(self.vertex_map)} vertices: {clip(pairs, 400, note='')})"
 
     def image(self, g_a: Marked, dart: tuple[Any, int]) -> tuple[Any, int]:
         v, i = dart
@@ -60,7 +65,7 @@ class Witness:
         }
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class IsoResult:
     """A verdict with its certificate: a witness when isomorphic, else the first mismatch."""
 
@@ -68,6 +73,12 @@ class IsoResult:
     witness: Witness | None = None
     mismatch: Violation | None = None
     mapped: int = 0  # how many vertices the (best) attempt had matched
+
+    def __repr__(self) -> str:
+        """The verdict and its certificate in one short line."""
+        if self.isomorphic:
+            return f"IsoResult(isomorphic, {self.witness!r})"
+        return f"IsoResult(not isomorphic, {self.mapped} vertices mapped, mismatch: {clip(str(self.mismatch), 500)})"
 
     def __bool__(self) -> bool:
         return self.isomorphic

@@ -3,12 +3,12 @@
 A world is an embedded graph (§3.1.1: each vertex's exits in clockwise order) with markers and a start; a robot
 that senses only degree and markers explores it and must build a map extended-isomorphic to it (§3.1.3).  This
 package is the face of topomark: the functions below wrap what the ``topomark`` command runs, so a program gets
-the same checks, the same verdicts and the same errors (:class:`topomark.spec.errors.InvalidInput` for bad input,
-:class:`topomark.spec.errors.CheckFailure` when topomark's own checks disagree).
+the same checks, the same verdicts and the same errors (:class:`InvalidInput` for bad input, :class:`CheckFailure`
+when topomark's own checks disagree).
 
 =========================================  =====================================================================
 :func:`load_world`, :func:`save_world`     read and write a world file (``spec/world.schema.json``)
-:func:`generate`                           a named world family (``topomark world``): lattice, cycle, wheel-a...
+:func:`generate`                           a world from a generator (``topomark world``), its text or a world file
 :func:`explore`                            a checked exploration (``topomark explore``); ``.map``, ``.verified``
 :func:`check_map`                          a map judged against a world (``topomark check-map``)
 :func:`isomorphic`                         extended isomorphism (§3.1.3): the witness, or None
@@ -22,61 +22,89 @@ the same checks, the same verdicts and the same errors (:class:`topomark.spec.er
 :mod:`topomark.strategies`                 hypothesis strategies for random worlds and isomorphic copies
 =========================================  =====================================================================
 
-Everything is imported when first used (PEP 562), so ``import topomark`` stays fast.
+The types a program annotates with are here too: :class:`World` and :data:`WorldLike` (what every function
+takes as a world: a World, a world file, a generator text, a rotation or a networkx ``PlanarEmbedding``), the
+results (:class:`Outcome`, :class:`MapVerdict`, :class:`Witness`, :class:`ReplayResult`, :class:`Distinction`,
+:class:`SearchResult`, :class:`ProofReport`, :class:`CensusResult`, :class:`AdversarialResult`,
+:class:`AlgorithmSpec`) and the errors.  Bad input raises :class:`InvalidInput`; a keyword a function does not
+take raises :class:`InvalidKeyword`, which is both an InvalidInput and a ``TypeError`` (as Python raises for an
+unexpected keyword), naming the closest keywords.  Each result's ``repr`` is one short line saying what it is;
+its data are its attributes.
+
+Everything is imported when first used (PEP 562), so ``import topomark`` stays fast; type checkers see every
+name (a misspelt one is an error, as in any module).
 
 Examples
 --------
 >>> import topomark
 >>> world = topomark.generate("lattice", rows=3, cols=3)
 >>> run = topomark.explore(world, algorithm="basic")
->>> assert run.verified and topomark.isomorphic(run.map, world, markers=False)
+>>> assert run.verified and run.map is not None and topomark.isomorphic(run.map, world, markers=False)
+>>> run  # doctest: +ELLIPSIS
+Outcome(algorithm='basic', world n=9 m=12, cost=..., correct, verified, ... checks, ... trace records)
 >>> pair = topomark.search("none", max_vertices=4, max_degree=3).worlds  # found by Z3, re-checked
+>>> assert pair is not None
 >>> topomark.distinguish(*pair) is None  # no motion sequence tells them apart (Figure 3.4's point)
 True
 """
 
-from __future__ import annotations
+import importlib as _importlib
+import typing as _typing
+from importlib.metadata import PackageNotFoundError as _NotInstalled, version as _version
 
-import importlib
-from importlib.metadata import PackageNotFoundError, version
-from typing import TYPE_CHECKING, Any
-
-if TYPE_CHECKING:  # for type checkers only: at run time each name is imported when first used
+if _typing.TYPE_CHECKING:  # type checkers see every public name; at run time each is imported when first used
     from topomark import strategies
-    from topomark.exploration import algorithms, check_map, explore, isomorphic, replay
-    from topomark.indistinguishability import census, distinguish, prove, search
-    from topomark.worlds import generate, load_world, save_world
-    from topomark.worst import adversarial_search, worst_case
+    from topomark.exploration import (AlgorithmSpec, Listed, MapVerdict, Outcome, Policies, ReplayResult, Witness,
+                                      algorithms, check_map, explore, isomorphic, replay)
+    from topomark.indistinguishability import (CensusResult, Distinction, ProofReport, SearchResult, census,
+                                               distinguish, prove, search)
+    from topomark.spec.errors import (AlgorithmFailed, AlgorithmStopped, CheckFailure, ExplorerFault,
+                                      InvalidInput, InvalidKeyword, InvalidWorld, LimitReached, OutOfMarkers,
+                                      TopomarkError, TopomarkFault, Violation)
+    from topomark.spec.world import Start
+    from topomark.worlds import World, WorldLike, generate, load_world, save_world
+    from topomark.worst import AdversarialResult, adversarial_search, worst_case
+
+_LAZY = {
+    "topomark.worlds": ("load_world", "save_world", "generate", "World", "WorldLike"),
+    "topomark.spec.world": ("Start",),
+    "topomark.exploration": ("explore", "check_map", "isomorphic", "replay", "algorithms", "Outcome", "MapVerdict",
+                             "Witness", "ReplayResult", "AlgorithmSpec", "Listed", "Policies"),
+    "topomark.indistinguishability": ("distinguish", "search", "prove", "census", "Distinction", "SearchResult",
+                                      "ProofReport", "CensusResult"),
+    "topomark.worst": ("worst_case", "adversarial_search", "AdversarialResult"),
+    "topomark.spec.errors": ("TopomarkError", "InvalidInput", "InvalidKeyword", "InvalidWorld", "CheckFailure",
+                             "Violation", "TopomarkFault", "ExplorerFault", "AlgorithmStopped", "AlgorithmFailed",
+                             "LimitReached", "OutOfMarkers"),
+}
+_HOME = {name: module for module, names in _LAZY.items() for name in names}
 
 __all__ = ["__version__", "load_world", "save_world", "generate", "explore", "check_map", "isomorphic", "replay",
            "distinguish", "search", "prove", "census", "algorithms", "worst_case", "adversarial_search",
-           "strategies"]
+           "strategies",
+           "World", "WorldLike", "Start", "Policies", "Outcome", "MapVerdict", "Witness", "ReplayResult",
+           "Distinction", "SearchResult", "ProofReport", "CensusResult", "AdversarialResult", "AlgorithmSpec",
+           "Listed",
+           "TopomarkError", "InvalidInput", "InvalidKeyword", "InvalidWorld", "CheckFailure", "Violation",
+           "TopomarkFault", "ExplorerFault", "AlgorithmStopped", "AlgorithmFailed", "LimitReached", "OutOfMarkers"]
 
 try:
-    __version__: str = version("topomark")
-except PackageNotFoundError:  # pragma: no cover - a source tree nobody installed cannot import topomark at all
+    __version__: str = _version("topomark")
+except _NotInstalled:  # pragma: no cover - a source tree nobody installed cannot import topomark at all
     __version__ = "0+unknown"
 
-_LAZY = {
-    "load_world": "topomark.worlds", "save_world": "topomark.worlds", "generate": "topomark.worlds",
-    "explore": "topomark.exploration", "check_map": "topomark.exploration", "isomorphic": "topomark.exploration",
-    "replay": "topomark.exploration", "algorithms": "topomark.exploration",
-    "distinguish": "topomark.indistinguishability", "search": "topomark.indistinguishability",
-    "prove": "topomark.indistinguishability", "census": "topomark.indistinguishability",
-    "worst_case": "topomark.worst", "adversarial_search": "topomark.worst",
-}
-
-
-def __getattr__(name: str) -> Any:
-    """The public names, imported on first use (PEP 562); ``strategies`` is the submodule itself."""
-    if name == "strategies":
-        return importlib.import_module("topomark.strategies")
-    if name in _LAZY:
-        value = getattr(importlib.import_module(_LAZY[name]), name)
-        globals()[name] = value  # the next look-up is an ordinary attribute
-        return value
-    raise AttributeError(f"module 'topomark' has no attribute {name!r}")
+if not _typing.TYPE_CHECKING:  # hidden from type checkers, so that a misspelt name is an error there
+    def __getattr__(name: str) -> object:
+        """The public names, imported on first use (PEP 562); ``strategies`` is the submodule itself."""
+        if name == "strategies":
+            return _importlib.import_module("topomark.strategies")
+        if name in _HOME:
+            value = getattr(_importlib.import_module(_HOME[name]), name)
+            globals()[name] = value  # the next look-up is an ordinary attribute
+            return value
+        raise AttributeError(f"module 'topomark' has no attribute {name!r}")
 
 
 def __dir__() -> list[str]:
-    return sorted(set(globals()) | set(__all__))
+    """The public names (``__all__``) and the module's own dunder attributes; nothing the module uses inside."""
+    return sorted(set(__all__) | {name for name in globals() if name.startswith("__") and name.endswith("__")})

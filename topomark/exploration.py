@@ -27,7 +27,8 @@ import os
 from collections.abc import Iterable, Mapping
 from typing import Any, cast
 
-from topomark.reference.algorithms.registry import AlgorithmSpec, Listed, listing
+from topomark.keywords import check_keywords
+from topomark.reference.algorithms.registry import AlgorithmSpec, Listed, algorithm_spec, listing
 from topomark.reference.explorers.lighthouses import Lighthouse
 from topomark.reference.explorers.policies import Policies
 from topomark.reference.replay.replay import ReplayResult, replay as _replay
@@ -40,7 +41,7 @@ from topomark.spec.isomorphism import Witness, find_isomorphism, verify_witness
 from topomark.worlds import WorldLike, resolve
 
 __all__ = ["explore", "check_map", "isomorphic", "replay", "algorithms", "Outcome", "MapVerdict", "Witness",
-           "ReplayResult"]
+           "ReplayResult", "AlgorithmSpec", "Listed", "Policies"]
 
 
 def explore(world: WorldLike, algorithm: str = "basic", lighthouse: str | Lighthouse | None = None,
@@ -56,8 +57,13 @@ def explore(world: WorldLike, algorithm: str = "basic", lighthouse: str | Lighth
     ``outcome.trace`` unless ``record=False``.  Other keywords are the algorithm's own options
     (``topomark algorithms``), an underscore standing for the option's hyphen: ``max_models=50``.
 
+    ``world`` may also be a networkx ``PlanarEmbedding`` (its clockwise order is the rotation) or a mapping
+    of each vertex to its neighbours in clockwise order (:func:`topomark.worlds.resolve`).
+
     A violated invariant does not raise: it ends the run with ``outcome.violation`` set (exit 1 in the CLI).
-    Bad input — an unknown algorithm, option or policy, a world the lighthouse cannot use — raises InvalidInput.
+    Bad input — an unknown algorithm or policy, a world the lighthouse cannot use — raises InvalidInput; a
+    keyword that is neither explore's nor an option of the algorithm raises its subclass InvalidKeyword, which
+    is also a TypeError, as Python's own unexpected keywords are.
 
     Examples
     --------
@@ -66,18 +72,32 @@ def explore(world: WorldLike, algorithm: str = "basic", lighthouse: str | Lighth
     (True, True, True)
     >>> explore("cycle:n=4", algorithm="model-tree", max_steps=10).map is None  # stopped: no map
     True
-    >>> explore("cycle:n=4", colour="red")  # doctest: +ELLIPSIS
+    >>> explore("cycle:n=4", algoritm="basic")  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    topomark.spec.errors.InvalidInput: the algorithm basic takes no option --colour (its options: ...)
+    topomark.spec.errors.InvalidKeyword: explore() got an unexpected keyword argument 'algoritm'; did you mean ...
     """
+    spec = algorithm_spec(algorithm)
+    _check_options(spec, options)
     given = {name.replace("_", "-"): value for name, value in options.items()}
     chosen = _policies(policies)
     the_world = resolve(world)
     if trace is None:
-        return _explore(the_world, algorithm, chosen, check, record=record, lighthouse=lighthouse, options=given)
+        return _explore(the_world, spec, chosen, check, record=record, lighthouse=lighthouse, options=given)
     with FileSink(os.fspath(trace)) as sink:
-        return _explore(the_world, algorithm, chosen, check, sink=sink, lighthouse=lighthouse, options=given)
+        return _explore(the_world, spec, chosen, check, sink=sink, lighthouse=lighthouse, options=given)
+
+
+EXPLORE_KEYWORDS = ("world", "algorithm", "lighthouse", "policies", "check", "trace", "record")
+"""The keywords of :func:`explore` itself; the others are the algorithm's options."""
+
+
+def _check_options(spec: AlgorithmSpec, options: Mapping[str, Any]) -> None:
+    """Refuse a keyword that is neither explore's nor an option of ``spec`` (underscores for hyphens)."""
+    takes = [p.name.replace("-", "_") for p in spec.parameters]
+    own = f"the algorithm {spec.name}'s options: {', '.join(takes) or 'none'}"
+    check_keywords("explore", {k.replace("-", "_"): v for k, v in options.items()}, takes,
+                   f"explore() takes {', '.join(EXPLORE_KEYWORDS)}; {own}", suggest=EXPLORE_KEYWORDS)
 
 
 def _policies(policies: Policies | Mapping[str, str] | None) -> Policies | None:

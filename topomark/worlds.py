@@ -19,19 +19,32 @@ Examples
 from __future__ import annotations
 
 import os
-from typing import Any, TypeAlias
+import sys
+from collections.abc import Mapping, Sequence
+from typing import TYPE_CHECKING, Any, TypeAlias, Union
 
+from topomark.keywords import check_keywords
 from topomark.reference.files.outputs import write_output
-from topomark.reference.worlds.argument import resolve_world
-from topomark.reference.worlds.generators import generate as _generate
-from topomark.spec.errors import InvalidInput
+from topomark.reference.worlds.argument import parse_generator, resolve_world
+from topomark.reference.worlds.generators import GENERATORS, PARAMETERS, generate as _generate
+from topomark.spec.errors import InvalidInput, clip
 from topomark.spec.world import World
 from topomark.spec.worldfile import dumps_world, load_world as _load_world
 
+if TYPE_CHECKING:
+    import networkx as nx
+
 __all__ = ["load_world", "save_world", "generate", "resolve", "World", "WorldLike"]
 
-WorldLike: TypeAlias = "World | str | os.PathLike[str]"
-"""What a function of the API takes as a world: a World, a world file, or a generator text."""
+WorldLike: TypeAlias = Union[World, str, os.PathLike[str], Mapping[Any, Sequence[Any]], "nx.PlanarEmbedding[Any]"]
+"""What a function of the API takes as a world: a World, a world file, a generator text
+(``GENERATOR[:NAME=VALUE,...]``), a mapping from each vertex to its neighbours in clockwise order, or a
+networkx ``PlanarEmbedding``."""
+
+NO_ROTATION = ("a networkx {kind} has no rotation system (each vertex's neighbours in clockwise order, §3.1.1), "
+               "which a world needs: give a networkx PlanarEmbedding (networkx.check_planarity(graph) returns one "
+               "for a planar graph) or a dict mapping each vertex to the list of its neighbours in clockwise order")
+"""The refusal of a networkx graph that carries no embedding."""
 
 
 def load_world(path: str | os.PathLike[str]) -> World:
@@ -62,27 +75,59 @@ def save_world(world: World, path: str | os.PathLike[str]) -> None:
     write_output(os.fspath(path), dumps_world(world))
 
 
-def generate(name: str, **params: Any) -> World:
-    """The world of the generator ``name`` (``topomark world --help`` lists them and their defaults).
+def generate(name: str | os.PathLike[str], **params: Any) -> World:
+    """The world ``name`` names: a generator (``topomark world --help`` lists them and their defaults), a
+    generator text such as ``"lattice-hole:rows=5,cols=5"``, or a world file — what ``explore`` and the
+    command line take.
 
-    Parameters not given take their defaults; ``seed=`` picks the random generators' world.
+    Keywords are the generator's parameters, added to those of the text; parameters not given take their
+    defaults, and ``seed=`` picks the random generators' world.  A keyword the generator does not take is
+    :class:`~topomark.spec.errors.InvalidKeyword` (a TypeError too), with the closest parameter names.
 
     Examples
     --------
     >>> generate("lattice", rows=3, cols=3).n
     9
-    >>> generate("lattice-hole", rows=4, cols=4, seed=2).n  # 10% of the cells removed, staying connected
+    >>> generate("lattice-hole:rows=4,cols=4", seed=2).n  # 10% of the cells removed, staying connected
     14
+    >>> generate("lattice", colls=3)  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    topomark.spec.errors.InvalidKeyword: generate() got an unexpected keyword argument 'colls'; did you mean 'cols'? ...
     >>> generate("torus")  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    topomark.spec.errors.InvalidInput: unknown generator 'torus' (choose from cycle, chain, lattice, ...)
+    topomark.spec.errors.InvalidInput: 'torus' is neither a world file nor a generator ...
     """
-    return _generate(name, **params)
+    if not isinstance(name, (str, os.PathLike)):
+        raise InvalidInput(f"a world name must be a generator, a generator text or a world file, "
+                           f"not {type(name).__name__}")
+    text = os.fspath(name)
+    if not params:
+        return resolve_world(text)
+    base, given = parse_generator(text)
+    if base not in GENERATORS or os.path.exists(text):
+        if os.path.exists(text) or text.endswith(".json"):
+            raise InvalidInput(f"{clip(text, 80)} is a world file: it takes no generator parameters "
+                               f"(given: {', '.join(params)})")
+        return resolve_world(text)  # names what is wrong with the text, with the closest generators
+    accepted = ", ".join(PARAMETERS[base]) or "no parameters"
+    check_keywords("generate", params, PARAMETERS[base], f"the generator {base} takes {accepted}")
+    twice = sorted(given.keys() & params.keys())
+    if twice:
+        raise InvalidInput(f"parameter {twice[0]!r} given twice: in {clip(text, 80, quote=True)} and as a keyword")
+    return _generate(base, **given, **params)
 
 
 def resolve(world: WorldLike) -> World:
-    """``world`` itself, or the world a world file or a ``GENERATOR[:NAME=VALUE,...]`` text names.
+    """``world`` itself, or the world a world file, a ``GENERATOR[:NAME=VALUE,...]`` text, a rotation
+    (vertex ↦ its neighbours in clockwise order) or a networkx ``PlanarEmbedding`` gives.
+
+    A ``PlanarEmbedding`` gives each vertex's neighbours in its clockwise order
+    (``neighbors_cw_order``, networkx's ``cw`` attributes: clockwise as networkx draws the embedding with y
+    pointing north, the convention of ``spec/world.py``).  Vertex names that are not strings become strings
+    (``0`` → ``"0"``; a tuple's parts joined by commas).  A plain networkx graph has no rotation: it is
+    refused, saying how to give one.
 
     Examples
     --------
@@ -90,9 +135,21 @@ def resolve(world: WorldLike) -> World:
     3
     >>> resolve("wheel-a").n  # Figure 3.4's wheel
     5
+    >>> resolve({0: [1, 2], 1: [2, 0], 2: [0, 1]}).rotation["0"]
+    ('1', '2')
     """
     if isinstance(world, World):
         return world
     if isinstance(world, (str, os.PathLike)):
         return resolve_world(os.fspath(world))
-    raise InvalidInput(f"a world must be a World, a world file or a generator text, not {type(world).__name__}")
+    if isinstance(world, Mapping):
+        from topomark.reference.worlds.embedding import from_rotation
+        return from_rotation(world)
+    nx = sys.modules.get("networkx")  # a networkx graph exists only once networkx is imported
+    if nx is not None and isinstance(world, nx.Graph):
+        from topomark.reference.worlds.embedding import from_embedding
+        if isinstance(world, nx.PlanarEmbedding):
+            return from_embedding(world)
+        raise InvalidInput(NO_ROTATION.format(kind=type(world).__name__))
+    raise InvalidInput(f"a world must be a World, a world file, a generator text, a mapping of each vertex to "
+                       f"its neighbours in clockwise order or a networkx PlanarEmbedding, not {type(world).__name__}")

@@ -1,4 +1,4 @@
-"""The worst cost of an algorithm, from Python (thesis §7.2, L2260–L2262).
+"""The worst cost of an algorithm, from Python (thesis §7.2).
 
 :func:`worst_case` is ``topomark worst-case``: the algorithm runs from every start of every embedded world up
 to ``max_vertices`` vertices and degree ``max_degree`` (one world per isomorphism class, one start per orbit
@@ -25,9 +25,9 @@ from typing import Any
 from topomark.reference.worstcase.exhaustive import Setup
 from topomark.reference.worstcase.result import rows
 from topomark.reference.worstcase.resumable import worst_case as _worst_case
-from topomark.reference.worstcase.search import SearchResult, adversarial_search
+from topomark.reference.worstcase.search import AdversarialResult, adversarial_search
 
-__all__ = ["worst_case", "adversarial_search", "SearchResult"]
+__all__ = ["worst_case", "adversarial_search", "AdversarialResult"]
 
 
 def worst_case(algorithm: str = "basic", max_vertices: int = 5, max_degree: int = 4, *,

@@ -135,7 +135,7 @@ class Parameter:
         return number
 
 
-@dataclass(frozen=True, kw_only=True)
+@dataclass(frozen=True, kw_only=True, repr=False)
 class AlgorithmSpec:
     """One registered algorithm (see the module docstring for the two shapes and the explorer contract); every
     field is given by name."""
@@ -291,6 +291,12 @@ class AlgorithmSpec:
             out[name] = known[name].parse(value)
         return out
 
+    def __repr__(self) -> str:
+        """``AlgorithmSpec(name='basic', thesis='§3.3, Algorithm 3.1', bound=..., implemented)``: which algorithm
+        of the registry, in one short line (the kit, options and checks stay attributes)."""
+        bound = clip(self.bound or "none stated", 200)
+        return f"AlgorithmSpec(name={self.name!r}, thesis={self.thesis!r}, bound={bound!r}, {self.status})"
+
     def to_json(self) -> dict[str, Any]:
         """The listing of ``topomark algorithms --json``; ``kit`` is the default lighthouse's (or the fixed kit),
         ``lighthouses`` the strategies a lighthouse algorithm runs with."""
@@ -307,7 +313,7 @@ class AlgorithmSpec:
         return out
 
 
-@dataclass(frozen=True, kw_only=True)
+@dataclass(frozen=True, kw_only=True, repr=False)
 class Listed:
     """An algorithm of the thesis that is listed but cannot be run: the thesis does not give enough of it to
     implement (``reason`` says what is missing, with its lines).  ``family`` places it in the listing only."""
@@ -321,6 +327,10 @@ class Listed:
     def __post_init__(self) -> None:
         if self.status != NOT_IMPLEMENTABLE or not self.reason:
             raise ValueError(f"listed algorithm {self.name}: status {NOT_IMPLEMENTABLE!r}, with its reason")
+
+    def __repr__(self) -> str:
+        """``Listed(name=..., thesis=..., not implementable: <the reason, cut when long>)``."""
+        return f"Listed(name={self.name!r}, thesis={self.thesis!r}, {self.status}: {clip(self.reason, 400)})"
 
     def to_json(self) -> dict[str, Any]:
         """Its ``topomark algorithms --json`` entry: name, thesis reference, status and reason."""

@@ -52,7 +52,7 @@ from collections import deque
 from dataclasses import dataclass
 from typing import Any, Iterable, cast
 
-from topomark.spec.errors import InvalidInput, Violation
+from topomark.spec.errors import InvalidInput, Violation, clip
 from topomark.spec.world import World
 
 from topomark.reference.explorers.lighthouses import Lighthouse
@@ -66,8 +66,17 @@ from topomark.reference.trace.reader import EVENTS, EVENTS_2, load_trace, parse_
 __all__ = ["ReplayResult", "replay", "load_trace", "parse_trace", "EVENTS", "EVENTS_2"]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class ReplayResult:
+    """The verdict of replaying a trace against its world: does every claim of the trace hold?
+
+    ``ok`` is the verdict and ``message`` says what was verified or where the trace first diverges from the
+    world; ``divergence`` is that first failed check (a :class:`~topomark.spec.errors.Violation`) and
+    ``line`` its line in the trace.  ``cost`` and ``iterations`` are what the replay counted, ``layers`` the
+    layers replayed (the robot's, and the algorithm family's where it has one), ``recorded_failure`` whether
+    the trace's end itself records the failure found.
+    """
+
     ok: bool
     message: str
     cost: int
@@ -76,6 +85,14 @@ class ReplayResult:
     line: int | None = None
     recorded_failure: bool = False  # the trace's end claims the failure replay found
     layers: tuple[str, ...] = ("robot", "algorithm-3.1")  # the layers replayed: the robot's and the family's, if any
+
+    def __repr__(self) -> str:
+        """``ReplayResult(ok, cost=5522, iterations=148, layers=robot+algorithm-3.1)``, or the divergence and its
+        line: the verdict in one short line."""
+        where = "" if self.line is None else f"line {self.line}: "
+        verdict = "ok" if self.ok else f"diverged at {where}{clip(self.message, 500)}"
+        return (f"ReplayResult({verdict}, cost={self.cost}, iterations={self.iterations}, "
+                f"layers={'+'.join(self.layers)})")
 
     def to_json(self) -> dict[str, Any]:
         return {"verified": self.ok, "message": self.message, "cost": self.cost, "iterations": self.iterations,

@@ -24,7 +24,7 @@ The trace format is documented in ``spec/trace.md``.
 from __future__ import annotations
 
 import json
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any, Callable
 
 from topomark.spec.errors import (AlgorithmStopped, CheckFailure, InvalidInput, LimitReached, OutOfMarkers,
@@ -36,6 +36,7 @@ from topomark.spec.world import World
 from topomark.spec.worldfile import marker_to_json
 
 from topomark.reference.run.checker import Checker
+from topomark.reference.run.outcome import Outcome
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES, Lighthouse
 from topomark.reference.algorithms.registry import AlgorithmSpec, algorithm_spec
 from topomark.reference.explorers.policies import Policies
@@ -45,64 +46,6 @@ from topomark.reference.trace.records import end_record, op_record, trace_header
 from topomark.reference.trace.sink import ListSink, TraceSink
 
 __all__ = ["Outcome", "explore", "check_run", "prepare_world", "dropped_at_start"]
-
-@dataclass
-class Outcome:
-    n: int
-    m: int
-    cost: int
-    verified: bool
-    iterations: int
-    loop_iterations: int
-    nonloop_iterations: int
-    hypotheses: int
-    hypotheses_rejected: int
-    hypotheses_confirmed: int
-    checks: int
-    by_purpose: dict[str, int]
-    upper_bound: int | None  # the entry's exact cost bound on this world (None: asymptotic or none stated)
-    drop_trips: int = 0  # traversals made only to drop markers (part of cost; the simulator's accounting rule)
-    lighthouse: str | None = "directional-vertex"
-    marker_operations: dict[str, int] = field(default_factory=dict)
-    explorer: Any = None
-    trace: list[dict] = field(default_factory=list)
-    violation: Any = None
-    outcome: str = "correct"
-    claimed: str = "correct"
-    reason: str | None = None
-    kit: str = ""
-    walk_steps: int | None = None  # a lighthouse algorithm: the walk that found v0, or gave up (§5.1, §6.1)
-    lighthouse_at: str | None = None  # a lighthouse algorithm: the world vertex v0 is (the truth; the robot never knows)
-    extra: dict[str, Any] = field(default_factory=dict)  # the algorithm's own counts (its registry's summary_fn)
-    bound_checked: bool = False  # the run was held to ``upper_bound`` (the ``cost-bound`` check)
-
-    @property
-    def map(self) -> World | None:
-        """The explored map as a world (the markers the robot left included), or None when there is none.
-
-        The map is the explorer's S once the algorithm claims a correct end (a ``wrong-map`` run's map is
-        returned all the same: it is what the algorithm claims, to be compared with the world).  None when
-        the algorithm stopped (outcome ``failed`` or ``limit``), when the checker stopped the run before the
-        algorithm finished, or when the explorer keeps no single completed map (``model-tree`` keeps models).
-        """
-        S = getattr(self.explorer, "S", None)
-        if self.claimed != "correct" or S is None or not S.complete():
-            return None
-        return S.to_world()
-
-    def summary(self) -> dict[str, Any]:
-        out = {k: getattr(self, k) for k in (
-            "n", "m", "cost", "drop_trips", "verified", "iterations", "loop_iterations", "nonloop_iterations", "hypotheses",
-            "hypotheses_rejected", "hypotheses_confirmed", "checks", "by_purpose", "upper_bound", "lighthouse",
-            "marker_operations", "outcome", "claimed", "reason", "bound_checked")}
-        if self.lighthouse is not None:
-            out.update(walk_steps=self.walk_steps, lighthouse_at=self.lighthouse_at)
-        out.update(self.extra)
-        out["cost_per_m"] = round(self.cost / self.m, 3)
-        if self.violation is not None:
-            out["violation"] = self.violation.to_json()
-        return out
-
 
 def dropped_at_start(bare: World, state: tuple[str, int], lighthouse: Lighthouse) -> MarkerLayer:
     """``bare``'s marker layer once the robot, starting at ``state``, has established ``lighthouse``: each of its
@@ -376,7 +319,7 @@ def _outcome(world: World, sim: Simulator, explorer, checker: Checker | None, vi
         upper_bound=bound, lighthouse=None if light is None else light.name,
         marker_operations=dict(sorted(sim.operations.items())), explorer=explorer, trace=trace, violation=violation,
         outcome=judged, claimed=claimed, reason=stopped.reason if stopped else None, kit=sim.kit.describe(),
-        bound_checked=checker is not None and "cost-bound" in checker.checks)
+        bound_checked=checker is not None and "cost-bound" in checker.checks, algorithm=spec.name)
 
 
 def _algorithm_counts(outcome: Outcome, spec: AlgorithmSpec, explorer, world: World, v0_state,

@@ -24,7 +24,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, cast
 
-from topomark.spec.errors import CheckFailure
+from topomark.spec.errors import CheckFailure, clip
 from topomark.spec.isomorphism import IsoResult, Witness, find_isomorphism, verify_witness
 from topomark.spec.marker import VertexMarker
 from topomark.spec.world import World
@@ -39,11 +39,25 @@ RULES = {
 }
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class MapVerdict:
+    """Whether a map is extended-isomorphic to its world (§3.1.3), and under which marker rule.
+
+    ``isomorphic`` is the verdict; ``rule`` which markers took part (a key of :data:`RULES`: ``markers``,
+    ``lighthouse`` or ``graph``); ``result`` the certificate: the witness, verified independently, when
+    isomorphic, else the first mismatch.  :meth:`words` says it in a sentence.
+    """
+
     isomorphic: bool
     rule: str
     result: IsoResult
+
+    def __repr__(self) -> str:
+        """``MapVerdict(isomorphic, rule='graph', witness verified)`` or ``MapVerdict(not isomorphic, rule=...,
+        mismatch: ...)``: the verdict in one short line (the witness itself stays in ``result``)."""
+        if self.isomorphic:
+            return f"MapVerdict(isomorphic, rule={self.rule!r}, witness verified)"
+        return f"MapVerdict(not isomorphic, rule={self.rule!r}, mismatch: {clip(str(self.result.mismatch), 600)})"
 
     def to_json(self) -> dict[str, Any]:
         out: dict[str, Any] = {"isomorphic": self.isomorphic, "rule": self.rule, "rule_text": RULES[self.rule]}

@@ -8,6 +8,8 @@ and turn them into :class:`~topomark.spec.world.World` objects here.
   starting from north (the enumeration rule of §3.1.1).
 * :func:`planar` takes the planar (genus 0) embedding networkx finds;
   :func:`from_networkx` chooses between the two.
+* :func:`from_embedding` takes a given networkx ``PlanarEmbedding`` and :func:`from_rotation` a mapping of
+  each vertex to its neighbours in clockwise order, as they are.
 * Vertex names are strings (tuples joined by commas, ``(2, 3)`` -> ``"2,3"``)
   and the rotation dict lists them in natural order (:func:`natural_key`).
 """
@@ -23,7 +25,8 @@ import networkx as nx
 from topomark.spec.errors import InvalidInput
 from topomark.spec.world import World
 
-__all__ = ["natural_key", "from_positions", "circle_positions", "on_circle", "planar", "from_networkx"]
+__all__ = ["natural_key", "from_positions", "circle_positions", "on_circle", "planar", "from_networkx",
+           "from_embedding", "from_rotation"]
 
 _TWO_PI = 2.0 * math.pi
 
@@ -208,3 +211,63 @@ def from_networkx(graph: nx.Graph, pos: Mapping[Hashable, tuple[float, float]] |
     if pos is None:
         return planar(graph)
     return from_positions(graph, pos)
+
+
+# -- an embedding given ------------------------------------------------------------
+def from_embedding(embedding: "nx.PlanarEmbedding[Any]") -> World:
+    """The world of a networkx ``PlanarEmbedding``: each vertex's neighbours in the embedding's clockwise order.
+
+    networkx keeps the order as half-edge attributes: ``cw`` of (u, v) is the neighbour of u that follows v
+    clockwise, ``ccw`` the one before it; ``neighbors_cw_order`` follows ``cw``.  Drawn by networkx
+    (``combinatorial_embedding_to_pos``, y pointing north) that order is clockwise, so it is the rotation of
+    §3.1.1 as :func:`from_positions` reads a drawing.  (Beware ``add_half_edge``'s keywords: ``cw=r`` inserts
+    the new half-edge just *counter*-clockwise of the reference r, ``ccw=r`` just clockwise of it.)  The list
+    of each vertex starts where networkx starts it.  An embedding whose structure networkx itself refuses
+    (``check_structure``) is InvalidInput; node names become strings as in :func:`from_positions`.
+
+    A star drawn with leaves north, east and west of its centre (clockwise: n, e, w):
+
+    >>> emb = nx.PlanarEmbedding()
+    >>> emb.add_half_edge("c", "n"); emb.add_half_edge("c", "e", ccw="n"); emb.add_half_edge("c", "w", cw="n")
+    >>> for leaf in "new":
+    ...     emb.add_half_edge(leaf, "c")
+    >>> from_embedding(emb).rotation["c"]  # n, e, w in cyclic order
+    ('w', 'n', 'e')
+    """
+    if not isinstance(embedding, nx.PlanarEmbedding):
+        raise InvalidInput(f"from_embedding needs a networkx PlanarEmbedding, got {type(embedding).__name__}")
+    if embedding.number_of_nodes() == 0:
+        raise InvalidInput("the embedding has no vertices")
+    try:
+        embedding.check_structure()
+    except nx.NetworkXException as exc:
+        raise InvalidInput(f"the PlanarEmbedding is not a valid embedding: {exc}") from None
+    names = _names(embedding.nodes)
+    order = {v: list(embedding.neighbors_cw_order(v)) for v in embedding.nodes}
+    return _world_from_neighbours(names, order)
+
+
+def from_rotation(rotation: Mapping[Any, Any]) -> World:
+    """The world whose rotation is ``rotation``: each vertex mapped to the list of its neighbours in clockwise
+    order, kept in the mapping's order.  Names that are not strings become strings as in :func:`from_positions`;
+    an unordered collection of neighbours (a set) is refused, since it gives no clockwise order.
+
+    >>> from_rotation({0: [1, 2], 1: [2, 0], 2: [0, 1]}).rotation
+    {'0': ('1', '2'), '1': ('2', '0'), '2': ('0', '1')}
+    """
+    names = _names(rotation)
+    out: dict[str, list[str]] = {}
+    for v, around in rotation.items():
+        if isinstance(around, (str, bytes)) or not isinstance(around, (list, tuple)):
+            raise InvalidInput(f"the neighbours of vertex {names[v]!r} are given as a {type(around).__name__}, "
+                               "which has no order: give them as a list in clockwise order")
+        out[names[v]] = [names[w] if _hashable(w) and w in names else _node_name(w) for w in around]
+    return World(out)
+
+
+def _hashable(x: Any) -> bool:
+    try:
+        hash(x)
+    except TypeError:
+        return False
+    return True

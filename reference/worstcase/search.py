@@ -29,7 +29,7 @@ deterministic). The budget is exact: the generations are sized to it and an offs
 
 :func:`random_baseline` is the comparison the search must beat: the best of as many random worlds
 (:func:`~.moves.random_world`, or random hole patterns for the ``lattice-hole`` family).  :func:`adversarial_search`
-runs both and reports them side by side (:meth:`SearchResult.to_json`); :func:`~.fit.fit_exponents` fits the
+runs both and reports them side by side (:meth:`AdversarialResult.to_json`); :func:`~.fit.fit_exponents` fits the
 growth of the best found over several n.
 """
 
@@ -55,7 +55,7 @@ from topomark.reference.worlds.deterministic import integer_param, seed_param
 from topomark.reference.worstcase.fit import fit_exponents
 from topomark.reference.worstcase.moves import LatticeHoles, move_lattice, move_world, random_lattice, random_world
 
-__all__ = ["adversarial_search", "random_baseline", "fit_exponents", "SearchResult", "Found", "OBJECTIVES",
+__all__ = ["adversarial_search", "random_baseline", "fit_exponents", "AdversarialResult", "Found", "OBJECTIVES",
            "FAMILIES", "MU", "LAMBDA", "START_SHARE"]
 
 OBJECTIVES = ("cost", "cost-per-m", "ratio")
@@ -65,7 +65,7 @@ START_SHARE = 4  # the first generation: a quarter of the budget (at least μ) o
 HISTORY_POINTS = 20  # the history holds the best score after about every 1/20 of the budget
 
 
-@dataclass
+@dataclass(repr=False)
 class Found:
     """The best candidate of a run: its world (start included), score, cost and the part of the cost its exact
     bound counts (``AlgorithmSpec.counted_cost``); ``holes`` for a lattice."""
@@ -75,6 +75,9 @@ class Found:
     cost: int
     counted: int
     holes: list[str] | None = None
+
+    def __repr__(self) -> str:
+        return f"Found(world n={self.world.n} m={self.world.m}, cost={self.cost}, score={self.score:g})"
 
     def to_json(self, spec: AlgorithmSpec) -> dict[str, Any]:
         w = self.world
@@ -88,9 +91,14 @@ class Found:
         return out
 
 
-@dataclass
-class SearchResult:
-    """One search's (or one baseline's) outcome; ``random`` is the random baseline run beside a search."""
+@dataclass(repr=False)
+class AdversarialResult:
+    """One search's (or one baseline's) outcome; ``random`` is the random baseline run beside a search.
+
+    ``best`` is the worst world found (:class:`Found`: the world with its start, its cost and score), a lower
+    bound on the worst case at ``n`` vertices; ``history`` the best score after about every twentieth of the
+    ``evaluations``; ``failures`` the runs that did not map their world.
+    """
 
     algorithm: str
     objective: str
@@ -102,8 +110,19 @@ class SearchResult:
     best: Found | None
     failures: int
     history: list[tuple[int, float]]
-    random: "SearchResult | None" = None
+    random: "AdversarialResult | None" = None
     spec: AlgorithmSpec | None = field(default=None, repr=False)
+
+    def __repr__(self) -> str:
+        """``AdversarialResult(algorithm='basic', objective='cost', n=8, best cost=59 on n=8 m=11, 20 evaluations,
+        seed=4)`` and the baseline's best: the answer in one short line (the worlds stay attributes)."""
+        top = self.best
+        best = "no best" if top is None else f"best cost={top.cost} on n={top.world.n} m={top.world.m}"
+        rival = self.random.best if self.random is not None else None
+        baseline = "" if rival is None else f", random baseline's best cost={rival.cost}"
+        return (f"AdversarialResult(algorithm={self.algorithm!r}, objective={self.objective!r}, n={self.n}, "
+                f"max_degree={self.max_degree}, family={self.family!r}, {best}, {self.evaluations} evaluations, "
+                f"{self.failures} failures, seed={self.seed}{baseline})")
 
     def to_json(self) -> dict[str, Any]:
         spec = self.spec or algorithm_spec(self.algorithm)
@@ -219,14 +238,14 @@ class _Tally:
                 self.progress(self.done, self.best_score)
         return score
 
-    def result(self) -> SearchResult:
+    def result(self) -> AdversarialResult:
         p = self.problem
         found = None
         if self.best is not None:
             score, cand, (cost, counted) = self.best
             holes = cand.hole_names() if isinstance(cand, LatticeHoles) else None
             found = Found(p.world_of(cand), score, cost, counted, holes)
-        return SearchResult(p.spec.name, p.objective, p.n, p.max_degree, self.done, p.seed, p.family, found,
+        return AdversarialResult(p.spec.name, p.objective, p.n, p.max_degree, self.done, p.seed, p.family, found,
                             self.failures, self.history, spec=p.spec)
 
 
@@ -234,14 +253,14 @@ class _Tally:
 def random_baseline(algorithm: str = "basic", n: int = 20, max_degree: int = 4, objective: str = "cost",
                     evaluations: int = 200, seed: int = 0, lighthouse: str | None = None,
                     policies: Policies | None = None, family: str | None = None,
-                    progress: Callable[[int, float], None] | None = None) -> SearchResult:
+                    progress: Callable[[int, float], None] | None = None) -> AdversarialResult:
     """The best of ``evaluations`` random candidates (:func:`~.moves.random_world`, or
     :func:`~.moves.random_lattice` for ``family="lattice-hole"``), drawn from ``random.Random(seed)``."""
     problem = _problem(algorithm, n, max_degree, objective, evaluations, seed, lighthouse, policies, family)
     return _baseline(problem, progress)
 
 
-def _baseline(problem: _Problem, progress: Callable[[int, float], None] | None) -> SearchResult:
+def _baseline(problem: _Problem, progress: Callable[[int, float], None] | None) -> AdversarialResult:
     rng = random.Random(f"random-baseline:{problem.seed}")
     tally = _Tally(problem, progress)
     for _ in range(problem.evaluations):
@@ -282,7 +301,7 @@ def _global_random(seed: int) -> Iterator[None]:
 def adversarial_search(algorithm: str = "basic", n: int = 20, max_degree: int = 4, objective: str = "cost",
                        evaluations: int = 200, seed: int = 0, lighthouse: str | None = None,
                        policies: Policies | None = None, family: str | None = None,
-                       progress: Callable[[int, float], None] | None = None, baseline: bool = True) -> SearchResult:
+                       progress: Callable[[int, float], None] | None = None, baseline: bool = True) -> AdversarialResult:
     """Search for a world (start included) of ``n`` vertices and degrees <= ``max_degree`` maximising
     ``objective`` for ``algorithm``, in ``evaluations`` runs, by DEAP's (μ+λ) strategy (:data:`MU`,
     :data:`LAMBDA`) from a first generation of a quarter of the budget (at least μ) of random candidates
