@@ -221,3 +221,36 @@ def test_only_durations_are_masked_and_an_ellipsis_stands_for_any_lines():
     assert not matches(["a", "...", "d"], ["a", "b"]) and not matches(["a"], ["a", "b"])
     assert expected_exit("topomark census --quiet   # exit 1: 1 ambiguous class") == 1
     assert expected_exit("topomark world cycle -o c.json  # wrote c.json") == 0
+
+
+# ---------------------------------------------------------------- install hints work from a checkout
+
+PIP = re.compile(r"pip install ((?:-e )?)([^\s`);]+)")
+
+
+def install_hints(text: str) -> list[str]:
+    """What each ``pip install`` of ``text`` installs that a checkout cannot: topomark is on no package index,
+    so only the checkout (``.``, ``'.[EXTRA]'``) with the extras ``pyproject.toml`` declares will do."""
+    import tomllib
+
+    extras = set(tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))["project"]
+                 ["optional-dependencies"])
+    wrong = []
+    for m in PIP.finditer(text):
+        target = m.group(2).strip("'\"")
+        extra = re.fullmatch(r"\.(?:\[([\w,-]+)\])?", target)
+        if not extra or not set((extra.group(1) or "").split(",")) - {""} <= extras:
+            wrong.append(m.group(0))
+    return wrong
+
+
+def test_every_install_hint_of_the_readme_and_docs_works_from_a_checkout():
+    pages = [ROOT / "README.md", *sorted((ROOT / "docs").rglob("*.md"))]
+    wrong = [f"{p.relative_to(ROOT)}: {hint}" for p in pages for hint in install_hints(p.read_text(encoding="utf-8"))]
+    assert not wrong, "install from the checkout, python3 -m pip install '.[EXTRA]':\n" + "\n".join(wrong)
+
+
+def test_an_install_from_a_package_index_or_of_an_unknown_extra_is_found():
+    assert install_hints("pip install 'topomark[plot]'; pip install '.[plots]'") == \
+        ["pip install 'topomark[plot]'", "pip install '.[plots]'"]
+    assert install_hints("python3 -m pip install -e '.[test]' and pip install \".[docs]\" or pip install .") == []
