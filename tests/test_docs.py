@@ -1,7 +1,8 @@
 """The documentation's generated pages are what their generators write, and the site's navigation is whole.
 
 ``docs/cli.md`` comes from the parsers (:mod:`topomark.reference.cli.docgen`), ``docs/api.md`` from the
-docstrings of ``topomark.__all__`` (:mod:`topomark.docgen`), ``docs/results/`` from bench run stores
+docstrings of ``topomark.__all__`` (:mod:`topomark.docgen`), ``docs/protocol.md`` and ``docs/trace.md``
+from ``spec/`` (:mod:`topomark.specpages`), ``docs/results/`` from bench run stores
 (:mod:`topomark.reference.bench.publish`); ``mkdocs.yml`` names only pages that exist.
 """
 
@@ -14,6 +15,7 @@ from pathlib import Path
 import pytest
 
 from topomark import docgen as api_docgen
+from topomark import specpages
 from topomark.reference.bench import publish
 from topomark.reference.cli import docgen as cli_docgen
 from topomark.reference.cli.main import COMMANDS, main
@@ -30,6 +32,23 @@ def test_docs_cli_md_is_what_the_generator_writes():
 def test_docs_api_md_is_what_the_generator_writes():
     assert (DOCS / "api.md").read_text(encoding="utf-8") == api_docgen.markdown(), \
         "docs/api.md is out of date: run python -m topomark.docgen > docs/api.md"
+
+
+@pytest.mark.parametrize("name", specpages.PAGES)
+def test_each_specification_page_is_what_the_generator_writes(name):
+    assert (DOCS / name).read_text(encoding="utf-8") == specpages.page(name), \
+        f"docs/{name} is out of date: run python -m topomark.specpages docs (spec/{name} is the source)"
+    assert f"`spec/{name}`" in specpages.page(name) and name in (ROOT / "mkdocs.yml").read_text(encoding="utf-8")
+
+
+def test_a_specification_link_the_site_cannot_resolve_stops_the_generator(tmp_path, monkeypatch):
+    (tmp_path / "trace.md").write_text("# T\n\n[protocol](protocol.md#hello), [api](../docs/api.md), [x](#y)\n")
+    monkeypatch.setattr(specpages, "SPEC", tmp_path)
+    assert "[protocol](protocol.md#hello), [api](api.md), [x](#y)" in specpages.page("trace.md")
+    (tmp_path / "trace.md").write_text("# T\n\n[the code](world.py)\n")
+    with pytest.raises(ValueError, match="world.py"):
+        specpages.page("trace.md")
+    assert specpages.main([str(tmp_path / "missing")]) == 2
 
 
 def test_the_cli_reference_has_every_command_and_every_option():

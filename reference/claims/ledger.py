@@ -10,8 +10,10 @@ in one of six ways (:data:`BACKINGS`):
   :data:`topomark.reference.algorithms.algorithm_spec.CHECKS`;
 * ``tested`` — by the named tests (``tests/FILE.py::FUNCTION``);
 * ``measured`` — by a bench experiment (``topomark bench EXPERIMENT``), with the verdict its report
-  and the README's tables give: ``held``, ``not held``, or ``partly held`` where it held on one world
-  family and not on the other (the thesis states it for both);
+  gives: ``held``, ``not held``, or ``partly held`` where it held on one world family and not on the
+  other (the thesis states it for both).  Its ``source`` names the published page (``docs/results/...``)
+  and quotes its headings and figures, or says ``not published`` and gives the command that reproduces
+  it (``tests/test_claims_evidence.py`` checks every quote and figure against its page);
 * ``assumed`` — taken as given (a result the thesis cites from the literature), with why;
 * ``unbacked`` — nothing in topomark backs it, and the row says why.
 

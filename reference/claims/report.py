@@ -84,6 +84,9 @@ def markdown(claims: list[Claim]) -> str:
            "experiment, with its report's verdict: held, partly held — on one world family and not the other — "
            "or not held), **assumed** (taken as given, with why) or **unbacked** (nothing backs it, and why). "
            "A proved or tested claim marked *not held* is one the evidence contradicts as printed.", "",
+           "Every heading and figure a row quotes is on the published page it names "
+           "(`tests/test_claims_evidence.py` checks each one); a measurement whose full sweep is not published "
+           "says so, quotes no figure of it, and gives the command that reproduces it.", "",
            "| chapter | claims | proved | checked | tested | measured: held / partly / not held | assumed | "
            "unbacked | contradicted |", "|---|---:|---:|---:|---:|---|---:|---:|---:|"]
     for ch, r in counts.items():

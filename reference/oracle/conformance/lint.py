@@ -56,7 +56,7 @@ def _validator(root: Path) -> Callable[[Any, str], None]:
         import jsonschema
     except ImportError:
         raise TopomarkFault("conformance lint needs the jsonschema package, a dependency of topomark; "
-                            "reinstall topomark (pip install topomark)") from None
+                            "reinstall topomark (python3 -m pip install . from a checkout)") from None
     validator = jsonschema.Draft202012Validator(published)
 
     def check(obj: Any, where: str) -> None:
