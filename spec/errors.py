@@ -202,7 +202,7 @@ class ExplorerFault(TopomarkFault):
 
     A bug in the explorer (exit 3), never the checker's verdict: an explorer does not raise
     :class:`CheckFailure`.  Where the thesis predicts such an inconsistency (a lighthouse whose place or
-    back-link may not be explicit, L1346) the explorer raises :class:`AlgorithmFailed` instead.  Under
+    back-link may not be explicit, §5.2.1) the explorer raises :class:`AlgorithmFailed` instead.  Under
     ``drive`` the world is an outside program, and the same finding shows that its answers fit no world.
     """
 
@@ -232,7 +232,7 @@ class AlgorithmStopped(TopomarkError):
 class AlgorithmFailed(AlgorithmStopped):
     """The algorithm reports that it cannot go on (e.g. no lighthouse within the walk limit, §5.1).
 
-    :attr:`walk_steps`: the steps a lighthouse search walked before it gave up (the whole limit, L1332), which
+    :attr:`walk_steps`: the steps a lighthouse search walked before it gave up (the whole limit, §5.1), which
     the run reports as it reports a found lighthouse's walk; None for any other failure.
     """
 

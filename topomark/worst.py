@@ -1,4 +1,4 @@
-"""The worst cost of an algorithm, from Python (thesis §7.2, L2260–L2262).
+"""The worst cost of an algorithm, from Python (thesis §7.2).
 
 :func:`worst_case` is ``topomark worst-case``: the algorithm runs from every start of every embedded world up
 to ``max_vertices`` vertices and degree ``max_degree`` (one world per isomorphism class, one start per orbit

@@ -19,7 +19,7 @@ Two shapes of algorithm exist:
 * **kit algorithms** (everything else: markers dropped all through the
   exploration, §6.2; movable markers, §2.3.1; threads, §6.3; no marker,
   §5.2) are given the kit ``kit_for(n, m, options)`` — the simulator computes
-  it from the world, the robot never learns n or m (§6.2.1, L1487) — and are
+  it from the world, the robot never learns n or m (§6.2.1) — and are
   built as ``cls(robot, policies, observer, options)``.
 
 Every entry carries a **status** (:data:`STATUSES`): ``implemented`` (it is
@@ -32,7 +32,7 @@ which ``topomark explore`` refuses as bad input.  What its runs are expected to 
 (:meth:`AlgorithmSpec.expectation`, :mod:`~topomark.reference.algorithms.expectation`) follows from the status —
 ``correct`` when implemented, ``fails-by-design`` when expected to fail — unless the entry states otherwise
 (``expected``, with its thesis line), per world family where it differs (``expected_by_family``), and broadened
-by the lighthouse a run uses (§5.2.1's may fail, L1346).
+by the lighthouse a run uses (§5.2.1's may fail).
 
 Every explorer keeps the contract of
 :func:`topomark.reference.run.explore.explore`: ``start()``, then ``step()``
@@ -90,7 +90,7 @@ STATUSES = (IMPLEMENTED, EXPECTED_TO_FAIL, NOT_IMPLEMENTABLE)
 """The statuses of a listed algorithm (module docstring); the last is a :class:`Listed` entry's."""
 
 ALGORITHM_3_1_CHECKS = ("pose", "I-1", "I-2", "bound-function", "lemma-1", "marker", "iterations", "isomorphism")
-"""Algorithm 3.1's loop conditions (§3.4, L546–L616) and outcome (§3.1.3, L417): the checks of every
+"""Algorithm 3.1's loop conditions (§3.4) and outcome (§3.1.3): the checks of every
 lighthouse algorithm (``basic`` and Chapter 4), and the checker's default."""
 
 MARKER_MAP_CHECKS = ("pose", "I-1", "I-2", "marker-budget", "isomorphism")
@@ -98,8 +98,7 @@ MARKER_MAP_CHECKS = ("pose", "I-1", "I-2", "marker-budget", "isomorphism")
 S and U after every step, the stated marker bound after every step, the final map with every marker dropped."""
 
 STEPWISE_MAP_CHECKS = ("pose", "I-1", "I-2", "bound-function", "marker-budget", "iterations", "isomorphism")
-""":data:`MARKER_MAP_CHECKS`, and one edge joins S per step — n − 1 non-loop and m − n + 1 loop steps (§3.1.3,
-L417): the movable marker (§2.3.1) and thread (§6.3) algorithms."""
+""":data:`MARKER_MAP_CHECKS`, and one edge joins S per step — n − 1 non-loop and m − n + 1 loop steps (§3.1.3): the movable marker (§2.3.1) and thread (§6.3) algorithms."""
 
 
 @dataclass(frozen=True)
