@@ -17,7 +17,7 @@ undirected — every marker class of the thesis is homogeneous in that respect
 (Figure 3.21, §6.1, §6.2) — and a thread's length is in edges, 0 meaning the
 thesis's l = ε (tied at v0, never laid along an edge; §6.3).
 
-Decision (§6.2.1, Case 1b, footnote 16: "exactly 1 marker is dropped (either on
+Decision (§6.2.1 Case 1b, footnote 16: "exactly 1 marker is dropped (either on
 the vertex or on the edge …)"; the thesis counts Case 1b's markers as one
 homogeneous pool): a drop is drawn from its kind's own markers first, then
 from the pool (:meth:`Kit.draw`), so a kit without a pool behaves exactly as

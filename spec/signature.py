@@ -15,7 +15,7 @@ marker-related perception, written ``[degree, V#-dir, otherInfo]``:
   ``T-p`` tied here and laid out toward relative exit ``p`` (the direction of
   an l = ε thread, §6.3.1: "whether the thread is present at the vertex and
   the direction of the thread"); ``S-p`` — the thread lies along the edge at
-  relative exit ``p`` (a "thread-marked" or "stringed" edge, §6.3.2, Algorithm 6.8, line 7),
+  relative exit ``p`` (a "thread-marked" or "stringed" edge, §6.3.2, Algorithm 6.8 line 7),
   ``S2-p`` twice; ``F`` — the thread's free end lies here (§6.3.2); ``K`` —
   a knot is tied here, ``K3`` three (Figure 6.20).  In that order, edges by
   exit: e.g. ``[3,A,A,T-0,F]`` (an l = ε thread tied here, toward the

@@ -8,7 +8,7 @@ thread as a piece of world state, in world names and absolute exits:
 * :class:`ThreadMark` — what lies at one vertex, in absolute exits: whether
   the thread is *tied* here and the exit it is laid out toward (the direction
   of an l = ε thread, §6.3.1), the incident edges it lies along and how often
-  (its "thread-marked" or "stringed" edges, §6.3.2, Algorithm 6.8, line 7), whether its *free
+  (its "thread-marked" or "stringed" edges, §6.3.2, Algorithm 6.8 line 7), whether its *free
   end* lies here (§6.3.2, Algorithm 6.8 line 11) and how many *knots* are tied
   here (Figure 6.20).  :func:`~topomark.spec.signature.signature_at` reads it
   (through ``thread_marks``) relative to the entry edge, in the notation

@@ -9,7 +9,7 @@ bound its explorer does not keep — and a small world on which it shows.
 at the iteration named below, and that with the check disabled
 (:func:`disable`) the fault goes undetected: the run is then verified, or
 ends with the later check named in the last column.  ``docs/checks.md``
-keeps the same table with the thesis lines each check states.
+keeps the same table with the thesis references each check states.
 
 ==============  =============================  ==================  ====  ===========================
 check           fault                          reported as         it.   check disabled: the run

@@ -47,7 +47,7 @@ def test_a_family_override_and_a_bad_expectation_in_an_entry():
     odd = dataclasses.replace(spec, expected_by_family=(("complete-hole", "may-fail", "L1"),))
     assert odd.expectation("complete-hole") == ("may-fail", "L1") and odd.expectation("lattice-hole")[0] == "correct"
     assert odd.to_json()["expected_by_family"] == {"complete-hole": {"expected": "may-fail", "reason": "L1"}}
-    with pytest.raises(ValueError, match="thesis line"):
+    with pytest.raises(ValueError, match="thesis reference"):
         dataclasses.replace(spec, expected="may-fail")
     with pytest.raises(ValueError, match="expected outcome 'maybe'"):
         dataclasses.replace(spec, expected="maybe", expected_reason="L1")
@@ -59,7 +59,7 @@ def test_algorithms_json_shows_the_expectations(capsys):
     text = capsys.readouterr().out
     listed = json.loads(text)
     entries = {a["name"]: a for a in (listed if isinstance(listed, list) else listed["algorithms"])}
-    assert entries["case-0"]["expected"] == "fails-by-design" and "§6.2.1, Case 0" in entries["case-0"]["expected_reason"]
+    assert entries["case-0"]["expected"] == "fails-by-design" and "§6.2.1 Case 0" in entries["case-0"]["expected_reason"]
     assert entries["case-3a"]["expected"] == "correct" and entries["model-tree"]["expected"] == "may-fail"
     lights = entries["basic"]["expected_by_lighthouse"]
     assert lights["local-pair"]["expected"] == "may-fail" and "§5.2.1" in lights["local-pair"]["reason"]

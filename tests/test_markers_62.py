@@ -48,8 +48,8 @@ def test_each_algorithm_maps_each_world_with_exactly_the_assured_markers(name, t
 def test_case_3b_validates_nothing_by_motion_and_pays_two_traversals_per_marked_edge(text):
     w = bare(make_world(text))
     out = explore(w, "case-3b")
-    assert set(out.by_purpose) <= {"new", "drop", "travel"}  # §6.2.1, Case 3b: "Physical motion ... is avoided"
-    assert out.drop_trips == out.by_purpose["drop"] == 2 * (w.n - 1)  # back over e and back, §6.2.1, Case 3b
+    assert set(out.by_purpose) <= {"new", "drop", "travel"}  # §6.2.1 Case 3b: "Physical motion ... is avoided"
+    assert out.drop_trips == out.by_purpose["drop"] == 2 * (w.n - 1)  # back over e and back, §6.2.1 Case 3b
 
 
 @pytest.mark.parametrize("text", SMALL_WORLDS)
@@ -175,7 +175,7 @@ def test_the_signatures_a_marker_walk_keeps_are_what_its_map_shows(algorithm, mo
 
 def test_the_directional_vertex_markers_stay_within_o_m_on_a_wheel_whose_hub_is_left_blank():
     """Table 6.2 registers O(m) for Σ_{k=1}^{n−1} k directional V-markers.  On ``wheel-hub-last`` the
-    hub, of degree d_max = n − 1, is the last new place and so the blank one (§6.2.1, Case 3a).  Exploring the blank's edges
+    hub, of degree d_max = n − 1, is the last new place and so the blank one (§6.2.1 Case 3a).  Exploring the blank's edges
     from the blank (counted_markers' decision) costs the rim walk (n − 1 edges), the first spoke, then out over
     each other spoke into a marked rim place and back over it, the last one not back: m + (n − 1) − 2 = 3m/2 − 2
     in all, so cost/m stays under 3/2 as m grows 40 → 160.  Without that choice (the edge policy alone), the

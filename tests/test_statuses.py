@@ -67,7 +67,7 @@ def test_each_failing_variant_fails_on_the_world_its_reason_names(name):
 
 
 def test_the_undirected_saving_cannot_tell_two_neighbours_apart_on_figure_6_10(capsys):
-    """§6.2.1, Case 4: the place entered and its neighbour show one signature, their only marked edge the one
+    """§6.2.1 Case 4: the place entered and its neighbour show one signature, their only marked edge the one
     joining them (Figure 6.10(a), impossible in Case 3b): the marks fit two edges and the run fails."""
     w = generate("figure-6.10")
     assert explore(w, "case-3b").outcome == "correct"

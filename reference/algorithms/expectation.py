@@ -14,7 +14,7 @@ runs and §5.2.1's wrong maps included — and one run that did not exits 1.
   ``failed`` and ``wrong-map``: the thesis says such an idea "does not work in general" (Case 0) and shows
   the flaw on one world (Figure 6.3), so it fails where that situation arises and maps a world where it cannot
   (a tree, for one).  A run that ends at a ``limit`` is not acceptable: none of these ideas is said to run on
-  without end (the robot "is not able to determine" where it is, §6.2.1, Case 0 / Figure 6.3, and stops, or it takes a
+  without end (the robot "is not able to determine" where it is, §6.2.1 Case 0 / Figure 6.3, and stops, or it takes a
   marked place for a new one, §6.2.2).
 
 A crashed run (``error``) is never as expected.  An unchecked run (``bench --no-check``) ends ``unchecked`` or

@@ -250,7 +250,7 @@ def marked_fraction_markers(world: World, algorithm: str, value: str) -> dict:
     Version-1 gives v0 one marker and the j-th new place j + 1 until a drop is refused
     (:mod:`~topomark.reference.explorers.case5_v1`), so K = Σ_{i=1}^{p} i marks exactly p places.  The
     thesis gives no fractions and no K (neither Figure 6.13's caption, nor its text, §6.2.1); we give
-    K = max(4, Σ_{i=1}^{⌊f·n⌋} i).  K ≥ 4 is the algorithm's least kit ("k > 3", §6.2.1, Case 5), which marks 2
+    K = max(4, Σ_{i=1}^{⌊f·n⌋} i).  K ≥ 4 is the algorithm's least kit ("k > 3", §6.2.1 Case 5), which marks 2
     places: "0%" is that least kit (2 of n places marked), and 100% is Σ_{i=1}^{n} i (every place).
 
     Version-2 ("different fractions of (homogeneously) marked vertices", §6.2.1) drops two markers at v0, two
@@ -258,7 +258,7 @@ def marked_fraction_markers(world: World, algorithm: str, value: str) -> dict:
     (:mod:`~topomark.reference.explorers.case5_v2`).  Decision: K = max(4, ⌊f·n⌋ + 3), the pool that marks
     ⌊f·n⌋ places if no loop edge took a marker first (loop edges take markers from the same pool, so the
     fraction marked is at most f: the report shows the markers used), and 100% is the default m + 4, which
-    marks every place and loop edge (the m V-E-marker algorithm's behaviour, §6.2.1, Case 5, the figure's lower end).
+    marks every place and loop edge (the m V-E-marker algorithm's behaviour, §6.2.1 Case 5, the figure's lower end).
     """
     if algorithm not in ("case-5-v1", "case-5-v2"):
         raise InvalidInput(f"marked-fraction is defined for case-5-v1 and case-5-v2 only (given for {algorithm})")

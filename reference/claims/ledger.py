@@ -32,7 +32,7 @@ True
 >>> next(c for c in claims if c.id == "3.4-lemma-1").backing
 'checked'
 >>> next(c for c in claims if c.id == "3.5.2-upper-bound").thesis
-'§3.5.2, equation (3.1), equation (3.2)'
+'§3.5.2, equations (3.1) and (3.2)'
 >>> Claim.from_row({"id": "x", "section": "§9", "where": ["§9"], "claim": "c", "backing": "hoped"})
 Traceback (most recent call last):
 ...
@@ -65,7 +65,7 @@ VERDICTS = ("held", "partly held", "not held")
 
 REFERENCE = re.compile(r"(§\d+(\.\d+)*( (Case \d+[ab]?|Cases \d+[ab]?(–\d+[ab]?)?|Lemma \d+|footnote \d+))?"
                        r"|Chapter \d+|Algorithm \d+\.\d+( lines? \d+(–\d+)?)?"
-                       r"|(Figures?|Tables?) \d+\.\d+(\([a-z]\))?(–\d+\.\d+)?|equation \(\d+\.\d+\))")
+                       r"|(Figures?|Tables?) \d+\.\d+(\([a-z]\))?(–\d+\.\d+)?|equations? \(\d+\.\d+\)( and \(\d+\.\d+\))?)")
 """A reference into the thesis's structure, as ``where`` gives it: the finest unit that states the claim."""
 
 DATA = Path(__file__).with_name("claims.toml")

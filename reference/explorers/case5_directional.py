@@ -1,6 +1,6 @@
 """§6.2.2 Table 6.2's row "unknown k > 3" with *directional* markers: Case 5 Version-1 (Algorithm 6.4) whose
 V-markers point at the entry edge, so every marked place is a directional lighthouse (thesis Table 6.2;
-Version-1, §6.2.1, Case 5, listing Algorithm 6.4; directional counts, §6.2.2).
+Version-1, §6.2.1 Case 5, listing Algorithm 6.4; directional counts, §6.2.2).
 
 Table 6.2 gives the row an O(m²n) bound in its directional column and no
 algorithm of its own.  This is the one we give it: Version-1, with the
@@ -16,11 +16,11 @@ visited vertex is a directional lighthouse").
   tested against every unexplored dart at an unmarked known end of its degree
   (Algorithm 6.4 lines 17–18), each hypothesis driving the robot along a
   shortest path of S from v_k' to the nearest marked place v_l.  Decision
-  (§6.2.1, Case 5 ask for v_l *then a marked neighbour v_n* to fix the entry at an
+  (§6.2.1 Case 5 ask for v_l *then a marked neighbour v_n* to fix the entry at an
   undirected v_l): with directional markers the path ends at v_l, since the
   direction of its markers, sensed relative to the entry, already gives the
   entry edge — the expected perception P^E at v_l holds its count and
-  direction, so a full match fixes the embedded path (§6.2.1, Case 5).  A marked v_u in
+  direction, so a full match fixes the embedded path (§6.2.1 Case 5).  A marked v_u in
   phase II is, as in phase I, known at once.
 
 Cost O(m²n) with few markers (Table 6.2); with Σ_{k=1}^{n} k markers (every

@@ -16,7 +16,7 @@ Chapter 4's techniques are) gives ``lighthouse_path(v)``: the darts of S to
 follow from v_k' (Version-1: to the closest uniquely marked v_l, then on to a
 marked neighbour v_n, Algorithm 6.4 lines 21–24; Version-2: to the
 double-marked v0, whose double-marked edge gives the entry, Algorithm 6.5 and
-§6.2.1, Case 5), and ``confirms(h)``, its listing's reading of a full match (Algorithm
+§6.2.1 Case 5), and ``confirms(h)``, its listing's reading of a full match (Algorithm
 6.4 line 29, Algorithm 6.5 line 23).  :class:`Host` lists all it needs.
 
 Decision: phase II is implemented here rather than by handing the state to

@@ -5,14 +5,14 @@ The robot is assured Σ_{k=1}^{n−1} k = n(n−1)/2 homogeneous markers and dro
 *different number* of them at each place it discovers (1, 2, 3, ...), so a
 marked place names itself.  It never uses n or m.
 
-* **Case 3b** (:class:`EdgeCounts`, E-markers, O(m), §6.2.1, Cases 3b and 4): on entering an
+* **Case 3b** (:class:`EdgeCounts`, E-markers, O(m), §6.2.1 Cases 3b and 4): on entering an
   unmarked v_u (no marked edge) e is a non-loop edge: non-loop augmentation, then
   "the robot goes back to (non-loop) edge e, dropping a unique number of markers
   on e" — the i-th non-loop edge gets i markers, so the marked edges form a
   spanning tree of S.  On entering a v_u with marked edges, the marked edges'
   counts and relative exits (``[4,A,E3-1,E4-2]``, Figure 6.8) name v_u and the
   entry edge e' at once: no motion validates anything.  Loop edges and vertices
-  are never marked.  The thesis proves the identification unique (§6.2.1, Cases 3b and 4,
+  are never marked.  The thesis proves the identification unique (§6.2.1 Cases 3b and 4,
   Figure 6.8(c) "can *not* happen"); the explorer checks it and reports
   :class:`~topomark.spec.errors.AlgorithmFailed` if it ever is not.
 * **Case 3a** (:class:`VertexCounts`, undirected V-markers, Algorithm 6.2,
@@ -24,9 +24,9 @@ marked place names itself.  It never uses n or m.
   indicated (all the markers dropped at v_u have the same direction)", so every
   marked place is a directional lighthouse: place and back-link at once.
 
-Decisions, with the thesis lines:
+Decisions, with the thesis references:
 
-* **Dropping on e is a drop trip**, as §6.2.1, Case 3b describes it: "the robot goes
+* **Dropping on e is a drop trip**, as §6.2.1 Case 3b describes it: "the robot goes
   back to (non-loop) edge e, dropping" (and Algorithm 6.6 line 10, "goes
   back on e, drops i markers on e and back"): Case 3b walks back over e to v_k,
   drops there on e, and walks back to v_u — two traversals per non-loop edge,
@@ -36,12 +36,12 @@ Decisions, with the thesis lines:
   so the cost without it is exactly the cost of dropping on e from v_u.
 * **Σ^{n−1} against Figure 6.6's Σ^{n}** (Case 3a's title, and Algorithm
   6.2's, say Σ_{k=1}^{n−1} k; Figure 6.6's caption, Σ_{k=1}^{n} k).
-  Both hold, for different kits: §6.2.1, Case 3a "The algorithm marks each of the n
+  Both hold, for different kits: §6.2.1 Case 3a "The algorithm marks each of the n
   vertices uniquely, so a total of Σ_{k=1}^{n} k V-markers are used", and with
   exactly Σ_{k=1}^{n−1} k "this vertex must be the last vertex that has not been
   visited and the robot can leave the vertex blank" (Algorithm 6.2 lines 10–16).
   The default kit is the class's Σ_{k=1}^{n−1} k (the last new vertex stays
-  blank, recognised by its blank label afterwards, §6.2.1, Case 3a); with ``--markers`` ≥
+  blank, recognised by its blank label afterwards, §6.2.1 Case 3a); with ``--markers`` ≥
   Σ_{k=1}^{n} k every vertex is marked, so the vertex algorithms' marker bound is
   Σ_{k=1}^{n} k.  Same for the directional variant, whose blank last vertex has
   no direction (§6.2.2 does not discuss it: "each visited vertex is a directional
@@ -52,7 +52,7 @@ Decisions, with the thesis lines:
   deg − 1 such edges — Θ(d_max²) on a wheel whose hub is found last
   (``wheel-hub-last``: cost 2,344 at m = 160), which is no O(m).  But when the
   robot leaves the last new vertex blank it knows that every other place is
-  already visited and marked (lines 14–16, §6.2.1, Case 3a: "this vertex must be the last
+  already visited and marked (lines 14–16, §6.2.1 Case 3a: "this vertex must be the last
   vertex that has not been visited"), and it knows the blank's exits relative to
   the edge it entered by.  So once the blank is known, :class:`DirectionalVertexCounts`
   takes the blank's unexplored edges first (walking S back to the blank when it
@@ -64,7 +64,7 @@ Decisions, with the thesis lines:
   blank's edges then cost at most 2 each beyond the rest of the run, and the
   default kit meets the O(m) registered for Table 6.2's row.  The
   undirected Case 3a is unchanged: a marked place tells no back-link there, so
-  nothing is saved (its O(m·d_max), §6.2.1, Case 3a).
+  nothing is saved (its O(m·d_max), §6.2.1 Case 3a).
 * **Fewer markers than assured.**  Case 3b: the refused drop is the ``failed``
   outcome.  The vertex algorithms cannot tell the first shortage from the last
   vertex (the thesis's own rule), so a *second* unmarked place found, or a blank
@@ -101,7 +101,7 @@ def sum_to(k: int) -> int:
 
 
 class EdgeCounts(MarkerWalk):
-    """Case 3b: a unique count of undirected E-markers on each non-loop edge, O(m) (§6.2.1, Cases 3b and 4)."""
+    """Case 3b: a unique count of undirected E-markers on each non-loop edge, O(m) (§6.2.1 Cases 3b and 4)."""
 
     name = "case-3b"
 
@@ -119,7 +119,7 @@ class EdgeCounts(MarkerWalk):
 
     def mark_tree_edge(self, it: MarkerStep, u: int) -> bool | None:  # None here; Case 5 tells if it dropped
         """A drop trip: back over e to v_k, drop the next count on e (relative exit 0 there), and back to v_u
-        (§6.2.1, Case 3b)."""
+        (§6.2.1 Case 3b)."""
         count = self.next_count
         self.leave((u, 0), "drop")
         self.drop(MarkerOp("edge", exit=0, count=count), it)

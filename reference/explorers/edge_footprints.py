@@ -26,7 +26,7 @@ its marked edges other than e; Algorithm 6.1 lines 11–12, Algorithm 6.3
 line 18).  The one that now senses a marked edge S does not show is v_k',
 and that edge is e' (lines 14–18).
 
-Decisions, with the thesis lines (each shown in ``tests/test_markers_621.py``):
+Decisions, with the thesis references (each shown in ``tests/test_markers_621.py``):
 
 * **Back to v_k before the search**: Case 1a does not say
   how the robot gets back to S; Figure 6.5(b) and Algorithm 6.1 line 10
@@ -58,9 +58,9 @@ Decisions, with the thesis lines (each shown in ``tests/test_markers_621.py``):
   registration from n and m; the robot never sees them).  The m extension
   runs when the last iteration's drop is refused — shown with a kit one
   short in that iteration's kind (K4: n V and m − n E; a chain: n − 1 V).
-* **Case 2's count**: titled m + n (Algorithm 6.1 at Algorithm 6.1), the text
+* **Case 2's count**: titled m + n (Case 2's heading and Algorithm 6.1's title), the text
   counts m + n − 1 ("$m - n + 1$ markers on loop edges and $2(n - 1)$ markers
-  on the $n - 1$ non-loop edges", §6.2.1, Case 2); the kit is the assured m + n, the
+  on the $n - 1$ non-loop edges", §6.2.1 Case 2); the kit is the assured m + n, the
   marker bound checked is m + n − 1 (every run drops exactly that).
 
 Examples
@@ -128,7 +128,7 @@ class FootprintSearch(MarkerWalk):
     marking: Marking = UNDIRECTED  # how the markers are dropped and read (§6.2.2's directional ones: edge_info)
 
     def is_new(self, sig: Signature) -> bool:
-        """v_u has not been visited (E-marker algorithms: no other marked edge, §6.2.1, Case 1a)."""
+        """v_u has not been visited (E-marker algorithms: no other marked edge, §6.2.1 Case 1a)."""
         return not sig.edges
 
     def non_loop_markers(self, vk: int) -> int:
@@ -154,7 +154,7 @@ class FootprintSearch(MarkerWalk):
         v, i = dart
         self.M.mark_as_sensed(v, Signature(self.M.degree(v), edges=((i, count, None),)), 0)
 
-    # -- place and back-link validation together (§6.2.1, Case 1a) ------------------------------
+    # -- place and back-link validation together (§6.2.1 Case 1a) ------------------------------
     def validate(self, it: MarkerStep, sig: Signature) -> None:
         """v_u is a known place: one marker on e, back to v_k over e, search S for v_k' (Figure 6.4(c, d))."""
         if not self.mark_loop_edge(it, sig):
@@ -236,30 +236,30 @@ class DoubleMarkedEdges(FootprintSearch):
 
 class VertexEdgeFootprints(FootprintSearch):
     """Case 1b: a V-marker at every vertex, an E-marker on every loop edge; m + 1 in all, m with the
-    extension (§6.2.1, Case 1b, Figure 6.5)."""
+    extension (§6.2.1 Case 1b, Figure 6.5)."""
 
     name = "case-1b"
 
     def begin(self) -> None:
-        """"Initially the robot drops a marker at its starting vertex v_0" (§6.2.1, Case 1b)."""
+        """"Initially the robot drops a marker at its starting vertex v_0" (§6.2.1 Case 1b)."""
         self.drop(MarkerOp("vertex", direction=self.marking.vertex_head))
 
     def is_new(self, sig: Signature) -> bool:
-        """"if v_u does not contain a marker then v_u has not been visited before" (§6.2.1, Case 1b)."""
+        """"if v_u does not contain a marker then v_u has not been visited before" (§6.2.1 Case 1b)."""
         return sig.vertex_count == 0
 
     def non_loop_markers(self, vk: int) -> int:
         return 0  # "(but not on the entry edge e)"
 
     def on_new(self, it: MarkerStep, u: int, count: int) -> None:
-        """A marker at v_u; refused, this is the last iteration (§6.2.1, Case 1b): v_u must have no other edge."""
+        """A marker at v_u; refused, this is the last iteration (§6.2.1 Case 1b): v_u must have no other edge."""
         marked = self.try_drop(MarkerOp("vertex", direction=self.marking.vertex_head), it)
         if not marked and (self.M.degree(u) != 1 or self.M.unexplored):
             raise AlgorithmFailed(f"out of markers at iteration {it.number}: the new vertex cannot be marked and "
                                   f"exploration is not over ({len(self.M.unexplored)} unexplored edges)")
 
     def mark_loop_edge(self, it: MarkerStep, sig: Signature) -> bool:
-        """The marker on e; refused, the one edge left in U must be e' (§6.2.1, Case 1b): e/e' with no search."""
+        """The marker on e; refused, the one edge left in U must be e' (§6.2.1 Case 1b): e/e' with no search."""
         try:
             return super().mark_loop_edge(it, sig)
         except OutOfMarkers:

@@ -7,7 +7,8 @@ Case 4 (``case-4-edgeinfo``, ``case-4-mn-edgeinfo``; §6.2.2 names them among th
 improved with directional markers so cost is reduced, although the cost bound remains unchanged").
 
 The loop, the drops' places, the search and the m extension are Case 1b's
-(:class:`~topomark.reference.explorers.edge_footprints.VertexEdgeFootprints`), Case 2's (``DoubleMarkedEdges``, Algorithm 6.1), Case 1a's
+(:class:`~topomark.reference.explorers.edge_footprints.VertexEdgeFootprints`),
+Case 2's (``DoubleMarkedEdges``, Algorithm 6.1), Case 1a's
 (``EdgeFootprints``) or Case 4's
 (:mod:`~topomark.reference.explorers.closest_first`, Algorithm 6.3); only the
 markers' directions and the candidate filter differ: each explorer here is its
@@ -25,7 +26,7 @@ edge pointed to by the directional V-marker" (§6.2.2), and a known vertex is
 on the *right* of the edge pointed by the V-marker, which corresponds to the
 entry edge, must be an unexplored edge, 2) it has [the same] edgeINFO" (§6.2.2).
 
-Decisions, with the thesis lines (each shown in ``tests/test_markers_622.py``):
+Decisions, with the thesis references (each shown in ``tests/test_markers_622.py``):
 
 * **Which exit a V-marker points at** (§6.2.2 leaves it open):
   the edge the robot entered by when it dropped it (``direction=0``), at v0
@@ -36,7 +37,8 @@ Decisions, with the thesis lines (each shown in ``tests/test_markers_622.py``):
   so the loop edge e = e' reads ``E-p-H`` at v_k' and ``E-p-T`` at v_k.
   The thesis's example reads "incoming (P_H)" (§6.2.2); with this convention
   every loop edge is incoming at the vertex found by the search.  Its
-  (P_T, A, P_H, A) from ``[4,V-1,E-1-H,E-3-T]`` (Figure 6.14's caption, §6.2.2) is inconsistent with "incoming (P_H)"; here edgeINFO is read from
+  (P_T, A, P_H, A) from ``[4,V-1,E-1-H,E-3-T]`` (Figure 6.14's caption, §6.2.2)
+  is inconsistent with "incoming (P_H)"; here edgeINFO is read from
   the signature as :func:`~topomark.spec.signature.signature_at` defines
   it, so the question does not arise.
 * **The candidate test, made exact** (generalising §6.2.2's two conditions):
@@ -73,8 +75,8 @@ Decisions, with the thesis lines (each shown in ``tests/test_markers_622.py``):
   it which requires a maximum of m markers" among those improved; §6.2.2 "in
   a similar manner").  Its search is the footprint search (Algorithm 6.3
   lines 14–24; ``ClosestFirst`` inherits ``search`` and ``candidates``); what
-  it changes — the edge chosen closest-first (rule 1, §6.2.1, Case 4) and a non-loop
-  edge left blank when v_k has a marked edge (rule 3, §6.2.1, Case 4) — does not touch
+  it changes — the edge chosen closest-first (rule 1, §6.2.1 Case 4) and a non-loop
+  edge left blank when v_k has a marked edge (rule 3, §6.2.1 Case 4) — does not touch
   the filter's premise: the robot drops every marker and S records it, a
   blank edge carries none in the world nor in S, an unexplored edge none, so
   S's marks at the true v_k' read from e' are what was sensed at v_u.  Rule 3
@@ -85,7 +87,7 @@ Decisions, with the thesis lines (each shown in ``tests/test_markers_622.py``):
 * **A unique candidate is still visited** (§6.2.2: "is not potentially
   confusing and thus does not need to be visited" excludes only the
   vertices that fail; the potentially confusing ones are searched as in
-  Case 1b, §6.2.1, Case 1a): the search validates the back-link by the footprint
+  Case 1b, §6.2.1 Case 1a): the search validates the back-link by the footprint
   itself — the marker on e seen where S shows none — and never trusts a
   match alone.  The cost gained is the candidates not walked to.
 * **Cost**: fewer candidates, visited in Case 1b's order, so in practice a
@@ -94,7 +96,7 @@ Decisions, with the thesis lines (each shown in ``tests/test_markers_622.py``):
   The bound stays Case 1b's O(mn) (§6.2.2: "the cost bound remains
   unchanged"), the markers its m + 1 (n V + m − n + 1 E, all directional);
   Case 2's likewise (m + n − 1 used), Case 1a's (m) and Case
-  4's (the corrected m − ⌊(n−1)/2⌋ and m + [n even], §6.2.1, Case 4): the
+  4's (the corrected m − ⌊(n−1)/2⌋ and m + [n even], §6.2.1 Case 4): the
   drops are the original's, only their heads are added.
 
 Examples
@@ -207,7 +209,7 @@ class ClosestFirstEdgeInfo(ClosestFirst):
 
 
 class ClosestFirstDoubleEdgeInfo(ClosestFirstDouble):
-    """The closest-first extension of Case 2 (§6.2.1, Case 4) with directional E-markers (§6.2.2)."""
+    """The closest-first extension of Case 2 (§6.2.1 Case 4) with directional E-markers (§6.2.2)."""
 
     name = "case-4-mn-edgeinfo"
     marking = EDGE_INFO

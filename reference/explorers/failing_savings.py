@@ -1,7 +1,7 @@
 """Two ways of saving markers that the thesis shows fail: the undirected saving of Case 3b (§6.2.1 Case 4,
 Figure 6.10) and the naive directional extension of Case 3b (§6.2.2, Figure 6.15(b)–(c)).
 
-Both take Algorithm 6.3's idea (§6.2.1, Case 4) — explore closest-first and mark a
+Both take Algorithm 6.3's idea (§6.2.1 Case 4) — explore closest-first and mark a
 non-loop edge e = (v_k, v_u) "only if v_k has no marked edge yet" — into an
 algorithm whose places are named by a unique count of E-markers, and both mark
 no loop edge.  They are registered so that the checker judges them like any
@@ -11,7 +11,7 @@ algorithm, with the status "implemented, expected to fail":
   3b (:class:`~.counted_markers.EdgeCounts`) with rule (3) of Algorithm 6.3.  The
   thesis: "these marked edges may not always identify a visited vertex and its
   incident edges.  That is, the situation shown in Figure 6.8(c) ... which is
-  impossible in the original algorithm, can now happen" (§6.2.1, Case 4): two
+  impossible in the original algorithm, can now happen" (§6.2.1 Case 4): two
   neighbours whose only marked edge is the one joining them show the same
   signature (``[3,A,E1-1]``, Figure 6.10(b)).  Decision: the explorer
   identifies a marked v_u as Case 3b does; when the marks fit more than one
@@ -49,10 +49,10 @@ __all__ = ["UndirectedSaving", "NaiveExtension"]
 
 class UndirectedSaving(EdgeCounts):
     """Case 3b's unique counts of undirected E-markers, a non-loop edge marked only from an unmarked v_k,
-    closest-first (§6.2.1, Case 4, Figure 6.10): expected to fail."""
+    closest-first (§6.2.1 Case 4, Figure 6.10): expected to fail."""
 
     name = "case-3b-saving"
-    edge_policy = NEAREST  # Algorithm 6.3's rule (1), §6.2.1, Case 4: the idea being tried needs it
+    edge_policy = NEAREST  # Algorithm 6.3's rule (1), §6.2.1 Case 4: the idea being tried needs it
 
     def arrive(self, it: MarkerStep, sig: Signature) -> None:
         if sig.edges:  # marked: a known place, named (if it can be) by its marks, as in Case 3b
@@ -60,7 +60,7 @@ class UndirectedSaving(EdgeCounts):
             return
         unmarked_vk = not self.M.dart_marks(it.edge[0])
         u = self.non_loop(it, sig)
-        if unmarked_vk:  # Algorithm 6.3 rule (3), §6.2.1, Case 4, with Case 3b's unique count (§6.2.1, Case 4)
+        if unmarked_vk:  # Algorithm 6.3 rule (3), §6.2.1 Case 4, with Case 3b's unique count (§6.2.1 Case 4)
             self.mark_tree_edge(it, u)
 
 

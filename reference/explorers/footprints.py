@@ -1,5 +1,5 @@
 """The footprints model of Deng and Mirzaian [18] with m + n homogeneous immovable markers: the classic baseline
-the thesis reviews (§2.3.1, Figure 2.4; Table 2.3, Table 2.2) and builds its Cases 1 and 2 on (§6.2.1,
+the thesis reviews (§2.3.1, Figure 2.4; Tables 2.2 and 2.3) and builds its Cases 1 and 2 on (§6.2.1,
 Cases 1, 2 and 4).
 
 "The robot drops one marker at each vertex and edge the first time the vertex or
@@ -19,10 +19,10 @@ leaving a footprint on e:
 
 The search is :class:`~.edge_footprints.FootprintSearch`'s (the thesis's Case 1a
 is "the mapping strategy described in the footprints model … implemented by
-dropping markers at each newly visited edge only", §6.2.1, Case 1a): the differences are
+dropping markers at each newly visited edge only", §6.2.1 Case 1a): the differences are
 only the ones the text states.
 
-Decisions, with the thesis lines (each shown in ``tests/test_baselines.py``):
+Decisions, with the thesis references (each shown in ``tests/test_baselines.py``):
 
 * **Homogeneous means one pool.**  "m + n homogeneous immovable (undirected)
   markers, one for each node or edge" (§2.3.1): the kit is one pool of m + n

@@ -20,7 +20,7 @@ explores depth first:
 * **Depth first.**  The next edge is the newest one of U (the ``lifo`` choice),
   reached by a shortest path of S.
 
-Decisions, with the thesis lines (each shown in ``tests/test_baselines.py``):
+Decisions, with the thesis references (each shown in ``tests/test_baselines.py``):
 
 * **Vertex labels with a direction, not m + n labels.**  Table 2.3 counts m + n
   distinct markers, "one on each visited vertex and edge" (§2.3.1, Table 2.2).  A label

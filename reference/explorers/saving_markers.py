@@ -21,9 +21,10 @@ marked edge yet:
   traversals: a drop trip, purpose ``drop``, :mod:`topomark.reference.run.simulator`); after a loop edge from an unmarked v_k, the
   robot "comes back to v_k" (line 19–20, purpose ``travel``) — decision: only if
   v_k still has unexplored edges (§6.2.2: "unless v_k has no unexplored edges
-  now").  At most Σ_{k=1}^{⌈(n−1)/2⌉} k markers (§6.2.2; Table 6.2's floors, are the misprint: a chain of 4 places marks 2 edges, ⌊3/2⌋ = 1).
+  now").  At most Σ_{k=1}^{⌈(n−1)/2⌉} k markers (§6.2.2; Table 6.2's floors
+  are the misprint: a chain of 4 places marks 2 edges, ⌊3/2⌋ = 1).
 
-Decisions, with the thesis lines:
+Decisions, with the thesis references:
 
 * **The marker's head points at v_u** (§6.2.2 and Algorithm 6.6,
   leave it unspecified): the robot drops at v_k on e with its tail at v_k

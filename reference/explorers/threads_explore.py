@@ -1,5 +1,5 @@
 """Mapping with a thread laid closest-first: Algorithm 6.7 (l = c(G)) and Algorithm 6.8 (l < c(G),
-explore-explore) (thesis §6.3.2–6.3.3, §6.3.3, Figures 6.19, 6.21).
+explore-explore) (thesis §6.3.2–6.3.3, Figures 6.19, 6.21).
 
 The robot ties the thread at v_s (first v0) and lays it along every edge it
 explores, holding the free end, so the thread is a simple path of S from v_s

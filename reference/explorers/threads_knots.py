@@ -7,7 +7,8 @@ unknown place v_u it visits ... Thus place validation for v_u is never
 needed, but when entering a thread-marked (visited) vertex v_k' the robot
 may still need to conduct back-link validation ... the robot can just
 traverse any one of thread marked edges to the other end vertex, which must
-be a known neighbor that is identified by its unique knot count" (§6.3.2).  Figure 6.20: "Explore in a closest-first manner. Play the thread out
+be a known neighbor that is identified by its unique knot count" (§6.3.2).
+Figure 6.20: "Explore in a closest-first manner. Play the thread out
 as it explores. Tie different number of knots when entering a new place the
 first time ... Rewinds the thread only when the current place is fully
 explored".

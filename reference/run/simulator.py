@@ -26,14 +26,16 @@ Cost and marker accounting — one rule for every algorithm (§3.1.2; §6.2):
   the movable marker "drops the marker at v_k and goes back to v_k'" (§2.3.1);
   the three-undirected-vertex lighthouse walks to the neighbour it marks and
   back (Figure 3.21(b)).  Every other drop is made where the robot
-  already is — in transit on e (§6.2.1, Case 1a; Algorithm 6.1 line 10, Algorithm 6.3
-  lines 6 and 17; extension-1), or at v_u on v_u or on e (Algorithm 6.1 line 7; Algorithm 6.2 line 12, §6.2.2; Algorithms 6.4–6.5) — and makes
+  already is — in transit on e (§6.2.1 Case 1a; Algorithm 6.1 line 10, Algorithm 6.3
+  lines 6 and 17; extension-1), or at v_u on v_u or on e (Algorithm 6.1 line 7;
+  Algorithm 6.2 line 12, §6.2.2; Algorithms 6.4–6.5) — and makes
   no drop trip.
 * **Decision (what the §6.2 findings compare).**  Case 3b's and extension-2's
   trips are not forced by their markers: at v_u the robot stands at an end of
   e and could drop on e there, as Algorithm 6.1 line 7 does in the
   same place.  The thesis's O(m) argument counts no motion for marking
-  ("Physical motion for both place and back-link validations is avoided") and its finding that Case 3b costs "very close to the optimal cost
+  ("Physical motion for both place and back-link validations is avoided",
+  §6.2.1 Case 3b) and its finding that Case 3b costs "very close to the optimal cost
   m" (§6.2.1) holds only without them.  So the findings that compare these
   costs with m or with each other compare the cost without drop trips, and
   show the full cost beside it.

@@ -1,5 +1,5 @@
 """Worlds rebuilt from the captions and text of the thesis's figures whose drawings are lost: the worlds
-where the failing marker savings of §6.2 fail (Figure 6.10, §6.2.1, Case 4; Figure 6.15, §6.2.2).
+where the failing marker savings of §6.2 fail (Figure 6.10, §6.2.1 Case 4; Figure 6.15, §6.2.2).
 
 * ``figure-6.10`` (:func:`figure_6_10`): Figure 6.10(b)'s caption has the robot
   enter "v_k' (node 2) and its neighbor (node 1)", both showing the signature

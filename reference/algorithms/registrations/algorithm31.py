@@ -58,7 +58,7 @@ POLICY_OPTIONS = ("policy edge=nearest|fifo|lifo", "policy hypothesis=fifo|lifo|
 _KIT = LIGHTHOUSES["directional-vertex"].kit
 _BOUND = "(3.1)+(3.2) = O(m²n), §3.5.2"
 _FORMULA = "(3.1)+(3.2) = Σ_{n_s=1}^{n−1}[n_s + 2(n_s−1)(2m−2(n_s−1))] + Σ_{i=1}^{m−n+1}[n + 2(n−1)(2m−2(n−1)−2(i−1))] " \
-           "(§3.5.2, equation (3.1), equation (3.2))"
+           "(§3.5.2)"
 _UNCOUNTED = ("establish", "probe", "drop")
 """The moves (3.1)+(3.2) does not count: a lighthouse's search walk, its back-link probes, and its drop trip (the
 ``three-undirected-vertex`` lighthouse's walk to a neighbour and back to drop there, Figure 3.21(b)) — all made

@@ -2,12 +2,12 @@
 model with m + n homogeneous markers and the labelled graph explored depth first.  Explorers:
 :mod:`topomark.reference.explorers.footprints` and :mod:`topomark.reference.explorers.labelled_graph`.
 
-============  ==========================================  ==============================  ==================
-algorithm     Table 2.3 row                               kit (default)                   exact bound (ours)
-============  ==========================================  ==============================  ==================
-footprints    m + n homogeneous markers, O(mn) (Table 2.3)     m + n vertex-or-edge, one pool  the footprint search's
-labelled-dfs  m + n distinct markers, O(m) (Table 2.3)         n(n + 1)/2 directional V        2m
-============  ==========================================  ==============================  ==================
+============  ============================================  ==============================  ======================
+algorithm     Table 2.3 row                                 kit (default)                   exact bound (ours)
+============  ============================================  ==============================  ======================
+footprints    m + n homogeneous markers, O(mn) (Table 2.3)  m + n vertex-or-edge, one pool  the footprint search's
+labelled-dfs  m + n distinct markers, O(m) (Table 2.3)      n(n + 1)/2 directional V        2m
+============  ============================================  ==============================  ======================
 
 Both are kit algorithms: the simulator computes the kit from n and m, the
 robot never learns them.  Every run of either drops its whole kit (the
@@ -54,7 +54,7 @@ def labels(n: int) -> int:
 
 _FOOTPRINTS = footprint_spec(
     "footprints", "§2.3.1, the footprints model of Deng and Mirzaian [18], m + n homogeneous markers ("
-    "Figure 2.4; Table 2.3, Table 2.2)", "m + n undirected homogeneous markers, one on every vertex and edge (§2.3.1)",
+    "Figure 2.4; Tables 2.2 and 2.3)", "m + n undirected homogeneous markers, one on every vertex and edge (§2.3.1)",
     Footprints, lambda n, m, o: Kit(either=m + n), lambda n, m: m + n, "§2.3.1, Table 2.3", options=("policy edge",),
     kind=Kit(either=1))
 
@@ -62,8 +62,7 @@ SPECS = (
     replace(_FOOTPRINTS, parameters=(), checks=STEPWISE_MAP_CHECKS),
     AlgorithmSpec(
         name="labelled-dfs",
-        thesis="§2.3.1, a labelled graph explored depth first, every place distinctly marked (Table 2.3, Table 2.2, "
-               "Table 2.3)",
+        thesis="§2.3.1, a labelled graph explored depth first, every place distinctly marked (Tables 2.2 and 2.3)",
         kit=Kit(vertex=1, directional=True),
         bound="O(m) (§2.3.1, Table 2.3); bound_fn: ours, exact for depth-first search",
         markers="n distinct labels: n(n + 1)/2 directional V-markers (label i = i markers, §2.3.1)",

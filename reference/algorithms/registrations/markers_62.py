@@ -8,7 +8,7 @@ vertex markers, Σ_{k=1}^{⌈m/2⌉} k for extension-1, Σ_{k=1}^{⌈(n−1)/2�
 extension-2 — computed here from the world (the robot never learns n or m);
 ``--markers K`` gives K instead.  The marker bound checked after every step is
 the thesis's: the same formulas, except Σ_{k=1}^{n} k for the vertex
-algorithms, which mark every vertex when the kit allows (§6.2.1, Case 3b; the decision is
+algorithms, which mark every vertex when the kit allows (§6.2.1 Case 3b; the decision is
 in :mod:`topomark.reference.explorers.counted_markers`).  No exact cost formula
 is stated (only O(m), O(m·d_max)), so none is checked per run: each bound is
 asymptotic, measured by the bench (``table-6.1``, ``table-6.2``).
@@ -16,7 +16,7 @@ asymptotic, measured by the bench (``table-6.1``, ``table-6.2``).
 Two savings the thesis shows fail are registered with the status
 "implemented, expected to fail" (:mod:`topomark.reference.explorers.failing_savings`):
 ``case-3b-saving`` (Case 3b marking a non-loop edge only from an unmarked v_k,
-§6.2.1, Case 4, Figure 6.10) and ``extension-naive`` (extension-2 without coming back to
+§6.2.1 Case 4, Figure 6.10) and ``extension-naive`` (extension-2 without coming back to
 v_k, §6.2.2, Figure 6.15(b)–(c)).  Each gets the kit of the algorithm it saves
 on, and that algorithm's marker bound; the thesis states no cost bound for
 either.
@@ -25,7 +25,7 @@ either.
 Σ_{k=1}^{n−1} k, which leaves the last new place blank, with no direction.
 Its explorer takes the blank's unexplored edges first, from the blank, so no
 edge is entered at the blank and no back-link is probed (the decision and its
-lines, §6.2.1, Case 3a, §6.2.2, are in :mod:`~topomark.reference.explorers.counted_markers`):
+lines, §6.2.1 Case 3a, §6.2.2, are in :mod:`~topomark.reference.explorers.counted_markers`):
 on ``wheel-hub-last``, where the blank is the hub of degree d_max, the cost is
 3m/2 − 2, within O(m) (``tests/test_markers_62.py``).
 
@@ -80,7 +80,7 @@ SPECS = (
         uses_lighthouse=False, parameters=(MARKERS,), kit_fn=lambda n, m, o: Kit(edge=_count(n, o)),
         marker_bound_fn=lambda n, m: sum_to(n - 1), family="robot", status="implemented, expected to fail",
         status_reason="the marked edges 'may not always identify a visited vertex and its incident edges' "
-                      "(§6.2.1, Case 4): two neighbours whose only marked edge joins them show the same signature "
+                      "(§6.2.1 Case 4): two neighbours whose only marked edge joins them show the same signature "
                       "(Figure 6.10(b)); on figure-6.10 the run ends failed (the marks fit two edges)"),
     AlgorithmSpec(
         name="case-dv-sum", thesis="§6.2.2 Σ_{k=1}^{n−1} k directional V-markers (Table 6.2)",

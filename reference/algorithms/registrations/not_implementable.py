@@ -3,7 +3,7 @@
 
 Every other listing of the thesis (Algorithms 3.1, 4.1–4.5, 5.1, 6.1–6.8) is a
 registered algorithm; the failing ideas the thesis describes without a listing
-(Case 0; the undirected saving of Case 3b, §6.2.1, Case 4; the naive directional
+(Case 0; the undirected saving of Case 3b, §6.2.1 Case 4; the naive directional
 extension, §6.2.2) are registered too, with the status "implemented, expected
 to fail".
 

@@ -141,7 +141,7 @@ SPECS = (
                            "policy hypothesis=fifo|lifo|shortest (phase II)", "policy path=shortest|dfs (phase II)"),
                   bound_fn=fallback_bound,
                   bound_formula="2(n − 1) + (m − n + 1)(n + 2) + (3.1) + (3.2), ours: Algorithm 6.7's bound for "
-                                "phase I and Algorithm 3.1's (§3.5.2, equation (3.1), equation (3.2)) for phase II, behind O(m²n) (§6.3.3)",
+                                "phase I and Algorithm 3.1's (§3.5.2) for phase II, behind O(m²n) (§6.3.3)",
                   explorer=FallbackThreadExplorer,
                   parameters=(Parameter("thread-length", LENGTH.help, default=2, minimum=1),),
                   kit_fn=lambda n, m, opts: Kit(thread=opts["thread-length"]), **_ROBOT),

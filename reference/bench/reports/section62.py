@@ -76,17 +76,17 @@ CLAIMS: dict[str, Claim] = {
     "case-1a": Claim("6.1", T61.format("(m)", "edge (E-marker)", "none", "O(mn)"), "mn", "m",
                      lambda n, m: m, "m"),
     "case-1b": Claim("6.1", T61.format("(m)", "vertex + edge (V-E-marker)", "none", "O(mn)"), "mn",
-                     "m + 1 (§6.2.1, Case 1b; m with the extension, §6.2.1, Case 1b)", lambda n, m: m + 1, "m + 1"),
+                     "m + 1 (§6.2.1 Case 1b; m with the extension, §6.2.1 Case 1b)", lambda n, m: m + 1, "m + 1"),
     "case-2": Claim("6.1", T61.format("m + n", "edge (E-marker)", "none", "O(mn)"), "mn", "m + n",
-                    lambda n, m: m + n, "m + n − 1 (§6.2.1, Case 2)"),
+                    lambda n, m: m + n, "m + n − 1 (§6.2.1 Case 2)"),
     "case-3a": Claim("6.1", T61.format("Σ_{k=1}^{n−1} k", "vertex (V-marker)", "none", "O(m·d_max)"), "m·d_max",
-                     "Σ_{k=1}^{n−1} k", lambda n, m: sum_to(n - 1), "Σ_{k=1}^{n} k (§6.2.1, Case 3b, Figure 6.6)"),
+                     "Σ_{k=1}^{n−1} k", lambda n, m: sum_to(n - 1), "Σ_{k=1}^{n} k (§6.2.1 Case 3b, Figure 6.6)"),
     "case-3b": Claim("6.1", T61.format("(Σ_{k=1}^{n−1} k)", "edge (E-marker)", "none", "O(m)"), "m",
                      "Σ_{k=1}^{n−1} k", lambda n, m: sum_to(n - 1), "Σ_{k=1}^{n−1} k"),
     "case-4": Claim("6.1", T61.format("m − ⌊n/2⌋", "edge (E-marker)", "closest-first", "O(mn)"), "mn",
-                    "m − ⌊n/2⌋", lambda n, m: m - n // 2, "m − ⌊(n−1)/2⌋ (§6.2.1, Case 4 corrected)"),
+                    "m − ⌊n/2⌋", lambda n, m: m - n // 2, "m − ⌊(n−1)/2⌋ (§6.2.1 Case 4 corrected)"),
     "case-4-mn": Claim("6.1", T61.format("m", "edge (E-marker)", "closest-first", "O(mn)"), "mn", "m",
-                       lambda n, m: m, "m + [n even] (§6.2.1, Case 4 corrected)"),
+                       lambda n, m: m, "m + [n even] (§6.2.1 Case 4 corrected)"),
     "case-5-v1": Claim("6.1", T61.format("unknown k > 3", "vertex, edge, or vertex+edge", "none", "O(m²n)"), "m²n",
                        "k > 3, not known relative to the world", None, "Σ_{k=1}^{n} k (K given: any)"),
     "case-5-v2": Claim("6.1", T61.format("unknown k > 3", "vertex, edge, or vertex+edge", "none", "O(m²n)"), "m²n",
@@ -106,15 +106,15 @@ CLAIMS: dict[str, Claim] = {
 }
 CLAIMS.update({
     "case-1b-edgeinfo": Claim("6.2", "| (m) | vertex + edge (V-E-marker) | none | O(mn) | O(mn) |", "mn",
-                              "m + 1 (§6.2.1, Case 1b; m with the extension, §6.2.1, Case 1b)", lambda n, m: m + 1, "m + 1"),
+                              "m + 1 (§6.2.1 Case 1b; m with the extension, §6.2.1 Case 1b)", lambda n, m: m + 1, "m + 1"),
     "case-2-edgeinfo": Claim("6.2", "| m + n | edge (E-marker) | none | O(mn) | O(mn) |", "mn", "m + n",
-                             lambda n, m: m + n, "m + n − 1 (§6.2.1, Case 2)"),
+                             lambda n, m: m + n, "m + n − 1 (§6.2.1 Case 2)"),
     "case-1a-edgeinfo": Claim("6.2", "| (m) | edge (E-marker) | none | O(mn) | O(mn) |", "mn", "m",
                               lambda n, m: m, "m"),
     "case-4-edgeinfo": Claim("6.2", "| m − ⌊n/2⌋ | edge (E-marker) | closest-first | O(mn) | O(mn) |", "mn",
-                             "m − ⌊n/2⌋", lambda n, m: m - n // 2, "m − ⌊(n−1)/2⌋ (§6.2.1, Case 4 corrected)"),
+                             "m − ⌊n/2⌋", lambda n, m: m - n // 2, "m − ⌊(n−1)/2⌋ (§6.2.1 Case 4 corrected)"),
     "case-4-mn-edgeinfo": Claim("6.2", "| m | edge (E-marker) | closest-first | O(mn) | O(mn) |", "mn", "m",
-                                lambda n, m: m, "m + [n even] (§6.2.1, Case 4 corrected)"),
+                                lambda n, m: m, "m + [n even] (§6.2.1 Case 4 corrected)"),
     "case-5-directional": Claim("6.2", "| unknown k > 3 | vertex or edge or vertex+edge | none | O(m²n) | O(m²n) |",
                                 "m²n", "k > 3, not known relative to the world", None, "Σ_{k=1}^{n} k (K given: any)"),
 })
@@ -240,7 +240,7 @@ def claims_table(exp, g: dict, tried: dict, algs: list[str]) -> list[str]:
         cost_ok = ("—" if v["slope"] is None else yes(v["slope"] <= SLOPE_TOLERANCE))
         if v["exact"]:
             cost_ok += f"; ≤ our exact bound on every world: {yes(not v['over_exact'])}"
-        lines.append(f"| {fam} | `{a}` | {('O(' + c.cost + ')') if c.cost else 'fails (§6.2.1, Case 0)'} | {v['worlds']} | "
+        lines.append(f"| {fam} | `{a}` | {('O(' + c.cost + ')') if c.cost else 'fails (§6.2.1 Case 0)'} | {v['worlds']} | "
                      f"{v['correct']}/{v['worlds']} | {v['used_max']:,.0f} / {v['used_mean']:,.1f} | {c.stated_text}"
                      f"{ratio} | {stated_ok} | {c.checked_text} | {yes(not v['over_checked'])} | "
                      f"{'—' if v['ratio_f'] is None else format(v['ratio_f'], '.4g')} | "
@@ -249,7 +249,7 @@ def claims_table(exp, g: dict, tried: dict, algs: list[str]) -> list[str]:
                     "K that lets phase I mark every place, and the rows with K = 4, 6, 10 below show phase II at work "
                     "(`figure-6.13` varies K too). Case 0 is expected to stop with "
                     "`failed` on worlds where several unexplored edges fit a marked place (\"the robot cannot "
-                    "determine\" which, §6.2.1, Case 0; the certified pairs in `tests/test_markers_case5.py` show that no "
+                    "determine\" which, §6.2.1 Case 0; the certified pairs in `tests/test_markers_case5.py` show that no "
                     "pick could be right).", ""]
 
 

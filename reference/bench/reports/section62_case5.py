@@ -1,11 +1,11 @@
 """§6.2.1 Case 5 measured where phase II does the work: the ``table-6.1`` / ``table-6.2`` rows run with K = 4, 6, 10
-markers, and Figure 6.13 for Version-2 (thesis §6.2.1, Case 5, Algorithm 6.4, Algorithm 6.5, §6.2.1; Tables 6.1, 6.2).
+markers, and Figure 6.13 for Version-2 (thesis §6.2.1 Case 5, Algorithm 6.4, Algorithm 6.5, §6.2.1; Tables 6.1, 6.2).
 
 With the default kits every Case 5 version marks every place (phase I runs to
 the end), so its "unknown k > 3, O(m²n)" row would say nothing of phase II.
 The bench therefore also runs each version with K = 4, 6 and 10
 (:data:`~topomark.reference.bench.plan.CASE_5_K`; 4 is the least, "k > 3",
-§6.2.1, Case 5), and :func:`phase_two_shares` reports, per world family, algorithm, K and
+§6.2.1 Case 5), and :func:`phase_two_shares` reports, per world family, algorithm, K and
 size: the worlds mapped correctly (checked), the mean cost, the mean traversals
 phase II made testing its hypotheses (the walks and their retraces, column
 ``phase_two``) and their share of the cost.  The share is the mean over the
@@ -50,7 +50,7 @@ def phase_two_shares(g: dict, tried: dict, algs: list[str]) -> list[str]:
     if not keys:
         return []
     lines = ["## Case 5 with few markers: phase II's share of the cost", "",
-             "K = 4, 6, 10 markers (`--markers K`; 4 is the least, \"k > 3\", §6.2.1, Case 5): phase I runs out and phase II "
+             "K = 4, 6, 10 markers (`--markers K`; 4 is the least, \"k > 3\", §6.2.1 Case 5): phase I runs out and phase II "
              "(Algorithm 3.1's hypotheses, Algorithm 6.4 lines 16–35, Algorithm 6.5 lines 14–37) maps the rest. "
              "Phase II = the traversals made testing its hypotheses (walks and retraces); share = mean over the "
              "worlds of phase II ÷ cost.", "",

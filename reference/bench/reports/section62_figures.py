@@ -61,7 +61,7 @@ def marked_places(used: float) -> int:
 COMPARED = ("Costs below are compared without drop trips (the traversals made only to drop markers: Case 3b's back "
             "over e and back; extension-2's, Algorithm 6.6 line 10): at v_u the robot stands at an end of e "
             "and could drop there, as Algorithm 6.1 line 7 does, and the thesis's O(m) argument counts no "
-            "motion for marking (§6.2.1, Case 3b). The full cost is shown beside.")
+            "motion for marking (§6.2.1 Case 3b). The full cost is shown beside.")
 
 
 def means(g: dict, family: str, alg: str, column="cost", options: str = "") -> dict[int, float]:
@@ -133,7 +133,7 @@ def _fig_611_612(fam: str, g: dict) -> list[str]:
     lines += _finding("\"The Σ_{k=1}^{n−1} k E-marker algorithm, which has O(m) cost bound, provides the lowest cost, "
                       "which is very close to the optimal cost m.\"", "without drop trips, case-3b the lowest mean at "
                       f"{sum(lowest.values())}/{len(lowest)} sizes; its mean cost/m: {_ratio_text(per_m)} (close: < 3)"
-                      "; with its drop trips (two traversals per non-loop edge, §6.2.1, Case 3b): the lowest at "
+                      "; with its drop trips (two traversals per non-loop edge, §6.2.1 Case 3b): the lowest at "
                       f"{sum(lowest_full.values())}/{len(lowest_full)} sizes, cost/m {_ratio_text(per_m_full)}",
                       (all(lowest.values()) and all(x < 3 for x in per_m.values())) if lowest else None)
     omn = ("case-1a", "case-1b", "case-2", "case-4", "case-4-mn")
@@ -258,7 +258,7 @@ def fraction_table(heading: str, sizes: list[int], basic: dict[int, float], cell
 def figure_613(exp, g: dict) -> list[str]:
     lines = ["Fractions (the thesis gives none): `marked-fraction=f` gives Version-1 K = max(4, Σ_{i=1}^{⌊f·n⌋} i) "
              "markers, which mark exactly ⌊f·n⌋ places uniquely (v0 one marker, the j-th new place j + 1); K ≥ 4 is "
-             "the least the algorithm takes (\"k > 3\", §6.2.1, Case 5) and marks 2 places, so \"0%\" is 2 of n places. The "
+             "the least the algorithm takes (\"k > 3\", §6.2.1 Case 5) and marks 2 places, so \"0%\" is 2 of n places. The "
              "measured fraction (places marked ÷ n, from the markers used) is shown in brackets.", ""]
     for fam in FAMILIES6:
         fr = {f: means(g, fam, "case-5-v1", options=f"marked-fraction={f}") for f in FRACTIONS}

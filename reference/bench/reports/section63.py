@@ -50,9 +50,9 @@ TABLE_63 = """| Length of thread | Need for retying | Upper bounds |
 | an arbitrary length thread l < c(G) | yes | O(mn) |
 | a long thread l = c(G) | no | O(mn) |
 | a very long thread l ≫ m | no | O(m) |"""
-SUMMARY_L2212 = ("\"Given the simplest form of thread, deterministic mapping is possible with cost O(m²n). The minimum "
-                 "cost for mapping is O(m) and this can be obtained with a sufficiently long thread. Overall the longer "
-                 "the thread the lower the cost.\" (§6.4)")
+SUMMARY_64 = ("\"Given the simplest form of thread, deterministic mapping is possible with cost O(m²n). The minimum "
+              "cost for mapping is O(m) and this can be obtained with a sufficiently long thread. Overall the longer "
+              "the thread the lower the cost.\" (§6.4)")
 
 
 
@@ -111,7 +111,7 @@ def _body(experiment: str, out: Path) -> Body:
 
 def _table63(gr: dict) -> tuple[list[str], dict]:
     lines = ["## Table 6.3 (thesis, verbatim; caption \"Solvability and cost bounds of different threads.\")", "",
-             TABLE_63, "", SUMMARY_L2212, "",
+             TABLE_63, "", SUMMARY_64, "",
              "Ours: the fixed l = ε thread is Algorithm 3.1 (basic) with the `thread` lighthouse; l < c(G) is "
              "explore-explore (Algorithm 6.8) with l = 8; explore-merge (Algorithm 6.9) is not implemented (its merge "
              "procedure is in [59, 61], not in the thesis). cost/f is cost divided by the bound's function f "
