@@ -128,6 +128,13 @@ def test_where_must_cite_the_thesis_by_its_structure(tmp_path, where, problem):
     assert ledger.load(bad)[0].thesis == "§6.2.1 Case 1a, Figure 6.4"
 
 
+@pytest.mark.parametrize("section, where, thesis", [("§6.2.1", ("Table 6.1",), "§6.2.1, Table 6.1"),
+                                                    ("§3.6.4", ("§3.6.4", "§3.6.4 footnote 13"), "§3.6.4 footnote 13"),
+                                                    ("§3.6", ("§3.6.4",), "§3.6.4"), ("§4", ("Chapter 4",), "Chapter 4")])
+def test_the_thesis_column_names_the_section_once(section, where, thesis):
+    assert ledger.Claim("x", section, where, "c", "assumed", evidence="cited").thesis == thesis
+
+
 def test_the_command_prints_the_summary_and_json_exit_0(capsys):
     assert main(["claims"]) == 0
     out = capsys.readouterr().out

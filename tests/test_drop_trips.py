@@ -1,5 +1,5 @@
 """Drop trips: the traversals made only to carry markers to where they are dropped, and back — part of the cost,
-counted apart (the accounting rule of ``reference/run/simulator.py``; §3.1.2 §6.2.1 Case 3b, Algorithm 6.6 line 10)."""
+counted apart (the accounting rule of ``reference/run/simulator.py``; §3.1.2, §6.2.1 Case 3b, Algorithm 6.6 line 10)."""
 
 from __future__ import annotations
 

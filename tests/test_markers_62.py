@@ -68,7 +68,7 @@ K4_E = World({v: tuple(w for w in ns if {v, w} != {"0", "1"}) for v, ns in gener
 
 @pytest.mark.parametrize("name", ["case-3a", "case-dv-sum"])
 def test_sigma_n_minus_1_leaves_the_last_vertex_blank_and_sigma_n_marks_it(name):
-    """Figure 6.6 use Σ^n; Case 3a's title and Algorithm 6.2 Σ^{n−1}: with
+    """Case 3a's text and Figure 6.6 use Σ^n; Case 3a's title and Algorithm 6.2 Σ^{n−1}: with
     Σ_{k=1}^{n−1} k the last new vertex stays blank and is recognised by its blank label on re-entry; with
     Σ_{k=1}^{n} k all n are marked."""
     out = explore(K4_E, name)

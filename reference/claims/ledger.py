@@ -107,7 +107,8 @@ class Claim:
         """The section and the places that state the claim, each once: ``"§6.2.1 Case 1a, Figure 6.4"``."""
         covered = any(w == self.section or w.startswith((self.section + " ", self.section + "."))
                       or (w.startswith("Chapter ") and "§" + w[8:] == self.section) for w in self.where)
-        return ", ".join(([] if covered else [self.section]) + list(self.where))
+        finer = [w for w in self.where if not any(x.startswith(w + " ") for x in self.where)]
+        return ", ".join(([] if covered else [self.section]) + finer)
 
     @classmethod
     def from_row(cls, row: dict) -> "Claim":

@@ -6,7 +6,7 @@ the technique in the Σ_{k=1}^{n−1} k E-marker algorithm (Case 3b) and the sin
 The thesis only names this version; it is built as Version-1 is (Algorithm
 6.4), with Case 3b's marks in place of Case 3a's:
 
-* **Phase I** (Case 3b, §6.2.1 Cases 3b and 4): an unmarked v_u (no marked edge) is new;
+* **Phase I** (Case 3b, §6.2.1): an unmarked v_u (no marked edge) is new;
   the robot walks back over e to v_k, drops the next count on e and returns (a
   drop trip, §6.2.1 Case 3b), so the marked edges form a spanning tree of the phase-I
   places and each names its two ends.  A v_u with marked edges is known at once

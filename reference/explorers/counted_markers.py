@@ -1,18 +1,18 @@
 """Mapping with Σ_{k=1}^{n−1} k markers, a unique count per place: Case 3a (Algorithm 6.2), Case 3b and the
-Σ k directional vertex-marker algorithm (thesis §6.2.1 Cases 3a–4, Figures 6.6–6.8; §6.2.2).
+Σ k directional vertex-marker algorithm (thesis §6.2.1 Cases 3a and 3b, Figures 6.6–6.8; §6.2.2).
 
 The robot is assured Σ_{k=1}^{n−1} k = n(n−1)/2 homogeneous markers and drops a
 *different number* of them at each place it discovers (1, 2, 3, ...), so a
 marked place names itself.  It never uses n or m.
 
-* **Case 3b** (:class:`EdgeCounts`, E-markers, O(m), §6.2.1 Cases 3b and 4): on entering an
+* **Case 3b** (:class:`EdgeCounts`, E-markers, O(m), §6.2.1 Case 3b): on entering an
   unmarked v_u (no marked edge) e is a non-loop edge: non-loop augmentation, then
   "the robot goes back to (non-loop) edge e, dropping a unique number of markers
   on e" — the i-th non-loop edge gets i markers, so the marked edges form a
   spanning tree of S.  On entering a v_u with marked edges, the marked edges'
   counts and relative exits (``[4,A,E3-1,E4-2]``, Figure 6.8) name v_u and the
   entry edge e' at once: no motion validates anything.  Loop edges and vertices
-  are never marked.  The thesis proves the identification unique (§6.2.1 Cases 3b and 4,
+  are never marked.  The thesis proves the identification unique (§6.2.1 Case 3b,
   Figure 6.8(c) "can *not* happen"); the explorer checks it and reports
   :class:`~topomark.spec.errors.AlgorithmFailed` if it ever is not.
 * **Case 3a** (:class:`VertexCounts`, undirected V-markers, Algorithm 6.2,
@@ -34,8 +34,8 @@ Decisions, with the thesis references:
   accounting rule, and why the §6.2 findings compare the cost without them:
   :mod:`topomark.reference.run.simulator`).  Nothing else depends on the trip,
   so the cost without it is exactly the cost of dropping on e from v_u.
-* **Σ^{n−1} against Figure 6.6's Σ^{n}** (Case 3a's title, and Algorithm
-  6.2's, say Σ_{k=1}^{n−1} k; Figure 6.6's caption, Σ_{k=1}^{n} k).
+* **Σ^{n−1} against Figure 6.6's Σ^{n}** (Case 3a's title and Algorithm
+  6.2's say Σ_{k=1}^{n−1} k; Figure 6.6's caption, Σ_{k=1}^{n} k).
   Both hold, for different kits: §6.2.1 Case 3a "The algorithm marks each of the n
   vertices uniquely, so a total of Σ_{k=1}^{n} k V-markers are used", and with
   exactly Σ_{k=1}^{n−1} k "this vertex must be the last vertex that has not been
@@ -101,7 +101,7 @@ def sum_to(k: int) -> int:
 
 
 class EdgeCounts(MarkerWalk):
-    """Case 3b: a unique count of undirected E-markers on each non-loop edge, O(m) (§6.2.1 Cases 3b and 4)."""
+    """Case 3b: a unique count of undirected E-markers on each non-loop edge, O(m) (§6.2.1 Case 3b)."""
 
     name = "case-3b"
 

@@ -68,7 +68,7 @@ Cost accounting (the robot's purposes, :data:`~topomark.reference.explorers.robo
 
 References
 ----------
-Thesis §2.3.1 (Figure 2.2) and §6.3.1, the
+Thesis §2.3.1 (Figure 2.2) and §6.3.1 (the
 carried l = ε thread is this directional variant); Dudek et al. [24, 26, 27].
 
 Examples

@@ -1,6 +1,6 @@
 """§6.2's algorithms that give places a unique count of markers: Case 3a (Algorithm 6.2), Case 3b, Σ k
 directional vertex markers, and Case 3b's extension-1 and extension-2 (Algorithm 6.6) with directional
-E-markers (thesis §6.2.1 Cases 3a–4, Algorithm 6.2, §6.2.2; Tables 6.1, 6.2).
+E-markers (thesis §6.2.1 Cases 3a and 3b, Algorithm 6.2, §6.2.2; Tables 6.1, 6.2).
 
 Each is a kit algorithm: by default the robot carries exactly the markers its
 case is assured — Σ_{k=1}^{n−1} k = n(n−1)/2 for Cases 3a/3b and the directional
@@ -62,13 +62,13 @@ def _count(n: int, options: dict, assured: int | None = None) -> int:
 
 SPECS = (
     AlgorithmSpec(
-        name="case-3a", thesis="§6.2.1 Case 3a, Algorithm 6.2 (Cases 3a and 3b, Figure 6.6)", kit=Kit(vertex=1),
+        name="case-3a", thesis="§6.2.1 Case 3a, Algorithm 6.2 (Figure 6.6)", kit=Kit(vertex=1),
         bound="O(m·d_max)", markers="Σ_{k=1}^{n−1} k undirected V-markers (Σ_{k=1}^{n} k if the kit allows)",
         deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=VertexCounts,
         uses_lighthouse=False, parameters=(MARKERS,), kit_fn=lambda n, m, o: Kit(vertex=_count(n, o)),
         marker_bound_fn=lambda n, m: sum_to(n), family="robot", bound_bench="table-6.1"),
     AlgorithmSpec(
-        name="case-3b", thesis="§6.2.1 Case 3b (Cases 3b and 4, Figures 6.7, 6.8)", kit=Kit(edge=1),
+        name="case-3b", thesis="§6.2.1 Case 3b (Figures 6.7, 6.8)", kit=Kit(edge=1),
         bound="O(m)", markers="Σ_{k=1}^{n−1} k undirected E-markers",
         deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=EdgeCounts,
         uses_lighthouse=False, parameters=(MARKERS,), kit_fn=lambda n, m, o: Kit(edge=_count(n, o)),

@@ -1,6 +1,6 @@
 """§6.2.1 Case 5 — k > 3 undirected markers, their number not known relative to the world: Version-1
 (Algorithm 6.4) and Version-2 (Algorithm 6.5) — and Case 0, the plausible strategy shown to fail (thesis
-Figure 6.3; §6.2.1 Case 5, Algorithm 6.4, Algorithm 6.5; Table 6.1 row "unknown k > 3").  Explorers:
+Figure 6.3; §6.2.1 Case 5, Algorithms 6.4 and 6.5; Table 6.1 row "unknown k > 3").  Explorers:
 :mod:`topomark.reference.explorers.case5_v1`, :mod:`~topomark.reference.explorers.case5_v2`,
 :mod:`~topomark.reference.explorers.case5_phase2` (phase II, shared) and
 :mod:`~topomark.reference.explorers.case0_every_vertex`.

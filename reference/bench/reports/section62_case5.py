@@ -1,5 +1,6 @@
 """§6.2.1 Case 5 measured where phase II does the work: the ``table-6.1`` / ``table-6.2`` rows run with K = 4, 6, 10
-markers, and Figure 6.13 for Version-2 (thesis §6.2.1 Case 5, Algorithm 6.4, Algorithm 6.5, §6.2.1; Tables 6.1, 6.2).
+markers, and Figure 6.13 for Version-2 (thesis §6.2.1 Case 5,
+Algorithms 6.4 and 6.5, and the evaluation that closes §6.2.1; Tables 6.1, 6.2).
 
 With the default kits every Case 5 version marks every place (phase I runs to
 the end), so its "unknown k > 3, O(m²n)" row would say nothing of phase II.
