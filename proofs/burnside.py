@@ -4,7 +4,7 @@
 class: per connected graph G (no start, no markers, mirror images distinct),
 one rotation system per orbit of Aut(G) acting on G's ``∏ (deg v - 1)!``
 rotation systems by ``(σR)_{σ(v)} = σ ∘ R_v ∘ σ⁻¹``.  What is counted
-(thesis L415, L449): two worlds are the same when extended-isomorphic, a graph
+(thesis §3.1.3, §3.2.2 footnote 8): two worlds are the same when extended-isomorphic, a graph
 isomorphism that keeps at every vertex the order of the exits "labelled
 starting from different reference edges" under "the same pre-defined
 enumeration rule" — so a rotation, never a reversal: a mirror image is another

@@ -4,7 +4,7 @@
 A :class:`Kit` is what the robot is given before it sets out: how many vertex
 markers and edge markers, how many markers it may drop at a vertex *or* on an
 edge as it needs (``either``: §6.2.1 Case 1b's pool of m + 1 homogeneous
-V-E-markers, L1508–L1521), whether they are directional, whether they may be
+V-E-markers), whether they are directional, whether they may be
 picked up again (the movable marker of Dudek et al., §2.3.1), and a thread of
 some length (§6.3).  A :class:`MarkerOp` is one operation as the robot states
 it, relative to its entry edge.  The simulator refuses any operation the kit
@@ -17,7 +17,7 @@ undirected — every marker class of the thesis is homogeneous in that respect
 (Figure 3.21, §6.1, §6.2) — and a thread's length is in edges, 0 meaning the
 thesis's l = ε (tied at v0, never laid along an edge; §6.3).
 
-Decision (L1510, L1512, footnote 16: "exactly 1 marker is dropped (either on
+Decision (§6.2.1 Case 1b, footnote 16: "exactly 1 marker is dropped (either on
 the vertex or on the edge …)"; the thesis counts Case 1b's markers as one
 homogeneous pool): a drop is drawn from its kind's own markers first, then
 from the pool (:meth:`Kit.draw`), so a kit without a pool behaves exactly as

@@ -13,10 +13,10 @@ marker-related perception, written ``[degree, V#-dir, otherInfo]``:
 * thread items (§6.3, :mod:`topomark.spec.thread`), after the edge part and
   only where the thread lies at this vertex: ``T`` — the thread is tied here,
   ``T-p`` tied here and laid out toward relative exit ``p`` (the direction of
-  an l = ε thread, L2030: "whether the thread is present at the vertex and
+  an l = ε thread, §6.3.1: "whether the thread is present at the vertex and
   the direction of the thread"); ``S-p`` — the thread lies along the edge at
-  relative exit ``p`` (a "thread-marked" or "stringed" edge, L2046, L2121),
-  ``S2-p`` twice; ``F`` — the thread's free end lies here (L2049); ``K`` —
+  relative exit ``p`` (a "thread-marked" or "stringed" edge, §6.3.2, Algorithm 6.8 line 7),
+  ``S2-p`` twice; ``F`` — the thread's free end lies here (§6.3.2); ``K`` —
   a knot is tied here, ``K3`` three (Figure 6.20).  In that order, edges by
   exit: e.g. ``[3,A,A,T-0,F]`` (an l = ε thread tied here, toward the
   entry edge) or ``[4,A,A,S-0,S-2,K2]``.

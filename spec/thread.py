@@ -2,14 +2,14 @@
 
 The thesis's robot "can 'tie' one end of the thread at a vertex and play that
 thread out as it moves through the graph, and perceive the thread when
-encountering the thread at a given vertex" (L2020).  This module is the
+encountering the thread at a given vertex" (§6.3).  This module is the
 thread as a piece of world state, in world names and absolute exits:
 
 * :class:`ThreadMark` — what lies at one vertex, in absolute exits: whether
   the thread is *tied* here and the exit it is laid out toward (the direction
-  of an l = ε thread, L2030), the incident edges it lies along and how often
-  (its "thread-marked" or "stringed" edges, L2046, L2121), whether its *free
-  end* lies here (L2049, Algorithm 6.8 line 11) and how many *knots* are tied
+  of an l = ε thread, §6.3.1), the incident edges it lies along and how often
+  (its "thread-marked" or "stringed" edges, §6.3.2, Algorithm 6.8 line 7), whether its *free
+  end* lies here (§6.3.2, Algorithm 6.8 line 11) and how many *knots* are tied
   here (Figure 6.20).  :func:`~topomark.spec.signature.signature_at` reads it
   (through ``thread_marks``) relative to the entry edge, in the notation
   documented in :mod:`topomark.spec.signature`.
@@ -26,12 +26,12 @@ Decisions (the thesis describes the operations only in words, §6.3):
 
 * **Length.** The thread's length is counted in edges laid; the kit's
   ``thread`` is that length, 0 being l = ε (only long enough to be tied and
-  "laid out in some direction", L2028).  Carrying the free end, a move lays
+  "laid out in some direction", §6.3.1).  Carrying the free end, a move lays
   the thread along the edge traversed; a move that would make the laid walk
   longer than the kit's length is refused (an :class:`InvalidInput` naming
   the kit) — the robot "rewinds the thread from the current vertex when
-  thread length l is reached" (L2096), so reaching l is something it knows.
-* **Rewinding** is retracing along the thread while picking it up (L2046:
+  thread length l is reached" (§6.3.3), so reaching l is something it knows.
+* **Rewinding** is retracing along the thread while picking it up (§6.3.2:
   "retraces its steps along the thread by picking up and rewinding the
   thread"): carrying the free end, a move back along the edge the thread was
   last laid on picks that edge's thread up instead of laying it twice.  A
@@ -40,11 +40,11 @@ Decisions (the thesis describes the operations only in words, §6.3):
   picked up with it (Figure 6.20: knots of vertices not yet fully explored
   survive because rewinding follows the stack).
 * **Free end.** The robot holds the free end while it lays the thread; it may
-  ``leave`` it where it stands (Algorithm 6.7, L2049: "the robot leaves the
+  ``leave`` it where it stands (Algorithm 6.7, §6.3.2: "the robot leaves the
   thread (free end) there") and ``take`` it up again there.  A free end lying
   at a vertex is sensed there; one in the robot's hand is not.
 * **Tie / untie.** ``tie`` needs the thread in hand and not tied; its optional
-  direction is the exit the thread is laid out toward (l = ε, L2028: "tied
+  direction is the exit the thread is laid out toward (l = ε, §6.3.1: "tied
   ... and then laid out in some direction").  ``untie`` needs the whole thread
   rewound to the tied vertex (Algorithm 6.8 line 20: "traverses to v_s, unties
   the thread"); its knots are undone with it.

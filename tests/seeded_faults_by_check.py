@@ -9,7 +9,7 @@ bound its explorer does not keep — and a small world on which it shows.
 at the iteration named below, and that with the check disabled
 (:func:`disable`) the fault goes undetected: the run is then verified, or
 ends with the later check named in the last column.  ``docs/checks.md``
-keeps the same table with the thesis lines each check states.
+keeps the same table with the thesis references each check states.
 
 ==============  =============================  ==================  ====  ===========================
 check           fault                          reported as         it.   check disabled: the run
@@ -243,7 +243,7 @@ class ReportsNoModelsOnce(ModelTreeExplorer):
 
 
 def thesis_case_4_bound(n: int, m: int) -> int:
-    """Case 4's marker bound as L1663 states it, m − ⌊n/2⌋: one short of what the explorer needs for even n
+    """Case 4's marker bound as §6.2.1 states it, m − ⌊n/2⌋: one short of what the explorer needs for even n
     (the registry states the corrected m − ⌊(n−1)/2⌋)."""
     return m - n // 2
 
@@ -302,7 +302,7 @@ SEEDED: tuple[Seeded, ...] = (
            ("at most 3 (the algorithm's stated bound: Σ_{k=1}^{n−1} k undirected V-markers (Σ_{k=1}^{n} k",
             "at n = 2, m = 1", "found 4"), like="case-3a", world=EDGE, options={"markers": 4}),
     Seeded("cost-bound", "OneTraversalTooMany", OneTraversalTooMany, "cost bound", 1,
-           ("edge traversals", "at most 1 = (3.1)+(3.2)", "L630–L640", "at n = 2, m = 1", "found 2"), world=EDGE),
+           ("edge traversals", "at most 1 = (3.1)+(3.2)", "§3.5.2", "at n = 2, m = 1", "found 2"), world=EDGE),
     Seeded("models", "ReportsNoModelsOnce", ReportsNoModelsOnce, "models", 2,
            ("step 2", "the true world among the live models", "none of 0 live model(s)"), like="model-tree",
            world=generators.lattice(2, 3).with_start(None), options={"window": 1}),

@@ -1,6 +1,6 @@
 """Table 2.3's classic baselines (reference/explorers/footprints.py, reference/explorers/labelled_graph.py,
-registrations/baselines.py): the footprints model with m + n homogeneous markers (L220–L227) and the labelled graph
-explored depth first (L185).  Every run is checked (pose, I-1, I-2, the bound function and the marker budget after
+registrations/baselines.py): the footprints model with m + n homogeneous markers (§2.3.1) and the labelled graph
+explored depth first (§2.3.1).  Every run is checked (pose, I-1, I-2, the bound function and the marker budget after
 every step; iterations, cost bound and extended isomorphism, markers included, at the end); each test adds what it
 proves.  The decisions are shown on the smallest worlds that show them."""
 
@@ -48,7 +48,7 @@ def test_each_baseline_maps_each_world_within_its_bounds_and_drops_its_whole_kit
 
 
 def test_footprints_leave_one_marker_on_every_vertex_and_every_edge():
-    """L220: "one for each node or edge", m + n in all, from one homogeneous pool."""
+    """§2.3.1: "one for each node or edge", m + n in all, from one homogeneous pool."""
     w = make_world("complete-hole:n=6,seed=1")
     S = explore(w, "footprints").explorer.S
     assert all(S.to_world().markers) and len(S.to_world().markers) == w.n + w.m
@@ -57,7 +57,7 @@ def test_footprints_leave_one_marker_on_every_vertex_and_every_edge():
 
 
 def test_footprints_search_every_known_vertex_of_v_us_degree_not_only_those_case_1a_would():
-    """L227: "each (other) known vertex in S which has the same degree as v_u" — the marks v_u shows and an
+    """§2.3.1: "each (other) known vertex in S which has the same degree as v_u" — the marks v_u shows and an
     unexplored edge narrow Case 1a's candidates (Algorithm 6.1 lines 11–12), not the footprints model's.  Same
     edges in the same order, a superset of candidates at every loop step, and at least as many validation moves."""
     wider = 0
@@ -74,7 +74,7 @@ def test_footprints_search_every_known_vertex_of_v_us_degree_not_only_those_case
 
 
 def test_footprints_go_back_to_v_k_over_e_before_searching():
-    """L227: "the robot returning to v_k": one retrace move per loop edge, none per new place."""
+    """§2.3.1: "the robot returning to v_k": one retrace move per loop edge, none per new place."""
     w = make_world("random:n=9,fraction=0.4,seed=2")
     out = explore(w, "footprints")
     assert out.by_purpose["retrace"] == w.m - w.n + 1 and out.by_purpose["new"] == w.m
@@ -89,7 +89,7 @@ def test_footprints_with_one_marker_short_run_out():
 
 
 def test_labelled_dfs_names_the_place_and_the_entry_without_a_move():
-    """L185: the label answers "have I been here" and "by which exit did I arrive": no validation, no retrace,
+    """§2.3.1: the label answers "have I been here" and "by which exit did I arrive": no validation, no retrace,
     no search — only the edge itself and the walks of S between edges."""
     out = explore(make_world("complete:n=6"), "labelled-dfs")
     assert set(out.by_purpose) <= {"new", "travel"}
@@ -116,7 +116,7 @@ def test_labelled_dfs_costs_m_on_a_cycle_and_a_chain_and_2m_minus_1_on_a_star_fr
 
 
 def test_a_label_pointing_one_exit_off_is_caught_by_the_checker():
-    """The label's direction is the whole back-link answer (L185): turned one exit clockwise, the robot believes
+    """The label's direction is the whole back-link answer (§2.3.1): turned one exit clockwise, the robot believes
     it entered by the wrong exit, and the run is not judged correct."""
     class TurnedLabel(LabelledGraphDFS):
         def label(self, v, it):

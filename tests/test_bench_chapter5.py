@@ -77,7 +77,7 @@ def test_a_tiny_sweep_records_the_walk_and_the_models_and_the_report_compares(tm
     assert rows[("figure-3.4a", "none", "cue=n")]["completed_models"] == "6"
 
     text = bench.write_report("chapter-5", tmp_path, plots=False).read_text()
-    assert "usually less than 50 steps" in text and "(L1334" in text  # the thesis beside ours
+    assert "usually less than 50 steps" in text and "(§5.1" in text  # the thesis beside ours
     assert "| lattice-hole | all | 1 | 1 | 0 | 0 |" in text  # §5.1's headline row: 1 world, correct
     assert "| random-20 | local-degree-list | 1 | 1 |" in text  # §5.2.1 per family and walk seed
     assert "| small-random-40 | 6 | `cue=n` | 1 | 6.0 | 1 | 0 | 0 | 0 |" in text

@@ -30,7 +30,7 @@ def test_a_tiny_sweep_runs_every_lighthouse_checked_and_reports_them_side_by_sid
     code = main(["bench", "lighthouses", "--graphs", "1", "--sizes", "72", "--out", str(tmp_path), "--jobs", "1",
                  "--quiet", "--no-plots"])
     rows = list(csv.DictReader((tmp_path / "runs.csv").open()))
-    wrong = _unverified(rows)  # §5.2.1's marker-less lighthouses may map wrong (L1346); no other may
+    wrong = _unverified(rows)  # §5.2.1's marker-less lighthouses may map wrong; no other may
     assert code == (1 if wrong else 0)
     assert {(r["lighthouse"], r["algorithm"]) for r in rows} == {(lh, a) for lh in LIGHTHOUSES for a in
                                                                  ("basic", "enh3")}

@@ -63,7 +63,7 @@ def test_table_61_tiny_sweep_runs_every_undirected_algorithm_checked_and_reports
     _check_rows(rows, bench_plan.TABLE_61_ALGS, {"lattice-hole", "complete-hole"})
     _check_phase_two(every, ("case-5-v1", "case-5-v2", "case-5-edge"), {"lattice-hole", "complete-hole"}, report)
     wrong = [r for r in rows if r["verified"] != "True"]
-    assert all(r["algorithm"] == "case-0" for r in wrong) and code == 0  # Case 0 fails as L1491 expects
+    assert all(r["algorithm"] == "case-0" for r in wrong) and code == 0  # Case 0 fails as §6.2.1 expects
     assert "| ≤ thesis count? |" in report and "| cost held? |" in report
     for a in bench_plan.TABLE_61_ALGS:
         assert f"| `{a}` {CLAIMS[a].row}" in report or a == "case-0"

@@ -1,5 +1,5 @@
-"""``topomark bench`` judges every run against its algorithm's expected outcome: Case 0's failures (L1491) and
-§5.2.1's failures and wrong maps (L1346) are as expected; a run an entry expects to be correct that is not exits 1."""
+"""``topomark bench`` judges every run against its algorithm's expected outcome: Case 0's failures and
+§5.2.1's failures and wrong maps are as expected; a run an entry expects to be correct that is not exits 1."""
 
 from __future__ import annotations
 
@@ -30,9 +30,9 @@ def test_recorded_rows_are_judged_by_their_entry_family_and_lighthouse():
     assert row_as_expected(_row("case-0", "failed")) and row_as_expected(_row("case-0", "correct"))
     assert not row_as_expected(_row("case-0", "limit")) and not row_as_expected(_row("case-3a", "failed"))
     assert not row_as_expected(_row("case-3a", "error"))
-    assert row_as_expected(_row("basic", "wrong-map", "lattice-hole", "local-pair"))  # L1346
+    assert row_as_expected(_row("basic", "wrong-map", "lattice-hole", "local-pair"))  # §5.2.1
     assert not row_as_expected(_row("basic", "wrong-map", "lattice-hole", "directional-vertex"))
-    assert row_as_expected(_row("basic", "failed", "small-world-k2-p10", "undirected-vertex"))  # the walk, L1332–L1334
+    assert row_as_expected(_row("basic", "failed", "small-world-k2-p10", "undirected-vertex"))  # the walk, §5.1
     assert row_as_expected({**_row("case-3a", "unchecked"), "checked": "False"})
     assert row_as_expected(_row("model-tree", "limit", "small-random-40"))
     tally = Tally()
@@ -47,7 +47,7 @@ def test_a_family_override_and_a_bad_expectation_in_an_entry():
     odd = dataclasses.replace(spec, expected_by_family=(("complete-hole", "may-fail", "L1"),))
     assert odd.expectation("complete-hole") == ("may-fail", "L1") and odd.expectation("lattice-hole")[0] == "correct"
     assert odd.to_json()["expected_by_family"] == {"complete-hole": {"expected": "may-fail", "reason": "L1"}}
-    with pytest.raises(ValueError, match="thesis line"):
+    with pytest.raises(ValueError, match="thesis reference"):
         dataclasses.replace(spec, expected="may-fail")
     with pytest.raises(ValueError, match="expected outcome 'maybe'"):
         dataclasses.replace(spec, expected="maybe", expected_reason="L1")
@@ -59,10 +59,10 @@ def test_algorithms_json_shows_the_expectations(capsys):
     text = capsys.readouterr().out
     listed = json.loads(text)
     entries = {a["name"]: a for a in (listed if isinstance(listed, list) else listed["algorithms"])}
-    assert entries["case-0"]["expected"] == "fails-by-design" and "L1491" in entries["case-0"]["expected_reason"]
+    assert entries["case-0"]["expected"] == "fails-by-design" and "§6.2.1 Case 0" in entries["case-0"]["expected_reason"]
     assert entries["case-3a"]["expected"] == "correct" and entries["model-tree"]["expected"] == "may-fail"
     lights = entries["basic"]["expected_by_lighthouse"]
-    assert lights["local-pair"]["expected"] == "may-fail" and "L1346" in lights["local-pair"]["reason"]
+    assert lights["local-pair"]["expected"] == "may-fail" and "§5.2.1" in lights["local-pair"]["reason"]
     assert "directional-vertex" not in lights
 
 

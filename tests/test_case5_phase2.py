@@ -1,5 +1,5 @@
 """§6.2.1 Case 5 where phase II does the work (K = 4, 6, 10, as Figure 6.13's few-markers end), Version-2's pool
-kept by the simulator, Case 5 with E-markers (L1716) and Table 6.2's directional "unknown k > 3" row:
+kept by the simulator, Case 5 with E-markers and Table 6.2's directional "unknown k > 3" row:
 reference/explorers/case5_*.py, registrations/markers_case5.py.
 
 Every run is under the checker (pose, I-1, I-2, the marker budget after every step, extended isomorphism with
@@ -53,7 +53,7 @@ def test_default_kit_never_reaches_phase_two(name, text):
 
 @pytest.mark.parametrize("name", ["case-5-edge", "case-5-directional"])
 def test_new_versions_map_every_small_world_from_every_start_with_four_markers(name):
-    """Every embedded world of 3..5 places and degree ≤ 4, from every start, K = 4 (the least kit, L1708)."""
+    """Every embedded world of 3..5 places and degree ≤ 4, from every start, K = 4 (the least kit, §6.2.1 Case 5)."""
     runs = with_phase_two = 0
     for w in embedded_worlds(5, 4, min_vertices=3):
         for v in w.vertices:
@@ -65,14 +65,14 @@ def test_new_versions_map_every_small_world_from_every_start_with_four_markers(n
 
 
 def test_edge_version_with_every_tree_edge_marked_is_case_3b():
-    """Enough markers (Σ_{k=1}^{n−1} k): the same moves as Case 3b (L1643's O(m)), no hypothesis."""
+    """Enough markers (Σ_{k=1}^{n−1} k): the same moves as Case 3b (§6.2.1 Case 4's O(m)), no hypothesis."""
     w = make_world(WORLDS[0])
     out = explore(w, "case-5-edge")
     assert out.cost == explore(w, "case-3b").cost and in_world(out) <= sum_to(w.n - 1)
 
 
 def test_directional_version_never_probes_a_marked_place():
-    """The direction of a marked place's markers gives its entry edge (L1902): Version-1's probes disappear."""
+    """The direction of a marked place's markers gives its entry edge (§6.2.2): Version-1's probes disappear."""
     w = make_world(WORLDS[1])
     v1, dv = explore(w, "case-5-v1", options={"markers": 6}), explore(w, "case-5-directional", options={"markers": 6})
     assert sum(it.probes for it in v1.explorer.iterations) > 0

@@ -1,16 +1,16 @@
 """What Chapter 5 states about the Figure 3.4 worlds, reproduced and compared (issue 11 item 6).
 
 The two wheels of Figure 3.4 (:func:`~topomark.reference.worlds.generators.wheel_pair`,
-derived there from §3.2.2, L434–L490) carry an undirected marker at the centre;
+derived there from §3.2.2) carry an undirected marker at the centre;
 every run here strips it (the robot brings its own kit, or none).  Each test quotes the
-thesis line it reproduces; where our number differs, the docstring says why
+thesis passage it reproduces; where our number differs, the docstring says why
 (and ``topomark bench chapter-5`` prints the same comparison with times).
 
-* §5.1, L1334: "the robot always selects one of the four corner vertices as
+* §5.1: "the robot always selects one of the four corner vertices as
   the lighthouse, because … D = (4, 3, 3) … lacks rotational equivalent".
-* §5.2.1, L1348: "this approach may generate a wrong world model on the two
+* §5.2.1: "this approach may generate a wrong world model on the two
   graphs shown in Figure 3.4".
-* §5.2.2, L1421: "using only local signatures … more than 50 models become
+* §5.2.2: "using only local signatures … more than 50 models become
   completed … using global signatures … only six … which include the correct
   model. (One of the incorrect models is the correct representation of the
   graph in Figure 3.4(b).) Similar results are observed when exploring the
@@ -44,7 +44,7 @@ def _degrees_around(world: World, v: str) -> list[int]:
 
 @pytest.mark.parametrize("name", WORLDS)
 def test_section_5_1_picks_a_corner_and_maps_from_every_start_facing_and_seed(name):
-    """L1334 held: every start vertex, every facing, walk seeds 0-2: the marker lies at a corner whose neighbour
+    """§5.1 held: every start vertex, every facing, walk seeds 0-2: the marker lies at a corner whose neighbour
     degrees are {4, 3, 3} (the centre's (3, 3, 3, 3) is periodic), the run is checked correct, and the corner is
     found at once from a corner (0 walk steps) or after one step from the centre."""
     world, _ = WORLDS[name]
@@ -60,12 +60,12 @@ def test_section_5_1_picks_a_corner_and_maps_from_every_start_facing_and_seed(na
 
 @pytest.mark.parametrize("name", WORLDS)
 def test_section_5_2_1_detects_its_wrong_loop_closings_on_figure_3_4(name):
-    """L1348: "this approach may generate a wrong world model on the two graphs shown in Figure 3.4" — it may; ours
-    never does, because it detects each wrong loop closing first, as L1346 allows ("detects some signature
+    """§5.2.1: "this approach may generate a wrong world model on the two graphs shown in Figure 3.4" — it may; ours
+    never does, because it detects each wrong loop closing first, as §5.2.1 allows ("detects some signature
     inconsistencies (due to wrong loop closing) and thus cannot proceed reporting failure").  From every start,
     facing and walk seeds 0-2 both schemes report ``failed``.  Scheme B from the centre picks a corner (aperiodic
     D, but four places share it) and at its first step takes a neighbouring corner for the lighthouse: the join
-    would be a self-loop, which no world has (L374).  Scheme A's corner is entered again by an explored entry."""
+    would be a self-loop, which no world has (§3.1.1).  Scheme A's corner is entered again by an explored entry."""
     world, _ = WORLDS[name]
     for v in world.vertices:
         for facing in range(world.degree(v)):
@@ -73,7 +73,7 @@ def test_section_5_2_1_detects_its_wrong_loop_closings_on_figure_3_4(name):
                 for scheme in ("local-pair", "local-degree-list"):
                     light = LIGHTHOUSES[scheme].with_options(seed=seed)
                     out = explore(_from(world, v, facing), "basic", lighthouse=light, record=False)
-                    assert (out.outcome, out.claimed) == ("failed", "failed") and "L1346" in out.reason, (v, seed)
+                    assert (out.outcome, out.claimed) == ("failed", "failed") and "§5.2.1" in out.reason, (v, seed)
     out = explore(_from(world, "0"), "basic", lighthouse="local-degree-list", record=False)
     assert "self-loop" in out.reason and world.degree(out.lighthouse_at) == 3  # a corner, one of four alike
 
@@ -92,7 +92,7 @@ def _positions(models: list[World], target: World) -> list[int]:
 
 @pytest.mark.parametrize("name", WORLDS)
 def test_algorithm_5_1_six_completed_models_with_global_signatures_the_correct_one_last(name):
-    """L1421 and Figure 5.3 held on both worlds with the n cue (``--cue-n 5``), from the centre facing corner 1:
+    """§5.2.2 and Figure 5.3 held on both worlds with the n cue (``--cue-n 5``), from the centre facing corner 1:
     exactly six completed models with global signatures, the correct one completed sixth (Figure 5.3 (f)), and
     one incorrect model is the other Figure 3.4 world (for (a) the third; for (b) (a) is the sixth and (b) itself
     the third).  With no marker the two wheels cannot be told apart, so the run ends ``failed`` naming the six
@@ -110,9 +110,9 @@ def test_algorithm_5_1_six_completed_models_with_global_signatures_the_correct_o
 
 @pytest.mark.parametrize("name", WORLDS)
 def test_algorithm_5_1_local_signatures_complete_many_more_models(name):
-    """L1421, "more than 50" (local) against six (global): with the n cue, local signatures (every degree-matching
-    loop closing accepted, L1367) complete 48 models to global's 6 — we measure 48, not "more than 50", because the
-    n cue rejects every model over five vertices (§5.3 lists the cues, L1436; the thesis ran none); without a cue
+    """§5.2.2, "more than 50" (local) against six (global): with the n cue, local signatures (every degree-matching
+    loop closing accepted, §5.2.2) complete 48 models to global's 6 — we measure 48, not "more than 50", because the
+    n cue rejects every model over five vertices (§5.3 lists the cues; the thesis ran none); without a cue
     the count is cap-bound (at the same cap of 300 live models, local completes more than twice as many as global,
     which stays at six; at the default 10000, 346 against 6 — ``topomark bench chapter-5``).  Both the correct model and
     the other wheel are among local's completed models too."""

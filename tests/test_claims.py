@@ -76,11 +76,11 @@ def test_every_check_test_experiment_and_command_the_ledger_names_exists():
 
 
 def test_the_existence_check_finds_each_kind_of_missing_name():
-    fake = ledger.Claim("fake", "§3.4", "L1", "c", "checked", checks=("I-1", "no-such-check"),
+    fake = ledger.Claim("fake", "§3.4", ("§3.4",), "c", "checked", checks=("I-1", "no-such-check"),
                         tests=("tests/test_claims.py::test_no_such_test", "tests/test_nowhere.py::test_x"),
                         experiments=("table-4.1", "table-9.9"),
                         command="topomark explore cycle:n=5 --algorithm no-such-algorithm")
-    problems = missing_names([fake, ledger.Claim("cmd", "§3.4", "L1", "c", "proved", command="topomark nonsense")])
+    problems = missing_names([fake, ledger.Claim("cmd", "§3.4", ("§3.4",), "c", "proved", command="topomark nonsense")])
     assert len(problems) == 6, problems
     for words in ("no-such-check", "test_no_such_test", "test_nowhere.py", "table-9.9", "no-such-algorithm",
                   "'topomark nonsense'"):
@@ -99,21 +99,40 @@ def test_the_ledger_covers_every_chapter_and_every_backing_is_justified():
     assert set(summary) == {2, 3, 4, 5, 6}
     assert sum(r["total"] for r in summary.values()) == len(CLAIMS) >= 60
     for c in CLAIMS:
-        assert re.search(r"L\d+", c.lines), c.id
+        assert c.where and all(ledger.REFERENCE.fullmatch(w) for w in c.where), c.id
         assert c.backing != "measured" or c.verdict in ledger.VERDICTS, c.id
         assert c.reproduce() or c.backing in ("assumed", "unbacked"), c.id
 
 
 def test_a_malformed_row_is_a_fault_of_topomark(tmp_path):
     bad = tmp_path / "claims.toml"
-    bad.write_text('[[claim]]\nid = "x"\nsection = "§3"\nlines = "L1"\nclaim = "c"\nbacking = "measured"\n'
+    bad.write_text('[[claim]]\nid = "x"\nsection = "§3"\nwhere = ["§3"]\nclaim = "c"\nbacking = "measured"\n'
                    'experiments = ["table-4.1"]\ncommand = "topomark bench table-4.1"\nsource = "README"\n')
     with pytest.raises(TopomarkFault, match="needs its evidence"):
         ledger.load(bad)
-    bad.write_text(bad.read_text() + 'verdict = "held"\n[[claim]]\nid = "x"\nsection = "§3"\nlines = "L1"\n'
+    bad.write_text(bad.read_text() + 'verdict = "held"\n[[claim]]\nid = "x"\nsection = "§3"\nwhere = ["§3"]\n'
                    'claim = "c"\nbacking = "assumed"\nevidence = "cited"\n')
     with pytest.raises(TopomarkFault, match="used twice"):
         ledger.load(bad)
+
+
+@pytest.mark.parametrize("where, problem", [('["L' '1506"]', "not a thesis reference"), ('[]', "where is empty"),
+                                            ('["§6.2.1, L' '1506"]', "not a thesis reference")])
+def test_where_must_cite_the_thesis_by_its_structure(tmp_path, where, problem):
+    bad = tmp_path / "claims.toml"
+    bad.write_text(f'[[claim]]\nid = "x"\nsection = "§6.2.1"\nwhere = {where}\nclaim = "c"\nbacking = "assumed"\n'
+                   'evidence = "cited"\n')
+    with pytest.raises(TopomarkFault, match=problem):
+        ledger.load(bad)
+    bad.write_text(bad.read_text().replace(f"where = {where}", 'where = ["§6.2.1 Case 1a", "Figure 6.4"]'))
+    assert ledger.load(bad)[0].thesis == "§6.2.1 Case 1a, Figure 6.4"
+
+
+@pytest.mark.parametrize("section, where, thesis", [("§6.2.1", ("Table 6.1",), "§6.2.1, Table 6.1"),
+                                                    ("§3.6.4", ("§3.6.4", "§3.6.4 footnote 13"), "§3.6.4 footnote 13"),
+                                                    ("§3.6", ("§3.6.4",), "§3.6.4"), ("§4", ("Chapter 4",), "Chapter 4")])
+def test_the_thesis_column_names_the_section_once(section, where, thesis):
+    assert ledger.Claim("x", section, where, "c", "assumed", evidence="cited").thesis == thesis
 
 
 def test_the_command_prints_the_summary_and_json_exit_0(capsys):

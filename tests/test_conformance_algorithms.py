@@ -52,8 +52,8 @@ def test_each_case_carries_the_registry_kit_bound_and_reference_run(suite):
             kit = spec.kit_for(case["n"], case["m"], spec.parse_options(case["options"]))
             assert case["kit"] == kit.to_json() and case["bound"] == spec.bound_for(case["n"], case["m"])
             assert (case["reference"]["map"] is None) == (case["expected"] == "failed")
-    assert cases(suite, "case-3a")["triangle"]["kit"] == {"undirected-vertex": 3}  # Σ_{k=1}^{2} k (L1562)
-    assert cases(suite, "case-1b")["triangle"]["kit"] == {"undirected-either": 4}  # m + 1 V-E-markers (L1510)
+    assert cases(suite, "case-3a")["triangle"]["kit"] == {"undirected-vertex": 3}  # Σ_{k=1}^{2} k (§6.2.1 Case 3a)
+    assert cases(suite, "case-1b")["triangle"]["kit"] == {"undirected-either": 4}  # m + 1 V-E-markers (§6.2.1 Case 1b)
     assert set(cases(suite, "extension-1")["cycle-4"]["kit"]) == {"directional-edge"}
     assert cases(suite, "dudek")["cycle-4"]["reference"]["marker_operations"] == {"drop": 2, "pick_up": 2}
     assert "thread" in cases(suite, "thread-explore")["lattice-2x3"]["kit"]

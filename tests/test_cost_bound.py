@@ -44,7 +44,7 @@ def test_an_entry_cannot_name_cost_bound_without_an_exact_bound_nor_state_one_wi
                                                  ("undirected-vertex", "probe")])
 def test_a_lighthouse_s_setup_and_probes_are_outside_3_1_plus_3_2(lighthouse, purpose):
     """On one edge (3.1)+(3.2) = 1: Figure 3.21(b)'s lighthouse walks 2 to drop its third marker, §5.1's probes 2 to tell its
-    back-link; the run is held to the loop's own traversals (L628) and passes, and counting those moves too
+    back-link; the run is held to the loop's own traversals (§3.5.2) and passes, and counting those moves too
     would fail it."""
     out = explore(EDGE, "basic", lighthouse=lighthouse, record=False)
     assert out.verified and out.bound_checked and out.upper_bound == upper_bound(2, 1) == 1
@@ -55,7 +55,7 @@ def test_a_lighthouse_s_setup_and_probes_are_outside_3_1_plus_3_2(lighthouse, pu
 
 
 def test_enhancements_4_and_5_report_no_exact_bound_and_are_not_held_to_one():
-    """Their expansion traversals are outside (3.1)+(3.2) (L1263): only O(m²n) (L891), asymptotic."""
+    """Their expansion traversals are outside (3.1)+(3.2) (§4.2): only O(m²n) (Chapter 4), asymptotic."""
     for name in ("enh4", "enh5-d1", "enh3+5"):
         out = explore(EDGE, name, record=False)
         assert out.verified and out.upper_bound is None and not out.bound_checked
@@ -87,5 +87,5 @@ def test_a_run_past_its_bound_exits_1_naming_the_bound(capsys):
     captured = capsys.readouterr()
     data = json.loads(captured.out)
     assert data["outcome"] == "wrong-map" and data["violation"]["check"] == "cost bound"
-    assert "cost bound violated at edge traversals (§3.1.2, L399): expected at most 1 = (3.1)+(3.2)" in captured.err
-    assert "(§3.5.2, L630–L640), at n = 2, m = 1, found 2" in captured.err
+    assert "cost bound violated at edge traversals (§3.1.2): expected at most 1 = (3.1)+(3.2)" in captured.err
+    assert "(§3.5.2), at n = 2, m = 1, found 2" in captured.err

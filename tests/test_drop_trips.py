@@ -1,5 +1,5 @@
 """Drop trips: the traversals made only to carry markers to where they are dropped, and back — part of the cost,
-counted apart (the accounting rule of ``reference/run/simulator.py``; §3.1.2 L399, L1629, Algorithm 6.6 line 10)."""
+counted apart (the accounting rule of ``reference/run/simulator.py``; §3.1.2, §6.2.1 Case 3b, Algorithm 6.6 line 10)."""
 
 from __future__ import annotations
 
@@ -20,7 +20,7 @@ CHAIN = "chain:n=3"  # the smallest world with a non-loop edge to mark: v0 – v
 
 
 def test_case_3b_walks_back_over_e_to_drop_and_the_trip_is_in_the_cost_and_counted_apart():
-    """Case 3b on a chain of 3: each of the 2 non-loop edges is marked by going back over it and back (L1629):
+    """Case 3b on a chain of 3: each of the 2 non-loop edges is marked by going back over it and back (§6.2.1 Case 3b):
     2 new edges + 4 drop-trip traversals = 6, every one of them a traversal the simulator counted."""
     out = explore(bare(make_world(CHAIN)), "case-3b")
     assert out.outcome == "correct"
@@ -33,8 +33,8 @@ def test_case_3b_walks_back_over_e_to_drop_and_the_trip_is_in_the_cost_and_count
 
 @pytest.mark.parametrize("name", ["case-1a", "case-2", "case-3a", "case-dv-sum", "extension-1"])
 def test_an_algorithm_that_drops_where_it_stands_makes_no_drop_trip(name):
-    """In transit on e (L1497, Algorithm 6.3 line 6) or at v_u (Algorithm 6.1 line 7, Algorithm 6.2 line 12,
-    L1902): markers dropped, no traversal made for them."""
+    """In transit on e (§6.2.1 Case 1a, Algorithm 6.3 line 6) or at v_u (Algorithm 6.1 line 7, Algorithm 6.2 line 12,
+    §6.2.2): markers dropped, no traversal made for them."""
     out = explore(bare(make_world(CHAIN)), name)
     assert out.outcome == "correct" and out.marker_operations["drop"] >= 1
     assert out.drop_trips == 0 and "drop" not in out.by_purpose and out.cost == out.m

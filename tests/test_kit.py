@@ -65,7 +65,7 @@ def test_unopenable_paths_are_bad_input_with_a_short_message(path, message):
     assert len(str(info.value)) < 400
 
 
-# -- §6.2.1 Case 1b's pool of vertex-or-edge markers (L1508–L1521, footnote 16) --------------------------------
+# -- §6.2.1 Case 1b's pool of vertex-or-edge markers (footnote 16) --------------------------------
 
 @pytest.mark.parametrize("kit, obj, text", [
     (Kit(either=5), {"undirected-either": 5}, "5 undirected vertex-or-edge markers"),

@@ -51,7 +51,7 @@ def test_the_smallest_vertex_transitive_world_ends_failed_with_the_reason(light)
 
 @pytest.mark.parametrize("figure", [g.wheel_a, g.wheel_b], ids=["3.4a", "3.4b"])
 def test_figure_3_4_always_picks_a_corner_and_maps_correctly(figure):
-    """§5.1 (L1334): on both Figure 3.4 worlds "the robot always selects one of the four corner vertices as the
+    """§5.1: on both Figure 3.4 worlds "the robot always selects one of the four corner vertices as the
     lighthouse, because … D = (4, 3, 3) … lacks rotational equivalent" — from every start, for several seeds."""
     world = bare(figure())
     for start in world.vertices:
@@ -65,7 +65,7 @@ def test_figure_3_4_always_picks_a_corner_and_maps_correctly(figure):
 
 
 def test_the_walk_tests_the_start_first_and_v0_is_where_the_robot_stands():
-    """L1334 "either at the initial location or otherwise within a few steps": a start whose D is aperiodic
+    """§5.1 "either at the initial location or otherwise within a few steps": a start whose D is aperiodic
     holds the marker with no walk; elsewhere the believed pose (v0, 0) is the robot's state after the walk,
     where the checker anchors φ (verified runs)."""
     world = bare(g.wheel_a()).with_start(Start("1", "0"))  # a corner: D = (4, 3, 3) from its entry
@@ -83,7 +83,7 @@ def test_the_walk_tests_the_start_first_and_v0_is_where_the_robot_stands():
 
 
 def test_recognising_v0_probes_only_as_many_neighbours_as_it_takes():
-    """L1334: not every incident edge — entering a (4, 3, 3) corner from the centre no probe at all (the degree
+    """§5.1: not every incident edge — entering a (4, 3, 3) corner from the centre no probe at all (the degree
     just left is unique in D); from a corner one probe (2 traversals) and 2 to face the entry again."""
     world = bare(g.wheel_a())
     D = neighbour_degrees(world, "1")  # exits of '1' in order: '0' (4), '4' (3), '2' (3)
@@ -112,7 +112,7 @@ def test_the_searched_lighthouses_map_every_family_and_replay(tmp_path, capsys):
 
 
 def test_undirected_edge_marks_an_edge_of_different_degrees_and_v0_is_the_end_reached():
-    """§6.1 (L1470, "either one of the end vertices"): v0 is the end the robot walked into, the marker on the
+    """§6.1 ("either one of the end vertices"): v0 is the end the robot walked into, the marker on the
     edge it came by (v0's exit 0); recognised by table, no probes."""
     world = bare(g.wheel_a())  # start at the centre (degree 4): its first step reaches a corner (degree 3)
     sim = Simulator(world, world.start_state(), EDGE.kit)
@@ -139,7 +139,7 @@ def test_never_a_wrong_map_on_small_random_worlds():
 
 
 def test_neighbourhood_two_tests_the_views_to_distance_two():
-    """--neighbourhood 2 (L1328: a larger neighbourhood): more probes, still verified; a regular world still
+    """--neighbourhood 2 (§5.1: a larger neighbourhood): more probes, still verified; a regular world still
     fails (its views are equal at every distance)."""
     w = bare(g.lattice_hole(4, 4, seed=2))
     one = explore(w, "basic", lighthouse=VERTEX, record=False)

@@ -41,7 +41,7 @@ WORLDS = ("lattice-hole:rows=4,cols=5,seed=3", RANDOM, COMPLETE_HOLE, "small-wor
 @functools.cache
 def _holds(text: str, name: str) -> bool:
     """Whether the lighthouse must map the world: always, but §5.2.1's only where the place they chose is unique
-    (L1344, L1346; reference/run/local_places.py).  Elsewhere any outcome but a crash (tests/test_local_lighthouses.py)."""
+    (reference/run/local_places.py).  Elsewhere any outcome but a crash (tests/test_local_lighthouses.py)."""
     light = LIGHTHOUSES[name]
     if light.certain:
         return True

@@ -1,6 +1,6 @@
 """Marker-less lighthouses of §5.2.1 (reference/explorers/local_lighthouses.py): scheme A ``local-pair`` and
 scheme B ``local-degree-list`` — correct where the place they choose is unique, ``wrong-map`` or ``failed``
-(never a crash) where it is not (L1346), their options, recognition costs and bad input."""
+(never a crash) where it is not (§5.2.1), their options, recognition costs and bad input."""
 
 from __future__ import annotations
 
@@ -89,8 +89,8 @@ def test_every_chapter_3_4_algorithm_runs_with_them():
 
 def test_unique_place_means_correct_on_generated_worlds():
     """Over 24 small generated worlds, 4 seeds: a unique place always maps correctly; otherwise the run ends in one
-    of the thesis's outcomes (L1346), the checker's judgement matching ``verified``.  Here every wrong loop
-    closing is detected (``failed``) or makes the map outgrow the world (``limit``, scheme A); the wrong map L1346
+    of the thesis's outcomes (§5.2.1), the checker's judgement matching ``verified``.  Here every wrong loop
+    closing is detected (``failed``) or makes the map outgrow the world (``limit``, scheme A); the wrong map §5.2.1
     also names needs :data:`SEVEN`'s kind of world."""
     seen = {name: set() for name in LOCAL}
     worlds = [g.lattice_hole(4, 4, seed=s) for s in range(8)] + [
@@ -117,7 +117,7 @@ def test_unique_place_means_correct_on_generated_worlds():
 @pytest.mark.parametrize("with_map", [False, True])
 @pytest.mark.parametrize("name", LOCAL)
 def test_a_repeated_local_signature_gives_a_wrong_map(tmp_path, capsys, name, no_check, with_map):
-    """L1346 "terminates with an incorrect world model", on :data:`SEVEN`: the algorithm claims ``correct`` (it
+    """§5.2.1 "terminates with an incorrect world model", on :data:`SEVEN`: the algorithm claims ``correct`` (it
     "cannot determine whether it is a correct model"); checked, the outcome is ``wrong-map``, exit 1, the first
     violation named; unchecked, the same run claims the same map.  ``--map`` writes that map either way and never
     changes the exit code."""
@@ -141,27 +141,27 @@ def test_a_repeated_local_signature_gives_a_wrong_map(tmp_path, capsys, name, no
 @pytest.mark.parametrize("with_map", [False, True])
 @pytest.mark.parametrize("name, world", [("local-degree-list", DIAMOND), ("local-pair", KITE)])
 def test_a_wrong_loop_closing_is_detected_as_failure(tmp_path, capsys, name, world, no_check, with_map):
-    """L1346 "detects some signature inconsistencies (due to wrong loop closing) and thus cannot proceed
+    """§5.2.1 "detects some signature inconsistencies (due to wrong loop closing) and thus cannot proceed
     reporting failure": scheme B on the diamond (its two degree-3 vertices both show (2, 3, 2)) and scheme A on
     the kite (its only degree-2 vertex has two neighbours of degree 3) close a loop wrongly, then find their own
-    map inconsistent: ``failed``, exit 1, the thesis line given, no map written — checked or not."""
+    map inconsistent: ``failed``, exit 1, the thesis reference given, no map written — checked or not."""
     (tmp_path / "w.json").write_text(dumps_world(world))
     path = tmp_path / "m.json"
     argv = ["explore", str(tmp_path / "w.json"), "--lighthouse", name, "--walk-limit", "50", "--json",
             *(["--no-check"] if no_check else []), *(["--map", str(path)] if with_map else [])]
     assert main(argv) == 1
     data = json.loads(capsys.readouterr().out)
-    assert (data["outcome"], data["claimed"]) == ("failed", "failed") and "L1346" in data["reason"]
+    assert (data["outcome"], data["claimed"]) == ("failed", "failed") and "§5.2.1" in data["reason"]
     assert "violation" not in data and not path.exists()
 
 
 @pytest.mark.parametrize("figure", [g.wheel_a, g.wheel_b], ids=["3.4a", "3.4b"])
 def test_figure_3_4_is_never_mapped(figure):
-    """L1346-L1348: "this approach may generate a wrong world model on the two graphs shown in Figure 3.4 … none of
+    """§5.2.1: "this approach may generate a wrong world model on the two graphs shown in Figure 3.4 … none of
     the nodes contains both explicit place and back-link information": from every start, seeds 0-1 (walk 60),
     neither scheme maps either world.  From the centre with seed 0 scheme B picks a corner and, at its first
     step, takes a neighbouring corner for the lighthouse: the join would be a self-loop, which no world has
-    (L374) — the inconsistency L1346 says the algorithm detects, reporting failure."""
+    (§3.1.1) — the inconsistency §5.2.1 says the algorithm detects, reporting failure."""
     world = bare(figure())
     for name in LOCAL:
         for v in world.vertices:
@@ -172,13 +172,13 @@ def test_figure_3_4_is_never_mapped(figure):
                 assert out.outcome in ("wrong-map", "failed", "limit"), (name, v, seed)
     out = explore(world.with_start(Start("0", world.rotation["0"][0])), "basic", lighthouse="local-degree-list",
                   record=False)
-    assert (out.outcome, out.claimed) == ("failed", "failed") and "self-loop" in out.reason and "L1346" in out.reason
+    assert (out.outcome, out.claimed) == ("failed", "failed") and "self-loop" in out.reason and "§5.2.1" in out.reason
 
 
 def test_no_smaller_world_gives_a_wrong_map():
     """Every connected planar graph of networkx's atlas before :data:`SEVEN`, every start, seeds 0-1, walk 50:
     correct, failed or (scheme A) limit — never a wrong map: a wrong loop closing in these small worlds is
-    detected (L1346) or makes the map outgrow the world."""
+    detected (§5.2.1) or makes the map outgrow the world."""
     for name in LOCAL:
         outcomes = set()
         for G in graph_atlas_g()[2:]:
@@ -207,7 +207,7 @@ def test_a_regular_world_fails_within_the_walk(name, reason, capsys):
 
 
 def test_the_threshold():
-    """L1344/L1346 "below a threshold … Otherwise the algorithm terminates reporting failure": the star's every
+    """§5.2.1 "below a threshold … Otherwise the algorithm terminates reporting failure": the star's every
     edge is the pair (1, 3), seen at every step (the default threshold: the walk's steps); --threshold 1 refuses
     everything; K2's two vertices both show D = (1) at every visit."""
     out = explore(STAR, "basic", lighthouse="local-pair", record=False)
@@ -223,7 +223,7 @@ def test_the_threshold():
 
 
 def test_a_new_edge_into_the_lighthouse_by_an_explored_entry_is_reported_failed():
-    """L1346 "detects some signature inconsistencies (due to wrong loop closing) and thus cannot proceed reporting
+    """§5.2.1 "detects some signature inconsistencies (due to wrong loop closing) and thus cannot proceed reporting
     failure": on a chain of 4 the far leaf shows the lighthouse's signature from its only, explored, entry."""
     for name in LOCAL:
         out = explore(g.chain(4), "basic", lighthouse=name, record=False)

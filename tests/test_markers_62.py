@@ -22,7 +22,7 @@ from conftest import SMALL_WORLDS, bare, make_world
 ALGORITHMS = ("case-3a", "case-3b", "case-dv-sum")
 LATTICE_HOLE, RANDOM = "lattice-hole:rows=4,cols=5,seed=1", "random:n=10,fraction=0.3,seed=2"  # need more than 6
 SAVING = (LATTICE_HOLE, RANDOM, "complete-hole:n=7,seed=1", "small-world:n=12,k=4,p=0.2,seed=3")
-"""Worlds where both extensions use fewer markers than Case 3b (L1910: they "may"; on Figure 3.4's wheel-a
+"""Worlds where both extensions use fewer markers than Case 3b (§6.2.2: they "may"; on Figure 3.4's wheel-a
 extension-1 marks every non-loop edge, as many)."""
 
 
@@ -48,8 +48,8 @@ def test_each_algorithm_maps_each_world_with_exactly_the_assured_markers(name, t
 def test_case_3b_validates_nothing_by_motion_and_pays_two_traversals_per_marked_edge(text):
     w = bare(make_world(text))
     out = explore(w, "case-3b")
-    assert set(out.by_purpose) <= {"new", "drop", "travel"}  # L1629: "Physical motion ... is avoided"
-    assert out.drop_trips == out.by_purpose["drop"] == 2 * (w.n - 1)  # back over e and back, L1629
+    assert set(out.by_purpose) <= {"new", "drop", "travel"}  # §6.2.1 Case 3b: "Physical motion ... is avoided"
+    assert out.drop_trips == out.by_purpose["drop"] == 2 * (w.n - 1)  # back over e and back, §6.2.1 Case 3b
 
 
 @pytest.mark.parametrize("text", SMALL_WORLDS)
@@ -57,7 +57,7 @@ def test_directional_vertex_markers_make_every_place_a_lighthouse_when_all_are_m
     w = bare(make_world(text))
     out = explore(w, "case-dv-sum", options={"markers": sum_to(w.n)})
     assert out.outcome == "correct" and used(out) == sum_to(w.n) == REGISTRY["case-dv-sum"].marker_bound_fn(w.n, w.m)
-    assert set(out.by_purpose) <= {"new", "travel"}  # place and back-link at once, no probe (L1902)
+    assert set(out.by_purpose) <= {"new", "travel"}  # place and back-link at once, no probe (§6.2.2)
 
 
 # K4 without the edge 0-1, started at 1 facing 3: the smallest world whose blank last vertex is re-entered over a
@@ -68,7 +68,7 @@ K4_E = World({v: tuple(w for w in ns if {v, w} != {"0", "1"}) for v, ns in gener
 
 @pytest.mark.parametrize("name", ["case-3a", "case-dv-sum"])
 def test_sigma_n_minus_1_leaves_the_last_vertex_blank_and_sigma_n_marks_it(name):
-    """L1575 and Figure 6.6 (L1569) use Σ^n; Case 3a's title (L1562) and Algorithm 6.2 (L1579) Σ^{n−1}: with
+    """Case 3a's text and Figure 6.6 use Σ^n; Case 3a's title and Algorithm 6.2 Σ^{n−1}: with
     Σ_{k=1}^{n−1} k the last new vertex stays blank and is recognised by its blank label on re-entry; with
     Σ_{k=1}^{n} k all n are marked."""
     out = explore(K4_E, name)
@@ -133,7 +133,7 @@ def test_the_extensions_map_each_world_within_their_bound_and_below_case_3b(name
 
 
 def test_extension_2_needs_rule_3_the_naive_extension_maps_k4_minus_an_edge_wrong():
-    """L1910, Figure 6.15(b)-(c): a loop edge from an unmarked v_k, then closest-first from v_k' leaves v_k
+    """§6.2.2, Figure 6.15(b)-(c): a loop edge from an unmarked v_k, then closest-first from v_k' leaves v_k
     unmarked and a later entry takes it for a new place.  ``figure-6.15`` (K4 without an edge, from vertex 2
     facing 0) is the smallest world that shows it (no start of C3 or C4 does); with rule (3) it maps correctly."""
     k4_e = generate("figure-6.15")
@@ -174,8 +174,8 @@ def test_the_signatures_a_marker_walk_keeps_are_what_its_map_shows(algorithm, mo
 
 
 def test_the_directional_vertex_markers_stay_within_o_m_on_a_wheel_whose_hub_is_left_blank():
-    """Table 6.2 registers O(m) for Σ_{k=1}^{n−1} k directional V-markers (L2013).  On ``wheel-hub-last`` the
-    hub, of degree d_max = n − 1, is the last new place and so the blank one (L1575).  Exploring the blank's edges
+    """Table 6.2 registers O(m) for Σ_{k=1}^{n−1} k directional V-markers.  On ``wheel-hub-last`` the
+    hub, of degree d_max = n − 1, is the last new place and so the blank one (§6.2.1 Case 3a).  Exploring the blank's edges
     from the blank (counted_markers' decision) costs the rim walk (n − 1 edges), the first spoke, then out over
     each other spoke into a marked rim place and back over it, the last one not back: m + (n − 1) − 2 = 3m/2 − 2
     in all, so cost/m stays under 3/2 as m grows 40 → 160.  Without that choice (the edge policy alone), the
@@ -200,7 +200,7 @@ def test_the_directional_vertex_markers_stay_within_o_m_on_a_wheel_whose_hub_is_
 
 @pytest.mark.parametrize("text", SMALL_WORLDS)
 def test_the_directional_vertex_markers_never_probe_even_with_a_blank_place(text):
-    """Every marked place is a directional lighthouse (L1902) and the blank's edges are explored from the blank,
+    """Every marked place is a directional lighthouse (§6.2.2) and the blank's edges are explored from the blank,
     so the default kit (one place blank) needs no back-link probe anywhere."""
     out = explore(bare(make_world(text)), "case-dv-sum", record=False)
     assert out.outcome == "correct" and out.explorer.blank is not None

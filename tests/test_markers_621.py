@@ -66,14 +66,14 @@ def test_every_family_world_is_mapped_within_each_marker_bound(w):
 def test_one_marker_fewer_than_a_run_drops_is_the_failed_outcome(name):
     w = make_world(LATTICE_HOLE)
     full = used(explore(w, name))
-    short = full - 1 if name != "case-1b" else full - 2  # case-1b: m (one fewer) still maps it (L1512)
+    short = full - 1 if name != "case-1b" else full - 2  # case-1b: m (one fewer) still maps it (§6.2.1 Case 1b)
     out = explore(w, name, options={"markers": short})
     assert (out.outcome, out.claimed, out.verified) == ("failed", "failed", False)
     assert "out of markers" in out.reason
 
 
 def test_case_4_needs_m_minus_floor_of_n_minus_1_over_2_on_the_4_cycle():
-    """L1663 counts m − (n − 1) loop markers and ⌈(n−1)/2⌉ non-loop ones, then says m − ⌊n/2⌋.
+    """§6.2.1 Case 4 counts m − (n − 1) loop markers and ⌈(n−1)/2⌉ non-loop ones, then says m − ⌊n/2⌋.
     The 4-cycle from v0: (v0, v1) marked (v0 unmarked), (v1, v2) blank (v1 marked), (v2, v3) marked, the loop
     edge (v3, v0) marked — 3 = m − ⌊(n−1)/2⌋; with the thesis's m − ⌊n/2⌋ = 2 the robot runs out."""
     c4 = g.cycle(4)
@@ -89,7 +89,7 @@ def test_case_4_needs_m_minus_floor_of_n_minus_1_over_2_on_the_4_cycle():
 
 
 def test_the_extension_of_case_2_needs_m_plus_1_for_even_n():
-    """L1665 says m suffice; the 4-cycle takes 2 + 2 on (v0, v1), (v2, v3) and 1 on the loop edge: 5 = m + 1."""
+    """§6.2.1 Case 4 says m suffice; the 4-cycle takes 2 + 2 on (v0, v1), (v2, v3) and 1 on the loop edge: 5 = m + 1."""
     out = explore(g.cycle(4), "case-4-mn")
     assert out.outcome == "correct" and used(out) == 5 == markers_621.case_4_mn_markers(4, 4)
     assert explore(g.cycle(4), "case-4-mn", options={"markers": 4}).outcome == "failed"
@@ -99,7 +99,7 @@ def test_the_extension_of_case_2_needs_m_plus_1_for_even_n():
 @pytest.mark.parametrize("name", ["case-4", "case-4-mn"])
 def test_closest_first_ignores_the_edge_policy_and_marks_every_vertex_it_may_reenter(name):
     """Rule (1) is the algorithm: fifo or lifo changes nothing.  Every vertex of degree ≥ 2 ends with a marked
-    edge (L1659–L1661: the next edge from an unmarked new vertex is explored at once, and marked)."""
+    edge (§6.2.1 Case 4: the next edge from an unmarked new vertex is explored at once, and marked)."""
     w = make_world(SMALL_WORLD)
     runs = [explore(w, name, policies=Policies(edge=p)) for p in ("nearest", "fifo", "lifo")]
     assert len({(r.cost, used(r)) for r in runs}) == 1
@@ -110,7 +110,7 @@ def test_closest_first_ignores_the_edge_policy_and_marks_every_vertex_it_may_ree
 
 def test_case_2s_candidates_are_case_1as_narrowed_by_c1_and_c2():
     """Same edges in the same order (the search ends where it started the same way); Algorithm 6.1's filter
-    (c_1 single-, c_2 double-marked) keeps a subset of Case 1a's candidates (c marked), L1529."""
+    (c_1 single-, c_2 double-marked) keeps a subset of Case 1a's candidates (c marked), §6.2.1 Case 2."""
     fewer = 0
     for text in SMALL_WORLDS:
         one, two = (explore(bare(make_world(text)), a).explorer.iterations for a in ("case-1a", "case-2"))
@@ -129,7 +129,7 @@ def test_the_search_visits_the_candidates_until_the_unexpectedly_marked_edge():
 
 
 def test_case_1b_with_m_markers_finishes_the_last_iteration_without_a_search():
-    """L1512–L1521: one marker per iteration, so the robot runs out in the last one.  K4 (last iteration a loop
+    """§6.2.1 Case 1b: one marker per iteration, so the robot runs out in the last one.  K4 (last iteration a loop
     edge): one E-marker short, e/e' is the one edge left in U.  A chain (last a new leaf): one V-marker short."""
     spec = REGISTRY["case-1b"]
     full = explore(g.complete(4), spec)
@@ -144,9 +144,9 @@ def test_case_1b_with_m_markers_finishes_the_last_iteration_without_a_search():
 
 @pytest.mark.parametrize("text", [LATTICE_HOLE, RANDOM, "complete-hole:n=5,seed=1"])
 def test_case_1b_draws_its_markers_from_one_pool(text):
-    """L1510, footnote 16: m + 1 homogeneous markers, each dropped at a vertex or on an edge as needed, so the
+    """§6.2.1 Case 1b, footnote 16: m + 1 homogeneous markers, each dropped at a vertex or on an edge as needed, so the
     default kit is one pool of m + 1 — spent as n at the vertices and m − n + 1 on the loop edges; with m (the
-    extension, L1512) the map is still correct; with m − 1 the robot runs out before the last iteration."""
+    extension, §6.2.1 Case 1b) the map is still correct; with m − 1 the robot runs out before the last iteration."""
     w = make_world(text)
     assert REGISTRY["case-1b"].kit_for(w.n, w.m, {"markers": None}) == Kit(either=w.m + 1)
     full = explore(w, "case-1b")

@@ -21,7 +21,7 @@ from conftest import SMALL_WORLDS, bare, make_world
 NAME = "case-1b-edgeinfo"
 BASE = {NAME: "case-1b", "case-2-edgeinfo": "case-2", "case-1a-edgeinfo": "case-1a", "case-4-edgeinfo": "case-4",
         "case-4-mn-edgeinfo": "case-4-mn"}  # each improved algorithm and the one it improves
-USES = {NAME: lambda n, m: m + 1, "case-2-edgeinfo": lambda n, m: m + n - 1,  # L1510, L1529, L1506: exactly
+USES = {NAME: lambda n, m: m + 1, "case-2-edgeinfo": lambda n, m: m + n - 1,  # §6.2.1 Cases 1a–2: exactly
         "case-1a-edgeinfo": lambda n, m: m}  # Case 4 (closest-first): as many as case-4 / case-4-mn, ≤ the bound
 K6, LATTICE_HOLE = "complete:n=6", "lattice-hole:rows=4,cols=5,seed=1"
 COMPLETE_HOLE_6, COMPLETE_HOLE_7 = "complete-hole:n=6,seed=3", "complete-hole:n=7,seed=1"
@@ -81,10 +81,10 @@ def test_edgeinfo_is_strictly_cheaper_on_complete_hole_worlds(all_runs):
 @pytest.mark.parametrize("name, counts", [("case-2-edgeinfo", (2, 2, 1)), ("case-1a-edgeinfo", (1, 1, 1)),
                                           ("case-4-edgeinfo", (1, 0, 1)), ("case-4-mn-edgeinfo", (2, 0, 1))])
 def test_every_e_marker_head_points_at_v_u_on_the_triangle(name, counts):
-    """The E-only variants (L1898 "in a similar manner"): the markers on a non-loop edge and the one on the loop
+    """The E-only variants (§6.2.2 "in a similar manner"): the markers on a non-loop edge and the one on the loop
     edge all have their head at v_u — the new vertex, or v_k' found by the search (H there, T at the other end).
     The triangle: v0 → v1 → v2 (non-loop), the loop edge v2 → v0.  Closest-first leaves (v1, v2) blank (rule 3,
-    L1650: v1 already has a marked edge), and a blank edge stays blank at both ends."""
+    §6.2.1 Case 4: v1 already has a marked edge), and a blank edge stays blank at both ends."""
     out = explore(g.cycle(3), name)
     assert out.outcome == "correct" and out.verified and used(out) == sum(counts)
     S = out.explorer.S
@@ -97,7 +97,7 @@ def test_every_e_marker_head_points_at_v_u_on_the_triangle(name, counts):
 
 
 def test_direction_convention_on_the_triangle():
-    """L1891 leaves the exit and the end open.  Decided: each V-marker points at the edge the robot entered by
+    """§6.2.2 leaves the exit and the end open.  Decided: each V-marker points at the edge the robot entered by
     when it dropped it (v0: the faced exit, map exit 0; a new vertex: map exit 0 = e), the loop marker's head
     at v_u = v_k' (H there, T at v_k).  The triangle: v0 → v1 → v2, the loop edge back to v0 (found at v0)."""
     out = explore(g.cycle(3), NAME)
@@ -113,7 +113,7 @@ def test_direction_convention_on_the_triangle():
 
 
 def test_a_unique_candidate_is_still_visited():
-    """L1898 spares only the vertices that fail the conditions; the triangle's one candidate, v0, is visited
+    """§6.2.2 spares only the vertices that fail the conditions; the triangle's one candidate, v0, is visited
     anyway (back to v2 over e, then v2 → v1 → v0: the footprint on e is seen there)."""
     out = explore(g.cycle(3), NAME)
     (loop,) = [it for it in out.explorer.iterations if it.kind == "loop"]
@@ -123,7 +123,7 @@ def test_a_unique_candidate_is_still_visited():
 
 def test_edgeinfo_excludes_a_candidate_case_1b_visits_on_k6(runs):
     """K6, iteration 13: case-1b's candidates are v3 and v4 (degree 5, c = 2); the robot senses
-    [5,V-1,E-3-T,E-4-H] and only v3 reads that from an unexplored entry (L1898's conditions 1 and 2, enriched)."""
+    [5,V-1,E-3-T,E-4-H] and only v3 reads that from an unexplored entry (§6.2.2's conditions 1 and 2, enriched)."""
     w, plain, directed = runs[K6]
     a, b = plain.explorer.iterations[12], directed.explorer.iterations[12]
     assert (a.candidates, b.candidates, str(b.signature)) == ([3, 4], [3], "[5,V-1,E-3-T,E-4-H]")
@@ -148,8 +148,8 @@ def test_the_cli_runs_it_and_refuses_zero_markers(capsys):
 
 @pytest.mark.parametrize("name, short", [("case-1a-edgeinfo", 3), ("case-4-edgeinfo", 2), ("case-4-mn-edgeinfo", 4)])
 def test_the_e_only_variants_need_their_originals_markers_on_the_4_cycle(capsys, name, short):
-    """The kit and the count are the originals' (m; m − ⌊(n−1)/2⌋ = 3, not the stated m − ⌊n/2⌋ = 2, L1663;
-    m + [n even] = 5, L1665): one marker fewer runs out, the ``failed`` outcome (exit 1)."""
+    """The kit and the count are the originals' (m; m − ⌊(n−1)/2⌋ = 3, not the stated m − ⌊n/2⌋ = 2, §6.2.1 Case 4;
+    m + [n even] = 5, §6.2.1 Case 4): one marker fewer runs out, the ``failed`` outcome (exit 1)."""
     assert main(["explore", "cycle:n=4", "--algorithm", name, "--json"]) == 0
     assert json.loads(capsys.readouterr().out)["outcome"] == "correct"
     assert main(["explore", "cycle:n=4", "--algorithm", name, "--markers", str(short), "--json"]) == 1

@@ -52,7 +52,7 @@ def test_both_versions_map_each_world_with_any_k_never_using_more_than_k(name, t
 
 
 def test_version_1_with_every_place_marked_is_case_3a():
-    """L1724: "when the robot has sufficient markers to mark each visited vertex, the algorithm behaves as the
+    """§6.2.1 Case 5: "when the robot has sufficient markers to mark each visited vertex, the algorithm behaves as the
     Σ k V-marker algorithm" — same moves, same cost, no hypothesis."""
     w = make_world(LATTICE_HOLE)
     out = explore(w, "case-5-v1")
@@ -70,7 +70,7 @@ def test_version_1_phase_1_marks_places_uniquely_then_phase_2_leaves_them_blank(
 
 
 def test_version_2_with_every_place_and_loop_edge_marked_needs_no_hypothesis():
-    """L1770: with enough markers Version-2 behaves like the m V-E-marker algorithm (m + 4 at most)."""
+    """§6.2.1 Case 5: with enough markers Version-2 behaves like the m V-E-marker algorithm (m + 4 at most)."""
     w = make_world(RANDOM)
     out = explore(w, "case-5-v2")
     assert out.outcome == "correct" and out.hypotheses == 0 and in_world(out) <= w.m + 4
@@ -88,7 +88,7 @@ class LiteralCounter(VertexCountsThenLighthouse):
 
 
 def test_algorithm_6_4_counter_as_printed_gives_two_places_one_marker_and_fails_on_the_triangle():
-    """Algorithm 6.4's counter (lines 1, 3, 13, 15; L1731–L1745): the smallest world with a loop edge shows the
+    """Algorithm 6.4's counter (lines 1, 3, 13, 15; lines 1–15): the smallest world with a loop edge shows the
     printed counter's shared label."""
     literal = explore(TRIANGLE, variant("literal-6.4", LiteralCounter, "case-5-v1"))
     assert literal.outcome == "failed" and "[2,V,A]" in literal.reason
@@ -109,7 +109,7 @@ PAW = World({"p": ("z",), "x": ("y", "z"), "y": ("x", "z"), "z": ("p", "x", "y")
 
 
 def test_algorithm_6_5_line_23_as_printed_confirms_nothing_and_maps_the_paw_wrongly():
-    """Algorithm 6.5 line 23 (L1801): with K = 4 (line 1 spends them all) phase II must close the triangle by a
+    """Algorithm 6.5 line 23: with K = 4 (line 1 spends them all) phase II must close the triangle by a
     hypothesis."""
     literal = explore(PAW, variant("literal-6.5", LiteralLine23, "case-5-v2"), options={"markers": 4})
     assert literal.outcome == "wrong-map" and "two map vertices for one place" in literal.violation.detail
@@ -158,7 +158,7 @@ def test_cli_explore_json_outcome_correct(name, capsys):
     assert report["outcome"] == "correct" and report["algorithm"] == name
 
 
-# -- Case 0 (L1489–L1491, Figure 6.3) -------------------------------------------------------------------------------
+# -- Case 0 (Figure 6.3) -------------------------------------------------------------------------------
 
 def vector(name: str) -> World:
     return world_from_json(json.loads((VECTORS / f"{name}.json").read_text()))
@@ -183,17 +183,17 @@ def test_case_0_certified_pair_same_perceptions_different_worlds_both_failed(oth
     assert not find_isomorphism(World(a.rotation), World(b.rotation)).isomorphic
     outs = [explore(a, "case-0"), explore(b, "case-0")]
     assert [(o.outcome, o.claimed, o.violation) for o in outs] == [("failed", "failed", None)] * 2
-    assert outs[0].reason == outs[1].reason and "edges fit; the robot cannot determine which, L1491" in outs[0].reason
+    assert outs[0].reason == outs[1].reason and "edges fit; the robot cannot determine which, §6.2.1 Case 0" in outs[0].reason
 
 
 @pytest.mark.parametrize("check", [True, False])
 def test_case_0_on_k4_fails_where_the_strategy_cannot_tell_the_candidates_apart(check):
-    """Figure 6.3(b), L1491: entering a marked place of K4, three unexplored edges at marked places fit it; the
+    """Figure 6.3(b), §6.2.1 Case 0: entering a marked place of K4, three unexplored edges at marked places fit it; the
     explorer stops with ``failed`` and says so, checked or not (K4 is the smallest world that shows it)."""
     for w in (vector("k4-mapped"), make_world("complete:n=4")):
         out = explore(w, "case-0", check=check)
         assert (out.outcome, out.claimed, out.violation) == ("failed", "failed", None)
-        assert "3 edges fit; the robot cannot determine which, L1491" in out.reason
+        assert "3 edges fit; the robot cannot determine which, §6.2.1 Case 0" in out.reason
         it = out.explorer.undecided
         assert it is not None and len(it.candidates) == 3 and it.number == len(out.explorer.iterations) + 1
 
@@ -205,9 +205,9 @@ def test_case_0_cli_on_k4_is_failed_exit_1_with_the_reason(extra, capsys):
     if extra == ["--json"]:
         report = json.loads(out)
         assert (report["outcome"], report["claimed"]) == ("failed", "failed")
-        assert "3 edges fit; the robot cannot determine which, L1491" in report["reason"]
+        assert "3 edges fit; the robot cannot determine which, §6.2.1 Case 0" in report["reason"]
     else:
-        assert "outcome: failed" in out and "3 edges fit; the robot cannot determine which, L1491" in out
+        assert "outcome: failed" in out and "3 edges fit; the robot cannot determine which, §6.2.1 Case 0" in out
 
 
 def test_case_0_maps_a_world_where_one_edge_always_fits():

@@ -1,5 +1,5 @@
 """§5.3's priors for the model tree (reference/explorers/model_prior.py, the ``prior`` and ``rank`` options of
-reference/explorers/model_tree.py): the single-leaf prior (L1436) and the ranking of completed models (L1438)."""
+reference/explorers/model_tree.py): the single-leaf prior (§5.3) and the ranking of completed models (§5.3)."""
 
 from __future__ import annotations
 
@@ -42,7 +42,7 @@ def test_posteriors_halve_per_vertex_edge_and_handle_and_sum_to_one():
 
 @pytest.mark.parametrize("text,first_is_true", [("wheel-a", True), ("wheel-b", False)])
 def test_figure_3_4_ranked_the_planar_model_first_which_is_the_truth_only_for_wheel_a(text, first_is_true):
-    """The six completed models of Figure 5.3 (L1421), ranked: one planar, five of genus 1, all n = 5, m = 8.
+    """The six completed models of Figure 5.3 (§5.2.2), ranked: one planar, five of genus 1, all n = 5, m = 8.
     The planar one ranks first (2/7); it is wheel-a's map, so on wheel-b the top model is wrong and the true
     one shares the remaining 1/7 with four others."""
     out = explore(bare(make_world(text)), "model-tree", options={"cue-n": 5, "rank": "yes"})

@@ -58,7 +58,7 @@ def test_small_worlds_are_mapped_correctly_with_every_model_checked(world, optio
 
 def test_a_cycle_without_a_cue_never_ends_every_longer_cycle_being_as_consistent():
     """All degrees are 2: C3, C4, ... each stays a completed model (no walk tells them apart), so no model is
-    ever the only completed one and the run reaches its step cap — the thesis's "never terminates" (L1346)."""
+    ever the only completed one and the run reaches its step cap — the thesis's "never terminates" (§5.2.1)."""
     out = _run(generators.cycle(4), **{"max-steps": 12})
     assert out.outcome == "limit" and "--max-steps 12 reached" in out.reason
     sizes = [S.n for S in out.explorer.completed_models]
@@ -82,7 +82,7 @@ def test_local_signatures_can_return_a_wrong_map_where_global_ones_do_not():
 
 
 def test_the_figure_3_4_wheels_keep_both_completed_models():
-    """§5.2.2, L1421: on Figure 3.4(a) the completed models include the correct one and Figure 3.4(b); with no
+    """§5.2.2: on Figure 3.4(a) the completed models include the correct one and Figure 3.4(b); with no
     marker the two are indistinguishable from the centre, so the run fails saying so once every live model is
     completed (with the n cue; without it the incomplete models grow until a cap)."""
     a, b = (_bare(w) for w in generators.wheel_pair())
@@ -183,7 +183,7 @@ def test_the_cli_fields_and_the_completed_models_as_world_files(tmp_path):
 
 
 def test_the_entry_edge_check_rejects_more_loop_closings():
-    """L1369: at vertices whose neighbour degrees have no proper rotation onto themselves the robot also checks
+    """§5.2.2: at vertices whose neighbour degrees have no proper rotation onto themselves the robot also checks
     its entry edge (by visiting the neighbours), so fewer wrong loop closings are accepted."""
     world = generators.random_graph(7, 0.7, 0)
     runs = {ec: _run(world, **{"cue-n": 7, "entry-check": ec}) for ec in ("yes", "no")}

@@ -1,4 +1,4 @@
-"""Dudek et al.'s single movable marker algorithm and its directional variant (§2.3.1, L139–L152, L177).
+"""Dudek et al.'s single movable marker algorithm and its directional variant (§2.3.1).
 
 Every run here is checked (pose, I-1, I-2, bound function, marker budget, iteration counts, final extended
 isomorphism); each test adds what it proves.  The decisions of
@@ -48,7 +48,7 @@ def test_both_algorithms_map_the_thesis_families_within_our_bound(name, text):
     _assert_one_marker(out)
     probes = sum(it.probes for it in out.explorer.iterations)  # edges tried: each out and back, the last out only
     assert sum(2 * it.probes - 1 for it in out.explorer.iterations if it.probes) == out.by_purpose.get("probe", 0)
-    if name == "dudek-directional":  # the marker's direction names e': no back-link search (L177)
+    if name == "dudek-directional":  # the marker's direction names e': no back-link search (§2.3.1)
         assert probes == 0
     elif text in NEEDS_BACK_LINK:  # symmetric neighbourhoods: some v_k' has two or more unexplored edges
         assert probes > 0
@@ -66,7 +66,7 @@ def test_every_family_world_is_mapped_holding_at_most_one_marker(world):
 def test_a_triangle_needs_one_drop_and_no_back_link_search():
     """Cycle v0 v1 v2.  Steps 1–2: S holds no other vertex of degree 2 with an unexplored edge that is not v_k
     or its neighbour, so v_u is new with no drop (1 move each).  Step 3 reaches v0 from v2: drop, come back
-    over e (L162), walk v2 → v1 → v0 seeing the marker; v0 has one unexplored edge, so it is e' with no
+    over e (§2.3.1), walk v2 → v1 → v0 seeing the marker; v0 has one unexplored edge, so it is e' with no
     move, and the marker is picked up there.  1 + 1 + (1 + 1 + 2) = 6."""
     for name in ALGORITHMS:
         out = explore(generators.cycle(3), name)
@@ -89,7 +89,7 @@ def test_a_new_place_is_found_by_searching_s_then_the_marker_is_fetched_from_it(
 
 def test_the_back_link_search_on_the_smallest_complete_graph():
     """K4: in step 4 the marker is found at v0, which still has two unexplored edges; the undirected marker is
-    carried to v_k and v0's edges are traversed until one leads to it (L150); the directional marker names e'
+    carried to v_k and v0's edges are traversed until one leads to it (§2.3.1); the directional marker names e'
     where it lies, so the same step costs no probe and one drop fewer."""
     k4 = generators.complete(4)
     plain, pointed = explore(k4, "dudek"), explore(k4, "dudek-directional")

@@ -1,5 +1,5 @@
 """A run's outcome decides its exit code, whatever is asked of the output: a failed search for a
-lighthouse (§5.1, L1332) exits 1 with outcome ``failed`` under ``explore`` and ``drive``, writes no map and
+lighthouse (§5.1) exits 1 with outcome ``failed`` under ``explore`` and ``drive``, writes no map and
 says so; an explorer never raises the checker's own exception."""
 
 from __future__ import annotations
@@ -94,7 +94,7 @@ def test_no_explorer_raises_the_checkers_exception(path):
 
 
 def test_an_inconsistency_is_a_failure_or_a_fault_by_the_lighthouse():
-    """L1346 predicts an inconsistency with a lighthouse that is not explicit; Lemma 1 rules it out otherwise."""
+    """§5.2.1 predicts an inconsistency with a lighthouse that is not explicit; Lemma 1 rules it out otherwise."""
     from topomark.reference.explorers.inconsistency import inconsistent
     from topomark.reference.explorers.lighthouses import LIGHTHOUSES
     from topomark.spec.errors import AlgorithmFailed, ExplorerFault
@@ -105,7 +105,7 @@ def test_an_inconsistency_is_a_failure_or_a_fault_by_the_lighthouse():
 
 @pytest.mark.parametrize("light, code, words", [
     ("directional-vertex", 3, "Lemma 1"),  # explicit place and back-link: e' outside U is a bug
-    ("local-pair", 1, "L1346"),  # not explicit: the thesis predicts a wrong loop closing, the failed outcome
+    ("local-pair", 1, "§5.2.1"),  # not explicit: the thesis predicts a wrong loop closing, the failed outcome
 ])
 def test_e_prime_outside_u_is_a_bug_or_a_failure_by_the_lighthouse(capsys, monkeypatch, light, code, words):
     from types import SimpleNamespace
@@ -128,7 +128,7 @@ walk seed 1, takes every new place for a new one: its map outgrows the world."""
 
 @pytest.mark.parametrize("no_check", [False, True])
 def test_a_map_that_outgrows_the_world_ends_at_the_limit_checked_or_not(capsys, tmp_path, no_check):
-    """L1346 "never terminates (when every newly visited place is always validated as a new place)": once the
+    """§5.2.1 "never terminates (when every newly visited place is always validated as a new place)": once the
     believed map has more places than the world it can never become the world; the run ends ``limit``, exit 1,
     the same checked or not, the first wrong join named when checked."""
     from topomark.spec.world import Start, World
@@ -156,7 +156,7 @@ def _stop_at_second_iteration(monkeypatch):
 
 def test_the_checker_stops_a_run_under_an_explicit_lighthouse_and_says_it_claimed_nothing(capsys, tmp_path,
                                                                                          monkeypatch):
-    """Lemma 1 (L548) rules a wrong join out under an explicit lighthouse: the first violation stops the run,
+    """Lemma 1 rules a wrong join out under an explicit lighthouse: the first violation stops the run,
     ``wrong-map``, exit 1; the algorithm had not finished, so it claimed nothing (``unfinished``), and ``--map``
     writes nothing, saying why."""
     _stop_at_second_iteration(monkeypatch)
@@ -168,7 +168,7 @@ def test_the_checker_stops_a_run_under_an_explicit_lighthouse_and_says_it_claime
 
 
 def test_the_checker_lets_a_marker_less_run_finish_and_names_its_first_violation(capsys, tmp_path, monkeypatch):
-    """Under §5.2.1's lighthouses the thesis predicts wrong joins (L1346): the first violation is kept, the run
+    """Under §5.2.1's lighthouses the thesis predicts wrong joins: the first violation is kept, the run
     goes on to the algorithm's own end, and the outcome names that violation; the claimed map is written."""
     _stop_at_second_iteration(monkeypatch)
     path = tmp_path / "m.json"
@@ -180,7 +180,7 @@ def test_the_checker_lets_a_marker_less_run_finish_and_names_its_first_violation
 
 
 def test_a_degenerate_join_is_a_bug_under_an_explicit_lighthouse(capsys, monkeypatch):
-    """A join that would make a self-loop (no world has one, L374) under the directional lighthouse: Lemma 1
+    """A join that would make a self-loop (no world has one, §3.1.1) under the directional lighthouse: Lemma 1
     rules it out, so it is topomark's fault, exit 3 — never the checker's verdict."""
     from types import SimpleNamespace
     from topomark.reference.explorers.algorithm31 import LighthouseExplorer

@@ -35,7 +35,7 @@ def test_the_not_implementable_listings_are_refused_with_their_reason(capsys):
     assert set(LISTED) == {"path-execution", "explore-merge"}
     assert main(["explore", "figure-6.15", "--algorithm", "explore-merge"]) == 2
     err = capsys.readouterr().err
-    assert "not implementable from the thesis" in err and "[59, 61]" in err and "L2145" in err
+    assert "not implementable from the thesis" in err and "[59, 61]" in err and "§6.3.3" in err
     assert len(err.strip().splitlines()) == 1 and "Traceback" not in err
     assert main(["explore", "cycle:n=4", "--algorithm", "path-execution", "--json"]) == 2
     assert "panoramic" in capsys.readouterr().err
@@ -67,7 +67,7 @@ def test_each_failing_variant_fails_on_the_world_its_reason_names(name):
 
 
 def test_the_undirected_saving_cannot_tell_two_neighbours_apart_on_figure_6_10(capsys):
-    """L1704–L1706: the place entered and its neighbour show one signature, their only marked edge the one
+    """§6.2.1 Case 4: the place entered and its neighbour show one signature, their only marked edge the one
     joining them (Figure 6.10(a), impossible in Case 3b): the marks fit two edges and the run fails."""
     w = generate("figure-6.10")
     assert explore(w, "case-3b").outcome == "correct"

@@ -1,5 +1,5 @@
 """The thread algorithms of §6.3 (reference/explorers/threads_*.py, reference/algorithms/registrations/threads.py):
-carried l = ε (L2032–L2036), Algorithm 6.7 (l = c(G)), the knot thread (l ≫ m, Figure 6.20) and Algorithm 6.8
+carried l = ε (§6.3.1), Algorithm 6.7 (l = c(G)), the knot thread (l ≫ m, Figure 6.20) and Algorithm 6.8
 (explore-explore, --thread-length)."""
 
 from __future__ import annotations
@@ -68,7 +68,7 @@ def test_the_laid_thread_never_exceeds_its_length_and_is_untied_at_the_end(world
 
 
 def test_c_of_g_runs_out_on_a_triangle_with_a_pendant_start():
-    """L2044 asks for a thread that never runs out on a simple path, footnote 18 (L2048) makes it the longest
+    """§6.3.2 asks for a thread that never runs out on a simple path, footnote 18 (§6.3.2) makes it the longest
     simple cycle; decided: l = c(G) = 3 runs out on the smallest world with a path from v0 longer than
     its longest cycle; n edges (the registered default) and c(G) + 1 here do not."""
     assert bench_threads.circumference(PAW) == 3 and bench_threads.longest_path_from(PAW, "d") == 3
@@ -102,7 +102,7 @@ def test_s_shows_the_thread_between_steps_and_a_map_that_does_not_is_caught():
 
 
 def test_the_carried_thread_is_the_directional_movable_marker():
-    """L2034: tied toward the entry edge, the thread reads as V-p; an untied or passing thread as unmarked."""
+    """§6.3.1: tied toward the entry edge, the thread reads as V-p; an untied or passing thread as unmarked."""
     assert str(threads_carried.ThreadAsMarker.as_marker(Signature.parse("[3,A,A,T-2,F]"))) == "[3,V-2,A]"
     assert str(threads_carried.ThreadAsMarker.as_marker(Signature.parse("[3,A,A,S-0,F]"))) == "[3,A,A]"
     k4 = generators.complete(4)

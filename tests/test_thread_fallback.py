@@ -1,4 +1,4 @@
-"""§6.3.3's phase-I/phase-II thread fallback (L2088–L2092; reference/explorers/threads_fallback.py): Algorithm 6.7
+"""§6.3.3's phase-I/phase-II thread fallback (reference/explorers/threads_fallback.py): Algorithm 6.7
 while the thread lasts, then Algorithm 3.1 with the tied v0 as lighthouse."""
 
 from __future__ import annotations

@@ -49,7 +49,7 @@ def sim_at(world=STAR, kit=Kit(thread=3), **kw) -> tuple[Simulator, object]:
 
 # -- what the robot senses -----------------------------------------------------------------------
 def test_a_tied_thread_reads_its_direction_relative_to_the_entry_edge():
-    """L2030: 'whether the thread is present at the vertex and the direction of the thread'."""
+    """§6.3.1: 'whether the thread is present at the vertex and the direction of the thread'."""
     sim, robot = sim_at()
     robot.operate(ThreadOp("tie", direction=1))  # toward c (exit 1 from the faced exit 0)
     assert str(robot.sense()) == "[3,A,A,T-1]"
@@ -260,7 +260,7 @@ def test_isomorphism_compares_the_thread():
 # -- the thread lighthouse (§6.3.1, l = ε fixed) ------------------------------------------------------
 @pytest.mark.parametrize("algorithm", ["basic", "enh3"])
 def test_the_thread_lighthouse_makes_the_same_moves_as_the_directional_marker(algorithm):
-    """L2030: the ε thread tied at v0 'defines a unique directional marker at v0': Algorithm 3.1 and its
+    """§6.3.1: the ε thread tied at v0 'defines a unique directional marker at v0': Algorithm 3.1 and its
     enhancements move exactly as with the directional vertex marker (only the signature at v0 is written
     differently)."""
     world = generate("lattice-hole", rows=4, cols=5, seed=3)

@@ -1,4 +1,4 @@
-"""The adversarial worst-case search (§7.2, L2260–L2262): its moves keep worlds valid, it is reproducible, what it
+"""The adversarial worst-case search (§7.2): its moves keep worlds valid, it is reproducible, what it
 reports is what a run of the world it reports costs, and its bad inputs are refused by name."""
 
 from __future__ import annotations

@@ -19,7 +19,7 @@ Two shapes of algorithm exist:
 * **kit algorithms** (everything else: markers dropped all through the
   exploration, §6.2; movable markers, §2.3.1; threads, §6.3; no marker,
   §5.2) are given the kit ``kit_for(n, m, options)`` — the simulator computes
-  it from the world, the robot never learns n or m (§6.2.1, L1487) — and are
+  it from the world, the robot never learns n or m (§6.2.1) — and are
   built as ``cls(robot, policies, observer, options)``.
 
 Every entry carries a **status** (:data:`STATUSES`): ``implemented`` (it is
@@ -31,8 +31,8 @@ algorithm, listed by ``topomark algorithms`` with the reason, with no explorer,
 which ``topomark explore`` refuses as bad input.  What its runs are expected to end with
 (:meth:`AlgorithmSpec.expectation`, :mod:`~topomark.reference.algorithms.expectation`) follows from the status —
 ``correct`` when implemented, ``fails-by-design`` when expected to fail — unless the entry states otherwise
-(``expected``, with its thesis line), per world family where it differs (``expected_by_family``), and broadened
-by the lighthouse a run uses (§5.2.1's may fail, L1346).
+(``expected``, with its thesis reference), per world family where it differs (``expected_by_family``), and broadened
+by the lighthouse a run uses (§5.2.1's may fail).
 
 Every explorer keeps the contract of
 :func:`topomark.reference.run.explore.explore`: ``start()``, then ``step()``
@@ -90,7 +90,7 @@ STATUSES = (IMPLEMENTED, EXPECTED_TO_FAIL, NOT_IMPLEMENTABLE)
 """The statuses of a listed algorithm (module docstring); the last is a :class:`Listed` entry's."""
 
 ALGORITHM_3_1_CHECKS = ("pose", "I-1", "I-2", "bound-function", "lemma-1", "marker", "iterations", "isomorphism")
-"""Algorithm 3.1's loop conditions (§3.4, L546–L616) and outcome (§3.1.3, L417): the checks of every
+"""Algorithm 3.1's loop conditions (§3.4) and outcome (§3.1.3): the checks of every
 lighthouse algorithm (``basic`` and Chapter 4), and the checker's default."""
 
 MARKER_MAP_CHECKS = ("pose", "I-1", "I-2", "marker-budget", "isomorphism")
@@ -98,8 +98,8 @@ MARKER_MAP_CHECKS = ("pose", "I-1", "I-2", "marker-budget", "isomorphism")
 S and U after every step, the stated marker bound after every step, the final map with every marker dropped."""
 
 STEPWISE_MAP_CHECKS = ("pose", "I-1", "I-2", "bound-function", "marker-budget", "iterations", "isomorphism")
-""":data:`MARKER_MAP_CHECKS`, and one edge joins S per step — n − 1 non-loop and m − n + 1 loop steps (§3.1.3,
-L417): the movable marker (§2.3.1) and thread (§6.3) algorithms."""
+""":data:`MARKER_MAP_CHECKS`, and one edge joins S per step — n − 1 non-loop and m − n + 1 loop steps (§3.1.3):
+the movable marker (§2.3.1) and thread (§6.3) algorithms."""
 
 
 @dataclass(frozen=True)
@@ -159,13 +159,13 @@ class AlgorithmSpec:
     check_world: Callable[[Any, dict], None] | None = None  # refuse options false for the world (e.g. §5.3 cues)
     summary_fn: Callable[[Any, Any], dict] | None = None  # (explorer, world) ↦ the algorithm's own --json fields
     write_models: Callable[[Any, str], list] | None = None  # (explorer, dir): ``explore --models DIR``
-    bound_formula: str | None = None  # the exact bound ``bound_fn`` evaluates, in words, with its thesis lines
+    bound_formula: str | None = None  # the exact bound ``bound_fn`` evaluates, in words, with its thesis references
     bound_excludes: tuple[str, ...] = ()  # move purposes the exact bound does not count (``cost-bound``)
     bound_bench: str | None = None  # an asymptotic-only bound: the bench experiment that measures it
     status: str = IMPLEMENTED  # or EXPECTED_TO_FAIL, with its status_reason
-    status_reason: str | None = None  # why it is expected to fail: the thesis lines and the world that shows it
+    status_reason: str | None = None  # why it is expected to fail: the thesis references and the world that shows it
     expected: str | None = None  # the runs' expected outcome (expectation module); None: from the status
-    expected_reason: str | None = None  # the thesis line of an expected outcome other than the status's
+    expected_reason: str | None = None  # the thesis reference of an expected outcome other than the status's
     expected_by_family: tuple[tuple[str, str, str], ...] = ()  # (world family, expectation, reason) where it differs
 
     def __post_init__(self) -> None:
@@ -189,7 +189,7 @@ class AlgorithmSpec:
         for family, what, why in (("", self.expected, self.expected_reason), *self.expected_by_family):
             if what is not None and (what not in EXPECTATIONS or (what != CORRECT and not why)):
                 raise ValueError(f"algorithm {self.name}: expected outcome {what!r}{' on ' + family if family else ''}"
-                                 f" is one of {', '.join(EXPECTATIONS)}, with its thesis line unless 'correct'")
+                                 f" is one of {', '.join(EXPECTATIONS)}, with its thesis reference unless 'correct'")
         if self.bound_fn is not None and "cost-bound" not in self.checks:  # every exact bound is checked
             object.__setattr__(self, "checks", (*self.checks, "cost-bound"))
 
@@ -316,7 +316,7 @@ class AlgorithmSpec:
 @dataclass(frozen=True, kw_only=True, repr=False)
 class Listed:
     """An algorithm of the thesis that is listed but cannot be run: the thesis does not give enough of it to
-    implement (``reason`` says what is missing, with its lines).  ``family`` places it in the listing only."""
+    implement (``reason`` says what is missing, with its thesis references).  ``family`` places it in the listing only."""
 
     name: str
     thesis: str

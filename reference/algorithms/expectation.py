@@ -6,24 +6,24 @@ runs and §5.2.1's wrong maps included — and one run that did not exits 1.
 
 * ``correct``: every run must end ``correct`` — the thesis proves the algorithm maps every world it accepts.
 * ``may-fail``: ``correct``, ``failed``, ``wrong-map`` and ``limit`` are all acceptable — the thesis says the
-  approach is probabilistic and lists these outcomes (§5.2, L1338: "Without a marker, the robot cannot map a world
-  deterministically"; §5.2.1, L1346: "No potential lighthouse may be identified, and the algorithm reports failure
+  approach is probabilistic and lists these outcomes (§5.2: "Without a marker, the robot cannot map a world
+  deterministically"; §5.2.1: "No potential lighthouse may be identified, and the algorithm reports failure
   ... or, never terminates ... or terminates with an incorrect world model").
 * ``fails-by-design``: the thesis shows the idea fails (an entry with the status ``implemented, expected to fail``:
   its ``status_reason`` cites the lines).  *Decision:* a run ending ``correct`` is acceptable too, besides
-  ``failed`` and ``wrong-map``: the thesis says such an idea "does not work in general" (Case 0, L1491) and shows
+  ``failed`` and ``wrong-map``: the thesis says such an idea "does not work in general" (Case 0) and shows
   the flaw on one world (Figure 6.3), so it fails where that situation arises and maps a world where it cannot
   (a tree, for one).  A run that ends at a ``limit`` is not acceptable: none of these ideas is said to run on
-  without end (the robot "is not able to determine" where it is, L1491 / Figure 6.3, and stops, or it takes a
-  marked place for a new one, L1910).
+  without end (the robot "is not able to determine" where it is, §6.2.1 Case 0 / Figure 6.3, and stops, or it takes a
+  marked place for a new one, §6.2.2).
 
 A crashed run (``error``) is never as expected.  An unchecked run (``bench --no-check``) ends ``unchecked`` or
 as the algorithm stopped it; nothing is judged of it, so it is as expected whatever its expectation.
 
 The expectation of a run is the broadest (:data:`ORDER`) of its algorithm's, for the run's world family (an
 entry's ``expected_by_family`` where it differs, else its own), and its lighthouse's (:func:`lighthouse_expectation`:
-§5.2.1's marker-less lighthouses may pick a place whose signature repeats, L1346; a lighthouse that is searched for
-by a walk may find none within the threshold, and "the algorithm terminates reporting failure", L1332–L1334).
+§5.2.1's marker-less lighthouses may pick a place whose signature repeats; a lighthouse that is searched for
+by a walk may find none within the threshold, and "the algorithm terminates reporting failure", §5.1).
 
 Examples
 --------
@@ -58,9 +58,9 @@ UNJUDGED = "unchecked"
 """The outcome of a run made without the checker: nothing is judged of it (module docstring)."""
 
 SEARCH_REASON = ("a lighthouse searched for by a random walk may not be found: \"if the robot cannot find a "
-                 "lighthouse within the threshold, the algorithm terminates reporting failure\" (§5.1, L1332–L1334)")
+                 "lighthouse within the threshold, the algorithm terminates reporting failure\" (§5.1)")
 UNCERTAIN_REASON = ("a marker-less lighthouse of §5.2.1 \"cannot guarantee the explicitness of place or back-link\": "
-                    "it may report failure, never terminate or end with an incorrect world model (L1346)")
+                    "it may report failure, never terminate or end with an incorrect world model (§5.2.1)")
 
 
 def as_expected(expectation: str, outcome: str, checked: bool = True) -> bool:
@@ -77,7 +77,7 @@ def broadest(*expectations: str) -> str:
 
 def lighthouse_expectation(name: str) -> tuple[str, str]:
     """What running with the lighthouse ``name`` allows, and why: ``may-fail`` for §5.2.1's marker-less
-    lighthouses (L1346) and for those found by a walk (L1332–L1334), else ``correct`` (no reason)."""
+    lighthouses and for those found by a walk (§5.1), else ``correct`` (no reason)."""
     light = LIGHTHOUSES.get(name)
     if light is None:  # a kit algorithm's run ("none"): the algorithm's own expectation decides
         return CORRECT, ""

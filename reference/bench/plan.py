@@ -48,7 +48,7 @@ DEFAULT_LIGHTHOUSE = "directional-vertex"
 CERTAIN_LIGHTHOUSES = tuple(name for name, h in LIGHTHOUSES.items() if h.certain)
 """The lighthouses ``bench lighthouses`` compares: those that surely give explicit place and back-link
 information or fail (every one with a marker or thread).  §5.2.1's marker-less ones may pick a place whose local
-signature repeats (L1346), so a wrong map there is the scheme's, not a fault: they are left out of this verdict."""
+signature repeats, so a wrong map there is the scheme's, not a fault: they are left out of this verdict."""
 NO_LIGHTHOUSE = "none"  # the lighthouse column of a kit algorithm's run (it carries its own kit)
 HEAVY_GRAPHS = 5
 HEAVY_MAX_SIZE = 55
@@ -213,8 +213,8 @@ FAMILIES.update({f.name: f for f in (
 CHAPTER_5_FAMILIES = ("lattice-hole", "random-20", "random-40", "small-world-k2-p10", "small-world-k4-p20")
 SEARCHED = ("directional-vertex", "undirected-vertex", "undirected-edge", "local-pair", "local-degree-list")
 WALK_SEEDS = ("seed=1", "seed=2")  # §5.2.1's further walks on each world (the default walk is seed 0)
-MODEL_TREE_OPTIONS = ("cue=n", "max-models=1000")  # n cue; none (then it ends at the cap, L1373's window never met)
-# Uncued Algorithm 5.1 never met L1373's window on these worlds: every run ends at a cap, and one on a 6-cycle costs
+MODEL_TREE_OPTIONS = ("cue=n", "max-models=1000")  # n cue; none (then it ends at the cap, §5.2.2's window never met)
+# Uncued Algorithm 5.1 never met §5.2.2's window on these worlds: every run ends at a cap, and one on a 6-cycle costs
 # about 200 CPU-s (2,000 steps with hundreds of completed models), so those runs take at most this many worlds a size.
 UNCUED_MODEL_TREE_GRAPHS = 5
 EXPERIMENTS["chapter-5"] = Experiment("chapter-5", tuple(
@@ -249,16 +249,16 @@ def marked_fraction_markers(world: World, algorithm: str, value: str) -> dict:
 
     Version-1 gives v0 one marker and the j-th new place j + 1 until a drop is refused
     (:mod:`~topomark.reference.explorers.case5_v1`), so K = Σ_{i=1}^{p} i marks exactly p places.  The
-    thesis gives no fractions and no K (neither Figure 6.13's caption, L1863, nor its text, L1829); we give
-    K = max(4, Σ_{i=1}^{⌊f·n⌋} i).  K ≥ 4 is the algorithm's least kit ("k > 3", L1708), which marks 2
+    thesis gives no fractions and no K (neither Figure 6.13's caption, nor its text, §6.2.1); we give
+    K = max(4, Σ_{i=1}^{⌊f·n⌋} i).  K ≥ 4 is the algorithm's least kit ("k > 3", §6.2.1 Case 5), which marks 2
     places: "0%" is that least kit (2 of n places marked), and 100% is Σ_{i=1}^{n} i (every place).
 
-    Version-2 ("different fractions of (homogeneously) marked vertices", L1881) drops two markers at v0, two
+    Version-2 ("different fractions of (homogeneously) marked vertices", §6.2.1) drops two markers at v0, two
     on e0 and one at each other new place, and one on each loop edge met while it has markers
     (:mod:`~topomark.reference.explorers.case5_v2`).  Decision: K = max(4, ⌊f·n⌋ + 3), the pool that marks
     ⌊f·n⌋ places if no loop edge took a marker first (loop edges take markers from the same pool, so the
     fraction marked is at most f: the report shows the markers used), and 100% is the default m + 4, which
-    marks every place and loop edge (the m V-E-marker algorithm's behaviour, L1770, the figure's lower end).
+    marks every place and loop edge (the m V-E-marker algorithm's behaviour, §6.2.1 Case 5, the figure's lower end).
     """
     if algorithm not in ("case-5-v1", "case-5-v2"):
         raise InvalidInput(f"marked-fraction is defined for case-5-v1 and case-5-v2 only (given for {algorithm})")

@@ -1,5 +1,5 @@
 """What ``topomark bench comparison-markers`` runs: the thesis's marker algorithms beside Table 2.3's classic
-baselines on the Chapter 4 worlds (lattice-hole, complete-hole; thesis §2.3.1, Table 2.3, L255–L272).  Registered in
+baselines on the Chapter 4 worlds (lattice-hole, complete-hole; thesis §2.3.1, Table 2.3).  Registered in
 :mod:`~topomark.reference.bench.plan`'s tables when this module is imported; the report is
 :mod:`~topomark.reference.bench.reports.marker_classes`.
 
@@ -19,7 +19,7 @@ __all__ = ["NAME", "COMPARED", "BASELINES", "SIZES"]
 
 NAME = "comparison-markers"
 BASELINES = ("footprints", "labelled-dfs")
-"""Table 2.3's classic rows: m + n homogeneous markers (L267) and the labelled graph (L269)."""
+"""Table 2.3's classic rows: m + n homogeneous markers and the labelled graph."""
 COMPARED = ("basic", "dudek", "case-1a", "case-2", "footprints", "case-3b", "case-dv-sum", "thread-knots",
             "labelled-dfs")
 """One immovable marker (Algorithm 3.1), one movable marker (§2.3.1), m and m + n markers (§6.2.1 Cases 1a, 2 and

@@ -1,4 +1,4 @@
-"""What the §6.3 sweeps run (thesis §6.3, L1995–L2222; §2.3.1): the thread classes of Table 6.3, the
+"""What the §6.3 sweeps run (thesis §6.3, §6.3–§6.4; §2.3.1): the thread classes of Table 6.3, the
 ``lattice-edge-hole`` world family of Figures 6.23(b) and 6.24, and the experiments ``table-6.3``, ``figure-6.24``,
 ``comparison`` and ``section-6.3``, registered in :mod:`~topomark.reference.bench.plan`'s tables when this module
 is imported.  Their reports are :mod:`~topomark.reference.bench.reports.section63`.

@@ -2,7 +2,7 @@
 
 A run is *as expected* when its outcome is one its algorithm's expectation for that world family and lighthouse
 accepts (:meth:`~topomark.reference.algorithms.algorithm_spec.AlgorithmSpec.expectation`,
-:mod:`~topomark.reference.algorithms.expectation`): Case 0's failed runs (L1491) and §5.2.1's wrong maps (L1346)
+:mod:`~topomark.reference.algorithms.expectation`): Case 0's failed runs and §5.2.1's wrong maps
 are as expected; a wrong map of Algorithm 3.1 is not.  ``topomark bench`` exits 0 when every run of the sweep is as
 expected and 1 when one is not; the command's summary and every report count both, by outcome (:class:`Tally`).
 

@@ -1,8 +1,13 @@
 """The claims ledger: every theorem, lemma, stated bound and experimental statement of the thesis
-(§2.3.1 and Chapters 3–6), each with its section and lines, and how topomark backs it.
+(§2.3.1 and Chapters 3–6), each with its section, where in the thesis it is stated, and how topomark
+backs it.
 
 The rows are data, in ``claims.toml`` beside this module; this module reads them into
-:class:`Claim` records, one per claim, and counts them (:func:`summary`).  A claim is backed
+:class:`Claim` records, one per claim, and counts them (:func:`summary`).  A claim's ``where`` lists
+the places of the thesis that state it, each a reference a reader can look up (:data:`REFERENCE`):
+a section (``"§3.5.2"``), a Case of §6.2.1 (``"§6.2.1 Case 1a"``), ``"§3.4 Lemma 1"``, an algorithm's
+line (``"Algorithm 3.1 line 5"``), a figure, table, equation (``"equation (3.1)"``) or footnote
+(``"§3.5.1 footnote 10"``).  A claim is backed
 in one of six ways (:data:`BACKINGS`):
 
 * ``proved`` — by the census or Z3 (``topomark census``/``search``), up to the n the row states;
@@ -28,14 +33,22 @@ Examples
 True
 >>> next(c for c in claims if c.id == "3.4-lemma-1").backing
 'checked'
->>> Claim.from_row({"id": "x", "section": "§9", "lines": "L1", "claim": "c", "backing": "hoped"})
+>>> next(c for c in claims if c.id == "3.5.2-upper-bound").thesis
+'§3.5.2, equations (3.1) and (3.2)'
+>>> Claim.from_row({"id": "x", "section": "§9", "where": ["§9"], "claim": "c", "backing": "hoped"})
 Traceback (most recent call last):
 ...
 topomark.spec.errors.TopomarkFault: claims.toml: claim 'x': backing 'hoped' is not one of proved, checked, tested, measured, assumed, unbacked
+>>> Claim.from_row({"id": "x", "section": "§9", "where": ["line 12"], "claim": "c", "backing": "assumed",
+...                 "evidence": "cited"})
+Traceback (most recent call last):
+...
+topomark.spec.errors.TopomarkFault: claims.toml: claim 'x': where 'line 12' is not a thesis reference (a section, Case, Lemma, algorithm line, figure, table, equation or footnote)
 """
 
 from __future__ import annotations
 
+import re
 import tomllib
 from collections import Counter
 from dataclasses import dataclass, field
@@ -44,7 +57,7 @@ from typing import Any
 
 from topomark.spec.errors import TopomarkFault
 
-__all__ = ["Claim", "BACKINGS", "VERDICTS", "DATA", "load", "summary", "chapter_of"]
+__all__ = ["Claim", "BACKINGS", "VERDICTS", "REFERENCE", "DATA", "load", "summary", "chapter_of"]
 
 BACKINGS = ("proved", "checked", "tested", "measured", "assumed", "unbacked")
 """The ways a claim is backed, strongest first."""
@@ -52,10 +65,15 @@ BACKINGS = ("proved", "checked", "tested", "measured", "assumed", "unbacked")
 VERDICTS = ("held", "partly held", "not held")
 """What a measurement (or a test that contradicts the thesis) says of the claim."""
 
+REFERENCE = re.compile(r"(§\d+(\.\d+)*( (Case \d+[ab]?|Cases \d+[ab]?(–\d+[ab]?)?|Lemma \d+|footnote \d+))?"
+                       r"|Chapter \d+|Algorithm \d+\.\d+( lines? \d+(–\d+)?)?"
+                       r"|(Figures?|Tables?) \d+\.\d+(\([a-z]\))?(–\d+\.\d+)?|equations? \(\d+\.\d+\)( and \(\d+\.\d+\))?)")
+"""A reference into the thesis's structure, as ``where`` gives it: the finest unit that states the claim."""
+
 DATA = Path(__file__).with_name("claims.toml")
 """The ledger's rows."""
 
-_FIELDS = ("id", "section", "lines", "claim", "backing", "evidence", "command", "verdict", "source", "checks",
+_FIELDS = ("id", "section", "where", "claim", "backing", "evidence", "command", "verdict", "source", "checks",
            "tests", "experiments")
 
 
@@ -71,7 +89,7 @@ class Claim:
 
     id: str
     section: str
-    lines: str
+    where: tuple[str, ...]
     claim: str
     backing: str
     evidence: str = ""
@@ -85,6 +103,14 @@ class Claim:
     @property
     def chapter(self) -> int:
         return chapter_of(self.section)
+
+    @property
+    def thesis(self) -> str:
+        """The section and the places that state the claim, each once: ``"§6.2.1 Case 1a, Figure 6.4"``."""
+        covered = any(w == self.section or w.startswith((self.section + " ", self.section + "."))
+                      or (w.startswith("Chapter ") and "§" + w[8:] == self.section) for w in self.where)
+        finer = [w for w in self.where if not any(x.startswith(w + " ") for x in self.where)]
+        return ", ".join(([] if covered else [self.section]) + finer)
 
     @classmethod
     def from_row(cls, row: dict) -> "Claim":
@@ -109,6 +135,12 @@ class Claim:
             raise TopomarkFault(f"claims.toml: claim {self.id!r}: a {self.backing} claim needs its evidence "
                                 "(checks and a command, tests, experiments with a verdict, source and command, "
                                 "or the reason)")
+        if not self.where:
+            raise TopomarkFault(f"claims.toml: claim {self.id!r}: where is empty: name the places that state it")
+        for w in self.where:
+            if not isinstance(w, str) or not REFERENCE.fullmatch(w):
+                raise TopomarkFault(f"claims.toml: claim {self.id!r}: where {w!r} is not a thesis reference (a section, "
+                                    "Case, Lemma, algorithm line, figure, table, equation or footnote)")
         if self.verdict and self.verdict not in VERDICTS:
             raise TopomarkFault(f"claims.toml: claim {self.id!r}: verdict {self.verdict!r} is not one of "
                                 + ", ".join(VERDICTS))
@@ -120,7 +152,7 @@ class Claim:
         return "python -m pytest -q " + " ".join(self.tests) if self.tests else ""
 
     def to_json(self) -> dict:
-        return {"id": self.id, "chapter": self.chapter, "section": self.section, "lines": self.lines,
+        return {"id": self.id, "chapter": self.chapter, "section": self.section, "where": list(self.where),
                 "claim": self.claim, "backing": self.backing, "evidence": self.evidence,
                 "verdict": self.verdict or None, "source": self.source or None, "checks": list(self.checks),
                 "tests": list(self.tests), "experiments": list(self.experiments), "reproduce": self.reproduce()}
@@ -139,8 +171,8 @@ def load(path: Path = DATA) -> list[Claim]:
 def summary(claims: list[Claim]) -> dict[int, dict[str, int]]:
     """Per chapter, how many claims are backed each way, and the measured ones by verdict.
 
-    >>> s = summary([Claim("a", "§3.1", "L1", "c", "measured", verdict="held"),
-    ...              Claim("b", "§3.2", "L2", "c", "assumed")])
+    >>> s = summary([Claim("a", "§3.1", ("§3.1",), "c", "measured", verdict="held"),
+    ...              Claim("b", "§3.2", ("§3.2",), "c", "assumed")])
     >>> s[3]["measured"], s[3]["measured held"], s[3]["assumed"], s[3]["total"]
     (1, 1, 1, 2)
     """

@@ -56,7 +56,7 @@ def text(claims: list[Claim]) -> str:
     lines = [summary_line(ch, row) for ch, row in summary(claims).items()]
     lines.append(f"total: {len(claims)} claims")
     for c in claims:
-        lines += ["", f"[{c.id}] {c.section} {c.lines} — {_backing(c)}", f"  {c.claim}", f"  {_evidence(c)}"]
+        lines += ["", f"[{c.id}] {c.thesis} — {_backing(c)}", f"  {c.claim}", f"  {_evidence(c)}"]
         if c.reproduce():
             lines.append(f"  $ {c.reproduce()}")
     return "\n".join(lines)
@@ -102,6 +102,6 @@ def markdown(claims: list[Claim]) -> str:
                 "| claim | thesis | backing | evidence | reproduce |", "|---|---|---|---|---|"]
         for c in (c for c in claims if c.chapter == ch):
             command = f"`{c.reproduce()}`" if c.reproduce() else "—"
-            out.append(f"| {_cell(c.claim)} | {c.section}, {c.lines} | **{_backing(c)}** | "
+            out.append(f"| {_cell(c.claim)} | {c.thesis} | **{_backing(c)}** | "
                        f"{_cell(_evidence(c))} | {_cell(command)} |")
     return "\n".join(out) + "\n"

@@ -5,7 +5,7 @@ The JSON form is a list of objects with ``name``, ``thesis``, ``kit``,
 ``family`` (the algorithm family its trace@2 traces are written in), ``parameters``,
 ``kit_from_world``, ``bound_checked`` (the exact bound is the ``cost-bound`` check of every
 checked run), ``bound_note`` (how the bound is held: checked per run, measured by a bench, or none stated)
-and ``status`` (``implemented``, or ``implemented, expected to fail`` with ``status_reason``: the thesis lines
+and ``status`` (``implemented``, or ``implemented, expected to fail`` with ``status_reason``: the thesis references
 and the world where it fails) and, for the lighthouse algorithms, ``lighthouses``
 (:meth:`topomark.reference.algorithms.algorithm_spec.AlgorithmSpec.to_json`).  The algorithms of the thesis
 that are not implementable from it are listed too, in their place, with only ``name``, ``thesis``, ``status``

@@ -1,7 +1,7 @@
 """``topomark claims [--json | --markdown]``: every claim of the thesis and how topomark backs it.
 
 The ledger (:mod:`topomark.reference.claims.ledger`) lists each theorem, lemma, stated bound and
-experimental statement of §2.3.1 and Chapters 3–6 with its section and lines, how topomark backs it
+experimental statement of §2.3.1 and Chapters 3–6 with where the thesis states it, how topomark backs it
 (proved, checked, tested, measured, assumed, unbacked) and the command that reproduces the
 evidence.  Text by default, ``--json`` for one JSON object, ``--markdown`` for the page
 ``docs/claims.md``.  Exit 0.

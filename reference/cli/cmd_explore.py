@@ -143,7 +143,7 @@ def _bound_text(o, spec) -> str:
 
 def _untested(o) -> int:
     """The hypotheses never walked: Algorithm 3.1 tests H in turn and a confirmed one (case 3) "exit[s] the inner
-    'while' loop" (line 20, L579), so the ones left in H stay untested; the others are rejected (cases 1, 2)."""
+    'while' loop" (line 20, Algorithm 3.1), so the ones left in H stay untested; the others are rejected (cases 1, 2)."""
     return o.hypotheses - o.hypotheses_rejected - o.hypotheses_confirmed
 
 
@@ -232,7 +232,7 @@ def _write_map(path: str | None, outcome) -> str | None:
     """Write the final map to ``path`` (``--map``); None when written (or not asked for), else why not.
 
     Only a run that ended with a map writes one: an algorithm that stopped (outcome ``failed`` or ``limit``,
-    e.g. §5.1's walk found no lighthouse, L1332) has none; a run the checker stopped before the algorithm
+    e.g. §5.1's walk found no lighthouse) has none; a run the checker stopped before the algorithm
     finished (its first violation, under an explicit lighthouse) has none either.  A completed map the checker
     refutes (``wrong-map``) is written all the same — it is what the algorithm claims, to be compared with the
     world — and the outcome, never ``--map``, decides the exit code.

@@ -1,4 +1,4 @@
-"""``topomark worst-case``: the worst cost of an algorithm, exhaustive over small worlds (thesis §7.2, L2260–L2262).
+"""``topomark worst-case``: the worst cost of an algorithm, exhaustive over small worlds (thesis §7.2).
 
 ``topomark worst-case --algorithm basic --max-vertices 5 --max-degree 4``
 runs the algorithm unchecked from every start of every embedded world with

@@ -1,10 +1,10 @@
 """§6.2.1 Case 0: n undirected markers, one dropped at every vertex as it is discovered — the thesis's
-"plausible strategy", shown to fail (L1489–L1491, Figure 6.3).
+"plausible strategy", shown to fail (§6.2.1 Case 0, Figure 6.3).
 
 "A vertex that contains a marker must be a known (visited) vertex in S, whereas
 a vertex where no marker is sensed must be a new vertex.  When entering a
 marked vertex, however, the robot may not be able to determine its place and
-back-link" (L1491).  The explorer does exactly what the strategy allows and
+back-link" (§6.2.1 Case 0).  The explorer does exactly what the strategy allows and
 nothing more:
 
 * an unmarked v_u is new: non-loop augmentation, one marker dropped there;
@@ -16,9 +16,9 @@ nothing more:
 
 Decision: when k > 1 darts fit, the explorer stops with the ``failed`` outcome
 (:class:`~topomark.spec.errors.AlgorithmFailed`, reason "k edges fit; the robot
-cannot determine which, L1491"), exit 1.  The thesis says so in as many words:
+cannot determine which, §6.2.1 Case 0"), exit 1.  The thesis says so in as many words:
 "the robot cannot determine if it is visiting v_k' or v_k''.  Thus this approach
-does not work in general" (L1491) — it does not let the robot pick one.  Taking
+does not work in general" (§6.2.1 Case 0) — it does not let the robot pick one.  Taking
 the first would be a guess the robot knows to be one, and on some worlds the
 checker would refute the map it claims.  No fitting dart is ``failed`` too (it
 cannot happen in a simple world, as said above).
@@ -48,7 +48,7 @@ __all__ = ["EveryVertexMarked"]
 
 class EveryVertexMarked(MarkerWalk):
     """Case 0: one undirected V-marker at every vertex discovered; a marked place that several edges fit stops
-    the run (L1491)."""
+    the run (§6.2.1 Case 0)."""
 
     name = "case-0"
     undecided = None
@@ -72,5 +72,5 @@ class EveryVertexMarked(MarkerWalk):
         if len(fits) > 1:
             self.undecided = it
             raise AlgorithmFailed(f"iteration {it.number}: v_u shows {sig}; {len(fits)} edges fit; the robot "
-                                  "cannot determine which, L1491")
+                                  "cannot determine which, §6.2.1 Case 0")
         self.loop(it, fits[0])

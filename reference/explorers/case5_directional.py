@@ -1,26 +1,26 @@
 """§6.2.2 Table 6.2's row "unknown k > 3" with *directional* markers: Case 5 Version-1 (Algorithm 6.4) whose
-V-markers point at the entry edge, so every marked place is a directional lighthouse (thesis Table 6.2, L2004;
-Version-1, L1716–L1724, listing L1728–L1768; directional counts, L1902).
+V-markers point at the entry edge, so every marked place is a directional lighthouse (thesis Table 6.2;
+Version-1, §6.2.1 Case 5, listing Algorithm 6.4; directional counts, §6.2.2).
 
 Table 6.2 gives the row an O(m²n) bound in its directional column and no
 algorithm of its own.  This is the one we give it: Version-1, with the
-markers of the Σ k directional V-marker algorithm (§6.2.2, L1902: "the robot
+markers of the Σ k directional V-marker algorithm (§6.2.2: "the robot
 drops the markers in such a way that the entry edge is indicated ... each
 visited vertex is a directional lighthouse").
 
 * **Phase I**: the i-th place discovered gets i markers pointing at its entry
   edge (v0's at the exit it faces).  A marked v_u is known by its count and its
   entry edge by where the markers point: loop augmentation at once, no probing
-  (L1902), where Version-1 probes its other edges (Algorithm 6.4 line 8).
+  (§6.2.2), where Version-1 probes its other edges (Algorithm 6.4 line 8).
 * **Phase II** (the first refused drop, as in Version-1): an unmarked v_u is
   tested against every unexplored dart at an unmarked known end of its degree
   (Algorithm 6.4 lines 17–18), each hypothesis driving the robot along a
   shortest path of S from v_k' to the nearest marked place v_l.  Decision
-  (L1720–L1722 ask for v_l *then a marked neighbour v_n* to fix the entry at an
+  (§6.2.1 Case 5 ask for v_l *then a marked neighbour v_n* to fix the entry at an
   undirected v_l): with directional markers the path ends at v_l, since the
   direction of its markers, sensed relative to the entry, already gives the
   entry edge — the expected perception P^E at v_l holds its count and
-  direction, so a full match fixes the embedded path (L1722).  A marked v_u in
+  direction, so a full match fixes the embedded path (§6.2.1 Case 5).  A marked v_u in
   phase II is, as in phase I, known at once.
 
 Cost O(m²n) with few markers (Table 6.2); with Σ_{k=1}^{n} k markers (every
@@ -54,7 +54,7 @@ class DirectionalCountsThenLighthouse(VertexCountsThenLighthouse):
     directional = True
 
     def join_marked(self, it: MarkerStep, place: int, sig: Signature) -> None:
-        """A directional lighthouse gives place and back-link at once: the head points at exit 0 (L1902)."""
+        """A directional lighthouse gives place and back-link at once: the head points at exit 0 (§6.2.2)."""
         if sig.vertex_direction is None:
             super().join_marked(it, place, sig)
         else:

@@ -1,17 +1,17 @@
 """§6.2.1 Case 5 with E-markers: k > 3 undirected E-markers, their number not known relative to the world —
 Case 3b's unique counts on non-loop edges while they last (phase I), then Algorithm 3.1's hypotheses with the
-nearest marked edge as lighthouse (phase II) (thesis L1716: "A similar E-marker algorithm can be developed using
+nearest marked edge as lighthouse (phase II) (thesis §6.2.1 Case 5: "A similar E-marker algorithm can be developed using
 the technique in the Σ_{k=1}^{n−1} k E-marker algorithm (Case 3b) and the single directional E-marker algorithm").
 
 The thesis only names this version; it is built as Version-1 is (Algorithm
 6.4), with Case 3b's marks in place of Case 3a's:
 
-* **Phase I** (Case 3b, L1627–L1643): an unmarked v_u (no marked edge) is new;
+* **Phase I** (Case 3b, §6.2.1): an unmarked v_u (no marked edge) is new;
   the robot walks back over e to v_k, drops the next count on e and returns (a
-  drop trip, L1629), so the marked edges form a spanning tree of the phase-I
+  drop trip, §6.2.1 Case 3b), so the marked edges form a spanning tree of the phase-I
   places and each names its two ends.  A v_u with marked edges is known at once
   by their counts and positions (Case 3b's identification), in either phase.
-* **Where phase I ends** (as Version-1's line 12, L1742, reads for us): the
+* **Where phase I ends** (as Version-1's line 12, Algorithm 6.4, reads for us): the
   first drop the simulator refuses.  The robot has walked back to v_k and
   returns to v_u with nothing dropped; v_u joins S unmarked (every known place
   has a marked edge then, so it is new) and phase II begins.  No drop is tried
@@ -19,16 +19,16 @@ The thesis only names this version; it is built as Version-1 is (Algorithm
 * **Phase II** (Algorithm 6.4 lines 16–35, :mod:`.case5_phase2`): an unmarked
   v_u may be new or a phase-II place; each unexplored dart at a known end with
   no marked edge and v_u's degree is a hypothesis h'.  Decision (the thesis
-  gives no lighthouse for this version; L1720–L1722 give Version-1's): M_h'
+  gives no lighthouse for this version; §6.2.1 Case 5 give Version-1's): M_h'
   walks a shortest path of S from v_k' to the nearest place v_l with a marked
   edge, then crosses v_l's marked edge of least count to its other end v_n.
   The count names the edge, so v_l is one of its two ends; arriving at v_n over
   it with the expected marks at both ends fixes which end and the entry edge at
-  v_l, as Version-1's v_l-then-v_n does (L1722).
+  v_l, as Version-1's v_l-then-v_n does (§6.2.1 Case 5).
 
-Kit: K undirected E-markers (``--markers K``, K > 3, L1708); the default is
+Kit: K undirected E-markers (``--markers K``, K > 3, §6.2.1 Case 5); the default is
 Case 3b's Σ_{k=1}^{n−1} k, which marks every non-loop edge of the exploration
-tree, so phase II never runs and the algorithm is Case 3b (O(m), L1643); with
+tree, so phase II never runs and the algorithm is Case 3b (O(m), §6.2.1 Case 4); with
 fewer markers the bound is Table 6.1's O(m²n).
 
 Examples

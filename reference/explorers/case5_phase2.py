@@ -1,5 +1,5 @@
 """Phase II of §6.2.1 Case 5: hypothesis-based validation once the robot has run out of markers (thesis
-L1720–L1722, Algorithm 6.4 lines 16–35, Algorithm 6.5 lines 14–28 and 34–37), after Algorithm 3.1 (§3.3).
+Algorithm 6.4 lines 16–35, Algorithm 6.5 lines 14–28 and 34–37), after Algorithm 3.1 (§3.3).
 
 Both versions of Case 5 fall back, when a place cannot be told by its markers
 any more, on Algorithm 3.1's test: every unexplored dart e' = (v_k', i') of U
@@ -16,7 +16,7 @@ Chapter 4's techniques are) gives ``lighthouse_path(v)``: the darts of S to
 follow from v_k' (Version-1: to the closest uniquely marked v_l, then on to a
 marked neighbour v_n, Algorithm 6.4 lines 21–24; Version-2: to the
 double-marked v0, whose double-marked edge gives the entry, Algorithm 6.5 and
-L1770), and ``confirms(h)``, its listing's reading of a full match (Algorithm
+§6.2.1 Case 5), and ``confirms(h)``, its listing's reading of a full match (Algorithm
 6.4 line 29, Algorithm 6.5 line 23).  :class:`Host` lists all it needs.
 
 Decision: phase II is implemented here rather than by handing the state to

@@ -1,6 +1,6 @@
 """§6.2.1 Case 5, Version-1 (Algorithm 6.4): k > 3 undirected V-markers, their number not known relative to the
 world — Case 3a's unique counts while they last (phase I), then Algorithm 3.1's hypotheses with the closest
-marked place as lighthouse (phase II) (thesis L1708–L1724, listing L1728–L1768).
+marked place as lighthouse (phase II) (thesis §6.2.1 Case 5, listing Algorithm 6.4).
 
 * **Phase I** (lines 1–15): the i-th place discovered gets i markers, so a
   marked place names itself; a marked v_u is known by its count and its
@@ -8,22 +8,22 @@ marked place as lighthouse (phase II) (thesis L1708–L1724, listing L1728–L17
   explored edge is sensed (Algorithm 6.2 lines 19–35, reused from
   :class:`~topomark.reference.explorers.counted_markers.VertexCounts`).
 * **Phase II** (lines 16–35): the first unmarked place the robot cannot mark
-  ("does not have sufficient markers to uniquely mark the vertex", L1718) ends
-  phase I.  A marked v_u is still validated by probing (L1720 "as in phase-I");
+  ("does not have sufficient markers to uniquely mark the vertex", §6.2.1 Case 5) ends
+  phase I.  A marked v_u is still validated by probing (§6.2.1 Case 5 "as in phase-I");
   an unmarked v_u is tested against every unexplored dart at an *unmarked*
   known end of its degree (:mod:`.case5_phase2`), each hypothesis driving the
   robot from v_k' to the marked place v_l closest to v_k' and on to a marked
   neighbour v_n of v_l (lines 21–24).  Reaching v_n by the expected exit of v_l
   fixes the entry edge at v_l (no multi-edges), so the embedded path is unique
-  (L1722).
+  (§6.2.1 Case 5).
 
-Decisions, with the thesis lines (each tested in ``tests/test_markers_case5.py``):
+Decisions, with the thesis references (each tested in ``tests/test_markers_case5.py``):
 
-* **Algorithm 6.4's counter** (L1731–L1745): line 1 drops one marker at v0,
+* **Algorithm 6.4's counter** (lines 1–15): line 1 drops one marker at v0,
   line 3 sets i ← 1 and line 15 increments only after line 13's drop, so the
   first place discovered would get one marker too — the same label as v0,
-  which contradicts "the unique marker count identifies v_u" (L1718).  We
-  follow Algorithm 6.2 (Case 3a, which Version-1 says it combines, L1716): v0
+  which contradicts "the unique marker count identifies v_u" (§6.2.1 Case 5).  We
+  follow Algorithm 6.2 (Case 3a, which Version-1 says it combines, §6.2.1 Case 5): v0
   gets 1 and the j-th new place j + 1 (i ← 2 at line 3).  The literal counter
   cannot map the triangle, the smallest world with a loop edge: the loop edge's
   far end shows one marker, the label of two places (the ``failed`` outcome).
@@ -34,7 +34,7 @@ Decisions, with the thesis lines (each tested in ``tests/test_markers_case5.py``
   line 17's H is empty and v_u joins S unmarked at once (line 35) — no motion.
   Later unmarked places are not offered a drop again (line 12 with the same i
   would refuse again: i only grows on a drop).
-* **Probing in phase II** (line 8, L1738–L1739, probes "until an explored
+* **Probing in phase II** (Algorithm 6.4 lines 8–9, probes "until an explored
   edge has been traversed", silent on unmarked neighbours): a probe that reaches an
   *unmarked* neighbour learns nothing (it may be new or a phase-II place), so
   the robot retraces and tries the next edge; the probe ends at the first
@@ -45,7 +45,7 @@ Decisions, with the thesis lines (each tested in ``tests/test_markers_case5.py``
   v_k' in S (ties: the lower map vertex), reached by a shortest path of S (its
   inner places are unmarked, else one of them would be nearer); v_n is v_l's
   marked neighbour by the lowest explored exit — never on that path.
-* "K > 3" (L1708) is the parameter's minimum; Version-1 itself would run from
+* "K > 3" (§6.2.1 Case 5) is the parameter's minimum; Version-1 itself would run from
   K = 3 (v0 and the second place marked).
 
 Examples

@@ -1,7 +1,7 @@
 """§6.2.1 Case 5, Version-2 (Algorithm 6.5): k > 3 undirected V-E-markers, their number not known relative to
 the world — Case 1b's footprint search with a double-marked lighthouse while markers last (phase I), then
-Algorithm 3.1's hypotheses with v0 as the directional lighthouse (phase II) (thesis L1726, L1770, listing
-L1776–L1817).
+Algorithm 3.1's hypotheses with v0 as the directional lighthouse (phase II) (thesis §6.2.1 Case 5, listing
+Algorithm 6.5).
 
 * **Line 1**: two markers at v0 and two on one of its edges, e0 (the exit the
   robot faces).  v0 is the only place with two markers and e0 the only edge with
@@ -16,9 +16,9 @@ L1776–L1817).
   to v0 (:mod:`.case5_phase2`); the two markers on e0 sensed at v0 fix the
   entry, so the path is unique.
 
-Decisions, with the thesis lines (each tested in ``tests/test_markers_case5.py``):
+Decisions, with the thesis references (each tested in ``tests/test_markers_case5.py``):
 
-* **Line 23** (L1801): "case P and P^E do not match throughout →
+* **Line 23** (Algorithm 6.5 line 23): "case P and P^E do not match throughout →
   confirm hypothesis" repeats line 21's condition; it must be "match
   throughout" (Algorithm 6.4 line 29, Algorithm 3.1).  We confirm on a full
   match; "exit for loop" is the inner while loop.  The literal line would
@@ -28,11 +28,11 @@ Decisions, with the thesis lines (each tested in ``tests/test_markers_case5.py``
   the pendant's free end with K = 4 — the literal reading adds the triangle's
   first place twice (the checker's ``wrong-map``); ours maps it (and every
   world of ≤ 5 places and degree ≤ 4 from every start, K = 4).
-* **Line 28** (L1806): a one-marker v_u is always a phase-I place, so the
+* **Line 28** (Algorithm 6.5 line 28): a one-marker v_u is always a phase-I place, so the
   non-loop branch after rejecting every hypothesis cannot be reached in a
   correct run; it is kept as Algorithm 3.1's non-loop augmentation (the checker
   would report the wrong map if it ever were).
-* **The entry edge at v0** (L1770 "traversing edges in v0 looking for the edge
+* **The entry edge at v0** (§6.2.1 Case 5 "traversing edges in v0 looking for the edge
   with two markers"): under §6.1's sensing the robot senses the markers on
   v0's edges from v0 (``[d,V2,E2-p]``), so it reads the entry at once, no
   traversal.
@@ -41,12 +41,12 @@ Decisions, with the thesis lines (each tested in ``tests/test_markers_case5.py``
   of e0 (the only other place showing two markers on an edge), so loop
   augmentation needs no drop and no search; from the far end to v0 line 5
   applies.  (A third marker on e0 would break the search's "one more marked
-  edge", L1512.)
-* **The pool.**  The thesis's markers are one homogeneous pool (L1474): with
+  edge", §6.2.1 Case 1b.)
+* **The pool.**  The thesis's markers are one homogeneous pool (§6.2): with
   ``--markers K`` the simulator's kit is a pool of exactly K vertex-or-edge
   markers and refuses any drop beyond it.  The robot also knows how many it
   carries (``options["markers"]``: only not how that compares with the world,
-  L1710), so "if the robot has one or more markers" (lines 9, 31) is K minus
+  §6.2.1 Case 5), so "if the robot has one or more markers" (lines 9, 31) is K minus
   the markers dropped, asked before a drop is tried.  With the default kit
   (``markers`` not given) the kit is exactly the split phase I spends and the
   pool is not counted.
@@ -144,7 +144,7 @@ class VertexEdgeThenLighthouse(TwoPhases, VertexEdgeFootprints):
         return FootprintSearch.mark_loop_edge(self, it, sig)
 
     def lighthouse_path(self, v: int) -> list[MapDart]:
-        """A shortest path of S from v_k' = ``v`` to v0 (L1770: v0 is the directional lighthouse)."""
+        """A shortest path of S from v_k' = ``v`` to v0 (§6.2.1 Case 5: v0 is the directional lighthouse)."""
         reached, parent = nearest(self.M, v, (0,))
         if reached is None:
             raise AlgorithmFailed(f"internal: v0 is not connected to map vertex {v}")

@@ -10,7 +10,7 @@ public state after the start, after every step and at the end.  What each part
 may do:
 
 ``start()``
-    Lines 1–3 of Algorithm 3.1 and their counterparts (L1474 for §6.2's
+    Lines 1–3 of Algorithm 3.1 and their counterparts (§6.2's opening for its
     listings, Algorithm 5.1's TM root): S ← {v0}, U ← v0's exits, the believed
     pose (v0, exit 0), exit 0 being the exit the robot faces; the algorithm's
     first drops, or the lighthouse established (§3.3, §6.1).  Only through the

@@ -1,18 +1,18 @@
 """Mapping with Σ_{k=1}^{n−1} k markers, a unique count per place: Case 3a (Algorithm 6.2), Case 3b and the
-Σ k directional vertex-marker algorithm (thesis §6.2.1 L1562–L1643, Figures 6.6–6.8; §6.2.2 L1902).
+Σ k directional vertex-marker algorithm (thesis §6.2.1 Cases 3a and 3b, Figures 6.6–6.8; §6.2.2).
 
 The robot is assured Σ_{k=1}^{n−1} k = n(n−1)/2 homogeneous markers and drops a
 *different number* of them at each place it discovers (1, 2, 3, ...), so a
 marked place names itself.  It never uses n or m.
 
-* **Case 3b** (:class:`EdgeCounts`, E-markers, O(m), L1627–L1643): on entering an
+* **Case 3b** (:class:`EdgeCounts`, E-markers, O(m), §6.2.1 Case 3b): on entering an
   unmarked v_u (no marked edge) e is a non-loop edge: non-loop augmentation, then
   "the robot goes back to (non-loop) edge e, dropping a unique number of markers
   on e" — the i-th non-loop edge gets i markers, so the marked edges form a
   spanning tree of S.  On entering a v_u with marked edges, the marked edges'
   counts and relative exits (``[4,A,E3-1,E4-2]``, Figure 6.8) name v_u and the
   entry edge e' at once: no motion validates anything.  Loop edges and vertices
-  are never marked.  The thesis proves the identification unique (L1631–L1643,
+  are never marked.  The thesis proves the identification unique (§6.2.1 Case 3b,
   Figure 6.8(c) "can *not* happen"); the explorer checks it and reports
   :class:`~topomark.spec.errors.AlgorithmFailed` if it ever is not.
 * **Case 3a** (:class:`VertexCounts`, undirected V-markers, Algorithm 6.2,
@@ -20,31 +20,31 @@ marked place names itself.  It never uses n or m.
   count, its back-link by probing its other edges until a known neighbour over
   an explored edge is sensed (lines 19–35).
 * **Σ k directional V-markers** (:class:`VertexCounts` with ``directional``,
-  O(m), L1902): "the robot drops the markers in such a way that the entry edge is
+  O(m), §6.2.2): "the robot drops the markers in such a way that the entry edge is
   indicated (all the markers dropped at v_u have the same direction)", so every
   marked place is a directional lighthouse: place and back-link at once.
 
-Decisions, with the thesis lines:
+Decisions, with the thesis references:
 
-* **Dropping on e is a drop trip**, as L1629 describes it: "the robot goes
-  back to (non-loop) edge e, dropping" (and Algorithm 6.6 line 10, L1950, "goes
+* **Dropping on e is a drop trip**, as §6.2.1 Case 3b describes it: "the robot goes
+  back to (non-loop) edge e, dropping" (and Algorithm 6.6 line 10, "goes
   back on e, drops i markers on e and back"): Case 3b walks back over e to v_k,
   drops there on e, and walks back to v_u — two traversals per non-loop edge,
   purpose ``drop``, counted in the cost and in the drop-trip sub-count (the
   accounting rule, and why the §6.2 findings compare the cost without them:
   :mod:`topomark.reference.run.simulator`).  Nothing else depends on the trip,
   so the cost without it is exactly the cost of dropping on e from v_u.
-* **Σ^{n−1} against Figure 6.6's Σ^{n}** (Case 3a's title, L1562, and Algorithm
-  6.2's, L1579, say Σ_{k=1}^{n−1} k; Figure 6.6's caption, L1569, Σ_{k=1}^{n} k).
-  Both hold, for different kits: L1575 "The algorithm marks each of the n
+* **Σ^{n−1} against Figure 6.6's Σ^{n}** (Case 3a's title and Algorithm
+  6.2's say Σ_{k=1}^{n−1} k; Figure 6.6's caption, Σ_{k=1}^{n} k).
+  Both hold, for different kits: §6.2.1 Case 3a "The algorithm marks each of the n
   vertices uniquely, so a total of Σ_{k=1}^{n} k V-markers are used", and with
   exactly Σ_{k=1}^{n−1} k "this vertex must be the last vertex that has not been
   visited and the robot can leave the vertex blank" (Algorithm 6.2 lines 10–16).
   The default kit is the class's Σ_{k=1}^{n−1} k (the last new vertex stays
-  blank, recognised by its blank label afterwards, L1575); with ``--markers`` ≥
+  blank, recognised by its blank label afterwards, §6.2.1 Case 3a); with ``--markers`` ≥
   Σ_{k=1}^{n} k every vertex is marked, so the vertex algorithms' marker bound is
   Σ_{k=1}^{n} k.  Same for the directional variant, whose blank last vertex has
-  no direction (L1902 does not discuss it: "each visited vertex is a directional
+  no direction (§6.2.2 does not discuss it: "each visited vertex is a directional
   lighthouse" holds for the n − 1 marked ones only).
 * **The directional variant explores the blank's edges from the blank.**  A loop
   edge *into* the blank needs Algorithm 6.2's probe search for its back-link
@@ -52,19 +52,19 @@ Decisions, with the thesis lines:
   deg − 1 such edges — Θ(d_max²) on a wheel whose hub is found last
   (``wheel-hub-last``: cost 2,344 at m = 160), which is no O(m).  But when the
   robot leaves the last new vertex blank it knows that every other place is
-  already visited and marked (lines 14–16, L1575: "this vertex must be the last
+  already visited and marked (lines 14–16, §6.2.1 Case 3a: "this vertex must be the last
   vertex that has not been visited"), and it knows the blank's exits relative to
   the edge it entered by.  So once the blank is known, :class:`DirectionalVertexCounts`
   takes the blank's unexplored edges first (walking S back to the blank when it
   is elsewhere), whatever the edge policy: each leads to a marked place, a
-  directional lighthouse that gives place and back-link at once (L1902), so it
+  directional lighthouse that gives place and back-link at once (§6.2.2), so it
   closes a loop with no probe, and no edge is ever entered at the blank
   unexplored.  This is a choice of which e leaves U (line 5, left open by the
-  thesis), so the algorithm is still Algorithm 6.2 with L1902's markers.  The
+  thesis), so the algorithm is still Algorithm 6.2 with §6.2.2's markers.  The
   blank's edges then cost at most 2 each beyond the rest of the run, and the
-  default kit meets the O(m) registered for Table 6.2's row (L2013).  The
+  default kit meets the O(m) registered for Table 6.2's row.  The
   undirected Case 3a is unchanged: a marked place tells no back-link there, so
-  nothing is saved (its O(m·d_max), L1564).
+  nothing is saved (its O(m·d_max), §6.2.1 Case 3a).
 * **Fewer markers than assured.**  Case 3b: the refused drop is the ``failed``
   outcome.  The vertex algorithms cannot tell the first shortage from the last
   vertex (the thesis's own rule), so a *second* unmarked place found, or a blank
@@ -101,7 +101,7 @@ def sum_to(k: int) -> int:
 
 
 class EdgeCounts(MarkerWalk):
-    """Case 3b: a unique count of undirected E-markers on each non-loop edge, O(m) (§6.2.1, L1627–L1643)."""
+    """Case 3b: a unique count of undirected E-markers on each non-loop edge, O(m) (§6.2.1 Case 3b)."""
 
     name = "case-3b"
 
@@ -119,7 +119,7 @@ class EdgeCounts(MarkerWalk):
 
     def mark_tree_edge(self, it: MarkerStep, u: int) -> bool | None:  # None here; Case 5 tells if it dropped
         """A drop trip: back over e to v_k, drop the next count on e (relative exit 0 there), and back to v_u
-        (L1629)."""
+        (§6.2.1 Case 3b)."""
         count = self.next_count
         self.leave((u, 0), "drop")
         self.drop(MarkerOp("edge", exit=0, count=count), it)
@@ -162,7 +162,7 @@ class VertexCounts(MarkerWalk):
         self.blank: int | None = None  # visitedAllVertices (line 4) once set
 
     def mark_op(self, count: int) -> MarkerOp:
-        """``count`` markers here, pointing at the entry edge if directional (L1902)."""
+        """``count`` markers here, pointing at the entry edge if directional (§6.2.2)."""
         return MarkerOp("vertex", count=count, direction=0 if self.directional else None)
 
     def begin(self) -> None:
@@ -188,7 +188,7 @@ class VertexCounts(MarkerWalk):
         if place is None or self.M.degree(place) != sig.degree:
             raise AlgorithmFailed(f"out of markers (fewer than the assured Σ k): iteration {it.number} senses "
                                   f"{sig}, which no place of the map shows")
-        if sig.vertex_direction is not None:  # a directional lighthouse: the head points at exit 0 (L1902)
+        if sig.vertex_direction is not None:  # a directional lighthouse: the head points at exit 0 (§6.2.2)
             self.loop(it, (place, (0 - sig.vertex_direction) % sig.degree))
         else:
             self.probe(it, place, sig.degree)
@@ -229,7 +229,7 @@ class VertexCounts(MarkerWalk):
 
 
 class DirectionalVertexCounts(VertexCounts):
-    """Σ_{k=1}^{n−1} k directional V-markers, each place a directional lighthouse, O(m) (§6.2.2, L1902); the
+    """Σ_{k=1}^{n−1} k directional V-markers, each place a directional lighthouse, O(m) (§6.2.2); the
     blank place's edges are explored from the blank (module docstring)."""
 
     name = "case-dv-sum"

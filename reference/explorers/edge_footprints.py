@@ -1,19 +1,19 @@
 """Mapping with about m undirected immovable markers by searching for footprints: Case 1a (m E-markers),
 Case 1b (m + 1 V-E-markers, extendable to m) and Case 2 (m + n E-markers, Algorithm 6.1) (thesis §6.2.1,
-L1493–L1554, Figures 6.4, 6.5; the footprints model of [18], L220–L227).
+Cases 1–2, Figures 6.4, 6.5; the footprints model of [18], §2.3.1).
 
 All three keep S and U (§3.1.3) and take an edge e = (v_k, v_u) from U, walk S
 to v_k and follow e (:class:`~topomark.reference.explorers.marker_walk.MarkerWalk`).
 A marker at v_u answers "have I been here before?" at once; a marked v_u
 is validated "by having the robot search the map S looking for the vertex
-which has one more marked edge than is shown on the map" (L1506):
+which has one more marked edge than is shown on the map":
 
-* **Case 1a** (:class:`EdgeFootprints`, L1497–L1506): one marker on every
+* **Case 1a** (:class:`EdgeFootprints`): one marker on every
   edge explored.  v_u is new iff none of its other edges is marked.
-* **Case 1b** (:class:`VertexEdgeFootprints`, L1508–L1521): one marker at v0
+* **Case 1b** (:class:`VertexEdgeFootprints`): one marker at v0
   and at every new vertex (not on e), one on every loop edge.  v_u is new iff
-  it has no vertex marker; c counts its marked (loop) edges only (L1529).
-* **Case 2** (:class:`DoubleMarkedEdges`, Algorithm 6.1, L1523–L1554): two
+  it has no vertex marker; c counts its marked (loop) edges only.
+* **Case 2** (:class:`DoubleMarkedEdges`, Algorithm 6.1): two
   markers on every non-loop edge, one on every loop edge; candidates must
   show c_1 single- and c_2 double-marked edges.
 
@@ -26,11 +26,11 @@ its marked edges other than e; Algorithm 6.1 lines 11–12, Algorithm 6.3
 line 18).  The one that now senses a marked edge S does not show is v_k',
 and that edge is e' (lines 14–18).
 
-Decisions, with the thesis lines (each shown in ``tests/test_markers_621.py``):
+Decisions, with the thesis references (each shown in ``tests/test_markers_621.py``):
 
-* **Back to v_k before the search**: Case 1a (L1497–L1504) does not say
-  how the robot gets back to S; Figure 6.5(b) (L1519) and Algorithm 6.1 line 10
-  (L1543) do: "goes back to v_k via e" (purpose ``retrace``).
+* **Back to v_k before the search**: Case 1a does not say
+  how the robot gets back to S; Figure 6.5(b) and Algorithm 6.1 line 10
+  do: "goes back to v_k via e" (purpose ``retrace``).
 * **Dropping on e costs nothing extra.**  "during transit on e" (Algorithm
   6.1 line 10, Algorithm 6.3 line 6): the marker on e is dropped from v_u on
   its entry edge after v_u has been sensed, so the sensing excludes e
@@ -38,13 +38,13 @@ Decisions, with the thesis lines (each shown in ``tests/test_markers_621.py``):
   line 7's two markers are dropped while the robot stands at v_u.
 * **Which candidates** ("for each other vertex in S", Algorithm 6.1
   line 11): neither v_k nor a known neighbour of v_k (no self-loops, no
-  multi-edges, L374), visited in the preorder of a breadth-first tree of S
+  multi-edges, §3.1.1), visited in the preorder of a breadth-first tree of S
   rooted at v_k, each by a shortest path of S; every vertex the robot passes
   is looked at, so one passed on the way is not visited again and the
   search stops wherever v_k' is seen (as in
   :mod:`.movable_marker`).  The walk from v_k through all candidates is at
   most the tree's Euler tour, 2(n − 1) moves (purpose ``validation``).
-* **Case 1b with m markers** (L1512–L1521): the robot learns that it is out
+* **Case 1b with m markers**: the robot learns that it is out
   of markers when a drop is refused (:meth:`MarkerWalk.try_drop`; the
   kernel's robot does not count what it carries), that is *after* following
   e in the last iteration, one traversal more than the thesis's "without
@@ -58,9 +58,9 @@ Decisions, with the thesis lines (each shown in ``tests/test_markers_621.py``):
   registration from n and m; the robot never sees them).  The m extension
   runs when the last iteration's drop is refused — shown with a kit one
   short in that iteration's kind (K4: n V and m − n E; a chain: n − 1 V).
-* **Case 2's count**: titled m + n (L1523, Algorithm 6.1 at L1531), the text
+* **Case 2's count**: titled m + n (Case 2's heading and Algorithm 6.1's title), the text
   counts m + n − 1 ("$m - n + 1$ markers on loop edges and $2(n - 1)$ markers
-  on the $n - 1$ non-loop edges", L1529); the kit is the assured m + n, the
+  on the $n - 1$ non-loop edges", §6.2.1 Case 2); the kit is the assured m + n, the
   marker bound checked is m + n − 1 (every run drops exactly that).
 
 Examples
@@ -100,11 +100,11 @@ class Marking:
 
     Each footprint explorer holds one (``FootprintSearch.marking``, :data:`UNDIRECTED` unless it says
     otherwise); §6.2.2's directional markers are another (:class:`~.edge_info.EdgeInfo`): the heads of the
-    markers and which candidates are worth visiting are all that changes (L1891–L1898).
+    markers and which candidates are worth visiting are all that changes (§6.2.2).
     """
 
-    vertex_head: int | None = None  # a V-marker's exit relative to the entry (§6.2.2 L1891); None: undirected
-    loop_head: str | None = None  # a loop marker's end at v_u ("H"/"T", §6.2.2 L1891); None: undirected
+    vertex_head: int | None = None  # a V-marker's exit relative to the entry (§6.2.2); None: undirected
+    loop_head: str | None = None  # a loop marker's end at v_u ("H"/"T", §6.2.2); None: undirected
 
     def drop_on_entry(self, walker: "FootprintSearch", it: MarkerStep, count: int) -> None:
         """Drop ``count`` markers on e from v_u (known as map dart (u, 0)); S shows them at both ends."""
@@ -121,14 +121,14 @@ UNDIRECTED = Marking()
 
 
 class FootprintSearch(MarkerWalk):
-    """The footprints loop (L1497–L1506): a subclass says when v_u is new and what goes on a non-loop edge."""
+    """The footprints loop (Case 1a): a subclass says when v_u is new and what goes on a non-loop edge."""
 
     name = "footprints"
     loop_markers = 1  # markers on a loop edge (Cases 1a, 1b, 2, 4: one)
     marking: Marking = UNDIRECTED  # how the markers are dropped and read (§6.2.2's directional ones: edge_info)
 
     def is_new(self, sig: Signature) -> bool:
-        """v_u has not been visited (E-marker algorithms: no other marked edge, L1497)."""
+        """v_u has not been visited (E-marker algorithms: no other marked edge, §6.2.1 Case 1a)."""
         return not sig.edges
 
     def non_loop_markers(self, vk: int) -> int:
@@ -154,7 +154,7 @@ class FootprintSearch(MarkerWalk):
         v, i = dart
         self.M.mark_as_sensed(v, Signature(self.M.degree(v), edges=((i, count, None),)), 0)
 
-    # -- place and back-link validation together (L1506) ------------------------------
+    # -- place and back-link validation together (§6.2.1 Case 1a) ------------------------------
     def validate(self, it: MarkerStep, sig: Signature) -> None:
         """v_u is a known place: one marker on e, back to v_k over e, search S for v_k' (Figure 6.4(c, d))."""
         if not self.mark_loop_edge(it, sig):
@@ -217,7 +217,7 @@ class FootprintSearch(MarkerWalk):
 
 
 class EdgeFootprints(FootprintSearch):
-    """Case 1a: one undirected E-marker on every edge explored, m in all, O(mn) (L1497–L1506, Figure 6.4)."""
+    """Case 1a: one undirected E-marker on every edge explored, m in all, O(mn) (Figure 6.4)."""
 
     name = "case-1a"
 
@@ -236,30 +236,30 @@ class DoubleMarkedEdges(FootprintSearch):
 
 class VertexEdgeFootprints(FootprintSearch):
     """Case 1b: a V-marker at every vertex, an E-marker on every loop edge; m + 1 in all, m with the
-    extension (L1508–L1521, Figure 6.5)."""
+    extension (§6.2.1 Case 1b, Figure 6.5)."""
 
     name = "case-1b"
 
     def begin(self) -> None:
-        """"Initially the robot drops a marker at its starting vertex v_0" (L1510)."""
+        """"Initially the robot drops a marker at its starting vertex v_0" (§6.2.1 Case 1b)."""
         self.drop(MarkerOp("vertex", direction=self.marking.vertex_head))
 
     def is_new(self, sig: Signature) -> bool:
-        """"if v_u does not contain a marker then v_u has not been visited before" (L1510)."""
+        """"if v_u does not contain a marker then v_u has not been visited before" (§6.2.1 Case 1b)."""
         return sig.vertex_count == 0
 
     def non_loop_markers(self, vk: int) -> int:
         return 0  # "(but not on the entry edge e)"
 
     def on_new(self, it: MarkerStep, u: int, count: int) -> None:
-        """A marker at v_u; refused, this is the last iteration (L1512): v_u must have no other edge."""
+        """A marker at v_u; refused, this is the last iteration (§6.2.1 Case 1b): v_u must have no other edge."""
         marked = self.try_drop(MarkerOp("vertex", direction=self.marking.vertex_head), it)
         if not marked and (self.M.degree(u) != 1 or self.M.unexplored):
             raise AlgorithmFailed(f"out of markers at iteration {it.number}: the new vertex cannot be marked and "
                                   f"exploration is not over ({len(self.M.unexplored)} unexplored edges)")
 
     def mark_loop_edge(self, it: MarkerStep, sig: Signature) -> bool:
-        """The marker on e; refused, the one edge left in U must be e' (L1512–L1521): e/e' with no search."""
+        """The marker on e; refused, the one edge left in U must be e' (§6.2.1 Case 1b): e/e' with no search."""
         try:
             return super().mark_loop_edge(it, sig)
         except OutOfMarkers:

@@ -1,16 +1,16 @@
-"""The O(mn) footprint searches improved with directional markers: *edgeINFO* (thesis §6.2.2, L1891–L1898,
+"""The O(mn) footprint searches improved with directional markers: *edgeINFO* (thesis §6.2.2,
 Figure 6.14): Case 1b with m + 1 directional V-E-markers (``case-1b-edgeinfo``) and Case 2 (Algorithm 6.1)
 with m + n directional E-markers (``case-2-edgeinfo``): "The other $O(mn)$ algorithms can be improved in a
-similar manner" (L1898) — also Case 1a with m directional E-markers (``case-1a-edgeinfo``, Figure 6.17's
-"directional marker version of the m E-marker algorithm", L1965) and the two closest-first extensions of
-Case 4 (``case-4-edgeinfo``, ``case-4-mn-edgeinfo``; L1891 names them among the algorithms that "can be
+similar manner" (§6.2.2) — also Case 1a with m directional E-markers (``case-1a-edgeinfo``, Figure 6.17's
+"directional marker version of the m E-marker algorithm", §6.2.2) and the two closest-first extensions of
+Case 4 (``case-4-edgeinfo``, ``case-4-mn-edgeinfo``; §6.2.2 names them among the algorithms that "can be
 improved with directional markers so cost is reduced, although the cost bound remains unchanged").
 
 The loop, the drops' places, the search and the m extension are Case 1b's
-(:class:`~topomark.reference.explorers.edge_footprints.VertexEdgeFootprints`,
-L1508–L1521), Case 2's (``DoubleMarkedEdges``, L1523–L1554), Case 1a's
-(``EdgeFootprints``, L1497–L1506) or Case 4's
-(:mod:`~topomark.reference.explorers.closest_first`, L1640–L1699); only the
+(:class:`~topomark.reference.explorers.edge_footprints.VertexEdgeFootprints`),
+Case 2's (``DoubleMarkedEdges``, Algorithm 6.1), Case 1a's
+(``EdgeFootprints``) or Case 4's
+(:mod:`~topomark.reference.explorers.closest_first`, Algorithm 6.3); only the
 markers' directions and the candidate filter differ: each explorer here is its
 original holding :data:`EDGE_INFO` (an :class:`EdgeInfo`) as its
 ``marking`` in place of the undirected one
@@ -18,30 +18,30 @@ original holding :data:`EDGE_INFO` (an :class:`EdgeInfo`) as its
 "Assume that when the robot drops a V-marker at a vertex, it drops the marker
 in such a way that the marker head points toward one of the exits (edges), and
 that when it drops an E-marker on an edge, it drops the marker in such a way
-that the marker head points toward one of the end vertices" (L1891).  On a
+that the marker head points toward one of the end vertices" (§6.2.2).  On a
 marked v_u the robot reads edgeINFO, the presence/absence (and, "enriched",
 the head/tail) of E-markers on the edges of v_u "enumerated starting from the
-edge pointed to by the directional V-marker" (L1891), and a known vertex is
+edge pointed to by the directional V-marker" (§6.2.2), and a known vertex is
 "potentially confusing" — a candidate to visit — "only if ... 1) the 1st edge
 on the *right* of the edge pointed by the V-marker, which corresponds to the
-entry edge, must be an unexplored edge, 2) it has [the same] edgeINFO" (L1898).
+entry edge, must be an unexplored edge, 2) it has [the same] edgeINFO" (§6.2.2).
 
-Decisions, with the thesis lines (each shown in ``tests/test_markers_622.py``):
+Decisions, with the thesis references (each shown in ``tests/test_markers_622.py``):
 
-* **Which exit a V-marker points at** (L1891 leaves it open):
+* **Which exit a V-marker points at** (§6.2.2 leaves it open):
   the edge the robot entered by when it dropped it (``direction=0``), at v0
   the exit it faces (the map's exit 0).  A robot entering that vertex later
   by exit j senses ``V-((head − j) mod deg)``.
-* **Which end an E-marker's head points at** (L1891 leaves it open): v_u,
+* **Which end an E-marker's head points at** (§6.2.2 leaves it open): v_u,
   the vertex the robot stands at when it drops the loop marker (``"H"``);
   so the loop edge e = e' reads ``E-p-H`` at v_k' and ``E-p-T`` at v_k.
-  The thesis's example reads "incoming (P_H)" (L1898); with this convention
+  The thesis's example reads "incoming (P_H)" (§6.2.2); with this convention
   every loop edge is incoming at the vertex found by the search.  Its
-  (P_T, A, P_H, A) from ``[4,V-1,E-1-H,E-3-T]`` (Figure 6.14's caption, L1896,
-  and L1898) is inconsistent with "incoming (P_H)"; here edgeINFO is read from
+  (P_T, A, P_H, A) from ``[4,V-1,E-1-H,E-3-T]`` (Figure 6.14's caption, §6.2.2)
+  is inconsistent with "incoming (P_H)"; here edgeINFO is read from
   the signature as :func:`~topomark.spec.signature.signature_at` defines
   it, so the question does not arise.
-* **The candidate test, made exact** (generalising L1898's two conditions):
+* **The candidate test, made exact** (generalising §6.2.2's two conditions):
   a directional V-marker fixes an absolute frame at every vertex, so
   conditions 1) and 2), and the enriched edgeINFO, say together that a
   known vertex w can be v_u only through a dart (w, j) with j unexplored in
@@ -56,7 +56,7 @@ Decisions, with the thesis lines (each shown in ``tests/test_markers_622.py``):
   candidates.  :func:`matching_darts` needs no V-marker (it compares
   whole signatures from every unexplored entry), so it serves an E-only
   algorithm as well.
-* **Case 2: anchored at the entry** (L1898 "in a similar manner"; L1891
+* **Case 2: anchored at the entry** (§6.2.2 "in a similar manner"; §6.2.2
   enumerates edgeINFO "starting from the edge pointed to by the directional
   V-marker", and Case 2 drops no V-marker: the thesis does not say where its
   enumeration starts): a candidate dart (w, j) passes iff j is unexplored and
@@ -69,14 +69,14 @@ Decisions, with the thesis lines (each shown in ``tests/test_markers_622.py``):
   fixing of j are what the directional markers add.  Case 1a's one marker
   on a non-loop e is dropped the same way (head at v_u): one rule,
   :meth:`EdgeInfo.drop_on_entry`, for every E-marker on a non-loop e.
-* **Case 4 (closest-first): the filter applies as it is** (L1891 lists "the
+* **Case 4 (closest-first): the filter applies as it is** (§6.2.2 lists "the
   extension algorithm of the E-marker algorithm which requires a maximum of
   m − ⌊n/2⌋ markers" and "the extension algorithm of
-  it which requires a maximum of m markers" among those improved; L1898 "in
+  it which requires a maximum of m markers" among those improved; §6.2.2 "in
   a similar manner").  Its search is the footprint search (Algorithm 6.3
   lines 14–24; ``ClosestFirst`` inherits ``search`` and ``candidates``); what
-  it changes — the edge chosen closest-first (rule 1, L1648) and a non-loop
-  edge left blank when v_k has a marked edge (rule 3, L1650) — does not touch
+  it changes — the edge chosen closest-first (rule 1, §6.2.1 Case 4) and a non-loop
+  edge left blank when v_k has a marked edge (rule 3, §6.2.1 Case 4) — does not touch
   the filter's premise: the robot drops every marker and S records it, a
   blank edge carries none in the world nor in S, an unexplored edge none, so
   S's marks at the true v_k' read from e' are what was sensed at v_u.  Rule 3
@@ -84,19 +84,19 @@ Decisions, with the thesis lines (each shown in ``tests/test_markers_622.py``):
   the robot stands at the same v_k' as the undirected version, so the
   closest-first choice, and the edge order, are the same
   (``tests/test_markers_622.py``).  Anchored at the entry, as Case 2.
-* **A unique candidate is still visited** (L1898: "is not potentially
+* **A unique candidate is still visited** (§6.2.2: "is not potentially
   confusing and thus does not need to be visited" excludes only the
   vertices that fail; the potentially confusing ones are searched as in
-  Case 1b, L1506): the search validates the back-link by the footprint
+  Case 1b, §6.2.1 Case 1a): the search validates the back-link by the footprint
   itself — the marker on e seen where S shows none — and never trusts a
   match alone.  The cost gained is the candidates not walked to.
 * **Cost**: fewer candidates, visited in Case 1b's order, so in practice a
   shorter search; not a theorem — the search stops where v_k' is first
   *passed*, and a skipped candidate's path could have passed it earlier.
-  The bound stays Case 1b's O(mn) (L1891: "the cost bound remains
+  The bound stays Case 1b's O(mn) (§6.2.2: "the cost bound remains
   unchanged"), the markers its m + 1 (n V + m − n + 1 E, all directional);
-  Case 2's likewise (m + n − 1 used, L1529), Case 1a's (m, L1506) and Case
-  4's (the corrected m − ⌊(n−1)/2⌋ and m + [n even], L1663, L1665): the
+  Case 2's likewise (m + n − 1 used), Case 1a's (m) and Case
+  4's (the corrected m − ⌊(n−1)/2⌋ and m + [n even], §6.2.1 Case 4): the
   drops are the original's, only their heads are added.
 
 Examples
@@ -156,7 +156,7 @@ def _entries_reading_first(M: PartialMap, w: int, sensed: Signature) -> set[int]
 
 class EdgeInfo(Marking):
     """Directional markers read as edgeINFO: a candidate must read, from some unexplored entry, exactly what the
-    robot sensed at v_u (L1898, generalised; module docstring)."""
+    robot sensed at v_u (§6.2.2, generalised; module docstring)."""
 
     vertex_head = 0  # each V-marker points at the edge the robot entered by
     loop_head = "H"  # each loop E-marker's head points at v_u, where the robot drops it
@@ -179,7 +179,7 @@ EDGE_INFO = EdgeInfo()
 
 
 class EdgeInfoFootprints(VertexEdgeFootprints):
-    """Case 1b with directional V-E-markers: candidates must match edgeINFO from the entry (L1891–L1898)."""
+    """Case 1b with directional V-E-markers: candidates must match edgeINFO from the entry (§6.2.2)."""
 
     name = "case-1b-edgeinfo"
     marking = EDGE_INFO
@@ -187,7 +187,7 @@ class EdgeInfoFootprints(VertexEdgeFootprints):
 
 class DoubleMarkedEdgeInfo(DoubleMarkedEdges):
     """Case 2 (Algorithm 6.1) with directional E-markers, heads at v_u: "The other O(mn) algorithms can be
-    improved in a similar manner" (L1898); anchored at the entry (module docstring)."""
+    improved in a similar manner" (§6.2.2); anchored at the entry (module docstring)."""
 
     name = "case-2-edgeinfo"
     marking = EDGE_INFO
@@ -195,21 +195,21 @@ class DoubleMarkedEdgeInfo(DoubleMarkedEdges):
 
 class EdgeFootprintsEdgeInfo(EdgeFootprints):
     """Case 1a (m E-markers) with directional E-markers, heads at v_u, anchored at the entry: Figure 6.17's
-    "directional marker version of the m E-marker algorithm" (L1965)."""
+    "directional marker version of the m E-marker algorithm" (§6.2.2)."""
 
     name = "case-1a-edgeinfo"
     marking = EDGE_INFO
 
 
 class ClosestFirstEdgeInfo(ClosestFirst):
-    """Case 4 (Algorithm 6.3, closest-first, m − ⌊(n−1)/2⌋ markers) with directional E-markers (L1891, L1898)."""
+    """Case 4 (Algorithm 6.3, closest-first, m − ⌊(n−1)/2⌋ markers) with directional E-markers (§6.2.2)."""
 
     name = "case-4-edgeinfo"
     marking = EDGE_INFO
 
 
 class ClosestFirstDoubleEdgeInfo(ClosestFirstDouble):
-    """The closest-first extension of Case 2 (L1665) with directional E-markers (L1891, L1898)."""
+    """The closest-first extension of Case 2 (§6.2.1 Case 4) with directional E-markers (§6.2.2)."""
 
     name = "case-4-mn-edgeinfo"
     marking = EDGE_INFO

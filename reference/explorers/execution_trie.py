@@ -96,10 +96,10 @@ class ExecutionTrie:
         if child is None:
             child = self.add(node, m, sig, purpose)
         elif child.sig != sig:
-            # The world is fixed and a motion from a place always leads to the same place (§3.1.1, L365, L378):
+            # The world is fixed and a motion from a place always leads to the same place (§3.1.1):
             # the robot's own perceptions never disagree, so only a node grafted from T (a record placed by the
-            # map) can; with an explicit lighthouse the map is right (Lemma 1, L604), with another it may not be
-            # (L1346): see :func:`~topomark.reference.explorers.inconsistency.inconsistent`.
+            # map) can; with an explicit lighthouse the map is right (Lemma 1, §3.4), with another it may not be
+            # (§5.2.1): see :func:`~topomark.reference.explorers.inconsistency.inconsistent`.
             raise inconsistent(self.light, f"execution trie: the motions {child.path()} from v_u sensed {sig}, "
                                            f"where {child.kind} perception {child.sig} is known", "§3.1.1 and Lemma 1")
         self.at, self.offset = child, 0

@@ -1,16 +1,16 @@
 """Validating a loop-closing hypothesis of Algorithm 5.1 against every known vertex: the "global signature"
-(thesis §5.2.2, L1350, L1367–L1369; Algorithm 5.1 lines 17–30).
+(thesis §5.2.2; Algorithm 5.1 lines 17–30).
 
 "For each potential loop closing possibility (hypothesis) … we attempt to
 validate it by computing paths from the hypothesized location of the robot to
 *each* of the known places in M, and then having the robot traverse each of
 the paths. That is, each of the known vertices serves as a 'lighthouse'. …
 For a loop closing hypothesis to be accepted, paths to *all* the
-'lighthouses' must be completed with no signature mismatch" (L1367–L1369).
+'lighthouses' must be completed with no signature mismatch" (§5.2.2).
 
 Decisions:
 
-* **Path overlap** (L1373: "using the technique in Chapter 4, the path
+* **Path overlap** (§5.2.2: "using the technique in Chapter 4, the path
   overlap is captured in the multiple lighthouse traversals"): the paths to
   every known vertex are the branches of one breadth-first tree of the
   hypothesised model M' rooted at the hypothesised place, walked depth-first.
@@ -23,14 +23,14 @@ Decisions:
   is always possible, whatever the model).
 * **Expected perception** = the degree of each vertex on the path and, with
   ``entry_check`` (``--entry-check yes``, the default), "the expected entry
-  edge information" (L1369) at each vertex whose neighbours are all known in
+  edge information" (§5.2.2) at each vertex whose neighbours are all known in
   M' and whose neighbour degree list D has no proper rotation onto itself
   (:func:`shows_entry`, §5.1's test): the thesis does not say how it is read
-  (L1369 names the information only); here the robot visits every neighbour
+  (§5.2.2 names the information only); here the robot visits every neighbour
   out and back (moves tagged ``probe``, as §5.1's probing) and compares each
   degree with M''s at that exit counted from the expected entry.
 * A hypothesis that would make a self-loop or a multi-edge is never formed:
-  §3.1.1 forbids both in a world (L374); Algorithm 5.1 line 17 (L1400) does
+  §3.1.1 forbids both in a world; Algorithm 5.1 line 17 does
   not exclude them.
 
 :class:`Walker` keeps the robot's frame: after an excursion the robot is back
@@ -109,7 +109,7 @@ def validate(walker: Walker, shape: Shape, root: int, entry: int, entry_check: b
 
 
 def shows_entry(shape: Shape, v: int) -> bool:
-    """L1369: ``v``'s neighbours are all known and their degree list D has no proper rotation onto itself,
+    """§5.2.2: ``v``'s neighbours are all known and their degree list D has no proper rotation onto itself,
     so the robot entering ``v`` can tell its entry edge by visiting them (§5.1's test)."""
     row = [x for x in shape.rows[v] if x is not None]
     if len(row) < shape.degree(v):
@@ -119,7 +119,7 @@ def shows_entry(shape: Shape, v: int) -> bool:
 
 
 def _probe(robot, shape: Shape, v: int, ent: int) -> tuple[bool, int, int]:
-    """Visit every neighbour of ``v`` out and back, comparing degrees (the entry edge, L1369); return (all
+    """Visit every neighbour of ``v`` out and back, comparing degrees (the entry edge, §5.2.2); return (all
     matched, the entry the robot is back at ``v`` by, moves made)."""
     d = shape.degree(v)
     moves = 0

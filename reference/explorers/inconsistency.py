@@ -5,10 +5,10 @@ Two cases, told apart by the thesis:
 
 * the thesis *predicts* the inconsistency — a lighthouse whose place or back-link may not be explicit
   (the marker-less lighthouses of §5.2.1) "detects some signature inconsistencies (due to wrong loop
-  closing) and thus cannot proceed reporting failure" (L1346): :class:`~topomark.spec.errors.AlgorithmFailed`,
+  closing) and thus cannot proceed reporting failure" (§5.2.1): :class:`~topomark.spec.errors.AlgorithmFailed`,
   the outcome ``failed`` (exit 1);
 * the thesis *proves* it cannot happen — with a lighthouse of explicit place and back-link, an accepted
-  hypothesis is the true place and entry (§3.4, Lemma 1, L548, L604): :class:`~topomark.spec.errors.ExplorerFault`,
+  hypothesis is the true place and entry (§3.4, Lemma 1): :class:`~topomark.spec.errors.ExplorerFault`,
   a bug (exit 3).
 """
 
@@ -22,8 +22,8 @@ __all__ = ["inconsistent"]
 def inconsistent(light, message: str, proof: str) -> TopomarkError:
     """The error for an explorer's own inconsistency ``message``: :class:`AlgorithmFailed` when ``light`` (a
     :class:`~topomark.reference.explorers.lighthouses.Lighthouse`, or None) is not certain to give explicit
-    place and back-link information (L1346), else :class:`ExplorerFault` naming the ``proof`` it breaks."""
+    place and back-link information (§5.2.1), else :class:`ExplorerFault` naming the ``proof`` it breaks."""
     if light is not None and not getattr(light, "certain", True):
         return AlgorithmFailed(f"{message}: the lighthouse {light.name} is not explicit, a loop was closed wrongly "
-                               "(§5.2.1, L1346)")
+                               "(§5.2.1)")
     return ExplorerFault(f"{message}, which {proof} rules out: a bug in the explorer")

@@ -1,16 +1,16 @@
-"""Exploring a labelled graph depth first: every place carries a distinct label, O(m) (thesis §2.3.1, L185;
-Table 2.3's labelled-graph row, L256, L269).
+"""Exploring a labelled graph depth first: every place carries a distinct label, O(m) (thesis §2.3.1;
+Table 2.3's labelled-graph row, Table 2.2).
 
 "By marking each visited vertex and edge uniquely, at a new vertex the robot can
 determine 'have I been here' and 'by which exit did I arrive' without any
 further validation.  Without the need for both validations, the mapping problem
 can be solved using search algorithms such as Depth-first search (DFS) …, which
-have O(m) cost" (L185).  The robot labels every place as it discovers it and
+have O(m) cost" (§2.3.1).  The robot labels every place as it discovers it and
 explores depth first:
 
 * **The label.**  Map vertex v (numbered in order of discovery, v0 = 0) gets
   label v + 1, simulated by v + 1 homogeneous markers ("by using i identical
-  markers in place of a distinct marker with label i", L185), all
+  markers in place of a distinct marker with label i", §2.3.1), all
   *directional*, pointing along v's exit 0 (the edge it was first entered by;
   v0's, the exit the robot faced at the start).
 * **At v_u.**  No marker: a new place — non-loop augmentation, then its label.
@@ -20,18 +20,18 @@ explores depth first:
 * **Depth first.**  The next edge is the newest one of U (the ``lifo`` choice),
   reached by a shortest path of S.
 
-Decisions, with the thesis lines (each shown in ``tests/test_baselines.py``):
+Decisions, with the thesis references (each shown in ``tests/test_baselines.py``):
 
 * **Vertex labels with a direction, not m + n labels.**  Table 2.3 counts m + n
-  distinct markers, "one on each visited vertex and edge" (L185, L256).  A label
+  distinct markers, "one on each visited vertex and edge" (§2.3.1, Table 2.2).  A label
   that points along an edge tells the robot its entry exit as well as its place
-  — all an edge label adds (L185: "by which exit did I arrive") — so the edges
+  — all an edge label adds (§2.3.1: "by which exit did I arrive") — so the edges
   need no marker; the directional vertex markers are the thesis's own (§3.1.1,
   §6.2.2).  The kit is 1 + 2 + … + n = n(n + 1)/2 directional vertex markers,
   exactly what every run drops.  (The thesis counts C(n, 2) homogeneous markers
-  for n labels, L185, labels 0 … n − 1; here no label is 0, since an unmarked
+  for n labels, §2.3.1, labels 0 … n − 1; here no label is 0, since an unmarked
   place is a new one.)  The thesis's own algorithm with Σ k directional
-  V-markers (``case-dv-sum``, §6.2.2, L1902) leaves v0 unmarked and chooses the
+  V-markers (``case-dv-sum``, §6.2.2) leaves v0 unmarked and chooses the
   closest edge first; this baseline is the classic DFS.
 * **The exact bound is 2m (ours).**  With every place labelled the robot's
   steps are those of a depth-first search: every edge of the DFS tree is
@@ -62,7 +62,7 @@ from topomark.reference.explorers.policies import Policies
 __all__ = ["LabelledGraphDFS", "entry_exit"]
 
 DEPTH_FIRST = Policies(edge="lifo")
-"""The newest edge of U first: depth-first search (L185)."""
+"""The newest edge of U first: depth-first search (§2.3.1)."""
 
 
 def entry_exit(sig: Signature) -> tuple[int, int]:
@@ -72,7 +72,7 @@ def entry_exit(sig: Signature) -> tuple[int, int]:
 
 
 class LabelledGraphDFS(MarkerWalk):
-    """Depth-first search of a graph whose places the robot labels distinctly (module docstring; L185)."""
+    """Depth-first search of a graph whose places the robot labels distinctly (module docstring; §2.3.1)."""
 
     name = "labelled-dfs"
 

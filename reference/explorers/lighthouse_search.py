@@ -4,23 +4,23 @@ One undirected immovable marker gives explicit place information but no
 back-link (§3.2.2).  The thesis makes it a directional lighthouse by putting
 it where the world itself supplies the back-link:
 
-* ``undirected-vertex`` (§5.1, L1326–L1330): "the robot first conduct[s] a
+* ``undirected-vertex`` (§5.1): "the robot first conduct[s] a
   random walk searching for an appropriate vertex.  Upon entering a vertex,
   the robot traverses each other incident edge … retrieving the sequence D of
   the degree information of the neighbors", and drops the marker at the first
   vertex where "it is not the case that there exists a cyclic rotation of D …
   that maps onto D, except for a complete rotation".  ``neighbourhood`` d
-  widens D to each neighbour's view to distance d (L1328: "More situations
+  widens D to each neighbour's view to distance d (§5.1: "More situations
   exist if we further extend the local signature"; d = 1 in the thesis's
-  experiments, L1332).  Recognising it later probes "only as many [edges] as
-  necessary" (L1334; :func:`~topomark.reference.explorers.probing.identify`).
-* ``undirected-edge`` (§6.1, L1463–L1470): walk "searching for an edge
+  experiments, §5.1).  Recognising it later probes "only as many [edges] as
+  necessary" (§5.1; :func:`~topomark.reference.explorers.probing.identify`).
+* ``undirected-edge`` (§6.1): walk "searching for an edge
   incident on two vertices with different degrees … drop the marker in the
   edge, and designate[s] either one of the end vertices as the directional
   lighthouse vertex".  No probe is needed: the marker is sensed relative to
   the entry edge at both ends, and the ends' degrees tell them apart.
 
-Both give up after ``walk_limit`` walk steps (L1332: "A threshold of 200
+Both give up after ``walk_limit`` walk steps (§5.1: "A threshold of 200
 steps is set for the random walk … the algorithm terminates reporting
 failure") with :class:`~topomark.spec.errors.AlgorithmFailed`, its
 ``walk_steps`` the steps walked (the run reports them as it reports a found
@@ -30,7 +30,7 @@ world §6.1 always does, and §5.1 does wherever every vertex's D is periodic
 
 Decisions (the thesis is silent):
 
-* The walk starts where the robot stands and tests that vertex first (L1334:
+* The walk starts where the robot stands and tests that vertex first (§5.1:
   "either at the initial location or otherwise within a few steps"); a walk
   step leaves by a uniformly random exit (the vertex just left included),
   drawn from ``seed`` by :class:`SplitMix` (explorer modules import no
@@ -41,7 +41,7 @@ Decisions (the thesis is silent):
 * §5.1: the vertex just left is not probed again — its degree is known
   (d = 1).  v0's exit 0 is the edge the robot faces once D is complete (no
   move to face another).
-* §6.1: v0 is the end the robot arrives at (either end serves, L1470): the
+* §6.1: v0 is the end the robot arrives at (either end serves): the
   marker goes on the edge just traversed, which is v0's exit 0.
 * The options apply to the search only; the believed pose after it is
   (v0, exit 0), and the checker anchors φ there.
@@ -88,7 +88,7 @@ class SplitMix:
 
 def after_search(S, v0):
     """The recognition of a searched lighthouse is made by its search (a placeholder for ``recognition``)."""
-    raise ExplorerFault("a searched lighthouse is recognised by what its search returns (§5.1, L1332; §6.1, L1470): "
+    raise ExplorerFault("a searched lighthouse is recognised by what its search returns (§5.1; §6.1): "
                         "its placeholder recognition was called, a bug in the explorer")
 
 
@@ -103,7 +103,7 @@ def search_vertex(light, robot, S: PartialMap):
         if steps >= light.walk_limit:
             raise AlgorithmFailed(f"no vertex whose neighbour {'degrees' if depth == 1 else 'views'} D (distance "
                                   f"{depth}) have no proper cyclic rotation onto themselves within {light.walk_limit} "
-                                  "walk steps (§5.1, L1332)", walk_steps=steps)
+                                  "walk steps (§5.1)", walk_steps=steps)
         left = sig.degree
         sig = robot.move(rng.below(sig.degree), "establish")
         known0, steps = (left if depth == 1 else None), steps + 1
@@ -127,7 +127,7 @@ def search_edge(light, robot, S: PartialMap):
     while True:
         if steps >= light.walk_limit:
             raise AlgorithmFailed(f"no edge whose two ends have different degrees within {light.walk_limit} walk "
-                                  "steps (§6.1, L1470)", walk_steps=steps)
+                                  "steps (§6.1)", walk_steps=steps)
         got = robot.move(rng.below(sig.degree), "establish")
         steps += 1
         if got.degree != sig.degree:

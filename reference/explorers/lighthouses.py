@@ -12,18 +12,18 @@ directional-vertex         a directional vertex marker pointing at exit 0       
 directional-edge           a directional edge marker on exit 0, its head at v0         §6.1, Figure 6.1(b)
 vertex-and-edge            an undirected marker at v0 and one on exit 0                §6.2
 three-undirected-edge      one undirected marker on exit 0, two on exit 1              §6.2
-thread                     a thread of length ε tied at v0, laid out toward exit 0     §6.3.1 (L2028-L2030)
+thread                     a thread of length ε tied at v0, laid out toward exit 0     §6.3.1
 three-undirected-vertex    one undirected marker at v0, two at the neighbour on        §3.7, Figure 3.21(b)
                            exit 0 (the robot walks there and back: 2 traversals)
-undirected-vertex          one undirected marker where a random walk finds aperiodic   §5.1 (L1326–L1334)
+undirected-vertex          one undirected marker where a random walk finds aperiodic   §5.1
                            neighbour degrees D (options seed, walk_limit,
                            neighbourhood; :mod:`.lighthouse_search`)
-undirected-edge            one undirected edge marker on an edge a random walk finds   §6.1 (L1463–L1470)
+undirected-edge            one undirected edge marker on an edge a random walk finds   §6.1
                            with ends of different degrees (options seed, walk_limit)
-local-pair                 nothing: v0 is where a random walk saw its least-seen pair  §5.2.1 A (L1344)
+local-pair                 nothing: v0 is where a random walk saw its least-seen pair  §5.2.1 A
                            of adjacent degrees (options seed, walk_limit, threshold;
                            :mod:`.local_lighthouses`)
-local-degree-list          nothing: v0 is where a random walk saw its least-seen       §5.2.1 B (L1346)
+local-degree-list          nothing: v0 is where a random walk saw its least-seen       §5.2.1 B
                            aperiodic neighbour degree list, rotations merged (options
                            seed, walk_limit, neighbourhood, threshold)
 =========================  ==========================================================  =====================
@@ -48,14 +48,14 @@ Decisions (the thesis is silent):
   vertex of degree 1 cannot hold this lighthouse (bad input, checked before
   the run).
 * Figure 3.21(b) names "three undirected markers, one in a vertex and two in
-  a neighbor vertex" (L874) without saying which neighbour: the faced one.
+  a neighbor vertex" (§3.7) without saying which neighbour: the faced one.
   Its back-link needs "extra traversals looking for the marked neighbors", as
   does §5.1's: for these two *probing* lighthouses the signature sensed at v0
   is the same from every entry, so the robot probes
   (:mod:`.probing`) and the perception it then has is written as the thesis
   writes Figure 3.21's, ``[3,V-1,A]``: a virtual head at v0's exit 0.  The
   recognition table, P^E and every Chapter 4 technique use that perception;
-  S keeps the true marks (L881).
+  S keeps the true marks (Figure 3.21).
 * A searched lighthouse's v0 is not the start: after :meth:`Lighthouse.establish`
   the robot stands at v0, entered by map exit 0, the explorer's believed pose
   (v0, 0), where the checker anchors φ.
@@ -63,7 +63,7 @@ Decisions (the thesis is silent):
   sensed at v0: every vertex of v0's degree is probed, and v0's perception
   is written with a virtual head (:class:`~.local_lighthouses.VirtualMap`,
   the lighthouse's ``perceiver``).  They may choose a place that is not
-  unique; the run then ends ``wrong-map`` or ``failed`` (L1346).
+  unique; the run then ends ``wrong-map`` or ``failed`` (§5.2.1).
 
 Examples
 --------
@@ -92,14 +92,14 @@ __all__ = ["Lighthouse", "Beacon", "LIGHTHOUSES", "lighthouse", "configured", "M
            "MAX_THRESHOLD", "OPTION_CAPS"]
 
 MAX_WALK_LIMIT = 1_000_000
-"""The largest ``--walk-limit``: 5,000 times §5.1's threshold of 200 walk steps (L1332).  A §5.2.1 walk keeps
+"""The largest ``--walk-limit``: 5,000 times §5.1's threshold of 200 walk steps.  A §5.2.1 walk keeps
 every step's observations until it chooses v0, so its memory and time grow with the limit: a million steps of
 ``local-degree-list`` on a 4×4 lattice take about 30 s and 150 MB; 10^8 ran out of memory."""
 
 MAX_NEIGHBOURHOOD = 8
 """The largest ``--neighbourhood`` d: probing the views to distance d walks every path of length d from a
 vertex, so the work grows exponentially with d (on a 4×4 lattice d = 14 already takes seconds per search and
-d = 100 never ends).  The thesis's experiments use d = 1 (L1332); 8 leaves room for "further extend[ing] the
+d = 100 never ends).  The thesis's experiments use d = 1 (§5.1); 8 leaves room for "further extend[ing] the
 local signature" (§5.1) while every search stays short."""
 
 MAX_THRESHOLD = MAX_WALK_LIMIT + 1
@@ -169,7 +169,7 @@ class Lighthouse:
     @property
     def certain(self) -> bool:
         """Whether v0 surely gives explicit place and back-link information, or the run fails: every lighthouse
-        with a marker; not the marker-less ones of §5.2.1, whose place may repeat in the world (L1344, L1346)."""
+        with a marker; not the marker-less ones of §5.2.1, whose place may repeat in the world."""
         return self.kit != Kit()
 
     @property
@@ -199,12 +199,12 @@ class Lighthouse:
         """The recognition of v0, once S holds its marks; raises if it gives no explicit back-link (§3.2.2).
 
         A lighthouse of explicit place and back-link gives one wherever the world was accepted for it
-        (:func:`~topomark.reference.run.explore.prepare_world`; §3.3, L502): otherwise the lighthouse is defined
-        wrongly, a bug.  One that is not explicit may give none (L1344): the ``failed`` outcome."""
+        (:func:`~topomark.reference.run.explore.prepare_world`; §3.3): otherwise the lighthouse is defined
+        wrongly, a bug.  One that is not explicit may give none (§5.2.1): the ``failed`` outcome."""
         P = self.perceive(S)
         table, bad = back_link_table(P, v0, f"v0 (lighthouse {self.name})")
         if bad is not None:
-            raise inconsistent(self, f"establishing the lighthouse: {bad}", "§3.3 (L502)")
+            raise inconsistent(self, f"establishing the lighthouse: {bad}", "§3.3")
         if not self.probing:
             return Beacon(table, P, walk_steps=walk_steps)
         raw = frozenset(signature_at(S, v0, e) for e in range(S.degree(v0)))
@@ -297,17 +297,17 @@ LIGHTHOUSES: dict[str, Lighthouse] = {h.name: h for h in (
     Lighthouse("undirected-edge", "§6.1, Figure 6.2", Kit(edge=1), (_edge(0),),
                "one undirected edge marker, dropped on an edge a random walk found with ends of different degrees",
                search=search_edge, options=("seed", "walk_limit")),
-    Lighthouse("local-pair", "§5.2.1, scheme A (L1344)", Kit(), (),
+    Lighthouse("local-pair", "§5.2.1, scheme A", Kit(), (),
                "no marker (§5.2.1: v0 is where a random walk saw its least-seen pair of adjacent degrees)",
                recognition=after_search, search=search_pair, options=("seed", "walk_limit", "threshold"),
                perceiver=VirtualMap),
-    Lighthouse("local-degree-list", "§5.2.1, scheme B (L1346)", Kit(), (),
+    Lighthouse("local-degree-list", "§5.2.1, scheme B", Kit(), (),
                "no marker (§5.2.1: v0 is where a random walk saw its least-seen aperiodic neighbour list)",
                recognition=after_search, search=search_degree_list,
                options=("seed", "walk_limit", "neighbourhood", "threshold"), perceiver=VirtualMap),
-    # §6.3.1 L2028-L2030: tied at v0, laid out toward the faced exit, its free end left there; the robot senses
+    # §6.3.1: tied at v0, laid out toward the faced exit, its free end left there; the robot senses
     # "whether the thread is present at the vertex and the direction of the thread": T-p and F (spec.signature).
-    Lighthouse("thread", "§6.3.1 (L2028-L2030)", Kit(thread=0), (ThreadOp("tie", direction=0), ThreadOp("leave")),
+    Lighthouse("thread", "§6.3.1", Kit(thread=0), (ThreadOp("tie", direction=0), ThreadOp("leave")),
                "a thread of length ε tied at the start vertex, laid out toward the faced exit"),
 )}
 """The lighthouses by name; ``directional-vertex`` is Algorithm 3.1's own and the default."""

@@ -1,16 +1,16 @@
-"""Marker-less lighthouses: a place chosen by its local signature after a random walk (thesis §5.2.1, L1342–L1348).
+"""Marker-less lighthouses: a place chosen by its local signature after a random walk (thesis §5.2.1).
 
-Without any marker the robot "cannot map a world deterministically" (L1340).
+Without any marker the robot "cannot map a world deterministically" (§5.2).
 §5.2.1 "uses local signatures or slightly expanded local signatures to
 select a 'likely' directional lighthouse, and then maps the world using the
-single directional marker algorithm or one of its enhancements" (L1344):
+single directional marker algorithm or one of its enhancements" (§5.2.1):
 "we first have the robot conduct a random walk for a certain number of
 steps, and then select the traversed vertex whose local signature is
 believed to be (most likely) unique and that also provides back-link
 information".  Two selection schemes, both here as lighthouse strategies with
 an empty kit (any Chapter 3–4 algorithm runs with them):
 
-* ``local-pair`` — scheme A (L1344): "record the pair of degrees of adjacent
+* ``local-pair`` — scheme A (§5.2.1): "record the pair of degrees of adjacent
   vertices that the robot encounters during its random walk … the pair of
   degrees that was encountered the least number of times … If the least
   number of visits is below a threshold then this pair of degrees is
@@ -23,7 +23,7 @@ an empty kit (any Chapter 3–4 algorithm runs with them):
   first neighbour of degree b clockwise from the entry edge is v0's exit 0
   (the edge's orientation is the back-link); no neighbour of degree b: not
   v0.
-* ``local-degree-list`` — scheme B (L1346): "At each vertex visited during
+* ``local-degree-list`` — scheme B (§5.2.1): "At each vertex visited during
   random walk, the robot visits all the neighbors and establishes a list
   D … we collect the lists that contain explicit back-link information,
   using the rotation equivalence test … we treat lists that are cyclic
@@ -33,7 +33,7 @@ an empty kit (any Chapter 3–4 algorithm runs with them):
   :func:`matches_list`: probing v0's neighbours (:mod:`.probing`) until no
   entry agrees (not v0) or every neighbour agrees with D from exactly one
   entry (v0, and that entry).  ``neighbourhood`` d widens D to the views to
-  distance d, as for §5.1 (L1348: "this approach might be improved using
+  distance d, as for §5.1 (§5.2.1: "this approach might be improved using
   signatures of neighbor distance d > 1").
 
 v0's recognised perception is written as a directional lighthouse's,
@@ -42,7 +42,7 @@ v0's recognised perception is written as a directional lighthouse's,
 checker compares the map with the world as it is.
 
 Neither scheme can guarantee the lighthouse's place (both) nor its back-link
-(scheme A) (L1344, L1346).  The outcomes are the thesis's list (L1346):
+(scheme A) (§5.2.1).  The outcomes are the thesis's list (§5.2.1):
 
 * ``failed`` — "No potential lighthouse may be identified": no candidate in
   the walk, or the least count not below the threshold; or the algorithm
@@ -60,17 +60,17 @@ Neither scheme can guarantee the lighthouse's place (both) nor its back-link
   itself claims ``correct``.  (Unchecked, ``--no-check``, such a run may end
   with a wrong map or, if S never closes, not end.)
 
-Decisions (the thesis is silent, L1344–L1346):
+Decisions (the thesis is silent, §5.2.1):
 
 * Walk: ``walk_limit`` steps (default 200 — the thesis gives no length for
-  §5.2.1; 200 is its only walk threshold, §5.1 L1332), each by a uniformly
+  §5.2.1; 200 is its only walk threshold, §5.1), each by a uniformly
   random exit drawn from ``seed`` (:class:`~.lighthouse_search.SplitMix`).
   Scheme B tests the start and the vertices after steps 1..walk_limit
   (walk_limit + 1 visits); scheme A counts the walk_limit traversed edges.
 * Pairs are unordered (an edge is the same pair whichever way it is
   walked); a pair of equal degrees is never chosen — both of its ends would
   show it, so it gives neither one place nor an orientation.
-* ``threshold``: the least count must be *below* it (L1344, L1346).  No value
+* ``threshold``: the least count must be *below* it (§5.2.1).  No value
   is given; the default is the number of observations (walk_limit for
   scheme A, walk_limit + 1 for B), i.e. a candidate is refused only if the
   walk saw it at every step and nothing rarer (a star, K2).
@@ -82,7 +82,7 @@ Decisions (the thesis is silent, L1344–L1346):
 * Scheme A: the lighthouse is the end of smaller degree (fewer neighbours to
   probe and to confuse the back-link), entered from the other end, so that
   edge is v0's exit 0.  Recognition stops at the first neighbour of degree b
-  (L1334: "only as many as necessary"), so a v0 with two neighbours of
+  (§5.1: "only as many as necessary"), so a v0 with two neighbours of
   degree b gives an entry that depends on where the robot came from — the
   back-link the thesis says scheme A cannot guarantee.
 * Scheme B: v0's exit 0 is the edge the robot entered it by on its way back.
@@ -123,7 +123,7 @@ __all__ = ["search_pair", "search_degree_list", "first_of_degree", "matches_list
 
 
 def canonical(D: tuple) -> tuple:
-    """The representative of D's rotation class (L1346: rotations "considered the same list"): its least rotation."""
+    """The representative of D's rotation class (§5.2.1: rotations "considered the same list"): its least rotation."""
     return min(D[r:] + D[:r] for r in range(len(D)))
 
 
@@ -140,7 +140,7 @@ def virtual(sig: Signature, entry: int) -> Signature:
 class LocalProbingRobot(ProbingRobot):
     """The probing robot of a virtual lighthouse: a new edge that arrives at v0 by an entry already explored is
     a "signature inconsistenc[y] (due to wrong loop closing)" — the algorithm "cannot proceed reporting failure"
-    (L1346): :class:`~topomark.spec.errors.AlgorithmFailed`."""
+    (§5.2.1): :class:`~topomark.spec.errors.AlgorithmFailed`."""
 
     __slots__ = ("_S",)
 
@@ -154,7 +154,7 @@ class LocalProbingRobot(ProbingRobot):
             entry = (-sig.vertex_direction) % sig.degree
             if (0, entry) not in self._S.unexplored:
                 raise AlgorithmFailed(f"a new edge arrived at the lighthouse by its exit {entry}, already explored: "
-                                      "its local signature is not unique (§5.2.1, L1346)")
+                                      "its local signature is not unique (§5.2.1)")
         return sig
 
 
@@ -251,9 +251,9 @@ def search_pair(light, robot, S: PartialMap):
             last[pair] = s
     if not counts:
         raise AlgorithmFailed(f"no edge whose ends have different degrees in a walk of {L} steps: no pair of "
-                              "degrees gives a lighthouse and its back-link (§5.2.1, L1344)", walk_steps=L)
+                              "degrees gives a lighthouse and its back-link (§5.2.1)", walk_steps=L)
     a, b = pair = least_seen(counts, last)
-    _refuse(light, f"pair of adjacent degrees {pair}", counts[pair], L, "§5.2.1, L1344")
+    _refuse(light, f"pair of adjacent degrees {pair}", counts[pair], L, "§5.2.1")
     s = last[pair]
     c = _walk_back(robot, degrees, exits, 0, s)  # at vertex s; the edge to s - 1 is at offset -c
     if degrees[s] == b:  # v0 is vertex s - 1: cross the pair's edge into it
@@ -296,9 +296,9 @@ def search_degree_list(light, robot, S: PartialMap):
     if not counts:
         raise AlgorithmFailed(f"no vertex whose neighbour {'degrees' if depth == 1 else 'views'} D (distance "
                               f"{depth}) have no proper cyclic rotation onto themselves in a walk of {L} steps "
-                              "(§5.2.1, L1346)", walk_steps=L)
+                              "(§5.2.1)", walk_steps=L)
     chosen = least_seen(counts, last)
-    _refuse(light, f"neighbour list {chosen} (rotations merged)", counts[chosen], L + 1, "§5.2.1, L1346")
+    _refuse(light, f"neighbour list {chosen} (rotations merged)", counts[chosen], L + 1, "§5.2.1")
     t = last[chosen]
     c = _walk_back(robot, degrees, exits, f, t)
     d, seen = degrees[t], lists[t]

@@ -1,15 +1,15 @@
-"""A prior over worlds and the ranking of the model tree's completed models by it (thesis §5.3, L1436–L1438).
+"""A prior over worlds and the ranking of the model tree's completed models by it (thesis §5.3).
 
 §5.3 suggests that "the world models in the tree can be ranked in terms of
 their overall likelihood" given "the probabilistic distribution of some
-environmental properties" (L1438; also L2270: distributions of n, of the
+environmental properties" (§5.3; also §7.2: distributions of n, of the
 diameter, of degrees).  It names no distribution.  **Decision**: the prior
 
     P(G) ∝ 2^−(n + m + g)
 
 over embedded graphs, n vertices, m edges and g the genus of the embedding:
 each vertex, each edge and each handle halves the prior — fewer places (the
-Occam's razor ranking of the earlier work, L302, which counts vertices),
+Occam's razor ranking of the earlier work, §2.3.2, which counts vertices),
 fewer edges, and planar embeddings first.  Every completed model explains
 the robot's perceptions alike (the model tree voids every model that does
 not, Algorithm 5.1), so the likelihood is the same for each and

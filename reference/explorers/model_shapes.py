@@ -1,5 +1,5 @@
 """World models of Algorithm 5.1 with shared structure: :class:`Shape` (a partial embedded map) and
-:class:`Model` (a shape with the robot's believed pose) (thesis §5.2.2, L1356–L1369, Figure 5.2).
+:class:`Model` (a shape with the robot's believed pose) (thesis §5.2.2, Figure 5.2).
 
 Algorithm 5.1 keeps many world models, and each step makes children of
 them: a *pass* child (same map, new pose), *loop augmentation* children (one
@@ -75,7 +75,7 @@ class Shape:
         return cast(MapDart, self.rows[dart[0]][dart[1]])
 
     def complete(self) -> bool:
-        """No unexplored exit: a "completed model" (L1373)."""
+        """No unexplored exit: a "completed model" (§5.2.2)."""
         return self.open == 0
 
     def open_darts(self) -> list[MapDart]:

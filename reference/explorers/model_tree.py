@@ -1,4 +1,4 @@
-"""Mapping with no markers by a tree of world models: Algorithm 5.1 (thesis §5.2.2, L1350–L1421; §5.3 cues, L1436).
+"""Mapping with no markers by a tree of world models: Algorithm 5.1 (thesis §5.2.2; §5.3 cues).
 
 The robot carries nothing (an empty kit) and senses only degrees.  Each step
 (:meth:`ModelTreeExplorer.step`) is one pass of Algorithm 5.1:
@@ -14,13 +14,13 @@ The robot carries nothing (an empty kit) and senses only degrees.  Each step
    child.  ``--signatures global`` accepts a hypothesis only when the robot,
    walking to every known vertex of the hypothesised model, meets no
    mismatch (:mod:`.global_signatures`); ``--signatures local`` accepts every
-   degree-matching one without moving (L1367's "simplest approach", the
-   thesis's comparison of L1421); ``--entry-check yes`` (default) adds the
-   entry-edge information of L1369 to the global validation.
+   degree-matching one without moving (§5.2.2's "simplest approach", the
+   thesis's comparison of §5.2.2); ``--entry-check yes`` (default) adds the
+   entry-edge information of §5.2.2 to the global validation.
 
-Termination, all decided here since the thesis gives one heuristic only (L1373):
+Termination, all decided here since the thesis gives one heuristic only (§5.2.2):
 
-* L1373: a model that is the only completed model for ``--window`` steps
+* §5.2.2: a model that is the only completed model for ``--window`` steps
   (default 100, the thesis's example) is returned;
 * a sole live model that is completed is returned at once: the true model
   is never voided (the ``models`` check asserts it), so it is the truth,
@@ -34,34 +34,34 @@ Termination, all decided here since the thesis gives one heuristic only (L1373):
 * TM complete (the world is a tree: its breadth-first unfolding is finite):
   the sole completed model is returned;
 * ``--max-steps`` / ``--max-models`` reached: :class:`LimitReached` (the
-  thesis's "never terminates", L1346), naming the cap, the step and the
+  thesis's "never terminates", §5.2.1), naming the cap, the step and the
   counts; every model voided: :class:`AlgorithmFailed` (cannot happen
   unless a cue is false).
 
-Cues of §5.3 (L1436; none was run in the thesis).  The registry's
+Cues of §5.3 (none was run in the thesis).  The registry's
 options are single-valued, so each cue is its own option: ``cue-n``, ``cue-m``, ``cue-diameter`` (integers)
 and ``cue-planar`` (yes/no).  A cue is prior knowledge, true of the world:
 the registration refuses a false ``cue-n``/``cue-m`` as bad input.
 
 * ``cue-n`` / ``cue-m``: a model with more vertices / edges is voided, and so
   is a *completed* one with fewer (it would be the whole world); the run
-  ends as soon as one model is left and it is completed (L1436: "terminate
+  ends as soon as one model is left and it is completed (§5.3: "terminate
   as soon as all the current models have n vertices").
 * ``cue-diameter D``: a completed model of diameter > D is voided (a partial
-  model's diameter can still shrink, so L1436's rejection of "a model with too
+  model's diameter can still shrink, so §5.3's rejection of "a model with too
   large a diameter" waits for it to be completed); once TM has been
   explored to depth D (every exit of every TM vertex at depth ≤ D taken,
-  L1436: "cease exploration after depth d of the traversal map"), every
+  §5.3: "cease exploration after depth d of the traversal map"), every
   world edge has been walked, so each model not completed is voided and the
   run ends: with the sole model left, or as :class:`AlgorithmFailed` naming
   how many completed models it cannot tell apart.
-* ``prior single-leaf`` (L1436: "we know that there exists exactly one
+* ``prior single-leaf`` (§5.3: "we know that there exists exactly one
   'leaf vertex' in the world"): a model with two places of degree 1 is
   voided, and so is a completed one with none.  The thesis's use of it — the
   leaf as a directional lighthouse, deterministic — is a lighthouse
   algorithm; here it prunes the tree like a cue.
 * ``rank yes``: the completed models are ranked by P(model | perceptions)
-  (:mod:`.model_prior`, L1438), for the run's summary; it voids nothing.
+  (:mod:`.model_prior`, §5.3), for the run's summary; it voids nothing.
 * ``cue-planar yes``: a model whose rotation system has genus > 0 is voided
   (planar = a genus-0 embedding, the world being an embedded graph §3.1.1;
   a sub-embedding never has a larger genus than the world).

@@ -1,24 +1,24 @@
 """Mapping with a single movable vertex marker: Dudek et al.'s algorithm [24, 26] and its directional
-variant [27] (thesis §2.3.1, L139–L152, Figure 2.2; L177; L2036).
+variant [27] (thesis §2.3.1, Figure 2.2; §6.3.1).
 
 The robot carries one vertex marker that it may drop and pick up again
-(L139: "The robot can pick up the marker if it is located at the current
+(§2.3.1: "The robot can pick up the marker if it is located at the current
 vertex and it can put down the marker it holds at the current vertex").  It
 keeps the known map S and U, the unexplored edges at known vertices, exactly
-as Algorithm 3.1 does (§3.1.3; here ``S.unexplored``).  One step (L148)
+as Algorithm 3.1 does (§3.1.3; here ``S.unexplored``).  One step (§2.3.1)
 removes an unexplored edge e = (v_k, v_u) from U, walks S to v_k, follows e
 and answers "have I been here before?":
 
-1. **place validation** (L148) — drop the marker at v_u, come back to v_k
+1. **place validation** (§2.3.1) — drop the marker at v_u, come back to v_k
    over e, and visit the known vertices that could be v_u, looking for the
    marker.  Not found: v_u is new (non-loop augmentation, Figure 2.2(a, b)):
    fetch the marker from v_u, which joins S with e as its exit 0.
-2. **back-link validation** (L150), marker found at v_k': "the robot drops
+2. **back-link validation** (§2.3.1), marker found at v_k': "the robot drops
    the marker at v_k and goes back to v_k' along the shortest known path in
    S.  At v_k', the robot traverses each of the (unexplored) incident edges
    at v_k', looking for the marker."  The one that leads to the marker is e'
    (Figure 2.2(c, d)); the robot, now at v_k, picks the marker up.
-   **Directional variant** (L177, L2036): the marker is dropped at v_u
+   **Directional variant** (§2.3.1, §6.3.1): the marker is dropped at v_u
    pointing at the entry edge e, so where it is found its direction names
    e' at once — no back-link search.
 
@@ -26,15 +26,15 @@ The thesis leaves open, and this module decides (each tested on the
 smallest world that shows it in ``tests/test_movable_marker.py``):
 
 * **how the robot returns after a drop** — back over e to v_k (it cannot walk
-  S from an unknown place).  L162 describes Dudek et al.'s class of
+  S from an unknown place).  §2.3.1 describes Dudek et al.'s class of
   strategies as "Depth-One search strategies which always drop a marker at
   the unknown end of an edge and comes back".
-* **which known vertices are visited** — L148 says "visiting known vertices
+* **which known vertices are visited** — §2.3.1 says "visiting known vertices
   in S"; only those that can be v_u are visited: the same degree as v_u
-  (L146: "two vertices appear identical to the robot if they have the same
+  (§2.3.1: "two vertices appear identical to the robot if they have the same
   degree"), at least one unexplored edge (v_u is reached by the unexplored
   e, so e' is unexplored at v_u), neither v_k nor a neighbour of v_k in S
-  (no self-loops, no multi-edges: L374; L139 "Redundant or
+  (no self-loops, no multi-edges: §3.1.1, §2.3.1 "Redundant or
   self-referential edges are prohibited").  They are visited in the
   preorder of a breadth-first tree of S rooted at v_k (children by exit
   index), each reached by a shortest path in S; every vertex the robot
@@ -43,7 +43,7 @@ smallest world that shows it in ``tests/test_movable_marker.py``):
 * **when the marker is picked up** — at the end of every step, before the
   next edge is chosen: at v_u (non-loop: the robot walks back to v_k and
   over e once more), at v_k' (directional loop, or undirected when v_k' has
-  a single unexplored edge: that edge is e', L150's search has one
+  a single unexplored edge: that edge is e', §2.3.1's search has one
   candidate and needs no move), or at v_k (undirected back-link search).
   So between steps the marker is held and the world carries none: S never
   shows a mark, and I-1/I-2 and the final extended isomorphism (markers
@@ -62,13 +62,13 @@ Cost accounting (the robot's purposes, :data:`~topomark.reference.explorers.robo
 ``validation``  place validation: walking S looking for the marker
 ``other``       marker logistics: back to v_u to fetch it (non-loop)
 ``drop``        a drop trip: carrying it to v_k and back to v_k' for the back-link
-                search (L150; :mod:`topomark.reference.run.simulator`)
+                search (§2.3.1; :mod:`topomark.reference.run.simulator`)
 ``probe``       back-link validation: out and back over v_k''s unexplored edges
 ==============  =================================================================
 
 References
 ----------
-Thesis §2.3.1 (L139–L152, Figure 2.2; L162; L177) and §6.3 (L2036, the
+Thesis §2.3.1 (Figure 2.2) and §6.3.1 (the
 carried l = ε thread is this directional variant); Dudek et al. [24, 26, 27].
 
 Examples
@@ -110,12 +110,12 @@ class MarkerIteration(StepRecord):
 
 
 class MovableMarkerExplorer(MapWalker):
-    """Dudek et al.'s single undirected movable marker algorithm [26] (§2.3.1, L148–L150); the start, the
+    """Dudek et al.'s single undirected movable marker algorithm [26] (§2.3.1); the start, the
     termination, the walks of S and the augmentations are the :class:`~.walker.MapWalker`'s."""
 
     name = "dudek"
     loop_check = "Dudek loop"
-    loop_proof = "Dudek's back-link validation, whose marker always leads back (§2.3.1, L150)"
+    loop_proof = "Dudek's back-link validation, whose marker always leads back (§2.3.1)"
     directional = False
 
     def __init__(self, robot: Robot, policies: Policies | None = None,
@@ -126,7 +126,7 @@ class MovableMarkerExplorer(MapWalker):
 
     # -- the explorer contract: step (start, done, models: the walker's) ----------------
     def step(self) -> MarkerIteration:
-        """One step of L148: take e from U, follow it, resolve v_u with the marker, augment S."""
+        """One step of §2.3.1: take e from U, follow it, resolve v_u with the marker, augment S."""
         edge, parent = self.policies.next_edge(self.S, self.position[0])
         it = MarkerIteration(len(self.iterations) + 1, edge)
         vk, i = it.edge
@@ -137,7 +137,7 @@ class MovableMarkerExplorer(MapWalker):
             self.non_loop_augment(it, sig)
         else:
             self.robot.operate(MarkerOp("vertex", direction=0 if self.directional else None))
-            self.robot.move(0, "retrace")  # "comes back" (L162) over e
+            self.robot.move(0, "retrace")  # "comes back" (§2.3.1) over e
             self.position = (vk, i)
             found = self.search(it.candidates)
             if found is None:  # Figure 2.2(a, b): fetch the marker from v_u, which is new
@@ -150,7 +150,7 @@ class MovableMarkerExplorer(MapWalker):
                 self.loop_augment(it, (found[0], self.back_link(it, found[1])))
         return self.record(it)
 
-    # -- place validation (L148) -------------------------------------------------------
+    # -- place validation (§2.3.1) -------------------------------------------------------
     def search(self, candidates: list[int]) -> tuple[int, Signature] | None:
         """Visit the candidates (:func:`~.walker.places_like`) until the marker is seen; where (the robot
         stands there) and what it sensed.  Every vertex the robot enters is looked at, so a candidate passed on
@@ -171,11 +171,11 @@ class MovableMarkerExplorer(MapWalker):
                 return found[0], found[2]
         return None
 
-    # -- back-link validation (L150) ----------------------------------------------------
+    # -- back-link validation (§2.3.1) ----------------------------------------------------
     def back_link(self, it: MarkerIteration, sig: Signature) -> int:
         """The exit e' of v_k' (where the robot stands, the marker found) that e leads to; the marker picked up.
 
-        L150: drop the marker at v_k, go back to v_k' along the shortest known
+        §2.3.1: drop the marker at v_k, go back to v_k' along the shortest known
         path, traverse v_k''s unexplored edges looking for it.  A single
         unexplored edge at v_k' is e' with no move.
         """
@@ -200,21 +200,21 @@ class MovableMarkerExplorer(MapWalker):
             self.robot.move(0, "probe")
             self.position = (x, j)
         # "One of the (unexplored) edges e' will take the robot back to v_k , which the robot will immediately
-        # recognize due to the presence of the marker" (§2.3.1, L150): not finding it is a bug, not an outcome.
+        # recognize due to the presence of the marker" (§2.3.1): not finding it is a bug, not an outcome.
         raise ExplorerFault(f"Dudek back-link: the marker at v_k = {vk} is beyond none of {open_exits} at "
-                            f"v_k' = {x} (iteration {it.number}), which §2.3.1 (L150) rules out: a bug in the "
+                            f"v_k' = {x} (iteration {it.number}), which §2.3.1 rules out: a bug in the "
                             "explorer")
 
 
 class DirectionalMovableMarkerExplorer(MovableMarkerExplorer):
-    """The directional variant [27] (§2.3.1, L177; L2036): the marker, dropped at v_u pointing at e, names e'
+    """The directional variant [27] (§2.3.1, §6.3.1): the marker, dropped at v_u pointing at e, names e'
     where it is found, so back-link validation needs no motion."""
 
     name = "dudek-directional"
     directional = True
 
     def back_link(self, it: MarkerIteration, sig: Signature) -> int:
-        """e' is the exit the marker points at (L177: "identifying the one that is pointed to by the marker");
+        """e' is the exit the marker points at (§2.3.1: "identifying the one that is pointed to by the marker");
         the marker is picked up where it lies, v_k'."""
         x, entry = self.position
         self.robot.operate(PICK_UP)

@@ -5,12 +5,12 @@ back-link information only around them:
 
 * Figure 3.21(b), three undirected vertex markers — "the entry edge can be
   established by taking extra traversals looking for the marked neighbors"
-  (L874);
+  (§3.7);
 * §5.1, one undirected vertex marker at a vertex whose neighbour degrees
   D have no proper cyclic rotation onto themselves — recognising it "requires
   visiting adjacent vertices to determine relative orientation to the
   marker", and "the robot does not need to transit to all edges … but only as
-  many as necessary" (L1332–L1334).
+  many as necessary" (§5.1).
 
 For both, the robot on sensing v0's signature probes neighbours (out and
 back, purpose ``probe``, each a counted edge traversal) until exactly one
@@ -34,7 +34,7 @@ Decision (the thesis is silent): the probe of a neighbour is always "out
 through the exit, sense, back"; the robot restores its facing after probing
 so the explorer's bookkeeping (the retrace of line 17, the execution trie's
 offset) holds unchanged.  The vertex just left is never probed: its signature
-was sensed when the robot stood there (L1334: "only as many as necessary").
+was sensed when the robot stood there (§5.1: "only as many as necessary").
 
 Examples
 --------
@@ -61,7 +61,7 @@ ENRICHED = frozenset({"new", "validation", "expansion"})
 
 
 def aperiodic(seq) -> bool:
-    """No proper cyclic rotation of ``seq`` maps it onto itself (L1328: "except for a complete rotation")."""
+    """No proper cyclic rotation of ``seq`` maps it onto itself (§5.1: "except for a complete rotation")."""
     k = len(seq)
     return all(any(seq[(i + r) % k] != seq[i] for i in range(k)) for r in range(1, k))
 
@@ -145,9 +145,9 @@ def identify(robot, sig: Signature, expect: Callable[[int, int], Any], known0, d
         robot.move(0, "probe")
     if len(J) != 1:
         # Only lighthouses of explicit place and back-link probe here (Figure 3.21(b); §5.1: D has no proper
-        # cyclic rotation onto itself, L1326): exactly one entry agrees, so another count is a bug.
+        # cyclic rotation onto itself): exactly one entry agrees, so another count is a bug.
         raise ExplorerFault(f"{len(J)} entries of v0 agree with the probed neighbours, where an explicit back-link "
-                            "(§5.1, L1326) gives exactly one: a bug in the explorer")
+                            "(§5.1) gives exactly one: a bug in the explorer")
     return J[0]
 
 

@@ -20,9 +20,9 @@ lives in the same T.
 
 Every routing compares the recorded perception with S's signature where the
 record meets S: a contradiction means the map is wrong.  With a lighthouse of
-explicit place and back-link the map cannot be (Lemma 1, L548, L604): a bug,
+explicit place and back-link the map cannot be (Lemma 1, §3.4): a bug,
 :class:`~topomark.spec.errors.ExplorerFault`; with one that is not explicit
-the thesis predicts it, a wrong loop closing (L1346): the ``failed`` outcome
+the thesis predicts it, a wrong loop closing (§5.2.1): the ``failed`` outcome
 (:func:`~topomark.reference.explorers.inconsistency.inconsistent`).
 """
 
@@ -53,7 +53,7 @@ class Record:
 def _contradiction(S: PartialMap, where: str, far: MapDart, sig: Signature, light,
                    detail: str = "a perception contradicts the map") -> Exception:
     return inconsistent(light, f"Enhancement-3 record at {where}: {detail} (perceived {sig}, the map has "
-                               f"{signature_at(S, far[0], far[1])})", "Lemma 1 (L548, L604)")
+                               f"{signature_at(S, far[0], far[1])})", "Lemma 1 (§3.4)")
 
 
 def _absorb(S: PartialMap, T: dict, stats: Counter, dart: MapDart, node, keep: Callable, light=None) -> None:
@@ -119,5 +119,5 @@ def graft(T: dict, trie: ExecutionTrie, edge: MapDart, light=None) -> int:
         return 0
     if rec.sig != trie.root.sig:
         raise inconsistent(light, f"Enhancement-3 record at T[{edge}]: the recorded perception {rec.sig} "
-                                  f"contradicts the robot's senses, {trie.root.sig}", "Lemma 1 (L548, L604)")
+                                  f"contradicts the robot's senses, {trie.root.sig}", "Lemma 1 (§3.4)")
     return trie.graft(trie.root, rec)

@@ -1,8 +1,8 @@
 """Saving E-markers in the O(m) algorithm with directional markers: extension-1 and extension-2 (Algorithm 6.6)
-(thesis §6.2.2 L1904–L1929, Figures 6.15, 6.16; Table 6.2).
+(thesis §6.2.2, Figures 6.15, 6.16; Table 6.2).
 
 With directional E-markers "one (directed) marked edge is sufficient to
-identify a vertex as well as its edges" (L1908): a unique count names the
+identify a vertex as well as its edges" (§6.2.2): a unique count names the
 edge, its head or tail names which end the robot stands at, its relative exit
 names the entry edge.  So Case 3b's marks are needed only where a place would
 otherwise have none.  Both extensions explore closest-first (the ``nearest``
@@ -10,23 +10,23 @@ edge policy: the robot always takes an unexplored edge of the closest known
 vertex, its own first) and mark an edge e = (v_k, v_u) only if v_k has no
 marked edge yet:
 
-* **extension-1** (:class:`MarkFirstEdges`, L1910): marks e whether it is a loop
+* **extension-1** (:class:`MarkFirstEdges`, §6.2.2): marks e whether it is a loop
   or a non-loop edge, so the decision is known at v_k and the markers are
   dropped in transit (before following e): no extra traversal.  At most
-  Σ_{k=1}^{⌈m/2⌉} k markers (L1910, stated without a derivation; ours: every
+  Σ_{k=1}^{⌈m/2⌉} k markers (§6.2.2, stated without a derivation; ours: every
   marked edge but v0's first has a v_k discovered over a blank edge, distinct
   for each, so at most (m+1)/2 edges are marked — the ceiling holds);
 * **extension-2** (:class:`SavingEdgeCounts`, Algorithm 6.6): marks non-loop edges
   only (line 9–11: "the robot goes back on e, drops i markers on e and back", two
   traversals: a drop trip, purpose ``drop``, :mod:`topomark.reference.run.simulator`); after a loop edge from an unmarked v_k, the
   robot "comes back to v_k" (line 19–20, purpose ``travel``) — decision: only if
-  v_k still has unexplored edges (L1917: "unless v_k has no unexplored edges
-  now").  At most Σ_{k=1}^{⌈(n−1)/2⌉} k markers (L1929; Table 6.2's floors,
-  L2016, are the misprint: a chain of 4 places marks 2 edges, ⌊3/2⌋ = 1).
+  v_k still has unexplored edges (§6.2.2: "unless v_k has no unexplored edges
+  now").  At most Σ_{k=1}^{⌈(n−1)/2⌉} k markers (§6.2.2; Table 6.2's floors
+  are the misprint: a chain of 4 places marks 2 edges, ⌊3/2⌋ = 1).
 
-Decisions, with the thesis lines:
+Decisions, with the thesis references:
 
-* **The marker's head points at v_u** (L1891 and Algorithm 6.6, L1936–L1961,
+* **The marker's head points at v_u** (§6.2.2 and Algorithm 6.6,
   leave it unspecified): the robot drops at v_k on e with its tail at v_k
   (``E-p-T`` there, ``E-p-H`` at v_u), so a sensed ``H`` means "I stand at the end discovered over this edge".
 * Algorithm 6.6 line 5 senses at v_k before line 6 moves there: S already shows
@@ -62,7 +62,7 @@ class SavingEdgeCounts(MarkerWalk):
     """Extension-2, Algorithm 6.6: Σ_{k=1}^{⌈(n−1)/2⌉} k directional E-markers, O(m)."""
 
     name = "extension-2"
-    come_back = True  # rule (3), lines 19-20; False is the naive extension that fails (L1910, Figure 6.15(b)-(c))
+    come_back = True  # rule (3), lines 19-20; False is the naive extension that fails (§6.2.2, Figure 6.15(b)-(c))
 
     def __init__(self, robot, policies=None, observer=None, options=None):
         super().__init__(robot, policies, observer, options)
@@ -115,7 +115,7 @@ class SavingEdgeCounts(MarkerWalk):
 
 
 class MarkFirstEdges(SavingEdgeCounts):
-    """Extension-1: also mark a loop edge whose v_k has no marked edge, in transit; Σ_{k=1}^{⌈m/2⌉} k (L1914)."""
+    """Extension-1: also mark a loop edge whose v_k has no marked edge, in transit; Σ_{k=1}^{⌈m/2⌉} k (§6.2.2)."""
 
     name = "extension-1"
     pending: int | None = None  # the count dropped on e in transit this iteration

@@ -1,4 +1,4 @@
-"""Mapping by carrying an l = ε thread: the thread as a directional movable marker (thesis §6.3.1, L2032–L2036).
+"""Mapping by carrying an l = ε thread: the thread as a directional movable marker (thesis §6.3.1).
 
 "The thread now can be used as a movable directional marker ... we can run
 the single movable marker algorithm described in [26] but with reduced
@@ -7,29 +7,29 @@ at v_u and lays it out toward the entry edge.  The robot then searches S
 looking for the thread.  If the thread is not found, then v_u has not been
 visited before.  If the thread is found tied at some vertex v_k' in S then
 both the place and back-link can be determined immediately due to the
-'directional' thread in the vertex" (L2034).  That is, word for word, the
-directional variant of Dudek et al.'s algorithm (§2.3.1, L177), which
+'directional' thread in the vertex" (§6.3.1).  That is, word for word, the
+directional variant of Dudek et al.'s algorithm (§2.3.1), which
 :class:`~topomark.reference.explorers.movable_marker.DirectionalMovableMarkerExplorer`
 already is.  So this module runs that explorer unchanged over
 :class:`ThreadAsMarker`, a view of the robot in which the ε thread *is* the
-directional movable vertex marker — the thesis's own argument (L2034: "can be
-considered as a generalization of a directional marker", L2026), made
+directional movable vertex marker — the thesis's own argument (§6.3.1: "can be
+considered as a generalization of a directional marker", §6.3.1), made
 executable:
 
 * dropping the marker pointing at relative exit ``p`` is tying the thread
   here laid out toward ``p`` (``tie`` with direction ``p``) and leaving its
   free end here (``leave``: an l = ε thread cannot be laid along an edge, so
-  the robot lets go of it before it moves on, L2028);
+  the robot lets go of it before it moves on, §6.3.1);
 * picking the marker up is untying the thread (``untie``; nothing is laid);
 * a vertex where the thread is tied toward relative exit ``p`` (``T-p`` in
   :mod:`topomark.spec.signature`) is sensed as ``V-p``; anything else as
   unmarked (the free end ``F`` lying with the tie adds nothing).
 
 Every decision of the movable marker explorer carries over (how the robot
-returns after a tie: back over e, L162; which known vertices are searched;
+returns after a tie: back over e, §2.3.1; which known vertices are searched;
 the thread is untied at the end of every step, so between steps the world
 carries no thread and S shows none): see its module docstring.  Cost O(mn)
-(L2036: "the robot may have to visit each vertex in S in order to validate
+(§6.3.1: "the robot may have to visit each vertex in S in order to validate
 an edge"); the registry states our exact bound, the directional variant's.
 
 Examples
@@ -52,7 +52,7 @@ __all__ = ["ThreadAsMarker", "CarriedThreadExplorer"]
 
 
 class ThreadAsMarker:
-    """The robot with its l = ε thread seen as one directional movable vertex marker (L2032–L2034)."""
+    """The robot with its l = ε thread seen as one directional movable vertex marker (§6.3.1)."""
 
     __slots__ = ("_robot",)
 
@@ -85,7 +85,7 @@ class ThreadAsMarker:
 
 
 class CarriedThreadExplorer(DirectionalMovableMarkerExplorer):
-    """§6.3.1's carried l = ε thread (L2032–L2036): the directional movable marker algorithm over
+    """§6.3.1's carried l = ε thread: the directional movable marker algorithm over
     :class:`ThreadAsMarker`."""
 
     name = "thread-carried"

@@ -1,12 +1,12 @@
 """Mapping with a thread laid closest-first: Algorithm 6.7 (l = c(G)) and Algorithm 6.8 (l < c(G),
-explore-explore) (thesis §6.3.2–6.3.3, L2038–L2141, Figures 6.19, 6.21).
+explore-explore) (thesis §6.3.2–6.3.3, Figures 6.19, 6.21).
 
 The robot ties the thread at v_s (first v0) and lays it along every edge it
 explores, holding the free end, so the thread is a simple path of S from v_s
 to the robot — a depth-first stack: each step explores an unexplored edge of
-the vertex where the thread ends (the closest one, L2046), and "the robot
+the vertex where the thread ends (the closest one, §6.3.2), and "the robot
 retraces its steps along the thread by picking up and rewinding the thread"
-after a loop edge or when the current place is fully explored (L2046,
+after a loop edge or when the current place is fully explored (§6.3.2,
 Algorithm 6.7 lines 8–9 and 14).  At v_u (Algorithm 6.8 lines 6–15):
 
 * **the thread lay here already** (more than e is sensed: ``T`` or a second
@@ -15,27 +15,27 @@ Algorithm 6.7 lines 8–9 and 14).  At v_u (Algorithm 6.8 lines 6–15):
   degree and open exit j whose marks, read from j with e added at j, are the
   ones sensed is a hypothesis (w, j).  **Ours**: one hypothesis needs no
   motion.  Otherwise "the robot searches back along the thread looking for
-  the vertex that has one more marked edge" (line 7, L2050): it leaves the
+  the vertex that has one more marked edge" (line 7, §6.3.2): it leaves the
   free end at v_u, goes back over e to v_k and walks the thread back toward
   v_s; the vertex with one more thread-marked edge than its record is v_k' =
   v_u, that edge is e'.  There it takes the free end and rewinds e to v_k
-  (ours: lines 11–12 of Algorithm 6.7, L2070–L2071, do not say where the free
+  (ours: lines 11–12 of Algorithm 6.7, do not say where the free
   end waits; rewinding e before v_k' is found would lose the mark).
 * **no thread** — in Algorithm 6.7 v_u is new (every visited vertex that is
-  not fully explored lies on the thread, L2046).  In Algorithm 6.8 v_u may be
-  a visited vertex the robot rewound from when l was reached (L2096): line 11
+  not fully explored lies on the thread, §6.3.2).  In Algorithm 6.8 v_u may be
+  a visited vertex the robot rewound from when l was reached (§6.3.3): line 11
   searches "non-thread vertices on S that has unexplored edges and has the
   same degree as v_u, looking for the vertex containing the thread's free
   end" (the candidates of the movable marker explorer, minus the thread's
   vertices, visited in the same order), leaving the free end at v_u.  Found
   at v_k': the thread's one edge there is e'; take the end, rewind e.  Not
   found: v_u is new; walk back to v_k, cross e and take the end (ours: line 11,
-  L2126–L2127, does not say how the robot gets back to the free end).
+  Algorithm 6.8, does not say how the robot gets back to the free end).
 
 After the step (lines 16–21) the robot rewinds until it stands at a vertex
 that is not fully explored and the thread is shorter than l; when it reaches
 v_s fully explored, it unties the thread there, walks S to the closest not
-fully explored (frontier) vertex (**ours**: the choice is open, L2096) and
+fully explored (frontier) vertex (**ours**: the choice is open, §6.3.3) and
 ties the thread again there (line 21).  When U is empty the thread is all
 rewound and untied, so the final world carries no thread and S shows none.
 Between steps S shows the thread where it lies (``show_thread``: the robot
@@ -45,16 +45,16 @@ the checker compares that with the world after every step).
 Decisions where the thesis is silent:
 
 * **Algorithm 6.7 and the length.** The robot of Algorithm 6.7 is only
-  "assured" that it does not run out (L2044); it is given no length and
+  "assured" that it does not run out (§6.3.2); it is given no length and
   never rewinds because of one.  Told a length (option ``thread-length``),
-  it knows when l is reached (L2096, ``spec.thread``'s decision) and stops
+  it knows when l is reached (§6.3.3, ``spec.thread``'s decision) and stops
   with the failed outcome "out of thread" instead of laying beyond it —
   Algorithm 6.7 has no rule for that case.
 * **Which edge.** "A closest edge" (line 4) is, with the robot at the
   thread's end, an unexplored exit of the current vertex (distance 0); the
   lowest-numbered one.
 * The robot never needs to be told n or m; the ``edge`` policy does not apply (closest-first is the
-  algorithm, L2046).
+  algorithm, §6.3.2).
 
 Cost purposes: ``new`` (over e), ``retrace`` (back over e, every rewind),
 ``validation`` (the searches), ``other`` (back to v_u for the free end),
@@ -113,7 +113,7 @@ class ThreadWalker(MapWalker):
 
     name = "thread"
     loop_check = "thread loop"
-    loop_proof = "the thread's closest-first validation (§6.3.2, L2046, L2055)"
+    loop_proof = "the thread's closest-first validation (§6.3.2)"
 
     def __init__(self, robot, policies: Policies | None = None,
                  observer: Callable[[object, ThreadIteration], None] | None = None, options: dict | None = None):
@@ -191,7 +191,7 @@ class ThreadWalker(MapWalker):
         if not self.can_lay():
             raise AlgorithmFailed(f"out of thread: the thread's {self.length} edges are all laid, from map vertex "
                                   f"{self.tied} to map vertex {self.position[0]}, and this algorithm has no rule for "
-                                  "running out (Algorithm 6.7 assumes l = c(G) suffices, L2044)")
+                                  "running out (Algorithm 6.7 assumes l = c(G) suffices, §6.3.2)")
         sig = self.take_exit(exit_, purpose)
         self.laid.append((self.position[0], exit_))
         return sig
@@ -223,7 +223,7 @@ def _sensed_edges(sig: Signature, entry: int) -> Counter:
 
 
 class ThreadExplorer(ThreadWalker):
-    """Algorithm 6.8, explore-explore (§6.3.3, L2096–L2141), with a thread of ``thread-length`` edges."""
+    """Algorithm 6.8, explore-explore (§6.3.3), with a thread of ``thread-length`` edges."""
 
     name = "thread-explore"
     retie = True
@@ -273,9 +273,9 @@ class ThreadExplorer(ThreadWalker):
                 break
         if found is None:
             # v_u entered a thread-marked place, so it is on the thread, "the one that has one more thread-marked
-            # edge than it should have" (§6.3.2, L2055): not finding it is a bug, not an outcome.
+            # edge than it should have" (§6.3.2): not finding it is a bug, not an outcome.
             raise ExplorerFault(f"thread search: no vertex on the thread has one more thread-marked edge at "
-                                f"iteration {it.number}, which L2055 rules out: a bug in the explorer")
+                                f"iteration {it.number}, which §6.3.2 rules out: a bug in the explorer")
         self.take()
         self.rewind()
         self.loop_augment(it, found)
@@ -328,9 +328,9 @@ class ThreadExplorer(ThreadWalker):
                 return
             if not self.retie:
                 # "the closest-first exploration ensures that each visited vertex that is not fully explored yet
-                # has been marked with the thread" (Algorithm 6.7, L2046): a vertex off it is a bug.
+                # has been marked with the thread" (Algorithm 6.7, §6.3.2): a vertex off it is a bug.
                 raise ExplorerFault("thread stack: a vertex not fully explored is off the thread, which Algorithm 6.7 "
-                                    "rules out (L2046): a bug in the explorer")
+                                    "rules out (§6.3.2): a bug in the explorer")
             dist = bfs(self.S, self.position[0])[0]
             frontier = min((v for v in dist if self.open_exit(v) is not None), key=lambda v: (dist[v], v))
             self.walk_to(frontier, "travel")
@@ -339,7 +339,7 @@ class ThreadExplorer(ThreadWalker):
 
 
 class CircumferenceThreadExplorer(ThreadExplorer):
-    """Algorithm 6.7 (§6.3.2, L2038–L2075): never retied; v_u without thread is new; stops "out of thread"
+    """Algorithm 6.7 (§6.3.2): never retied; v_u without thread is new; stops "out of thread"
     if told a length it reaches."""
 
     name = "thread-circumference"

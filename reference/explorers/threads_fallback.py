@@ -1,12 +1,12 @@
-"""Exploring with a thread of arbitrary length by the phase-I/phase-II fallback (thesis §6.3.3, L2088–L2092).
+"""Exploring with a thread of arbitrary length by the phase-I/phase-II fallback (thesis §6.3.3).
 
 "One possible approach is that, as in the arbitrary k markers algorithm, the
 robot uses thread to do validations when it possesses thread (phase-I), and
 when it runs out of thread (phase-II), it applies the hypothesis-based
 traversal strategy developed for the single immovable marker algorithm.  This
-approach has an O(m²n) cost bound" (L2090–L2092).
+approach has an O(m²n) cost bound" (§6.3.3).
 
-* **Phase I** is Algorithm 6.7 (§6.3.2, L2046–L2075;
+* **Phase I** is Algorithm 6.7 (§6.3.2;
   :class:`~topomark.reference.explorers.threads_explore.CircumferenceThreadExplorer`):
   the thread is tied at v0 and laid closest-first, rewound after a loop edge
   or at a fully explored place; a place without thread is new, a place with
@@ -15,28 +15,28 @@ approach has an O(m²n) cost bound" (L2090–L2092).
   edge and all l edges of its thread are laid.  It leaves the free end there:
   from then on the thread is an immovable mark, tied at v0 and laid along a
   simple path of S (the thread's marks are in S, the robot laid them).  The
-  rest is Algorithm 3.1 (§3.3, L498–L552;
+  rest is Algorithm 3.1 (§3.3, §3.4;
   :func:`~topomark.reference.explorers.algorithm31.validate_in_turn`) with v0
   as its lighthouse: every unexplored dart e' whose known end, entered by it,
   shows v_u's signature — thread marks included — is a hypothesis, tested by
   walking S's path from v_k' to v0 and comparing every perception.
 
-Decisions where the thesis is silent (L2090 gives the approach in one sentence):
+Decisions where the thesis is silent (§6.3.3 gives the approach in one sentence):
 
 * **Which phase-I algorithm.**  Algorithm 6.7, the thread algorithm that never
   reties: the text falls back once, "when it runs out of thread", and
   "assuming that the robot can pick up the thread and tie it again" is what
-  the two O(mn) approaches add (L2092), so the fallback does not retie.
+  the two O(mn) approaches add (§6.3.3), so the fallback does not retie.
 * **Running out** is all l edges laid with an unexplored edge at the robot's
-  place: the robot knows l (L2096).  A loop step never runs out, for
+  place: the robot knows l (§6.3.3).  A loop step never runs out, for
   Algorithm 6.7 rewinds before it explores again.
 * **The lighthouse.**  "The hypothesis-based traversal strategy developed for
   the single immovable marker algorithm" needs a place that gives place and
   back-link: v0, the only place where the thread is tied, with exactly one
   thread-marked edge (the thread is a simple path there, l ≥ 1), so each of
-  its entries reads differently — a directional lighthouse (§3.3, L1470).
+  its entries reads differently — a directional lighthouse (§3.3, §6.1).
 * **The thread stays laid** when U is empty, as Case 5's markers stay where
-  they were dropped (L1720): phase II may not move it, and the final map
+  they were dropped: phase II may not move it, and the final map
   shows it where it lies.
 * Phase II takes Algorithm 3.1's policies (``--policy edge|hypothesis|path``;
   by default the closest edge, hypotheses in U's order, a breadth-first tree
@@ -86,7 +86,7 @@ class FallbackThreadExplorer(CircumferenceThreadExplorer):
 
     name = "thread-fallback"
     loop_check = "thread fallback loop"
-    loop_proof = "the thread's validation (phase I, L2055) or the tied v0 as lighthouse (phase II, §3.4 Lemma 1)"
+    loop_proof = "the thread's validation (phase I, §6.3.2) or the tied v0 as lighthouse (phase II, §3.4 Lemma 1)"
     hypothesis_type = Hypothesis
     iteration_type = FallbackIteration  # phase I's steps too, recorded with phase 1
     # Algorithm 3.1's H over S and its path to v0 (lines 8, 11–12)

@@ -1,4 +1,4 @@
-"""Mapping with a very long thread and knots, l ≫ m (thesis §6.3.2, L2077–L2086, Figure 6.20): O(m).
+"""Mapping with a very long thread and knots, l ≫ m (thesis §6.3.2, Figure 6.20): O(m).
 
 "With a l ≫ m thread, which guarantees that the robot does not run out of
 thread during exploration, the robot plays out the thread as it explores,
@@ -7,8 +7,8 @@ unknown place v_u it visits ... Thus place validation for v_u is never
 needed, but when entering a thread-marked (visited) vertex v_k' the robot
 may still need to conduct back-link validation ... the robot can just
 traverse any one of thread marked edges to the other end vertex, which must
-be a known neighbor that is identified by its unique knot count" (L2079,
-L2086).  Figure 6.20: "Explore in a closest-first manner. Play the thread out
+be a known neighbor that is identified by its unique knot count" (§6.3.2).
+Figure 6.20: "Explore in a closest-first manner. Play the thread out
 as it explores. Tie different number of knots when entering a new place the
 first time ... Rewinds the thread only when the current place is fully
 explored".
@@ -22,7 +22,7 @@ At v_u:
 * **no knot** — a new place (non-loop augmentation), knots tied;
 * **c knots** — known vertex c − 1 = v_k'.  If v_k' has one unexplored exit,
   it is e' (**ours**: no motion needed, as in the movable marker explorer).
-  Otherwise the back-link validation of L2086: follow the lowest thread-marked
+  Otherwise the back-link validation of §6.3.2: follow the lowest thread-marked
   exit other than e (relative p), which lays the thread along it; the knots
   at its far end name the known neighbour w, whose exit back to v_k' is
   known in S, so the edge's exit x at v_k' is known and e' = x − p; rewind back.
@@ -33,7 +33,7 @@ Decisions (the thesis gives no listing):
   most the n − 1 tree edges and m − n + 1 loop edges, plus one probe edge —
   so m + 1 edges never run out; the kit is given exactly that and the
   simulator refuses more, so the claim is checked on every run.
-* **Knots survive** where needed (Figure 6.20, L2084: "Rewinds the thread only
+* **Knots survive** where needed (Figure 6.20: "Rewinds the thread only
   when the current place is fully explored"): a vertex's knots are
   tied at its first position on the walk and picked up only by rewinding out
   of that position, which happens only when it is fully explored; a loop edge
@@ -63,7 +63,7 @@ __all__ = ["KnotThreadExplorer"]
 
 
 class KnotThreadExplorer(ThreadWalker):
-    """The l ≫ m thread with knots (§6.3.2, L2077–L2086, Figure 6.20)."""
+    """The l ≫ m thread with knots (§6.3.2, Figure 6.20)."""
 
     name = "thread-knots"
 
@@ -102,12 +102,12 @@ class KnotThreadExplorer(ThreadWalker):
     def check_knots(self, it: ThreadIteration, w: int, sig: Signature) -> None:
         if not (0 <= w < self.S.n and self.S.degree(w) == sig.degree and self.open_exit(w) is not None):
             # Each visited place carries its own knot count and every place not fully explored stays on the
-            # thread (§6.3.2, L2046, L2086): knots that name no such place are a bug, not an outcome.
+            # thread (§6.3.2): knots that name no such place are a bug, not an outcome.
             raise ExplorerFault(f"thread knots: {sig} at iteration {it.number} names no known vertex that is not "
-                                "fully explored, which the knots rule out (§6.3.2, L2086): a bug in the explorer")
+                                "fully explored, which the knots rule out (§6.3.2): a bug in the explorer")
 
     def probe(self, it: ThreadIteration, w: int, sig: Signature) -> int:
-        """L2086: over the lowest thread-marked exit p ≠ e to a known neighbour (its knots say which) and back;
+        """§6.3.2: over the lowest thread-marked exit p ≠ e to a known neighbour (its knots say which) and back;
         returns e' (absolute exit of w); the robot ends at w entered by that probed edge."""
         p = min(x for x, _ in cast(ThreadMark, sig.thread).edges if x != 0)  # the thread lies at w
         seen = self.robot.move(p, "probe")
@@ -115,9 +115,9 @@ class KnotThreadExplorer(ThreadWalker):
         back = [y for y, link in enumerate(self.S.links(t)) if link is not None and link[0] == w] if t >= 0 else []
         if len(back) != 1:
             # "the other end vertex, which must be a known neighbor that is identified by its unique knot count"
-            # (L2086): anything else is a bug, not an outcome.
+            # (§6.3.2): anything else is a bug, not an outcome.
             raise ExplorerFault(f"thread probe: {seen} at iteration {it.number} is no known neighbour of map vertex "
-                                f"{w} by its knots, which L2086 rules out: a bug in the explorer")
+                                f"{w} by its knots, which §6.3.2 rules out: a bug in the explorer")
         x = self.S.target((t, back[0]))[1]  # the probed edge's exit at w
         self.laid.append((w, x))
         self.position = (t, back[0])

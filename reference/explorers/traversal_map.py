@@ -1,11 +1,11 @@
-"""The traversal map TM of Algorithm 5.1, walked breadth-first (thesis §5.2.2, L1356; Algorithm 5.1 lines 1–2).
+"""The traversal map TM of Algorithm 5.1, walked breadth-first (thesis §5.2.2; Algorithm 5.1 lines 1–2).
 
 "Initially TM contains the starting location, but it grows with a new edge
 and a vertex in each step … each newly explored edge and end vertex … are
 always treated as new places and are added into the traversal map TM
 (non-loop augmentation). In each step, according to a BFS on TM, the robot
 traverses to a frontier vertex on TM and then explores an 'unexplored' edge
-of the frontier" (L1356).  TM is therefore a tree: the breadth-first
+of the frontier" (§5.2.2).  TM is therefore a tree: the breadth-first
 unfolding of the world from the start, every path in it physically walkable.
 
 Decision (the thesis is silent on the order within BFS): TM vertices are
@@ -62,8 +62,8 @@ class TraversalMap:
     def add(self, v: int, exit_: int, degree: int) -> int:
         """Non-loop augmentation of TM (Algorithm 5.1 line 2): exit ``exit_`` of ``v`` leads to a new vertex of
         ``degree``, entered by its exit 0."""
-        if (v, exit_) != self.frontier():  # the BFS of L1356 is the explorer's own order: another is a bug
-            raise ExplorerFault(f"TM grows in breadth-first order only (L1356), not by {(v, exit_)}: a bug in the "
+        if (v, exit_) != self.frontier():  # the BFS of §5.2.2 is the explorer's own order: another is a bug
+            raise ExplorerFault(f"TM grows in breadth-first order only (§5.2.2), not by {(v, exit_)}: a bug in the "
                                 "explorer")
         new = self.n
         self.degree.append(degree)

@@ -21,7 +21,7 @@ is the same:
   walking S along a breadth-first tree (:func:`tree_path`,
   :meth:`MapWalker.walk`), and the two augmentations;
 * :func:`places_like` — the known vertices that could be v_u by degree
-  alone (Dudek et al.'s place validation, L148, and the thread's search of
+  alone (Dudek et al.'s place validation, §2.3.1, and the thread's search of
   §6.3.3 line 11).
 
 Algorithm 5.1's model tree keeps several models and walks a traversal map,
@@ -62,7 +62,7 @@ def tree_path(parent: dict[int, MapDart], root: int, target: int) -> list[MapDar
 
 def places_like(S: PartialMap, vk: int, degree: int) -> list[int]:
     """The known vertices that could be v_u, reached from v_k by an unexplored edge: ``degree`` exits, one of
-    them unexplored, neither v_k nor a neighbour of v_k (no self-loops, no multi-edges, L374), in the preorder
+    them unexplored, neither v_k nor a neighbour of v_k (no self-loops, no multi-edges, §3.1.1), in the preorder
     of a breadth-first tree of S rooted at v_k."""
     return in_preorder(S, vk, {v for v in open_ends_beyond(S, vk) if S.degree(v) == degree})
 
@@ -112,7 +112,7 @@ class MapWalker(ExplorerState):
     """One map S walked by the robot: start, termination, walking S, loop and non-loop augmentation."""
 
     loop_check = "loop augmentation"  # the check a loop augmentation that finds e' outside U names
-    loop_proof = "Lemma 1 (L548, L604)"  # what proves e' is in U (:meth:`not_in_u`)
+    loop_proof = "Lemma 1 (§3.4)"  # what proves e' is in U (:meth:`not_in_u`)
 
     def __init__(self, robot, policies: Policies | None = None, observer: Callable | None = None):
         super().__init__(robot, observer)
@@ -184,20 +184,20 @@ class MapWalker(ExplorerState):
         """What a loop augmentation raises when e' is not in U: the explorer's own map is inconsistent.
 
         With a lighthouse of explicit place and back-link an accepted hypothesis is the true place and entry
-        (§3.4: Lemma 1, L548; L604), and Dudek's marker always leads back (L150): a bug.  With a lighthouse
-        that is not explicit the thesis predicts it, a wrong loop closing (L1346): the ``failed`` outcome.
+        (§3.4: Lemma 1), and Dudek's marker always leads back (§2.3.1): a bug.  With a lighthouse
+        that is not explicit the thesis predicts it, a wrong loop closing (§5.2.1): the ``failed`` outcome.
         """
         return inconsistent(getattr(self, "lighthouse", None), f"{self.loop_check}: e' = {far} identified at "
                             f"iteration {it.number} is not in U", self.loop_proof)
 
     def degenerate(self, it, far: MapDart) -> Exception:
         """What a loop augmentation raises when e/e' would be a self-loop or a second edge between two places:
-        no world has one (cycles of length ≤ 2 are excluded, §3.1.1, L374), so the explorer's own map is
+        no world has one (cycles of length ≤ 2 are excluded, §3.1.1), so the explorer's own map is
         inconsistent — a bug under an explicit lighthouse, a wrong loop closing the thesis predicts under one
-        that is not (L1346)."""
+        that is not (§5.2.1)."""
         kind = "a self-loop" if far[0] == it.edge[0] else "a second edge between two places"
         return inconsistent(getattr(self, "lighthouse", None), f"{self.loop_check}: joining e = {it.edge} to e' = "
-                            f"{far} at iteration {it.number} would make {kind}, which no world has (L374)",
+                            f"{far} at iteration {it.number} would make {kind}, which no world has (§3.1.1)",
                             self.loop_proof)
 
     def non_loop_augment(self, it, sig: Signature, heading: int = 0, sensed: bool = False) -> int:

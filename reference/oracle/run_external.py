@@ -86,7 +86,7 @@ class Limits:
     """Traversal, operation and time limits; ``max_traversals`` None means 4 × the (3.1)+(3.2) bound, at least
     1000; ``max_operations`` None means 2 × the traversal limit, at least 1000.
 
-    Marker and thread operations are not traversals (§3.1.2, L399: only edge traversals are the cost), so a program
+    Marker and thread operations are not traversals (§3.1.2: only edge traversals are the cost), so a program
     could drop and pick up a marker forever at no cost; the operation cap ends such a run with reason ``limit``.
     """
 

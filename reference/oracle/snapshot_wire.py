@@ -24,7 +24,7 @@ naming the field, never anything else.
 
 A vertex listed twice in ``S.marks`` (vertex marks) is not malformed but
 wrong: a world vertex's markers are one entry with a count
-(``spec/world.py``), so no world vertex matches it and I-1 (L595: S is
+(``spec/world.py``), so no world vertex matches it and I-1 (§3.4: S is
 isomorphic to the explored subgraph, markers included) fails; it raises a
 :class:`~topomark.spec.errors.CheckFailure` whose violation is ``I-1``.
 """

@@ -210,7 +210,7 @@ class Checker:
             return None
         counted = f"{cost}" + (f" ({sim.cost} less {skipped} {' and '.join(spec.bound_excludes)} moves)"
                                if skipped else "")
-        return Violation("cost bound", "edge traversals (§3.1.2, L399)",
+        return Violation("cost bound", "edge traversals (§3.1.2)",
                          f"at most {bound} = {spec.bound_formula}, at n = {world.n}, m = {world.m}", counted)
 
 

@@ -185,14 +185,14 @@ class _WrongJoins:
     """A wrong loop closing under a lighthouse that is not explicit (§5.2.1): the thesis predicts it, and says
     what the algorithm then does — it "either detects some signature inconsistencies (due to wrong loop closing)
     and thus cannot proceed reporting failure, or, never terminates (when every newly visited place is always
-    validated as a new place), or terminates with an incorrect world model" (L1346).
+    validated as a new place), or terminates with an incorrect world model" (§5.2.1).
 
     So under such a lighthouse the checker's first violation after an iteration does not stop the run: it is
     kept, the per-iteration checks stop, and the algorithm runs on to its own end, which the outcome reports —
     ``failed`` (the reason names the iteration where the map went wrong), ``wrong-map`` (the first violation),
     or, once the believed map has more places or edges than the world (it can then never become the world, and
     every new place is being taken for a new one), ``limit``.  A checked run and an unchecked one end alike.
-    Under an explicit lighthouse the first violation stops the run: Lemma 1 says it cannot happen (L548)."""
+    Under an explicit lighthouse the first violation stops the run: Lemma 1 says it cannot happen."""
 
     def __init__(self, world: World, light: Lighthouse | None):
         self.world, self.deferred = world, light is not None and not light.certain
@@ -211,7 +211,7 @@ class _WrongJoins:
         if self.deferred and S is not None and (S.n > self.world.n or S.edge_count > self.world.m):
             raise LimitReached(f"the believed map has outgrown the world ({S.n} places, {S.edge_count} edges; the "
                                f"world has {self.world.n} and {self.world.m}): every new place is taken for a new "
-                               "one, and the algorithm would never terminate (§5.2.1, L1346)")
+                               "one, and the algorithm would never terminate (§5.2.1)")
 
     def verdict(self, violation, stopped):
         """The run's violation and stop, the first deferred violation named."""

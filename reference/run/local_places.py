@@ -1,4 +1,4 @@
-"""The truth about a marker-less lighthouse (thesis §5.2.1, L1344–L1346): is the place it chose unique?
+"""The truth about a marker-less lighthouse (thesis §5.2.1): is the place it chose unique?
 
 A §5.2.1 lighthouse (:mod:`~topomark.reference.explorers.local_lighthouses`)
 is recognised by its local signature only, so the map it gives is
@@ -7,14 +7,14 @@ entry of it in the world — then the virtual lighthouse is a directional
 lighthouse and Algorithm 3.1's correctness (§3.4) applies.  The thesis says
 neither scheme can guarantee it: "This approach cannot guarantee the
 uniqueness of the place information as well as the back-link information"
-(scheme A, L1344); "can guarantee the explicitness of back-link information
+(scheme A, §5.2.1); "can guarantee the explicitness of back-link information
 … but cannot guarantee the uniqueness of the lighthouse itself" (scheme B,
-L1346).
+§5.2.1).
 
 This module sees the world; explorers never import it (tests/test_wall.py).
 Tests and benchmarks use :func:`unique_place` to tell a run whose
 precondition held (it must be ``correct``) from one where it did not (any of
-``correct``, ``wrong-map``, ``failed``: L1346).
+``correct``, ``wrong-map``, ``failed``: §5.2.1).
 
 * ``local-pair``: v0 (degree a) entered from its exit 0, whose far end has
   degree b.  The precondition: v0 is the only vertex of degree a with a

@@ -7,36 +7,36 @@ true state after every motion so the checker can compare the explorer's
 beliefs with the truth.
 Explorers only ever receive :meth:`Simulator.robot`.
 
-Cost and marker accounting — one rule for every algorithm (§3.1.2, L399; §6.2):
+Cost and marker accounting — one rule for every algorithm (§3.1.2; §6.2):
 
 * **The cost is every edge traversal**, whatever it was for: "the number of
-  edge traversals by the robot" (L399).  Marker and thread operations cost
+  edge traversals by the robot" (§3.1.2).  Marker and thread operations cost
   nothing and are counted apart (:attr:`Simulator.operations`).
 * **The robot drops and picks up only where it stands**: a vertex marker at
   its vertex, an edge marker on an edge at its vertex, which it senses from
-  either end (L1448).  :meth:`Simulator.operate` acts on the true state, so no
+  either end (§6.1).  :meth:`Simulator.operate` acts on the true state, so no
   explorer can drop anywhere else.
 * **A drop trip** is a walk made only to carry markers to where they are
   dropped, and back: the moves tagged ``drop``.  They are part of the cost and
   are also counted on their own (:attr:`Simulator.drop_trips`), so a report
   can show the cost with and without them.  Each algorithm walks as its thesis
   text describes: Case 3b "goes back to (non-loop) edge e, dropping a unique
-  number of markers on e" (L1629) and extension-2 "goes back on e, drops i
-  markers on e and back" (Algorithm 6.6 line 10, L1950): two per marked edge;
-  the movable marker "drops the marker at v_k and goes back to v_k'" (L150);
+  number of markers on e" and extension-2 "goes back on e, drops i
+  markers on e and back" (Algorithm 6.6 line 10): two per marked edge;
+  the movable marker "drops the marker at v_k and goes back to v_k'" (§2.3.1);
   the three-undirected-vertex lighthouse walks to the neighbour it marks and
-  back (Figure 3.21(b), L881).  Every other drop is made where the robot
-  already is — in transit on e (L1497; Algorithm 6.1 line 10, Algorithm 6.3
-  lines 6 and 17; extension-1), or at v_u on v_u or on e (Algorithm 6.1 line 7,
-  L1540; Algorithm 6.2 line 12, L1594; L1902; Algorithms 6.4–6.5) — and makes
+  back (Figure 3.21(b)).  Every other drop is made where the robot
+  already is — in transit on e (§6.2.1 Case 1a; Algorithm 6.1 line 10, Algorithm 6.3
+  lines 6 and 17; extension-1), or at v_u on v_u or on e (Algorithm 6.1 line 7;
+  Algorithm 6.2 line 12, §6.2.2; Algorithms 6.4–6.5) — and makes
   no drop trip.
 * **Decision (what the §6.2 findings compare).**  Case 3b's and extension-2's
   trips are not forced by their markers: at v_u the robot stands at an end of
-  e and could drop on e there, as Algorithm 6.1 line 7 (L1540) does in the
+  e and could drop on e there, as Algorithm 6.1 line 7 does in the
   same place.  The thesis's O(m) argument counts no motion for marking
   ("Physical motion for both place and back-link validations is avoided",
-  L1629) and its finding that Case 3b costs "very close to the optimal cost
-  m" (L1822) holds only without them.  So the findings that compare these
+  §6.2.1 Case 3b) and its finding that Case 3b costs "very close to the optimal cost
+  m" (§6.2.1) holds only without them.  So the findings that compare these
   costs with m or with each other compare the cost without drop trips, and
   show the full cost beside it.
 """

@@ -131,7 +131,7 @@ def wheel_hub_last(n: int) -> World:
     n − 1 = d_max.  Rim vertex i lists (i + 1, hub, i − 1) clockwise, so exit 0 leads on along the rim and,
     entered from i − 1, the next rim vertex comes before the spoke: the ``nearest`` edge policy (§3.3) walks
     the whole rim before its first spoke, and the hub is the n-th new place.  That is where §6.2's Σ_{k=1}^{n−1} k
-    algorithms run out of markers and leave the place blank (Algorithm 6.2 lines 14–16, L1575): a blank of
+    algorithms run out of markers and leave the place blank (Algorithm 6.2 lines 14–16, §6.2.1 Case 3a): a blank of
     degree d_max, the worst place for the blank.  The hub lists the rim in ascending order: the embedding is
     planar.
 

@@ -1,9 +1,9 @@
 """Worlds rebuilt from the captions and text of the thesis's figures whose drawings are lost: the worlds
-where the failing marker savings of §6.2 fail (Figure 6.10, L1704–L1706; Figure 6.15, L1910–L1915).
+where the failing marker savings of §6.2 fail (Figure 6.10, §6.2.1 Case 4; Figure 6.15, §6.2.2).
 
 * ``figure-6.10`` (:func:`figure_6_10`): Figure 6.10(b)'s caption has the robot
   enter "v_k' (node 2) and its neighbor (node 1)", both showing the signature
-  ``[3,A,E1-1]`` (L1704): two places of degree 3 joined by the edge carrying
+  ``[3,A,E1-1]`` (Figure 6.10): two places of degree 3 joined by the edge carrying
   one marker, their only marked edge.  The complete graph K_4 (every place of
   degree 3) embedded in the plane, the robot at ``"0"`` facing ``"1"``, is the
   smallest world where it happens: the first edge, from the unmarked v0, gets the one marker; its
@@ -12,7 +12,7 @@ where the failing marker savings of §6.2 fail (Figure 6.10, L1704–L1706; Figu
   is the one to its neighbour, which shows the same signature from its own
   unexplored edge.  (K_4 embedded on the circle, as ``complete:n=4``, leads the
   robot elsewhere: there the variant maps a place it left unmarked as new.)
-* ``figure-6.15`` (:func:`figure_6_15`): Figure 6.15(b)–(c) (L1910, L1915): a
+* ``figure-6.15`` (:func:`figure_6_15`): Figure 6.15(b)–(c) (§6.2.2): a
   loop edge explored from a v_k that has no marked edge yet, then
   closest-first from v_k', "leaving v_k unmarked"; a later entry into v_k
   senses no marked edge.  K_4 without the edge ``"0"``–``"1"``, the robot at

@@ -1,6 +1,6 @@
 """The worst worlds found: the exhaustive and adversarial argmax worlds of ``topomark worst-case`` (thesis §7.2).
 
-The thesis asks (§7.2, L2260–L2262) whether the worst cases of its bounds
+The thesis asks (§7.2) whether the worst cases of its bounds
 exist and on which worlds.  ``topomark worst-case`` answers it for small sizes
 exactly and past them by search; the worlds it found are kept here, with the
 start the worst run began from, as stress cases: the conformance suites run

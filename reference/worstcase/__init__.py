@@ -1,6 +1,6 @@
 """The worst cost of an algorithm: exhaustive over every small world, adversarial past them (thesis §7.2).
 
-The thesis closes (§7.2, L2260–L2262) with an open question: its O(m²n) bound
+The thesis closes (§7.2) with an open question: its O(m²n) bound
 for Algorithm 3.1 "is quite loose", and it asks whether the worst cases exist,
 on which classes of graphs, and for tighter bounds in terms of diameter and
 maximum degree.  This package answers it by measurement:

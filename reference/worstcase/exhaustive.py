@@ -1,7 +1,7 @@
-"""Every run on every small world: the exhaustive worst case of an algorithm's cost (thesis §7.2, L2260–L2262).
+"""Every run on every small world: the exhaustive worst case of an algorithm's cost (thesis §7.2).
 
 The thesis bounds the cost of Algorithm 3.1 by (3.1) + (3.2) = O(m²n)
-(§3.5.2, L630–L640) and calls the bound "quite loose" (§7.2, L2260).  Over
+(§3.5.2) and calls the bound "quite loose" (§7.2).  Over
 every embedded world with n ≤ N vertices and degrees ≤ D — one per
 extended-isomorphism class, from the census's enumeration
 (:func:`topomark.proofs.census_map.unit_worlds`) — and every start, this

@@ -1,7 +1,7 @@
-"""How the worst cost found grows: least-squares exponents on log-log axes (thesis §7.2, L2260–L2262).
+"""How the worst cost found grows: least-squares exponents on log-log axes (thesis §7.2).
 
-§7.2 asks whether the O(m²n) bound of Algorithm 3.1 is tight (L2260) and suggests bounds in terms of the
-diameter and the maximum degree as well as m and n (L2262).  Given the worst worlds found at several sizes,
+§7.2 asks whether the O(m²n) bound of Algorithm 3.1 is tight and suggests bounds in terms of the
+diameter and the maximum degree as well as m and n (§7.2).  Given the worst worlds found at several sizes,
 :func:`fit_exponents` measures the growth: for each of m, n, the diameter and the maximum degree, the slope
 of log(cost) against log(x) (``numpy.polyfit``, degree 1) with its R², and the two-factor fit
 cost ≈ c·m^a·n^b (``numpy.linalg.lstsq`` on [1, log m, log n]).  A factor with fewer than two distinct values

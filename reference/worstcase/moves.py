@@ -1,7 +1,7 @@
-"""The candidates of the adversarial worst-case search and their moves (thesis §7.2, L2260–L2262).
+"""The candidates of the adversarial worst-case search and their moves (thesis §7.2).
 
-§7.2 asks on which graphs the worst case of Algorithm 3.1 occurs (L2260) and for bounds in terms of the
-diameter and the maximum degree (L2262).  The search (:mod:`.search`) looks for bad worlds by small changes;
+§7.2 asks on which graphs the worst case of Algorithm 3.1 occurs and for bounds in terms of the
+diameter and the maximum degree (§7.2).  The search (:mod:`.search`) looks for bad worlds by small changes;
 this module says what a candidate is and how it may change, so that every candidate is a valid world:
 connected, simple, every degree between 1 and the search's maximum degree D, with a start (vertex, the
 neighbour it faces).

@@ -25,9 +25,9 @@ from topomark.reference.bench.reports.plots import curve, drawn, finish, new, re
 
 __all__ = ["table", "write_report", "not_correct", "THESIS"]
 
-THESIS = ("Algorithm 3.1 costs at most (3.1) + (3.2) = O(m²n) edge traversals (§3.5.2, L630–L640); the bound "
+THESIS = ("Algorithm 3.1 costs at most (3.1) + (3.2) = O(m²n) edge traversals (§3.5.2); the bound "
           "\"is quite loose\", and \"it is worth investigating whether the worst case scenarios exist\" "
-          "(§7.2, L2260–L2262).")
+          "(§7.2).")
 
 
 def not_correct(row: dict[str, Any]) -> int:

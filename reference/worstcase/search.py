@@ -1,8 +1,8 @@
-"""Adversarial search for bad worlds past exhaustive sizes, a lower bound on the worst case (§7.2, L2260–L2262).
+"""Adversarial search for bad worlds past exhaustive sizes, a lower bound on the worst case (§7.2).
 
-§7.2 finds the O(m²n) bound of Algorithm 3.1 "quite loose" (L2260), asks whether its pessimistic assumptions can
+§7.2 finds the O(m²n) bound of Algorithm 3.1 "quite loose", asks whether its pessimistic assumptions can
 happen together and on which classes of graphs, and suggests bounds in terms of the diameter and the maximum
-degree (L2262).  Exhaustive enumeration (:mod:`.exhaustive`) answers for small worlds; past them this module
+degree (§7.2).  Exhaustive enumeration (:mod:`.exhaustive`) answers for small worlds; past them this module
 searches: :func:`adversarial_search` looks, for a registered algorithm, for a world of n vertices and maximum
 degree <= D (its start included) that maximises one objective —
 

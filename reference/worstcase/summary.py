@@ -40,7 +40,7 @@ QUESTION = ("\"the derived upper cost bound O(m²n) of the basic single directio
             "quite loose for some environments … it is worth investigating whether the worst case scenarios exist (at "
             "the same time). If these worst case scenarios can happen together for some environment, then what "
             "classes of graphs are they? … it might be helpful to derive the bound by considering some other factors "
-            "such as graph diameter and maximum vertex degrees\" (§7.2, L2260–L2262).")
+            "such as graph diameter and maximum vertex degrees\" (§7.2).")
 
 
 def structure(world: World, algorithm: str) -> dict[str, Any]:

@@ -7,7 +7,7 @@ Map S: vertex v has deg[v] exits numbered clockwise; vertex 0 is the start
 and its exit 0 the exit faced in hello (the @2 anchor convention).  A new
 vertex's exit 0 is the edge the robot entered it by.
 
-One iteration (thesis L150-L177):
+One iteration (thesis §2.3.1):
   take an unexplored dart e = (vk, i) from U, walk S to vk, traverse e to the
   unknown end vu, drop the marker there, come back along e and visit the
   vertices of S that could be vu, looking for the marker.

@@ -1,5 +1,5 @@
-"""Registration of Algorithm 3.1, ``basic`` (thesis §3.3, L498–L552), and of its Chapter 4 enhancements
-(§4.1–4.3, L885–L1305): ``enh1`` … ``enh5-d2``, ``enh3+4``, ``enh3+5``.
+"""Registration of Algorithm 3.1, ``basic`` (thesis §3.3, §3.4), and of its Chapter 4 enhancements
+(§4.1–4.3): ``enh1`` … ``enh5-d2``, ``enh3+4``, ``enh3+5``.
 
 All are *lighthouse algorithms*: they establish v0 with any lighthouse strategy
 (:mod:`topomark.reference.explorers.lighthouses`; the listed kit is the default
@@ -12,19 +12,19 @@ and the compositions of :mod:`topomark.reference.explorers.compositions`.
 Decisions:
 
 * **Which bound the enhancements keep.**  Chapter 4 says its enhancements "do not improve the theoretical
-  exploration cost bound O(m²n) of the algorithm" (L891) and reports measured reductions only; it states no
+  exploration cost bound O(m²n) of the algorithm" (Chapter 4) and reports measured reductions only; it states no
   exact bound for any of them.  Enhancements 1–3 add no motion ("These approaches require no addition of motion
-  by the robot", §4.1, L895): they only change how hypotheses are validated and retraced, so they keep Algorithm
-  3.1's exact bound (3.1)+(3.2) (§3.5.2, L630–L640), and every checked run holds them to it.  Enhancements 4 and
+  by the robot", §4.1): they only change how hypotheses are validated and retraced, so they keep Algorithm
+  3.1's exact bound (3.1)+(3.2) (§3.5.2), and every checked run holds them to it.  Enhancements 4 and
   5 add expansion traversals that (3.1)+(3.2) does not count ("O(m·d_max) extra traversals may be required",
-  L1263), so theirs is the asymptotic O(m²n) of L891, measured by the bench (``tables``), never checked per run.
+  §4.2), so theirs is the asymptotic O(m²n) of Chapter 4, measured by the bench (``tables``), never checked per run.
 * **What the exact bound counts** (``cost-bound``).  (3.1)+(3.2) bounds the passes through Algorithm 3.1's loop
-  body (L628: "the number of edge traversals required in one pass through the loop body"), which starts with
-  the marker already at v0 (line 1).  A lighthouse that is searched for first (§5.1, L1332: "first conduct a
+  body (§3.5.2: "the number of edge traversals required in one pass through the loop body"), which starts with
+  the marker already at v0 (line 1).  A lighthouse that is searched for first (§5.1: "first conduct a
   random walk ... and then explores the world using the deterministic single directional marker algorithm";
-  §6.1, L1470; §5.2.1) walks before the loop starts: those ``establish`` moves (``walk_steps``, held to the
-  walk limit, L1334) are not counted.  Nor are ``probe`` moves: a lighthouse whose back-link needs "extra
-  traversals looking for the marked neighbors" (Figure 3.21(b), L881; L1334: "It becomes more expensive to
+  §6.1; §5.2.1) walks before the loop starts: those ``establish`` moves (``walk_steps``, held to the
+  walk limit, §5.1) are not counted.  Nor are ``probe`` moves: a lighthouse whose back-link needs "extra
+  traversals looking for the marked neighbors" (Figure 3.21(b), §5.1: "It becomes more expensive to
   validate back-link") pays them on top of the loop, and the thesis bounds them nowhere.  Every other move
   (travel, new, validation, retrace) counts.
 
@@ -58,7 +58,7 @@ POLICY_OPTIONS = ("policy edge=nearest|fifo|lifo", "policy hypothesis=fifo|lifo|
 _KIT = LIGHTHOUSES["directional-vertex"].kit
 _BOUND = "(3.1)+(3.2) = O(m²n), §3.5.2"
 _FORMULA = "(3.1)+(3.2) = Σ_{n_s=1}^{n−1}[n_s + 2(n_s−1)(2m−2(n_s−1))] + Σ_{i=1}^{m−n+1}[n + 2(n−1)(2m−2(n−1)−2(i−1))] " \
-           "(§3.5.2, L630–L640)"
+           "(§3.5.2)"
 _UNCOUNTED = ("establish", "probe", "drop")
 """The moves (3.1)+(3.2) does not count: a lighthouse's search walk, its back-link probes, and its drop trip (the
 ``three-undirected-vertex`` lighthouse's walk to a neighbour and back to drop there, Figure 3.21(b)) — all made
@@ -78,8 +78,8 @@ def _enhancement(name: str) -> AlgorithmSpec:
     """A Chapter 4 composition: (3.1)+(3.2) where it adds no motion, else O(m²n) asymptotic (module docstring)."""
     enh = ENHANCEMENTS[name]
     inherits = not (enh.prune or enh.expand_new or enh.expand_place)
-    bound = f"{_BOUND}, inherited (§4.1 adds no motion, L895)" if inherits else \
-        "O(m²n) (L891; its expansion traversals are outside (3.1)+(3.2), L1263)"
+    bound = f"{_BOUND}, inherited (§4.1 adds no motion)" if inherits else \
+        "O(m²n) (Chapter 4; its expansion traversals are outside (3.1)+(3.2), §4.2)"
     return _lighthouse_algorithm(name, enh.section, EXPLORERS[name], bound, inherits)
 
 

@@ -1,25 +1,25 @@
-"""The classic baselines of Table 2.3 (thesis §2.3.1, L185, L220–L227; Table 2.3, L255–L272): the footprints
+"""The classic baselines of Table 2.3 (thesis §2.3.1; Table 2.3): the footprints
 model with m + n homogeneous markers and the labelled graph explored depth first.  Explorers:
 :mod:`topomark.reference.explorers.footprints` and :mod:`topomark.reference.explorers.labelled_graph`.
 
-============  ==========================================  ==============================  ==================
-algorithm     Table 2.3 row                               kit (default)                   exact bound (ours)
-============  ==========================================  ==============================  ==================
-footprints    m + n homogeneous markers, O(mn) (L267)     m + n vertex-or-edge, one pool  the footprint search's
-labelled-dfs  m + n distinct markers, O(m) (L269)         n(n + 1)/2 directional V        2m
-============  ==========================================  ==============================  ==================
+============  ============================================  ==============================  ======================
+algorithm     Table 2.3 row                                 kit (default)                   exact bound (ours)
+============  ============================================  ==============================  ======================
+footprints    m + n homogeneous markers, O(mn) (Table 2.3)  m + n vertex-or-edge, one pool  the footprint search's
+labelled-dfs  m + n distinct markers, O(m) (Table 2.3)      n(n + 1)/2 directional V        2m
+============  ============================================  ==============================  ======================
 
 Both are kit algorithms: the simulator computes the kit from n and m, the
 robot never learns them.  Every run of either drops its whole kit (the
 ``marker-budget`` check holds it to that count after every step).
 
-* ``footprints``: the thesis states O(mn) (L227, L267) with no constant; the
+* ``footprints``: the thesis states O(mn) (§2.3.1, Table 2.3) with no constant; the
   bound checked is
   :func:`~topomark.reference.algorithms.registrations.markers_621.footprints_bound`,
   the exact worst case of the footprint search (its candidates are visited
   within the Euler tour of a breadth-first tree of S, whichever they are).
   It takes the edge policy (``--policy edge=...``), as Cases 1a and 2 do.
-* ``labelled-dfs``: the thesis states O(m) (L185, L269); 2m is ours, exact
+* ``labelled-dfs``: the thesis states O(m) (§2.3.1, Table 2.3); 2m is ours, exact
   for depth-first search (the explorer's docstring derives it).  It takes no
   policy: depth first is what the bound needs.
 
@@ -53,27 +53,26 @@ def labels(n: int) -> int:
 
 
 _FOOTPRINTS = footprint_spec(
-    "footprints", "§2.3.1, the footprints model of Deng and Mirzaian [18], m + n homogeneous markers (L220–L227, "
-    "Figure 2.4; Table 2.3, L255, L267)", "m + n undirected homogeneous markers, one on every vertex and edge (L220)",
-    Footprints, lambda n, m, o: Kit(either=m + n), lambda n, m: m + n, "L227, L267", options=("policy edge",),
+    "footprints", "§2.3.1, the footprints model of Deng and Mirzaian [18], m + n homogeneous markers ("
+    "Figure 2.4; Tables 2.2 and 2.3)", "m + n undirected homogeneous markers, one on every vertex and edge (§2.3.1)",
+    Footprints, lambda n, m, o: Kit(either=m + n), lambda n, m: m + n, "§2.3.1, Table 2.3", options=("policy edge",),
     kind=Kit(either=1))
 
 SPECS = (
     replace(_FOOTPRINTS, parameters=(), checks=STEPWISE_MAP_CHECKS),
     AlgorithmSpec(
         name="labelled-dfs",
-        thesis="§2.3.1, a labelled graph explored depth first, every place distinctly marked (L185; Table 2.3, L256, "
-               "L269)",
+        thesis="§2.3.1, a labelled graph explored depth first, every place distinctly marked (Tables 2.2 and 2.3)",
         kit=Kit(vertex=1, directional=True),
-        bound="O(m) (L185, L269); bound_fn: ours, exact for depth-first search",
-        markers="n distinct labels: n(n + 1)/2 directional V-markers (label i = i markers, L185)",
+        bound="O(m) (§2.3.1, Table 2.3); bound_fn: ours, exact for depth-first search",
+        markers="n distinct labels: n(n + 1)/2 directional V-markers (label i = i markers, §2.3.1)",
         deterministic=True,
         options=(),
         checks=STEPWISE_MAP_CHECKS,
         explorer=LabelledGraphDFS,
         bound_fn=lambda n, m: 2 * m,
         bound_formula="2m, ours: depth-first search walks each tree edge down and up, each other edge there and "
-                      "back (L185)",
+                      "back (§2.3.1)",
         uses_lighthouse=False,
         kit_fn=lambda n, m, o: Kit(vertex=labels(n), directional=True),
         marker_bound_fn=lambda n, m: labels(n),

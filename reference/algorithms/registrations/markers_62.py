@@ -1,6 +1,6 @@
 """§6.2's algorithms that give places a unique count of markers: Case 3a (Algorithm 6.2), Case 3b, Σ k
 directional vertex markers, and Case 3b's extension-1 and extension-2 (Algorithm 6.6) with directional
-E-markers (thesis §6.2.1 L1562–L1643, §6.2.2 L1902–L1963; Tables 6.1, 6.2).
+E-markers (thesis §6.2.1 Cases 3a and 3b, Algorithm 6.2, §6.2.2; Tables 6.1, 6.2).
 
 Each is a kit algorithm: by default the robot carries exactly the markers its
 case is assured — Σ_{k=1}^{n−1} k = n(n−1)/2 for Cases 3a/3b and the directional
@@ -8,7 +8,7 @@ vertex markers, Σ_{k=1}^{⌈m/2⌉} k for extension-1, Σ_{k=1}^{⌈(n−1)/2�
 extension-2 — computed here from the world (the robot never learns n or m);
 ``--markers K`` gives K instead.  The marker bound checked after every step is
 the thesis's: the same formulas, except Σ_{k=1}^{n} k for the vertex
-algorithms, which mark every vertex when the kit allows (L1577; the decision is
+algorithms, which mark every vertex when the kit allows (§6.2.1 Case 3b; the decision is
 in :mod:`topomark.reference.explorers.counted_markers`).  No exact cost formula
 is stated (only O(m), O(m·d_max)), so none is checked per run: each bound is
 asymptotic, measured by the bench (``table-6.1``, ``table-6.2``).
@@ -16,16 +16,16 @@ asymptotic, measured by the bench (``table-6.1``, ``table-6.2``).
 Two savings the thesis shows fail are registered with the status
 "implemented, expected to fail" (:mod:`topomark.reference.explorers.failing_savings`):
 ``case-3b-saving`` (Case 3b marking a non-loop edge only from an unmarked v_k,
-L1706, Figure 6.10) and ``extension-naive`` (extension-2 without coming back to
-v_k, L1910, Figure 6.15(b)–(c)).  Each gets the kit of the algorithm it saves
+§6.2.1 Case 4, Figure 6.10) and ``extension-naive`` (extension-2 without coming back to
+v_k, §6.2.2, Figure 6.15(b)–(c)).  Each gets the kit of the algorithm it saves
 on, and that algorithm's marker bound; the thesis states no cost bound for
 either.
 
-``case-dv-sum`` is registered O(m) (Table 6.2, L2013) with its default kit
+``case-dv-sum`` is registered O(m) (Table 6.2) with its default kit
 Σ_{k=1}^{n−1} k, which leaves the last new place blank, with no direction.
 Its explorer takes the blank's unexplored edges first, from the blank, so no
 edge is entered at the blank and no back-link is probed (the decision and its
-lines, L1575 and L1902, are in :mod:`~topomark.reference.explorers.counted_markers`):
+lines, §6.2.1 Case 3a, §6.2.2, are in :mod:`~topomark.reference.explorers.counted_markers`):
 on ``wheel-hub-last``, where the blank is the hub of degree d_max, the cost is
 3m/2 − 2, within O(m) (``tests/test_markers_62.py``).
 
@@ -62,28 +62,28 @@ def _count(n: int, options: dict, assured: int | None = None) -> int:
 
 SPECS = (
     AlgorithmSpec(
-        name="case-3a", thesis="§6.2.1 Case 3a, Algorithm 6.2 (L1562–L1620, Figure 6.6)", kit=Kit(vertex=1),
+        name="case-3a", thesis="§6.2.1 Case 3a, Algorithm 6.2 (Figure 6.6)", kit=Kit(vertex=1),
         bound="O(m·d_max)", markers="Σ_{k=1}^{n−1} k undirected V-markers (Σ_{k=1}^{n} k if the kit allows)",
         deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=VertexCounts,
         uses_lighthouse=False, parameters=(MARKERS,), kit_fn=lambda n, m, o: Kit(vertex=_count(n, o)),
         marker_bound_fn=lambda n, m: sum_to(n), family="robot", bound_bench="table-6.1"),
     AlgorithmSpec(
-        name="case-3b", thesis="§6.2.1 Case 3b (L1577, L1627–L1643, Figures 6.7, 6.8)", kit=Kit(edge=1),
+        name="case-3b", thesis="§6.2.1 Case 3b (Figures 6.7, 6.8)", kit=Kit(edge=1),
         bound="O(m)", markers="Σ_{k=1}^{n−1} k undirected E-markers",
         deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=EdgeCounts,
         uses_lighthouse=False, parameters=(MARKERS,), kit_fn=lambda n, m, o: Kit(edge=_count(n, o)),
         marker_bound_fn=lambda n, m: sum_to(n - 1), family="robot", bound_bench="table-6.1"),
     AlgorithmSpec(
-        name="case-3b-saving", thesis="§6.2.1 Case 3b saving markers like Algorithm 6.3: fails (L1704–L1706, Figure 6.10)",
+        name="case-3b-saving", thesis="§6.2.1 Case 3b saving markers like Algorithm 6.3: fails (Case 4, Figure 6.10)",
         kit=Kit(edge=1), bound=None, markers="at most Σ_{k=1}^{n−1} k undirected E-markers (Case 3b's kit)",
         deterministic=True, options=("markers",), checks=MARKER_MAP_CHECKS, explorer=UndirectedSaving,
         uses_lighthouse=False, parameters=(MARKERS,), kit_fn=lambda n, m, o: Kit(edge=_count(n, o)),
         marker_bound_fn=lambda n, m: sum_to(n - 1), family="robot", status="implemented, expected to fail",
         status_reason="the marked edges 'may not always identify a visited vertex and its incident edges' "
-                      "(L1706): two neighbours whose only marked edge joins them show the same signature "
-                      "(Figure 6.10(b), L1704); on figure-6.10 the run ends failed (the marks fit two edges)"),
+                      "(§6.2.1 Case 4): two neighbours whose only marked edge joins them show the same signature "
+                      "(Figure 6.10(b)); on figure-6.10 the run ends failed (the marks fit two edges)"),
     AlgorithmSpec(
-        name="case-dv-sum", thesis="§6.2.2 Σ_{k=1}^{n−1} k directional V-markers (L1902, Table 6.2)",
+        name="case-dv-sum", thesis="§6.2.2 Σ_{k=1}^{n−1} k directional V-markers (Table 6.2)",
         kit=Kit(vertex=1, directional=True), bound="O(m)",
         markers="Σ_{k=1}^{n−1} k directional V-markers (Σ_{k=1}^{n} k if the kit allows)",
         deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=DirectionalVertexCounts,
@@ -91,7 +91,7 @@ SPECS = (
         kit_fn=lambda n, m, o: Kit(vertex=_count(n, o), directional=True),
         marker_bound_fn=lambda n, m: sum_to(n), family="robot", bound_bench="table-6.2"),
     AlgorithmSpec(
-        name="extension-1", thesis="§6.2.2 extension-1 of Case 3b (L1914, Figure 6.15, Table 6.2)",
+        name="extension-1", thesis="§6.2.2 extension-1 of Case 3b (Figure 6.15, Table 6.2)",
         kit=Kit(edge=1, directional=True), bound="O(m)", markers="Σ_{k=1}^{⌈m/2⌉} k directional E-markers",
         deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=MarkFirstEdges,
         uses_lighthouse=False, parameters=(MARKERS,),
@@ -99,7 +99,7 @@ SPECS = (
         marker_bound_fn=lambda n, m: sum_to(ceil_half(m)), family="robot", bound_bench="table-6.2"),
     AlgorithmSpec(
         name="extension-2",
-        thesis="§6.2.2 extension-2 of Case 3b, Algorithm 6.6 (L1916–L1963, Figure 6.16, Table 6.2)",
+        thesis="§6.2.2 extension-2 of Case 3b, Algorithm 6.6 (Figure 6.16, Table 6.2)",
         kit=Kit(edge=1, directional=True), bound="O(m)", markers="Σ_{k=1}^{⌈(n−1)/2⌉} k directional E-markers",
         deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=SavingEdgeCounts,
         uses_lighthouse=False, parameters=(MARKERS,),
@@ -107,7 +107,7 @@ SPECS = (
         marker_bound_fn=lambda n, m: sum_to(ceil_half(n - 1)), family="robot", bound_bench="table-6.2"),
     AlgorithmSpec(
         name="extension-naive",
-        thesis="§6.2.2 the naive extension of Case 3b, extension-2 without coming back: fails (L1910, Figure 6.15)",
+        thesis="§6.2.2 the naive extension of Case 3b, extension-2 without coming back: fails (Figure 6.15)",
         kit=Kit(edge=1, directional=True), bound=None,
         markers="at most Σ_{k=1}^{⌈(n−1)/2⌉} k directional E-markers (extension-2's kit)",
         deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=NaiveExtension,
@@ -115,6 +115,6 @@ SPECS = (
         kit_fn=lambda n, m, o: Kit(edge=_count(n, o, sum_to(ceil_half(n - 1))), directional=True),
         marker_bound_fn=lambda n, m: sum_to(ceil_half(n - 1)), family="robot", status="implemented, expected to fail",
         status_reason="'this extension idea does not work when a loop edge e is explored ... and v_k has no "
-                      "marked edges yet' (L1910, Figure 6.15(b)-(c)): v_k is left unmarked and later taken for a "
+                      "marked edges yet' (§6.2.2, Figure 6.15(b)-(c)): v_k is left unmarked and later taken for a "
                       "new place; on figure-6.15 the checker finds the wrong map"),
 )

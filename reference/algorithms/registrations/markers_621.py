@@ -1,6 +1,6 @@
 """§6.2.1's undirected algorithms that use about m markers and search S for footprints: Case 1a, Case 1b,
 Case 2 (Algorithm 6.1) and the two closest-first extensions of Case 4 (Algorithm 6.3 and the extension of
-Case 2) (thesis L1493–L1554, L1640–L1699; Table 6.1).  Explorers:
+Case 2) (thesis §6.2.1 Cases 1, 1a, 1b, 2 and 4, Algorithm 6.1; Table 6.1).  Explorers:
 :mod:`topomark.reference.explorers.edge_footprints` and :mod:`topomark.reference.explorers.closest_first`.
 
 Each is a kit algorithm: by default the robot carries exactly the markers its
@@ -9,29 +9,29 @@ and ``--markers K`` gives K instead (running out is the ``failed`` outcome).
 The marker bound checked after every step (``marker-budget``) is the stated
 one, as a formula:
 
-============  ====================================  =================  ==========================
-algorithm     Table 6.1 / title                      kit (default)      marker bound checked
-============  ====================================  =================  ==========================
-case-1a       m E-markers (L1506)                   m                  m
-case-1b       m + 1, extendable to m (L1510, L1512)  m + 1 V-or-E pool  m + 1
-case-2        m + n (L1523), text m + n − 1 (L1529)  m + n              m + n − 1
-case-4        m − ⌊n/2⌋ (L1640, L1663)              m − ⌊(n−1)/2⌋      m − ⌊(n−1)/2⌋
-case-4-mn     m (L1665)                             m + [n even]       m + [n even]
-============  ====================================  =================  ==========================
+============  ======================================  =================  ==========================
+algorithm     Table 6.1 / title                       kit (default)      marker bound checked
+============  ======================================  =================  ==========================
+case-1a       m E-markers (Case 1a)                   m                  m
+case-1b       m + 1, extendable to m (Case 1b)        m + 1 V-or-E pool  m + 1
+case-2        m + n (title), text m + n − 1 (Case 2)  m + n              m + n − 1
+case-4        m − ⌊n/2⌋ (Case 4)                      m − ⌊(n−1)/2⌋      m − ⌊(n−1)/2⌋
+case-4-mn     m (Case 4)                              m + [n even]       m + [n even]
+============  ======================================  =================  ==========================
 
 The Case 4 counts are corrected (the decision and its proof are in
 :mod:`~topomark.reference.explorers.closest_first`).  Case 1b's markers are
 one homogeneous pool, each dropped "either on the vertex or on the edge"
-as the robot needs (L1510, footnote 16), so its kit is exactly that: a pool
+as the robot needs (§6.2.1 Case 1b, footnote 16), so its kit is exactly that: a pool
 of m + 1 vertex-or-edge markers (``Kit(either=m + 1)``, drawn as
 :meth:`~topomark.spec.kit.Kit.draw` says), and ``--markers K`` a pool of K.
 The robot is "assured that it has at least m markers" in the extension
-(L1512): with ``--markers m`` the last iteration's drop is refused and that
+(§6.2.1 Case 1b): with ``--markers m`` the last iteration's drop is refused and that
 iteration's edge(s) in U are processed with no further motion
 (:mod:`~topomark.reference.explorers.edge_footprints`); with fewer the run
 ends ``failed`` (out of markers before the last iteration).
 
-The thesis states O(mn) for all five (L1506, L1517, L1529, L1642) with no
+The thesis states O(mn) for all five (§6.2.1 Cases 1a, 1b, 2 and 4) with no
 constant.  :func:`footprints_bound` is **ours**, the exact worst case of
 these explorers: a non-loop step walks S (≤ n − 2, S has ≤ n − 1 vertices)
 and follows e (1); a loop step walks S (≤ n − 1), follows e and comes back
@@ -87,8 +87,8 @@ def kit_size(options: dict, assured: int) -> int:
 
 
 def case_1b_kit(n: int, m: int, options: dict) -> Kit:
-    """Case 1b's m + 1 homogeneous V-E-markers as one pool, each dropped at a vertex or on an edge (L1510,
-    footnote 16); ``--markers K``: a pool of K (L1512: m suffices)."""
+    """Case 1b's m + 1 homogeneous V-E-markers as one pool, each dropped at a vertex or on an edge (§6.2.1 Case 1b,
+    footnote 16); ``--markers K``: a pool of K (§6.2.1 Case 1b: m suffices)."""
     return Kit(either=kit_size(options, m + 1))
 
 
@@ -108,18 +108,18 @@ def footprint_spec(name, thesis, markers, explorer, kit_fn, marker_bound_fn, cit
 
 
 SPECS = (
-    footprint_spec("case-1a", "§6.2.1 Case 1a, m E-markers (L1497–L1506, Figure 6.4; footprints [18])", "m undirected E-markers",
-          EdgeFootprints, lambda n, m, o: Kit(edge=kit_size(o, m)), lambda n, m: m, "L1506"),
-    footprint_spec("case-1b", "§6.2.1 Case 1b, m + 1 V-E-markers, extendable to m (L1508–L1521, Figure 6.5)",
-          "m + 1 undirected V-E-markers, one pool (m with the extension, L1512)", VertexEdgeFootprints, case_1b_kit,
-          lambda n, m: m + 1, "L1510", kind=Kit(either=1)),
-    footprint_spec("case-2", "§6.2.1 Case 2, Algorithm 6.1, m + n E-markers (L1523–L1554)",
-          "m + n undirected E-markers (m + n − 1 used, L1529)", DoubleMarkedEdges,
-          lambda n, m, o: Kit(edge=kit_size(o, m + n)), lambda n, m: m + n - 1, "L1529"),
-    footprint_spec("case-4", "§6.2.1 Case 4, Algorithm 6.3, closest-first (L1640–L1699, Figure 6.9)",
-          "m − ⌊(n−1)/2⌋ undirected E-markers (stated m − ⌊n/2⌋, L1663: one short for even n)", ClosestFirst,
-          lambda n, m, o: Kit(edge=kit_size(o, case_4_markers(n, m))), case_4_markers, "L1642", MARKER_OPTIONS),
-    footprint_spec("case-4-mn", "§6.2.1 Case 4, the closest-first extension of Case 2 (L1665)",
-          "m + [n even] undirected E-markers (stated m, L1665: one short for even n)", ClosestFirstDouble,
-          lambda n, m, o: Kit(edge=kit_size(o, case_4_mn_markers(n, m))), case_4_mn_markers, "L1642", MARKER_OPTIONS),
+    footprint_spec("case-1a", "§6.2.1 Case 1a, m E-markers (Figure 6.4; footprints [18])", "m undirected E-markers",
+          EdgeFootprints, lambda n, m, o: Kit(edge=kit_size(o, m)), lambda n, m: m, "§6.2.1 Case 1a"),
+    footprint_spec("case-1b", "§6.2.1 Case 1b, m + 1 V-E-markers, extendable to m (Figure 6.5)",
+          "m + 1 undirected V-E-markers, one pool (m with the extension, §6.2.1 Case 1b)", VertexEdgeFootprints, case_1b_kit,
+          lambda n, m: m + 1, "§6.2.1 Case 1b", kind=Kit(either=1)),
+    footprint_spec("case-2", "§6.2.1 Case 2, Algorithm 6.1, m + n E-markers",
+          "m + n undirected E-markers (m + n − 1 used, §6.2.1 Case 2)", DoubleMarkedEdges,
+          lambda n, m, o: Kit(edge=kit_size(o, m + n)), lambda n, m: m + n - 1, "§6.2.1 Case 2"),
+    footprint_spec("case-4", "§6.2.1 Case 4, Algorithm 6.3, closest-first (Figure 6.9)",
+          "m − ⌊(n−1)/2⌋ undirected E-markers (stated m − ⌊n/2⌋, §6.2.1 Case 4: one short for even n)", ClosestFirst,
+          lambda n, m, o: Kit(edge=kit_size(o, case_4_markers(n, m))), case_4_markers, "§6.2.1 Case 4", MARKER_OPTIONS),
+    footprint_spec("case-4-mn", "§6.2.1 Case 4, the closest-first extension of Case 2",
+          "m + [n even] undirected E-markers (stated m, §6.2.1 Case 4: one short for even n)", ClosestFirstDouble,
+          lambda n, m, o: Kit(edge=kit_size(o, case_4_mn_markers(n, m))), case_4_mn_markers, "§6.2.1 Case 4", MARKER_OPTIONS),
 )

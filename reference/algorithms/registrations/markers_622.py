@@ -1,21 +1,21 @@
 """§6.2.2's enhancements of the O(mn) footprint searches with *directional* markers: edgeINFO (thesis
-L1891–L1898, Figure 6.14).  Explorer: :mod:`topomark.reference.explorers.edge_info`.
+§6.2.2, Figure 6.14).  Explorer: :mod:`topomark.reference.explorers.edge_info`.
 
 ============================  ==========================================  ===========================  =============
 algorithm                     thesis                                      kit (default)                marker bound
 ============================  ==========================================  ===========================  =============
-case-1b-edgeinfo              Case 1b, m + 1 directional V-E (L1891)      m + 1 V-or-E pool, directed  m + 1
-case-2-edgeinfo               Case 2, m + n directional E (L1898)         m + n E, directed            m + n − 1
-case-1a-edgeinfo              Case 1a, m directional E (L1898, L1965)     m E, directed                m
-case-4-edgeinfo               Case 4, m − ⌊n/2⌋ directional E (L1898)     m − ⌊(n−1)/2⌋ E, directed    m − ⌊(n−1)/2⌋
-case-4-mn-edgeinfo            Case 4-mn, m directional E (L1898)          m + [n even] E, directed     m + [n even]
+case-1b-edgeinfo              Case 1b, m + 1 directional V-E (§6.2.2)     m + 1 V-or-E pool, directed  m + 1
+case-2-edgeinfo               Case 2, m + n directional E (§6.2.2)        m + n E, directed            m + n − 1
+case-1a-edgeinfo              Case 1a, m directional E (§6.2.2)           m E, directed                m
+case-4-edgeinfo               Case 4, m − ⌊n/2⌋ directional E (§6.2.2)    m − ⌊(n−1)/2⌋ E, directed    m − ⌊(n−1)/2⌋
+case-4-mn-edgeinfo            Case 4-mn, m directional E (§6.2.2)         m + [n even] E, directed     m + [n even]
 ============================  ==========================================  ===========================  =============
 
 The bound is Case 1b's (:func:`~topomark.reference.algorithms.registrations.markers_621.footprints_bound`,
-ours, exact for the explorer): "the cost bound remains unchanged" (L1891), and
+ours, exact for the explorer): "the cost bound remains unchanged" (§6.2.2), and
 the search only walks to fewer candidates.  The kit is Case 1b's pool, all
 markers directional; ``--markers K`` gives a pool of K, as for ``case-1b``.  ``case-2-edgeinfo``
-is ``case-2`` (kit m + n, m + n − 1 used, L1529) with directional E-markers; ``case-1a-edgeinfo``,
+is ``case-2`` (kit m + n, m + n − 1 used, §6.2.1 Case 2) with directional E-markers; ``case-1a-edgeinfo``,
 ``case-4-edgeinfo`` and ``case-4-mn-edgeinfo`` are ``case-1a``, ``case-4`` and ``case-4-mn`` (their kits, their
 checked marker bounds — Case 4's corrected, :mod:`~topomark.reference.explorers.closest_first` — and options:
 Case 4 chooses closest-first whatever the edge policy) with directional E-markers.  Every E-only variant anchors
@@ -49,32 +49,32 @@ __all__ = ["SPECS"]
 
 
 def _directional_1b_kit(n: int, m: int, options: dict) -> Kit:
-    """Case 1b's kit (a pool of m + 1, or ``--markers K``), every marker directional (L1891)."""
+    """Case 1b's kit (a pool of m + 1, or ``--markers K``), every marker directional (§6.2.2)."""
     return replace(case_1b_kit(n, m, options), directional=True)
 
 
 def _edge_only(name: str, thesis: str, markers: str, explorer, count, bound, options=MARKER_OPTIONS + ("policy edge",)):
     """An E-only variant: ``count(n, m)`` directional E-markers by default (``--markers K``: K), ``bound`` checked."""
     return footprint_spec(name, thesis, markers, explorer,
-                 lambda n, m, o: Kit(edge=kit_size(o, count(n, m)), directional=True), bound, "L1898", options,
+                 lambda n, m, o: Kit(edge=kit_size(o, count(n, m)), directional=True), bound, "§6.2.2", options,
                  kind=Kit(edge=1, directional=True))
 
 
 SPECS = (
-    footprint_spec("case-1b-edgeinfo", "§6.2.2 Case 1b with directional V-E-markers, edgeINFO (L1891–L1898, Figure 6.14)",
+    footprint_spec("case-1b-edgeinfo", "§6.2.2 Case 1b with directional V-E-markers, edgeINFO (Figure 6.14)",
           "m + 1 directional V-E-markers, one pool (as case-1b)", EdgeInfoFootprints, _directional_1b_kit,
-          lambda n, m: m + 1, "L1891", kind=Kit(either=1, directional=True)),
+          lambda n, m: m + 1, "§6.2.2", kind=Kit(either=1, directional=True)),
     _edge_only("case-2-edgeinfo", "§6.2.2 Case 2 (Algorithm 6.1) with directional E-markers, edgeINFO anchored at "
-               "the entry (L1898)", "m + n directional E-markers (m + n − 1 used, L1529)", DoubleMarkedEdgeInfo,
+               "the entry (§6.2.2)", "m + n directional E-markers (m + n − 1 used, §6.2.1 Case 2)", DoubleMarkedEdgeInfo,
                lambda n, m: m + n, lambda n, m: m + n - 1),
     _edge_only("case-1a-edgeinfo", "§6.2.2 Case 1a with directional E-markers, edgeINFO anchored at the entry "
-               "(L1898; Figure 6.17, L1965)", "m directional E-markers (as case-1a)", EdgeFootprintsEdgeInfo,
+               "(§6.2.2; Figure 6.17, §6.2.2)", "m directional E-markers (as case-1a)", EdgeFootprintsEdgeInfo,
                lambda n, m: m, lambda n, m: m),
     _edge_only("case-4-edgeinfo", "§6.2.2 Case 4 (Algorithm 6.3, closest-first) with directional E-markers, "
-               "edgeINFO anchored at the entry (L1898)", "m − ⌊(n−1)/2⌋ directional E-markers (as case-4; stated "
-               "m − ⌊n/2⌋, L1663)", ClosestFirstEdgeInfo, case_4_markers, case_4_markers, MARKER_OPTIONS),
+               "edgeINFO anchored at the entry (§6.2.2)", "m − ⌊(n−1)/2⌋ directional E-markers (as case-4; stated "
+               "m − ⌊n/2⌋, §6.2.1 Case 4)", ClosestFirstEdgeInfo, case_4_markers, case_4_markers, MARKER_OPTIONS),
     _edge_only("case-4-mn-edgeinfo", "§6.2.2 Case 4, the closest-first extension of Case 2, with directional "
-               "E-markers, edgeINFO anchored at the entry (L1898)", "m + [n even] directional E-markers (as "
-               "case-4-mn; stated m, L1665)", ClosestFirstDoubleEdgeInfo, case_4_mn_markers, case_4_mn_markers,
+               "E-markers, edgeINFO anchored at the entry (§6.2.2)", "m + [n even] directional E-markers (as "
+               "case-4-mn; stated m, §6.2.1 Case 4)", ClosestFirstDoubleEdgeInfo, case_4_mn_markers, case_4_mn_markers,
                MARKER_OPTIONS),
 )

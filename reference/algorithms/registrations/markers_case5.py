@@ -1,6 +1,6 @@
 """§6.2.1 Case 5 — k > 3 undirected markers, their number not known relative to the world: Version-1
 (Algorithm 6.4) and Version-2 (Algorithm 6.5) — and Case 0, the plausible strategy shown to fail (thesis
-L1489–L1491, Figure 6.3; L1708–L1817; Table 6.1 row "unknown k > 3").  Explorers:
+Figure 6.3; §6.2.1 Case 5, Algorithms 6.4 and 6.5; Table 6.1 row "unknown k > 3").  Explorers:
 :mod:`topomark.reference.explorers.case5_v1`, :mod:`~topomark.reference.explorers.case5_v2`,
 :mod:`~topomark.reference.explorers.case5_phase2` (phase II, shared) and
 :mod:`~topomark.reference.explorers.case0_every_vertex`.
@@ -13,7 +13,7 @@ case-5-v1   K undirected V-markers; Σ_{k=1}^{n} k        Σ_{k=1}^{n} k        
 case-5-v2   one pool of K undirected markers; m + 4      m + 4                       O(m²n); O(mn) with
                                                                                      every place and loop
                                                                                      edge marked
-case-0      n undirected V-markers                       n                           none: it fails (L1491)
+case-0      n undirected V-markers                       n                           none: it fails (§6.2.1 Case 0)
 case-5-     K undirected E-markers; Σ_{k=1}^{n−1} k      Σ_{k=1}^{n−1} k             O(m²n); O(m) with
 edge                                                                                 every tree edge marked
 case-5-     K directional V-markers; Σ_{k=1}^{n} k       Σ_{k=1}^{n} k               O(m²n) (Table 6.2,
@@ -21,32 +21,32 @@ direc-                                                                          
 tional
 ==========  ==========================================  ==========================  =====================
 
-``case-5-edge`` is the E-marker version L1716 says "can be developed" (Case 3b's
+``case-5-edge`` is the E-marker version §6.2.1 Case 5 says "can be developed" (Case 3b's
 unique edge counts, then hypotheses to the nearest marked edge:
 :mod:`~topomark.reference.explorers.case5_edge`); its default kit is Case 3b's
 Σ_{k=1}^{n−1} k, enough to mark every edge of the exploration tree.
 ``case-5-directional`` is Table 6.2's "unknown k > 3" row with directional
-markers (L2004): Version-1 whose markers point at the entry edge
+markers: Version-1 whose markers point at the entry edge
 (:mod:`~topomark.reference.explorers.case5_directional`); default Σ_{k=1}^{n} k.
 
-Defaults (the thesis gives none: in Case 5 the robot is *not* assured a count,
-L1710): K is what lets phase I run to the end — Σ_{k=1}^{n} k for Version-1
-("sufficient markers to mark each visited vertex", L1724) and m + 4 for
+Defaults (the thesis gives none: in Case 5 the robot is *not* assured a count):
+K is what lets phase I run to the end — Σ_{k=1}^{n} k for Version-1
+("sufficient markers to mark each visited vertex", §6.2.1 Case 5) and m + 4 for
 Version-2 (2 at v0, 2 on one of its edges, 1 at each other place, 1 on each
 loop edge but the double-marked one: "sufficient markers to mark each vertex and
-loop edge", L1770).  ``--markers`` is at least 4 ("k > 3", L1708; Version-2's
+loop edge", §6.2.1 Case 5).  ``--markers`` is at least 4 ("k > 3", §6.2.1 Case 5; Version-2's
 line 1 drops four).  Version-2's K is one pool for vertices and edges (the
-thesis's markers are homogeneous, L1474): the kit given to the simulator is a
+thesis's markers are homogeneous, §6.2): the kit given to the simulator is a
 pool of exactly K vertex-or-edge markers, so a drop beyond K is refused by the
 simulator (``OutOfMarkers``), not only avoided by the robot's own count (the
 robot knows how many it carries, only not how that compares with the world,
-L1710; tested with an explorer that overdraws by one).
+§6.2.1 Case 5; tested with an explorer that overdraws by one).
 
 Case 0 is registered as *not deterministic* in the thesis's sense of the word
-(an algorithm that always maps the world, L1375): "this approach does not work
-in general" (L1491).  It runs until it enters a marked place that more than one
+(an algorithm that always maps the world, §5.2.2): "this approach does not work
+in general" (§6.2.1 Case 0).  It runs until it enters a marked place that more than one
 unexplored edge fits, and there it stops with the ``failed`` outcome ("k edges
-fit; the robot cannot determine which, L1491"; K4 is the smallest world that
+fit; the robot cannot determine which, §6.2.1 Case 0"; K4 is the smallest world that
 shows it).  The certified pairs of worlds in ``tests/vectors/case0/`` (K4 with
 two embeddings; K4 against a 5-place world, found by search over every embedded
 world of ≤ 5 places and degree ≤ 4 from every start) show that no pick could be
@@ -114,35 +114,35 @@ def _directional_kit(n: int, m: int, options: dict) -> Kit:
 
 SPECS = (
     AlgorithmSpec(
-        name="case-5-v1", thesis="§6.2.1 Case 5 Version-1, Algorithm 6.4 (L1716–L1724, L1728–L1768)",
-        kit=Kit(vertex=1), bound="O(m²n) (L1724; O(m·d_max) when every place is marked)",
+        name="case-5-v1", thesis="§6.2.1 Case 5 Version-1, Algorithm 6.4",
+        kit=Kit(vertex=1), bound="O(m²n) (§6.2.1 Case 5; O(m·d_max) when every place is marked)",
         markers="K > 3 undirected V-markers, any K (Σ_{k=1}^{n} k mark every place)", deterministic=True,
         options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=VertexCountsThenLighthouse, uses_lighthouse=False,
         parameters=(MARKERS,), kit_fn=_v1_kit, marker_bound_fn=lambda n, m: sum_to(n), family="robot", bound_bench="table-6.1"),
     AlgorithmSpec(
-        name="case-5-v2", thesis="§6.2.1 Case 5 Version-2, Algorithm 6.5 (L1726, L1770, L1776–L1817)",
-        kit=Kit(vertex=1, edge=1), bound="O(m²n) (Table 6.1; O(mn) when every place and loop edge is marked, L1770)",
+        name="case-5-v2", thesis="§6.2.1 Case 5 Version-2, Algorithm 6.5",
+        kit=Kit(vertex=1, edge=1), bound="O(m²n) (Table 6.1; O(mn) when every place and loop edge is marked, §6.2.1 Case 5)",
         markers="K > 3 undirected V-E-markers, any K, one pool (m + 4 mark every place and loop edge)",
         deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=VertexEdgeThenLighthouse,
         uses_lighthouse=False, parameters=(MARKERS,), kit_fn=_v2_kit, marker_bound_fn=v2_markers, family="robot", bound_bench="table-6.1"),
     AlgorithmSpec(
-        name="case-0", thesis="§6.2.1 Case 0, n markers, one per visited vertex: fails (L1489–L1491, Figure 6.3)",
+        name="case-0", thesis="§6.2.1 Case 0, n markers, one per visited vertex: fails (Figure 6.3)",
         kit=Kit(vertex=1), bound=None, markers="n undirected V-markers", deterministic=False, options=("policy edge",),
         checks=MARKER_MAP_CHECKS, explorer=EveryVertexMarked, uses_lighthouse=False,
         kit_fn=lambda n, m, o: Kit(vertex=n), marker_bound_fn=lambda n, m: n, family="robot",
         status="implemented, expected to fail",
-        status_reason="'this approach does not work in general' (L1491, Figure 6.3): a marked place that several "
+        status_reason="'this approach does not work in general' (§6.2.1 Case 0, Figure 6.3): a marked place that several "
                       "edges fit ends the run failed (on complete:n=4, for one)"),
     AlgorithmSpec(
-        name="case-5-edge", thesis="§6.2.1 Case 5 with E-markers, \"a similar E-marker algorithm\" (L1716)",
+        name="case-5-edge", thesis="§6.2.1 Case 5 with E-markers, \"a similar E-marker algorithm\"",
         kit=Kit(edge=1), bound="O(m²n) (Table 6.1; O(m) when every tree edge is marked, as Case 3b)",
         markers="K > 3 undirected E-markers, any K (Σ_{k=1}^{n−1} k mark every tree edge)", deterministic=True,
         options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=EdgeCountsThenLighthouse,
         uses_lighthouse=False, parameters=(MARKERS,), kit_fn=_edge_kit, marker_bound_fn=lambda n, m: sum_to(n - 1),
         family="robot", bound_bench="table-6.1"),
     AlgorithmSpec(
-        name="case-5-directional", thesis="§6.2.2 Table 6.2 \"unknown k > 3\", directional (L2004): Version-1 "
-                                         "with directional V-markers (L1716–L1724, L1902)",
+        name="case-5-directional", thesis="§6.2.2 Table 6.2 \"unknown k > 3\", directional: Version-1 "
+                                         "with directional V-markers (§6.2.1 Case 5, §6.2.2)",
         kit=Kit(vertex=1, directional=True), bound="O(m²n) (Table 6.2, directional column)",
         markers="K > 3 directional V-markers, any K (Σ_{k=1}^{n} k mark every place)", deterministic=True,
         options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=DirectionalCountsThenLighthouse,

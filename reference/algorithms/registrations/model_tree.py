@@ -2,7 +2,7 @@
 
 One algorithm, ``model-tree``: an empty kit (no marker), no cost bound and no
 marker bound stated by the thesis (the marker budget is 0), not
-deterministic (L1375: "the algorithm is still not deterministic … we cannot
+deterministic (§5.2.2: "the algorithm is still not deterministic … we cannot
 determine which world model is the correct one").  The explorer is
 :class:`~topomark.reference.explorers.model_tree.ModelTreeExplorer`.
 
@@ -57,12 +57,12 @@ than any run the thesis reports; a larger cap only postpones the limit outcome."
 
 PARAMETERS = (
     Parameter("signatures", "global: validate each loop closing against every known vertex (§5.2.2); local: accept "
-              "every degree-matching one (L1367, the thesis's comparison)", DEFAULTS["signatures"], None,
+              "every degree-matching one (the thesis's comparison)", DEFAULTS["signatures"], None,
               ("global", "local")),
     Parameter("entry-check", "global signatures: at each vertex whose neighbours are known and whose neighbour "
-              "degrees have no proper rotation onto themselves, visit the neighbours to check the entry edge (L1369)",
+              "degrees have no proper rotation onto themselves, visit the neighbours to check the entry edge (§5.2.2)",
               DEFAULTS["entry-check"], None, ("yes", "no")),
-    Parameter("window", "return a model once it has been the only completed model for this many steps (L1373)",
+    Parameter("window", "return a model once it has been the only completed model for this many steps (§5.2.2)",
               DEFAULTS["window"], 1),
     Parameter("max-models", f"cap on live models: past it the run ends with the limit outcome (at most "
               f"{MAX_MODELS:,})", DEFAULTS["max-models"], 1, maximum=MAX_MODELS),
@@ -73,9 +73,9 @@ PARAMETERS = (
     Parameter("cue-diameter", "cue (§5.3): the world's diameter", None, 1),
     Parameter("cue-planar", "cue (§5.3): the world is planar (a genus-0 embedding)", DEFAULTS["cue-planar"], None,
               ("yes", "no")),
-    Parameter("prior", "prior knowledge (§5.3, L1436): single-leaf, the world has exactly one vertex of degree 1",
+    Parameter("prior", "prior knowledge (§5.3): single-leaf, the world has exactly one vertex of degree 1",
               DEFAULTS["prior"], None, ("none", "single-leaf")),
-    Parameter("rank", "rank the completed models by P(model | perceptions), the prior 2^-(n+m+genus) (§5.3, L1438), "
+    Parameter("rank", "rank the completed models by P(model | perceptions), the prior 2^-(n+m+genus) (§5.3), "
               "in the summary", DEFAULTS["rank"], None, ("yes", "no")),
 )
 
@@ -163,7 +163,7 @@ SPECS = (
         explorer=ModelTreeExplorer, uses_lighthouse=False, parameters=PARAMETERS, kit_fn=_kit,
         marker_bound_fn=lambda n, m: 0, family="robot", check_world=check_cues, summary_fn=summary,
         write_models=write_models, expected="may-fail",
-        expected_reason="\"Without a marker, the robot cannot map a world deterministically\" (§5.2, L1338): the "
-                        "models may never meet the termination window (L1373) and end at a cap, or the sole "
-                        "completed model may be wrong (Figure 3.4, L1421)"),
+        expected_reason="\"Without a marker, the robot cannot map a world deterministically\" (§5.2): the "
+                        "models may never meet the termination window (§5.2.2) and end at a cap, or the sole "
+                        "completed model may be wrong (Figure 3.4, §5.2.2)"),
 )

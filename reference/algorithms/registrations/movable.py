@@ -2,8 +2,8 @@
 variant [27] (explorers in :mod:`topomark.reference.explorers.movable_marker`).
 
 Both carry one vertex marker that may be picked up (``Kit(vertex=1, movable=True)``, directional for the
-variant), so the marker bound is 1 on every world.  The thesis states the cost bound O(mn) (L150: "the main
-cost ... is $O(mn) \\leq O(n^3)$"; L177 for the directional variant: "still $O(mn)$ but the constant is
+variant), so the marker bound is 1 on every world.  The thesis states the cost bound O(mn) (§2.3.1: "the main
+cost ... is $O(mn) \\leq O(n^3)$"; §2.3.1 for the directional variant: "still $O(mn)$ but the constant is
 expected to be reduced") with no constant; :func:`dudek_bound` and :func:`directional_bound` are **ours**:
 exact worst-case bounds of our explorers, derived per step with n_s ≤ n known vertices (distances in S are
 at most n_s − 1; a vertex of a simple graph has at most n − 1 exits, one of them explored once it is a
@@ -48,8 +48,8 @@ def directional_bound(n: int, m: int) -> int:
 
 
 _OPTIONS = ("policy edge=nearest|fifo|lifo",)
-_BOUND = "O(mn) (§2.3.1, L150); bound_fn: ours, exact for our explorer"
-_OURS = "ours: our explorer's exact worst case behind O(mn) (§2.3.1, L150, L177)"
+_BOUND = "O(mn) (§2.3.1); bound_fn: ours, exact for our explorer"
+_OURS = "ours: our explorer's exact worst case behind O(mn) (§2.3.1)"
 
 SPECS = (
     AlgorithmSpec(name="dudek", thesis="§2.3.1, Dudek et al. [24, 26]", kit=Kit(vertex=1, movable=True),
@@ -57,7 +57,7 @@ SPECS = (
                   bound_fn=dudek_bound, bound_formula=f"3(n − 1)² + (m − n + 1)(7n − 8), {_OURS}",
                   explorer=MovableMarkerExplorer, uses_lighthouse=False,
                   marker_bound_fn=lambda n, m: 1, family="robot"),
-    AlgorithmSpec(name="dudek-directional", thesis="§2.3.1, Dudek et al. [24, 26]; directional variant [27] (L177)",
+    AlgorithmSpec(name="dudek-directional", thesis="§2.3.1, Dudek et al. [24, 26]; directional variant [27]",
                   kit=Kit(vertex=1, directional=True, movable=True), bound=_BOUND, markers="1", deterministic=True,
                   options=_OPTIONS, checks=STEPWISE_MAP_CHECKS, bound_fn=directional_bound,
                   bound_formula=f"3(n − 1)² + (m − n + 1)(3n − 1), {_OURS}",

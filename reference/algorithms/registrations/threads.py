@@ -19,8 +19,8 @@ Decisions:
 
 * **l = c(G).**  A kit is computed from n, m and the options only (``AlgorithmSpec.kit_fn``): the
   simulator cannot give the kit c(G) itself, and the robot may not know the world.  And c(G) is not
-  enough (L2044 asks for a thread that reaches any vertex without forming a cycle, then calls it c(G), the
-  longest simple cycle, footnote 18, L2048; decided by search, ``reference/bench/measure/thread_length.py``):
+  enough (§6.3.2 asks for a thread that reaches any vertex without forming a cycle, then calls it c(G), the
+  longest simple cycle, footnote 18, §6.3.2; decided by search, ``reference/bench/measure/thread_length.py``):
   Algorithm 6.7's thread is a simple path from v0 plus one loop edge, which a world with a path from v0
   longer than its longest cycle exceeds — the smallest is the triangle with a pendant start (c(G) = 3, 4 edges laid;
   ``tests/test_thread_algorithms.py``).  So ``thread-circumference`` is given **n** edges — at least
@@ -29,20 +29,20 @@ Decisions:
   "out of thread" if L is reached.
 * **l ≫ m** is m + 1 (the most the knot explorer ever lays; the simulator refuses more).
 * **Algorithm 6.9 (explore-merge) is left out.**  It "merges the two partial maps S_1 and S_2 using the
-  merging algorithm described in [59, 61]" (L2150), which this thesis does not give (and its
+  merging algorithm described in [59, 61]" (§6.3.3), which this thesis does not give (and its
   bibliography is not in the text cited here): how a vertex of S_i is disambiguated against S_B ("using
-  some marking aid ... the thread could be used as a movable (directional) marker", L2150), what it
+  some marking aid ... the thread could be used as a movable (directional) marker", §6.3.3), what it
   costs and when the merged map is complete are all in [59, 61].  A merge of our own would be a new
   algorithm, not the thesis's; Algorithm 6.8 (``thread-explore``) covers the same thread class.
-* The robot is never told n or m (§6.2.1, L1487); only ``thread-explore`` (and ``thread-circumference``
-  when given ``--thread-length``) knows its thread's length, as L2096 assumes.
+* The robot is never told n or m (§6.2.1); only ``thread-explore`` (and ``thread-circumference``
+  when given ``--thread-length``) knows its thread's length, as §6.3.3 assumes.
 
 Bounds (ours: the thesis gives O(·) only), derived in the explorer modules:
 
-* The phase-I/phase-II fallback (L2090–L2092, :mod:`~topomark.reference.explorers.threads_fallback`): its
+* The phase-I/phase-II fallback (§6.3.3, :mod:`~topomark.reference.explorers.threads_fallback`): its
   phase I is a prefix of Algorithm 6.7's steps (below), the free end left costs no move, and each phase-II step
   is one pass of Algorithm 3.1's loop body with S at least as large and U no larger than the pass that (3.1)
-  or (3.2) counts for it (§3.5.2, L630–L640): Algorithm 6.7's bound plus (3.1)+(3.2).
+  or (3.2) counts for it (§3.5.2): Algorithm 6.7's bound plus (3.1)+(3.2).
 
 * Algorithm 6.7: n − 1 tree edges laid and rewound once each; a loop step lays e, and either rewinds it
   at once or goes back over e, walks the thread back (≤ n − 1) and rewinds e: ≤ n + 2.
@@ -111,37 +111,37 @@ _O_MN = "O(mn) (Table 6.3); bound_fn: ours"
 _OURS = "ours: our explorer's exact worst case behind O(mn) (Table 6.3)"
 
 SPECS = (
-    AlgorithmSpec(name="thread-carried", thesis="§6.3.1, l = ε thread carried and retied (L2032–L2036)",
+    AlgorithmSpec(name="thread-carried", thesis="§6.3.1, l = ε thread carried and retied",
                   kit=Kit(thread=0), bound=_O_MN, markers="no marker; a thread of length ε", options=("policy edge",),
                   bound_fn=directional_bound, explorer=CarriedThreadExplorer,
-                  bound_formula=f"3(n − 1)² + (m − n + 1)(3n − 1), {_OURS} (L2036)", **_ROBOT),
+                  bound_formula=f"3(n − 1)² + (m − n + 1)(3n − 1), {_OURS} (§6.3.1)", **_ROBOT),
     AlgorithmSpec(name="thread-circumference",
-                  thesis="§6.3.2, Algorithm 6.7 (L2038–L2075; l = c(G), given n: see the docstring)",
+                  thesis="§6.3.2, Algorithm 6.7 (l = c(G), given n: see the docstring)",
                   kit=Kit(thread=0), bound=_O_MN, markers="no marker; a thread of n edges (--thread-length: L)",
                   options=("thread-length L (default n; reaching L is the failed outcome 'out of thread')",),
                   bound_fn=circumference_bound, explorer=CircumferenceThreadExplorer,
-                  bound_formula=f"2(n − 1) + (m − n + 1)(n + 2), {_OURS} (L2038–L2075)",
+                  bound_formula=f"2(n − 1) + (m − n + 1)(n + 2), {_OURS} (§6.3.2, Algorithm 6.7)",
                   parameters=(LENGTH,), kit_fn=_circumference_kit, **_ROBOT),
-    AlgorithmSpec(name="thread-knots", thesis="§6.3.2, l ≫ m thread with knots (L2077–L2086, Figure 6.20)",
+    AlgorithmSpec(name="thread-knots", thesis="§6.3.2, l ≫ m thread with knots (Figure 6.20)",
                   kit=Kit(thread=0), bound="O(m) (Table 6.3); bound_fn: ours, exact worst case",
                   markers="no marker; a thread of m + 1 edges", options=(), bound_fn=knots_bound,
-                  bound_formula="4m − 2n + 2, ours: the exact worst case behind O(m) (Table 6.3, L2079)",
+                  bound_formula="4m − 2n + 2, ours: the exact worst case behind O(m) (Table 6.3, §6.3.2)",
                   explorer=KnotThreadExplorer, kit_fn=lambda n, m, opts: Kit(thread=m + 1), **_ROBOT),
-    AlgorithmSpec(name="thread-explore", thesis="§6.3.3, Algorithm 6.8 (L2088–L2141; l < c(G), explore-explore)",
+    AlgorithmSpec(name="thread-explore", thesis="§6.3.3, Algorithm 6.8 (l < c(G), explore-explore)",
                   kit=Kit(thread=2), bound=_O_MN, markers="no marker; a thread of --thread-length edges",
                   options=("thread-length L (default 2, Figure 6.21)",), bound_fn=explore_bound,
-                  bound_formula=f"2m + 2nm + n(n − 1), {_OURS} (L2088–L2141)",
+                  bound_formula=f"2m + 2nm + n(n − 1), {_OURS} (§6.3.3, Algorithm 6.8)",
                   explorer=ThreadExplorer, parameters=(Parameter("thread-length", LENGTH.help, default=2, minimum=1),),
                   kit_fn=lambda n, m, opts: Kit(thread=opts["thread-length"]), **_ROBOT),
     AlgorithmSpec(name="thread-fallback",
-                  thesis="§6.3.3, phase-I/phase-II fallback (L2088–L2092; l < c(G), Algorithm 6.7 then Algorithm 3.1)",
-                  kit=Kit(thread=2), bound="O(m²n) (L2092); bound_fn: ours",
+                  thesis="§6.3.3, phase-I/phase-II fallback (l < c(G), Algorithm 6.7 then Algorithm 3.1)",
+                  kit=Kit(thread=2), bound="O(m²n) (§6.3.3); bound_fn: ours",
                   markers="no marker; a thread of --thread-length edges, left laid once it runs out",
                   options=("thread-length L (default 2, Figure 6.21)", "policy edge=nearest|fifo|lifo (phase II)",
                            "policy hypothesis=fifo|lifo|shortest (phase II)", "policy path=shortest|dfs (phase II)"),
                   bound_fn=fallback_bound,
                   bound_formula="2(n − 1) + (m − n + 1)(n + 2) + (3.1) + (3.2), ours: Algorithm 6.7's bound for "
-                                "phase I and Algorithm 3.1's (§3.5.2, L630–L640) for phase II, behind O(m²n) (L2092)",
+                                "phase I and Algorithm 3.1's (§3.5.2) for phase II, behind O(m²n) (§6.3.3)",
                   explorer=FallbackThreadExplorer,
                   parameters=(Parameter("thread-length", LENGTH.help, default=2, minimum=1),),
                   kit_fn=lambda n, m, opts: Kit(thread=opts["thread-length"]), **_ROBOT),

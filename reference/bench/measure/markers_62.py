@@ -7,7 +7,7 @@ and prints per size the median and max of cost/m, the mean markers used against
 Case 3b's Σ_{k=1}^{n−1} k, and the mean share of each purpose: ``new`` (the edges themselves, m in all), ``other`` (trips to drop
 markers), ``travel`` (walking S between frontier edges), ``validation`` and
 ``retrace`` (back-link probes).  The thesis states O(m) only (§6.2.1 Case 3b,
-§6.2.2 L1902, Table 6.2), so cost/m is what is compared; the target is < 3.
+§6.2.2, Table 6.2), so cost/m is what is compared; the target is < 3.
 
 Examples
 --------

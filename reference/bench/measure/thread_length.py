@@ -1,4 +1,4 @@
-"""Whether a thread of length c(G) suffices for Algorithm 6.7 (L2044 against footnote 18, L2048): the search.
+"""Whether a thread of length c(G) suffices for Algorithm 6.7 (§6.3.2 against footnote 18, §6.3.2): the search.
 
 ``python3 -m topomark.reference.bench.measure.thread_length [--worlds N] [--json]`` — Algorithm 6.7 given exactly
 ``--thread-length c(G)`` (computed here, by search, for small worlds) on N generated worlds with a cycle, at
@@ -59,7 +59,7 @@ def _longest(world: World, start: str, closing: bool, within: set[str] | None = 
 
 
 def circumference(world: World) -> int:
-    """c(G): the number of edges of a longest simple cycle (0 for a forest; footnote 18, L2052)."""
+    """c(G): the number of edges of a longest simple cycle (0 for a forest; footnote 18, §6.3.2)."""
     if world.n > CIRCUMFERENCE_LIMIT:
         raise InvalidInput(f"the circumference is computed by search for worlds of at most {CIRCUMFERENCE_LIMIT} "
                            f"vertices; this one has {world.n}")

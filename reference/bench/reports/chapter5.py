@@ -1,7 +1,7 @@
 """Chapter 5 measured: the report of ``topomark bench chapter-5`` (``DIR/chapter-5.md`` and plots).
 
 Chapter 5 states its experimental findings in prose only (no table, no
-figure with numbers; §5.1–§5.2.2, L1317–L1421).  The ``chapter-5`` experiment
+figure with numbers; §5.1–§5.2.2).  The ``chapter-5`` experiment
 (:mod:`~topomark.reference.bench.plan`) runs, on the same worlds and starts:
 
 * §5.1 (``undirected-vertex``) and §6.1 (``undirected-edge``) with the basic
@@ -13,7 +13,7 @@ figure with numbers; §5.1–§5.2.2, L1317–L1421).  The ``chapter-5`` experim
 * Algorithm 5.1 (``model-tree``) on small worlds (lattice-hole 3x3 … 5x5,
   random up to 12 vertices) and on Figure 3.4, with the n cue (``cue=n``) and
   with none (``max-models=1000``: without a cue no run on these worlds ever
-  met the termination window of L1373, so every one ends at the cap — a cap of
+  met the termination window of §5.2.2, so every one ends at the cap — a cap of
   1000 live models keeps most to seconds; those runs take at most
   ``UNCUED_MODEL_TREE_GRAPHS`` worlds per size): outcomes, completed and peak
   models, cost and time, and peak models and time against n.
@@ -53,7 +53,7 @@ from topomark.reference.bench.reports.stats import by_seed, groups, mean, num
 __all__ = ["NAME", "USUALLY", "write_report", "figure_3_4", "OUTCOMES"]
 
 NAME = "chapter-5"
-USUALLY = 0.9  # "usually less than 50 steps" (L1334) read as: in at least 90% of the runs that found one
+USUALLY = 0.9  # "usually less than 50 steps" (§5.1) read as: in at least 90% of the runs that found one
 OUTCOMES = ("correct", "wrong-map", "failed", "limit", "error")
 INCONSISTENT = ("a new edge arrived at the lighthouse", "a loop was closed wrongly")  # in those failures' reasons
 THESIS_FAMILIES = ("lattice-hole", "random-20", "random-40")  # "on the given lattice hole graphs and random graphs"
@@ -62,19 +62,19 @@ MODEL_FAMILIES = ("small-lattice-hole", "small-random-40", "figure-3.4a", "figur
 QUOTES = {
     "5.1": "\"Results show that on the given lattice hole graphs and random graphs, the algorithm finds a lighthouse "
            "either at the initial location or otherwise within a few steps (usually less than 50 steps), mapping the "
-           "world deterministically.\" (L1334; walk threshold 200 steps, L1332)",
+           "world deterministically.\" (§5.1; walk threshold 200 steps, §5.1)",
     "6.1": "\"if the graph is not a *regular* graph, then given sufficient random walk, the robot is able to find a "
-           "lighthouse vertex, mapping the world deterministically.\" (L1470; no experiments)",
+           "lighthouse vertex, mapping the world deterministically.\" (§6.1; no experiments)",
     "5.2.1": "\"This approach can guarantee the explicitness of back-link information at the selected lighthouse but "
              "cannot guarantee the uniqueness of the lighthouse itself\"; the outcomes: failure, the correct model, "
-             "or \"terminates with an incorrect world model\" (L1346; no experiments, no walk length or threshold)",
+             "or \"terminates with an incorrect world model\" (§5.2.1; no experiments, no walk length or threshold)",
     "5.2.2": "\"For many graphs such as random graphs and lattices with 10% – 20% holes, the algorithm terminates "
              "according to the termination condition given above. When the algorithm terminates, the sole completed "
-             "world model maintained turns out to be the correct world model.\" (L1421; window 100 steps, L1373; "
+             "world model maintained turns out to be the correct world model.\" (§5.2.2; window 100 steps, §5.2.2; "
              "no cue used)",
     "fig": "\"using only local signatures … more than 50 models become completed. When exploring it using global "
            "signatures … only six world models become completed … which include the correct model. (One of the "
-           "incorrect models is the correct representation of the graph in Figure 3.4(b).)\" (L1421; Figure 5.3: "
+           "incorrect models is the correct representation of the graph in Figure 3.4(b).)\" (§5.2.2; Figure 5.3: "
            "\"(f) is the correct world model\")",
 }
 
@@ -174,7 +174,7 @@ def _local_section(runs: dict) -> list[str]:
              "| family | lighthouse | walk seed | runs | " + " | ".join(OUTCOMES) + " |",
              "|---|---|---:|---:|" + "---:|" * len(OUTCOMES)]
     seen: dict[str, int] = dict.fromkeys(OUTCOMES, 0)
-    inconsistent = 0  # failed runs whose reason is L1346's signature inconsistency at v0
+    inconsistent = 0  # failed runs whose reason is §5.2.1's signature inconsistency at v0
     for fam in CHAPTER_5_FAMILIES + ("figure-3.4a", "figure-3.4b"):
         for light in ("local-pair", "local-degree-list"):
             for opt, label in (("", "0"), ("seed=1", "1"), ("seed=2", "2")):
@@ -192,10 +192,10 @@ def _local_section(runs: dict) -> list[str]:
               f"failed, {seen['limit']} at a cap. The thesis says the scheme may map correctly, fail, or return a "
               f"wrong map without knowing it: {'**held** — all three happen' if held else 'see the counts'}. "
               "(A wrong map is what the checker finds; the algorithm itself claims a correct one.) Of the "
-              f"{seen['failed']} failures, {inconsistent} are L1346's \"signature inconsistencies (due to wrong loop "
+              f"{seen['failed']} failures, {inconsistent} are §5.2.1's \"signature inconsistencies (due to wrong loop "
               "closing)\" — a new edge arriving at v0 by an entry already explored, or a join no world has (a "
-              "self-loop or a second edge between two places, L374) — and the rest found no candidate below the "
-              "threshold. A run at a cap is L1346's \"never terminates\": its map outgrew the world.", ""]
+              "self-loop or a second edge between two places, §3.1.1) — and the rest found no candidate below the "
+              "threshold. A run at a cap is §5.2.1's \"never terminates\": its map outgrew the world.", ""]
     return lines
 
 

@@ -1,5 +1,5 @@
-"""The marker classes side by side: ``topomark bench comparison-markers`` (thesis §2.3.1, Table 2.3, L248–L272;
-§6.2.1, L1495, L1525; the experiment is :mod:`~topomark.reference.bench.plan_marker_classes`).
+"""The marker classes side by side: ``topomark bench comparison-markers`` (thesis §2.3.1, Table 2.3;
+§6.2.1 Cases 1 and 2; the experiment is :mod:`~topomark.reference.bench.plan_marker_classes`).
 
 Table 2.3 states, per marker class, whether exploration is solvable and its known cost bound; the thesis never
 measures its classic rows.  This report runs them — the footprints model with m + n homogeneous markers [18] and

@@ -1,9 +1,9 @@
 """Tables 6.1 and 6.2 measured: the reports of ``topomark bench table-6.1``, ``table-6.2``, ``figure-6.13``, ``section-6.2``.
 
-The thesis's Tables 6.1 and 6.2 (§6.2, L1472–L1993; quoted verbatim in
+The thesis's Tables 6.1 and 6.2 (§6.2, §6.2–§6.2.2; quoted verbatim in
 :data:`CLAIMS`) state, per class of markers, a marker count and an asymptotic
 cost bound; its Figures 6.11–6.13, 6.17 and 6.18 are lost, only their captions
-and the prose findings remain (L1772–L1881, L1931–L1993).  These reports put
+and the prose findings remain (§6.2.1, Algorithm 6.5, §6.2.2, Algorithm 6.6).  These reports put
 beside each claim what the kit algorithms (:mod:`~topomark.reference.algorithms.registrations`)
 measure on the bench's lattice-hole and complete-hole worlds
 (:mod:`~topomark.reference.bench.plan`), and say whether it held:
@@ -64,7 +64,7 @@ class Claim:
     """One algorithm's row of Table 6.1 / 6.2: the row verbatim, its cost bound, the marker count it states."""
 
     table: str
-    row: str  # the thesis's row, verbatim (Table 6.1, L1865–L1879 / Table 6.2, L1999–L2016)
+    row: str  # the thesis's row, verbatim (Table 6.1 / Table 6.2)
     cost: str | None  # "m", "mn", "m·d_max", "m²n"; None: no bound (Case 0 fails)
     stated_text: str
     stated: Callable[[int, int], int] | None  # the thesis's count for (n, m); None: not a count (Case 5)
@@ -76,45 +76,45 @@ CLAIMS: dict[str, Claim] = {
     "case-1a": Claim("6.1", T61.format("(m)", "edge (E-marker)", "none", "O(mn)"), "mn", "m",
                      lambda n, m: m, "m"),
     "case-1b": Claim("6.1", T61.format("(m)", "vertex + edge (V-E-marker)", "none", "O(mn)"), "mn",
-                     "m + 1 (L1510; m with the extension, L1512)", lambda n, m: m + 1, "m + 1"),
+                     "m + 1 (§6.2.1 Case 1b; m with the extension, §6.2.1 Case 1b)", lambda n, m: m + 1, "m + 1"),
     "case-2": Claim("6.1", T61.format("m + n", "edge (E-marker)", "none", "O(mn)"), "mn", "m + n",
-                    lambda n, m: m + n, "m + n − 1 (L1529)"),
+                    lambda n, m: m + n, "m + n − 1 (§6.2.1 Case 2)"),
     "case-3a": Claim("6.1", T61.format("Σ_{k=1}^{n−1} k", "vertex (V-marker)", "none", "O(m·d_max)"), "m·d_max",
-                     "Σ_{k=1}^{n−1} k", lambda n, m: sum_to(n - 1), "Σ_{k=1}^{n} k (L1577, Figure 6.6)"),
+                     "Σ_{k=1}^{n−1} k", lambda n, m: sum_to(n - 1), "Σ_{k=1}^{n} k (§6.2.1 Case 3b, Figure 6.6)"),
     "case-3b": Claim("6.1", T61.format("(Σ_{k=1}^{n−1} k)", "edge (E-marker)", "none", "O(m)"), "m",
                      "Σ_{k=1}^{n−1} k", lambda n, m: sum_to(n - 1), "Σ_{k=1}^{n−1} k"),
     "case-4": Claim("6.1", T61.format("m − ⌊n/2⌋", "edge (E-marker)", "closest-first", "O(mn)"), "mn",
-                    "m − ⌊n/2⌋", lambda n, m: m - n // 2, "m − ⌊(n−1)/2⌋ (L1663 corrected)"),
+                    "m − ⌊n/2⌋", lambda n, m: m - n // 2, "m − ⌊(n−1)/2⌋ (§6.2.1 Case 4 corrected)"),
     "case-4-mn": Claim("6.1", T61.format("m", "edge (E-marker)", "closest-first", "O(mn)"), "mn", "m",
-                       lambda n, m: m, "m + [n even] (L1665 corrected)"),
+                       lambda n, m: m, "m + [n even] (§6.2.1 Case 4 corrected)"),
     "case-5-v1": Claim("6.1", T61.format("unknown k > 3", "vertex, edge, or vertex+edge", "none", "O(m²n)"), "m²n",
                        "k > 3, not known relative to the world", None, "Σ_{k=1}^{n} k (K given: any)"),
     "case-5-v2": Claim("6.1", T61.format("unknown k > 3", "vertex, edge, or vertex+edge", "none", "O(m²n)"), "m²n",
                        "k > 3, not known relative to the world", None, "m + 4"),
     "case-5-edge": Claim("6.1", T61.format("unknown k > 3", "vertex, edge, or vertex+edge", "none", "O(m²n)"),
                          "m²n", "k > 3, not known relative to the world", None, "Σ_{k=1}^{n−1} k (K given: any)"),
-    "case-0": Claim("6.1", "Case 0 (not a row): \"this approach does not work in general\" (L1491)", None,
+    "case-0": Claim("6.1", "Case 0 (not a row): \"this approach does not work in general\"", None,
                     "n", lambda n, m: n, "n"),
     "case-dv-sum": Claim("6.2", "| Σ_{k=1}^{n−1} k | vertex (V-marker) | none | O(m·d_max) | O(m) |", "m",
                          "Σ_{k=1}^{n−1} k", lambda n, m: sum_to(n - 1), "Σ_{k=1}^{n} k"),
     "extension-1": Claim("6.2", "| Σ_{k=1}^{⌊m/2⌋} k | edge (E-marker) | closest-first | O(mn)* | O(m) |", "m",
-                         "Σ_{k=1}^{⌊m/2⌋} k (table; text ⌈m/2⌉, L1910)", lambda n, m: sum_to(m // 2),
+                         "Σ_{k=1}^{⌊m/2⌋} k (table; text ⌈m/2⌉, §6.2.2)", lambda n, m: sum_to(m // 2),
                          "Σ_{k=1}^{⌈m/2⌉} k"),
     "extension-2": Claim("6.2", "| Σ_{k=1}^{⌊(n−1)/2⌋} k | edge (E-marker) | closest-first + 'back to v_k' | O(mn)* "
-                                "| O(m) |", "m", "Σ_{k=1}^{⌊(n−1)/2⌋} k (table; text ⌈(n−1)/2⌉, L1929)",
+                                "| O(m) |", "m", "Σ_{k=1}^{⌊(n−1)/2⌋} k (table; text ⌈(n−1)/2⌉, §6.2.2)",
                          lambda n, m: sum_to((n - 1) // 2), "Σ_{k=1}^{⌈(n−1)/2⌉} k"),
 }
 CLAIMS.update({
     "case-1b-edgeinfo": Claim("6.2", "| (m) | vertex + edge (V-E-marker) | none | O(mn) | O(mn) |", "mn",
-                              "m + 1 (L1510; m with the extension, L1512)", lambda n, m: m + 1, "m + 1"),
+                              "m + 1 (§6.2.1 Case 1b; m with the extension, §6.2.1 Case 1b)", lambda n, m: m + 1, "m + 1"),
     "case-2-edgeinfo": Claim("6.2", "| m + n | edge (E-marker) | none | O(mn) | O(mn) |", "mn", "m + n",
-                             lambda n, m: m + n, "m + n − 1 (L1529)"),
+                             lambda n, m: m + n, "m + n − 1 (§6.2.1 Case 2)"),
     "case-1a-edgeinfo": Claim("6.2", "| (m) | edge (E-marker) | none | O(mn) | O(mn) |", "mn", "m",
                               lambda n, m: m, "m"),
     "case-4-edgeinfo": Claim("6.2", "| m − ⌊n/2⌋ | edge (E-marker) | closest-first | O(mn) | O(mn) |", "mn",
-                             "m − ⌊n/2⌋", lambda n, m: m - n // 2, "m − ⌊(n−1)/2⌋ (L1663 corrected)"),
+                             "m − ⌊n/2⌋", lambda n, m: m - n // 2, "m − ⌊(n−1)/2⌋ (§6.2.1 Case 4 corrected)"),
     "case-4-mn-edgeinfo": Claim("6.2", "| m | edge (E-marker) | closest-first | O(mn) | O(mn) |", "mn", "m",
-                                lambda n, m: m, "m + [n even] (L1665 corrected)"),
+                                lambda n, m: m, "m + [n even] (§6.2.1 Case 4 corrected)"),
     "case-5-directional": Claim("6.2", "| unknown k > 3 | vertex or edge or vertex+edge | none | O(m²n) | O(m²n) |",
                                 "m²n", "k > 3, not known relative to the world", None, "Σ_{k=1}^{n} k (K given: any)"),
 })
@@ -137,7 +137,7 @@ def write_report(experiment: str, out: Path, wall: float | None = None, plots: b
             write_report(name, out, None, plots)
     return write(experiment, out, wall, plots,
                  " (thesis §3.1.2), drop trips included; drop trips = the traversals made only to drop markers "
-                 "(Case 3b, L1629; extension-2, Algorithm 6.6 line 10), shown apart; "
+                 "(Case 3b; extension-2, Algorithm 6.6 line 10), shown apart; "
                  "markers used = the markers the robot dropped (the sum of the counts "
                  "of the simulator's drops). Every algorithm of a size explores the same worlds from the same "
                  "start. The thesis's Figures 6.11–6.13, 6.17, 6.18 are lost: only their captions "
@@ -166,7 +166,7 @@ def _body(experiment: str, out: Path) -> Body:
 
 
 def thesis_rows(table: str, algs: list[str]) -> list[str]:
-    """The thesis's rows of Table 6.x for these algorithms, verbatim (Table 6.1, L1865–L1879; 6.2, L1999–L2016)."""
+    """The thesis's rows of Table 6.x for these algorithms, verbatim (Table 6.1; 6.2, Table 6.2)."""
     if table == "6.1":
         head = ["| algorithm | Number | Drop Place | Constraints | Upper bounds (edge traversals) |", "|---|---|---|---|---|"]
     else:
@@ -240,7 +240,7 @@ def claims_table(exp, g: dict, tried: dict, algs: list[str]) -> list[str]:
         cost_ok = ("—" if v["slope"] is None else yes(v["slope"] <= SLOPE_TOLERANCE))
         if v["exact"]:
             cost_ok += f"; ≤ our exact bound on every world: {yes(not v['over_exact'])}"
-        lines.append(f"| {fam} | `{a}` | {('O(' + c.cost + ')') if c.cost else 'fails (L1491)'} | {v['worlds']} | "
+        lines.append(f"| {fam} | `{a}` | {('O(' + c.cost + ')') if c.cost else 'fails (§6.2.1 Case 0)'} | {v['worlds']} | "
                      f"{v['correct']}/{v['worlds']} | {v['used_max']:,.0f} / {v['used_mean']:,.1f} | {c.stated_text}"
                      f"{ratio} | {stated_ok} | {c.checked_text} | {yes(not v['over_checked'])} | "
                      f"{'—' if v['ratio_f'] is None else format(v['ratio_f'], '.4g')} | "
@@ -249,7 +249,7 @@ def claims_table(exp, g: dict, tried: dict, algs: list[str]) -> list[str]:
                     "K that lets phase I mark every place, and the rows with K = 4, 6, 10 below show phase II at work "
                     "(`figure-6.13` varies K too). Case 0 is expected to stop with "
                     "`failed` on worlds where several unexplored edges fit a marked place (\"the robot cannot "
-                    "determine\" which, L1491; the certified pairs in `tests/test_markers_case5.py` show that no "
+                    "determine\" which, §6.2.1 Case 0; the certified pairs in `tests/test_markers_case5.py` show that no "
                     "pick could be right).", ""]
 
 
@@ -294,7 +294,7 @@ def om_breakdown(exp, g: dict, algs: list[str]) -> list[str]:
         return []
     lines = ["## The O(m) algorithms against the lower bound m: what cost/m is made of", "",
              "new = the m new edges (1 per edge); drop trips = walks made only to drop markers (Algorithm 6.6 "
-             "line 10: back on e to drop markers and back; Case 3b's walk back to drop i markers on e, L1629); "
+             "line 10: back on e to drop markers and back; Case 3b's walk back to drop i markers on e); "
              "travel = walking S between frontier edges; probes = validation + retrace. Means per m over the worlds "
              "of the size; cost/m includes the drop trips.", "",
              "| family | algorithm | size | worlds | cost/m mean | cost/m max | new/m | drop trips/m | "

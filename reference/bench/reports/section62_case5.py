@@ -1,11 +1,12 @@
 """§6.2.1 Case 5 measured where phase II does the work: the ``table-6.1`` / ``table-6.2`` rows run with K = 4, 6, 10
-markers, and Figure 6.13 for Version-2 (thesis L1708–L1817, L1829–L1881; Tables 6.1, 6.2).
+markers, and Figure 6.13 for Version-2 (thesis §6.2.1 Case 5,
+Algorithms 6.4 and 6.5, and the evaluation that closes §6.2.1; Tables 6.1, 6.2).
 
 With the default kits every Case 5 version marks every place (phase I runs to
 the end), so its "unknown k > 3, O(m²n)" row would say nothing of phase II.
 The bench therefore also runs each version with K = 4, 6 and 10
 (:data:`~topomark.reference.bench.plan.CASE_5_K`; 4 is the least, "k > 3",
-L1708), and :func:`phase_two_shares` reports, per world family, algorithm, K and
+§6.2.1 Case 5), and :func:`phase_two_shares` reports, per world family, algorithm, K and
 size: the worlds mapped correctly (checked), the mean cost, the mean traversals
 phase II made testing its hypotheses (the walks and their retraces, column
 ``phase_two``) and their share of the cost.  The share is the mean over the
@@ -14,7 +15,7 @@ phase-II iteration are not counted in it (every version pays them).
 
 :func:`figure_613_v2` is Figure 6.13 for Version-2 ("Similar results were
 observed when we run version-2 ... with different fractions of (homogeneously)
-marked vertices", L1881): its cost per fraction beside the single directional
+marked vertices", §6.2.1): its cost per fraction beside the single directional
 marker algorithm (``basic``) and the m V-E-marker algorithm (``case-1b``), the
 upper and lower bounds the thesis names.
 
@@ -50,7 +51,7 @@ def phase_two_shares(g: dict, tried: dict, algs: list[str]) -> list[str]:
     if not keys:
         return []
     lines = ["## Case 5 with few markers: phase II's share of the cost", "",
-             "K = 4, 6, 10 markers (`--markers K`; 4 is the least, \"k > 3\", L1708): phase I runs out and phase II "
+             "K = 4, 6, 10 markers (`--markers K`; 4 is the least, \"k > 3\", §6.2.1 Case 5): phase I runs out and phase II "
              "(Algorithm 3.1's hypotheses, Algorithm 6.4 lines 16–35, Algorithm 6.5 lines 14–37) maps the rest. "
              "Phase II = the traversals made testing its hypotheses (walks and retraces); share = mean over the "
              "worlds of phase II ÷ cost.", "",
@@ -89,7 +90,7 @@ def figure_613_v2(g: dict, families: tuple[str, ...]) -> list[str]:
         mono = [all(fr[a][s] >= fr[b][s] for a, b in zip(FRACTIONS, FRACTIONS[1:]) if s in fr[a] and s in fr[b])
                 for s in sizes]
         near = [abs(math.log(fr["0"][s] / basic[s])) < abs(math.log(fr["0"][s] / v1b[s])) for s in sizes]
-        lines += ["", f"* \"Similar results were observed\" (L1881): cost non-increasing with the fraction at "
+        lines += ["", f"* \"Similar results were observed\" (§6.2.1): cost non-increasing with the fraction at "
                   f"{sum(mono)}/{len(mono)} sizes; at 0% nearer basic than case-1b (log scale) at "
                   f"{sum(near)}/{len(near)} sizes.", ""]
     return lines

@@ -2,7 +2,7 @@
 
 Part of the §6.2 reports (:mod:`~topomark.reference.bench.reports.section62`).  The
 figures themselves are lost; each finding the thesis states about them
-(L1772–L1881 and L1931–L1993, quoted here verbatim) is turned into a test on the measured
+(§6.2.1, Algorithm 6.5, §6.2.2, Algorithm 6.6, quoted here verbatim) is turned into a test on the measured
 means, stated with its criterion, and marked held or not:
 
 * Figure 6.11 (``table-6.1``): the costs of the undirected algorithms;
@@ -18,11 +18,11 @@ means, stated with its criterion, and marked held or not:
   (``case-3a``).
 
 Decision: the findings compare costs *without drop trips* (the traversals made
-only to drop markers: Case 3b's back over e and back, L1629, and extension-2's,
-Algorithm 6.6 line 10, L1950), and show the full cost beside.  The robot at v_u
-stands at an end of e and could drop there, as Algorithm 6.1 line 7 (L1540)
-does; the thesis's O(m) argument counts no motion for marking (L1629), and its
-Case 3b "very close to the optimal cost m" (L1822) fits only that cost.  The
+only to drop markers: Case 3b's back over e and back, and extension-2's,
+Algorithm 6.6 line 10), and show the full cost beside.  The robot at v_u
+stands at an end of e and could drop there, as Algorithm 6.1 line 7
+does; the thesis's O(m) argument counts no motion for marking, and its
+Case 3b "very close to the optimal cost m" (§6.2.1) fits only that cost.  The
 rule, for every algorithm: :mod:`topomark.reference.run.simulator`.  A runs
 file without the ``drop_trips`` column gives these findings as not measured.
 
@@ -59,9 +59,9 @@ def marked_places(used: float) -> int:
 
 
 COMPARED = ("Costs below are compared without drop trips (the traversals made only to drop markers: Case 3b's back "
-            "over e and back, L1629; extension-2's, Algorithm 6.6 line 10): at v_u the robot stands at an end of e "
-            "and could drop there, as Algorithm 6.1 line 7 (L1540) does, and the thesis's O(m) argument counts no "
-            "motion for marking (L1629). The full cost is shown beside.")
+            "over e and back; extension-2's, Algorithm 6.6 line 10): at v_u the robot stands at an end of e "
+            "and could drop there, as Algorithm 6.1 line 7 does, and the thesis's O(m) argument counts no "
+            "motion for marking (§6.2.1 Case 3b). The full cost is shown beside.")
 
 
 def means(g: dict, family: str, alg: str, column="cost", options: str = "") -> dict[int, float]:
@@ -133,7 +133,7 @@ def _fig_611_612(fam: str, g: dict) -> list[str]:
     lines += _finding("\"The Σ_{k=1}^{n−1} k E-marker algorithm, which has O(m) cost bound, provides the lowest cost, "
                       "which is very close to the optimal cost m.\"", "without drop trips, case-3b the lowest mean at "
                       f"{sum(lowest.values())}/{len(lowest)} sizes; its mean cost/m: {_ratio_text(per_m)} (close: < 3)"
-                      "; with its drop trips (two traversals per non-loop edge, L1629): the lowest at "
+                      "; with its drop trips (two traversals per non-loop edge, §6.2.1 Case 3b): the lowest at "
                       f"{sum(lowest_full.values())}/{len(lowest_full)} sizes, cost/m {_ratio_text(per_m_full)}",
                       (all(lowest.values()) and all(x < 3 for x in per_m.values())) if lowest else None)
     omn = ("case-1a", "case-1b", "case-2", "case-4", "case-4-mn")
@@ -170,17 +170,17 @@ def _fig_611_612(fam: str, g: dict) -> list[str]:
 
 EDGEINFO_QUOTES = {
     "case-2-edgeinfo": "\"Similar cost reduction is observed for the directional marker version of the m + n E-marker "
-                       "algorithm which has lower cost than the undirected version\" (L1965–L1979)",
+                       "algorithm which has lower cost than the undirected version\" (§6.2.2)",
     "case-1b-edgeinfo": "the m V-E-marker algorithm (Case 1b) \"can be improved as follows … so cost is reduced, "
-                        "although the cost bound remains unchanged\" (L1891; Figure 6.17 plots no V-E version)",
+                        "although the cost bound remains unchanged\" (§6.2.2; Figure 6.17 plots no V-E version)",
     "case-1a-edgeinfo": "\"The directional marker version of the m E-marker algorithm has lower cost than the "
-                        "undirected version algorithm.\" (L1965)",
+                        "undirected version algorithm.\" (§6.2.2)",
     "case-4-edgeinfo": "the extension of the E-marker algorithm with m − ⌊n/2⌋ markers (Case 4) \"can be improved with "
-                       "directional markers so cost is reduced, although the cost bound remains unchanged\" (L1891; "
+                       "directional markers so cost is reduced, although the cost bound remains unchanged\" (§6.2.2; "
                        "Figure 6.17 plots no closest-first version)",
     "case-4-mn-edgeinfo": "the extension of the m + n E-marker algorithm with m markers (Case 4) \"can be improved "
                           "with directional markers so cost is reduced, although the cost bound remains unchanged\" "
-                          "(L1891; Figure 6.17 plots no closest-first version)",
+                          "(§6.2.2; Figure 6.17 plots no closest-first version)",
 }
 
 
@@ -258,7 +258,7 @@ def fraction_table(heading: str, sizes: list[int], basic: dict[int, float], cell
 def figure_613(exp, g: dict) -> list[str]:
     lines = ["Fractions (the thesis gives none): `marked-fraction=f` gives Version-1 K = max(4, Σ_{i=1}^{⌊f·n⌋} i) "
              "markers, which mark exactly ⌊f·n⌋ places uniquely (v0 one marker, the j-th new place j + 1); K ≥ 4 is "
-             "the least the algorithm takes (\"k > 3\", L1708) and marks 2 places, so \"0%\" is 2 of n places. The "
+             "the least the algorithm takes (\"k > 3\", §6.2.1 Case 5) and marks 2 places, so \"0%\" is 2 of n places. The "
              "measured fraction (places marked ÷ n, from the markers used) is shown in brackets.", ""]
     for fam in FAMILIES6:
         fr = {f: means(g, fam, "case-5-v1", options=f"marked-fraction={f}") for f in FRACTIONS}
@@ -290,13 +290,13 @@ def figure_613(exp, g: dict) -> list[str]:
 
 
 def _trips_613(g: dict) -> str:
-    """Figure 6.13's drop trips: its algorithms drop where the robot stands (Algorithm 6.4 line 13, L1743)."""
+    """Figure 6.13's drop trips: its algorithms drop where the robot stands (Algorithm 6.4 line 13)."""
     trips = [drop_trips(r) for k, rs in g.items() if k[1] in ("case-5-v1", "basic", "case-3a") for r in rs]
     if not measured(*trips):
         return "Drop trips: not measured (runs.csv has no drop_trips column)."
     return (f"Drop trips (traversals made only to drop markers, part of the cost): {sum(trips):,.0f} over the "
             f"{len(trips)} runs of this figure — Version-1, basic and case-3a drop where the robot stands (Algorithm "
-            "6.4 line 13, L1743; Algorithm 6.2 line 12, L1594), so the costs above are the same with or without them.")
+            "6.4 line 13, Algorithm 6.4; Algorithm 6.2 line 12), so the costs above are the same with or without them.")
 
 
 def _within(experiment: str, fam: str, pts: dict[int, float]) -> dict[int, float]:

@@ -1,9 +1,9 @@
 """Table 6.3, Figure 6.24 and the comparison the thesis never prints: ``topomark bench table-6.3``, ``figure-6.24``,
-``comparison``, ``section-6.3`` (thesis §6.3, L1995–L2222; §2.3.1, L139–L152).
+``comparison``, ``section-6.3`` (thesis §6.3, §6.3–§6.4; §2.3.1).
 
-The thesis's Table 6.3 ("Solvability and cost bounds of different threads", L2214–L2222, quoted verbatim in
+The thesis's Table 6.3 ("Solvability and cost bounds of different threads", quoted verbatim in
 :data:`TABLE_63`) states an upper cost bound per thread class; its Figures 6.23 and 6.24 are lost, only their
-captions and the prose findings remain (L2185–L2210).  These reports put beside each statement what the thread
+captions and the prose findings remain (§6.3.3, §6.4).  These reports put beside each statement what the thread
 algorithms measure on the bench's worlds, and say whether it held:
 
 * **table-6.3** — every thread class (:data:`CLASSES`: the fixed l = ε thread is Algorithm 3.1 with the ``thread``
@@ -50,9 +50,9 @@ TABLE_63 = """| Length of thread | Need for retying | Upper bounds |
 | an arbitrary length thread l < c(G) | yes | O(mn) |
 | a long thread l = c(G) | no | O(mn) |
 | a very long thread l ≫ m | no | O(m) |"""
-SUMMARY_L2212 = ("\"Given the simplest form of thread, deterministic mapping is possible with cost O(m²n). The minimum "
-                 "cost for mapping is O(m) and this can be obtained with a sufficiently long thread. Overall the longer "
-                 "the thread the lower the cost.\" (L2212)")
+SUMMARY_64 = ("\"Given the simplest form of thread, deterministic mapping is possible with cost O(m²n). The minimum "
+              "cost for mapping is O(m) and this can be obtained with a sufficiently long thread. Overall the longer "
+              "the thread the lower the cost.\" (§6.4)")
 
 
 
@@ -111,7 +111,7 @@ def _body(experiment: str, out: Path) -> Body:
 
 def _table63(gr: dict) -> tuple[list[str], dict]:
     lines = ["## Table 6.3 (thesis, verbatim; caption \"Solvability and cost bounds of different threads.\")", "",
-             TABLE_63, "", SUMMARY_L2212, "",
+             TABLE_63, "", SUMMARY_64, "",
              "Ours: the fixed l = ε thread is Algorithm 3.1 (basic) with the `thread` lighthouse; l < c(G) is "
              "explore-explore (Algorithm 6.8) with l = 8; explore-merge (Algorithm 6.9) is not implemented (its merge "
              "procedure is in [59, 61], not in the thesis). cost/f is cost divided by the bound's function f "
@@ -149,7 +149,7 @@ def _bound_lines(stats: dict) -> list[str]:
 
 
 def _finding_lines(stats: dict) -> list[str]:
-    """Figure 6.23's three findings (L2187–L2195) and L2212's ordering, size by size."""
+    """Figure 6.23's three findings (§6.3.3) and §6.4's ordering, size by size."""
     def cost(name, s):  # the mean cost of a class at a size
         st = stats.get((name, s))
         return st["mean"] if st else None
@@ -161,10 +161,10 @@ def _finding_lines(stats: dict) -> list[str]:
                "threads\"", lambda s: _lt(cost("l = c(G)", s), cost("carried ε", s), cost("fixed ε", s))),
               ("\"a very long thread (with knots) … provides the lowest cost over all the thread classes considered\"",
                lambda s: _lt(cost("l ≫ m, knots", s), *(cost(c.name, s) for c in CLASSES[:4]))),
-              ("L2212 \"the longer the thread the lower the cost\" (carried ε > l = 8 > l = c(G) > knots)",
+              ("§6.4 \"the longer the thread the lower the cost\" (carried ε > l = 8 > l = c(G) > knots)",
                lambda s: _chain([cost(n, s) for n in ("carried ε", "explore-explore l=8", "l = c(G)",
                                                        "l ≫ m, knots")])))
-    lines = ["The thesis's findings (Figure 6.23, L2187–L2195), size by size (held: the mean costs are so ordered):",
+    lines = ["The thesis's findings (Figure 6.23, §6.3.3), size by size (held: the mean costs are so ordered):",
              "", "| finding | " + " | ".join(f"size {s}" for s in SIZES) + " |", "|---|" + "---|" * len(SIZES)]
     for text, test in claims:
         lines.append(f"| {text} | " + " | ".join(yes(test(s)) for s in SIZES) + " |")
@@ -213,7 +213,7 @@ def _figure624(gr: dict) -> tuple[list[str], dict]:
              "removed edges. Error bars show standard deviations.\" Text: \"The algorithm demonstrates cost reduction "
              "as l increases. Note that when the thread is sufficiently long (l ≥ c(G)), fixed exploration cost is "
              "produced (the algorithm acts as the l = c(G) algorithm).\" The l values are not given; ours: powers of "
-             "two up to the first l ≥ n = 400. The algorithm (not stated): explore-explore, Algorithm 6.8 (L2105).", "",
+             "two up to the first l ≥ n = 400. The algorithm (not stated): explore-explore, Algorithm 6.8 (§6.3.3).", "",
              "| l | worlds | mean cost ± sd | cost/m | vs l = 1 |", "|---:|---:|---:|---:|---:|"]
     first = by_l[LENGTHS[0]]
     for n in LENGTHS:

@@ -11,7 +11,7 @@ path choices open).
 :func:`algorithm_cases` are one algorithm's: a few small worlds (the triangle,
 C4, the 2×3 lattice, K4) under the kit the registry gives that algorithm on
 each (``kit_for(n, m, options)``: the thesis's exact budgets, e.g. Case 3a's
-Σ_{k=1}^{n−1} k, L1562–L1575), and, for an algorithm whose kit size is an
+Σ_{k=1}^{n−1} k), and, for an algorithm whose kit size is an
 option (``--markers``), the 2×3 lattice with the smallest kit it takes — where
 most run out of markers and must report failure (§6.2.1: "running out is the
 ``failed`` outcome"); and, as stress cases, the worst worlds ``topomark

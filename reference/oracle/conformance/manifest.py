@@ -10,7 +10,7 @@ every count and cost a positive integer — so a tampered suite is one
 one reference run per named policy, §3.3).  ``@2`` (version 2.x) holds the same
 ``cases`` and, in ``suites``, one suite per algorithm of the registry: each case
 a world, the kit that algorithm is given on it (the registry's
-``kit_for(n, m, options)``, §6.2.1 L1487), the bound, the expected outcome
+``kit_for(n, m, options)``, §6.2.1), the bound, the expected outcome
 (``correct``, or ``failed`` where the kit runs out), and topomark's reference run
 (cost, marker operations by kind, trace, map).  Both stay readable.
 """

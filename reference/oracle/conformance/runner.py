@@ -14,7 +14,7 @@ quotes as ":data:`~topomark.reference.oracle.run_external.GAVE_UP`: ...")
 without overdrawing its kit: a map, an overdrawn kit or a crash fails it.
 A correct map that cost more edge traversals than the algorithm's exact cost
 bound on that world (where the thesis states one, :mod:`~topomark.reference.algorithms.bounds`) fails
-with reason ``bound``: it is not that algorithm.  Each row compares the program's cost (edge traversals, §3.1.2, L399) and
+with reason ``bound``: it is not that algorithm.  Each row compares the program's cost (edge traversals, §3.1.2) and
 marker operations with topomark's own run *of the same algorithm* on the same
 case, and the columns say what they compare.
 """

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """A minimal explorer speaking topomark/protocol@2 with one undirected *movable* vertex marker: Dudek et al.'s
-algorithm (thesis §2.3.1, L148-L150, Figure 2.2).
+algorithm (thesis §2.3.1, Figure 2.2).
 
 Standalone on purpose (standard library only, no topomark import): copy it and
 change it.  Run it under topomark, which plays the world and judges the map:
@@ -10,17 +10,17 @@ change it.  Run it under topomark, which plays the world and judges the map:
 The robot keeps a map S of the explored part and the set U of unexplored
 darts (v, i): exit i of map vertex v.  Each step takes the nearest e = (v_k, i)
 from U, walks S to v_k and follows e to the unknown end v_u.  "Have I been
-here before?" (L148): it drops the marker at v_u, comes back over e and visits
+here before?" (§2.3.1): it drops the marker at v_u, comes back over e and visits
 the known vertices that could be v_u, looking for the marker.
 
 * Not found: v_u is new.  The robot walks back to v_k, over e once more, picks
   the marker up, and adds v_u to S with e as its exit 0.
-* Found at v_k': a loop.  Back-link validation (L150): the robot picks the
+* Found at v_k': a loop.  Back-link validation (§2.3.1): the robot picks the
   marker up, drops it at v_k, goes back to v_k' and tries v_k''s unexplored
   exits one by one; the one that leads to the marker is e'.  It picks the
   marker up at v_k.
 
-The world is a simple graph (L139: "Redundant or self-referential edges are
+The world is a simple graph (§2.3.1: "Redundant or self-referential edges are
 prohibited"), so v_u is neither v_k nor a neighbour of v_k in S: those are not
 searched.  The marker is back in the robot's hand at the end of every step, so
 the snapshots' S and the final map show no marker.  Map vertex 0 is where the
@@ -105,14 +105,14 @@ class Explorer:
                 and any(h[0] == v for h in self.U)]
 
     def search(self, candidates):
-        """Place validation (L148): visit the candidates looking for the marker; where it lies, or None."""
+        """Place validation (§2.3.1): visit the candidates looking for the marker; where it lies, or None."""
         for v in candidates:
             if self.walk_to(v, look=True):
                 return self.pos[0]
         return None
 
     def back_link(self, vk, i, x):
-        """Back-link validation (L150), the robot at v_k' = x with the marker: the exit e' of x that e leads to."""
+        """Back-link validation (§2.3.1), the robot at v_k' = x with the marker: the exit e' of x that e leads to."""
         self.operate("pick_up")
         open_exits = [j for v, j in self.U if v == x]
         if len(open_exits) == 1:  # one candidate: no search needed

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """A minimal explorer speaking topomark/protocol@2 with m undirected immovable edge markers: thesis §6.2.1
-Case 1a, the E-marker algorithm (L1497-L1506, Figure 6.4; the footprints model of [18]).
+Case 1a, the E-marker algorithm (Figure 6.4; the footprints model of [18]).
 
 Standalone on purpose (standard library only, no topomark import): copy it and
 change it.  Run it under topomark, which plays the world and judges the map;
@@ -16,11 +16,11 @@ explored edge carries one marker and nothing else does.
 
 * No other edge of v_u marked: v_u was never visited (every visited vertex has
   a marked edge: the one it was found by, or at v0 the first edge explored,
-  L1504).  It joins S with e as its exit 0.
+  §6.2.1 Case 1a).  It joins S with e as its exit 0.
 * c other edges marked: v_u is known.  The robot goes back over e to v_k and
   visits the known vertices with v_u's degree, an unexplored exit and c
   explored (marked) edges, "looking for the vertex which has one more marked
-  edge than is shown on the map" (L1506): that vertex is v_k', the unexpected
+  edge than is shown on the map" (§6.2.1 Case 1a): that vertex is v_k', the unexpected
   marked edge is e'.
 
 The world is a simple graph, as the map file's edge markers (``between``)
@@ -110,7 +110,7 @@ class Explorer:
         return extra[0] if extra else None
 
     def search(self, vk, degree, c):
-        """Place and back-link validation at once (L1506): the dart e' = (v_k', j) that e leads to."""
+        """Place and back-link validation at once (§6.2.1 Case 1a): the dart e' = (v_k', j) that e leads to."""
         near = {vk} | {w_j[0] for w_j in self.exits[vk] if w_j}
         for v in self.tree(vk):  # nearest first
             explored = sum(1 for w_j in self.exits[v] if w_j)

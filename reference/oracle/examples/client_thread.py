@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """A minimal explorer speaking topomark/protocol@2 with a thread of length l = ε that it carries and ties
-again where it needs it: thesis §6.3.1, "Mapping by carrying a l = ε thread" (L2032-L2036).
+again where it needs it: thesis §6.3.1, "Mapping by carrying a l = ε thread".
 
 Standalone on purpose (standard library only, no topomark import): copy it and
 change it.  Run it under topomark, which plays the world and judges the map:
@@ -8,14 +8,14 @@ change it.  Run it under topomark, which plays the world and judges the map:
     topomark run-external WORLD --kit '{"thread": 0}' -- python3 client_thread.py
 
 An l = ε thread is only long enough to be tied at a vertex and laid out toward
-one of its exits (L2028): a directional marker that the robot can carry, so
+one of its exits (§6.3.1): a directional marker that the robot can carry, so
 the algorithm is Dudek's single movable marker algorithm with the thread as a
-directional marker (L2034, after [27]; see client_dudek.py).  The robot keeps
+directional marker (§6.3.1, after [27]; see client_dudek.py).  The robot keeps
 a map S of the explored part and the set U of unexplored darts (v, i): exit i
 of map vertex v.  Each step takes the nearest e = (v_k, i) from U, walks S to
 v_k and follows e to the unknown end v_u.  "At each new place v_u via e, the
 robot ties the thread at v_u and lays it out toward the entry edge.  The robot
-then searches S looking for the thread" (L2034):
+then searches S looking for the thread" (§6.3.1):
 
 * not found: v_u is new.  The robot walks back to v_k, over e once more,
   unties the thread, and adds v_u to S with e as its exit 0;
@@ -27,7 +27,7 @@ On the wire, tying is ``{"type": "thread", "op": "tie", "direction": 0}``
 (toward the entry edge); the robot then lets go of the free end
 (``"op": "leave"``), since an l = ε thread cannot be laid along an edge: a
 move holding it is refused.  ``"op": "untie"`` at the tied vertex puts the
-thread back in hand.  The world is a simple graph (L139), so v_u is neither
+thread back in hand.  The world is a simple graph (§2.3.1), so v_u is neither
 v_k nor a neighbour of v_k in S: those are not searched.  The thread is back
 in the robot's hand at the end of every step, so the snapshots' S and the
 final map show no thread.  Map vertex 0 is where the robot started, its exit 0

@@ -118,7 +118,7 @@ class World:
 
 
     def thread(self, msg):
-        """An @2 thread operation, for a thread of length ε (l = 0, §6.3 L2028) only; returns why refused, or None."""
+        """An @2 thread operation, for a thread of length ε (l = 0, §6.3.1) only; returns why refused, or None."""
         op, d = msg.get("op"), self.degree()
         if self.kit.get("thread") != 0:
             return "this example provider knows only a thread of length ε (kit {\"thread\": 0})"
