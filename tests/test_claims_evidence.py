@@ -8,7 +8,7 @@ The rules, checked on every row:
   the same field (:func:`citations`).
 * **A figure is on a cited page.**  Each figure of a measured row's evidence and source, and of any text that
   follows a page named in another row, occurs in a page the row names (:func:`figures`: a number, with its
-  ``%``; thesis references — ``§6.2``, ``Figure 6.17``, ``Table 4.1``, ``(3.3)``, ``L1629`` — and
+  ``%``; thesis references — ``§6.2``, ``Figure 6.17``, ``Table 4.1``, ``(3.3)``, ``Algorithm 3.1 line 5`` — and
   ``commands`` are not figures).
 * **An unpublished sweep says so.**  A measured row that names no page says ``not published`` and gives the
   command that reproduces it, and quotes no figure: there is no page to check one against.  A row that
@@ -27,11 +27,11 @@ from topomark.reference.claims import ledger
 ROOT = Path(__file__).resolve().parents[1]
 PAGE = re.compile(r"docs/[\w./-]+\.md")
 QUOTE = re.compile(r"(?<![\w])'([^']+)'(?![\w])")
-REFERENCE = re.compile(r"`[^`]*`|§[\d.]+|\bL\d+(?:[–-]L?\d+)?|\((?:\d+\.\d+)\)|"
+REFERENCE = re.compile(r"`[^`]*`|§[\d.]+|\bline \d+\b|\((?:\d+\.\d+)\)|"
                        r"\b(?:Figures?|Tables?|Algorithms?|Case|Cases|Chapter|Enhancements?|Version|Lemma|Rows?)"
                        r"[ -](?:\d+(?:\.\d+)*)(?:\s*(?:[–-]|…|,|and)\s*\d+(?:\.\d+)*)*|"
                        r"\b[a-z]+\d*(?:[-+][a-z0-9]+)+|\b[a-zA-Z]\s*[=≥≤<>]\s*\d+(?:,\s*\d+)*")
-"""What is not a figure: code, thesis references (§6.2, L1629, (3.3), Figure 6.17, Tables 4.1–4.8), names
+"""What is not a figure: code, thesis references (§6.2, Algorithm 3.1 line 5, (3.3), Figure 6.17, Tables 4.1–4.8), names
 (``case-1a``, ``enh3+4``) and parameters (``d = 2``, ``K = 4, 6, 10``)."""
 FIGURE = re.compile(r"(?<![\w.,+])[−-]?\d[\d,]*(?:\.\d+)?%?(?!\w)")
 UNPUBLISHED = "not published"
@@ -107,7 +107,7 @@ def test_every_quote_and_figure_the_ledger_cites_is_on_its_page():
 
 
 def claim(**fields) -> ledger.Claim:
-    row = {"id": "x", "section": "§4.1", "lines": "L1", "claim": "c", "backing": "measured", "verdict": "held",
+    row = {"id": "x", "section": "§4.1", "where": ("§4.1",), "claim": "c", "backing": "measured", "verdict": "held",
            "experiments": ("table-4.1",), "command": "topomark bench table-4.1"} | fields
     return ledger.Claim(**row)
 
@@ -135,5 +135,5 @@ def test_a_row_that_cites_what_its_page_holds_passes_and_references_are_not_figu
     good = claim(backing="proved", evidence=f"Up to n = 9 (docs/census.md, 'Results past n = 7': {worlds} worlds)")
     assert problems(good) == []
     assert problems(claim(evidence="Held.", source=f"{UNPUBLISHED}; reproduce with `topomark bench tables`")) == []
-    assert figures("§6.2.1, Figure 6.17, Tables 4.1–4.8, (3.3), L1629, `bench table-6.1`, case-1a, enh3+4, d = 2, "
+    assert figures("§6.2.1, Figure 6.17, Tables 4.1–4.8, (3.3), Algorithm 3.1 line 5, `bench table-6.1`, case-1a, enh3+4, d = 2, "
                    "K = 4, 6, 10, 3m: 1.026 / 0.957 and 85–98%, −1,487%") == ["1.026", "0.957", "85", "98%", "-1,487%"]
