@@ -35,6 +35,32 @@ from topomark.spec.world import World
 __all__ = ["SMALL_WORLDS", "FIGURE_3_4", "make_world", "bare"]
 
 
+def pytest_addoption(parser):
+    parser.addoption("--all", action="store_true", dest="run_all",
+                     help="run every test, the slow ones (@pytest.mark.slow) included; CI does")
+
+
+def pytest_collection_modifyitems(config, items):
+    """``python3 -m pytest`` runs the fast tests; ``--all`` (or ``-m`` naming the marker) runs the slow ones too.
+
+    A test is marked slow when its cases together take 2 s or more on an idle machine: subprocess-heavy
+    hostile inputs, Z3 and census cross-checks, fresh installs, whole conformance suites.  The slow tests are
+    deselected, not skipped, and the summary line counts them.
+    """
+    if config.getoption("run_all") or config.getoption("markexpr"):
+        return
+    slow = [item for item in items if item.get_closest_marker("slow")]
+    if slow:
+        config.hook.pytest_deselected(items=slow)
+        items[:] = [item for item in items if not item.get_closest_marker("slow")]
+
+
+def pytest_report_header(config):
+    if not (config.getoption("run_all") or config.getoption("markexpr")):
+        return "fast tests only: the slow ones (@pytest.mark.slow) are deselected; run them with --all"
+    return None
+
+
 def make_world(text: str) -> World:
     """The world ``topomark explore TEXT`` explores: a generator text (or a world file), read by the CLI's reader."""
     return resolve_world(text)

@@ -33,6 +33,7 @@ def test_worlds_are_fixed_by_seed_and_shared_by_every_algorithm_of_a_row():
     assert len({frozenset(v) for v in by_alg.values()}) == 1 and len(by_alg["basic"]) == 4
 
 
+@pytest.mark.slow
 def test_a_kept_world_is_unchanged_by_every_algorithm_run_on_it():
     """world_for keeps its last worlds for the next runs of a sweep: no run may change one (rotation, markers,
     start), whatever it drops, lays or places as a lighthouse."""

@@ -72,6 +72,7 @@ def _bench(tmp_path, experiment: str, size: str, capsys) -> tuple[int, dict]:
     return code, json.loads(capsys.readouterr().out)
 
 
+@pytest.mark.slow
 def test_section_62_exits_0_when_case_0_fails_as_the_thesis_says_and_1_when_its_entry_expects_correct(
         tmp_path, capsys, monkeypatch):
     code, out = _bench(tmp_path, "section-6.2", "24", capsys)

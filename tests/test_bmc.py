@@ -31,6 +31,7 @@ def _agree(a, b):
         assert pa[:-1] == pb[:-1] and pa[-1] != pb[-1]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("pair", ["figure_3_3", "figure_3_4", "figure_3_6", "figure_3_21a", "figure_6_1a",
                                   "figure_6_1b"])
 def test_thesis_pairs(pair):

@@ -63,6 +63,7 @@ def test_burnside_reproduces_the_issue_figures():
     assert burnside.count_by_size(7, 4) == {2: 1, 3: 2, 4: 9, 5: 275, 6: 7229, 7: 213986}
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("max_vertices,max_degree", [(6, 4), (8, 3), (6, 2)])
 def test_burnside_equals_enumeration(max_vertices, max_degree):
     assert burnside.count_by_size(max_vertices, max_degree) == enum.count_by_size(max_vertices, max_degree)

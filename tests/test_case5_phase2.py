@@ -51,6 +51,7 @@ def test_default_kit_never_reaches_phase_two(name, text):
     assert out.explorer.phase_two_from is None and out.explorer.stats["phase_two"] == 0
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", ["case-5-edge", "case-5-directional"])
 def test_new_versions_map_every_small_world_from_every_start_with_four_markers(name):
     """Every embedded world of 3..5 places and degree ≤ 4, from every start, K = 4 (the least kit, §6.2.1 Case 5)."""

@@ -77,6 +77,7 @@ def test_figure_pairs_share_a_language():
 
 
 # -- the census -------------------------------------------------------------------------
+@pytest.mark.slow
 @pytest.mark.parametrize("class_name", ["none", "undirected-vertex", "directional-vertex", "undirected-edge"])
 def test_census_matches_brute_force(class_name):
     result = census(class_name, 4, 3)

@@ -108,6 +108,7 @@ def test_shard_summary_picks_the_least_pair_and_combine_is_associative():
 
 
 # -- sharded = in memory ----------------------------------------------------------------
+@pytest.mark.slow
 @pytest.mark.parametrize("class_name", sorted(MARKER_CLASSES))
 def test_sharded_census_equals_in_memory(class_name, tmp_path):
     assert sharded_census(class_name, 5, 3, tmp_path, task_worlds=6, shards=3) == census(class_name, 5, 3)

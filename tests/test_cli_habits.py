@@ -217,6 +217,7 @@ def _children(pid: int) -> list[int]:
     return found
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("gap", [0.0, 0.05, 0.3])
 def test_ctrl_c_twice_exits_130_quietly(tmp_path, gap):
     """Ctrl-C reaches the whole process group (leader and workers), twice, ``gap`` seconds apart."""

@@ -56,6 +56,7 @@ def test_head_sees_the_verdict_in_a_real_pipe(argv, code):
     assert done.stdout.strip() == str(code), done.stderr
 
 
+@pytest.mark.slow
 def test_conformance_run_piped_to_head_exits_1_for_a_failing_client(tmp_path):
     """``conformance run … | head -1; echo ${PIPESTATUS[0]}`` prints 1 for a failing client; so does a reader that
     has gone before the first line."""

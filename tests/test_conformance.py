@@ -49,6 +49,7 @@ def manifest(root: Path) -> dict:
     return json.loads((root / "manifest.json").read_text())
 
 
+@pytest.mark.slow
 def test_manifest_describes_version_layout_and_cases(suite):
     m = manifest(suite)
     assert m["format"] == "topomark/conformance@2" and m["version"] == conformance.SUITE_VERSION
@@ -118,6 +119,7 @@ def test_export_refuses_a_non_empty_directory(suite, capsys):
     assert "must be new or empty" in capsys.readouterr().err
 
 
+@pytest.mark.slow
 def test_the_example_client_passes_the_whole_suite(suite, capsys):
     code = main(["conformance", "run", str(suite), "--json", "--", *CLIENT])
     data = json.loads(capsys.readouterr().out)

@@ -40,6 +40,7 @@ def cases(root: Path, algorithm: str) -> dict:
     return {c["name"]: c for c in suites(root)[algorithm]["cases"]}
 
 
+@pytest.mark.slow
 def test_each_case_carries_the_registry_kit_bound_and_reference_run(suite):
     got = suites(suite)
     assert set(got) == set(CHOSEN) | {"dudek", "dudek-directional", "thread-carried", "thread-circumference",
@@ -62,6 +63,7 @@ def test_each_case_carries_the_registry_kit_bound_and_reference_run(suite):
     assert budget["kit"] == {"undirected-vertex": 2} and budget["options"] == {"markers": 2}
 
 
+@pytest.mark.slow
 def test_lint_passes_and_says_what_it_holds(suite, capsys):
     assert main(["conformance", "lint", str(suite), "--json"]) == 0
     out = json.loads(capsys.readouterr().out)
@@ -78,6 +80,7 @@ def _case(m: dict, algorithm: str, name: str) -> dict:
     return next(c for s in m["suites"] if s["algorithm"] == algorithm for c in s["cases"] if c["name"] == name)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("change, words", [
     (lambda m: _case(m, "case-3a", "triangle").update(kit={"undirected-vertex": 2}), "is given"),
     (lambda m: _case(m, "case-3a", "triangle")["reference"].update(cost=99), "manifest cost 99"),
@@ -109,6 +112,7 @@ def test_topomark_as_client_passes_its_own_suite_with_ratio_one(suite, capsys):
     assert budget["reason"] == "failed" and "out of markers" in budget["message"] and budget["ratio"] == 1.0
 
 
+@pytest.mark.slow
 def test_a_family_pick_ups_pools_edge_counts_and_threads(suite, capsys):
     for argv, client in ((["--family", "movable-markers"], "dudek,dudek-directional"),
                          (["--family", "threads", "-k", "lattice"], "thread-carried,thread-circumference"),

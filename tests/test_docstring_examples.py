@@ -38,6 +38,7 @@ def _module_names() -> list[str]:
 MODULES = _module_names()
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", MODULES)
 def test_docstring_examples(name):
     module = importlib.import_module(name)

@@ -108,6 +108,7 @@ def test_the_edge_marker_client_one_marker_short_stops_and_the_world_refuses_the
     assert (code, report["reason"]) == (1, "marker") and "holds 2 edge marker(s): none left, 1 asked for" in report["message"]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("algorithm", CLIENTS)
 def test_each_client_passes_its_algorithms_conformance_suite(algorithm, tmp_path, capsys):
     """``conformance export --algorithm NAME`` then ``conformance run --algorithm NAME -- python CLIENT``: every

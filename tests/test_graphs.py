@@ -45,6 +45,7 @@ def test_augmentation_gives_exactly_the_atlas_classes(d):
         assert _match(generate(n, d), _atlas(n, d)), (n, d)
 
 
+@pytest.mark.slow
 def test_counts_match_published_figures():
     # D = 3: Wolfram, A New Kind of Science (2002), notes to ch. 9 sec. 7 "Trivalent networks";
     # cubic ones: OEIS A002851.  D = 4: OEIS A121941; quartic ones: OEIS A006820.

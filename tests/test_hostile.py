@@ -581,6 +581,7 @@ WORLD_SLOTS = ["explore", "world --show", "iso A", "iso B", "check-map WORLD", "
                "distinguish B"]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("item", WORLD_CORPUS)
 @pytest.mark.parametrize("slot", WORLD_SLOTS)
 def test_malformed_file_in_every_slot(cli, corpus, slot, item):
@@ -605,6 +606,7 @@ def _trace_with(corpus: Corpus, name: str, event: str, line: bytes) -> Path:
     return path
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("item", list(WORLD_TEXTS))
 def test_trace_line_replaced_by_corpus_item(cli, corpus, item):
     line = WORLD_TEXTS[item](corpus.valid_obj).replace(b"\n", b" ")
@@ -660,6 +662,7 @@ def _hostile_suite(corpus: Corpus, item: str, tag: str) -> Path:
     return d
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("item", MANIFEST_CORPUS)
 @pytest.mark.parametrize("action", ["lint", "run"])
 def test_hostile_conformance_manifest(cli, corpus, action, item):
@@ -686,6 +689,7 @@ def _assert_fail(run: Run, reasons: tuple[str, ...]) -> None:
         f"not a short message ({len(run.out)} + {len(run.err)} chars):\n{run.describe()}"
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("item", list(PROTOCOL_LINES))
 def test_hostile_protocol_line_from_explorer(cli, corpus, item):
     line = corpus.protocol_dir / f"{item}.line"
@@ -730,6 +734,7 @@ GENERATOR_ARGS = {
 }
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("command", ["explore", "world"])
 @pytest.mark.parametrize("item", list(GENERATOR_ARGS))
 def test_hostile_generator_argument(cli, command, item):
@@ -800,6 +805,7 @@ def _option_argv(cmd: str, option: str, value: str, c: Corpus, out: Path) -> lis
     return ["bench", "lattice", "--no-plots", "--quiet", *[f"{k}={x}" for k, x in base.items()]]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("cmd,option,value", _option_cases(),
                          ids=[f"{c}-{o}={v if len(v) < 12 else v[:6] + '...'}" for c, o, v in _option_cases()])
 def test_hostile_option_value(cli, corpus, tmp_path, cmd, option, value):
@@ -876,6 +882,7 @@ FUZZ = settings(max_examples=200, deadline=None, database=None,
                                        HealthCheck.function_scoped_fixture])
 
 
+@pytest.mark.slow
 @FUZZ
 @given(data=st.data())
 def test_fuzz_world_loader(corpus, data):

@@ -226,6 +226,7 @@ def _alive(pid: int) -> bool:
     return stat[stat.rindex(")") + 2] not in "ZX"
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("signum", [signal.SIGKILL, signal.SIGTERM, signal.SIGHUP, signal.SIGINT])
 def test_no_worker_outlives_the_census_leader(tmp_path, signum):
     """A census far too large to finish (n <= 9), killed once its two workers run."""
@@ -284,6 +285,7 @@ def _http_server():
     return server, f"tcp://127.0.0.1:{server.server_address[1]}"
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("start", [_silent_server, _http_server], ids=["silent", "http"])
 def test_an_address_where_no_dask_scheduler_answers_is_bad_input_in_bounded_time(start, capsys):
     server, address = start()
@@ -298,6 +300,7 @@ def test_an_address_where_no_dask_scheduler_answers_is_bad_input_in_bounded_time
     assert err.count("\n") == 1 and address in err and "Traceback" not in err
 
 
+@pytest.mark.slow
 def test_a_scheduler_without_workers_is_bad_input_after_the_wait(monkeypatch, capsys):
     import distributed
     monkeypatch.setattr(census_exec, "WORKER_WAIT", 2)

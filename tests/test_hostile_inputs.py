@@ -92,6 +92,7 @@ WORLD_FILES = {
 }
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("case", WORLD_FILES)
 def test_a_hostile_world_file_is_refused(case, tmp_path):
     make, words = WORLD_FILES[case]
@@ -128,6 +129,7 @@ GENERATOR_ARGS = {
 }
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("case", GENERATOR_ARGS)
 def test_a_hostile_generator_argument_is_refused(case, tmp_path):
     spec, words = GENERATOR_ARGS[case]
@@ -304,6 +306,7 @@ def suite_copy(small_suite, tmp_path) -> Path:
     return dest
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("case", TAMPERED)
 def test_conformance_run_refuses_a_tampered_manifest(case, suite_copy):
     tamper, words = TAMPERED[case]
@@ -311,6 +314,7 @@ def test_conformance_run_refuses_a_tampered_manifest(case, suite_copy):
     assert_refused(cli("conformance", "run", suite_copy, "--", *CLIENT), *words)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("case", list(TAMPERED_FILES) + ["cost 0", "world path escapes", "manifest non-UTF-8"])
 def test_conformance_lint_refuses_a_tampered_suite(case, suite_copy):
     tamper, words = {**TAMPERED, **TAMPERED_FILES}[case]

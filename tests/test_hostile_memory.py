@@ -57,6 +57,7 @@ def _peak(command: list[str], moves: int, record: bool) -> int:
         assert result.reason == "limit" and result.cost == moves
 
 
+@pytest.mark.slow
 def test_drive_without_a_trace_holds_no_growing_record_list(tmp_path):
     """3,000 more moves of a provider that never ends: without a trace the peak grows by far less than the
     records would take (about 350 bytes each, as the recording run shows)."""

@@ -45,6 +45,7 @@ COMMANDS = {
 }
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("case", ["missing-dir", "directory", "dev-full"])
 @pytest.mark.parametrize("command", sorted(COMMANDS))
 def test_unwritable_output_is_bad_input_naming_the_path(tmp_path, command, case):
@@ -63,6 +64,7 @@ def test_unwritable_output_is_refused_before_the_run(tmp_path):
     assert not (tmp_path / "t.jsonl").exists()
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("case", ["file", "under-a-file", "report-only-missing"])
 def test_bench_out_that_is_not_a_directory_is_bad_input(tmp_path, case):
     (tmp_path / "afile").write_text("x")
@@ -158,6 +160,7 @@ PEAK = textwrap.dedent("""
 """)
 
 
+@pytest.mark.slow
 def test_checked_exploration_without_trace_keeps_memory_small():
     """Measured: 50 MB peak for lattice-hole 30x30, checked (368 MB when the trace and every iteration's
     hypotheses were kept; 4.9 GB at 60x60).  2x headroom."""
@@ -199,6 +202,7 @@ def test_a_held_directory_is_refused_with_the_holder_pid(tmp_path):
     assert cli(*BENCH, "--out", tmp_path).returncode == 0  # released
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("damage", ["second-header", "truncated-line"])
 def test_damaged_csv_is_repaired_with_a_note(tmp_path, damage):
     assert cli(*BENCH, "--out", tmp_path).returncode == 0
@@ -224,6 +228,7 @@ def _not_an_integer(row: list[str]) -> list[str]:
     return [row[0], "abc", *row[2:]]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("damage, what", [(_short, "fields where the header has"),
                                           (_not_an_integer, "column 2 (size): 'abc' is not a non-negative integer")])
 def test_unrepairable_csv_is_bad_input_naming_the_line(tmp_path, damage, what):

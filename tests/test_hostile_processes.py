@@ -138,6 +138,7 @@ def assert_verdict(proc: subprocess.CompletedProcess, reasons: tuple[str, ...]) 
 
 
 # -- processes that outlive the verdict ----------------------------------------------
+@pytest.mark.slow
 @pytest.mark.parametrize("kind, children", [("fork-exit", 2), ("fork-silent", 2), ("setsid-orphan", 2),
                                             ("setsid-exit", 2), ("ignore-term", 2)])
 def test_run_external_kills_everything_the_program_started(tmp_path, kind, children):
@@ -149,6 +150,7 @@ def test_run_external_kills_everything_the_program_started(tmp_path, kind, child
     assert_all_gone(recorded(pids, children))
 
 
+@pytest.mark.slow
 def test_drive_kills_everything_the_provider_started(tmp_path):
     cmd, pids = hostile(tmp_path, "setsid-orphan")
     proc, took = topomark("drive", "--message-timeout", "2", "--timeout", "3", "--", *cmd, timeout=3)
@@ -165,6 +167,7 @@ def suite(tmp_path_factory):
     return directory
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("kind, reason", [("fork-exit", ("timeout", "crash")), ("deep", ("garbage",))])
 def test_conformance_run_fails_the_case_and_kills_everything(suite, tmp_path, kind, reason):
     cmd, pids = hostile(tmp_path, kind)
@@ -196,6 +199,7 @@ def test_deep_nesting_and_huge_integers_decode_as_garbage():
         assert exc.value.kind == "garbage" and len(str(exc.value)) < 1000
 
 
+@pytest.mark.slow
 def test_a_stderr_flood_without_newlines_costs_bounded_memory_and_gets_a_verdict(tmp_path):
     cmd, pids = hostile(tmp_path, "stderr-flood", "200")
     code = ("import resource, subprocess, sys\n"

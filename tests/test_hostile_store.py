@@ -92,6 +92,7 @@ def test_a_runs_csv_over_the_size_cap_is_refused(tmp_path, capsys):
 
 
 # -- 2: damaged values are bad input naming file, line and column --------------------------------------------------
+@pytest.mark.slow
 @pytest.mark.parametrize("column, value, words", [
     ("cost", "nan", ("column 11 (cost)", "'nan' is not a finite non-negative number")),
     ("cost", "inf", ("column 11 (cost)", "'inf'")),

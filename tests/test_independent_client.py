@@ -73,6 +73,7 @@ def run(suite: Path, client: Path, capsys) -> tuple[int, list[dict]]:
     return code, json.loads(capsys.readouterr().out)["cases"]
 
 
+@pytest.mark.slow
 def test_the_independent_client_passes_its_suite(suite, capsys):
     capsys.readouterr()
     code, cases = run(suite, CLIENT, capsys)
@@ -80,6 +81,7 @@ def test_the_independent_client_passes_its_suite(suite, capsys):
     assert all(c["cost"] == c["reference"]["cost"] for c in cases)  # the thesis leaves it no choice here
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("fault", sorted(VERDICTS))
 def test_each_seeded_fault_fails_with_its_verdict(fault, suite, tmp_path, capsys):
     text = CLIENT.read_text()

@@ -140,6 +140,7 @@ def outside(tmp_path):
     return d
 
 
+@pytest.mark.slow
 def test_install_into_a_fresh_venv(tmp_path, outside):
     venv_dir = tmp_path / "venv"
     python = _make_venv(venv_dir)
@@ -158,6 +159,7 @@ def test_install_into_a_fresh_venv(tmp_path, outside):
     _console_script(venv_dir, outside)
 
 
+@pytest.mark.slow
 def test_editable_install_into_a_fresh_venv(tmp_path, outside):
     venv_dir = tmp_path / "venv"
     python = _make_venv(venv_dir)

@@ -175,6 +175,7 @@ def test_figure_3_4_is_never_mapped(figure):
     assert (out.outcome, out.claimed) == ("failed", "failed") and "self-loop" in out.reason and "§5.2.1" in out.reason
 
 
+@pytest.mark.slow
 def test_no_smaller_world_gives_a_wrong_map():
     """Every connected planar graph of networkx's atlas before :data:`SEVEN`, every start, seeds 0-1, walk 50:
     correct, failed or (scheme A) limit — never a wrong map: a wrong loop closing in these small worlds is

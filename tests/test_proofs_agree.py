@@ -20,6 +20,7 @@ from topomark.proofs.z3search import search
 BOUNDS = [(3, 2), (4, 3), (4, 4), (5, 3)]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", list(MARKER_CLASSES))
 @pytest.mark.parametrize("n, d", BOUNDS)
 def test_z3_and_census_agree(name, n, d):
@@ -32,6 +33,7 @@ def test_z3_and_census_agree(name, n, d):
         assert max(w.n for w in by_census) == max(w.n for w in by_z3.worlds)
 
 
+@pytest.mark.slow
 def test_they_agree_where_two_undirected_markers_first_fail():
     """Two undirected vertex markers: no counterexample below 5 vertices; one at 5 with degree 4."""
     assert census("two-undirected-vertex", 4, 4).smallest_counterexample is None

@@ -130,6 +130,7 @@ def test_the_at_1_client_passes_unchanged_by_default_and_refuses_at_2():
     assert not result.passed and result.reason == "crash" and "protocol@1 only" in result.message
 
 
+@pytest.mark.slow
 def test_cli_client2_and_the_conformance_suite_at_2(tmp_path, capsys):
     path = tmp_path / "w.json"
     path.write_text(dumps_world(g.lattice_hole(4, 4, 0.1, seed=2)))
@@ -164,6 +165,7 @@ def test_cli_protocol_and_kit_bad_input_exits_2(args, words, capsys):
 
 
 # -- judging at @2 -------------------------------------------------------------------
+@pytest.mark.slow
 @pytest.mark.parametrize("markers, verdict", [
     ([{"kind": "edge", "between": ["s0", "s1"], "count": 1, "head": "s0"}], "pass"),
     ([{"kind": "edge", "between": ["s0", "s1"], "count": 1, "head": "s1"}], "pass"),  # an isomorphism: s0 -> b
@@ -180,6 +182,7 @@ def test_the_map_must_show_the_markers_the_program_left(scripted, markers, verdi
     assert result.reason == ("ok" if verdict == "pass" else "not-isomorphic")
 
 
+@pytest.mark.slow
 def test_a_picked_up_marker_is_gone_from_the_world_the_map_is_judged_against(scripted):
     the_map = {"format": "topomark/world@1", "rotation": {"s0": ["s1"], "s1": ["s0"]}}
     result = play(scripted({"type": "drop", "kind": "vertex"}, {"type": "pick_up", "kind": "vertex"},

@@ -124,6 +124,7 @@ def test_a_vertex_mark_may_omit_head_meaning_undirected():
         {"type": "snapshot", "S": {"exits": [[None]], "marks": [{"vertex": 0}]}, "U": [[0, 0]]}))
 
 
+@pytest.mark.slow
 def test_an_undirected_snapshot_mark_without_head_passes_a_run(scripted):
     chain = World({"a": ["b"], "b": ["a"]}, (), Start("a", "b"))
     snap = {"type": "snapshot", "S": {"exits": [[None]], "marks": [{"vertex": 0}]}, "U": [[0, 0]]}
@@ -144,6 +145,7 @@ def test_a_snapshot_may_come_after_the_drop_before_the_first_move_but_not_before
     assert before.reason == "invariant" and "one directional marker" in before.message, before.message
 
 
+@pytest.mark.slow
 def test_a_map_may_carry_a_start_which_is_not_judged(scripted):
     drop = {"type": "drop", "direction": 0}
     world = {"format": "topomark/world@1", "rotation": {"p": ["q", "r"], "q": ["r", "p"], "r": ["p", "q"]},

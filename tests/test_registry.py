@@ -46,6 +46,7 @@ def test_text_listing_names_each_thesis_reference(capsys):
         assert spec.thesis in out
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", [n for n, s in REGISTRY.items() if s.deterministic  # §5.2.2 may not map
                                   and s.status == "implemented"])
 @pytest.mark.parametrize("text", SMALL_WORLDS)

@@ -54,6 +54,7 @@ def index(trace: list[dict], pred) -> int:
 
 
 # -- every lighthouse x every algorithm: explore writes it, replay verifies it -------------------
+@pytest.mark.slow
 @pytest.mark.parametrize("text", WORLDS)
 @pytest.mark.parametrize("light", [n for n, h in LIGHTHOUSES.items() if h.search is None])  # searched ones fail on
 @pytest.mark.parametrize("algorithm", ALGORITHMS)  # the cycle: tests/test_lighthouse_search.py replays them

@@ -38,6 +38,7 @@ def test_random_worlds_are_connected_with_degrees_at_most_d(max_degree):
         _assert_valid(random_world(8, max_degree, rng), 8, max_degree)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("kind", MOVES)
 def test_every_move_keeps_the_world_valid_and_does_what_it_says(kind):
     rng = random.Random(11)

@@ -120,6 +120,7 @@ def brute_force_smallest(marker: str, max_vertices: int, max_degree: int, planar
     return None, None
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("marker,n,d", [
     ("none", 4, 2), ("none", 4, 3), ("undirected-vertex", 4, 3), ("undirected-vertex", 3, 3),
     ("directional-vertex", 4, 3), ("two-undirected-vertex", 4, 3), ("undirected-edge", 4, 3),
@@ -188,6 +189,7 @@ def test_planarity_constraint_is_exact(n, d):
     assert _count_encodings(n, d, "none", planar=True) == count
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("marker,n,d", [("none", 4, 3), ("undirected-vertex", 4, 3), ("directional-vertex", 3, 3)])
 def test_planar_search_agrees_with_brute_force(marker, n, d):
     smallest, pair = brute_force_smallest(marker, n, d, planar=True)
@@ -198,6 +200,7 @@ def test_planar_search_agrees_with_brute_force(marker, n, d):
 
 
 # -- the encoding on the thesis's figure pairs (sizes beyond the brute force) ---------------------
+@pytest.mark.slow
 @pytest.mark.parametrize("figure,marker,counterexample", [
     ("3.3", "none", True), ("3.4", "undirected-vertex", True), ("3.6", "directional-vertex", False),
     ("3.21a", "two-undirected-vertex", True), ("3.21b", "three-undirected-vertex", False),
@@ -213,6 +216,7 @@ def test_encoding_accepts_exactly_the_thesis_counterexamples(figure, marker, cou
         assert z3search.pair_is_model(marker, b, b) == "unsat"  # isomorphic: never a counterexample
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("marker", ["none", "undirected-vertex", "two-undirected-vertex", "undirected-edge",
                                     "directional-vertex"])
 def test_pinned_pairs_match_the_specification(marker):
