@@ -309,6 +309,18 @@ def test_exits_0_1_and_2_write_no_report(capsys, reports, tmp_path, argv, code):
     assert not list(reports.iterdir()) and not list(Path.cwd().iterdir())
 
 
+def test_a_check_failure_escaping_a_command_is_exit_1_and_writes_no_report(capsys, reports, monkeypatch):
+    """A violated check is a verdict on what was judged (exit 1), not topomark's fault: no report."""
+    from topomark.reference.cli import cmd_explore
+
+    def judged(args):
+        raise CheckFailure(Violation("I-1", "vertex 3", "a", "b"))
+    monkeypatch.setattr(cmd_explore, "explore_command", judged)
+    assert main(["explore", "cycle:n=5"]) == 1
+    assert "check failed: I-1 violated" in capsys.readouterr().err
+    assert not list(reports.iterdir()) and not list(Path.cwd().iterdir())
+
+
 def test_the_api_caller_finds_the_run_on_the_exception(monkeypatch):
     seed_disagreement(monkeypatch)
     world = resolve_world(WORLD)
