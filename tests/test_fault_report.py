@@ -262,6 +262,16 @@ def test_a_report_that_cannot_be_made_still_exits_3(capsys, reports, monkeypatch
     assert not list(reports.iterdir())
 
 
+def test_ctrl_c_while_the_report_is_written_still_reports_the_fault(capsys, reports, monkeypatch):
+    def interrupted(argv, exc):
+        raise KeyboardInterrupt
+    monkeypatch.setattr(fault_report, "write_report", interrupted)
+    seed_exception(monkeypatch)
+    assert main(["explore", WORLD, "--quiet"]) == 3
+    err = capsys.readouterr().err
+    assert "internal fault: unexpected ZeroDivisionError" in err and "interrupted while it was being written" in err
+
+
 def test_a_part_that_cannot_be_gathered_says_why_and_the_rest_is_written(reports, monkeypatch):
     import platform
 

@@ -3,8 +3,8 @@
 Every command exits 0 for success or a positive verdict, 1 for a negative
 verdict or a violated invariant, 2 for bad input (one message, no traceback),
 3 when topomark itself failed (its own checks disagree, or an unexpected
-exception: a bug to report), and takes ``--json`` for machine-readable output
-on stdout.
+exception: a bug, for which it writes a fault report to send to its maintainers,
+:mod:`.fault_report`), and takes ``--json`` for machine-readable output on stdout.
 
 Each command is a module of this folder (``cmd_*``) with a
 ``register(subparsers)`` function that adds a subparser whose ``handler``
@@ -228,6 +228,8 @@ def _report(argv: list[str], exc: BaseException) -> tuple[str | None, str | None
         return str(full), f"./{full.name}" if here else str(full), ""
     except Exception as error:  # noqa: BLE001 - the report is a help; its failure must not hide the fault
         return None, None, f"{error.__class__.__name__}: {clip(str(error), 200)}"
+    except KeyboardInterrupt:  # Ctrl-C while a large report is written: the fault is still reported, exit 3
+        return None, None, "interrupted while it was being written"
 
 
 if __name__ == "__main__":
