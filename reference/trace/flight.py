@@ -35,7 +35,7 @@ __all__ = ["FlightRecorder", "FLIGHT_RECORDS", "FULL_ITERATIONS", "ATTRIBUTE", "
 FLIGHT_RECORDS = 10_000
 """The most trace records a fault report holds: the last ones the run made."""
 
-FULL_ITERATIONS = 16
+FULL_ITERATIONS = 3
 """The iteration records kept whole (hypotheses included); older ones keep their counts only."""
 
 ATTRIBUTE = "topomark_run"
