@@ -53,7 +53,7 @@ __all__ = [
 EXIT_OK, EXIT_NEGATIVE, EXIT_BAD_INPUT, EXIT_FAULT = 0, 1, 2, 3
 EXIT_CODES_HELP = ("exit codes: 0 success or a positive verdict; 1 a negative verdict (the world, map, trace or "
                    "implementation under test is wrong); 2 bad input (one message naming it); 3 a fault in "
-                   "topomark itself (please report it)")
+                   "topomark itself (it writes a fault report to send to topomark's maintainers)")
 
 
 class TopomarkError(Exception):
@@ -199,11 +199,15 @@ class TopomarkFault(TopomarkError, RuntimeError):
 
     Raised where two of topomark's independent implementations disagree or a
     result fails its own re-verification; never for a fault of the thing
-    under test (that is :class:`CheckFailure`, exit 1).
+    under test (that is :class:`CheckFailure`, exit 1).  ``check`` names the
+    check of topomark's own that failed (``"models"``, ``"isomorphism
+    implementations agree"`` ...), ``""`` when none is named; the CLI's fault
+    report gives it with the message.
     """
 
-    def __init__(self, message: str):
+    def __init__(self, message: str, check: str = ""):
         super().__init__(message)
+        self.check = check
 
 
 class ExplorerFault(TopomarkFault):

@@ -362,7 +362,8 @@ class IncrementalInvariants:
         found = check_I2(self.S, self.world, self.phi())
         if found is None:
             raise TopomarkFault(f"topomark's incremental I-2 check rejects U ({len(self.S.unexplored)} entries, "
-                                f"{len(self.open_map)} open darts) but the full predicate accepts it")
+                                f"{len(self.open_map)} open darts) but the full predicate accepts it",
+                                check="incremental and full I-2 agree")
         return found
 
     def phi(self) -> Witness:

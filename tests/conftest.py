@@ -25,6 +25,7 @@ family are in ``tests/families.py``.  The docstring examples of every module run
 from __future__ import annotations
 
 import json
+import os
 import sys
 
 import pytest
@@ -121,6 +122,20 @@ for msg in json.loads(sys.argv[1]):
         sys.stdin.readline()
 time.sleep(linger)
 """
+
+
+@pytest.fixture(scope="session", autouse=True)
+def fault_reports(tmp_path_factory):
+    """Where the fault reports of the tests that make topomark fail (exit 3) go: a directory of the session's,
+    never the checkout.  Set in the environment, so the CLI run in a subprocess writes there too; the folder."""
+    folder = tmp_path_factory.mktemp("fault-reports")
+    saved = os.environ.get("TOPOMARK_FAULT_DIR")
+    os.environ["TOPOMARK_FAULT_DIR"] = str(folder)
+    yield folder
+    if saved is None:
+        os.environ.pop("TOPOMARK_FAULT_DIR", None)
+    else:
+        os.environ["TOPOMARK_FAULT_DIR"] = saved
 
 
 @pytest.fixture

@@ -4,7 +4,9 @@ A world is an embedded graph (§3.1.1: each vertex's exits in clockwise order) w
 that senses only degree and markers explores it and must build a map extended-isomorphic to it (§3.1.3).  This
 package is the face of topomark: the functions below wrap what the ``topomark`` command runs, so a program gets
 the same checks, the same verdicts and the same errors (:class:`InvalidInput` for bad input, :class:`CheckFailure`
-when topomark's own checks disagree).
+when topomark's own checks disagree).  When topomark itself fails during an exploration (:class:`TopomarkFault`, or
+an unexpected exception), the exception carries the run in progress as ``exc.topomark_run``: its algorithm, its
+world and its last trace records, as in the command's fault report (``docs/formats.md``).
 
 =========================================  =====================================================================
 :func:`load_world`, :func:`save_world`     read and write a world file (``spec/world.schema.json``)

@@ -71,7 +71,7 @@ def count_command(args: argparse.Namespace) -> int:
         listed = enumeration.count_by_size(args.max_vertices, degree, args.min_vertices)
         if listed != worlds:
             raise TopomarkFault(f"Burnside's lemma counts {worlds} embedded worlds but the enumeration "
-                                f"lists {listed}")
+                                f"lists {listed}", check="Burnside count and enumeration agree")
         for row in rows:
             row["enumerated"] = listed[row["n"]]
     total = sum(row["worlds"] for row in rows)

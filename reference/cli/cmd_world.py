@@ -122,13 +122,15 @@ def iso_command(args) -> int:
     verdicts = {r.isomorphic for r in results.values()}
     if len(verdicts) != 1:
         raise TopomarkFault(f"the isomorphism implementations disagree: "
-                           f"{ {k: r.isomorphic for k, r in results.items()} }")
+                           f"{ {k: r.isomorphic for k, r in results.items()} }",
+                            check="isomorphism implementations agree")
     result = next(iter(results.values()))
     if result.isomorphic:
         for name, r in results.items():
             bad = verify_witness(a, b, cast(Witness, r.witness), markers=markers)  # isomorphic: witnessed
             if bad is not None:
-                raise TopomarkFault(f"the {name} isomorphism's witness fails re-verification: {bad}")
+                raise TopomarkFault(f"the {name} isomorphism's witness fails re-verification: {bad}",
+                                    check="witness re-verification")
         data = {"isomorphic": True, "witness": cast(Witness, result.witness).to_json(), "methods": list(results)}
         text = (f"isomorphic: {args.a} ≅ {args.b} (extended isomorphism"
                 + (", markers preserved" if markers else ", markers ignored") + "; witness verified)")

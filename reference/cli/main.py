@@ -3,8 +3,8 @@
 Every command exits 0 for success or a positive verdict, 1 for a negative
 verdict or a violated invariant, 2 for bad input (one message, no traceback),
 3 when topomark itself failed (its own checks disagree, or an unexpected
-exception: a bug to report), and takes ``--json`` for machine-readable output
-on stdout.
+exception: a bug, for which it writes a fault report to send to its maintainers,
+:mod:`.fault_report`), and takes ``--json`` for machine-readable output on stdout.
 
 Each command is a module of this folder (``cmd_*``) with a
 ``register(subparsers)`` function that adds a subparser whose ``handler``
@@ -38,6 +38,7 @@ import signal
 import sys
 import threading
 import traceback
+from pathlib import Path
 from typing import Sequence
 
 from topomark.spec.errors import (EXIT_BAD_INPUT, EXIT_CODES_HELP, EXIT_FAULT, EXIT_NEGATIVE, CheckFailure,
@@ -159,6 +160,7 @@ def _second(signum, frame) -> None:
 
 def _main(argv: list[str]) -> int:
     as_json = "--json" in (argv[:argv.index("--")] if "--" in argv else argv)
+    given = list(argv)  # the command line as typed, for a fault report
     try:
         if not argv:
             argv = ["explore"]  # the main job: a checked exploration of the built-in default world
@@ -175,9 +177,9 @@ def _main(argv: list[str]) -> int:
     except KeyboardInterrupt:
         return _say("interrupted", "", EXIT_INTERRUPTED, as_json)
     except TopomarkFault as exc:
-        return _fault(f"{exc}", as_json=as_json)
+        return _fault(f"{exc}", exc, given, as_json)
     except Exception as exc:  # noqa: BLE001 - anything else is a bug in topomark, reported as one
-        return _fault(f"unexpected {exc.__class__.__name__}: {exc}", traceback.format_exc(), as_json)
+        return _fault(f"unexpected {exc.__class__.__name__}: {exc}", exc, given, as_json)
 
 
 def _say(what: str, message: str, code: int, as_json: bool) -> int:
@@ -189,16 +191,45 @@ def _say(what: str, message: str, code: int, as_json: bool) -> int:
     return code
 
 
-def _fault(message: str, detail: str = "", as_json: bool = False) -> int:
-    """Exit 3: topomark itself failed.  The traceback goes to stderr only with TOPOMARK_DEBUG=1."""
-    message = message[:2000]
-    print(f"{PROG}: internal fault (a bug in topomark, not in what it checked): {message}\n"
-          "please report it with the command line and input that caused it", file=sys.stderr)
-    if detail and os.environ.get("TOPOMARK_DEBUG"):
-        print(detail, file=sys.stderr)
+def _fault(message: str, exc: BaseException, argv: list[str], as_json: bool = False) -> int:
+    """Exit 3: topomark itself failed.  A fault report is written (:mod:`.fault_report`) and the message says
+    where and what to do with it; the traceback is in the report, and on stderr too with TOPOMARK_DEBUG=1."""
+    message = clip(" ".join(message.split()), STDERR_LIMIT, note=STDERR_NOTE)  # one line, however long the fault
+    path, shown, why = _report(argv, exc)
+    where = (f"A report was written to {shown} (the command line, the world files it names and the run in "
+             "progress, if any): please send that file to topomark's maintainers (see CITATION.cff in topomark's "
+             "source)." if shown is not None else
+             f"No report could be written ({why}): please send topomark's maintainers (see CITATION.cff in "
+             "topomark's source) the command line and the input that caused it.")
+    print(f"{PROG}: internal fault: {message}\nThis is a fault in topomark, not in your input or in what it "
+          f"checked. {where}", file=sys.stderr)
+    if os.environ.get("TOPOMARK_DEBUG"):
+        print("".join(traceback.format_exception(type(exc), exc, exc.__traceback__)), file=sys.stderr)
     if as_json:
-        print(json.dumps({"error": f"internal fault: {message}", "exit": EXIT_FAULT}))
+        error = {"error": f"internal fault: {message}", "exit": EXIT_FAULT, "report": path}
+        print(json.dumps(error if path is not None else {**error, "report_not_written": why}))
     return EXIT_FAULT
+
+
+def _report(argv: list[str], exc: BaseException) -> tuple[str | None, str | None, str]:
+    """Write the fault report: its absolute path and the path the message shows (``./NAME`` in the current
+    directory), or None, None and why not.  Never raises: the fault is reported, report or not."""
+    try:
+        from topomark.reference.cli.fault_report import write_report
+
+        written, why = write_report(argv, exc)
+        if written is None:
+            return None, None, clip(why, STDERR_LIMIT // 2, note=STDERR_NOTE)
+        full = written.absolute()
+        try:
+            here = full.parent.resolve() == Path.cwd().resolve()
+        except OSError:  # the current directory is gone
+            here = False
+        return str(full), f"./{full.name}" if here else str(full), ""
+    except Exception as error:  # noqa: BLE001 - the report is a help; its failure must not hide the fault
+        return None, None, f"{error.__class__.__name__}: {clip(str(error), 200)}"
+    except KeyboardInterrupt:  # Ctrl-C while a large report is written: the fault is still reported, exit 3
+        return None, None, "interrupted while it was being written"
 
 
 if __name__ == "__main__":

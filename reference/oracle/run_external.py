@@ -355,7 +355,8 @@ def _dropped_markers(truth: World, map_: World) -> MapVerdict:
     if result.isomorphic:
         bad = verify_witness(truth, map_, cast(Witness, result.witness), markers=True)  # isomorphic: witnessed
         if bad is not None:
-            raise TopomarkFault(f"the isomorphism witness found for the map fails its re-verification: {bad}")
+            raise TopomarkFault(f"the isomorphism witness found for the map fails its re-verification: {bad}",
+                                check="witness re-verification")
     return MapVerdict(result.isomorphic, "markers", result)
 
 

@@ -149,7 +149,7 @@ class Checker:
                               f"none of {len(models)} live model(s) maps into it")
         if self.spec is not None and self.spec.own:
             raise TopomarkFault(f"step {n}: topomark's own explorer {self.spec.name} voided the true world: "
-                                f"{violation}; please report it with the world and the seed")
+                                f"{violation}", check="models")
         self._fail(n, violation)
 
     def check_state(self, explorer, n: int) -> None:
@@ -170,7 +170,7 @@ class Checker:
                 full = check_I2(S, self.world, cast(Witness, result.witness))  # I-1 holds: φ exists
             if self.mode == "both" and (quick is None) != (full is None):
                 raise TopomarkFault(f"iteration {n}: topomark's incremental and full I-1/I-2 checks disagree "
-                                    f"(full: {full}; incremental: {quick})")
+                                    f"(full: {full}; incremental: {quick})", check="incremental and full I-1/I-2 agree")
             self._ok(n, full)
             phi = result.witness
         if "pose" not in self.checks:
@@ -190,7 +190,8 @@ class Checker:
             self._ok(n, result.mismatch)
             bad = verify_witness(S, world, cast(Witness, result.witness))  # _ok raised on a mismatch
             if bad is not None:
-                raise TopomarkFault(f"the isomorphism's witness fails re-verification: {bad}")
+                raise TopomarkFault(f"the isomorphism's witness fails re-verification: {bad}",
+                                    check="witness re-verification")
             self.passed += 1
         if "iterations" in self.checks:
             kinds = [it.kind for it in explorer.iterations]

@@ -42,6 +42,7 @@ from topomark.reference.algorithms.registry import AlgorithmSpec, algorithm_spec
 from topomark.reference.explorers.policies import Policies
 from topomark.reference.run.simulator import Simulator
 from topomark.reference.trace.families import ALGORITHM_FAMILIES
+from topomark.reference.trace.flight import FlightRecorder
 from topomark.reference.trace.records import end_record, op_record, trace_header
 from topomark.reference.trace.sink import ListSink, TraceSink
 
@@ -134,8 +135,20 @@ def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: 
         raise unknown_name("check mode", check_mode, Checker.MODES)
     sink = ListSink() if sink is None and record else sink
     trace = sink.records if isinstance(sink, ListSink) else []
-    emit = sink.emit if sink is not None else None
+    flight = FlightRecorder(world, spec.name)  # for a fault report: the world and the trace up to the fault
+    emit = _tee(flight.emit, sink.emit) if sink is not None else None
     wanted = getattr(sink, "events", None)  # the record kinds the sink takes (tracesink's docstring); None: all
+    try:  # an exception escaping the run is re-raised with the run in progress on it, for a fault report
+        return _run(world, spec, run, policies, emit, wanted, trace, check=check, check_mode=check_mode,
+                    progress=progress, keep_hypotheses=keep_hypotheses)
+    except Exception as exc:
+        raise flight.attach(exc)
+
+
+def _run(world: World, spec: AlgorithmSpec, run: "_Run", policies: Policies, emit: Callable[[dict], None] | None,
+         wanted: Any, trace: list[dict], *, check: bool, check_mode: str,
+         progress: Callable[[int, int, int], None] | None, keep_hypotheses: bool) -> Outcome:
+    """The run :func:`explore` describes, its records made for ``emit`` (those of the kinds ``wanted``)."""
     emit_move = emit if wanted is None or "move" in wanted else None
     tally = _Tally()
     if emit:
@@ -145,7 +158,7 @@ def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: 
     def on_move(motion, purpose, sig, true_state):
         if emit_move:
             emit_move({"event": "move", "step": sim.cost, "motion": motion, "perception": str(sig),
-                  "purpose": purpose})
+                       "purpose": purpose})
 
     def on_op(event):
         if emit:
@@ -174,6 +187,14 @@ def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: 
     if emit:
         emit(end_record(outcome))
     return outcome
+
+
+def _tee(*emits: Callable[[dict], None]) -> Callable[[dict], None]:
+    """One ``emit`` handing each record to every one of ``emits``, in order."""
+    def emit(record: dict) -> None:
+        for each in emits:
+            each(record)
+    return emit
 
 
 def _given(spec: AlgorithmSpec, options: dict[str, Any]) -> dict[str, Any]:

@@ -104,7 +104,8 @@ def compare(tallies: dict[int, SizeTally], brute: dict[int, BruteTally]) -> None
     for n, b in brute.items():
         t = tallies.get(n)
         if t is None:
-            raise TopomarkFault(f"the brute force ran worlds of n = {n}, the exhaustive search none")
+            raise TopomarkFault(f"the brute force ran worlds of n = {n}, the exhaustive search none",
+                                check="exhaustive search and brute force agree")
         mine: tuple[Any, ...] = (t.max_cost or 0, Fraction(*t.cost_m) if t.cost_m else Fraction(0),
                 Fraction(*t.ratio) if t.ratio else None, set(t.pairs))
         theirs = (b.max_cost, b.max_cost_m, b.max_ratio, b.values)
@@ -112,4 +113,4 @@ def compare(tallies: dict[int, SizeTally], brute: dict[int, BruteTally]) -> None
             if a != c:
                 shown = (a, c) if name != "(m, cost) values" else (sorted(a ^ c)[:5], "differ")
                 raise TopomarkFault(f"at n = {n} the exhaustive search and the brute force disagree on the {name}: "
-                                    f"{shown[0]} vs {shown[1]}")
+                                    f"{shown[0]} vs {shown[1]}", check="exhaustive search and brute force agree")

@@ -165,7 +165,7 @@ def recheck_argmax(setup: Setup, max_degree: int, tally: SizeTally) -> tuple[lis
         if want is not None and out.cost != want:
             raise TopomarkFault(f"the worst run at n = {tally.n} (graph {witness[0]}, rotation {witness[1]}, start "
                                 f"{witness[2]} exit {witness[3]}) cost {want} unchecked but {out.cost} checked: "
-                                "the checked and unchecked runs disagree")
+                                "the checked and unchecked runs disagree", check="checked and unchecked runs agree")
         if not out.verified:
             detail = out.violation.to_json() if out.violation is not None else out.outcome
             problems.append({"n": tally.n, "witness": list(witness), "kind": "violation", "detail": detail})
@@ -183,7 +183,8 @@ def worst_case(setup: Setup, max_vertices: int, max_degree: int, root: Path, min
     problems = [p for r in records.values() for p in r["problems"]]
     disagree = next((p for p in problems if p["kind"] == "disagree"), None)
     if disagree is not None:
-        raise TopomarkFault(f"a checked re-run disagrees with its unchecked run: {disagree}")
+        raise TopomarkFault(f"a checked re-run disagrees with its unchecked run: {disagree}",
+                            check="checked and unchecked runs agree")
     count, checked = sum(r["problem_count"] for r in records.values()), sum(r["checked"] for r in records.values())
     for tally in tallies.values():
         seen, found = recheck_argmax(setup, max_degree, tally)
