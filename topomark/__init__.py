@@ -38,10 +38,10 @@ True
 from __future__ import annotations
 
 import importlib
-from importlib.metadata import PackageNotFoundError, version
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:  # for type checkers only: at run time each name is imported when first used
+    __version__: str
     from topomark import strategies
     from topomark.exploration import algorithms, check_map, explore, isomorphic, replay
     from topomark.indistinguishability import census, distinguish, prove, search
@@ -51,11 +51,6 @@ if TYPE_CHECKING:  # for type checkers only: at run time each name is imported w
 __all__ = ["__version__", "load_world", "save_world", "generate", "explore", "check_map", "isomorphic", "replay",
            "distinguish", "search", "prove", "census", "algorithms", "worst_case", "adversarial_search",
            "strategies"]
-
-try:
-    __version__: str = version("topomark")
-except PackageNotFoundError:  # pragma: no cover - a source tree nobody installed cannot import topomark at all
-    __version__ = "0+unknown"
 
 _LAZY = {
     "load_world": "topomark.worlds", "save_world": "topomark.worlds", "generate": "topomark.worlds",
@@ -71,11 +66,24 @@ def __getattr__(name: str) -> Any:
     """The public names, imported on first use (PEP 562); ``strategies`` is the submodule itself."""
     if name == "strategies":
         return importlib.import_module("topomark.strategies")
+    if name == "__version__":  # looked up when asked for: importlib.metadata alone costs as much as Python's start
+        globals()[name] = _version()
+        return globals()[name]
     if name in _LAZY:
         value = getattr(importlib.import_module(_LAZY[name]), name)
         globals()[name] = value  # the next look-up is an ordinary attribute
         return value
     raise AttributeError(f"module 'topomark' has no attribute {name!r}")
+
+
+def _version() -> str:
+    """The installed package's version (its metadata)."""
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        return version("topomark")
+    except PackageNotFoundError:  # pragma: no cover - a source tree nobody installed cannot import topomark at all
+        return "0+unknown"
 
 
 def __dir__() -> list[str]:
