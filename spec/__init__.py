@@ -15,6 +15,7 @@ module             concept (thesis section)
 ``invariants``     loop invariants I-1 and I-2 (§3.4)
 ``worldfile``      the ``topomark/world@1`` JSON format and its schema
 ``errors``         invalid input (exit 2) vs failed checks (exit 1)
+``violation``      a failed check described: condition, place, expected, found
 =================  ======================================================
 
 Everything else in topomark uses these predicates and restates none of them.
@@ -24,7 +25,8 @@ import importlib
 from typing import Any
 
 _EXPORTS = {  # name: the module of this package that defines it
-    **dict.fromkeys(("CheckFailure", "InvalidInput", "InvalidWorld", "Violation"), "errors"),
+    **dict.fromkeys(("CheckFailure", "InvalidInput", "InvalidWorld"), "errors"),
+    "Violation": "violation",
     **dict.fromkeys(("IsoResult", "Witness", "find_isomorphism", "verify_witness"), "isomorphism"),
     **dict.fromkeys(("EdgeMarker", "VertexMarker"), "marker"),
     **dict.fromkeys(("perceive", "sense", "step"), "robot"),

@@ -18,8 +18,10 @@ they survive ``python -O``.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from typing import Any, Iterable
+from typing import TYPE_CHECKING, Any, Iterable
+
+if TYPE_CHECKING:  # at run time imported when first used (:func:`__getattr__`)
+    from topomark.spec.violation import Violation
 
 __all__ = [
     "TopomarkError",
@@ -154,41 +156,13 @@ class InvalidKeyword(InvalidInput, TypeError):
     """
 
 
-@dataclass(frozen=True)
-class Violation:
-    """A structured description of a failed check.
-
-    ``check`` names the condition (``"I-1"``, ``"I-2"``, ``"isomorphism"``,
-    ``"Lemma 1"`` ...), ``where`` the offending vertex or dart, and
-    ``expected``/``found`` what the condition demanded and what was there.
-    """
-
-    check: str
-    where: str
-    expected: str
-    found: str
-    detail: str = ""
-    data: dict[str, Any] = field(default_factory=dict, compare=False)
-
-    def __str__(self) -> str:
-        text = f"{self.check} violated at {self.where}: expected {self.expected}, found {self.found}"
-        return f"{text} ({self.detail})" if self.detail else text
-
-    def to_json(self) -> dict[str, Any]:
-        return {
-            "check": self.check,
-            "where": self.where,
-            "expected": self.expected,
-            "found": self.found,
-            "detail": self.detail,
-        }
-
-
 class CheckFailure(TopomarkError, AssertionError):
     """A violated invariant or failed internal check: the CLI exits 1."""
 
     def __init__(self, violation: Violation | str):
         if isinstance(violation, str):
+            from topomark.spec.violation import Violation
+
             violation = Violation("internal check", "-", "true", "false", violation)
         self.violation = violation
         super().__init__(str(violation))
@@ -290,3 +264,13 @@ def require_input(condition: bool, message: str, kind: type[InvalidInput] = Inva
     """Raise ``kind`` (an :class:`InvalidInput`) with ``message`` unless ``condition`` holds."""
     if not condition:
         raise kind(message)
+
+
+def __getattr__(name: str) -> Any:
+    """:class:`~topomark.spec.violation.Violation`, imported when first used (PEP 562): it is a dataclass, and
+    the command line's ``--help``, which imports this module, has no use for :mod:`dataclasses`."""
+    if name == "Violation":
+        from topomark.spec.violation import Violation
+
+        return Violation
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -25,8 +25,8 @@ def run(capsys, *argv):
     return code, out, err
 
 
-def test_no_arguments_explores_the_default_world(capsys):
-    code, out, err = run(capsys)
+def test_explore_without_a_world_explores_the_default_world(capsys):
+    code, out, err = run(capsys, "explore")  # the README's first command (topomark alone prints the commands)
     assert code == 0
     assert "built-in default world" in out and "verified" in out and "n " in out
 

@@ -52,9 +52,9 @@ True
 
 import importlib as _importlib
 import typing as _typing
-from importlib.metadata import PackageNotFoundError as _NotInstalled, version as _version
 
 if _typing.TYPE_CHECKING:  # type checkers see every public name; at run time each is imported when first used
+    __version__: str
     from topomark import strategies
     from topomark.exploration import (AlgorithmSpec, Listed, MapVerdict, Outcome, Policies, ReplayResult, Witness,
                                       algorithms, check_map, explore, isomorphic, replay)
@@ -90,21 +90,29 @@ __all__ = ["__version__", "load_world", "save_world", "generate", "explore", "ch
            "TopomarkError", "InvalidInput", "InvalidKeyword", "InvalidWorld", "CheckFailure", "Violation",
            "TopomarkFault", "ExplorerFault", "AlgorithmStopped", "AlgorithmFailed", "LimitReached", "OutOfMarkers"]
 
-try:
-    __version__: str = _version("topomark")
-except _NotInstalled:  # pragma: no cover - a source tree nobody installed cannot import topomark at all
-    __version__ = "0+unknown"
-
 if not _typing.TYPE_CHECKING:  # hidden from type checkers, so that a misspelt name is an error there
     def __getattr__(name: str) -> object:
         """The public names, imported on first use (PEP 562); ``strategies`` is the submodule itself."""
         if name == "strategies":
             return _importlib.import_module("topomark.strategies")
+        if name == "__version__":  # looked up when asked for: importlib.metadata costs as much as Python's start
+            globals()[name] = _version()
+            return globals()[name]
         if name in _HOME:
             value = getattr(_importlib.import_module(_HOME[name]), name)
             globals()[name] = value  # the next look-up is an ordinary attribute
             return value
         raise AttributeError(f"module 'topomark' has no attribute {name!r}")
+
+
+def _version() -> str:
+    """The installed package's version (its metadata)."""
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        return version("topomark")
+    except PackageNotFoundError:  # pragma: no cover - a source tree nobody installed cannot import topomark at all
+        return "0+unknown"
 
 
 def __dir__() -> list[str]:

@@ -22,7 +22,6 @@ import argparse
 import math
 
 from topomark.spec.errors import InvalidInput, clip
-from topomark.spec.world import MAX_DEGREE
 
 __all__ = ["MAX_SECONDS", "MAX_COUNT", "MAX_JOBS", "SEED_DIGITS", "check_seconds", "check_count", "check_max_degree", "check_min_vertices",
            "check_jobs", "seed"]
@@ -83,6 +82,8 @@ def check_min_vertices(minimum: int, maximum: int) -> int:
 
 def check_max_degree(value: int) -> int:
     """``--max-degree`` of the commands that enumerate worlds: at least 1, at most any world's degree can be."""
+    from topomark.spec.world import MAX_DEGREE  # here: the options that use this module are built for --help too
+
     if value < 1:
         raise InvalidInput(f"--max-degree must be at least 1, not {value}")
     if value > MAX_DEGREE:

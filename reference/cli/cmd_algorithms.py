@@ -1,4 +1,4 @@
-"""``topomark algorithms [--json]``: the registered algorithms, their thesis references, kits and bounds.
+"""Running ``topomark algorithms`` (its description and options: :mod:`topomark.reference.cli.options.algorithms`).
 
 The JSON form is a list of objects with ``name``, ``thesis``, ``kit``,
 ``bound``, ``markers``, ``deterministic``, ``options``, ``checks``,
@@ -18,13 +18,7 @@ import json
 
 from topomark.reference.algorithms.registry import CHECKS, Listed, listing
 
-__all__ = ["register", "algorithms_command"]
-
-
-def register(sub) -> None:
-    p = sub.add_parser("algorithms", description=__doc__.split("\n\n")[0])
-    p.add_argument("--json", action="store_true", help="a JSON list on stdout")
-    p.set_defaults(handler=algorithms_command)
+__all__ = ["algorithms_command"]
 
 
 def algorithms_command(args) -> int:

@@ -1,5 +1,7 @@
 """``topomark bench``: the thesis's experiments (Figures 3.10-3.12, Tables 4.1-4.8, the lighthouses, Tables 6.1-6.2
-and Figures 6.11-6.13, 6.17, 6.18), checked and resumable."""
+and Figures 6.11-6.13, 6.17, 6.18), checked and resumable.
+
+Its options are :mod:`topomark.reference.cli.options.bench`'s; this module is imported when it runs."""
 
 from __future__ import annotations
 
@@ -11,40 +13,11 @@ from topomark.spec.errors import InvalidInput, unknown_name
 
 from topomark.reference.bench.reports.plots import INSTALL_HINT
 from topomark.reference.bench.verdict import judge_plan
-from topomark.reference.bench.experiments import EXPERIMENTS, HEAVY_GRAPHS, HEAVY_MAX_SIZE, plan, run_sweep, write_report
+from topomark.reference.bench.experiments import EXPERIMENTS, plan, run_sweep, write_report
 from topomark.reference.files.outputs import check_output_dir
-from topomark.reference.cli.args import MAX_JOBS, check_jobs
+from topomark.reference.cli.args import check_jobs
 
-__all__ = ["register"]
-
-
-def register(sub) -> None:
-    p = sub.add_parser(
-        "bench",
-        description="Run EXPERIMENT over fixed-seed worlds, every run checked (invariants after every iteration, "
-                    "final isomorphism) unless --no-check; append each run to DIR/runs.csv (a restarted sweep "
-                    "skips finished runs; one sweep at a time per DIR) and write DIR/EXPERIMENT.md and plots. "
-                    "DIR/runs.json records each sweep's parameters and every row carries a checksum: a sweep "
-                    "recomputes a row that fails it, --report-only refuses it. runs.csv must be a regular file "
-                    "of at most 64 MiB, no field longer than 10,000 characters. "
-                    "Exit 0 when every checked run of the experiment ended as its algorithm's registry entry "
-                    "expects (topomark algorithms --json: expected), 1 when one did not, 2 on bad input.")
-    p.add_argument("experiment", metavar="EXPERIMENT", help=f"one of: {', '.join(EXPERIMENTS)}")
-    p.add_argument("--graphs", type=int, default=30, help="worlds per size (default 30)")
-    p.add_argument("--heavy-graphs", type=int, default=HEAVY_GRAPHS,
-                   help=f"worlds per size for enh5-d2 on complete(-hole) worlds (default {HEAVY_GRAPHS})")
-    p.add_argument("--heavy-max-size", type=int, default=HEAVY_MAX_SIZE,
-                   help=f"largest size for enh5-d2 on complete(-hole) worlds (default {HEAVY_MAX_SIZE})")
-    p.add_argument("--sizes", type=int, nargs="+", metavar="SIZE", help="only these sizes (the thesis's n)")
-    p.add_argument("--jobs", type=int, default=None, metavar="N",
-                   help=f"worker processes, 1 to {MAX_JOBS} (default: one per CPU; never more than the runs)")
-    p.add_argument("-o", "--out", default="bench-out", metavar="DIR", help="output directory (default bench-out)")
-    p.add_argument("--no-check", action="store_true", help="skip the checker (rows record verified=False)")
-    p.add_argument("--no-plots", action="store_true", help="do not draw plots")
-    p.add_argument("--report-only", action="store_true", help="regenerate the report from the CSV, run nothing")
-    p.add_argument("--quiet", action="store_true", help="no progress bar")
-    p.add_argument("--json", action="store_true", help="print a JSON summary")
-    p.set_defaults(handler=bench_command)
+__all__ = ["bench_command"]
 
 
 def bench_command(args) -> int:

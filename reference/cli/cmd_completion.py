@@ -1,4 +1,4 @@
-"""``topomark completion bash|zsh|tcsh``: a shell completion script, generated from the command line itself.
+"""Running ``topomark completion`` (its description and options: :mod:`topomark.reference.cli.options.completion`).
 
 The script is written by ``shtab`` from the same parser the commands use, so every command, option and fixed
 choice completes, and a new one completes without editing the script.  Install it, e.g. for bash::
@@ -12,15 +12,9 @@ from __future__ import annotations
 
 from topomark.spec.errors import TopomarkFault
 
-__all__ = ["register", "completion_command", "SHELLS"]
+__all__ = ["completion_command", "SHELLS"]
 
-SHELLS = ("bash", "zsh", "tcsh")
-
-
-def register(sub) -> None:
-    p = sub.add_parser("completion", description=__doc__.split("\n\n")[0] + " Exit 0; 2 for an unknown shell.")
-    p.add_argument("shell", choices=SHELLS, metavar="SHELL", help=f"the shell to complete in: {', '.join(SHELLS)}")
-    p.set_defaults(handler=completion_command)
+from topomark.reference.cli.options.completion import SHELLS
 
 
 def completion_command(args) -> int:

@@ -1,5 +1,7 @@
 """``topomark census-count``: how many embedded worlds the census will meet, per n (thesis §3.1.1, §3.1.3).
 
+Its options are :mod:`topomark.reference.cli.options.count`'s; this module is imported when it runs.
+
 ``topomark census-count --max-vertices N --max-degree D`` prints, for each n
 from 2 (or ``--min-vertices``) to N, the number of connected graphs with max
 degree ≤ D (:mod:`topomark.proofs.graphs`) and of embedded worlds on them up
@@ -26,25 +28,7 @@ from topomark.proofs import burnside, enumerate as enumeration, graphs
 from topomark.reference.cli.args import check_max_degree, check_min_vertices
 from topomark.spec.errors import InvalidInput, TopomarkFault
 
-__all__ = ["register", "count_command", "validate_args"]
-
-
-def register(sub) -> None:
-    p = sub.add_parser(
-        "census-count",
-        description="Count connected graphs of max degree D and the embedded worlds on them (up to extended "
-                    "isomorphism) for every size up to N, by Burnside's lemma over each graph's automorphism "
-                    "group, without enumerating the worlds. Exit 0 on success, 2 on bad input, 3 if "
-                    "--enumerate finds a different count.")
-    p.add_argument("--max-vertices", type=int, required=True, metavar="N",
-                   help=f"largest world size, 2..{graphs.MAX_VERTICES} (time grows fast with D: n = 9 at D = 4 "
-                        "takes about a minute)")
-    p.add_argument("--max-degree", type=int, required=True, metavar="D", help="largest vertex degree, >= 1")
-    p.add_argument("--min-vertices", type=int, default=2, metavar="M", help="smallest world size (default 2)")
-    p.add_argument("--enumerate", action="store_true",
-                   help=f"also list the worlds and check the counts agree (N <= {enumeration.MAX_VERTICES}; slow)")
-    p.add_argument("--json", action="store_true", help="machine-readable output")
-    p.set_defaults(handler=count_command)
+__all__ = ["count_command", "validate_args"]
 
 
 def validate_args(args: argparse.Namespace) -> None:

@@ -1,5 +1,7 @@
 """``topomark distinguish`` and ``topomark census`` (thesis §3.2, §3.3, §3.7, §6.1).
 
+Their options are :mod:`topomark.reference.cli.options.distinguish`'s; this module is imported when one runs.
+
 * ``distinguish A B``: exit 0 with the shortest motion sequence whose
   perceptions differ (printed in thesis notation), exit 1 when A and B are
   indistinguishable (with the size of the bisimulation relation certifying it).
@@ -19,49 +21,15 @@ from typing import Any, cast
 
 from topomark.proofs.bisim import bisimulation, check_relation, distinguishing_sequence
 from topomark.proofs.census import CensusResult, stderr_progress
-from topomark.proofs.census_exec import CONNECT_TIMEOUT, WORKER_WAIT
 from topomark.proofs.census_run import sharded_census
 from topomark.proofs.enumerate import MAX_VERTICES
-from topomark.reference.cli.args import MAX_JOBS, check_jobs, check_max_degree
+from topomark.reference.cli.args import check_jobs, check_max_degree
 from topomark.spec.errors import CheckFailure, InvalidInput
-from topomark.spec.markerclass import MARKER_CLASSES, marker_class
+from topomark.spec.markerclass import marker_class
 from topomark.spec.worldfile import load_world, world_to_json
 
-__all__ = ["register", "distinguish_command", "census_command", "format_motions", "format_perceptions",
+__all__ = ["distinguish_command", "census_command", "format_motions", "format_perceptions",
            "census_table"]
-
-
-def register(sub) -> None:
-    p = sub.add_parser("distinguish",
-                       description="Exit 0 if some motion sequence gives different perceptions in A and B "
-                                   "(prints the shortest), 1 if they are indistinguishable, 2 on bad input. "
-                                   "Both files need a start.")
-    p.add_argument("a", metavar="A", help="the first world file (with a start)")
-    p.add_argument("b", metavar="B", help="the second world file (with a start)")
-    p.add_argument("--json", action="store_true", help="machine-readable output")
-    p.set_defaults(handler=distinguish_command)
-    q = sub.add_parser("census", description="For every embedded world with 2..N vertices and max degree D (up to "
-                                   "extended isomorphism), every placement of the marker class and every start, "
-                                   "group placements by the robot's language. Exit 0 if no two non-isomorphic "
-                                   "marked worlds are indistinguishable, 1 if some are, 2 on bad input, 130 when "
-                                   "interrupted. A resumed census verifies every shard file (checksums, census "
-                                   "parameters, code version) before trusting it: a damaged task or shard is "
-                                   "computed again (said on stderr); a damaged, older-format or other census's "
-                                   "manifest is exit 2 naming it. Worker processes die with the census.")
-    q.add_argument("--marker", required=True, metavar="CLASS", help="one of: " + ", ".join(MARKER_CLASSES))
-    q.add_argument("--max-vertices", type=int, required=True, metavar="N",
-                   help=f"largest world size, 2..{MAX_VERTICES}")
-    q.add_argument("--max-degree", type=int, required=True, metavar="D", help="largest vertex degree, >= 1")
-    q.add_argument("--jobs", type=int, default=1, metavar="N", help=f"worker processes, 1 to {MAX_JOBS} (default 1)")
-    q.add_argument("--shards", metavar="DIR", help="keep the map/reduce shards in DIR; a killed census run again "
-                   "with the same DIR resumes from its finished, verified tasks (default: a temporary directory)")
-    q.add_argument("--scheduler", metavar="ADDRESS", help="run the map and reduce on a Dask cluster "
-                   "(tcp://host:8786), or 'local' for a local Dask cluster of J workers (needs Dask: pip install '.[cluster]' from a checkout); "
-                   f"exit 2 if no Dask scheduler answers at ADDRESS within {CONNECT_TIMEOUT} s, or it has no "
-                   f"worker within {WORKER_WAIT} s")
-    q.add_argument("--json", action="store_true", help="machine-readable output")
-    q.add_argument("--quiet", action="store_true", help="no progress on stderr")
-    q.set_defaults(handler=census_command)
 
 
 def format_motions(motions) -> str:

@@ -1,4 +1,6 @@
-"""``topomark explore``: a checked exploration by Algorithm 3.1 (thesis §3.3–3.5)."""
+"""``topomark explore``: a checked exploration by Algorithm 3.1 (thesis §3.3–3.5).
+
+Its options are :mod:`topomark.reference.cli.options.explore`'s; this module is imported when it runs."""
 
 from __future__ import annotations
 
@@ -8,66 +10,19 @@ import sys
 import time
 from typing import Any, Callable, cast
 
-from topomark.reference.cli.args import seed as seed_option
 from topomark.spec.errors import InvalidInput
 from topomark.spec.worldfile import dumps_world
 
 from topomark.reference.run.explore import check_run, explore
-from topomark.reference.explorers.lighthouses import (LIGHTHOUSES, MAX_NEIGHBOURHOOD, MAX_THRESHOLD, MAX_WALK_LIMIT,
-                                                     configured)
-from topomark.reference.algorithms.registry import REGISTRY, algorithm_spec, parameters
+from topomark.reference.explorers.lighthouses import configured
+from topomark.reference.algorithms.registry import algorithm_spec, parameters
 from topomark.reference.worlds.generators import DEFAULT_WORLD
 from topomark.reference.files.outputs import check_output, check_output_dir, guarded, write_output
-from topomark.reference.explorers.policies import EDGE_POLICIES, HYPOTHESIS_POLICIES, PATH_POLICIES, Policies
+from topomark.reference.explorers.policies import Policies
 from topomark.reference.trace.sink import FileSink, RingSink, TeeSink
 from topomark.reference.worlds.argument import resolve_world
 
-__all__ = ["register", "parse_policies"]
-
-
-def register(sub) -> None:
-    p = sub.add_parser(
-        "explore",
-        description="Explore WORLD (a world file or GENERATOR[:NAME=VALUE,...]; default: a built-in 5x5 lattice "
-                    "with 2 cells removed) and verify the map. Exit 0 when the map is verified isomorphic, 1 on an "
-                    "invariant violation or when the algorithm stops without a map (outcome failed or limit), "
-                    "2 on bad input.")
-    p.add_argument("world", nargs="?", metavar="WORLD_OR_GENERATOR",
-                   help="a world file, or GENERATOR[:NAME=VALUE,...] (default: the built-in world)")
-    p.add_argument("--algorithm", default="basic", metavar="NAME",
-                   help=f"one of: {', '.join(REGISTRY)} (default basic; topomark algorithms lists them)")
-    p.add_argument("--lighthouse", default=None, metavar="NAME",
-                   help=f"how v0 is marked: {', '.join(LIGHTHOUSES)} (default directional-vertex, Algorithm 3.1's; "
-                        "for Algorithm 3.1 and the Chapter 4 enhancements only)")
-    for param in parameters().values():
-        takers = ", ".join(s.name for s in REGISTRY.values() if param in s.parameters)
-        p.add_argument(f"--{param.name}", dest=f"param_{param.name.replace('-', '_')}", metavar="VALUE",
-                       help=f"{param.help} (for {takers}; default {param.default})")
-    p.add_argument("--policy", action="append", default=[], metavar="KIND=NAME",
-                   help=f"edge={'|'.join(EDGE_POLICIES)}, hypothesis={'|'.join(HYPOTHESIS_POLICIES)}, "
-                        f"path={'|'.join(PATH_POLICIES)}; a bare NAME sets the edge policy (repeatable)")
-    p.add_argument("--seed", type=seed_option, help="seed for a random generator; with a searched lighthouse "
-                                            "(undirected-vertex, undirected-edge) the seed of its random walk")
-    p.add_argument("--walk-limit", metavar="N", help="a searched lighthouse gives up after N walk steps (default 200, "
-                                                     f"§5.1's threshold; at most {MAX_WALK_LIMIT:,})")
-    p.add_argument("--neighbourhood", metavar="D", help="undirected-vertex, local-degree-list: test the neighbours' "
-                                                        "views to distance D (default 1, §5.1; at most "
-                                                        f"{MAX_NEIGHBOURHOOD}: the work grows exponentially with D)")
-    p.add_argument("--threshold", metavar="N", help="local-pair, local-degree-list: the least-seen candidate must "
-                                                    "be seen fewer than N times (default: the walk's observations, "
-                                                    f"§5.2.1; at most {MAX_THRESHOLD:,})")
-    p.add_argument("--no-check", action="store_true", help="skip the per-iteration checks (faster)")
-    p.add_argument("--check-mode", default="incremental", choices=("incremental", "full", "both"),
-                   help="how I-1/I-2 are evaluated each iteration: per journalled change (default), from scratch, "
-                        "or both (they must agree); the final verdict is always from scratch")
-    p.add_argument("--trace", metavar="FILE", help="write the JSON Lines trace here")
-    p.add_argument("--map", metavar="FILE", help="write the final map (world format, marker included); a run that stops without a map "
-                                            "writes none and says so")
-    p.add_argument("--models", metavar="DIR", help="write every completed model as a world file, in completion order "
-                                                   "(model-0001.json, ...; algorithms that keep models: model-tree)")
-    p.add_argument("--json", action="store_true", help="print one JSON object")
-    p.add_argument("--quiet", action="store_true", help="no progress bar")
-    p.set_defaults(handler=explore_command)
+__all__ = ["explore_command", "parse_policies", "check_policy_kinds"]
 
 
 def parse_policies(items: list[str]) -> Policies:

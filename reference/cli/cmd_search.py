@@ -1,5 +1,7 @@
 """``topomark search``: bounded SAT search for counterexamples and bounded proofs (thesis §3.2, §3.7, §6.1).
 
+Its options are :mod:`topomark.reference.cli.options.search`'s; this module is imported when it runs.
+
 ``topomark search --marker CLASS --max-vertices N --max-degree D`` asks Z3
 (:mod:`topomark.proofs.z3search`) for two worlds of the marker class that no
 motion sequence tells apart (§3.1.1) yet are not extended-isomorphic.
@@ -25,29 +27,11 @@ from pathlib import Path
 from topomark.proofs import z3search
 from topomark.reference.cli.args import check_seconds
 from topomark.spec.errors import InvalidInput
-from topomark.spec.markerclass import MARKER_CLASSES, marker_class
+from topomark.spec.markerclass import marker_class
 from topomark.spec.world import MAX_DEGREE
 from topomark.spec.worldfile import save_world
 
-__all__ = ["register", "search_command", "validate_args", "describe_world", "write_outputs"]
-
-
-def register(sub) -> None:
-    p = sub.add_parser(
-        "search", description="Search with Z3 for two worlds carrying the marker class that no motion sequence tells "
-                    "apart but that are not extended-isomorphic. Exit 0 if found (or, with --prove, if none "
-                    "exists within the bounds), 1 otherwise (including unknown/timeout), 2 on bad input.")
-    p.add_argument("--marker", required=True, metavar="CLASS", help="one of: " + ", ".join(MARKER_CLASSES))
-    p.add_argument("--max-vertices", type=int, required=True, metavar="N",
-                   help=f"largest world size, 2..{z3search.MAX_VERTICES}")
-    p.add_argument("--max-degree", type=int, required=True, metavar="D", help="largest vertex degree, >= 1")
-    p.add_argument("--planar", action="store_true", help="only planar embeddings (genus 0), like the figures")
-    p.add_argument("--prove", action="store_true", help="report a bounded proof: exit 0 iff UNSAT")
-    p.add_argument("--timeout", type=float, default=None, metavar="SECONDS",
-                   help="give up after SECONDS (outcome unknown)")
-    p.add_argument("-o", "--out", default=None, metavar="DIR", help="write a.json, b.json, relation.json, pair.svg")
-    p.add_argument("--json", action="store_true", help="machine-readable output")
-    p.set_defaults(handler=search_command)
+__all__ = ["search_command", "validate_args", "describe_world", "write_outputs"]
 
 
 def validate_args(args: argparse.Namespace) -> None:

@@ -19,7 +19,8 @@ systems (n ≤ 5) and requires the same maxima.
 Exit 0 when every run mapped its world (and the checked runs agree), 1 when a
 run did not (a failure, a wrong map, a violated invariant), 2 on bad input, 3
 when topomark's checked and unchecked runs, or the two exhaustive searches,
-disagree.
+disagree.  The options are :mod:`topomark.reference.cli.options.worst_case`'s; this module is imported
+when the command runs.
 """
 
 from __future__ import annotations
@@ -33,42 +34,11 @@ from typing import Any
 
 from topomark.spec.errors import InvalidInput
 
-from topomark.reference.cli.args import MAX_JOBS, check_jobs, check_max_degree, check_min_vertices, seed
-from topomark.reference.cli.cmd_worst_search import add_search_arguments, search_command, setup_of
+from topomark.reference.cli.args import check_jobs, check_max_degree, check_min_vertices
+from topomark.reference.cli.cmd_worst_search import search_command, setup_of
+from topomark.reference.cli.options.worst_case import MAX_EXHAUSTIVE
 
-__all__ = ["register", "worst_case_command"]
-
-MAX_EXHAUSTIVE = 8  # the census's enumeration reaches n = 8 (topomark.proofs.enumerate.MAX_VERTICES)
-
-
-def register(sub) -> None:
-    p = sub.add_parser("worst-case", description="Run an algorithm from every start of every embedded world up to a size and "
-                                   "degree (exhaustive, exact), or search larger worlds for bad ones (--search, a "
-                                   "lower bound); report the largest cost, cost/m and cost / bound per n.")
-    p.add_argument("--algorithm", default="basic", metavar="NAME", help="registered algorithm (default basic; "
-                                                                         "see topomark algorithms)")
-    p.add_argument("--lighthouse", metavar="NAME", help="lighthouse strategy for a Chapter 3-4 algorithm")
-    p.add_argument("--policy", action="append", default=[], metavar="KIND=NAME",
-                   help="edge, hypothesis or path policy, as for explore (repeatable)")
-    p.add_argument("--max-vertices", type=int, metavar="N", help=f"largest world size (exhaustive: 2..{MAX_EXHAUSTIVE})")
-    p.add_argument("--max-degree", type=int, default=4, metavar="D", help="largest vertex degree (default 4)")
-    p.add_argument("--min-vertices", type=int, default=2, metavar="M", help="smallest world size (default 2)")
-    p.add_argument("--jobs", type=int, default=1, metavar="N", help=f"worker processes, 1 to {MAX_JOBS} (default 1)")
-    p.add_argument("--scheduler", metavar="ADDRESS", help="run the tasks on a Dask cluster (an address, or 'local')")
-    p.add_argument("--shards", metavar="DIR", help="keep the tasks' results in DIR; run again, it resumes")
-    p.add_argument("--sample", type=float, default=0.001, metavar="FRACTION",
-                   help="fraction of the runs re-run checked (default 0.001; every argmax is always re-checked)")
-    p.add_argument("--seed", type=seed, default=0, help="seed of the checked sample and of --search (default 0)")
-    p.add_argument("--cross-check", action="store_true",
-                   help="also run the brute force over labelled rotation systems and require the same maxima (n <= 5)")
-    p.add_argument("-o", "--out", metavar="DIR", help="write worst-case.json, the argmax world files, worst-case.md and plots")
-    p.add_argument("--summarise", nargs="+", metavar="DIR",
-                   help="the report over the --out directories of earlier runs, exhaustive and --search: Markdown on "
-                        "stdout, or worst-case.md and its plot in -o DIR")
-    p.add_argument("--quiet", action="store_true", help="no progress line")
-    p.add_argument("--json", action="store_true", help="print one JSON object")
-    add_search_arguments(p)
-    p.set_defaults(handler=worst_case_command)
+__all__ = ["worst_case_command"]
 
 
 def _validate(args: argparse.Namespace) -> None:

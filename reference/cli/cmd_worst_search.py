@@ -19,23 +19,7 @@ from typing import Any
 
 from topomark.spec.errors import InvalidInput
 
-__all__ = ["add_search_arguments", "search_command", "setup_of"]
-
-OBJECTIVES = ("cost", "cost-per-m", "ratio")
-
-
-def add_search_arguments(p) -> None:
-    g = p.add_argument_group("adversarial search (--search)")
-    g.add_argument("--search", action="store_true", help="search worlds past exhaustive sizes for a bad one")
-    g.add_argument("--vertices", type=int, nargs="+", default=[20], metavar="N",
-                   help="world sizes to search (default 20)")
-    g.add_argument("--evaluations", type=int, default=400, metavar="K",
-                   help="runs per size for the search, and as many random worlds (default 400)")
-    g.add_argument("--objective", choices=OBJECTIVES, default="cost",
-                   help="what to maximise: cost, cost-per-m, or ratio (cost / the exact bound)")
-    g.add_argument("--world-family", choices=("lattice-hole",),
-                   help="search within a family of worlds: lattice-hole (a lattice, which cells are removed)")
-
+__all__ = ["search_command", "setup_of"]
 
 def setup_of(args: argparse.Namespace):
     """The shared setup of a worst-case search from the command line (bad input: exit 2)."""

@@ -34,7 +34,8 @@ def markdown() -> str:
     """The whole reference: one section per command, in ``topomark --help`` order."""
     parser = build_parser()
     codes = _one_line(EXIT_CODES_HELP).removeprefix("exit codes:").strip()
-    parts = [HEADER, f"Every command exits with one of four codes: {codes}.\n\n"]
+    parts = [HEADER, f"Every command exits with one of four codes: {codes}. `topomark` alone, with no command, "
+                     "prints the commands below, a line each, and exits 0.\n\n"]
     parts.append("| command | what it does |\n|---|---|\n")
     parts += [f"| [`{name}`](#topomark-{name}) | {_cell(summary)} |\n" for name, (_, summary) in COMMANDS.items()]
     for name, (_, summary) in COMMANDS.items():

@@ -6,11 +6,13 @@ verdict or a violated invariant, 2 for bad input (one message, no traceback),
 exception: a bug, for which it writes a fault report to send to its maintainers,
 :mod:`.fault_report`), and takes ``--json`` for machine-readable output on stdout.
 
-Each command is a module of this folder (``cmd_*``) with a
-``register(subparsers)`` function that adds a subparser whose ``handler``
-default is ``handler(args) -> int``; :data:`COMMANDS` lists them with the one-line summary
-``topomark --help`` shows.  Only the module of the command being run is imported (``topomark --help``
-imports none: it stays fast, whatever the commands need).
+Each command has its options in a module of :mod:`.options` with a ``register(subparsers)`` function that
+adds a subparser whose ``handler`` default is ``handler(args) -> int``, and its implementation in a module of
+this folder (``cmd_*``), imported by the handler when the command runs (:class:`.parser.Later`);
+:data:`COMMANDS` lists them with the one-line summary ``topomark --help`` shows.  Only the options of the
+command named are imported, and ``--help`` imports no implementation and reads the names and limits it lists
+from a table (:mod:`.facts`): every ``--help`` starts about as fast as Python does, whatever the commands
+need.  ``topomark`` alone prints the commands, a line each, on stdout and exits 0.
 
 Under ``--json`` (anywhere before a ``--``) every outcome is one JSON object on stdout, an error too:
 ``{"error": "...", "exit": 2}``.  A first Ctrl-C ends the command with ``topomark: interrupted``, exit
@@ -37,43 +39,42 @@ import os
 import signal
 import sys
 import threading
-import traceback
-from pathlib import Path
 from typing import Sequence
 
 from topomark.spec.errors import (EXIT_BAD_INPUT, EXIT_CODES_HELP, EXIT_FAULT, EXIT_NEGATIVE, CheckFailure,
                                   InvalidInput, TopomarkFault, clip)
 
+from topomark.reference.cli import facts
 from topomark.reference.cli.parser import PROG, Parser
 from topomark.reference.cli.pipes import closed_pipe_safe
 
-__all__ = ["main", "build_parser", "COMMANDS", "EXIT_INTERRUPTED"]
+__all__ = ["main", "build_parser", "asks_for_help", "short_help", "COMMANDS", "EXIT_INTERRUPTED"]
 
 STDERR_LIMIT, STDERR_NOTE = 1000, " ({n:,} characters in all)"
 """One message, bounded: whatever an input quotes back, stderr gets at most 1000 characters of it."""
 
 EXIT_INTERRUPTED = 130  # 128 + SIGINT, as shells report a process ended by Ctrl-C
 
-COMMANDS = {  # name: (module of this folder that registers it, summary for topomark --help), in --help order
-    "world": ("cmd_world", "generate a world file, or --show one"),
-    "iso": ("cmd_world", "extended-isomorphism verdict for two world/map files"),
-    "explore": ("cmd_explore", "explore a world with every invariant checked after every step"),
-    "run-external": ("cmd_oracle", "play a world to another program over topomark/protocol@1 and judge it"),
-    "check-map": ("cmd_oracle", "judge a map file against a world file (extended isomorphism)"),
-    "replay": ("cmd_oracle", "verify a topomark/trace@1 trace recorded by any implementation"),
-    "drive": ("cmd_oracle", "drive an external world provider (simulator or robot bridge) with Algorithm 3.1"),
-    "conformance": ("cmd_oracle", "export, lint or run the conformance suite (topomark/conformance@2)"),
-    "bench": ("cmd_bench", "run a thesis experiment (figures 3.10-3.12, tables 4.1-4.8, lighthouses, "
+COMMANDS = {  # name: (module of .options that registers it, summary for topomark --help), in --help order
+    "world": ("world", "generate a world file, or --show one"),
+    "iso": ("world", "extended-isomorphism verdict for two world/map files"),
+    "explore": ("explore", "explore a world with every invariant checked after every step"),
+    "run-external": ("oracle", "play a world to another program over topomark/protocol@1 and judge it"),
+    "check-map": ("oracle", "judge a map file against a world file (extended isomorphism)"),
+    "replay": ("oracle", "verify a topomark/trace@1 trace recorded by any implementation"),
+    "drive": ("oracle", "drive an external world provider (simulator or robot bridge) with Algorithm 3.1"),
+    "conformance": ("oracle", "export, lint or run the conformance suite (topomark/conformance@2)"),
+    "bench": ("bench", "run a thesis experiment (figures 3.10-3.12, tables 4.1-4.8, lighthouses, "
                            "tables 6.1-6.2) and write CSV + report"),
-    "algorithms": ("cmd_algorithms", "list the registered algorithms with their thesis references and bounds"),
-    "distinguish": ("cmd_distinguish", "shortest motion sequence telling two worlds apart"),
-    "census": ("cmd_distinguish", "group all small worlds by what a robot perceives"),
-    "search": ("cmd_search", "SAT search for indistinguishable non-isomorphic worlds (Z3)"),
-    "census-count": ("cmd_count", "how many embedded worlds there are per size (Burnside's lemma)"),
-    "claims": ("cmd_claims", "every claim of the thesis and how topomark backs it (the claims ledger)"),
-    "worst-case": ("cmd_worst_case", "the worst cost of an algorithm over every small world, or found by search "
+    "algorithms": ("algorithms", "list the registered algorithms with their thesis references and bounds"),
+    "distinguish": ("distinguish", "shortest motion sequence telling two worlds apart"),
+    "census": ("distinguish", "group all small worlds by what a robot perceives"),
+    "search": ("search", "SAT search for indistinguishable non-isomorphic worlds (Z3)"),
+    "census-count": ("count", "how many embedded worlds there are per size (Burnside's lemma)"),
+    "claims": ("claims", "every claim of the thesis and how topomark backs it (the claims ledger)"),
+    "worst-case": ("worst_case", "the worst cost of an algorithm over every small world, or found by search "
                                      "past them (§7.2)"),
-    "completion": ("cmd_completion", "print a shell completion script (bash, zsh or tcsh)"),
+    "completion": ("completion", "print a shell completion script (bash, zsh or tcsh)"),
 }
 
 
@@ -95,8 +96,8 @@ class _Version(argparse.Action):
 
 
 def build_parser(only: str | None = None) -> argparse.ArgumentParser:
-    """The whole command line; with ``only``, the full parser of that command alone (its module imported)
-    and, for every other command, its name and summary (enough for ``--help`` and for suggestions)."""
+    """The whole command line; with ``only``, the full parser of that command alone (its options module
+    imported) and, for every other command, its name and summary (enough for ``--help`` and for suggestions)."""
     parser = Parser(prog=PROG, description="Marker-based topological SLAM: the thesis's reference "
                                            "implementation, checker and proofs.", epilog=EXIT_CODES_HELP)
     parser.add_argument("--version", action=_Version, help="print the version (topomark X.Y.Z) and exit")
@@ -115,7 +116,7 @@ def build_parser(only: str | None = None) -> argparse.ArgumentParser:
         if module in done:
             continue
         if only is None or COMMANDS.get(only, ("",))[0] == module:
-            importlib.import_module(f"{__package__}.{module}").register(sub)
+            importlib.import_module(f"{__package__}.options.{module}").register(sub)
             done.add(module)
         else:
             _add_parser(name, help=summary, add_help=False)
@@ -163,9 +164,11 @@ def _main(argv: list[str]) -> int:
     given = list(argv)  # the command line as typed, for a fault report
     try:
         if not argv:
-            argv = ["explore"]  # the main job: a checked exploration of the built-in default world
+            print(short_help())
+            return 0
         command = next((a for a in argv if not a.startswith("-")), None)
-        parser = build_parser(only=command if command in COMMANDS else "")
+        with facts.for_help(asks_for_help(argv)):
+            parser = build_parser(only=command if command in COMMANDS else "")
         args = parser.parse_args(argv)
         if not getattr(args, "command", None):
             raise InvalidInput(f"give a COMMAND ({', '.join(COMMANDS)}); {PROG} --help describes them")
@@ -180,6 +183,22 @@ def _main(argv: list[str]) -> int:
         return _fault(f"{exc}", exc, given, as_json)
     except Exception as exc:  # noqa: BLE001 - anything else is a bug in topomark, reported as one
         return _fault(f"unexpected {exc.__class__.__name__}: {exc}", exc, given, as_json)
+
+
+def asks_for_help(argv: list[str]) -> bool:
+    """Whether ``argv`` asks for help (``-h``, ``--help`` or an abbreviation, before any ``--``), so the parser
+    may be built from :mod:`.facts`'s table: a command that runs reads the modules themselves."""
+    mine = argv[:argv.index("--")] if "--" in argv else argv
+    return any(a == "-h" or (a.startswith("--h") and "--help".startswith(a)) for a in mine)
+
+
+def short_help() -> str:
+    """What ``topomark`` alone prints: the usage, the commands with their summaries, a line each, and where
+    to read more."""
+    width = max(map(len, COMMANDS))
+    lines = [build_parser(only="").format_usage().rstrip(), "", "commands:"]
+    lines += [f"  {name:<{width}}  {summary}" for name, (_, summary) in COMMANDS.items()]
+    return "\n".join([*lines, "", f"{PROG} COMMAND --help describes a command and its options; {PROG} --help adds the exit codes"])
 
 
 def _say(what: str, message: str, code: int, as_json: bool) -> int:
@@ -204,6 +223,8 @@ def _fault(message: str, exc: BaseException, argv: list[str], as_json: bool = Fa
     print(f"{PROG}: internal fault: {message}\nThis is a fault in topomark, not in your input or in what it "
           f"checked. {where}", file=sys.stderr)
     if os.environ.get("TOPOMARK_DEBUG"):
+        import traceback  # here: only a fault needs it
+
         print("".join(traceback.format_exception(type(exc), exc, exc.__traceback__)), file=sys.stderr)
     if as_json:
         error = {"error": f"internal fault: {message}", "exit": EXIT_FAULT, "report": path}
@@ -215,6 +236,8 @@ def _report(argv: list[str], exc: BaseException) -> tuple[str | None, str | None
     """Write the fault report: its absolute path and the path the message shows (``./NAME`` in the current
     directory), or None, None and why not.  Never raises: the fault is reported, report or not."""
     try:
+        from pathlib import Path
+
         from topomark.reference.cli.fault_report import write_report
 
         written, why = write_report(argv, exc)

@@ -19,12 +19,13 @@ topomark.spec.errors.InvalidInput: explore: unrecognized arguments: --algoritm b
 from __future__ import annotations
 
 import argparse
+import importlib
 import json
 from typing import Any
 
 from topomark.spec.errors import InvalidInput, clip, did_you_mean
 
-__all__ = ["PROG", "JSON_HELP", "Parser", "emit"]
+__all__ = ["PROG", "JSON_HELP", "Parser", "Later", "emit"]
 
 PROG = "topomark"
 JSON_HELP = "print one JSON object on stdout (an error too: {\"error\": ..., \"exit\": 2})"
@@ -60,6 +61,25 @@ class Parser(argparse.ArgumentParser):
             raise argparse.ArgumentError(action, f"invalid choice: {clip(str(value), 80, quote=True)}"
                                                  f"{did_you_mean(str(value), choices)} "
                                                  f"(choose from {', '.join(choices)})")
+
+
+class Later:
+    """A command's handler, imported when the command runs and never for its ``--help``: the function ``name`` of
+    the module ``topomark.reference.cli.MODULE`` (``Later("cmd_world", "world_command")``), looked up at each call.
+
+    >>> Later("cmd_claims", "claims_command")
+    Later('cmd_claims', 'claims_command')
+    """
+
+    def __init__(self, module: str, name: str):
+        self.module, self.name = module, name
+
+    def __call__(self, args: argparse.Namespace) -> int:
+        handler = getattr(importlib.import_module(f"{__package__}.{self.module}"), self.name)
+        return int(handler(args))
+
+    def __repr__(self) -> str:
+        return f"Later({self.module!r}, {self.name!r})"
 
 
 def emit(args: argparse.Namespace, data: dict[str, Any], text: str) -> None:

@@ -1,0 +1,55 @@
+"""The options of ``topomark worst-case`` (:mod:`..cmd_worst_case`), ``--search``'s among them
+(:mod:`..cmd_worst_search`)."""
+
+from __future__ import annotations
+
+from topomark.reference.cli.args import MAX_JOBS, seed
+from topomark.reference.cli.facts import fact
+from topomark.reference.cli.parser import Later
+
+__all__ = ["register", "MAX_EXHAUSTIVE"]
+
+MAX_EXHAUSTIVE = 8  # the census's enumeration reaches n = 8 (topomark.proofs.enumerate.MAX_VERTICES)
+
+
+def register(sub) -> None:
+    p = sub.add_parser("worst-case", description="Run an algorithm from every start of every embedded world up to a size and "
+                                   "degree (exhaustive, exact), or search larger worlds for bad ones (--search, a "
+                                   "lower bound); report the largest cost, cost/m and cost / bound per n.")
+    p.add_argument("--algorithm", default="basic", metavar="NAME", help="registered algorithm (default basic; "
+                                                                         "see topomark algorithms)")
+    p.add_argument("--lighthouse", metavar="NAME", help="lighthouse strategy for a Chapter 3-4 algorithm")
+    p.add_argument("--policy", action="append", default=[], metavar="KIND=NAME",
+                   help="edge, hypothesis or path policy, as for explore (repeatable)")
+    p.add_argument("--max-vertices", type=int, metavar="N", help=f"largest world size (exhaustive: 2..{MAX_EXHAUSTIVE})")
+    p.add_argument("--max-degree", type=int, default=4, metavar="D", help="largest vertex degree (default 4)")
+    p.add_argument("--min-vertices", type=int, default=2, metavar="M", help="smallest world size (default 2)")
+    p.add_argument("--jobs", type=int, default=1, metavar="N", help=f"worker processes, 1 to {MAX_JOBS} (default 1)")
+    p.add_argument("--scheduler", metavar="ADDRESS", help="run the tasks on a Dask cluster (an address, or 'local')")
+    p.add_argument("--shards", metavar="DIR", help="keep the tasks' results in DIR; run again, it resumes")
+    p.add_argument("--sample", type=float, default=0.001, metavar="FRACTION",
+                   help="fraction of the runs re-run checked (default 0.001; every argmax is always re-checked)")
+    p.add_argument("--seed", type=seed, default=0, help="seed of the checked sample and of --search (default 0)")
+    p.add_argument("--cross-check", action="store_true",
+                   help="also run the brute force over labelled rotation systems and require the same maxima (n <= 5)")
+    p.add_argument("-o", "--out", metavar="DIR", help="write worst-case.json, the argmax world files, worst-case.md and plots")
+    p.add_argument("--summarise", nargs="+", metavar="DIR",
+                   help="the report over the --out directories of earlier runs, exhaustive and --search: Markdown on "
+                        "stdout, or worst-case.md and its plot in -o DIR")
+    p.add_argument("--quiet", action="store_true", help="no progress line")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
+    add_search_arguments(p)
+    p.set_defaults(handler=Later("cmd_worst_case", "worst_case_command"))
+
+
+def add_search_arguments(p) -> None:
+    g = p.add_argument_group("adversarial search (--search)")
+    g.add_argument("--search", action="store_true", help="search worlds past exhaustive sizes for a bad one")
+    g.add_argument("--vertices", type=int, nargs="+", default=[20], metavar="N",
+                   help="world sizes to search (default 20)")
+    g.add_argument("--evaluations", type=int, default=400, metavar="K",
+                   help="runs per size for the search, and as many random worlds (default 400)")
+    g.add_argument("--objective", choices=fact("objectives"), default="cost",
+                   help="what to maximise: cost, cost-per-m, or ratio (cost / the exact bound)")
+    g.add_argument("--world-family", choices=("lattice-hole",),
+                   help="search within a family of worlds: lattice-hole (a lattice, which cells are removed)")
