@@ -27,7 +27,7 @@ import os
 from collections.abc import Iterable, Mapping
 from typing import Any, cast
 
-from topomark.reference.algorithms.registry import AlgorithmSpec, Listed, listing
+from topomark.reference.algorithms.registry import AlgorithmSpec, Listed, algorithm_spec, listing
 from topomark.reference.explorers.lighthouses import Lighthouse
 from topomark.reference.explorers.policies import Policies
 from topomark.reference.replay.replay import ReplayResult, replay as _replay
@@ -72,7 +72,7 @@ def explore(world: WorldLike, algorithm: str = "basic", lighthouse: str | Lighth
     topomark.spec.errors.InvalidInput: the algorithm basic takes no option --colour (its options: ...)
     """
     given = {name.replace("_", "-"): value for name, value in options.items()}
-    chosen = _policies(policies)
+    chosen = _policies(policies, algorithm)
     the_world = resolve(world)
     if trace is None:
         return _explore(the_world, algorithm, chosen, check, record=record, lighthouse=lighthouse, options=given)
@@ -80,8 +80,9 @@ def explore(world: WorldLike, algorithm: str = "basic", lighthouse: str | Lighth
         return _explore(the_world, algorithm, chosen, check, sink=sink, lighthouse=lighthouse, options=given)
 
 
-def _policies(policies: Policies | Mapping[str, str] | None) -> Policies | None:
-    """A Policies from a mapping ``{"edge": ..., "hypothesis": ..., "path": ...}`` (a kind given at most once)."""
+def _policies(policies: Policies | Mapping[str, str] | None, algorithm: str) -> Policies | None:
+    """A Policies from a mapping ``{"edge": ..., "hypothesis": ..., "path": ...}`` (a kind given at most once); a
+    kind it leaves out takes ``algorithm``'s default (its registration's edge policy, if it names one)."""
     if policies is None or isinstance(policies, Policies):
         return policies
     if not isinstance(policies, Mapping):
@@ -90,7 +91,7 @@ def _policies(policies: Policies | Mapping[str, str] | None) -> Policies | None:
     unknown = sorted(set(policies) - {"edge", "hypothesis", "path"})
     if unknown:
         raise InvalidInput(f"unknown policy kind {', '.join(map(repr, unknown))} (the kinds: edge, hypothesis, path)")
-    return Policies(**policies)
+    return algorithm_spec(algorithm).policies(policies)
 
 
 def isomorphic(a: WorldLike, b: WorldLike, markers: bool = True) -> Witness | None:
