@@ -38,12 +38,12 @@ def choice():
     def counted(S, dist):
         calls.append(len(S.unexplored))
         return farthest(S, dist)
-    register_edge_choice("farthest", counted)
+    register_edge_choice("far-end", counted)
     try:
         yield calls
     finally:
-        unregister_edge_choice("farthest")
-        for name in [n for n, s in REGISTRY.items() if s.edge_policy == "farthest"]:
+        unregister_edge_choice("far-end")
+        for name in [n for n, s in REGISTRY.items() if s.edge_policy == "far-end"]:
             unregister(name)
 
 
@@ -53,27 +53,27 @@ def edges(outcome) -> list:
 
 def test_a_registered_edge_choice_is_an_edge_policy_line_5_asks(choice):
     world = resolve_world(LATTICE)
-    far = explore(world, "basic", Policies(edge="farthest"))
+    far = explore(world, "basic", Policies(edge="far-end"))
     near = explore(world, "basic", Policies(edge="nearest"))
     assert far.verified and near.verified and far.cost <= REGISTRY["basic"].bound_for(world.n, world.m)
     assert len(choice) == far.iterations == world.m  # asked once per iteration, at line 5
     assert edges(far) != edges(near)  # and its answer is the edge taken
-    assert far.trace[0]["policies"]["edge"] == "farthest"
-    assert header_policies(far.trace[0]["policies"], "t").edge == "farthest"  # a trace naming it is readable
+    assert far.trace[0]["policies"]["edge"] == "far-end"
+    assert header_policies(far.trace[0]["policies"], "t").edge == "far-end"  # a trace naming it is readable
 
 
 def test_the_command_line_takes_a_registered_edge_choice(choice, capsys):
-    assert main(["explore", LATTICE, "--algorithm", "enh3", "--policy", "edge=farthest", "--json"]) == 0
-    assert json.loads(capsys.readouterr().out)["policies"]["edge"] == "farthest"
-    assert main(["explore", LATTICE, "--algorithm", "dudek", "--policy", "farthest", "--quiet"]) == 0
-    assert "policies edge=farthest" in capsys.readouterr().out
+    assert main(["explore", LATTICE, "--algorithm", "enh3", "--policy", "edge=far-end", "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["policies"]["edge"] == "far-end"
+    assert main(["explore", LATTICE, "--algorithm", "dudek", "--policy", "far-end", "--quiet"]) == 0
+    assert "policies edge=far-end" in capsys.readouterr().out
 
 
 def test_an_unknown_edge_choice_is_bad_input_and_a_name_is_taken_once(choice, capsys):
     with pytest.raises(InvalidInput, match="unknown edge policy 'nearst'"):
         Policies(edge="nearst")
     with pytest.raises(ValueError, match="registered twice"):
-        register_edge_choice("farthest", farthest)
+        register_edge_choice("far-end", farthest)
     with pytest.raises(ValueError, match="registered twice"):
         register_edge_choice("nearest", farthest)
     with pytest.raises(ValueError, match="lower-case"):
@@ -93,31 +93,31 @@ def test_a_choice_that_names_no_edge_of_U_is_a_fault_of_the_choice():
 
 
 def test_a_registration_sets_its_edge_choice_and_runs_take_it_unless_one_is_chosen(choice, capsys):
-    spec = register(lighthouse_algorithm("basic-farthest", "§3.3, Algorithm 3.1, the farthest edge of U first",
-                                         LighthouseExplorer, edge_policy="farthest"))
+    spec = register(lighthouse_algorithm("basic-far-end", "§3.3, Algorithm 3.1, the farthest edge of U first",
+                                         LighthouseExplorer, edge_policy="far-end"))
     world = resolve_world(LATTICE)
-    out = explore(world, "basic-farthest")
-    assert out.verified and out.trace[0]["policies"]["edge"] == "farthest"
-    assert edges(out) == edges(explore(world, "basic", Policies(edge="farthest")))
-    assert explore(world, "basic-farthest", Policies(edge="nearest")).trace[0]["policies"]["edge"] == "nearest"
-    assert spec.policies({"hypothesis": "lifo"}).to_json() == {"edge": "farthest", "hypothesis": "lifo",
+    out = explore(world, "basic-far-end")
+    assert out.verified and out.trace[0]["policies"]["edge"] == "far-end"
+    assert edges(out) == edges(explore(world, "basic", Policies(edge="far-end")))
+    assert explore(world, "basic-far-end", Policies(edge="nearest")).trace[0]["policies"]["edge"] == "nearest"
+    assert spec.policies({"hypothesis": "lifo"}).to_json() == {"edge": "far-end", "hypothesis": "lifo",
                                                                "path": "shortest"}
-    assert main(["explore", LATTICE, "--algorithm", "basic-farthest", "--quiet"]) == 0
-    assert "policies edge=farthest, hypothesis=fifo, path=shortest" in capsys.readouterr().out
-    assert main(["explore", LATTICE, "--algorithm", "basic-farthest", "--policy", "hypothesis=lifo", "--json"]) == 0
-    assert json.loads(capsys.readouterr().out)["policies"] == {"edge": "farthest", "hypothesis": "lifo",
+    assert main(["explore", LATTICE, "--algorithm", "basic-far-end", "--quiet"]) == 0
+    assert "policies edge=far-end, hypothesis=fifo, path=shortest" in capsys.readouterr().out
+    assert main(["explore", LATTICE, "--algorithm", "basic-far-end", "--policy", "hypothesis=lifo", "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["policies"] == {"edge": "far-end", "hypothesis": "lifo",
                                                                "path": "shortest"}
     assert main(["algorithms", "--json"]) == 0
-    [entry] = [e for e in json.loads(capsys.readouterr().out) if e["name"] == "basic-farthest"]
-    assert entry["policies"]["edge"] == "farthest" and entry["options"][0].startswith("policy edge=farthest|")
+    [entry] = [e for e in json.loads(capsys.readouterr().out) if e["name"] == "basic-far-end"]
+    assert entry["policies"]["edge"] == "far-end" and entry["options"][0].startswith("policy edge=far-end|")
 
 
 def test_an_edge_policy_must_be_registered_and_declared():
     basic = REGISTRY["basic"]
     fields = dict(name="x", thesis="§3.3", kit=basic.kit, bound=None, markers="1", deterministic=True,
                   checks=("isomorphism",), explorer=LighthouseExplorer)
-    with pytest.raises(ValueError, match="edge_policy 'farthest' is a registered edge choice"):
-        AlgorithmSpec(**fields, options=basic.options, edge_policy="farthest")  # not registered here
+    with pytest.raises(ValueError, match="edge_policy 'no-such-choice' is a registered edge choice"):
+        AlgorithmSpec(**fields, options=basic.options, edge_policy="no-such-choice")
     with pytest.raises(ValueError, match="declares 'policy edge'"):
         AlgorithmSpec(**fields, options=(), edge_policy="fifo")
     assert AlgorithmSpec(**fields, options=basic.options, edge_policy="fifo").policies().edge == "fifo"
