@@ -1,15 +1,25 @@
-"""``docs/adding-an-algorithm.md`` is true: its example code, taken from the page itself, runs as written.
+"""``docs/adding-an-algorithm.md`` is true: its example code, taken from the page itself, runs as written, and
+its steps, followed in a copy of the checkout, give what it promises.
 
 The page's Python blocks are run in order: a block whose first line names a file (``# reference/...py``)
 becomes that module — put in ``sys.modules`` for the test only, nothing is written into the package — and
-the others run as one script, which registers the toy algorithm with ``registry.register`` and runs it and a
+the others run as one script, which registers the two examples with ``registry.register`` and runs them and a
 broken variant under the checker.  The tests then check what the page promises of them.
+
+Then the page is followed as a newcomer would: the checkout (``topomark/`` with its links, ``spec/``,
+``reference/``, ``proofs/``, ``pyproject.toml``, ``docs/``) is copied, the files the page names are written
+into the copy, and the commands of its "Running it" section are run there in a subprocess, as written, with
+the copy first on the path.
 """
 
 from __future__ import annotations
 
 import ast
+import json
+import os
 import re
+import shutil
+import subprocess
 import sys
 import types
 from pathlib import Path
@@ -19,13 +29,19 @@ import pytest
 from topomark.reference.algorithms.algorithm_spec import CHECKS
 from topomark.reference.algorithms.registry import REGISTRY, algorithm_spec, unregister
 from topomark.reference.cli.main import main
+from topomark.reference.explorers.contract import Explorer, IterationRecord, conforms
+from topomark.reference.explorers.edge_choices import EDGE_CHOICES, unregister_edge_choice
 from topomark.reference.run.explore import explore
 from topomark.reference.worlds import generators
 from topomark.spec.errors import InvalidInput
 
-DOC = Path(__file__).resolve().parents[1] / "docs" / "adding-an-algorithm.md"
+ROOT = Path(__file__).resolve().parents[1]
+DOC = ROOT / "docs" / "adding-an-algorithm.md"
 TEXT = DOC.read_text()
 BLOCKS = re.findall(r"^```python\n(.*?)^```$", TEXT, re.M | re.S)
+COMMANDS = [line for block in re.findall(r"^```sh\n(.*?)^```$", TEXT.split("## Running it")[1].split("\n## ")[0],
+                                         re.M | re.S) for line in block.splitlines() if line.strip()]
+TOYS = ("tree-walk", "basic-farthest")
 FILE = re.compile(r"# (reference/[\w/]+)\.py")
 
 
@@ -51,13 +67,36 @@ def doc(monkeypatch):
             exec(compile(block, str(DOC), "exec"), module.__dict__)
         yield script
     finally:
-        if "tree-walk" in REGISTRY:
-            unregister("tree-walk")
+        for name in TOYS:
+            if name in REGISTRY:
+                unregister(name)
+        if "farthest" in EDGE_CHOICES:
+            unregister_edge_choice("farthest")
 
 
-def test_the_page_has_the_two_files_and_the_scripts():
+def test_the_page_has_the_three_files_and_the_scripts():
     assert [_module_name(b) for b in BLOCKS] == ["topomark.reference.explorers.tree_walk",
-                                                 "topomark.reference.algorithms.registrations.tree_walk", None, None]
+                                                 "topomark.reference.algorithms.registrations.tree_walk",
+                                                 "topomark.reference.algorithms.registrations.basic_farthest",
+                                                 None, None, None]
+
+
+def test_the_example_explorer_keeps_the_whole_contract(doc):
+    """What tests/test_explorer_protocol.py asks of every registered explorer: the methods, models() and a
+    record with to_json()."""
+    spec = algorithm_spec("tree-walk")
+    assert conforms(spec.factory)
+    out = explore(generators.chain(4), spec)
+    assert isinstance(out.explorer, Explorer) and out.explorer.models() == [(out.explorer.S, out.explorer.position)]
+    assert all(isinstance(it, IterationRecord) and it.to_json()["iteration"] == it.number
+               for it in out.explorer.iterations)
+
+
+def test_the_variant_takes_its_edge_choice_and_keeps_algorithm_3_1s_checks(doc):
+    spec = algorithm_spec("basic-farthest")
+    assert spec.edge_policy == "farthest" and spec.checks == algorithm_spec("basic").checks
+    assert spec.family == "algorithm-3.1" and list(REGISTRY).index("basic-farthest") == 1  # right after basic
+    assert doc["far"].verified and doc["near"].verified
 
 
 def test_the_toy_is_registered_and_verified_correct(doc):
@@ -88,10 +127,11 @@ def test_the_toy_runs_from_the_command_line_and_refuses_a_world_that_is_not_a_tr
 
 def test_the_example_keeps_the_wall_and_the_layers():
     """The explorer imports only spec/ and explorers/; the registration nothing above algorithms/."""
+    registration = ("topomark.spec", "topomark.reference.explorers", "topomark.reference.worlds",
+                    "topomark.reference.algorithms")
     allowed = {"topomark.reference.explorers.tree_walk": ("topomark.spec", "topomark.reference.explorers"),
-               "topomark.reference.algorithms.registrations.tree_walk": (
-                   "topomark.spec", "topomark.reference.explorers", "topomark.reference.worlds",
-                   "topomark.reference.algorithms")}
+               "topomark.reference.algorithms.registrations.tree_walk": registration,
+               "topomark.reference.algorithms.registrations.basic_farthest": registration}
     for block in BLOCKS:
         name = _module_name(block)
         if name is None:
@@ -104,3 +144,99 @@ def test_the_example_keeps_the_wall_and_the_layers():
 def test_the_page_explains_every_check():
     table = TEXT.split("## Which checks to name")[1].split("##")[0]
     assert all(f"| `{name}` |" in table for name in CHECKS)
+
+
+# -- the page followed in a copy of the checkout -------------------------------------------------------------------
+@pytest.fixture(scope="module")
+def checkout(tmp_path_factory):
+    """A copy of the checkout with the page's files written in; the page's commands run there, as written:
+    yields the copy and, per command, (command, exit code, stdout, stderr).  Before and after: whether
+    docs/cli.md is what the parsers give."""
+    copy = tmp_path_factory.mktemp("checkout")
+    ignore = shutil.ignore_patterns("__pycache__")
+    for folder in ("topomark", "spec", "reference", "proofs", "docs"):
+        shutil.copytree(ROOT / folder, copy / folder, symlinks=True, ignore=ignore)
+    shutil.copy(ROOT / "pyproject.toml", copy)
+    for block in BLOCKS:
+        found = FILE.fullmatch(block.splitlines()[0])
+        if found:
+            (copy / f"{found.group(1)}.py").write_text(block)
+    env = {**os.environ, "PYTHONPATH": str(copy), "PYTHONDONTWRITEBYTECODE": "1"}
+
+    def sh(command: str) -> tuple[str, int, str, str]:
+        line = re.sub(r"^topomark ", f"{sys.executable} -m topomark ", command)
+        line = re.sub(r"^python ", f"{sys.executable} ", line)
+        done = subprocess.run(line, shell=True, cwd=copy, env=env, capture_output=True, text=True, timeout=600)
+        return command, done.returncode, done.stdout, done.stderr
+    up_to_date = (f"{sys.executable} -c \"import sys; from topomark.reference.cli.docgen import markdown; "
+                  "sys.exit(open('docs/cli.md', encoding='utf-8').read() != markdown())\"")
+    before = sh(up_to_date)[1] == 0
+    runs = [sh(command) for command in COMMANDS]
+    after = sh(up_to_date)[1] == 0
+    yield copy, runs, (before, after)
+
+
+def _ran(checkout, words: str) -> tuple[str, int, str, str]:
+    """The run of the page's command that is ``words`` (its comment left out), else the first that contains it."""
+    runs = checkout[1]
+    return next((run for run in runs if run[0].split(" #")[0].strip() == words), None) or \
+        next(run for run in runs if words in run[0])
+
+
+def test_the_copy_imports_the_copy(checkout):
+    copy, _, _ = checkout
+    where = subprocess.run([sys.executable, "-c", "import topomark; print(topomark.__file__)"], cwd=copy,
+                           env={**os.environ, "PYTHONPATH": str(copy)}, capture_output=True, text=True)
+    assert Path(where.stdout.strip()).resolve() == (copy / "topomark" / "__init__.py").resolve()
+
+
+def test_every_command_of_the_page_succeeds(checkout):
+    assert len(checkout[1]) >= 8
+    for command, code, _, err in checkout[1]:
+        assert code == 0, (command, err[-2000:])
+
+
+def test_docs_cli_md_must_be_regenerated_and_the_page_says_how(checkout):
+    copy, _, (before, after) = checkout
+    assert (before, after) == (False, True)  # stale once the algorithms exist, current after the page's command
+    cli = (copy / "docs" / "cli.md").read_text(encoding="utf-8")
+    assert all(name in cli for name in TOYS)
+
+
+def test_both_algorithms_are_listed_with_their_policies(checkout):
+    listed = {a["name"]: a for a in json.loads(_ran(checkout, "algorithms --json")[2])}
+    assert TOYS[0] in listed and TOYS[1] in listed
+    assert listed["tree-walk"]["policies"] == {} and listed["tree-walk"]["family"] == "robot"
+    assert listed["basic-farthest"]["policies"] == {"edge": "farthest", "hypothesis": "fifo", "path": "shortest"}
+    text = _ran(checkout, "topomark algorithms")[2]
+    assert "tree-walk" in text and "basic-farthest" in text
+
+
+def test_the_runs_are_checked_and_name_the_policies_they_use(checkout):
+    tree = _ran(checkout, "explore chain:n=8 --algorithm tree-walk")[2]
+    assert "(tree-walk; kit: no marker; no policies)" in tree and "verified:" in tree
+    far = _ran(checkout, "--algorithm basic-farthest")[2]
+    assert "policies edge=farthest, hypothesis=fifo, path=shortest)" in far and "verified:" in far
+    assert "cost-bound held at the end" in far
+    assert "policies edge=farthest," in _ran(checkout, "--policy edge=farthest")[2]
+    assert _ran(checkout, "replay tree.json walk.jsonl")[2].startswith("VERIFIED")
+    copy = checkout[0]
+    assert (copy / "walk.json").exists() and (copy / "walk.jsonl").exists()
+
+
+def test_the_conformance_suites_hold_what_the_page_says(checkout):
+    suites = {s["algorithm"]: s for s in json.loads((checkout[0] / "suite" / "manifest.json").read_text())["suites"]}
+    assert set(suites) == set(TOYS)
+    assert suites["tree-walk"]["family"] == "marker-less"
+    assert [c["name"] for c in suites["tree-walk"]["cases"]] == ["chain-6"]  # the only tree of the shared worlds
+    assert suites["basic-farthest"]["family"] == "algorithm-3.1" and len(suites["basic-farthest"]["cases"]) >= 6
+    assert all(c["expected"] == "correct" for s in suites.values() for c in s["cases"])
+
+
+def test_help_lists_the_new_algorithms_after_the_pages_facts_command(checkout):
+    """``explore --help`` reads its names from the table the page regenerates, not from the registry."""
+    copy = checkout[0]
+    assert _ran(checkout, "python -m topomark.reference.cli.facts > reference/cli/facts_table.py")[1] == 0
+    shown = subprocess.run([sys.executable, "-m", "topomark", "explore", "--help"], cwd=copy, capture_output=True,
+                           text=True, env={**os.environ, "PYTHONPATH": str(copy), "COLUMNS": "200"})
+    assert shown.returncode == 0 and all(name in shown.stdout for name in TOYS), shown.stdout[-1500:]

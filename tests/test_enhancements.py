@@ -26,9 +26,12 @@ ALGORITHMS = {name: spec.factory for name, spec in in_family("algorithm-3.1").it
 NAMES = ["enh1", "enh2", "enh3", "enh4", "enh5-d1", "enh5-d2", "enh3+4", "enh3+5"]
 
 
-def test_every_enhancement_is_registered_by_its_issue_name():
-    assert list(ALGORITHMS) == ["basic"] + NAMES
+def test_every_enhancement_is_registered_by_its_name_in_algorithm_3_1s_family():
+    """Chapter 4's enhancements are all there, after ``basic``; the family may hold more members (an algorithm
+    added by a registration module, docs/adding-an-algorithm.md), so membership is checked, not an exact list."""
     assert set(ENHANCEMENTS) == set(NAMES)
+    assert list(ALGORITHMS)[0] == "basic" and set(NAMES) <= set(ALGORITHMS)
+    assert [name for name in ALGORITHMS if name in NAMES] == NAMES  # in Chapter 4's order
 
 
 @settings(max_examples=100, deadline=None)

@@ -1,8 +1,9 @@
-"""The minimal example clients of ``reference/oracle/examples/`` for three marker kits, run through ``topomark
-run-external`` over protocol @2 with the kit their algorithm is registered with: Dudek's movable marker
-(``client_dudek.py``, §2.3.1), Case 1a's m edge markers (``client_edge_markers.py``, §6.2.1) and the carried
-l = ε thread (``client_thread.py``, §6.3.1).  Each maps the small worlds, and a copy with one line changed
-(a seeded fault) fails with exit 1 and the reason that names the fault."""
+"""The example clients of ``reference/oracle/examples/`` for four marker kits, run through ``topomark
+run-external`` over protocol @2 with the kit their algorithm is registered with: Algorithm 3.1's directional
+vertex marker (``client.py``, §3.3, ``basic``), Dudek's movable marker (``client_dudek.py``, §2.3.1), Case 1a's
+m edge markers (``client_edge_markers.py``, §6.2.1) and the carried l = ε thread (``client_thread.py``, §6.3.1).
+Each maps the small worlds and passes its algorithm's conformance suite, and a copy with one line changed (a
+seeded fault) fails with exit 1 and the reason that names the fault."""
 
 from __future__ import annotations
 
@@ -18,7 +19,8 @@ from topomark.reference.algorithms.registry import algorithm_spec
 from topomark.reference.cli.main import main
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "reference" / "oracle" / "examples"
-CLIENTS = {"dudek": "client_dudek.py", "case-1a": "client_edge_markers.py", "thread-carried": "client_thread.py"}
+CLIENTS = {"basic": "client.py", "dudek": "client_dudek.py", "case-1a": "client_edge_markers.py",
+           "thread-carried": "client_thread.py"}
 WORLDS = ("cycle:n=3", "cycle:n=7", "chain:n=2", "chain:n=5", "lattice-hole:rows=4,cols=4,seed=1", *FIGURE_3_4,
           "complete:n=4")
 CHIRAL = "lattice-hole:rows=4,cols=4,seed=1"  # its mirror image is not extended-isomorphic to it (the wheels', K4's is)
@@ -54,7 +56,7 @@ def test_each_client_is_standalone_standard_library_only(algorithm):
     imported = {alias.name.split(".")[0] for node in ast.walk(tree) if isinstance(node, ast.Import)
                 for alias in node.names}
     imported |= {node.module.split(".")[0] for node in ast.walk(tree) if isinstance(node, ast.ImportFrom)}
-    assert imported <= {"json", "sys", "collections"}
+    assert imported <= {"json", "re", "sys", "collections"}  # the standard library only, no topomark
 
 
 @pytest.mark.parametrize("world", WORLDS)

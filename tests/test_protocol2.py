@@ -124,10 +124,11 @@ def test_client2_passes_under_protocol_2_with_every_snapshot_checked(world):
     assert result.snapshots == world.m and result.rule == "markers"
 
 
-def test_the_at_1_client_passes_unchanged_by_default_and_refuses_at_2():
+def test_the_algorithm_3_1_client_passes_at_1_and_at_2_with_its_kit_and_refuses_another_kit():
     assert run_external(TRIANGLE, [sys.executable, CLIENT]).passed
-    result = run_external(TRIANGLE, [sys.executable, CLIENT], version=2)
-    assert not result.passed and result.reason == "crash" and "protocol@1 only" in result.message
+    assert run_external(TRIANGLE, [sys.executable, CLIENT], version=2).passed  # @2 with one directional vertex marker
+    result = run_external(TRIANGLE, [sys.executable, CLIENT], version=2, kit=EDGE_KIT)
+    assert not result.passed and result.reason == "crash" and "one directional vertex marker" in result.message
 
 
 @pytest.mark.slow
@@ -145,7 +146,9 @@ def test_cli_client2_and_the_conformance_suite_at_2(tmp_path, capsys):
     report = json.loads(capsys.readouterr().out)
     assert report["passed"] == report["total"] >= 3
     assert main(["conformance", "run", str(suite), "-k", "triangle", "--protocol", "2", "--",
-                 sys.executable, CLIENT]) == 1  # the @1 client refuses an @2 hello
+                 sys.executable, CLIENT]) == 0  # @2 with Algorithm 3.1's kit: client.py speaks it
+    assert main(["conformance", "run", str(suite), "-k", "triangle", "--kit", kit, "--",
+                 sys.executable, CLIENT]) == 1  # any other kit: client.py refuses the hello
 
 
 @pytest.mark.parametrize("args, words", [

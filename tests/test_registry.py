@@ -16,6 +16,8 @@ from topomark.reference.explorers.compositions import EXPLORERS
 from topomark.reference.cli.main import main
 from topomark.reference.run.explore import check_run, explore
 from topomark.reference.algorithms.registry import CHECKS, LISTED, REGISTRY, STATUSES
+from topomark.reference.algorithms.algorithm_spec import ALGORITHM_3_1_CHECKS
+from topomark.reference.algorithms.registrations.algorithm31 import lighthouse_algorithm
 from topomark.spec.errors import InvalidInput
 
 from conftest import SMALL_WORLDS, bare, make_world
@@ -75,10 +77,33 @@ def test_every_algorithm_comes_from_a_registration_module():
         for spec in getattr(importlib.import_module(f"{registrations.__name__}.{info.name}"), "SPECS", ()):
             listed[spec.name] = spec
     assert listed.keys() == REGISTRY.keys() and all(listed[name] is REGISTRY[name] for name in REGISTRY)
+    assert_algorithm_3_1_family()
+
+
+def assert_algorithm_3_1_family() -> None:
+    """What makes Algorithm 3.1's family, whatever its members: ``basic`` and every Chapter 4 enhancement with
+    their explorers, all listed first; every member a lighthouse algorithm held to Algorithm 3.1's checks, its
+    explorer Algorithm 3.1's (a subclass of LighthouseExplorer)."""
     family = in_family("algorithm-3.1")
-    assert list(family) == ["basic", *EXPLORERS] == list(REGISTRY)[:len(family)]  # listed first
+    assert list(family) == list(REGISTRY)[:len(family)] and list(family)[0] == "basic"  # listed first, basic first
     assert family["basic"].factory is LighthouseExplorer
     assert all(family[name].factory is cls for name, cls in EXPLORERS.items())
+    for name, spec in family.items():
+        assert spec.uses_lighthouse and set(ALGORITHM_3_1_CHECKS) <= set(spec.checks), name
+        assert isinstance(spec.factory, type) and issubclass(spec.factory, LighthouseExplorer), name
+
+
+def test_a_new_member_of_algorithm_3_1s_family_keeps_its_properties():
+    """Another member of the family (Algorithm 3.1 with its line-5 edge choice fixed, as a registration module
+    may add) joins the family, listed after Chapter 4, and the family's properties hold with it."""
+    spec = lighthouse_algorithm("basic-oldest", "§3.3, Algorithm 3.1, the oldest edge of U first",
+                                LighthouseExplorer, edge_policy="fifo")
+    register(spec)
+    try:
+        assert "basic-oldest" in in_family("algorithm-3.1")
+        assert_algorithm_3_1_family()
+    finally:
+        unregister("basic-oldest")
 
 
 def test_register_lists_a_new_algorithm_in_thesis_order_and_unregister_takes_it_out():

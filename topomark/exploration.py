@@ -80,7 +80,7 @@ def explore(world: WorldLike, algorithm: str = "basic", lighthouse: str | Lighth
     spec = algorithm_spec(algorithm)
     _check_options(spec, options)
     given = {name.replace("_", "-"): value for name, value in options.items()}
-    chosen = _policies(policies)
+    chosen = _policies(policies, algorithm)
     the_world = resolve(world)
     if trace is None:
         return _explore(the_world, spec, chosen, check, record=record, lighthouse=lighthouse, options=given)
@@ -100,8 +100,9 @@ def _check_options(spec: AlgorithmSpec, options: Mapping[str, Any]) -> None:
                    f"explore() takes {', '.join(EXPLORE_KEYWORDS)}; {own}", suggest=EXPLORE_KEYWORDS)
 
 
-def _policies(policies: Policies | Mapping[str, str] | None) -> Policies | None:
-    """A Policies from a mapping ``{"edge": ..., "hypothesis": ..., "path": ...}`` (a kind given at most once)."""
+def _policies(policies: Policies | Mapping[str, str] | None, algorithm: str) -> Policies | None:
+    """A Policies from a mapping ``{"edge": ..., "hypothesis": ..., "path": ...}`` (a kind given at most once); a
+    kind it leaves out takes ``algorithm``'s default (its registration's edge policy, if it names one)."""
     if policies is None or isinstance(policies, Policies):
         return policies
     if not isinstance(policies, Mapping):
@@ -110,7 +111,7 @@ def _policies(policies: Policies | Mapping[str, str] | None) -> Policies | None:
     unknown = sorted(set(policies) - {"edge", "hypothesis", "path"})
     if unknown:
         raise InvalidInput(f"unknown policy kind {', '.join(map(repr, unknown))} (the kinds: edge, hypothesis, path)")
-    return Policies(**policies)
+    return algorithm_spec(algorithm).policies(policies)
 
 
 def isomorphic(a: WorldLike, b: WorldLike, markers: bool = True) -> Witness | None:

@@ -61,7 +61,9 @@ from typing import Any, Callable, Mapping
 from topomark.spec.errors import InvalidInput, clip
 from topomark.spec.kit import Kit
 
+from topomark.reference.explorers.edge_choices import EDGE_CHOICES
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES, Lighthouse, lighthouse as lighthouse_named
+from topomark.reference.explorers.policies import Policies
 from topomark.reference.algorithms.expectation import (CORRECT, EXPECTATIONS, FAILS_BY_DESIGN, broadest,
                                                        lighthouse_expectation)
 
@@ -167,6 +169,7 @@ class AlgorithmSpec:
     expected: str | None = None  # the runs' expected outcome (expectation module); None: from the status
     expected_reason: str | None = None  # the thesis reference of an expected outcome other than the status's
     expected_by_family: tuple[tuple[str, str, str], ...] = ()  # (world family, expectation, reason) where it differs
+    edge_policy: str | None = None  # the edge choice its runs take unless one is chosen (None: nearest)
 
     def __post_init__(self) -> None:
         if self.status not in (IMPLEMENTED, EXPECTED_TO_FAIL):
@@ -190,6 +193,9 @@ class AlgorithmSpec:
             if what is not None and (what not in EXPECTATIONS or (what != CORRECT and not why)):
                 raise ValueError(f"algorithm {self.name}: expected outcome {what!r}{' on ' + family if family else ''}"
                                  f" is one of {', '.join(EXPECTATIONS)}, with its thesis reference unless 'correct'")
+        if self.edge_policy is not None and (self.edge_policy not in EDGE_CHOICES or "edge" not in self.policy_kinds):
+            raise ValueError(f"algorithm {self.name}: edge_policy {self.edge_policy!r} is a registered edge choice "
+                             f"({', '.join(EDGE_CHOICES)}) of an algorithm that declares 'policy edge' in its options")
         if self.bound_fn is not None and "cost-bound" not in self.checks:  # every exact bound is checked
             object.__setattr__(self, "checks", (*self.checks, "cost-bound"))
 
@@ -277,6 +283,19 @@ class AlgorithmSpec:
         declare as ``"policy KIND..."``; ``explore --policy`` of any other kind is refused."""
         return tuple(o.split()[1].partition("=")[0] for o in self.options if o.startswith("policy ") and o.split()[1:])
 
+    def policies(self, chosen: Mapping[str, str] | None = None) -> Policies:
+        """The policies a run of this algorithm takes: ``chosen`` (kind ↦ name), and for a kind not chosen the
+        default — for the edge, the registration's :attr:`edge_policy` if it names one."""
+        given = dict(chosen or {})
+        if self.edge_policy is not None:
+            given.setdefault("edge", self.edge_policy)
+        return Policies(**given)
+
+    def policies_json(self, policies: Policies) -> dict[str, str]:
+        """The policies of :attr:`policy_kinds` only, as a run's header reports them: those this algorithm
+        consults (none for an algorithm that declares none)."""
+        return {kind: name for kind, name in policies.to_json().items() if kind in self.policy_kinds}
+
     def parse_options(self, given: dict[str, Any]) -> dict[str, Any]:
         """``given`` (name ↦ value, None meaning not given) checked against :attr:`parameters`, defaults filled
         in; an option this algorithm does not take is bad input naming both."""
@@ -304,7 +323,8 @@ class AlgorithmSpec:
                "markers": self.markers, "deterministic": self.deterministic, "options": list(self.options),
                "checks": list(self.checks), "family": self.family, "kit_from_world": self.kit_fn is not None,
                "parameters": {p.name: {"help": p.help, "default": p.default} for p in self.parameters},
-               "bound_checked": self.bound_checked, "bound_note": self.bound_note, "status": self.status}
+               "bound_checked": self.bound_checked, "bound_note": self.bound_note, "status": self.status,
+               "policies": self.policies_json(self.policies())}
         if self.status_reason:
             out["status_reason"] = self.status_reason
         out.update(self._expectation_json())

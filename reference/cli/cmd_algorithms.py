@@ -5,7 +5,8 @@ The JSON form is a list of objects with ``name``, ``thesis``, ``kit``,
 ``family`` (the algorithm family its trace@2 traces are written in), ``parameters``,
 ``kit_from_world``, ``bound_checked`` (the exact bound is the ``cost-bound`` check of every
 checked run), ``bound_note`` (how the bound is held: checked per run, measured by a bench, or none stated)
-and ``status`` (``implemented``, or ``implemented, expected to fail`` with ``status_reason``: the thesis references
+``policies`` (the policies its runs take unless ``--policy`` chooses others: the kinds it declares, with their
+defaults; empty for an algorithm that consults none) and ``status`` (``implemented``, or ``implemented, expected to fail`` with ``status_reason``: the thesis references
 and the world where it fails) and, for the lighthouse algorithms, ``lighthouses``
 (:meth:`topomark.reference.algorithms.algorithm_spec.AlgorithmSpec.to_json`).  The algorithms of the thesis
 that are not implementable from it are listed too, in their place, with only ``name``, ``thesis``, ``status``
@@ -39,6 +40,9 @@ def algorithms_command(args) -> int:
         print(f"{'':<{width}}  kit: {kit}{lighthouse}; bound: {s.bound or 'none stated in the thesis'}")
         if s.bound:
             print(f"{'':<{width}}  bound held: {s.bound_note}")
+        if s.policy_kinds:
+            print(f"{'':<{width}}  policies (default; --policy): "
+                  + ", ".join(f"{k}={v}" for k, v in s.policies_json(s.policies()).items()))
         if s.parameters:
             print(f"{'':<{width}}  options: " + ", ".join(f"--{p.name} (default {p.default})" for p in s.parameters))
     print(f"\nchecks: " + "; ".join(f"{k} = {v}" for k, v in CHECKS.items()))

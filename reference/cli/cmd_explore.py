@@ -25,7 +25,9 @@ from topomark.reference.worlds.argument import resolve_world
 __all__ = ["explore_command", "parse_policies", "check_policy_kinds"]
 
 
-def parse_policies(items: list[str]) -> Policies:
+def parse_policies(items: list[str], spec=None) -> Policies:
+    """The ``--policy KIND=NAME`` items as :class:`Policies`; a kind not given takes the default of the algorithm
+    ``spec`` (its registration's edge policy, :meth:`AlgorithmSpec.policies`), or the package's without one."""
     chosen: dict[str, str] = {}
     for item in items:
         kind, eq, name = item.partition("=")
@@ -36,7 +38,7 @@ def parse_policies(items: list[str]) -> Policies:
         if kind in chosen:
             raise InvalidInput(f"--policy: the {kind} policy is given twice")
         chosen[kind] = name
-    return Policies(**chosen)
+    return Policies(**chosen) if spec is None else spec.policies(chosen)
 
 
 def check_policy_kinds(items: list[str], spec) -> None:
@@ -132,8 +134,8 @@ TAIL = 8  # trace records shown before a violation's end record
 
 
 def explore_command(args) -> int:
-    policies = parse_policies(args.policy)
     spec = algorithm_spec(args.algorithm)
+    policies = parse_policies(args.policy, spec)
     check_policy_kinds(args.policy, spec)
     options = {name: getattr(args, f"param_{name.replace('-', '_')}") for name in parameters()}
     for path in (args.trace, args.map):  # before the run: a typo must not cost a long exploration
@@ -163,7 +165,7 @@ def explore_command(args) -> int:
         write_models = cast(Callable[[Any, str], list[Any]], spec.write_models)  # checked when --models was read
         guarded(args.models, lambda: write_models(outcome.explorer, args.models))
     last = ring.records[:-1]  # the records before the end record
-    data = {"world": label, "policies": policies.to_json(), "algorithm": args.algorithm, **outcome.summary(),
+    data = {"world": label, "policies": spec.policies_json(policies), "algorithm": args.algorithm, **outcome.summary(),
             "checked": not args.no_check}
     if args.map:
         data.update(map_written=unwritten is None, **({"map_not_written": unwritten} if unwritten else {}))
@@ -209,8 +211,9 @@ def _print_report(args, spec, label: str, policies, outcome, started: float, tai
     """The human-readable report: what ran, the table, and the outcome — claimed by the algorithm, judged by
     the checker (``spec.errors.OUTCOMES``: ``correct``, ``wrong-map``, ``failed``, ``limit``)."""
     setup = f"lighthouse {outcome.lighthouse}" if spec.uses_lighthouse else f"kit: {outcome.kit}"
-    print(f"explored {label} with {spec.thesis} ({args.algorithm}; {setup}; policies "
-          + ", ".join(f"{k}={v}" for k, v in policies.to_json().items()) + ")")
+    used = spec.policies_json(policies)  # only the kinds the algorithm consults
+    print(f"explored {label} with {spec.thesis} ({args.algorithm}; {setup}; "
+          + ("policies " + ", ".join(f"{k}={v}" for k, v in used.items()) if used else "no policies") + ")")
     print(_table(outcome, started, spec))
     if outcome.violation is not None:
         print(f"VIOLATION: {outcome.violation}")

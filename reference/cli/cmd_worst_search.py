@@ -28,7 +28,7 @@ def setup_of(args: argparse.Namespace):
     from topomark.reference.worstcase.exhaustive import Setup
 
     spec = algorithm_spec(args.algorithm)
-    policies = parse_policies(args.policy)
+    policies = parse_policies(args.policy, spec)
     check_policy_kinds(args.policy, spec)
     if not 0 <= args.sample <= 1:
         raise InvalidInput(f"--sample must be a fraction between 0 and 1, not {args.sample}")

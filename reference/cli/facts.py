@@ -47,7 +47,7 @@ SOURCES: dict[str, tuple[str, Callable[[Any], Any]]] = {  # fact: (the module de
     "max_walk_limit": (_LIGHTHOUSES, lambda m: m.MAX_WALK_LIMIT),
     "max_neighbourhood": (_LIGHTHOUSES, lambda m: m.MAX_NEIGHBOURHOOD),
     "max_threshold": (_LIGHTHOUSES, lambda m: m.MAX_THRESHOLD),
-    "edge_policies": (_POLICIES, lambda m: m.EDGE_POLICIES),
+    "edge_policies": (_POLICIES, lambda m: tuple(m.EDGE_CHOICES)),  # the built-in and the registered ones
     "hypothesis_policies": (_POLICIES, lambda m: m.HYPOTHESIS_POLICIES),
     "path_policies": (_POLICIES, lambda m: m.PATH_POLICIES),
     "generators": ("topomark.reference.worlds.generators", lambda m: m.PARAMETERS),

@@ -3,7 +3,8 @@
 * **edge policy** — which unexplored edge e to take from U (line 5):
   ``nearest`` (default: the entry of U whose known end is nearest the robot in
   S, ties broken by U's order), ``fifo`` (oldest entry first), ``lifo``
-  (newest entry first).
+  (newest entry first), or any edge choice registered by name
+  (:mod:`~topomark.reference.explorers.edge_choices`).
 * **hypothesis policy** — the order hypotheses are removed from H (line 10):
   ``fifo`` (default: U's order), ``lifo``, ``shortest`` (shortest validation
   path first, ties by U's order).
@@ -18,13 +19,16 @@ from __future__ import annotations
 from collections import deque
 from typing import Container, cast
 
-from topomark.spec.errors import unknown_name
+from topomark.spec.errors import ExplorerFault, unknown_name
 from topomark.spec.mapstate import MapDart, PartialMap
+
+from topomark.reference.explorers.edge_choices import BUILT_IN, EDGE_CHOICES
 
 __all__ = ["EDGE_POLICIES", "HYPOTHESIS_POLICIES", "PATH_POLICIES", "Policies", "bfs", "bfs_preorder", "in_preorder",
            "nearest", "open_ends_beyond", "parents_toward", "tree_to_v0"]
 
-EDGE_POLICIES = ("nearest", "fifo", "lifo")
+EDGE_POLICIES = BUILT_IN
+"""The built-in edge policies; :data:`~topomark.reference.explorers.edge_choices.EDGE_CHOICES` holds them all."""
 HYPOTHESIS_POLICIES = ("fifo", "lifo", "shortest")
 PATH_POLICIES = ("shortest", "dfs")
 
@@ -33,7 +37,7 @@ class Policies:
     """A validated choice of edge, hypothesis and path policy."""
 
     def __init__(self, edge: str = "nearest", hypothesis: str = "fifo", path: str = "shortest"):
-        for name, value, allowed in (("edge", edge, EDGE_POLICIES), ("hypothesis", hypothesis, HYPOTHESIS_POLICIES),
+        for name, value, allowed in (("edge", edge, tuple(EDGE_CHOICES)), ("hypothesis", hypothesis, HYPOTHESIS_POLICIES),
                                      ("path", path, PATH_POLICIES)):
             if value not in allowed:
                 raise unknown_name(f"{name} policy", value, allowed)
@@ -57,15 +61,13 @@ class Policies:
         return self.choose_edge(S, dist), parent
 
     def choose_edge(self, S: PartialMap, dist: dict[int, int]) -> MapDart:
-        """Remove and return the next e from U; ``dist`` holds distances in S from the robot."""
+        """Remove and return the next e from U (Algorithm 3.1's line 5) as the edge policy's choice
+        (:data:`~topomark.reference.explorers.edge_choices.EDGE_CHOICES`); ``dist`` holds distances in S from
+        the robot.  A choice that names no entry of U is a bug of the choice, not of the run's input."""
         U = S.unexplored
-        if self.edge == "fifo":
-            k = 0
-        elif self.edge == "lifo":
-            k = len(U) - 1
-        else:  # the closest known end, the first listed among equals
-            ds = [dist[v] for v, _ in U]
-            k = ds.index(min(ds))
+        k = EDGE_CHOICES[self.edge](S, dist)
+        if isinstance(k, bool) or not isinstance(k, int) or not 0 <= k < len(U):
+            raise ExplorerFault(f"the edge choice {self.edge!r} returned {k!r}, not an index of U (0..{len(U) - 1})")
         return U.pop(k)
 
     def order_hypotheses(self, hypotheses: list, lengths: list[int]) -> list:

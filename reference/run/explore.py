@@ -130,7 +130,7 @@ def explore(world: World, algorithm: "str | AlgorithmSpec" = "basic", policies: 
     """
     spec = algorithm if isinstance(algorithm, AlgorithmSpec) else algorithm_spec(algorithm)
     run = _setup(world, spec, lighthouse, options or {})
-    policies = policies or Policies()
+    policies = policies or spec.policies()  # the registration's defaults (its edge policy, if it names one)
     if check_mode not in Checker.MODES:
         raise unknown_name("check mode", check_mode, Checker.MODES)
     sink = ListSink() if sink is None and record else sink

@@ -40,23 +40,36 @@ Examples
 
 from __future__ import annotations
 
+from typing import Any, Callable
+
 from topomark.reference.algorithms.algorithm_spec import ALGORITHM_3_1_CHECKS, AlgorithmSpec
 from topomark.reference.algorithms.bounds import upper_bound
 from topomark.reference.explorers.algorithm31 import LighthouseExplorer
 from topomark.reference.explorers.compositions import ENHANCEMENTS, EXPLORERS
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES
+from topomark.reference.explorers.policies import EDGE_POLICIES
 
-__all__ = ["SPECS", "POLICY_OPTIONS"]
+__all__ = ["SPECS", "POLICY_OPTIONS", "BOUND", "lighthouse_algorithm", "policy_options"]
 
-POLICY_OPTIONS = ("policy edge=nearest|fifo|lifo", "policy hypothesis=fifo|lifo|shortest", "policy path=shortest|dfs",
-                  "lighthouse " + "|".join(LIGHTHOUSES),
-                  *(f"lighthouse option {o.replace('_', '-')}=N (" + ", ".join(h.name for h in LIGHTHOUSES.values()
-                                                                         if o in h.options) + ")"
-                    for o in ("seed", "walk_limit", "neighbourhood", "threshold")))
-"""The options of a lighthouse algorithm, as ``topomark algorithms`` lists them: the policies and lighthouses."""
+
+def policy_options(edge: str = "nearest") -> tuple[str, ...]:
+    """The options of a lighthouse algorithm, as ``topomark algorithms`` lists them: the three policies (each
+    kind's default first; ``edge``, the edge policy its runs take unless ``--policy edge=...`` says otherwise)
+    and the lighthouses with their options."""
+    edges = "|".join(dict.fromkeys((edge, *EDGE_POLICIES)))
+    return (f"policy edge={edges}", "policy hypothesis=fifo|lifo|shortest", "policy path=shortest|dfs",
+            "lighthouse " + "|".join(LIGHTHOUSES),
+            *(f"lighthouse option {o.replace('_', '-')}=N (" + ", ".join(h.name for h in LIGHTHOUSES.values()
+                                                                   if o in h.options) + ")"
+              for o in ("seed", "walk_limit", "neighbourhood", "threshold")))
+
+
+POLICY_OPTIONS = policy_options()
+"""The options of ``basic`` and the Chapter 4 enhancements (:func:`policy_options`, edge policy ``nearest``)."""
 
 _KIT = LIGHTHOUSES["directional-vertex"].kit
-_BOUND = "(3.1)+(3.2) = O(m²n), §3.5.2"
+BOUND = "(3.1)+(3.2) = O(m²n), §3.5.2"
+"""Algorithm 3.1's cost bound as stated: what :func:`lighthouse_algorithm` registers by default."""
 _FORMULA = "(3.1)+(3.2) = Σ_{n_s=1}^{n−1}[n_s + 2(n_s−1)(2m−2(n_s−1))] + Σ_{i=1}^{m−n+1}[n + 2(n−1)(2m−2(n−1)−2(i−1))] " \
            "(§3.5.2)"
 _UNCOUNTED = ("establish", "probe", "drop")
@@ -65,25 +78,42 @@ _UNCOUNTED = ("establish", "probe", "drop")
 before, or beside, the loop body the bound counts (module docstring)."""
 
 
-def _lighthouse_algorithm(name: str, thesis: str, explorer, bound: str, exact: bool) -> AlgorithmSpec:
-    """Algorithm 3.1's template: one marker (the lighthouse's), deterministic, the policy options, its checks;
-    ``exact``: held to (3.1)+(3.2) (``cost-bound``), else ``bound`` is asymptotic, measured by ``tables``."""
+def lighthouse_algorithm(name: str, thesis: str, explorer: Callable[..., Any], bound: str = BOUND,
+                         exact: bool = True, edge_policy: str | None = None, **fields: Any) -> AlgorithmSpec:
+    """The registration template of Algorithm 3.1's family (§3.3): a lighthouse algorithm (any lighthouse, the
+    default directional vertex marker's kit), one marker, deterministic, the policy options of
+    :func:`policy_options`, Algorithm 3.1's checks, written in the ``algorithm-3.1`` trace family.
+
+    ``explorer`` is built as ``explorer(robot, policies, observer, lighthouse)``
+    (:class:`~topomark.reference.explorers.algorithm31.LighthouseExplorer` or a subclass).  ``exact``: held to
+    (3.1)+(3.2) (``cost-bound``, the lighthouse's own moves not counted), else ``bound`` is asymptotic, measured
+    by the bench ``tables``.  ``edge_policy`` names the edge choice its runs take at line 5 unless
+    ``--policy edge=...`` chooses another (a name of
+    :data:`~topomark.reference.explorers.edge_choices.EDGE_CHOICES`; default ``nearest``).  Any other
+    :class:`~topomark.reference.algorithms.algorithm_spec.AlgorithmSpec` field may be given by name.
+
+    >>> spec = lighthouse_algorithm("basic-fifo", "§3.3, Algorithm 3.1, oldest edge first", LighthouseExplorer,
+    ...                             edge_policy="fifo")
+    >>> spec.policies().edge, spec.options[0], spec.bound_for(3, 3)
+    ('fifo', 'policy edge=fifo|nearest|lifo', 22)
+    """
     how = dict(bound_fn=upper_bound, bound_formula=_FORMULA, bound_excludes=_UNCOUNTED) if exact else \
         dict(bound_bench="tables")
-    return AlgorithmSpec(name=name, thesis=thesis, kit=_KIT, bound=bound, markers="1", deterministic=True,
-                         options=POLICY_OPTIONS, checks=ALGORITHM_3_1_CHECKS, explorer=explorer, **how)
+    return AlgorithmSpec(**{**dict(name=name, thesis=thesis, kit=_KIT, bound=bound, markers="1", deterministic=True,
+                                   options=policy_options(edge_policy or "nearest"), checks=ALGORITHM_3_1_CHECKS,
+                                   explorer=explorer, edge_policy=edge_policy), **how, **fields})
 
 
 def _enhancement(name: str) -> AlgorithmSpec:
     """A Chapter 4 composition: (3.1)+(3.2) where it adds no motion, else O(m²n) asymptotic (module docstring)."""
     enh = ENHANCEMENTS[name]
     inherits = not (enh.prune or enh.expand_new or enh.expand_place)
-    bound = f"{_BOUND}, inherited (§4.1 adds no motion)" if inherits else \
+    bound = f"{BOUND}, inherited (§4.1 adds no motion)" if inherits else \
         "O(m²n) (Chapter 4; its expansion traversals are outside (3.1)+(3.2), §4.2)"
-    return _lighthouse_algorithm(name, enh.section, EXPLORERS[name], bound, inherits)
+    return lighthouse_algorithm(name, enh.section, EXPLORERS[name], bound, inherits)
 
 
 SPECS = (
-    _lighthouse_algorithm("basic", "§3.3, Algorithm 3.1", LighthouseExplorer, _BOUND, True),
+    lighthouse_algorithm("basic", "§3.3, Algorithm 3.1", LighthouseExplorer),
     *(_enhancement(name) for name in ENHANCEMENTS),
 )

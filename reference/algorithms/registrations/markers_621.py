@@ -98,7 +98,12 @@ MARKER_OPTIONS = ("markers",)
 
 def footprint_spec(name, thesis, markers, explorer, kit_fn, marker_bound_fn, cites, options=MARKER_OPTIONS + ("policy edge",),
           kind=Kit(edge=1)):
-    """``kind``: the kind of marker the kit holds (the registry's ``kit``; the counts come from ``kit_fn``)."""
+    """The registration template of a §6.2.1 footprint search: a kit algorithm (``explorer`` built as
+    ``explorer(robot, policies, observer, options)``) taking ``--markers``, deterministic, held to
+    :data:`~topomark.reference.algorithms.algorithm_spec.MARKER_MAP_CHECKS` and to the exact bound
+    :func:`footprints_bound`; ``kit_fn(n, m, options)`` gives the kit, ``marker_bound_fn(n, m)`` the stated marker
+    bound (``markers`` in words, ``cites`` its thesis line).  ``kind``: the kind of marker the kit holds (the
+    registry's ``kit``; the counts come from ``kit_fn``)."""
     return AlgorithmSpec(name=name, thesis=thesis, kit=kind, bound=_BOUND.format(cites), markers=markers,
                          deterministic=True, options=options, checks=MARKER_MAP_CHECKS, bound_fn=footprints_bound,
                          explorer=explorer, uses_lighthouse=False, parameters=(MARKERS,), kit_fn=kit_fn,

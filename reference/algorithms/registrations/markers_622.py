@@ -45,7 +45,7 @@ from topomark.reference.algorithms.registrations.markers_621 import (MARKER_OPTI
                                                                      case_4_mn_markers, footprint_spec,
                                                                      footprints_bound, kit_size)
 
-__all__ = ["SPECS"]
+__all__ = ["SPECS", "edge_only_spec"]
 
 
 def _directional_1b_kit(n: int, m: int, options: dict) -> Kit:
@@ -53,8 +53,12 @@ def _directional_1b_kit(n: int, m: int, options: dict) -> Kit:
     return replace(case_1b_kit(n, m, options), directional=True)
 
 
-def _edge_only(name: str, thesis: str, markers: str, explorer, count, bound, options=MARKER_OPTIONS + ("policy edge",)):
-    """An E-only variant: ``count(n, m)`` directional E-markers by default (``--markers K``: K), ``bound`` checked."""
+def edge_only_spec(name: str, thesis: str, markers: str, explorer, count, bound,
+                   options=MARKER_OPTIONS + ("policy edge",)):
+    """The registration template of a §6.2.2 E-only variant (:func:`~.markers_621.footprint_spec` with directional
+    E-markers): ``count(n, m)`` directional E-markers by default (``--markers K``: K), the marker bound ``bound(n,
+    m)`` checked (``marker-budget``); ``markers`` states the count in words, ``explorer`` is built as
+    ``explorer(robot, policies, observer, options)``."""
     return footprint_spec(name, thesis, markers, explorer,
                  lambda n, m, o: Kit(edge=kit_size(o, count(n, m)), directional=True), bound, "§6.2.2", options,
                  kind=Kit(edge=1, directional=True))
@@ -64,16 +68,16 @@ SPECS = (
     footprint_spec("case-1b-edgeinfo", "§6.2.2 Case 1b with directional V-E-markers, edgeINFO (Figure 6.14)",
           "m + 1 directional V-E-markers, one pool (as case-1b)", EdgeInfoFootprints, _directional_1b_kit,
           lambda n, m: m + 1, "§6.2.2", kind=Kit(either=1, directional=True)),
-    _edge_only("case-2-edgeinfo", "§6.2.2 Case 2 (Algorithm 6.1) with directional E-markers, edgeINFO anchored at "
+    edge_only_spec("case-2-edgeinfo", "§6.2.2 Case 2 (Algorithm 6.1) with directional E-markers, edgeINFO anchored at "
                "the entry (§6.2.2)", "m + n directional E-markers (m + n − 1 used, §6.2.1 Case 2)", DoubleMarkedEdgeInfo,
                lambda n, m: m + n, lambda n, m: m + n - 1),
-    _edge_only("case-1a-edgeinfo", "§6.2.2 Case 1a with directional E-markers, edgeINFO anchored at the entry "
+    edge_only_spec("case-1a-edgeinfo", "§6.2.2 Case 1a with directional E-markers, edgeINFO anchored at the entry "
                "(§6.2.2; Figure 6.17, §6.2.2)", "m directional E-markers (as case-1a)", EdgeFootprintsEdgeInfo,
                lambda n, m: m, lambda n, m: m),
-    _edge_only("case-4-edgeinfo", "§6.2.2 Case 4 (Algorithm 6.3, closest-first) with directional E-markers, "
+    edge_only_spec("case-4-edgeinfo", "§6.2.2 Case 4 (Algorithm 6.3, closest-first) with directional E-markers, "
                "edgeINFO anchored at the entry (§6.2.2)", "m − ⌊(n−1)/2⌋ directional E-markers (as case-4; stated "
                "m − ⌊n/2⌋, §6.2.1 Case 4)", ClosestFirstEdgeInfo, case_4_markers, case_4_markers, MARKER_OPTIONS),
-    _edge_only("case-4-mn-edgeinfo", "§6.2.2 Case 4, the closest-first extension of Case 2, with directional "
+    edge_only_spec("case-4-mn-edgeinfo", "§6.2.2 Case 4, the closest-first extension of Case 2, with directional "
                "E-markers, edgeINFO anchored at the entry (§6.2.2)", "m + [n even] directional E-markers (as "
                "case-4-mn; stated m, §6.2.1 Case 4)", ClosestFirstDoubleEdgeInfo, case_4_mn_markers, case_4_mn_markers,
                MARKER_OPTIONS),

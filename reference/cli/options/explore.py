@@ -29,7 +29,9 @@ def register(sub) -> None:
                        help=f"{text} (for {takers}; default {default})")
     p.add_argument("--policy", action="append", default=[], metavar="KIND=NAME",
                    help=f"edge={'|'.join(fact('edge_policies'))}, hypothesis={'|'.join(fact('hypothesis_policies'))}, "
-                        f"path={'|'.join(fact('path_policies'))}; a bare NAME sets the edge policy (repeatable)")
+                        f"path={'|'.join(fact('path_policies'))}; a bare NAME sets the edge policy (repeatable; only the "
+                        "kinds the algorithm takes, topomark algorithms; a kind not given takes the algorithm's "
+                        "default)")
     p.add_argument("--seed", type=seed_option, help="seed for a random generator; with a searched lighthouse "
                                             "(undirected-vertex, undirected-edge) the seed of its random walk")
     p.add_argument("--walk-limit", metavar="N", help="a searched lighthouse gives up after N walk steps (default 200, "

@@ -9,7 +9,7 @@ every named policy of :data:`POLICIES` (§3.3 leaves the edge, hypothesis and
 path choices open).
 
 :func:`algorithm_cases` are one algorithm's: a few small worlds (the triangle,
-C4, the 2×3 lattice, K4) under the kit the registry gives that algorithm on
+C4, the 2×3 lattice, K4, a chiral world, a chain) under the kit the registry gives that algorithm on
 each (``kit_for(n, m, options)``: the thesis's exact budgets, e.g. Case 3a's
 Σ_{k=1}^{n−1} k), and, for an algorithm whose kit size is an
 option (``--markers``), the 2×3 lattice with the smallest kit it takes — where
@@ -30,6 +30,7 @@ from __future__ import annotations
 from typing import Any, Iterable
 
 from topomark.spec.errors import InvalidInput, unknown_name
+from topomark.spec.kit import Kit
 from topomark.spec.world import Start, World
 
 from topomark.reference.algorithms.registry import REGISTRY, AlgorithmSpec, algorithm_spec
@@ -55,6 +56,7 @@ FAMILIES: dict[str, str] = {  # family ↦ what its members share (their thesis 
     "threads": "§6.3: a thread",
     "marker-less": "§5.2: no marker",
     "baselines": "§2.3.1, Table 2.3: the classic models the thesis compares with (footprints, a labelled graph)",
+    "other": "an algorithm of none of the families above (one added by a registration module of its own)",
 }
 _SECTIONS = (("§2.3.1", "movable-markers"), ("§5", "marker-less"), ("§6.2.1", "undirected-markers"),
              ("§6.2.2", "directional-markers"), ("§6.3", "threads"))
@@ -117,17 +119,20 @@ def _algorithm_worlds() -> list[tuple[str, str, World]]:
         ("lattice-2x3", "§3.5.3: the 2x3 lattice", g.lattice(2, 3)),
         ("complete-4", "§3.5.3: the complete graph K4 (non-planar rotation)", g.complete(4)),
         ("chiral-5", "a triangle with a leaf at two of its corners: its mirror image is another world", CHIRAL),
+        ("chain-6", "a chain of 6 vertices: a tree", g.chain(6)),
     )]
 
 
 def algorithm_cases(spec: AlgorithmSpec) -> list[tuple[str, str, str, World, dict[str, Any]]]:
     """(name, world name, description, world, options) of ``spec``'s suite: the shared worlds with the registry's
-    default kit, and a smallest kit where the kit's size is an option (``--markers``)."""
+    default kit, and a smallest kit where the kit's size is an option (``--markers``).  An algorithm for a class
+    of worlds (its registration's ``check_world``) has a case on the shared worlds it accepts only (a tree walk:
+    the chain); one that accepts none of them has no suite (:func:`suite_algorithms`)."""
     cases: list[tuple[str, str, str, World, dict[str, Any]]] = [
         (name, name, f"{text}, with the kit {spec.name} is given on it", world, {})
-        for name, text, world in _algorithm_worlds() + _stress_cases([spec.name])]
+        for name, text, world in _algorithm_worlds() + _stress_cases([spec.name]) if _accepts(spec, world)]
     markers = next((p for p in spec.parameters if p.name == "markers"), None)
-    if markers is not None:
+    if markers is not None and _accepts(spec, _algorithm_worlds()[2][2]):
         k = max(2, markers.minimum or 0)
         name, text, world = _algorithm_worlds()[2]
         cases.append((f"{name}-markers-{k}", name, f"{text} with only {k} markers (--markers {k}): an exact budget that "
@@ -136,12 +141,26 @@ def algorithm_cases(spec: AlgorithmSpec) -> list[tuple[str, str, str, World, dic
     return cases
 
 
+def _accepts(spec: AlgorithmSpec, world: World) -> bool:
+    """Whether ``spec``'s registration accepts ``world`` with its default options (``check_world``)."""
+    if spec.check_world is None:
+        return True
+    try:
+        spec.check_world(world, spec.parse_options({}))
+    except InvalidInput:
+        return False
+    return True
+
+
 def family_of(spec: AlgorithmSpec) -> str:
-    """The conformance family of an algorithm (:data:`FAMILIES`), from its thesis section."""
+    """The conformance family of an algorithm (:data:`FAMILIES`), from its thesis section; an algorithm of no
+    section named there is ``marker-less`` if it carries nothing, else ``other``."""
     if spec.uses_lighthouse:
         return "algorithm-3.1"
     section = spec.thesis.split()[0].rstrip(",")
-    family = next((family for prefix, family in _SECTIONS if section.startswith(prefix)), spec.family)
+    empty = spec.kit_fn is None and spec.kit == Kit()
+    family = next((family for prefix, family in _SECTIONS if section.startswith(prefix)),
+                  "marker-less" if empty else "other")
     return "baselines" if family == "movable-markers" and not spec.kit.movable else family
 
 
@@ -156,7 +175,10 @@ def suite_algorithms(names: Iterable[str] = (), families: Iterable[str] = ()) ->
         if not algorithm_spec(name).deterministic:
             raise InvalidInput(f"the algorithm {name} is randomised: it has no conformance suite (its reference run "
                                f"fixes nothing a client could be held to); choose a deterministic one")
-    chosen = [s for s in REGISTRY.values() if s.deterministic
+    for name in names:
+        if not algorithm_cases(algorithm_spec(name)):
+            raise InvalidInput(f"the algorithm {name} accepts none of the suite's worlds: it has no conformance suite")
+    chosen = [s for s in REGISTRY.values() if s.deterministic and algorithm_cases(s)
               and (not (names or families) or s.name in names or family_of(s) in families)]
     if not chosen:
         raise InvalidInput(f"the families {', '.join(families)} have no deterministic algorithm")

@@ -1,10 +1,15 @@
 #!/usr/bin/env python3
-"""A complete explorer speaking topomark/protocol@1: Algorithm 3.1 of the thesis (§3.3).
+"""A complete explorer of Algorithm 3.1 of the thesis (§3.3), speaking topomark/protocol@1 or @2.
 
 Standalone on purpose (standard library only, no topomark import): copy it and
 change it.  Run it under topomark, which plays the world and judges the map:
 
     topomark run-external WORLD.json -- python3 client.py
+    topomark conformance run SUITE --algorithm basic -- python3 client.py
+
+The second plays the suite of the registered algorithm ``basic`` over @2, each
+case's kit in ``hello``: the same one directional vertex marker, dropped with
+@2's ``drop`` (``kind: "vertex"``).  Any other kit is refused with ``error``.
 
 The robot drops its directional marker at v0 pointing at the exit it faces;
 each iteration takes an unexplored dart e = (v_k, i) from U, walks S to v_k,
@@ -38,16 +43,24 @@ def parse(sig):
     return int(m.group(1)), None if m.group(3) is None else int(m.group(3))
 
 
+def directional_vertex_only(kit):
+    """Whether an @2 kit gives the robot Algorithm 3.1's marker: directional vertex markers and nothing else."""
+    return kit.get("directional-vertex", 0) >= 1 and set(kit) == {"directional-vertex"}
+
+
 class Explorer:
     def __init__(self):
         hello = receive()
-        if hello["protocol"] != "topomark/protocol@1":
-            send({"type": "error", "message": "I speak topomark/protocol@1 only"})
+        at2 = hello["protocol"] == "topomark/protocol@2"
+        if not (hello["protocol"] == "topomark/protocol@1" or at2 and directional_vertex_only(hello["kit"])):
+            send({"type": "error", "message": "I speak topomark/protocol@1, or @2 with one directional vertex "
+                                              "marker (Algorithm 3.1's kit) only"})
             sys.exit(2)
         self.exits = [[None] * parse(hello["signature"])[0]]  # S: exits[v][i] = [w, j] or None
         self.U = [(0, i) for i in range(len(self.exits[0]))]
         self.pos = (0, 0)  # (map vertex, entry exit)
-        send({"type": "drop", "direction": 0})  # the lighthouse points at exit 0 of v0
+        drop = {"type": "drop", "direction": 0}  # the lighthouse points at exit 0 of v0 (line 1)
+        send(dict(drop, kind="vertex") if at2 else drop)  # @2 names the marker's kind
         receive()
 
     def step(self, motion):
