@@ -68,3 +68,40 @@ def test_the_reductions_panel_holds_ours_and_the_tables(monkeypatch, tmp_path):
     row, _ = tf.REDUCTIONS[("lattice-hole", "enh1")]
     assert list(lines["enh1 (thesis, Table 4.1)"].get_ydata()) == [row[s] for s in sorted(row)]
     plt.close("all")
+
+
+def _legend(ax) -> list[str]:
+    legend = ax.get_legend()
+    return [] if legend is None else [t.get_text() for t in legend.get_texts()]
+
+
+def test_the_legend_lists_only_what_is_drawn():
+    """A bound measured at one size is a line of one point without a marker: nothing drawn, so no legend entry;
+    at two sizes it is a line, and listed.  A point at y = 0 on a log axis is not drawn either."""
+    fig, ax = plots.new(plt)
+    plots.reference(ax, [20], [5000], "upper bound (3.3)")
+    plots.reference(ax, [20], [40], "lower bound m", dotted=True)
+    plots.errorbars(ax, [20], [80], [60], "basic")
+    plots.points(ax, [20], [0], "zero")
+    plots.decorate(ax, "t", "x", "y")
+    assert _legend(ax) == ["basic"]
+    fig, ax = plots.new(plt)
+    plots.reference(ax, [20, 40], [5000, 9000], "upper bound (3.3)")
+    plots.curve(ax, [20], [70], "one point, marked")
+    plots.points(ax, [20], [0], "zero")
+    plots.decorate(ax, "t", "x", "y", log=False)
+    assert _legend(ax) == ["upper bound (3.3)", "one point, marked", "zero"]
+    plt.close("all")
+
+
+def test_a_one_size_bench_plot_lists_no_bound_it_does_not_draw(monkeypatch, tmp_path):
+    """The small Figure 3.11 sweep (one size): its cost plot's legend names the drawn series only."""
+    panels = []
+    monkeypatch.setattr(chapter34_plots, "save", lambda plt_, fig, path: panels.append(fig) or path)
+    part = EXPERIMENTS["figure-3.11"].parts[0]
+    summary = _summary(part.family, ("basic",), (20,))
+    chapter34_plots.draw(EXPERIMENTS["figure-3.11"], summary, tmp_path, reduction)(plt)
+    ax = panels[0].axes[0]
+    assert _legend(ax) == ["basic"]
+    assert {line.get_label() for line in ax.get_lines()} >= {"upper bound (3.3)", "lower bound m"}  # not drawn
+    plt.close("all")

@@ -17,7 +17,9 @@ look (:func:`new`: one panel or several side by side, each 6 × 4.2 inches, at
   our series of that algorithm, hollow markers on a dashed line, labelled
   "thesis" (:func:`thesis`); bounds and references black or grey (:func:`reference`);
 * x ticks at the sizes measured (:func:`decorate`; never between them, as 72.5),
-  a log y axis where costs span decades, a small legend, a light grid.
+  a log y axis where costs span decades, a small legend, a light grid;
+* the legend lists only what is drawn (:func:`shows`): a bound measured at one
+  size is a line of one point, which draws nothing, so it is left out of it.
 
 Examples
 --------
@@ -29,13 +31,14 @@ Examples
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 from typing import Any, Callable, Sequence
 
 from topomark.proofs.drawing_png import INSTALL_HINT  # how to get matplotlib, the package's ``plot`` extra
 
 __all__ = ["Draw", "FIGSIZE", "DPI", "COLOURS", "MARKERS", "INSTALL_HINT", "style", "pyplot", "drawn", "new",
-           "curve", "points", "errorbars", "thesis", "reference", "decorate", "finish", "save"]
+           "curve", "points", "errorbars", "thesis", "reference", "shows", "decorate", "finish", "save"]
 
 Draw = Callable[[Any], list[Path]]
 """Given ``matplotlib.pyplot``: draw, save and return the plot files."""
@@ -125,6 +128,29 @@ def reference(ax, xs: Sequence[float], ys: Sequence[float], label: str, dotted: 
     ax.plot(xs, ys, color="k", ls=":" if dotted else "--", lw=1, label=label)
 
 
+NO_STYLE = (None, "", " ", "None", "none")
+
+
+def shows(artist, log_y: bool = False) -> bool:
+    """Whether ``artist`` puts anything on the panel: a line needs a marker at one point it can place (finite;
+    on a log y axis, y > 0) or a stroke between two distinct ones; a container (error bars) needs one child that
+    shows; any other artist shows when visible."""
+    from matplotlib.container import Container
+    from matplotlib.lines import Line2D
+
+    if isinstance(artist, Container):
+        return any(shows(child, log_y) for child in artist.get_children())
+    if not artist.get_visible():
+        return False
+    if not isinstance(artist, Line2D):
+        return True
+    placed = {(x, y) for x, y in artist.get_xydata().tolist()
+              if math.isfinite(x) and math.isfinite(y) and (y > 0 or not log_y)}
+    marked = artist.get_marker() not in NO_STYLE and artist.get_markersize() > 0
+    stroked = artist.get_linestyle() not in NO_STYLE and artist.get_linewidth() > 0
+    return (marked and len(placed) >= 1) or (stroked and len(placed) >= 2)
+
+
 def decorate(ax, title: str, xlabel: str, ylabel: str, log: bool = True) -> None:
     """Label a panel (log y axis unless ``log`` is False), tick the sizes it measured, legend and grid."""
     if log:
@@ -138,8 +164,10 @@ def decorate(ax, title: str, xlabel: str, ylabel: str, log: bool = True) -> None
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     ax.set_title(title, fontsize=10)
-    if ax.get_legend_handles_labels()[0]:
-        ax.legend(fontsize=7)
+    log_y = ax.get_yscale() == "log"
+    entries = [(h, label) for h, label in zip(*ax.get_legend_handles_labels()) if shows(h, log_y)]
+    if entries:
+        ax.legend([h for h, _ in entries], [label for _, label in entries], fontsize=7)
     ax.grid(True, which="both", alpha=0.3)
 
 
