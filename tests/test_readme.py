@@ -83,7 +83,7 @@ def test_the_readme_python_block_runs_unchanged(tmp_path, monkeypatch):
 
 def test_the_quick_start_is_the_two_commands():
     text = README.read_text(encoding="utf-8")
-    assert 'python3 -m pip install . && topomark explore\npython3 -m pip install ".[test]" && python3 -m pytest\n' in text
+    assert 'python3 -m pip install . && topomark explore\npython3 -m pip install -e ".[test]" && python3 -m pytest\n' in text
 
 
 @pytest.mark.parametrize("page", [README] + sorted(p for p in (ROOT / "docs").glob("*.md")
