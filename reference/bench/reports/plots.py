@@ -135,6 +135,7 @@ def shows(artist, log_y: bool = False) -> bool:
     """Whether ``artist`` puts anything on the panel: a line needs a marker at one point it can place (finite;
     on a log y axis, y > 0) or a stroke between two distinct ones; a container (error bars) needs one child that
     shows; any other artist shows when visible."""
+    import numpy as np
     from matplotlib.container import Container
     from matplotlib.lines import Line2D
 
@@ -144,7 +145,7 @@ def shows(artist, log_y: bool = False) -> bool:
         return False
     if not isinstance(artist, Line2D):
         return True
-    placed = {(x, y) for x, y in artist.get_xydata().tolist()
+    placed = {(x, y) for x, y in np.asarray(artist.get_xydata(), dtype=float).tolist()
               if math.isfinite(x) and math.isfinite(y) and (y > 0 or not log_y)}
     marked = artist.get_marker() not in NO_STYLE and artist.get_markersize() > 0
     stroked = artist.get_linestyle() not in NO_STYLE and artist.get_linewidth() > 0
