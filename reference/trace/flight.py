@@ -85,11 +85,12 @@ class FlightRecorder:
 
     def attach(self, exc: BaseException) -> BaseException:
         """``exc`` with this run kept on it (:data:`ATTRIBUTE`), unless an inner run's is there already."""
-        if getattr(exc, ATTRIBUTE, None) is None:
-            try:
-                setattr(exc, ATTRIBUTE, self.to_json())
-            except Exception:  # noqa: BLE001 - an exception that takes no attribute: the fault is reported without
-                pass
+        if getattr(exc, ATTRIBUTE, None) is not None:
+            return exc  # an inner run's record is the one in progress when the fault began
+        try:
+            setattr(exc, ATTRIBUTE, self.to_json())
+        except Exception:  # noqa: BLE001 - an exception that takes no attribute (__slots__, a built-in's instance)
+            return exc  # is reported without the run (the report's "run" is null)
         return exc
 
 
