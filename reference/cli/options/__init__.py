@@ -4,3 +4,15 @@ These modules import only argparse, :mod:`..parser`, :mod:`..args` and :mod:`..f
 the help lists), so ``topomark COMMAND --help`` imports nothing the command needs to run; the command's own
 module (``cmd_*``) is imported when it runs, by its handler (:class:`..parser.Later`).
 """
+
+from topomark.reference.cli.facts import fact
+
+__all__ = ["add_marker_bounds"]
+
+
+def add_marker_bounds(p, largest: int) -> None:
+    """The options that bound a search over small marked worlds (``census``, ``search``): the marker class, the
+    largest world size (2..``largest``) and the largest vertex degree."""
+    p.add_argument("--marker", required=True, metavar="CLASS", help="one of: " + ", ".join(fact("marker_classes")))
+    p.add_argument("--max-vertices", type=int, required=True, metavar="N", help=f"largest world size, 2..{largest}")
+    p.add_argument("--max-degree", type=int, required=True, metavar="D", help="largest vertex degree, >= 1")

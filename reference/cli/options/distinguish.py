@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from topomark.reference.cli.args import MAX_JOBS
 from topomark.reference.cli.facts import fact
+from topomark.reference.cli.options import add_marker_bounds
 from topomark.reference.cli.parser import Later
 
 __all__ = ["register"]
@@ -26,10 +27,7 @@ def register(sub) -> None:
                                    "parameters, code version) before trusting it: a damaged task or shard is "
                                    "computed again (said on stderr); a damaged, older-format or other census's "
                                    "manifest is exit 2 naming it. Worker processes die with the census.")
-    q.add_argument("--marker", required=True, metavar="CLASS", help="one of: " + ", ".join(fact("marker_classes")))
-    q.add_argument("--max-vertices", type=int, required=True, metavar="N",
-                   help=f"largest world size, 2..{fact('enumerate_max_vertices')}")
-    q.add_argument("--max-degree", type=int, required=True, metavar="D", help="largest vertex degree, >= 1")
+    add_marker_bounds(q, fact("enumerate_max_vertices"))
     q.add_argument("--jobs", type=int, default=1, metavar="N", help=f"worker processes, 1 to {MAX_JOBS} (default 1)")
     q.add_argument("--shards", metavar="DIR", help="keep the map/reduce shards in DIR; a killed census run again "
                    "with the same DIR resumes from its finished, verified tasks (default: a temporary directory)")

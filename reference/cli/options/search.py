@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from topomark.reference.cli.facts import fact
+from topomark.reference.cli.options import add_marker_bounds
 from topomark.reference.cli.parser import Later
 
 __all__ = ["register"]
@@ -13,10 +14,7 @@ def register(sub) -> None:
         "search", description="Search with Z3 for two worlds carrying the marker class that no motion sequence tells "
                     "apart but that are not extended-isomorphic. Exit 0 if found (or, with --prove, if none "
                     "exists within the bounds), 1 otherwise (including unknown/timeout), 2 on bad input.")
-    p.add_argument("--marker", required=True, metavar="CLASS", help="one of: " + ", ".join(fact("marker_classes")))
-    p.add_argument("--max-vertices", type=int, required=True, metavar="N",
-                   help=f"largest world size, 2..{fact('search_max_vertices')}")
-    p.add_argument("--max-degree", type=int, required=True, metavar="D", help="largest vertex degree, >= 1")
+    add_marker_bounds(p, fact("search_max_vertices"))
     p.add_argument("--planar", action="store_true", help="only planar embeddings (genus 0), like the figures")
     p.add_argument("--prove", action="store_true", help="report a bounded proof: exit 0 iff UNSAT")
     p.add_argument("--timeout", type=float, default=None, metavar="SECONDS",
