@@ -183,6 +183,7 @@ def _ran(checkout, words: str) -> tuple[str, int, str, str]:
         next(run for run in runs if words in run[0])
 
 
+@pytest.mark.slow
 def test_the_copy_imports_the_copy(checkout):
     copy, _, _ = checkout
     where = subprocess.run([sys.executable, "-c", "import topomark; print(topomark.__file__)"], cwd=copy,
@@ -190,12 +191,14 @@ def test_the_copy_imports_the_copy(checkout):
     assert Path(where.stdout.strip()).resolve() == (copy / "topomark" / "__init__.py").resolve()
 
 
+@pytest.mark.slow
 def test_every_command_of_the_page_succeeds(checkout):
     assert len(checkout[1]) >= 8
     for command, code, _, err in checkout[1]:
         assert code == 0, (command, err[-2000:])
 
 
+@pytest.mark.slow
 def test_docs_cli_md_must_be_regenerated_and_the_page_says_how(checkout):
     copy, _, (before, after) = checkout
     assert (before, after) == (False, True)  # stale once the algorithms exist, current after the page's command
@@ -203,6 +206,7 @@ def test_docs_cli_md_must_be_regenerated_and_the_page_says_how(checkout):
     assert all(name in cli for name in TOYS)
 
 
+@pytest.mark.slow
 def test_both_algorithms_are_listed_with_their_policies(checkout):
     listed = {a["name"]: a for a in json.loads(_ran(checkout, "algorithms --json")[2])}
     assert TOYS[0] in listed and TOYS[1] in listed
@@ -212,6 +216,7 @@ def test_both_algorithms_are_listed_with_their_policies(checkout):
     assert "tree-walk" in text and "basic-farthest" in text
 
 
+@pytest.mark.slow
 def test_the_runs_are_checked_and_name_the_policies_they_use(checkout):
     tree = _ran(checkout, "explore chain:n=8 --algorithm tree-walk")[2]
     assert "(tree-walk; kit: no marker; no policies)" in tree and "verified:" in tree
@@ -224,6 +229,7 @@ def test_the_runs_are_checked_and_name_the_policies_they_use(checkout):
     assert (copy / "walk.json").exists() and (copy / "walk.jsonl").exists()
 
 
+@pytest.mark.slow
 def test_the_conformance_suites_hold_what_the_page_says(checkout):
     suites = {s["algorithm"]: s for s in json.loads((checkout[0] / "suite" / "manifest.json").read_text())["suites"]}
     assert set(suites) == set(TOYS)
@@ -233,6 +239,7 @@ def test_the_conformance_suites_hold_what_the_page_says(checkout):
     assert all(c["expected"] == "correct" for s in suites.values() for c in s["cases"])
 
 
+@pytest.mark.slow
 def test_help_lists_the_new_algorithms_after_the_pages_facts_command(checkout):
     """``explore --help`` reads its names from the table the page regenerates, not from the registry."""
     copy = checkout[0]

@@ -88,6 +88,7 @@ def mypy_strict(tmp_path: Path, scripts: dict[str, str]) -> dict[str, list[str]]
     return {name: [line for line in lines if line.startswith(str(tmp_path / name) + ":")] for name in scripts}
 
 
+@pytest.mark.slow
 def test_mypy_strict_sees_every_public_name_and_the_readme_block_passes(tmp_path):
     found = mypy_strict(tmp_path, {"misspelt.py": MISSPELT, "annotated.py": ANNOTATED,
                                    "readme.py": readme_python_block()})

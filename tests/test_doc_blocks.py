@@ -149,6 +149,7 @@ def check_page(page: Path, tmp_path: Path) -> None:
     assert not problems, "\n\n".join(problems)
 
 
+@pytest.mark.slow
 def test_every_readme_block_runs_as_written(tmp_path):
     check_page(ROOT / "README.md", tmp_path)
 
