@@ -24,6 +24,7 @@ from topomark.proofs.census import CensusResult, stderr_progress
 from topomark.proofs.census_run import sharded_census
 from topomark.proofs.enumerate import MAX_VERTICES
 from topomark.reference.cli.args import check_jobs, check_max_degree
+from topomark.reference.files.overwrite import named_path
 from topomark.spec.errors import CheckFailure, InvalidInput
 from topomark.spec.markerclass import marker_class
 from topomark.spec.worldfile import load_world, world_to_json
@@ -83,6 +84,7 @@ def _validate(args: argparse.Namespace) -> None:
                            f"of at most {MAX_VERTICES} vertices")
     check_max_degree(args.max_degree)
     check_jobs(args.jobs)
+    named_path(args.shards, "--shards")  # resumed, not claimed: a census's shards are reused on purpose
 
 
 def census_table(result: CensusResult) -> str:

@@ -17,7 +17,8 @@ from topomark.reference.run.explore import check_run, explore
 from topomark.reference.explorers.lighthouses import configured
 from topomark.reference.algorithms.registry import algorithm_spec, parameters
 from topomark.reference.worlds.generators import DEFAULT_WORLD
-from topomark.reference.files.outputs import check_output, check_output_dir, guarded, write_output
+from topomark.reference.files.outputs import check_output_dir, guarded, write_output
+from topomark.reference.files.overwrite import claim_dir, claim_file
 from topomark.reference.explorers.policies import Policies
 from topomark.reference.trace.sink import FileSink, RingSink, TeeSink
 from topomark.reference.worlds.argument import resolve_world
@@ -138,12 +139,12 @@ def explore_command(args) -> int:
     policies = parse_policies(args.policy, spec)
     check_policy_kinds(args.policy, spec)
     options = {name: getattr(args, f"param_{name.replace('-', '_')}") for name in parameters()}
-    for path in (args.trace, args.map):  # before the run: a typo must not cost a long exploration
-        if path:
-            check_output(path)
+    claim_file(args.trace, "--trace", args.force)  # before the run: a typo must not cost a long exploration
+    claim_file(args.map, "--map", args.force)
     if args.models is not None:
         if spec.write_models is None:
             raise InvalidInput(f"--models: the algorithm {spec.name} keeps no models (model-tree does)")
+        claim_dir(args.models, "--models", args.force, replace=("model-*.json",))
         check_output_dir(args.models)
     light, seed = configured(args.lighthouse, args.seed, args.walk_limit, args.neighbourhood, args.threshold)
     if args.world is None:

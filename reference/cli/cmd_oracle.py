@@ -26,6 +26,7 @@ from topomark.reference.explorers.lighthouses import lighthouse
 from topomark.reference.oracle.run_external import Limits, run_external
 from topomark.reference.run.map_check import check_map
 from topomark.reference.files.outputs import guarded
+from topomark.reference.files.overwrite import claim_dir, claim_file
 from topomark.reference.replay.replay import load_trace, replay
 from topomark.reference.oracle.marker_messages import MAX_COUNT
 from topomark.reference.worlds.argument import resolve_world
@@ -74,10 +75,11 @@ def _make_limits(args) -> Limits:
 
 def run_external_command(args) -> int:
     world = resolve_world(args.world, args.seed)
-    command = _command(args)
+    command = _command(args)  # the options written after the world are read here: --map is claimed after it
+    claim_file(args.map, "--map", args.force)
     version, kit = _protocol_choice(args)
     result = run_external(world, command, _make_limits(args), version=version, kit=kit)
-    if args.map and result.map is not None:
+    if args.map is not None and result.map is not None:
         guarded(args.map, lambda: save_world(cast(World, result.map), args.map))
     data = {"world": args.world, "command": command, **result.to_json()}
     text = (f"{'PASS' if result.passed else 'FAIL'} [{result.reason}] {result.message}\n"
@@ -108,13 +110,15 @@ def replay_command(args) -> int:
 
 def drive_command(args) -> int:
     command = _command(args)
+    claim_file(args.trace, "--trace", args.force)
+    claim_file(args.map, "--map", args.force)
     limits = _make_limits(args)
     policies = parse_policies(args.policy)
     world = load_world(args.check) if args.check else None
     light = lighthouse(args.lighthouse)
     result = drive(command, policies, world, cast(int, limits.max_traversals), limits.wall, limits.message, light,
                    trace=args.trace or None)
-    if args.map and result.map is not None:
+    if args.map is not None and result.map is not None:
         guarded(args.map, lambda: save_world(cast(World, result.map), args.map))
     data = {"command": command, **result.to_json()}
     text = f"{'PASS' if result.passed else 'FAIL'} [{result.reason}] {result.message}\ncost {result.cost} traversals"
@@ -139,6 +143,8 @@ def _describe(info: dict) -> str:
 
 def conformance_export(args) -> int:
     chosen = conformance.suite_algorithms(args.algorithm, args.family)
+    suite = tuple(sorted({entry.partition("/")[0] for entry in conformance.LAYOUT}))
+    claim_dir(args.dir, "conformance export", args.force, replace=suite, alone=True)
     manifest = guarded(args.dir, lambda: conformance.export(args.dir, algorithms=chosen))
     info = _suite_summary(manifest)
     emit(args, {"dir": args.dir, **info}, f"wrote {args.dir}: {_describe(info)} (linted)")

@@ -31,6 +31,9 @@ from topomark.spec.markerclass import marker_class
 from topomark.spec.world import MAX_DEGREE
 from topomark.spec.worldfile import save_world
 
+from topomark.reference.files.outputs import guarded
+from topomark.reference.files.overwrite import claim_dir
+
 __all__ = ["search_command", "validate_args", "describe_world", "write_outputs"]
 
 
@@ -49,8 +52,7 @@ def validate_args(args: argparse.Namespace) -> None:
                            f"(at most {MAX_DEGREE:,}, topomark.spec.world.MAX_DEGREE)")
     if args.timeout is not None:
         check_seconds(args.timeout, "--timeout")
-    if args.out is not None and Path(args.out).exists() and not Path(args.out).is_dir():
-        raise InvalidInput(f"--out {args.out!r} exists and is not a directory")
+    claim_dir(args.out, "-o", args.force)
 
 
 def describe_world(name: str, world) -> str:
@@ -110,8 +112,8 @@ def search_command(args: argparse.Namespace) -> int:
         result = z3search.search(args.marker, args.max_vertices, args.max_degree, args.timeout,
                                  planar=args.planar)
         data = result.to_json()
-    if result.found and args.out:
-        data["files"] = write_outputs(result, args.out)
+    if result.found and args.out is not None:
+        data["files"] = guarded(args.out, lambda: write_outputs(result, args.out))
     if args.json:
         print(json.dumps(data, indent=1, sort_keys=True))
     else:

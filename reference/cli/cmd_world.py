@@ -15,7 +15,8 @@ from topomark.spec.isomorphism import Witness, find_isomorphism, verify_witness
 from topomark.spec.worldfile import dumps_world, load_world, world_to_json
 
 from topomark.reference.worlds.generators import GENERATORS
-from topomark.reference.files.outputs import check_output, write_output
+from topomark.reference.files.outputs import write_output
+from topomark.reference.files.overwrite import claim_file
 from topomark.reference.worlds.argument import resolve_world
 
 __all__ = ["describe", "world_command", "iso_command", "draw_command"]
@@ -37,11 +38,11 @@ def draw_command(args) -> int:
     from topomark.proofs.drawing_png import check_drawable
     from topomark.spec.world import Start
 
-    if args.generator or args.show or not args.output:
+    if args.generator or args.show or args.output is None:
         raise InvalidInput("world --draw GENERATOR_OR_FILE takes -o FILE (.svg or .png) and no other GENERATOR or "
                            "--show")
+    claim_file(args.output, "-o", args.force)
     check_drawable(args.output)
-    check_output(args.output)
     world = resolve_world(args.draw, args.seed)
     note = ""
     if world.start is None:
@@ -59,7 +60,7 @@ def world_command(args) -> int:
     if args.draw:
         return draw_command(args)
     if args.show:
-        if args.generator or args.output or args.seed is not None:
+        if args.generator or args.output is not None or args.seed is not None:
             raise InvalidInput("world --show FILE takes no generator, --seed or -o/--out")
         info = describe(load_world(args.show))
         text = (f"{args.show}: n={info['n']} m={info['m']} genus={info['genus']} faces={info['faces']}\n"
@@ -72,10 +73,9 @@ def world_command(args) -> int:
     name = args.generator.partition(":")[0]
     if name not in GENERATORS:
         raise unknown_name("generator", name, GENERATORS)
-    if args.output:
-        check_output(args.output)  # before generating: a large world must not be built for nothing
+    claim_file(args.output, "-o", args.force)  # before generating: a large world must not be built for nothing
     world = resolve_world(args.generator, args.seed)
-    if args.output:
+    if args.output is not None:
         write_output(args.output, dumps_world(world))
         info = describe(world)
         msg = f"wrote {args.output}: n={info['n']} m={info['m']} genus={info['genus']}"

@@ -32,6 +32,8 @@ import tempfile
 from pathlib import Path
 from typing import Any
 
+from topomark.reference.files.outputs import guarded
+from topomark.reference.files.overwrite import claim_dir, named_path
 from topomark.spec.errors import InvalidInput
 
 from topomark.reference.cli.args import check_jobs, check_max_degree, check_min_vertices
@@ -60,16 +62,19 @@ def worst_case_command(args: argparse.Namespace) -> int:
         missing = [d for d in args.summarise if not Path(d).is_dir()]
         if missing:
             raise InvalidInput(f"--summarise: {missing[0]!r} is not a directory (give the --out directories of runs)")
-        if args.out:
-            text = summarise([Path(d) for d in args.summarise], Path(args.out))
-            (Path(args.out) / "worst-case.md").write_text(text)
-            print(f"wrote {Path(args.out) / 'worst-case.md'}")
+        claim_dir(args.out, "-o", args.force)
+        if args.out is not None:
+            out = Path(args.out)
+            guarded(out, lambda: (out / "worst-case.md").write_text(summarise([Path(d) for d in args.summarise], out)))
+            print(f"wrote {out / 'worst-case.md'}")
         else:
             print(summarise([Path(d) for d in args.summarise]), end="")
         return 0
+    named_path(args.shards, "--shards")  # resumed, not claimed: an earlier run's shards are reused
     if args.search:
         return search_command(args)
     _validate(args)
+    claim_dir(args.out, "-o", args.force)
     setup = setup_of(args)
     progress = None if args.quiet or args.json else (lambda line: print(line, file=sys.stderr, flush=True))
     degree = min(args.max_degree, args.max_vertices - 1)
@@ -97,10 +102,10 @@ def _finish(args, setup, degree: int, found: dict[str, Any]) -> int:
         brute = brute_force(setup, args.max_vertices, degree, args.min_vertices)
         compare(tallies, brute)  # exit 3 if the two searches disagree
         data["cross_check"] = {n: t.to_summary() for n, t in brute.items()}
-    if args.out:
-        written = write_outputs(Path(args.out), data, degree, tallies)
+    if args.out is not None:
         from topomark.reference.worstcase.report import write_report
-        written += write_report(Path(args.out), data)
+        out = Path(args.out)
+        written = guarded(out, lambda: write_outputs(out, data, degree, tallies) + write_report(out, data))
         data["written"] = [str(p) for p in written]
     from topomark.reference.worstcase.report import not_correct
     failed = found["problem_count"] + sum(not_correct(r) for r in per_n)

@@ -40,9 +40,11 @@ def setup_of(args: argparse.Namespace):
 def search_command(args: argparse.Namespace) -> int:
     from topomark.reference.worstcase.fit import fit_exponents
     from topomark.reference.worstcase.search import adversarial_search
+    from topomark.reference.files.overwrite import claim_dir
     setup = setup_of(args)
     if args.evaluations < 1:
         raise InvalidInput(f"--evaluations must be at least 1, not {args.evaluations}")
+    claim_dir(args.out, "-o", args.force)
     rows: list[dict[str, Any]] = []
     for n in args.vertices:
         progress = None if args.quiet or args.json else _Progress(n, args.evaluations)
@@ -55,8 +57,9 @@ def search_command(args: argparse.Namespace) -> int:
             "objective": args.objective, "family": args.world_family, "evaluations": args.evaluations, "per_n": rows,
             "fit": fit_exponents(best) if len(best) >= 3 else None,  # two points fit any power exactly
             "method": "seeded local search: a lower bound on the worst case, not the worst case"}
-    if args.out:
-        _write(Path(args.out), data)
+    if args.out is not None:
+        from topomark.reference.files.outputs import guarded
+        guarded(args.out, lambda: _write(Path(args.out), data))
     if args.json:
         print(json.dumps(data, indent=1, sort_keys=True))
     else:

@@ -20,6 +20,7 @@ import argparse
 import sys
 
 from topomark.reference.cli.main import COMMANDS, build_parser
+from topomark.reference.files.overwrite import RULE
 from topomark.spec.errors import EXIT_CODES_HELP
 
 __all__ = ["markdown", "main"]
@@ -35,7 +36,7 @@ def markdown() -> str:
     parser = build_parser()
     codes = _one_line(EXIT_CODES_HELP).removeprefix("exit codes:").strip()
     parts = [HEADER, f"Every command exits with one of four codes: {codes}. `topomark` alone, with no command, "
-                     "prints the commands below, a line each, and exits 0.\n\n"]
+                     "prints the commands below, a line each, and exits 0.\n\n", f"**Output paths.** {RULE}\n\n"]
     parts.append("| command | what it does |\n|---|---|\n")
     parts += [f"| [`{name}`](#topomark-{name}) | {_cell(summary)} |\n" for name, (_, summary) in COMMANDS.items()]
     for name, (_, summary) in COMMANDS.items():

@@ -26,7 +26,8 @@ An option is spelled one way in every command: ``-o/--out`` names where the outp
 and each has its default: ``bench`` one per CPU, its runs being small and independent; ``census`` 1,
 all in the leader, since a census's memory grows with its workers and its long runs are started
 deliberately); ``--seed N`` is one integer type (:func:`.args.seed`); ``--timeout SECONDS``;
-``--quiet`` silences progress; ``--json``.
+``--quiet`` silences progress; ``--json``; ``--force`` lets a command write over an output that is
+already there (:data:`topomark.reference.files.overwrite.RULE`, printed in the command-line reference).
 """
 
 from __future__ import annotations

@@ -55,6 +55,8 @@ def check_output(path: str | Path) -> None:
 
 def check_output_dir(path: str | Path, create: bool = True) -> Path:
     """``path`` as an existing directory (made, with its parents, when ``create``); InvalidInput if impossible."""
+    if not str(path).strip():
+        raise InvalidInput("the output directory's path is empty")
     p = Path(path)
     if p.exists() and not p.is_dir():
         raise InvalidInput(f"{path}: cannot use as the output directory: it is not a directory")

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from topomark.reference.cli.args import seed as seed_option
 from topomark.reference.cli.facts import fact
+from topomark.reference.cli.options import add_force
 from topomark.reference.cli.parser import Later
 
 __all__ = ["register"]
@@ -51,6 +52,7 @@ def register(sub) -> None:
                                             "writes none and says so")
     p.add_argument("--models", metavar="DIR", help="write every completed model as a world file, in completion order "
                                                    "(model-0001.json, ...; algorithms that keep models: model-tree)")
+    add_force(p)
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     p.set_defaults(handler=Later("cmd_explore", "explore_command"))

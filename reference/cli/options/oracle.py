@@ -11,6 +11,7 @@ import argparse
 
 from topomark.reference.cli.args import seed as seed_option
 from topomark.reference.cli.facts import fact
+from topomark.reference.cli.options import add_force
 from topomark.reference.cli.parser import JSON_HELP, Later, Parser
 from topomark.spec.errors import InvalidInput
 
@@ -73,8 +74,10 @@ def _register_conformance(sub) -> None:
                                    "case giving its kit in hello (exit 0 iff all pass).")
     csub = c.add_subparsers(dest="action", metavar="ACTION", parser_class=Parser)
     ce = csub.add_parser("export", help="write the suite to DIR (new or empty)")
-    ce.add_argument("dir", metavar="DIR", help="the directory to write (new or empty)")
+    ce.add_argument("dir", metavar="DIR", help="the directory to write (new or empty; --force replaces an earlier "
+                                              "suite)")
     _suite_choice(ce, "write the suite of the algorithm NAME only (repeatable; default: every deterministic one)")
+    add_force(ce, "replace the suite an earlier export wrote in DIR (default: refuse a non-empty DIR, exit 2)")
     ce.add_argument("--json", action="store_true", help=JSON_HELP)
     ce.set_defaults(handler=Later("cmd_oracle", "conformance_export"))
     cl = csub.add_parser("lint", help="check a suite directory")
@@ -95,6 +98,7 @@ def _run_options(p) -> None:
     _protocol_options(p)
     p.add_argument("--seed", type=seed_option, help="seed for a random generator")
     p.add_argument("--map", metavar="FILE", help="write the program's map here")
+    add_force(p)
     p.add_argument("--json", action="store_true", help=JSON_HELP)
 
 
@@ -104,6 +108,7 @@ def _drive_options(p) -> None:
     p.add_argument("--trace", metavar="FILE", help="write the topomark/trace@1 trace here, streamed as the run goes "
                                                     "(without it no trace is kept, only counters)")
     p.add_argument("--map", metavar="FILE", help="write the map here")
+    add_force(p)
     p.add_argument("--max-traversals", type=int, default=1_000_000, metavar="N",
                    help="fail after this many edge traversals (default 1,000,000)")
     p.add_argument("--timeout", type=float, default=600.0, metavar="SECONDS", help="wall-time limit (default 600)")

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from topomark.reference.cli.facts import fact
-from topomark.reference.cli.options import add_marker_bounds
+from topomark.reference.cli.options import add_force, add_marker_bounds
 from topomark.reference.cli.parser import Later
 
 __all__ = ["register"]
@@ -20,5 +20,6 @@ def register(sub) -> None:
     p.add_argument("--timeout", type=float, default=None, metavar="SECONDS",
                    help="give up after SECONDS (outcome unknown)")
     p.add_argument("-o", "--out", default=None, metavar="DIR", help="write a.json, b.json, relation.json, pair.svg")
+    add_force(p)
     p.add_argument("--json", action="store_true", help="machine-readable output")
     p.set_defaults(handler=Later("cmd_search", "search_command"))

@@ -6,6 +6,7 @@ import argparse
 
 from topomark.reference.cli.args import seed as seed_option
 from topomark.reference.cli.facts import fact
+from topomark.reference.cli.options import add_force
 from topomark.reference.cli.parser import Later
 
 __all__ = ["register"]
@@ -19,6 +20,7 @@ def register(sub) -> None:
     p.add_argument("--seed", type=seed_option, help="seed for random generators")
     p.add_argument("-o", "--out", dest="output", metavar="FILE", help="write the world here (default: stdout)")
     p.add_argument("--output", dest="output", help=argparse.SUPPRESS)  # the former spelling, still accepted
+    add_force(p)
     p.add_argument("--show", metavar="FILE", help="summarise a world file instead")
     p.add_argument("--draw", metavar="GENERATOR_OR_FILE",
                    help="draw a world (a generator or a world file) to -o FILE, .svg or .png by its suffix (PNG needs "

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from topomark.reference.cli.args import MAX_JOBS, seed
 from topomark.reference.cli.facts import fact
+from topomark.reference.cli.options import add_force
 from topomark.reference.cli.parser import Later
 
 __all__ = ["register", "MAX_EXHAUSTIVE"]
@@ -33,6 +34,7 @@ def register(sub) -> None:
     p.add_argument("--cross-check", action="store_true",
                    help="also run the brute force over labelled rotation systems and require the same maxima (n <= 5)")
     p.add_argument("-o", "--out", metavar="DIR", help="write worst-case.json, the argmax world files, worst-case.md and plots")
+    add_force(p)
     p.add_argument("--summarise", nargs="+", metavar="DIR",
                    help="the report over the --out directories of earlier runs, exhaustive and --search: Markdown on "
                         "stdout, or worst-case.md and its plot in -o DIR")
