@@ -42,9 +42,9 @@ def test_json_has_the_documented_keys(capsys):
 
 
 def test_trace_is_reproducible_and_map_is_the_world(capsys, tmp_path):
-    for name in ("t1.jsonl", "t2.jsonl"):
+    for name in ("t1.jsonl", "t2.jsonl"):  # the second run writes over the first's map: --force
         code, _, _ = run(capsys, "explore", "lattice-hole:rows=5,cols=6", "--seed", "4",
-                         "--trace", str(tmp_path / name), "--map", str(tmp_path / "map.json"))
+                         "--trace", str(tmp_path / name), "--map", str(tmp_path / "map.json"), "--force")
         assert code == 0
     assert (tmp_path / "t1.jsonl").read_bytes() == (tmp_path / "t2.jsonl").read_bytes()
     world = g.lattice_hole(5, 6, seed=4)

@@ -116,7 +116,8 @@ def _edit_lines(path: Path, change) -> None:
 
 def test_export_refuses_a_non_empty_directory(suite, capsys):
     assert main(["conformance", "export", str(suite)]) == 2
-    assert "must be new or empty" in capsys.readouterr().err
+    err = capsys.readouterr().err
+    assert str(suite) in err and "not empty" in err and "--force" in err
 
 
 @pytest.mark.slow
