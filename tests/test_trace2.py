@@ -60,7 +60,8 @@ def index(trace: list[dict], pred) -> int:
 @pytest.mark.parametrize("algorithm", ALGORITHMS)  # the cycle: tests/test_lighthouse_search.py replays them
 def test_explore_then_replay_verifies_every_lighthouse_and_algorithm(tmp_path, capsys, text, light, algorithm):
     w, t = files(tmp_path, bare(make_world(text)), "")
-    assert main(["explore", w, "--lighthouse", light, "--algorithm", algorithm, "--trace", t]) == 0
+    argv = ["explore", w, "--lighthouse", light, "--algorithm", algorithm, "--trace", t]
+    assert main([*argv, "--force"]) == 0  # files() made t: written over
     capsys.readouterr()
     records = parse_trace(open(t).read())
     header = records[0]
