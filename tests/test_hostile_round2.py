@@ -110,8 +110,8 @@ def test_world_files_still_refuse_duplicate_keys(tmp_path, capsys):
 def test_a_written_figure_3_6_wheel_is_explored(tmp_path, capsys):
     """``wheel-a:marker=directional`` carries the marker Algorithm 3.1 drops (Figure 3.6): written or as
     generator text, ``explore`` maps it with its default lighthouse."""
-    path = tmp_path / "w.json"
     for marker in ("directional", "none"):
+        path = tmp_path / f"{marker}.json"
         assert main(["world", f"wheel-a:marker={marker}", "-o", str(path)]) == 0
         assert main(["explore", str(path), "--quiet", "--json"]) == 0
         assert main(["explore", f"wheel-b:marker={marker}", "--quiet", "--json"]) == 0
