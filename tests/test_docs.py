@@ -114,3 +114,44 @@ def test_the_committed_results_name_their_command():
     assert pages
     for page in pages:
         assert "\n\n> Produced by `topomark bench " in page.read_text(encoding="utf-8"), page.name
+
+
+REGENERATE = "python -m topomark.reference.bench.publish --all --docs docs/results"
+
+
+def test_the_results_pages_are_what_their_stored_runs_give(tmp_path):
+    """Every page and plot of docs/results, regenerated from the run stores kept in docs/results/runs/ by the
+    current report code: the same files, the pages byte for byte (the plots are not compared pixel by pixel)."""
+    results = DOCS / "results"
+    publish.publish_all(results, tmp_path)
+    made = {p.name for p in tmp_path.iterdir()}
+    kept = {p.name for p in results.iterdir() if p.is_file()}
+    assert made == kept, f"docs/results is stale (missing {sorted(made - kept)}, extra {sorted(kept - made)}): " \
+                         f"run {REGENERATE}"
+    for name in sorted(n for n in made if n.endswith(".md")):
+        assert (tmp_path / name).read_bytes() == (results / name).read_bytes(), f"{name} is stale: run {REGENERATE}"
+
+
+def test_the_stored_runs_are_the_run_stores_only_and_small():
+    stores = [p for p in (DOCS / "results" / publish.STORES).iterdir()]
+    assert stores and all(sorted(f.name for f in s.iterdir()) == ["runs.csv", "runs.json"] for s in stores)
+    assert sum(f.stat().st_size for s in stores for f in s.iterdir()) < 3 * 2 ** 20
+
+
+def test_publish_all_leaves_only_the_pages_its_stores_give(tmp_path, capsys):
+    docs = tmp_path / "results"
+    shutil.copytree(DOCS / "results" / publish.STORES / "figure-3.11", docs / publish.STORES / "figure-3.11")
+    (docs / "stale.md").write_text("# a page no store gives\n")
+    (docs / "stale.png").write_bytes(b"\x89PNG")
+    assert publish.main(["--all", "--docs", str(docs)]) == 0
+    assert sorted(p.name for p in docs.iterdir()) == ["figure-3.11-small-world-k2-p10.png",
+                                                      "figure-3.11-small-world-k4-p20.png", "figure-3.11.md",
+                                                      "index.md", publish.STORES]
+
+
+def test_publish_all_without_stores_is_bad_input(tmp_path, capsys):
+    assert publish.main(["--all", "--docs", str(tmp_path)]) == 2
+    assert str(tmp_path / publish.STORES) in capsys.readouterr().err
+    with pytest.raises(SystemExit) as exc:
+        publish.main(["--all", str(tmp_path), "--docs", str(tmp_path)])
+    assert exc.value.code == 2

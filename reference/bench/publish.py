@@ -10,6 +10,13 @@ the first page whose title names its figure or table, else of the page of the sw
 
     python -m topomark.reference.bench.publish OUT_DIR [OUT_DIR ...] --docs docs/results
 
+The run stores behind the published pages are kept beside them, in ``DOCS/runs/NAME/`` (``runs.csv`` and
+``runs.json`` only).  :func:`publish_all` regenerates every page from them with the current report code — each
+store's reports written again (``topomark bench EXPERIMENT --report-only``) in a scratch directory, then
+published — and leaves ``DOCS`` holding exactly those pages, their plots and the index:
+
+    python -m topomark.reference.bench.publish --all --docs docs/results
+
 A directory without a run-store manifest or without a report is bad input (exit 2), named.
 
 >>> header({"experiment": "figure-3.11", "graphs": 2, "sizes": [20], "check": True})
@@ -22,12 +29,16 @@ import argparse
 import re
 import shutil
 import sys
+import tempfile
 from pathlib import Path
 
-from topomark.reference.bench.run_manifest import read_manifest
+from topomark.reference.bench.run_manifest import MANIFEST_NAME, read_manifest
 from topomark.spec.errors import EXIT_BAD_INPUT, InvalidInput
 
-__all__ = ["publish", "header", "write_index", "main", "CHAPTERS"]
+__all__ = ["publish", "publish_all", "header", "write_index", "main", "CHAPTERS", "STORES"]
+
+STORES = "runs"  # DOCS/runs/NAME/: the run stores the pages of DOCS are published from
+STORE_FILES = ("runs.csv", MANIFEST_NAME)
 
 FULL_GRAPHS = 30  # worlds per size in the thesis's experiments (§3.5.3) and the bench's default
 CHAPTERS = (  # (chapter heading, report-name prefixes), in the order of the thesis
@@ -37,10 +48,12 @@ CHAPTERS = (  # (chapter heading, report-name prefixes), in the order of the the
     ("Chapter 5: mapping with less", ("chapter-5",)),
     ("Chapter 6: many markers, threads, movable markers", ("table-6.", "figure-6.", "section-6.", "comparison")),
 )
-INDEX_HEADER = ("# Results\n\nEach page is a report of `topomark bench`, published from its run store by "
-                "`python -m topomark.reference.bench.publish`; its header gives the command and the sizes that "
-                "produced it. Every run was checked (invariants after every iteration, extended isomorphism at "
-                "the end) unless the header says otherwise.\n")
+INDEX_HEADER = ("# Results\n\nEach page is a report of `topomark bench`, published from its run store; its header "
+                "gives the command and the sizes that produced it. Every run was checked (invariants after every "
+                "iteration, extended isomorphism at the end) unless the header says otherwise. The run stores are "
+                "kept beside the pages, in `runs/NAME/` (`runs.csv`, one row per run, and `runs.json`, the "
+                "sweeps), and every page is regenerated from them by the current code with one command: "
+                "`python -m topomark.reference.bench.publish --all --docs docs/results`.\n")
 
 
 def header(sweep: dict) -> str:
@@ -120,6 +133,40 @@ def write_index(docs: str | Path) -> Path:
     return index
 
 
+def publish_all(docs: str | Path, into: str | Path | None = None) -> list[Path]:
+    """Every page of ``docs`` regenerated from the run stores in ``docs/runs/``, written to ``into`` (default
+    ``docs``), which then holds exactly those pages, their plots and the index; the files written."""
+    from topomark.reference.bench.experiments import write_report
+    from topomark.reference.bench.reports.plots import INSTALL_HINT, pyplot
+
+    docs = Path(docs)
+    into = docs if into is None else Path(into)
+    root = docs / STORES
+    stores = sorted(p for p in root.iterdir() if (p / MANIFEST_NAME).is_file()) if root.is_dir() else []
+    if not stores:
+        raise InvalidInput(f"{root}: no run store (NAME/runs.csv and NAME/runs.json) to publish from")
+    if pyplot() is None:
+        raise InvalidInput(f"the published pages show plots: matplotlib is needed ({INSTALL_HINT})")
+    with tempfile.TemporaryDirectory(prefix="topomark-publish-") as scratch:
+        pages = Path(scratch) / "pages"
+        for store in stores:
+            work = Path(scratch) / store.name
+            work.mkdir()
+            for name in STORE_FILES:
+                shutil.copyfile(store / name, work / name)
+            manifest = read_manifest(work)
+            if manifest is None or not manifest.sweeps:
+                raise InvalidInput(f"{store}: the run store records no sweep")
+            write_report(str(manifest.sweeps[-1]["experiment"]), work, None, plots=True)
+            publish(work, pages)
+        write_index(pages)
+        into.mkdir(parents=True, exist_ok=True)
+        for stale in (p for p in into.iterdir() if p.suffix in (".md", ".png") and not (pages / p.name).exists()):
+            stale.unlink()
+        written = [Path(shutil.copyfile(p, into / p.name)) for p in sorted(pages.iterdir())]
+    return written
+
+
 def _title(page: Path) -> str:
     first = page.read_text(encoding="utf-8").partition("\n")[0]
     return re.sub(r"^#+\s*", "", first).strip() or page.stem
@@ -129,10 +176,18 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m topomark.reference.bench.publish",
                                      description="Publish bench reports (DIR/*.md, DIR/*.png) as documentation "
                                                  "pages under a header naming the command that produced them.")
-    parser.add_argument("out_dirs", nargs="+", metavar="OUT_DIR", help="a directory written by topomark bench")
+    parser.add_argument("out_dirs", nargs="*", metavar="OUT_DIR", help="a directory written by topomark bench")
     parser.add_argument("--docs", required=True, metavar="DIR", help="where the pages go (docs/results)")
+    parser.add_argument("--all", action="store_true", help=f"regenerate every page of DIR from the run stores in "
+                                                            f"DIR/{STORES}/ (no OUT_DIR)")
     args = parser.parse_args(argv)
+    if bool(args.all) == bool(args.out_dirs):
+        parser.error("give OUT_DIR ... or --all, not both")
     try:
+        if args.all:
+            written = publish_all(args.docs)
+            print(f"wrote {len(written)} files in {args.docs} from {args.docs}/{STORES}/")
+            return 0
         for out_dir in args.out_dirs:
             for page in publish(out_dir, args.docs):
                 print(f"wrote {page}")

@@ -145,7 +145,7 @@ def shows(artist, log_y: bool = False) -> bool:
         return False
     if not isinstance(artist, Line2D):
         return True
-    placed = {(x, y) for x, y in np.asarray(artist.get_xydata(), dtype=float).tolist()
+    placed = {(x, y) for x, y in np.asarray(artist.get_xydata(), dtype=float).reshape(-1, 2).tolist()
               if math.isfinite(x) and math.isfinite(y) and (y > 0 or not log_y)}
     marked = artist.get_marker() not in NO_STYLE and artist.get_markersize() > 0
     stroked = artist.get_linestyle() not in NO_STYLE and artist.get_linewidth() > 0
