@@ -96,3 +96,16 @@ def test_figure_3_4_from_the_centre_six_global_models_against_many_more_local():
     assert got[("3.4(b)", "global")]["other"] == [6]
     assert all(got[(f, "local")]["completed"] > 7 * got[(f, "global")]["completed"] for f in ("3.4(a)", "3.4(b)"))
     assert all(r["seconds"] >= 0 and r["outcome"] == "failed" for r in got.values())
+
+
+def test_the_wheels_section_reads_the_same_whatever_the_runs_took(monkeypatch):
+    """The published page is regenerated and compared byte for byte: a time measured as the report is written
+    must not change its text (the wheel runs take hundredths of a second)."""
+    from topomark.reference.bench.reports import chapter5
+
+    runs = figure_3_4()
+    texts = []
+    for seconds in (0.01, 0.06):
+        monkeypatch.setattr(chapter5, "figure_3_4", lambda: [{**r, "seconds": seconds} for r in runs])
+        texts.append("\n".join(chapter5._figure_section({})))
+    assert texts[0] == texts[1] and "took under 1 s here" in texts[0]
