@@ -8,6 +8,7 @@ from ``spec/`` (:mod:`topomark.specpages`), ``docs/results/`` from bench run sto
 
 from __future__ import annotations
 
+import gzip
 import re
 import shutil
 from pathlib import Path
@@ -80,15 +81,35 @@ def test_a_small_sweep_is_published_under_its_command(tmp_path):
     out, docs = tmp_path / "out", tmp_path / "results"
     assert main(["bench", "figure-3.11", "--graphs", "1", "--sizes", "20", "--no-plots", "--quiet", "-o", str(out)]) == 0
     (out / "figure-3.11-extra.png").write_bytes(b"\x89PNG")  # a plot the report names by its prefix
-    assert publish.main([str(out), "--docs", str(docs)]) == 0
+    publish.publish(out, docs)
     page = (docs / "figure-3.11.md").read_text(encoding="utf-8")
     report = (out / "figure-3.11.md").read_text(encoding="utf-8")
     title, _, body = report.partition("\n")
     assert page.startswith(title + "\n\n> Produced by `topomark bench figure-3.11 --graphs 1 --sizes 20`")
     assert "**A small sweep**: 1 worlds per size" in page and body.rstrip("\n") in page
     assert "![figure-3.11-extra](figure-3.11-extra.png)" in page and (docs / "figure-3.11-extra.png").exists()
+    publish.write_index(docs)
     index = (docs / "index.md").read_text(encoding="utf-8")
     assert "## Chapter 3" in index and "(figure-3.11.md)" in index
+
+
+@pytest.mark.slow
+def test_publishing_a_sweep_keeps_its_store_and_regenerates_the_pages_from_it(tmp_path, capsys):
+    out, docs = tmp_path / "out", tmp_path / "results"
+    assert main(["bench", "figure-3.11", "--graphs", "1", "--sizes", "20", "--no-plots", "--quiet", "-o", str(out)]) == 0
+    (docs / "stale.md").parent.mkdir()
+    (docs / "stale.md").write_text("# a page no store gives\n")
+    assert publish.main([str(out), "--docs", str(docs)]) == 0
+    store = docs / publish.STORES / "figure-3.11"
+    assert sorted(p.name for p in store.iterdir()) == ["runs.csv.gz", "runs.json"]
+    with gzip.open(store / "runs.csv.gz", "rb") as rows:
+        assert rows.read() == (out / "runs.csv").read_bytes()
+    archive = (store / "runs.csv.gz").read_bytes()
+    publish.keep(out, docs)  # the same rows make the same archive: a re-published store is no change
+    assert (store / "runs.csv.gz").read_bytes() == archive
+    page = (docs / "figure-3.11.md").read_text(encoding="utf-8")
+    assert "> Produced by `topomark bench figure-3.11 --graphs 1 --sizes 20`" in page
+    assert not (docs / "stale.md").exists() and (docs / "index.md").is_file()
 
 
 def test_a_full_sweep_says_so():
@@ -96,15 +117,14 @@ def test_a_full_sweep_says_so():
     assert "The full experiment" in text and "small sweep" not in text
 
 
-@pytest.mark.parametrize("what", ["no manifest", "no report"])
+@pytest.mark.parametrize("what", ["no manifest", "no rows"])
 def test_a_directory_that_is_not_a_bench_run_is_bad_input(tmp_path, what, capsys):
     out = tmp_path / "out"
     out.mkdir()
-    if what == "no report":
+    if what == "no rows":
         assert main(["bench", "figure-3.11", "--graphs", "1", "--sizes", "20", "--no-plots", "--quiet",
                      "-o", str(out)]) == 0
-        for report in out.glob("*.md"):
-            report.unlink()
+        (out / "runs.csv").unlink()
     assert publish.main([str(out), "--docs", str(tmp_path / "docs")]) == 2
     assert str(out) in capsys.readouterr().err
 
@@ -119,6 +139,7 @@ def test_the_committed_results_name_their_command():
 REGENERATE = "python -m topomark.reference.bench.publish --all --docs docs/results"
 
 
+@pytest.mark.slow
 def test_the_results_pages_are_what_their_stored_runs_give(tmp_path):
     """Every page and plot of docs/results, regenerated from the run stores kept in docs/results/runs/ by the
     current report code: the same files, the pages byte for byte (the plots are not compared pixel by pixel)."""
@@ -134,8 +155,16 @@ def test_the_results_pages_are_what_their_stored_runs_give(tmp_path):
 
 def test_the_stored_runs_are_the_run_stores_only_and_small():
     stores = [p for p in (DOCS / "results" / publish.STORES).iterdir()]
-    assert stores and all(sorted(f.name for f in s.iterdir()) == ["runs.csv", "runs.json"] for s in stores)
+    assert stores and all(sorted(f.name for f in s.iterdir()) == ["runs.csv.gz", "runs.json"] for s in stores)
     assert sum(f.stat().st_size for s in stores for f in s.iterdir()) < 3 * 2 ** 20
+
+
+def test_a_kept_store_that_is_not_gzip_is_bad_input(tmp_path, capsys):
+    docs = tmp_path / "results"
+    shutil.copytree(DOCS / "results" / publish.STORES / "figure-3.11", docs / publish.STORES / "figure-3.11")
+    (docs / publish.STORES / "figure-3.11" / "runs.csv.gz").write_bytes(b"experiment,size\n")
+    assert publish.main(["--all", "--docs", str(docs)]) == 2
+    assert "runs.csv.gz: not a gzip archive of runs" in capsys.readouterr().err
 
 
 def test_publish_all_leaves_only_the_pages_its_stores_give(tmp_path, capsys):

@@ -8,12 +8,15 @@ of the page whose report lists it (its ``Plots:`` line), else of the page whose 
 the first page whose title names its figure or table, else of the page of the sweep's experiment.
 ``DOCS/index.md`` lists every page published there, grouped by chapter of the thesis.
 
+The run stores behind the published pages are kept beside them, in ``DOCS/runs/EXPERIMENT/`` (``runs.csv.gz``,
+the rows compressed, and ``runs.json``, the sweeps).  Publishing a bench directory keeps its store there
+(:func:`keep`, replacing an earlier store of the same experiment) and then regenerates every page:
+
     python -m topomark.reference.bench.publish OUT_DIR [OUT_DIR ...] --docs docs/results
 
-The run stores behind the published pages are kept beside them, in ``DOCS/runs/NAME/`` (``runs.csv`` and
-``runs.json`` only).  :func:`publish_all` regenerates every page from them with the current report code — each
-store's reports written again (``topomark bench EXPERIMENT --report-only``) in a scratch directory, then
-published — and leaves ``DOCS`` holding exactly those pages, their plots and the index:
+:func:`publish_all` regenerates every page from the kept stores with the current report code — each store's
+reports written again (``topomark bench EXPERIMENT --report-only``) in a scratch directory, then published — and
+leaves ``DOCS`` holding exactly those pages, their plots and the index; after a change to the report code:
 
     python -m topomark.reference.bench.publish --all --docs docs/results
 
@@ -26,6 +29,7 @@ A directory without a run-store manifest or without a report is bad input (exit 
 from __future__ import annotations
 
 import argparse
+import gzip
 import re
 import shutil
 import sys
@@ -35,10 +39,10 @@ from pathlib import Path
 from topomark.reference.bench.run_manifest import MANIFEST_NAME, read_manifest
 from topomark.spec.errors import EXIT_BAD_INPUT, InvalidInput
 
-__all__ = ["publish", "publish_all", "header", "write_index", "main", "CHAPTERS", "STORES"]
+__all__ = ["publish", "publish_all", "keep", "header", "write_index", "main", "CHAPTERS", "STORES"]
 
-STORES = "runs"  # DOCS/runs/NAME/: the run stores the pages of DOCS are published from
-STORE_FILES = ("runs.csv", MANIFEST_NAME)
+STORES = "runs"  # DOCS/runs/EXPERIMENT/: the run stores the pages of DOCS are published from
+ROWS, KEPT_ROWS = "runs.csv", "runs.csv.gz"  # a bench directory's rows; the same, compressed, as kept in DOCS
 
 FULL_GRAPHS = 30  # worlds per size in the thesis's experiments (§3.5.3) and the bench's default
 CHAPTERS = (  # (chapter heading, report-name prefixes), in the order of the thesis
@@ -51,8 +55,8 @@ CHAPTERS = (  # (chapter heading, report-name prefixes), in the order of the the
 INDEX_HEADER = ("# Results\n\nEach page is a report of `topomark bench`, published from its run store; its header "
                 "gives the command and the sizes that produced it. Every run was checked (invariants after every "
                 "iteration, extended isomorphism at the end) unless the header says otherwise. The run stores are "
-                "kept beside the pages, in `runs/NAME/` (`runs.csv`, one row per run, and `runs.json`, the "
-                "sweeps), and every page is regenerated from them by the current code with one command: "
+                "kept beside the pages, in `runs/EXPERIMENT/` (`runs.csv.gz`, one row per run, and `runs.json`, "
+                "the sweeps), and every page is regenerated from them by the current code with one command: "
                 "`python -m topomark.reference.bench.publish --all --docs docs/results`.\n")
 
 
@@ -144,7 +148,8 @@ def publish_all(docs: str | Path, into: str | Path | None = None) -> list[Path]:
     root = docs / STORES
     stores = sorted(p for p in root.iterdir() if (p / MANIFEST_NAME).is_file()) if root.is_dir() else []
     if not stores:
-        raise InvalidInput(f"{root}: no run store (NAME/runs.csv and NAME/runs.json) to publish from")
+        raise InvalidInput(f"{root}: no run store (EXPERIMENT/{KEPT_ROWS} and EXPERIMENT/{MANIFEST_NAME}) to "
+                           "publish from")
     if pyplot() is None:
         raise InvalidInput(f"the published pages show plots: matplotlib is needed ({INSTALL_HINT})")
     with tempfile.TemporaryDirectory(prefix="topomark-publish-") as scratch:
@@ -152,8 +157,8 @@ def publish_all(docs: str | Path, into: str | Path | None = None) -> list[Path]:
         for store in stores:
             work = Path(scratch) / store.name
             work.mkdir()
-            for name in STORE_FILES:
-                shutil.copyfile(store / name, work / name)
+            shutil.copyfile(store / MANIFEST_NAME, work / MANIFEST_NAME)
+            _unpack(store / KEPT_ROWS, work / ROWS)
             manifest = read_manifest(work)
             if manifest is None or not manifest.sweeps:
                 raise InvalidInput(f"{store}: the run store records no sweep")
@@ -167,6 +172,37 @@ def publish_all(docs: str | Path, into: str | Path | None = None) -> list[Path]:
     return written
 
 
+def keep(out_dir: str | Path, docs: str | Path) -> Path:
+    """Keep the run store of the bench directory ``out_dir`` in ``docs/runs/EXPERIMENT/`` (its last sweep's
+    experiment), replacing an earlier one: the manifest as it is, the rows compressed (byte-for-byte the same
+    archive for the same rows: no time stamp or name in it); the store's folder."""
+    out_dir = Path(out_dir)
+    manifest = read_manifest(out_dir)
+    if manifest is None or not manifest.sweeps or not (out_dir / ROWS).is_file():
+        raise InvalidInput(f"{out_dir}: no run store with a sweep ({ROWS}, {MANIFEST_NAME}); run topomark bench "
+                           "there first")
+    experiment = str(manifest.sweeps[-1]["experiment"])
+    if not re.fullmatch(r"[a-z0-9][a-z0-9.-]*", experiment):
+        raise InvalidInput(f"{out_dir / MANIFEST_NAME}: the experiment name {experiment!r} is not one")
+    store = Path(docs) / STORES / experiment
+    store.mkdir(parents=True, exist_ok=True)
+    shutil.copyfile(out_dir / MANIFEST_NAME, store / MANIFEST_NAME)
+    with open(out_dir / ROWS, "rb") as rows, open(store / KEPT_ROWS, "wb") as raw, \
+            gzip.GzipFile(filename="", mode="wb", fileobj=raw, mtime=0, compresslevel=9) as packed:
+        shutil.copyfileobj(rows, packed)
+    return store
+
+
+def _unpack(kept: Path, rows: Path) -> None:
+    if not kept.is_file():
+        raise InvalidInput(f"{kept.parent}: the run store has no {KEPT_ROWS}")
+    try:
+        with gzip.open(kept, "rb") as packed, open(rows, "wb") as out:
+            shutil.copyfileobj(packed, out)
+    except (OSError, EOFError) as exc:
+        raise InvalidInput(f"{kept}: not a gzip archive of runs ({exc})") from None
+
+
 def _title(page: Path) -> str:
     first = page.read_text(encoding="utf-8").partition("\n")[0]
     return re.sub(r"^#+\s*", "", first).strip() or page.stem
@@ -174,9 +210,12 @@ def _title(page: Path) -> str:
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m topomark.reference.bench.publish",
-                                     description="Publish bench reports (DIR/*.md, DIR/*.png) as documentation "
-                                                 "pages under a header naming the command that produced them.")
-    parser.add_argument("out_dirs", nargs="*", metavar="OUT_DIR", help="a directory written by topomark bench")
+                                     description="Keep the run stores of bench directories beside the results "
+                                                 "pages and regenerate every page from the kept stores, each under a "
+                                                 "header naming the command that produced it.")
+    parser.add_argument("out_dirs", nargs="*", metavar="OUT_DIR",
+                        help=f"a directory written by topomark bench: its store is kept in DIR/{STORES}/EXPERIMENT/ "
+                             "(replacing an earlier one) and every page regenerated")
     parser.add_argument("--docs", required=True, metavar="DIR", help="where the pages go (docs/results)")
     parser.add_argument("--all", action="store_true", help=f"regenerate every page of DIR from the run stores in "
                                                             f"DIR/{STORES}/ (no OUT_DIR)")
@@ -184,14 +223,10 @@ def main(argv: list[str] | None = None) -> int:
     if bool(args.all) == bool(args.out_dirs):
         parser.error("give OUT_DIR ... or --all, not both")
     try:
-        if args.all:
-            written = publish_all(args.docs)
-            print(f"wrote {len(written)} files in {args.docs} from {args.docs}/{STORES}/")
-            return 0
         for out_dir in args.out_dirs:
-            for page in publish(out_dir, args.docs):
-                print(f"wrote {page}")
-        print(f"wrote {write_index(args.docs)}")
+            print(f"kept the run store of {out_dir} in {keep(out_dir, args.docs)}")
+        written = publish_all(args.docs)
+        print(f"wrote {len(written)} files in {args.docs} from {args.docs}/{STORES}/")
     except InvalidInput as exc:
         print(f"publish: error: {exc}", file=sys.stderr)
         return EXIT_BAD_INPUT
