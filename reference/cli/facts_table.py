@@ -6,7 +6,7 @@ from typing import Any
 
 TABLE: dict[str, Any] = {
     'algorithms': ('basic', 'enh1', 'enh2', 'enh3', 'enh4', 'enh5-d1', 'enh5-d2', 'enh3+4', 'enh3+5', 'footprints',
-                   'labelled-dfs', 'dudek', 'dudek-directional', 'model-tree', 'case-3a', 'case-3b',
+                   'labelled-dfs', 'dudek', 'dudek-directional', 'model-tree', 'single-leaf', 'case-3a', 'case-3b',
                    'case-3b-saving', 'case-1a', 'case-1b', 'case-2', 'case-4', 'case-4-mn', 'case-5-v1',
                    'case-5-v2', 'case-0', 'case-5-edge', 'case-dv-sum', 'extension-1', 'extension-2',
                    'extension-naive', 'case-1b-edgeinfo', 'case-2-edgeinfo', 'case-1a-edgeinfo', 'case-4-edgeinfo',
@@ -34,12 +34,19 @@ TABLE: dict[str, Any] = {
                    ('cue-m', 'cue (§5.3): the world has this many edges', None, 'model-tree'),
                    ('cue-diameter', "cue (§5.3): the world's diameter", None, 'model-tree'),
                    ('cue-planar', 'cue (§5.3): the world is planar (a genus-0 embedding)', 'no', 'model-tree'),
-                   ('prior', 'prior knowledge (§5.3): single-leaf, the world has exactly one vertex of degree 1',
+                   ('prior',
+                    'prior knowledge (§5.3) as a model-tree prior: single-leaf voids every model with two vertices '
+                    "of degree 1 (the world has exactly one); §5.3's deterministic use of the leaf, as Algorithm "
+                    "3.1's lighthouse, is --algorithm single-leaf",
                     'none', 'model-tree'),
                    ('rank',
                     'rank the completed models by P(model | perceptions), the prior 2^-(n+m+genus) (§5.3), in the '
                     'summary',
                     'no', 'model-tree'),
+                   ('search-limit',
+                    'cap on the traversals of the search for the leaf: past it the run ends with the limit outcome '
+                    '(at most 100,000,000)',
+                    1000000, 'single-leaf'),
                    ('markers',
                     'how many markers the robot carries (default: what its case is assured, from n and m)', None,
                     'case-3a, case-3b, case-3b-saving, case-1a, case-1b, case-2, case-4, case-4-mn, case-dv-sum, '
