@@ -15,8 +15,8 @@ always ends at the leaf:
   back-link information too (§5.1: "a vertex of degree one provides explicit back-link information at the
   vertex (Figure 5.1(a))").  The walk stops the moment it senses degree 1 — or at once, if the robot starts
   there.
-* **How it moves.**  From a place the walk leaves by its exits other than the entry edge in clockwise order and,
-  after each, comes back by the edge it left by (motion 0), which is then the entry edge; the robot knows that
+* **How it moves.**  From a place the walk leaves by its exits other than the entry edge, in clockwise order;
+  after each it comes back over the same edge, which is then its entry edge, and the robot knows that exit's
   offset, so the next exit's motion is the difference (§3.1.1's relative motions).  Every move is an
   ``establish`` move: it sets up the lighthouse before Algorithm 3.1's loop starts.
 
@@ -47,7 +47,7 @@ __all__ = ["LeafFound", "find_leaf", "search_bound", "SEARCH_LIMIT", "MAX_SEARCH
 
 SEARCH_LIMIT = 1_000_000
 """The default cap on the search's traversals: far more than any world of the thesis's sizes with its leaf a
-few steps away needs (a 10-vertex world of degree 4 with the leaf 6 steps away: about 10^4)."""
+few steps away needs (a world of degree 4 with the leaf 6 steps away: at most 4,344, :func:`search_bound`)."""
 
 MAX_SEARCH_LIMIT = 100_000_000
 """The largest cap: each traversal is a simulator step, and 10^8 of them take minutes."""

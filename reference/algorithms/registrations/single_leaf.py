@@ -22,8 +22,8 @@ Decisions:
 
 Examples
 --------
->>> SPECS[0].bound_for(4, 4) == SPECS[0].bound_for(4, 4) > 0, SPECS[0].bound_excludes
-(True, ('establish',))
+>>> SPECS[0].bound_for(4, 4), SPECS[0].bound_excludes  # a triangle with a pendant: (3.1)+(3.2), less the search
+(50, ('establish',))
 """
 
 from __future__ import annotations
