@@ -73,8 +73,10 @@ class Determination:
     complete: bool  # False: the covers' replay bound was reached before every edge was tried
 
     def words(self, map_n: int) -> str:
+        """Why the map was a guess; without a witness, that what the robot sensed determined the map."""
         if self.witness is None:
-            return ""
+            return (f"determined by what the program sensed (no witness of a guess among {self.candidates} worlds "
+                    f"replayed{'' if self.complete else ', the replay bound reached'})")
         u, w = self.edge or ("?", "?")
         why = (f"the robot never crossed the edge {u}–{w}; with a vertex added on it" if self.how == "subdivided"
                else f"the robot never told apart the two copies of a two-fold cover of the world (the edge {u}–{w} "

@@ -1,14 +1,12 @@
 """``run-external``: another program explores a world that topomark plays (thesis §3.1, §3.3–3.4).
 
-topomark is the world side of ``topomark/protocol@1`` and ``@2`` (``spec/protocol.md``):
-it holds the world in a :class:`~topomark.reference.run.simulator.Simulator`,
-answers every ``move`` and ``drop`` with the signature reached (§3.1.1),
-counts the cost in edge traversals (§3.1.2), enforces the marker kit (``@1``:
-Algorithm 3.1's one directional vertex marker, §3.3; ``@2``: any
-:class:`~topomark.spec.kit.Kit`, with drops and pick-ups of vertex and edge
-markers) and the limits, checks I-1 and I-2 (§3.4) on every ``snapshot`` of
-(S, U) the program sends, and judges the final ``map`` by extended
-isomorphism (§3.1.3) against the world with the markers the program left in it.
+topomark is the world side of ``topomark/protocol@1`` and ``@2`` (``spec/protocol.md``): it holds the world in a
+:class:`~topomark.reference.run.simulator.Simulator`, answers every ``move`` and ``drop`` with the signature reached
+(§3.1.1), counts the cost in edge traversals (§3.1.2), enforces the marker kit (``@1``: Algorithm 3.1's one
+directional vertex marker, §3.3; ``@2``: any :class:`~topomark.spec.kit.Kit`) and the limits, checks I-1 and I-2
+(§3.4) on every ``snapshot`` of (S, U), and judges the final ``map`` by extended isomorphism (§3.1.3) against the
+world with the markers the program left in it, and by whether what the program sensed determines it
+(:mod:`~topomark.reference.oracle.determination`).
 
 Time is the program's time: the ``--timeout`` and ``--message-timeout``
 limits count only the time topomark waits for the program
@@ -79,8 +77,7 @@ REASONS = {
     "snapshot": "a snapshot is malformed",
     "map-invalid": "the final map is not a valid world",
     "not-isomorphic": "the final map is not extended-isomorphic to the world",
-    "guess": "the final map is right, but what the program sensed does not determine it: a witness world gives "
-             "every signature it sensed and is not isomorphic to the map",
+    "guess": "the final map is right, but what the program sensed does not determine it (a witness world shows it)",
 }
 
 
@@ -334,20 +331,15 @@ def run_external(world: World, command: Sequence[str], limits: Limits | None = N
 def _judge(world: World, session: _Session) -> ExternalResult:
     """Play the session to its map and judge the map against the world."""
     map_ = session.play()
-    truth = session.sim.world.with_start(world.start)
-    verdict = _dropped_markers(truth, map_)
-    if verdict.isomorphic:
-        found = determination(session.sim.base_world, session.start, session.kit, session.actions, map_)
-        if found.witness is not None:
-            return ExternalResult("fail", "guess", found.words(map_.n), map=map_, rule=verdict.rule,
-                                  determination=found)
-        words = (f"isomorphic (extended isomorphism; {COMPARED}; witness verified) and determined by what the "
-                 f"program sensed (no witness of a guess among {found.candidates} worlds replayed"
-                 f"{'' if found.complete else ', the replay bound reached'})")
-        return ExternalResult("pass", "ok", words, map=map_, rule=verdict.rule, determination=found)
-    words = f"not isomorphic ({COMPARED}): {verdict.result.mismatch}"
-    return ExternalResult("fail", "not-isomorphic", words, violation=verdict.result.mismatch, map=map_,
-                          rule=verdict.rule)
+    verdict = _dropped_markers(session.sim.world.with_start(world.start), map_)
+    if not verdict.isomorphic:
+        return ExternalResult("fail", "not-isomorphic", f"not isomorphic ({COMPARED}): {verdict.result.mismatch}",
+                              violation=verdict.result.mismatch, map=map_, rule=verdict.rule)
+    found = determination(session.sim.base_world, session.start, session.kit, session.actions, map_)
+    words = f"isomorphic (extended isomorphism; {COMPARED}; witness verified) and {found.words(map_.n)}"
+    return ExternalResult("pass", "ok", words, map=map_, rule=verdict.rule, determination=found) \
+        if found.witness is None else \
+        ExternalResult("fail", "guess", found.words(map_.n), map=map_, rule=verdict.rule, determination=found)
 
 
 def _checked_kit(version: int, kit: Kit | None) -> Kit:
