@@ -120,7 +120,7 @@ def _setup(path: Path, data: dict[str, Any]) -> Setup:
         Policies(*s["policies"])
     except InvalidInput as e:
         raise InvalidInput(f"--summarise {path}: field setup: {e}") from None
-    return Setup(data["algorithm"], s["lighthouse"], tuple(s["policies"]), s["sample"], s["seed"])  # type: ignore[arg-type]
+    return Setup(data["algorithm"], s["lighthouse"], tuple(s["policies"]), s["sample"], s["seed"])
 
 
 def _bad(path: Path, field: str, why: str) -> InvalidInput:
@@ -242,7 +242,8 @@ def search_run(path: Path) -> dict[str, Any]:
 
 def load_runs(dirs: list[Path]) -> tuple[list[dict[str, Any]], list[dict[str, Any]]]:
     """The exhaustive and search runs of ``dirs``, each checked; a directory holding neither is bad input."""
-    exhaustive, searched = [], []
+    exhaustive: list[dict[str, Any]] = []
+    searched: list[dict[str, Any]] = []
     for d in dirs:
         found = False
         for name, check, into in (("worst-case.json", exhaustive_run, exhaustive),
