@@ -207,7 +207,9 @@ def test_unwritable_out_is_refused_before_work(tmp_path, capsys, target):
     if target == "fifo":
         target = str(tmp_path / "fifo")
         os.mkfifo(target)
-    _refused(["worst-case", "--max-vertices", "4", "--quiet", "-o", target], capsys, "-o", target)
+    t0 = time.perf_counter()  # a search of minutes: refused before it, not after
+    _refused(["worst-case", "--max-vertices", "6", "--max-degree", "5", "--quiet", "-o", target], capsys, "-o", target)
+    assert time.perf_counter() - t0 < 10
     _refused(["worst-case", "--search", "--vertices", "5", "--evaluations", "2", "--quiet", "-o", target], capsys,
              "-o")
 
