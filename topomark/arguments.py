@@ -34,13 +34,22 @@ from typing import Any, ParamSpec, TypeVar
 
 from topomark.keywords import unexpected_keyword
 from topomark.reference.cli.args import check_seconds
+from topomark.reference.worstcase.limits import LARGEST_DEGREE, degree_table
 from topomark.spec.errors import InvalidInput, clip
 
 __all__ = ["integer", "fraction", "seconds", "flag", "text", "optional_text", "path", "callback",
-           "keywords_checked"]
+           "largest_degree", "keywords_checked"]
 
 P = ParamSpec("P")
 R = TypeVar("R")
+
+
+def _real(value: Any) -> float | None:
+    """``value`` as a float, or None for an int too large to be one."""
+    try:
+        return float(value)
+    except OverflowError:
+        return None
 
 
 def _shown(value: Any) -> str:
@@ -67,9 +76,9 @@ def fraction(name: str, value: Any) -> float:
     """``value`` if it is a real number (not a bool) from 0 to 1; NaN and infinities are refused."""
     if isinstance(value, bool) or not isinstance(value, Real):
         raise InvalidInput(f"{name} must be a number from 0 to 1, not {_shown(value)}")
-    number = float(value)
-    if not (math.isfinite(number) and 0 <= number <= 1):
-        raise InvalidInput(f"{name} must be a number from 0 to 1, not {value!r}")
+    number = _real(value)
+    if number is None or not (math.isfinite(number) and 0 <= number <= 1):
+        raise InvalidInput(f"{name} must be a number from 0 to 1, not {_shown(value)}")
     return number
 
 
@@ -80,7 +89,10 @@ def seconds(name: str, value: Any) -> float | None:
         return None
     if isinstance(value, bool) or not isinstance(value, Real):
         raise InvalidInput(f"{name} must be a number of seconds or None, not {_shown(value)}")
-    return check_seconds(float(value), name)
+    number = _real(value)
+    if number is None:
+        raise InvalidInput(f"{name} must be positive and finite, at most a week, not {_shown(value)}")
+    return check_seconds(number, name)
 
 
 def flag(name: str, value: Any) -> bool:
@@ -121,6 +133,16 @@ def callback(name: str, value: Any) -> Any:
     if value is not None and not callable(value):
         raise InvalidInput(f"{name} must be a function or None, not {_shown(value)}")
     return value
+
+
+def largest_degree(max_vertices: int, max_degree: int) -> int:
+    """``max_degree`` if the exhaustive search of worlds up to ``max_vertices`` vertices fits in memory with it
+    (:data:`~topomark.reference.worstcase.limits.LARGEST_DEGREE`, the command's own bound); else InvalidInput."""
+    largest = LARGEST_DEGREE.get(max_vertices)
+    if largest is not None and min(max_degree, max_vertices - 1) > largest:
+        raise InvalidInput(f"max_degree {max_degree} with max_vertices {max_vertices} enumerates too many worlds to "
+                           f"hold (at most {largest} there; the largest degree at each n: {degree_table()})")
+    return max_degree
 
 
 def keywords_checked(function: Callable[P, R]) -> Callable[P, R]:

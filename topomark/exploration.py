@@ -194,7 +194,8 @@ def replay(world: WorldLike, trace: str | os.PathLike[str] | Iterable[dict[str, 
 
     ``trace`` is a trace file or its records (``explore(...).trace``, or any iterable of them, a generator
     too); records are read back through the trace format's reader one at a time, so they are checked exactly
-    as a file's lines are, and a stream of records is never held whole.  ``result.ok`` is the verdict,
+    as a file's lines are, and a stream of records is never held whole (an endless generator is read for as
+    long as it yields, in bounded memory, as a growing file would be).  ``result.ok`` is the verdict,
     ``result.message`` says what was verified or where the trace first diverges from the world.
 
     Bad input raises InvalidInput: a world that is not one, a ``trace`` that is neither a path nor an

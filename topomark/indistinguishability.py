@@ -28,7 +28,8 @@ import os
 import tempfile
 from typing import Callable, cast
 
-from topomark.arguments import callback, flag, integer, keywords_checked, optional_text, path, seconds, text
+from topomark.arguments import (callback, flag, integer, keywords_checked, largest_degree, optional_text, path,
+                                seconds, text)
 from topomark.proofs import z3search
 from topomark.proofs.bisim import Distinction, bisimulation, check_relation, distinguishing_sequence
 from topomark.proofs.census import CensusResult
@@ -150,7 +151,8 @@ def census(marker: str, max_vertices: int, max_degree: int, jobs: int = 1,
     called with a line of text now and then.
 
     Raises InvalidInput before any work for an unknown marker class, ``max_vertices`` outside 2 to 10 (the
-    sizes the enumeration reaches), ``max_degree`` < 1, ``jobs`` outside 1 to 256, a ``shards`` that is not a
+    sizes the enumeration reaches), ``max_degree`` < 1 or too large for the worlds of ``max_vertices``
+    vertices to fit in memory (at n = 7 and 8 at most 4, at 9 and 10 at most 3), ``jobs`` outside 1 to 256, a ``shards`` that is not a
     path, a ``scheduler`` that is not an address (a str), a ``progress`` that is not callable, and any
     argument of the wrong type.
 
@@ -163,6 +165,7 @@ def census(marker: str, max_vertices: int, max_degree: int, jobs: int = 1,
     """
     marker, max_vertices, max_degree = _bounds(marker, max_vertices, max_degree, MAX_VERTICES,
                                                "the census enumerates worlds up to that size")
+    largest_degree(max_vertices, max_degree)
     jobs = integer("jobs", jobs, 1, MAX_JOBS, " worker processes")
     shards = None if shards is None else path("shards", shards)
     scheduler = optional_text("scheduler", scheduler, "a Dask scheduler's address or 'local'")

@@ -27,30 +27,24 @@ from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import Any
 
-from topomark.arguments import (callback, flag, fraction, integer, keywords_checked, optional_text, path,
-                                text)
+from topomark.arguments import (callback, flag, fraction, integer, keywords_checked, largest_degree,
+                                optional_text, path, text)
 from topomark.exploration import policies_of
 from topomark.reference.cli.args import MAX_JOBS, SEED_DIGITS
-from topomark.reference.cli.options.worst_case import MAX_EXHAUSTIVE
 from topomark.reference.explorers.policies import Policies
 from topomark.reference.worstcase.exhaustive import Setup
+from topomark.reference.worstcase.limits import (MAX_EVALUATIONS, MAX_EXHAUSTIVE, MAX_SEARCH_PRODUCT,
+                                                  MAX_SEARCH_VERTICES)
 from topomark.reference.worstcase.result import rows
 from topomark.reference.worstcase.resumable import worst_case as _worst_case
 from topomark.reference.worstcase.search import AdversarialResult, adversarial_search as _adversarial_search
 from topomark.spec.world import MAX_DEGREE
 
-__all__ = ["worst_case", "adversarial_search", "AdversarialResult", "MAX_SEARCH_VERTICES", "MAX_SEARCH_WORK"]
+__all__ = ["worst_case", "adversarial_search", "AdversarialResult"]
 
 MAX_SEED = 10 ** SEED_DIGITS - 1
 """The largest seed, as ``--seed`` takes it (at most 18 digits)."""
 
-MAX_SEARCH_VERTICES = 2_000
-"""The largest ``n`` of :func:`adversarial_search`: one run of Algorithm 3.1 on a random world of 3,000
-vertices takes about a minute and 425 MB, and memory grows with n past it."""
-
-MAX_SEARCH_WORK = 4_000_000
-"""The largest ``evaluations × n`` of :func:`adversarial_search`: its first generation holds a quarter of the
-evaluations as worlds of n vertices at once (about 440 bytes a vertex), so this keeps it under about 450 MB."""
 
 
 @keywords_checked
@@ -66,14 +60,15 @@ def worst_case(algorithm: str = "basic", max_vertices: int = 5, max_degree: int 
     Raises :class:`~topomark.spec.errors.InvalidInput`, before any run, for an unknown algorithm, lighthouse
     or policy (``policies`` as for :func:`topomark.explore`), a lighthouse given to a kit algorithm,
     ``max_vertices`` outside 2 to 8 (the exhaustive search's sizes: past them use :func:`adversarial_search`),
-    ``max_degree`` < 1, ``jobs`` outside 1 to 256, ``sample`` not a number from 0 to 1, a seed of more than
+    ``max_degree`` < 1 or too large for the worlds of ``max_vertices`` vertices to fit in memory (at n = 7 and
+    8, at most 4; ``topomark worst-case --help`` gives the table), ``jobs`` outside 1 to 256, ``sample`` not a number from 0 to 1, a seed of more than
     18 digits, a ``shards`` that is not a path, and any argument of the wrong type (a bool or a str for an
     int, NaN); a misspelt keyword raises its subclass :class:`~topomark.spec.errors.InvalidKeyword`.
     """
     setup = _setup(algorithm, lighthouse, policies, sample, seed)
     max_vertices = integer("max_vertices", max_vertices, 2, MAX_EXHAUSTIVE,
                            " (the exhaustive search's sizes; adversarial_search looks past them)")
-    max_degree = integer("max_degree", max_degree, 1, MAX_DEGREE)
+    max_degree = largest_degree(max_vertices, integer("max_degree", max_degree, 1, MAX_DEGREE))
     jobs = integer("jobs", jobs, 1, MAX_JOBS, " worker processes")
     folder = None if shards is None else path("shards", shards)
     degree = min(max_degree, max_vertices - 1)
@@ -108,17 +103,17 @@ def adversarial_search(algorithm: str = "basic", n: int = 20, max_degree: int = 
     called after about every 1/20 of the budget.
 
     Raises :class:`~topomark.spec.errors.InvalidInput`, before any run, for an unknown algorithm, lighthouse,
-    policy, objective or family, ``n`` outside 3 to :data:`MAX_SEARCH_VERTICES`, ``max_degree`` outside 2 to
-    the largest degree a world can have, ``evaluations`` < 1 or ``evaluations × n`` past
-    :data:`MAX_SEARCH_WORK` (what the search holds in memory grows with both), a seed of more than 18 digits,
+    policy, objective or family, ``n`` outside 3 to 500, ``max_degree`` outside 2 to the largest degree a
+    world can have, ``evaluations`` outside 1 to 100,000 or ``evaluations × n`` past 2,000,000 (the search
+    holds a quarter of its runs' worlds at once: the bounds of ``topomark worst-case --search``), a seed of more than 18 digits,
     a ``progress`` that is not callable, and any argument of the wrong type; a misspelt keyword raises its
     subclass :class:`~topomark.spec.errors.InvalidKeyword`.
     """
     setup = _setup(algorithm, lighthouse, policies, 0.0, seed)
     n = integer("n", n, 3, MAX_SEARCH_VERTICES, " vertices")
-    evaluations = integer("evaluations", evaluations, 1, MAX_SEARCH_WORK // n,
-                          f" (evaluations x n at most {MAX_SEARCH_WORK:,}: the search holds a quarter of the "
-                          f"evaluations as worlds at once)")
+    evaluations = integer("evaluations", evaluations, 1, min(MAX_EVALUATIONS, MAX_SEARCH_PRODUCT // n),
+                          f" at n = {n} (evaluations x n at most {MAX_SEARCH_PRODUCT:,}: the search holds a quarter "
+                          f"of its runs' worlds at once)")
     return _adversarial_search(setup.algorithm, n, integer("max_degree", max_degree, 2, MAX_DEGREE),
                                text("objective", objective, "an objective's name"), evaluations, setup.seed,
                                setup.lighthouse, setup.policy(), optional_text("family", family, "a family's name"),
