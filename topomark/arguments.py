@@ -19,7 +19,7 @@ topomark.spec.errors.InvalidInput: max_vertices must be an integer from 2 to 8, 
 >>> fraction("sample", float("nan"))
 Traceback (most recent call last):
 ...
-topomark.spec.errors.InvalidInput: sample must be a number from 0 to 1, not nan
+topomark.spec.errors.InvalidInput: sample must be a number from 0 to 1, not float (nan)
 """
 
 from __future__ import annotations
