@@ -50,7 +50,7 @@ from __future__ import annotations
 
 from collections import deque
 from dataclasses import dataclass
-from typing import Any, Iterable, cast
+from typing import Any, Iterable, Iterator, cast
 
 from topomark.spec.errors import InvalidInput, Violation, clip
 from topomark.spec.world import World
@@ -61,9 +61,27 @@ from topomark.reference.replay.divergence import Diverged
 from topomark.reference.replay.rerun_layer import RerunLayer, rerun_spec
 from topomark.reference.replay.robot_layer import RobotLayer
 from topomark.reference.trace.header import header_family, header_kit, header_lighthouse
-from topomark.reference.trace.reader import EVENTS, EVENTS_2, load_trace, parse_trace
+from topomark.reference.trace.reader import EVENTS, EVENTS_2, _records, load_trace, parse_trace
+from topomark.reference.trace.sink import trace_line
 
-__all__ = ["ReplayResult", "replay", "load_trace", "parse_trace", "EVENTS", "EVENTS_2"]
+__all__ = ["ReplayResult", "replay", "load_trace", "parse_trace", "parse_records", "EVENTS", "EVENTS_2"]
+
+
+def parse_records(records: Iterable[Any], source: str = "<records>") -> Iterator[dict[str, Any]]:
+    """``records`` (trace records as objects: an ``Outcome.trace``, or a generator) checked as a trace file's
+    lines are (:func:`load_trace`): each is written as its line and read back, one at a time, so a stream of
+    records is never held whole and the first bad one is refused when reached.  A record that cannot be written
+    as JSON (a set, a cycle, nesting past Python's limit) is :class:`InvalidInput` naming its line."""
+    def lines() -> Iterator[tuple[int, str]]:
+        for k, rec in enumerate(records, 1):
+            try:
+                line = trace_line(rec)
+            except (TypeError, ValueError, RecursionError) as exc:
+                raise InvalidInput(f"{source} line {k}: not a JSON object ({type(exc).__name__}: "
+                                   f"{clip(str(exc), 80)})") from None
+            yield k, line[:-1]
+
+    return _records(lines(), source)
 
 
 @dataclass(frozen=True, repr=False)
