@@ -158,6 +158,7 @@ class RerunLayer:
         self.kit = spec.kit_for(world.n, world.m, self.options)
         self.runs = [_Rerun(world, s, self.policies, self.given) for s in alternatives(spec)
                      if s.kit_for(world.n, world.m, s.parse_options(self.given)) == self.kit]
+        self.dropped: list[AlgorithmSpec] = []  # the alternatives the trace has left, in the order it left them
 
     @property
     def followed(self) -> AlgorithmSpec:
@@ -182,16 +183,27 @@ class RerunLayer:
 
     def record(self, rec: dict[str, Any], where: str) -> None:
         """The trace's next record must be a live re-run's next (its end: the re-run's verdict, below)."""
-        first: Diverged | None = None
+        first: tuple[Diverged, AlgorithmSpec] | None = None
         for run in list(self.runs):
             try:
                 self._compare(run, rec, where)
             except Diverged as exc:
-                if len(self.runs) == 1:
-                    raise (first or exc) from None  # the divergence of the explorer followed longest
-                first = first or exc
+                if len(self.runs) == 1:  # the explorer followed longest (on a tie, the named one)
+                    raise self._neither(*(first or (exc, run.spec))) from None
+                first = first or (exc, run.spec)
                 run.close()
                 self.runs.remove(run)
+                self.dropped.append(run.spec)
+
+    def _neither(self, exc: Diverged, reported: AlgorithmSpec) -> Diverged:
+        """The divergence, saying which other explorers the trace left too (the listing or the variant)."""
+        others = [s for s in (*self.dropped, *(r.spec for r in self.runs)) if s.name != reported.name]
+        if not others:
+            return exc
+        v = exc.violation
+        left = ", ".join(f"{s.name} ({s.variant_json()['follows']})" for s in others)
+        return Diverged(Violation(v.check, v.where, v.expected, v.found, f"{v.detail}; the trace follows neither "
+                                  f"this explorer nor {left}, registered beside it"))
 
     def _compare(self, run: _Rerun, rec: dict[str, Any], where: str) -> None:
         want, name = run.next(), run.spec.name

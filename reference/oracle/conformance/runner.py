@@ -140,8 +140,8 @@ class AlgorithmRow:
     def message(self) -> str:
         if self.reason == "bound":
             return (f"the map is right, but it cost {self.result.cost} edge traversals, more than "
-                    f"{binding_bound(self.case)}, {bound_words(self.case)} ({self.algorithm}, n = {self.case['n']}, "
-                    f"m = {self.case['m']}): not {self.algorithm}")
+                    f"{binding_bound(self.case)}, a bound of the thesis's listing — {bound_words(self.case)} — "
+                    f"({self.algorithm}, n = {self.case['n']}, m = {self.case['m']}): not {self.algorithm}")
         if self.reason == "difference":
             return cast(dict, self.difference)["message"]
         return self.result.message
