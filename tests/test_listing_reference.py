@@ -219,3 +219,11 @@ def test_each_option_s_help_names_every_algorithm_taking_it(capsys):
     for name in ("thread-circumference (default n)", "thread-circumference-listing (default n)",
                  "thread-explore (default 2)", "thread-fallback (default 2)", "1,000,000"):
         assert name in help_, help_
+
+
+def test_the_docs_list_every_entry_and_what_it_changes():
+    text = (Path(__file__).resolve().parents[1] / "docs" / "bounds.md").read_text(encoding="utf-8")
+    rows = {line.split("|")[1].strip().strip("`"): line for line in text.splitlines() if line.startswith("| `")}
+    assert set(REGISTRY) <= set(rows)
+    for spec in REGISTRY.values():
+        assert ("| none found:" in rows[spec.name]) == (spec.changes is None), spec.name

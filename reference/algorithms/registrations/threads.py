@@ -83,7 +83,7 @@ from topomark.reference.explorers.threads_explore import (CircumferenceThreadExp
 from topomark.reference.explorers.threads_fallback import FallbackThreadExplorer
 from topomark.reference.explorers.threads_knots import KnotThreadExplorer
 from topomark.reference.algorithms.bounds import upper_bound
-from topomark.reference.algorithms.registrations.movable import directional_bound
+from topomark.reference.algorithms.registrations.movable import SEARCH, directional_bound
 
 __all__ = ["SPECS", "circumference_bound", "knots_bound", "explore_bound", "fallback_bound", "directional_bound"]
 
@@ -135,7 +135,7 @@ _OURS = "ours: our explorer's exact worst case behind O(mn) (Table 6.3)"
 SPECS = (
     AlgorithmSpec(name="thread-carried", thesis="§6.3.1, l = ε thread carried and retied",
                   kit=Kit(thread=0), bound=_O_MN, markers="no marker; a thread of length ε", options=("policy edge",),
-                  bound_fn=directional_bound, explorer=CarriedThreadExplorer,
+                  bound_fn=directional_bound, explorer=CarriedThreadExplorer, changes=SEARCH,
                   bound_formula=f"3(n − 1)² + (m − n + 1)(3n − 1), {_OURS} (§6.3.1)", **_ROBOT),
     *(AlgorithmSpec(name=name, thesis=f"§6.3.2, Algorithm 6.7{what} (l = c(G), given n: see the docstring)",
                     kit=Kit(thread=0), bound=_O_MN, markers="no marker; a thread of n edges (--thread-length: L)",
@@ -152,12 +152,15 @@ SPECS = (
                   kit=Kit(thread=0), bound="O(m) (Table 6.3); bound_fn: ours, exact worst case",
                   markers="no marker; a thread of m + 1 edges", options=(), bound_fn=knots_bound,
                   bound_formula="4m − 2n + 2, ours: the exact worst case behind O(m) (Table 6.3, §6.3.2)",
-                  explorer=KnotThreadExplorer, kit_fn=lambda n, m, opts: Kit(thread=m + 1), **_ROBOT),
+                  explorer=KnotThreadExplorer, kit_fn=lambda n, m, opts: Kit(thread=m + 1),
+                  changes="the thesis gives no listing (Figure 6.20, §6.3.2): at a known v_k' with one unexplored exit "
+                          "that exit is e', with no back-link validation", **_ROBOT),
     AlgorithmSpec(name="thread-explore", thesis="§6.3.3, Algorithm 6.8 (l < c(G), explore-explore)",
                   kit=Kit(thread=2), bound=_O_MN, markers="no marker; a thread of --thread-length edges",
                   options=("thread-length L (default 2, Figure 6.21)",), bound_fn=explore_bound,
                   bound_formula=f"2m + 2nm + n(n − 1), {_OURS} (§6.3.3, Algorithm 6.8)",
-                  explorer=ThreadExplorer, parameters=(Parameter("thread-length", LENGTH.help, default=2, minimum=1, maximum=MAX_THREAD),),
+                  explorer=ThreadExplorer, changes=_SKIPS.replace("Algorithm 6.7 lines 11–12", "Algorithm 6.8 line 7"),
+                  parameters=(Parameter("thread-length", LENGTH.help, default=2, minimum=1, maximum=MAX_THREAD),),
                   kit_fn=lambda n, m, opts: Kit(thread=opts["thread-length"]), **_ROBOT),
     AlgorithmSpec(name="thread-fallback",
                   thesis="§6.3.3, phase-I/phase-II fallback (l < c(G), Algorithm 6.7 then Algorithm 3.1)",
@@ -168,7 +171,7 @@ SPECS = (
                   bound_fn=fallback_bound,
                   bound_formula="2(n − 1) + (m − n + 1)(n + 2) + (3.1) + (3.2), ours: Algorithm 6.7's bound for "
                                 "phase I and Algorithm 3.1's (§3.5.2) for phase II, behind O(m²n) (§6.3.3)",
-                  explorer=FallbackThreadExplorer,
+                  explorer=FallbackThreadExplorer, changes=f"phase I is thread-circumference's steps: {_SKIPS}",
                   parameters=(Parameter("thread-length", LENGTH.help, default=2, minimum=1, maximum=MAX_THREAD),),
                   kit_fn=lambda n, m, opts: Kit(thread=opts["thread-length"]), **_ROBOT),
 )

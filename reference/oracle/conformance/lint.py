@@ -139,12 +139,7 @@ def _lint_algorithm_case(root: Path, algorithm: str, case: dict, validate, liste
     if case["bound"] != spec.bound_for(world.n, world.m):
         bad(root, f"{where}: manifest bound {case['bound']} but {algorithm}'s bound here is "
                   f"{spec.bound_for(world.n, world.m)}")
-    if "bound_source" in case and case["bound_source"] != spec_bound_source(spec):
-        bad(root, f"{where}: manifest bound_source {case['bound_source']} but {algorithm}'s bound is "
-                  f"{spec.bound_whose or 'none'}")
-    if "variant" in case and case["variant"] != spec.variant_json():
-        bad(root, f"{where}: manifest variant {case['variant']} but {algorithm}'s run is made with "
-                  f"{spec.variant_json()}")
+    _check_provenance(root, where, case, spec)
     ref = case["reference"]
     if ref["map"] is not None:
         map_ = _load_checked(root, ref["map"], validate, listed, where)
@@ -153,6 +148,19 @@ def _lint_algorithm_case(root: Path, algorithm: str, case: dict, validate, liste
     _replayed(root, world, ref["trace"], ref["cost"], where, listed, replay_traces)
     if replay_traces:
         _check_ends(root, ref["trace"], case, kit, where, algorithm)
+
+
+def _check_provenance(root: Path, where: str, case: dict, spec: Any) -> None:
+    """Whose the bound is (``bound_source.source``) and which explorer made the run (``variant.follows``), where
+    the suite records them, are the registry's (their prose may differ between versions)."""
+    source, want = case.get("bound_source"), spec_bound_source(spec)
+    if "bound_source" in case and (source and source["source"]) != (want and want["source"]):
+        bad(root, f"{where}: manifest bound_source {source and source['source']!r} but {spec.name}'s bound is "
+                  f"{spec.bound_whose or 'none'}")
+    variant = case.get("variant")
+    if variant is not None and variant["follows"] != spec.variant_json()["follows"]:
+        bad(root, f"{where}: manifest variant follows {variant['follows']} but {spec.name}'s run is made with "
+                  f"{spec.variant_json()['follows']}")
 
 
 def _check_ends(root: Path, rel: str, case: dict, kit: dict, where: str, case_algorithm: str) -> None:
