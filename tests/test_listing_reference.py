@@ -227,3 +227,18 @@ def test_the_docs_list_every_entry_and_what_it_changes():
     assert set(REGISTRY) <= set(rows)
     for spec in REGISTRY.values():
         assert ("| none found:" in rows[spec.name]) == (spec.changes is None), spec.name
+
+
+def test_lint_refuses_a_case_that_misnames_whose_its_bound_is(suite, tmp_path):
+    import shutil
+
+    from topomark.reference.oracle.conformance import lint
+    from topomark.spec.errors import InvalidInput
+
+    copied = tmp_path / "suite"
+    shutil.copytree(suite, copied)
+    manifest = json.loads((copied / "manifest.json").read_text())
+    manifest["suites"][0]["cases"][0]["bound_source"]["source"] = "thesis"  # the thesis states no such bound
+    (copied / "manifest.json").write_text(json.dumps(manifest))
+    with pytest.raises(InvalidInput, match="bound_source 'thesis' but thread-circumference's bound is topomark's"):
+        lint(copied, replay_traces=False)
