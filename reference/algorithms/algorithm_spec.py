@@ -9,14 +9,10 @@ options it takes and the checks that apply.  A cost bound is either *exact*
 its end, the ``cost-bound`` check, which the entry then names) or
 *asymptotic* only (an O(·) has no constant: ``bound_bench`` names the bench
 experiment that measures it, and nothing claims it is checked per run).
-Every exact bound says **whose it is and what it bounds** (``bound_source``, :data:`BOUND_SOURCES`): one the
-thesis states (``thesis``: Algorithm 3.1's (3.1)+(3.2), §3.5.2), one topomark derives for the thesis's listing
-as written (``listing``: the derivation in ``docs/bounds.md``, checked against a literal run of the listing on
-every small world of a family), or topomark's bound for its own variant of the listing (``variant``).  Only
-the first two bind an implementation of the thesis's algorithm (``bound_binds``: a conformance client above
-one fails); above a ``variant`` bound a client only differs from topomark's variant.  ``changes`` says what
-topomark's explorer changes relative to the listing (None: it follows the listing), and ``listing_entry`` names
-the registered entry that follows the listing literally, where there is one (``thread-circumference-listing``).
+Every exact bound says **whose it is** (``bound_source``, :data:`BOUND_SOURCES`, ``docs/bounds.md``): the
+thesis's, topomark's for the thesis's listing as written, or topomark's for its own variant; only the first two
+bind a conformance client (``bound_binds``).  ``changes`` says what the explorer changes relative to the listing
+(None: it follows it), ``listing_entry`` the entry that runs the listing literally, where there is one.
 Two shapes of algorithm exist:
 
 * **lighthouse algorithms** (``uses_lighthouse=True``: Algorithm 3.1 and the
@@ -215,8 +211,7 @@ class AlgorithmSpec:
             raise ValueError(f"algorithm {self.name}: edge_policy {self.edge_policy!r} is a registered edge choice "
                              f"({', '.join(EDGE_CHOICES)}) of an algorithm that declares 'policy edge' in its options")
         if self.bound_source not in BOUND_SOURCES:
-            raise ValueError(f"algorithm {self.name}: bound_source {self.bound_source!r} is one of "
-                             f"{', '.join(BOUND_SOURCES)}")
+            raise ValueError(f"algorithm {self.name}: bound_source {self.bound_source!r} is not one of {BOUND_SOURCES}")
         if self.bound_fn is not None and "cost-bound" not in self.checks:  # every exact bound is checked
             object.__setattr__(self, "checks", (*self.checks, "cost-bound"))
 
@@ -255,8 +250,7 @@ class AlgorithmSpec:
         return self.bound_fn is not None
 
     @property
-    def bound_whose(self) -> str | None:
-        """Whose the exact bound is and what it bounds (:data:`BOUND_SOURCES`), or None without one."""
+    def bound_whose(self) -> str | None:  # whose the exact bound is, what it bounds (BOUND_SOURCES); None: none
         return None if self.bound_fn is None else BOUND_SOURCES[self.bound_source]
 
     @property
@@ -267,8 +261,7 @@ class AlgorithmSpec:
 
     @property
     def follows_listing(self) -> bool:
-        """Whether the explorer follows the thesis's listing (nothing in :attr:`changes`)."""
-        return self.changes is None
+        return self.changes is None  # the explorer follows the thesis's listing
 
     def variant_json(self) -> dict[str, Any]:
         """Which explorer a run is made with: the thesis's listing or topomark's variant of it, and how it
