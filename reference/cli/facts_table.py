@@ -11,7 +11,7 @@ TABLE: dict[str, Any] = {
                    'case-5-v2', 'case-0', 'case-5-edge', 'case-dv-sum', 'extension-1', 'extension-2',
                    'extension-naive', 'case-1b-edgeinfo', 'case-2-edgeinfo', 'case-1a-edgeinfo', 'case-4-edgeinfo',
                    'case-4-mn-edgeinfo', 'case-5-directional', 'thread-carried', 'thread-circumference',
-                   'thread-knots', 'thread-explore', 'thread-fallback'),
+                   'thread-circumference-listing', 'thread-knots', 'thread-explore', 'thread-fallback'),
     'parameters': (('signatures',
                     'global: validate each loop closing against every known vertex (§5.2.2); local: accept every '
                     "degree-matching one (the thesis's comparison)",
@@ -49,14 +49,21 @@ TABLE: dict[str, Any] = {
                     1000000, 'single-leaf'),
                    ('markers',
                     'how many markers the robot carries (default: what its case is assured, from n and m)', None,
-                    'case-3a, case-3b, case-3b-saving, case-1a, case-1b, case-2, case-4, case-4-mn, case-dv-sum, '
-                    'extension-1, extension-2, extension-naive, case-1b-edgeinfo, case-2-edgeinfo, '
-                    'case-1a-edgeinfo, case-4-edgeinfo, case-4-mn-edgeinfo'),
-                   ('thread-length', "the thread's length L in edges (an integer >= 1); the robot knows it", 'n',
-                    'thread-circumference')),
+                    'case-3a, case-3b, case-3b-saving, case-1a, case-1b, case-2, case-4, case-4-mn, case-5-v1, '
+                    'case-5-v2, case-5-edge, case-dv-sum, extension-1, extension-2, extension-naive, '
+                    'case-1b-edgeinfo, case-2-edgeinfo, case-1a-edgeinfo, case-4-edgeinfo, case-4-mn-edgeinfo, '
+                    'case-5-directional'),
+                   ('thread-length',
+                    "the thread's length L in edges (an integer 1..1,000,000, the cap of a marker count); the "
+                    'robot knows it',
+                    None,
+                    'thread-circumference (default n), thread-circumference-listing (default n), thread-explore '
+                    '(default 2), thread-fallback (default 2)')),
     'lighthouses': ('directional-vertex', 'directional-edge', 'vertex-and-edge', 'three-undirected-edge',
                     'three-undirected-vertex', 'undirected-vertex', 'undirected-edge', 'local-pair',
                     'local-degree-list', 'thread'),
+    'max_marker_count': 1000000,
+    'max_thread': 1000000,
     'max_walk_limit': 1000000,
     'max_neighbourhood': 8,
     'max_threshold': 1000001,
