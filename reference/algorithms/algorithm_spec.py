@@ -1,10 +1,9 @@
 """What the registry records of one algorithm: :class:`AlgorithmSpec`, its :class:`Parameter` options, and the
 checks (:data:`CHECKS`) the checker may apply to it.
 
-An algorithm of the thesis is registered once, with its section and listing,
-the marker kit it needs (:mod:`topomark.spec.kit`), its cost bound and marker
-bound *as the thesis states them* (``None`` where it states none), the
-options it takes and the checks that apply.  A cost bound is either *exact*
+An algorithm of the thesis is registered once, with its section and listing, the marker kit it needs
+(:mod:`topomark.spec.kit`), its cost bound and marker bound *as the thesis states them* (``None`` where it states
+none), the options it takes and the checks that apply.  A cost bound is either *exact*
 (``bound_fn``, named by ``bound_formula``: every checked run is held to it at
 its end, the ``cost-bound`` check, which the entry then names) or
 *asymptotic* only (an O(·) has no constant: ``bound_bench`` names the bench
