@@ -127,7 +127,7 @@ def closed_pipe_safe() -> Iterator[None]:
     saved = sys.stdout, sys.stderr
     err = _safe(sys.stderr, 2)
     out = _safe(sys.stdout, 1, on_error=lambda why: print(f"topomark: output lost, stdout failed: {why}", file=err))
-    sys.stdout, sys.stderr = out, err  # type: ignore[assignment]
+    sys.stdout, sys.stderr = out, err
     try:
         yield
     finally:
