@@ -66,6 +66,7 @@ SOURCES: dict[str, tuple[str, Callable[[Any], Any]]] = {  # fact: (the module de
     "marker_classes": ("topomark.spec.markerclass", lambda m: tuple(m.MARKER_CLASSES)),
     "enumerate_max_vertices": (_ENUMERATE, lambda m: m.MAX_VERTICES),
     "graphs_max_vertices": ("topomark.proofs.graphs", lambda m: m.MAX_VERTICES),
+    "draw_max_vertices": ("topomark.proofs.drawing", lambda m: m.MAX_DRAW_VERTICES),
     "search_max_vertices": ("topomark.proofs.z3search", lambda m: m.MAX_VERTICES),
     "connect_timeout": (_CENSUS, lambda m: m.CONNECT_TIMEOUT),
     "worker_wait": (_CENSUS, lambda m: m.WORKER_WAIT),

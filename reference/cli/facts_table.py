@@ -98,6 +98,7 @@ TABLE: dict[str, Any] = {
                        'three-undirected-vertex', 'undirected-edge', 'directional-edge', 'vertex-and-edge'),
     'enumerate_max_vertices': 10,
     'graphs_max_vertices': 12,
+    'draw_max_vertices': 1000,
     'search_max_vertices': 8,
     'connect_timeout': 5,
     'worker_wait': 60,
