@@ -119,7 +119,7 @@ def _summarise(args: argparse.Namespace) -> int:
         return 0 if held else 1
     out = Path(args.out)
     text, held = summarise_runs(dirs, out)
-    guarded(out, lambda: (out / "worst-case.md").write_text(text))
+    guarded(out, lambda: (out / "worst-case.md").write_text(text, encoding="utf-8"))
     print(f"wrote {out / 'worst-case.md'}")
     return 0 if held else 1
 

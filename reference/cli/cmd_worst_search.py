@@ -104,12 +104,13 @@ class _Progress:
 
 def _write(out: Path, data: dict[str, Any]) -> None:
     out.mkdir(parents=True, exist_ok=True)
-    (out / "worst-case-search.json").write_text(json.dumps(data, indent=1, sort_keys=True) + "\n")
+    (out / "worst-case-search.json").write_text(json.dumps(data, indent=1, sort_keys=True) + "\n", encoding="utf-8")
     for r in data["per_n"]:
         for kind in ("search", "random"):
             best = r[kind].get("best")
             if best and best.get("world"):
-                (out / f"{kind}-best-n{r['n']}.json").write_text(json.dumps(best["world"], indent=1) + "\n")
+                (out / f"{kind}-best-n{r['n']}.json").write_text(json.dumps(best["world"], indent=1) + "\n",
+                                                                  encoding="utf-8")
 
 
 def _lines(data: dict[str, Any]) -> str:

@@ -150,7 +150,7 @@ def write_models(explorer, directory: str | Path) -> list[Path]:
     paths = []
     for k, S in enumerate(explorer.completed_models, 1):
         path = out / f"model-{k:04d}.json"
-        path.write_text(dumps_world(S.to_world(start=(0, 0))))
+        path.write_text(dumps_world(S.to_world(start=(0, 0))), encoding="utf-8")
         paths.append(path)
     return paths
 
