@@ -207,7 +207,7 @@ def test_thread_lengths_are_capped_like_marker_counts(capsys):
     assert "at most 1,000,000" in capsys.readouterr().err
     assert main(["run-external", "cycle:n=3", "--kit", json.dumps({"thread": MAX_THREAD + 1}), "--",
                  sys.executable, str(CLIENT)]) == 2
-    assert "a thread is at most 1000000 edges" in capsys.readouterr().err
+    assert "a thread is at most 1,000,000 edges" in capsys.readouterr().err
 
 
 def test_each_option_s_help_names_every_algorithm_taking_it(capsys):

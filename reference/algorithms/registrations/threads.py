@@ -74,6 +74,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from topomark.spec.kit import MAX_THREAD
 from topomark.spec.kit import Kit
 
 from topomark.reference.algorithms.algorithm_spec import STEPWISE_MAP_CHECKS, AlgorithmSpec, Parameter
@@ -88,9 +89,6 @@ from topomark.reference.algorithms.registrations.movable import SEARCH, directio
 __all__ = ["SPECS", "circumference_bound", "knots_bound", "explore_bound", "fallback_bound", "directional_bound"]
 
 
-MAX_THREAD = 10 ** 6
-"""The longest thread an option may ask for, in edges: the cap of a marker count (``MAX_COUNT`` of
-:mod:`topomark.reference.oracle.marker_messages`, whose ``MAX_THREAD`` caps a ``--kit`` thread the same way)."""
 
 
 def circumference_bound(n: int, m: int) -> int:
