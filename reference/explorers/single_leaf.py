@@ -22,7 +22,7 @@ the search never ends.
 Examples
 --------
 >>> LEAF.certain, LEAF.kit.describe()
-(True, 'no markers')
+(True, 'no marker')
 """
 
 from __future__ import annotations
