@@ -11,6 +11,8 @@ worlds, and a killed run resumes:
 2. run every map task without a ``done`` file, or whose files fail their
    checks (:func:`~topomark.proofs.census_map.run_map`;
    :mod:`~topomark.proofs.census_integrity` says what is checked);
+   (every file under a shard file's name must be a regular file: a FIFO or a
+   device is exit 2 naming it, checked once before anything is read);
 3. reduce every shard without a ``reduce`` file, or whose file fails its
    checks (:func:`reduce_shard`);
 4. merge the shard summaries, rebuild the smallest counterexample from its
@@ -33,6 +35,7 @@ from __future__ import annotations
 
 import json
 import os
+import stat
 import time
 from pathlib import Path
 from typing import Any, Callable
@@ -60,6 +63,19 @@ def default_shards(estimated_worlds: int) -> int:
     while shards < need and shards < 4096:
         shards *= 2
     return shards
+
+
+def _regular_only(root: Path) -> None:
+    """Exit 2 naming the first entry of the shard directory under a census file's name that is not a regular
+    file (a FIFO would block the reader, a link to a device would never end): shard files are regular files."""
+    for entry in sorted(root.iterdir()):
+        if entry.name == "manifest.json" or entry.name.startswith(("map-", "reduce-")):
+            try:
+                mode = os.stat(entry).st_mode
+            except OSError as e:
+                raise InvalidInput(f"{entry}: cannot be read ({e.strerror or e})") from None
+            if not stat.S_ISREG(mode):
+                raise InvalidInput(f"{entry}: not a regular file; a census reads only regular shard files: remove it")
 
 
 def _writable(root: Path) -> None:
@@ -110,6 +126,7 @@ def _plan(params: dict[str, Any], task_worlds: int) -> list:
 def prepare(root: Path, params: dict[str, Any], task_worlds: int, shards: int | None) -> dict[str, Any]:
     """The manifest of ``root``: read and verified (resume) if present, else planned and written."""
     _writable(root)
+    _regular_only(root)
     path = root / "manifest.json"
     if path.exists():
         return _read_manifest(path, params)

@@ -232,7 +232,7 @@ def write_json(path: Path, data: Any) -> None:
 
 
 def read_json(path: Path) -> Any:
-    return json.loads(path.read_text())
+    return json.loads(path.read_text(encoding="utf-8"))
 
 
 def read_shard(root: Path, slices: list[tuple[int, int, int]]) -> np.ndarray:

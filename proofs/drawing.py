@@ -33,12 +33,19 @@ from xml.sax.saxutils import escape
 
 import networkx as nx
 
+from topomark.spec.errors import InvalidInput
 from topomark.spec.marker import EdgeMarker
 from topomark.spec.world import World
 
 from topomark.proofs.drawing_png import save_drawing
 
-__all__ = ["layout", "world_svg", "pair_svg", "save_pair", "save_world", "drawing_size", "clockwise_ok"]
+__all__ = ["layout", "world_svg", "pair_svg", "save_pair", "save_world", "drawing_size", "clockwise_ok",
+           "MAX_DRAW_VERTICES", "check_draw_size"]
+
+MAX_DRAW_VERTICES = 1000
+"""The most vertices a world may have to be drawn.  Laying out and checking a drawing grows faster than
+linearly with its size: a 32x32 lattice (1,024 vertices) takes about 8 s and 70 MB, a 45x45 one 25 s, and a
+100x100 one over 2 minutes and 1.5 GB; and a drawing of more than a thousand vertices is no longer legible."""
 
 SIZE = 320          # drawing area of one world (px)
 MARGIN = 40
@@ -187,7 +194,11 @@ def layout(world: World, size: float = SIZE) -> tuple[dict[str, tuple[float, flo
     if world.n == 2:
         a, b = world.vertices
         return {a: (MARGIN, size / 2), b: (size - MARGIN, size / 2)}, True
-    raw = nx.spring_layout(_graph(world), seed=7)
+    try:
+        raw = nx.spring_layout(_graph(world), seed=7)
+    except ModuleNotFoundError as exc:  # networkx lays out 500 vertices or more with scipy, an optional library
+        raise InvalidInput(f"world --draw: a world of {world.n:,} vertices that is not planar is laid out with "
+                           f"networkx's sparse spring layout, which needs {exc.name} (not installed)") from exc
     cand = _fit({v: (float(x), float(y)) for v, (x, y) in raw.items()}, size)
     return cand, clockwise_ok(world, cand)
 
@@ -346,5 +357,21 @@ def drawing_size(world: World) -> float:
 
 
 def save_world(world: World, path: str | Path, title: str = "", note: str = "") -> Path:
-    """Write :func:`world_svg` of ``world`` (sized by :func:`drawing_size`) to ``path``, ``.svg`` or ``.png``."""
+    """Write :func:`world_svg` of ``world`` (sized by :func:`drawing_size`) to ``path``, ``.svg`` or ``.png``;
+    a world above :data:`MAX_DRAW_VERTICES` vertices is refused (:func:`check_draw_size`)."""
+    check_draw_size(world)
     return save_drawing(world_svg(world, title, drawing_size(world), note), path)
+
+
+def check_draw_size(world: World) -> None:
+    """Raise InvalidInput if ``world`` has more than :data:`MAX_DRAW_VERTICES` vertices to draw.
+
+    >>> from topomark.reference.worlds.generators import cycle
+    >>> check_draw_size(cycle(MAX_DRAW_VERTICES + 1))
+    Traceback (most recent call last):
+    ...
+    topomark.spec.errors.InvalidInput: world --draw: the world has 1,001 vertices; at most 1,000 are drawn
+    """
+    if world.n > MAX_DRAW_VERTICES:
+        raise InvalidInput(f"world --draw: the world has {world.n:,} vertices; at most {MAX_DRAW_VERTICES:,} "
+                           "are drawn")

@@ -58,7 +58,7 @@ def save_drawing(svg: str, path: str | Path) -> Path:
     path = Path(path)
     plt = check_drawable(path)
     if plt is None:
-        path.write_text(svg)
+        path.write_text(svg, encoding="utf-8")
     else:
         _render(plt, svg, path)
     return path

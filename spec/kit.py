@@ -58,7 +58,13 @@ from typing import Any
 
 from topomark.spec.errors import InvalidInput, clip
 
-__all__ = ["Kit", "MarkerOp", "ThreadOp", "THREAD_OPS"]
+__all__ = ["Kit", "MarkerOp", "ThreadOp", "THREAD_OPS", "MAX_COUNT", "MAX_THREAD"]
+
+MAX_COUNT = 10 ** 6
+"""The most markers of one kind a kit given from outside may hold (``--kit``, a protocol ``hello``), and the most
+markers one protocol operation or snapshot mark may state (``spec/protocol.md``)."""
+MAX_THREAD = MAX_COUNT
+"""The longest thread, in edges, a kit given from outside may hold, and a thread option may ask for: the same cap."""
 
 
 @dataclass(frozen=True)
@@ -91,6 +97,16 @@ class Kit:
         if self.movable and self.either:
             raise InvalidInput("kit: vertex-or-edge markers cannot be movable (no thesis algorithm picks a pooled "
                                "marker up; §2.3.1's movable marker is a single one)")
+
+    def cap_refusal(self) -> str | None:
+        """Why this kit is past the caps of a kit given from outside (:data:`MAX_COUNT`, :data:`MAX_THREAD`), or
+        None."""
+        for name in ("vertex", "edge", "either"):
+            if getattr(self, name) > MAX_COUNT:
+                return f"{name} markers: at most {MAX_COUNT:,}, got {getattr(self, name):,}"
+        if self.thread is not None and self.thread > MAX_THREAD:
+            return f"a thread is at most {MAX_THREAD:,} edges long (the cap of a marker count), got {self.thread:,}"
+        return None
 
     def count(self, kind: str) -> int:
         """How many markers of ``kind`` (``"vertex"`` or ``"edge"``) the kit holds, its pool (``either``) apart."""

@@ -80,7 +80,7 @@ parsing 256 MiB of JSON into Python objects needs a few GB, while the general
 
 def schema() -> dict[str, Any]:
     """The published JSON Schema of the world format."""
-    return cast(dict[str, Any], json.loads(resources.files(__package__).joinpath("world.schema.json").read_text()))
+    return cast(dict[str, Any], json.loads(resources.files(__package__).joinpath("world.schema.json").read_text(encoding="utf-8")))
 
 
 def _expect(cond: bool, message: str) -> None:

@@ -107,8 +107,8 @@ def test_explore_takes_policies_options_and_a_trace_file(tmp_path):
     (lambda: topomark.explore("cycle:n=4", policies={"colour": "red"}), "unknown policy kind 'colour'"),
     (lambda: topomark.explore("cycle:n=4", algorithm="dijkstra"), "unknown algorithm 'dijkstra'"),
     (lambda: topomark.explore(42), "not int"),
-    (lambda: topomark.census("none", max_vertices=99, max_degree=3), "max_vertices must be 2 to"),
-    (lambda: topomark.census("none", max_vertices=3, max_degree=2, jobs=0), "jobs must be 1 to"),
+    (lambda: topomark.census("none", max_vertices=99, max_degree=3), "max_vertices must be an integer from 2 to 10"),
+    (lambda: topomark.census("none", max_vertices=3, max_degree=2, jobs=0), "jobs must be an integer from 1 to 256"),
     (lambda: topomark.search("pebbles", max_vertices=3, max_degree=2), "pebbles"),
     (lambda: topomark.distinguish("wheel-a", "wheel-b"), "has no start"),
 ])

@@ -22,7 +22,7 @@ def test_every_exact_bound_is_checked_and_every_asymptotic_one_says_it_is_not(na
     listed = spec.to_json()
     if spec.bound_fn is not None:
         assert "cost-bound" in spec.checks and listed["bound_checked"] is True and spec.bound_formula
-        assert listed["bound_note"].startswith(f"exact: {spec.bound_formula}; checked at the end of every")
+        assert listed["bound_note"].startswith(f"exact: {spec.bound_formula}; {spec.bound_whose}; checked at the end of every")
     else:
         assert "cost-bound" not in spec.checks and listed["bound_checked"] is False
         if spec.bound:  # asymptotic: never claimed as checked, and measured by an experiment that exists

@@ -148,3 +148,14 @@ def test_a_drive_trace_of_any_lighthouse_replays(tmp_path, name, capsys):
     assert '"format":"topomark/trace@2"' in (tmp_path / "t.jsonl").read_text().splitlines()[0]
     assert main(["replay", str(tmp_path / "w.json"), str(tmp_path / "t.jsonl")]) == 0
     assert "VERIFIED" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("kit, words", [
+    ("{'thread': 1000001}", "a thread is at most 1,000,000 edges long"),
+    ("{'directional-vertex': 1, 'directional-edge': 1000001}", "edge markers: at most 1,000,000"),
+])
+def test_a_providers_kit_past_the_caps_is_refused_as_a_kit_given_on_the_command_line_is(tmp_path, kit, words):
+    body = ("send({'type': 'hello', 'protocol': 'topomark/protocol@2', 'role': 'world', "
+            f"'kit': {kit}, 'signature': '[2,A,A]'}})\ntime.sleep(5)\n")
+    result = drive(script(tmp_path, body), message=2, wall=20)
+    assert (result.verdict, result.reason) == ("fail", "garbage") and words in result.message, result.message

@@ -260,7 +260,8 @@ def test_a_declared_policy_is_accepted_and_recorded(capsys, algorithm, policy):
 
 def test_the_declared_policy_kinds_are_the_ones_each_explorer_consults():
     """Every registered algorithm declares exactly the policy kinds its explorer asks for on a small world
-    (model-tree, whose model search grows fast with cycles, on a 4-vertex chain)."""
+    (model-tree, whose model search grows fast with cycles, on a 4-vertex chain; an algorithm for a class of worlds
+    on the first of the lattice, a chain and a world with one leaf that it accepts)."""
     from topomark.reference.algorithms.registry import REGISTRY
     from topomark.reference.explorers.policies import Policies
     from topomark.reference.run.explore import explore
@@ -286,11 +287,13 @@ def test_the_declared_policy_kinds_are_the_ones_each_explorer_consults():
     def world_for(spec):  # the lattice, unless the algorithm is for a class of worlds it is not in (a tree walk)
         if spec.name == "model-tree":
             return resolve_world("chain:n=4")
-        try:
-            check_run(resolve_world("lattice:rows=3,cols=3"), spec)
-        except InvalidInput:
-            return resolve_world("chain:n=6")
-        return resolve_world("lattice:rows=3,cols=3")
+        for text in ("lattice:rows=3,cols=3", "chain:n=6"):  # then a world with one leaf (single-leaf, §5.3)
+            try:
+                check_run(resolve_world(text), spec)
+            except InvalidInput:
+                continue
+            return resolve_world(text)
+        return resolve_world("random:n=6,fraction=0.4,seed=3")
 
     specs = REGISTRY.values() if isinstance(REGISTRY, dict) else REGISTRY
     for spec in specs:

@@ -130,8 +130,9 @@ def test_an_undirected_snapshot_mark_without_head_passes_a_run(scripted):
     snap = {"type": "snapshot", "S": {"exits": [[None]], "marks": [{"vertex": 0}]}, "U": [[0, 0]]}
     final = {"type": "map", "world": {"format": "topomark/world@1", "rotation": {"x": ["y"], "y": ["x"]},
                                       "markers": [{"kind": "vertex", "at": "x"}]}}
-    result = run_external(chain, scripted({"type": "drop", "kind": "vertex"}, snap, final), version=2,
-                          kit=Kit(vertex=1))
+    there_and_back = ({"type": "move", "motion": 0}, {"type": "move", "motion": 0})  # crossed: the map is known
+    result = run_external(chain, scripted({"type": "drop", "kind": "vertex"}, snap, *there_and_back, final),
+                          version=2, kit=Kit(vertex=1))
     assert result.passed and result.snapshots == 1, result.message
 
 
@@ -150,7 +151,8 @@ def test_a_map_may_carry_a_start_which_is_not_judged(scripted):
     drop = {"type": "drop", "direction": 0}
     world = {"format": "topomark/world@1", "rotation": {"p": ["q", "r"], "q": ["r", "p"], "r": ["p", "q"]},
              "markers": [{"kind": "vertex", "at": "p", "points_to": "q"}], "start": {"at": "r", "facing": "q"}}
-    assert run_external(TRIANGLE, scripted(drop, {"type": "map", "world": world})).passed
+    round_to_the_marker = [{"type": "move", "motion": 1}] * 3  # every edge crossed, the marker seen again
+    assert run_external(TRIANGLE, scripted(drop, *round_to_the_marker, {"type": "map", "world": world})).passed
     wrong = run_external(TRIANGLE, scripted(drop, {"type": "map", "world": {**world, "start": {"at": "z",
                                                                                              "facing": "q"}}}))
     assert wrong.reason == "map-invalid", wrong.message

@@ -404,7 +404,8 @@ def test_a_program_operates_the_thread_over_protocol_2(tmp_path):
     seen = tmp_path / "seen.json"
     result = run_external(STAR, [sys.executable, str(tmp_path / "client.py"), str(tmp_path / "w.json"), str(seen)],
                           version=2, kit=Kit(thread=2))
-    assert result.passed, result.message
+    # every operation accepted; the map is right but sent without exploring: a guess (spec/protocol.md)
+    assert (result.reason, result.determination.how) == ("guess", "subdivided"), result.message
     assert json.loads(seen.read_text()) == ["[3,A,A]", "[3,A,A,T-1]", "[2,A,A,S-0]", "[2,A,A,S-0,K2]", "[3,A,A,T-1]",
                                             "[3,A,A]"]
     assert result.cost == 2  # the rewind is a traversal

@@ -28,6 +28,8 @@ import os
 import tempfile
 from typing import Callable, cast
 
+from topomark.arguments import (callback, flag, integer, keywords_checked, largest_degree, optional_text, path,
+                                seconds, text)
 from topomark.proofs import z3search
 from topomark.proofs.bisim import Distinction, bisimulation, check_relation, distinguishing_sequence
 from topomark.proofs.census import CensusResult
@@ -37,11 +39,19 @@ from topomark.proofs.z3results import ProofReport, SearchResult
 from topomark.reference.cli.args import MAX_JOBS
 from topomark.spec.errors import CheckFailure, InvalidInput
 from topomark.spec.markerclass import marker_class
-from topomark.spec.world import World
+from topomark.spec.world import MAX_DEGREE, World
 from topomark.worlds import WorldLike, resolve
 
 __all__ = ["distinguish", "search", "prove", "census", "Distinction", "SearchResult", "ProofReport",
            "CensusResult"]
+
+
+def _bounds(marker: object, max_vertices: object, max_degree: object, largest: int, what: str) -> tuple[str, int, int]:
+    """``marker`` a marker class's name, ``max_vertices`` from 2 to ``largest`` (``what`` enumerates up to it),
+    ``max_degree`` from 1 to the largest degree a world can have: each refused as InvalidInput naming it."""
+    marker_class(text("marker", marker, "a marker class's name"))
+    return (str(marker), integer("max_vertices", max_vertices, 2, largest, f" ({what})"),
+            integer("max_degree", max_degree, 1, MAX_DEGREE))
 
 
 def _started(world: WorldLike, name: str) -> World:
@@ -51,13 +61,15 @@ def _started(world: WorldLike, name: str) -> World:
     return the_world
 
 
+@keywords_checked
 def distinguish(a: WorldLike, b: WorldLike) -> Distinction | None:
     """The shortest motion sequence after which a robot perceives differently in ``a`` and ``b``, or None.
 
     Both worlds need a start.  The result's ``motions`` is the sequence M (empty when the start signatures
     already differ) and ``perceptions_a``/``perceptions_b`` the perceptions P in each world (§3.1.1).
     None means indistinguishable; the bisimulation relation behind that answer is checked independently
-    first (CheckFailure if the check disagrees).
+    first (CheckFailure if the check disagrees).  Either argument not a world, or a world without a start,
+    is InvalidInput.
 
     Examples
     --------
@@ -80,6 +92,7 @@ def distinguish(a: WorldLike, b: WorldLike) -> Distinction | None:
     return None
 
 
+@keywords_checked
 def search(marker: str, max_vertices: int, max_degree: int, timeout: float | None = None,
            planar: bool = False) -> SearchResult:
     """Z3's search for two worlds carrying ``marker`` that no motion sequence tells apart but that are not
@@ -90,29 +103,41 @@ def search(marker: str, max_vertices: int, max_degree: int, timeout: float | Non
     is no pair within the bounds and ``unknown`` when ``timeout`` seconds ran out.  ``planar=True`` keeps
     to genus-0 embeddings, like the thesis's drawings.
 
+    Raises InvalidInput before Z3 starts for an unknown marker class, ``max_vertices`` outside 2 to 8 (what
+    the solver can take), ``max_degree`` < 1, a ``timeout`` that is not a positive, finite number of seconds
+    of at most a week (or None), ``planar`` other than True or False, and any argument of the wrong type.
+
     Examples
     --------
     >>> r = search("none", max_vertices=4, max_degree=3)
     >>> r.outcome, [w.n for w in r.worlds]
     ('found', [3, 4])
     """
-    return z3search.search(marker, max_vertices, max_degree, timeout, planar=planar)
+    marker, max_vertices, max_degree = _bounds(marker, max_vertices, max_degree, z3search.MAX_VERTICES,
+                                               "what the solver can take")
+    return z3search.search(marker, max_vertices, max_degree, seconds("timeout", timeout),
+                           planar=flag("planar", planar))
 
 
+@keywords_checked
 def prove(marker: str, max_vertices: int, max_degree: int, timeout: float | None = None,
           planar: bool = False) -> ProofReport:
     """A bounded proof that ``marker`` has no indistinguishable non-isomorphic pair: Z3 finds every size pair
     unsatisfiable.  ``report.proved`` tells; ``report.outcome`` is ``proved``, ``counterexample`` or
-    ``unknown``, and ``report.search`` the search behind it.
+    ``unknown``, and ``report.search`` the search behind it.  Bad arguments raise InvalidInput as for
+    :func:`search`.
 
     Examples
     --------
     >>> prove("none", max_vertices=4, max_degree=3).outcome
     'counterexample'
     """
-    return z3search.prove(marker, max_vertices, max_degree, timeout, planar)
+    marker, max_vertices, max_degree = _bounds(marker, max_vertices, max_degree, z3search.MAX_VERTICES,
+                                               "what the solver can take")
+    return z3search.prove(marker, max_vertices, max_degree, seconds("timeout", timeout), flag("planar", planar))
 
 
+@keywords_checked
 def census(marker: str, max_vertices: int, max_degree: int, jobs: int = 1,
            shards: str | os.PathLike[str] | None = None, scheduler: str | None = None,
            progress: Callable[[str], None] | None = None) -> CensusResult:
@@ -125,6 +150,12 @@ def census(marker: str, max_vertices: int, max_degree: int, jobs: int = 1,
     directory so that an interrupted census resumes (a temporary directory otherwise).  ``progress`` is
     called with a line of text now and then.
 
+    Raises InvalidInput before any work for an unknown marker class, ``max_vertices`` outside 2 to 10 (the
+    sizes the enumeration reaches), ``max_degree`` < 1 or too large for the worlds of ``max_vertices``
+    vertices to fit in memory (at n = 7 and 8 at most 4, at 9 and 10 at most 3), ``jobs`` outside 1 to 256, a ``shards`` that is not a
+    path, a ``scheduler`` that is not an address (a str), a ``progress`` that is not callable, and any
+    argument of the wrong type.
+
     Examples
     --------
     >>> census("none", max_vertices=4, max_degree=3).smallest_counterexample is not None
@@ -132,14 +163,13 @@ def census(marker: str, max_vertices: int, max_degree: int, jobs: int = 1,
     >>> census("directional-vertex", max_vertices=4, max_degree=3).smallest_counterexample is None
     True
     """
-    marker_class(marker)
-    if not 2 <= max_vertices <= MAX_VERTICES:
-        raise InvalidInput(f"max_vertices must be 2 to {MAX_VERTICES} (the census enumerates worlds of at most "
-                           f"{MAX_VERTICES} vertices), not {max_vertices}")
-    if max_degree < 1:
-        raise InvalidInput(f"max_degree must be at least 1, not {max_degree}")
-    if not 1 <= jobs <= MAX_JOBS:
-        raise InvalidInput(f"jobs must be 1 to {MAX_JOBS} worker processes, not {jobs}")
+    marker, max_vertices, max_degree = _bounds(marker, max_vertices, max_degree, MAX_VERTICES,
+                                               "the census enumerates worlds up to that size")
+    largest_degree(max_vertices, max_degree)
+    jobs = integer("jobs", jobs, 1, MAX_JOBS, " worker processes")
+    shards = None if shards is None else path("shards", shards)
+    scheduler = optional_text("scheduler", scheduler, "a Dask scheduler's address or 'local'")
+    progress = callback("progress", progress)
     if shards is not None:
         return sharded_census(marker, max_vertices, max_degree, shards, jobs=jobs, scheduler=scheduler,
                               progress=progress)

@@ -23,6 +23,7 @@ import sys
 from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING, Any, TypeAlias, Union
 
+from topomark.arguments import keywords_checked, path as checked_path
 from topomark.keywords import check_keywords
 from topomark.reference.files.outputs import write_output
 from topomark.reference.worlds.argument import parse_generator, resolve_world
@@ -47,8 +48,10 @@ NO_ROTATION = ("a networkx {kind} has no rotation system (each vertex's neighbou
 """The refusal of a networkx graph that carries no embedding."""
 
 
+@keywords_checked
 def load_world(path: str | os.PathLike[str]) -> World:
-    """The world in the world file ``path``; a missing or malformed file is InvalidInput naming what is wrong.
+    """The world in the world file ``path``; a missing or malformed file, or a ``path`` that is not a path (None,
+    an int, an empty string), is InvalidInput naming what is wrong.
 
     Examples
     --------
@@ -59,11 +62,13 @@ def load_world(path: str | os.PathLike[str]) -> World:
     ...     load_world(path).m
     6
     """
-    return _load_world(os.fspath(path))
+    return _load_world(checked_path("path", path))
 
 
+@keywords_checked
 def save_world(world: World, path: str | os.PathLike[str]) -> None:
-    """Write ``world`` to ``path`` in the world-file format; an unwritable path is InvalidInput naming it.
+    """Write ``world`` to ``path`` in the world-file format; an unwritable path, a ``path`` that is not a path
+    and a ``world`` that is not a World (:func:`generate` or :func:`load_world` makes one) are InvalidInput.
 
     Examples
     --------
@@ -72,7 +77,10 @@ def save_world(world: World, path: str | os.PathLike[str]) -> None:
     ...
     topomark.spec.errors.InvalidInput: ...nonexistent-dir/w.json...
     """
-    write_output(os.fspath(path), dumps_world(world))
+    if not isinstance(world, World):
+        raise InvalidInput(f"save_world() writes a World (generate() or load_world() makes one), "
+                           f"not {type(world).__name__}")
+    write_output(checked_path("path", path), dumps_world(world))
 
 
 def generate(name: str | os.PathLike[str], **params: Any) -> World:
@@ -82,7 +90,9 @@ def generate(name: str | os.PathLike[str], **params: Any) -> World:
 
     Keywords are the generator's parameters, added to those of the text; parameters not given take their
     defaults, and ``seed=`` picks the random generators' world.  A keyword the generator does not take is
-    :class:`~topomark.spec.errors.InvalidKeyword` (a TypeError too), with the closest parameter names.
+    :class:`~topomark.spec.errors.InvalidKeyword` (a TypeError too), with the closest parameter names; a
+    keyword's value of the wrong type (a str or a bool for a number, a number for a word) or out of range is
+    InvalidInput naming it.  Only the text's parameters are words to be read as numbers.
 
     Examples
     --------
@@ -113,10 +123,23 @@ def generate(name: str | os.PathLike[str], **params: Any) -> World:
         return resolve_world(text)  # names what is wrong with the text, with the closest generators
     accepted = ", ".join(PARAMETERS[base]) or "no parameters"
     check_keywords("generate", params, PARAMETERS[base], f"the generator {base} takes {accepted}")
+    for key, value in params.items():
+        _check_parameter(base, key, value, PARAMETERS[base][key])
     twice = sorted(given.keys() & params.keys())
     if twice:
         raise InvalidInput(f"parameter {twice[0]!r} given twice: in {clip(text, 80, quote=True)} and as a keyword")
     return _generate(base, **given, **params)
+
+
+def _check_parameter(generator: str, name: str, value: Any, default: Any) -> None:
+    """Refuse a keyword's ``value`` whose type is not its ``default``'s: a str or a bool for a number, a number
+    for a word (an int stands for a float)."""
+    kind = type(default)
+    fits = isinstance(value, str) if kind is str else (
+        not isinstance(value, (bool, str)) and isinstance(value, int if kind is int else (int, float)))
+    if not fits:
+        raise InvalidInput(f"generate(): the generator {generator}'s parameter {name} must be {kind.__name__}, "
+                           f"not {type(value).__name__} ({clip(repr(value), 60)})")
 
 
 def resolve(world: WorldLike) -> World:

@@ -1,14 +1,17 @@
 """What the registry records of one algorithm: :class:`AlgorithmSpec`, its :class:`Parameter` options, and the
 checks (:data:`CHECKS`) the checker may apply to it.
 
-An algorithm of the thesis is registered once, with its section and listing,
-the marker kit it needs (:mod:`topomark.spec.kit`), its cost bound and marker
-bound *as the thesis states them* (``None`` where it states none), the
-options it takes and the checks that apply.  A cost bound is either *exact*
+An algorithm of the thesis is registered once, with its section and listing, the marker kit it needs
+(:mod:`topomark.spec.kit`), its cost bound and marker bound *as the thesis states them* (``None`` where it states
+none), the options it takes and the checks that apply.  A cost bound is either *exact*
 (``bound_fn``, named by ``bound_formula``: every checked run is held to it at
 its end, the ``cost-bound`` check, which the entry then names) or
 *asymptotic* only (an O(·) has no constant: ``bound_bench`` names the bench
 experiment that measures it, and nothing claims it is checked per run).
+Every exact bound says **whose it is** (``bound_source``, :data:`BOUND_SOURCES`, ``docs/bounds.md``): the
+thesis's, topomark's for the thesis's listing as written, or topomark's for its own variant; only the first two
+bind a conformance client (``bound_binds``).  ``changes`` says what the explorer changes relative to the listing
+(None: it follows it), ``listing_entry`` the entry that runs the listing literally, where there is one.
 Two shapes of algorithm exist:
 
 * **lighthouse algorithms** (``uses_lighthouse=True``: Algorithm 3.1 and the
@@ -67,7 +70,7 @@ from topomark.reference.explorers.policies import Policies
 from topomark.reference.algorithms.expectation import (CORRECT, EXPECTATIONS, FAILS_BY_DESIGN, broadest,
                                                        lighthouse_expectation)
 
-__all__ = ["AlgorithmSpec", "Listed", "Parameter", "STATUSES", "CHECKS", "ALGORITHM_3_1_CHECKS", "MARKER_MAP_CHECKS", "STEPWISE_MAP_CHECKS"]
+__all__ = ["AlgorithmSpec", "Listed", "Parameter", "STATUSES", "BOUND_SOURCES", "CHECKS", "ALGORITHM_3_1_CHECKS", "MARKER_MAP_CHECKS", "STEPWISE_MAP_CHECKS"]
 
 CHECKS: dict[str, str] = {
     "pose": "the explorer's believed position is the robot's true state (φ anchored at the believed pose)",
@@ -85,6 +88,13 @@ CHECKS: dict[str, str] = {
     "isomorphism": "the final map is extended-isomorphic to the world, markers included (§3.1.3)",
 }
 """Every check the checker knows, by name, with the condition it states."""
+
+BOUND_SOURCES: dict[str, str] = {
+    "thesis": "the thesis's bound for its listing",
+    "listing": "topomark's bound for the thesis's listing as written (derived in docs/bounds.md)",
+    "variant": "topomark's bound for its own variant of the listing",
+}
+"""Whose an exact cost bound is and what it bounds (module docstring); the phrase every message quotes."""
 
 IMPLEMENTED, EXPECTED_TO_FAIL, NOT_IMPLEMENTABLE = ("implemented", "implemented, expected to fail",
                                                    "not implementable from the thesis")
@@ -170,6 +180,9 @@ class AlgorithmSpec:
     expected_reason: str | None = None  # the thesis reference of an expected outcome other than the status's
     expected_by_family: tuple[tuple[str, str, str], ...] = ()  # (world family, expectation, reason) where it differs
     edge_policy: str | None = None  # the edge choice its runs take unless one is chosen (None: nearest)
+    bound_source: str = "variant"  # whose the exact bound is and what it bounds (BOUND_SOURCES)
+    changes: str | None = None  # what the explorer changes relative to the thesis's listing (None: follows it)
+    listing_entry: str | None = None  # the registered entry that follows the listing literally, if any
 
     def __post_init__(self) -> None:
         if self.status not in (IMPLEMENTED, EXPECTED_TO_FAIL):
@@ -196,6 +209,8 @@ class AlgorithmSpec:
         if self.edge_policy is not None and (self.edge_policy not in EDGE_CHOICES or "edge" not in self.policy_kinds):
             raise ValueError(f"algorithm {self.name}: edge_policy {self.edge_policy!r} is a registered edge choice "
                              f"({', '.join(EDGE_CHOICES)}) of an algorithm that declares 'policy edge' in its options")
+        if self.bound_source not in BOUND_SOURCES:
+            raise ValueError(f"algorithm {self.name}: bound_source {self.bound_source!r} is not one of {BOUND_SOURCES}")
         if self.bound_fn is not None and "cost-bound" not in self.checks:  # every exact bound is checked
             object.__setattr__(self, "checks", (*self.checks, "cost-bound"))
 
@@ -234,11 +249,33 @@ class AlgorithmSpec:
         return self.bound_fn is not None
 
     @property
+    def bound_whose(self) -> str | None:  # whose the exact bound is, what it bounds (BOUND_SOURCES); None: none
+        return None if self.bound_fn is None else BOUND_SOURCES[self.bound_source]
+
+    @property
+    def bound_binds(self) -> bool:
+        """Whether the exact bound binds any implementation of the thesis's algorithm: the thesis's own, or
+        topomark's for the listing as written — not topomark's bound for its own variant."""
+        return self.bound_fn is not None and self.bound_source in ("thesis", "listing")
+
+    @property
+    def follows_listing(self) -> bool:
+        return self.changes is None  # the explorer follows the thesis's listing
+
+    def variant_json(self) -> dict[str, Any]:
+        """Which explorer a run is made with: the thesis's listing or topomark's variant of it, and how it
+        differs (a conformance case's ``variant``)."""
+        return {"algorithm": self.name, "follows": "the thesis's listing" if self.follows_listing else
+                "topomark's variant", "changes": self.changes, "listing_entry": self.listing_entry}
+
+    @property
     def bound_note(self) -> str:
-        """How the cost bound is held: checked per run (exact), measured by a bench (asymptotic), or none."""
+        """How the cost bound is held: checked per run (exact, saying whose), measured by a bench (asymptotic),
+        or none."""
         if self.bound_fn is not None:
             skipped = f", not counting {' and '.join(self.bound_excludes)} moves" if self.bound_excludes else ""
-            return f"exact: {self.bound_formula}; checked at the end of every checked run (cost-bound{skipped})"
+            return (f"exact: {self.bound_formula}; {self.bound_whose}; checked at the end of every checked run "
+                    f"(cost-bound{skipped})")
         if self.bound:
             return f"asymptotic: measured by bench {self.bound_bench}, not checked per run"
         return "none stated in the thesis"
@@ -324,7 +361,9 @@ class AlgorithmSpec:
                "checks": list(self.checks), "family": self.family, "kit_from_world": self.kit_fn is not None,
                "parameters": {p.name: {"help": p.help, "default": p.default} for p in self.parameters},
                "bound_checked": self.bound_checked, "bound_note": self.bound_note, "status": self.status,
-               "policies": self.policies_json(self.policies())}
+               "policies": self.policies_json(self.policies()), "bound_source": self.bound_source
+               if self.bound_fn is not None else None, "bound_whose": self.bound_whose,
+               "bound_binds": self.bound_binds, **{k: v for k, v in self.variant_json().items() if k != "algorithm"}}
         if self.status_reason:
             out["status_reason"] = self.status_reason
         out.update(self._expectation_json())

@@ -41,7 +41,7 @@ def bench_command(args) -> int:
                            parameters=parameters)
     wall = time.monotonic() - started
     report = write_report(args.experiment, out, None if args.report_only else wall, plots=not args.no_plots)
-    text = report.read_text()
+    text = report.read_text(encoding="utf-8")
     verdict = judge_plan((r.key for r in runs), out / "runs.csv")
     result.update(failures=verdict.failures, outcomes=verdict.to_json())
     result.update(report=str(report), wall_seconds=round(wall, 1), plots_skipped="Plots: skipped" in text)

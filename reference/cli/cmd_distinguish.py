@@ -83,6 +83,10 @@ def _validate(args: argparse.Namespace) -> None:
         raise InvalidInput(f"--max-vertices {args.max_vertices} is too large: the census enumerates worlds "
                            f"of at most {MAX_VERTICES} vertices")
     check_max_degree(args.max_degree)
+    from topomark.reference.worstcase.limits import exhaustive_refusal
+    refusal = exhaustive_refusal(args.max_vertices, args.max_degree)  # the plan's memory: bounded before work
+    if refusal:
+        raise InvalidInput(refusal)
     check_jobs(args.jobs)
     named_path(args.shards, "--shards")  # resumed, not claimed: a census's shards are reused on purpose
 

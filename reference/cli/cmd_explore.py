@@ -95,7 +95,8 @@ def _bound_text(o, spec) -> str:
     else the registry's statement, never claimed as checked (an O(·) bound has no constant, so no run can be
     held to it: a bench measures it), or that the thesis states none."""
     if o.upper_bound is not None:
-        return f"{o.upper_bound} ({'checked: cost-bound' if o.bound_checked else 'not checked: --no-check'})"
+        return (f"{o.upper_bound} ({'checked: cost-bound' if o.bound_checked else 'not checked: --no-check'}) — "
+                f"{o.bound_whose}")
     return f"{spec.bound} ({spec.bound_note})" if spec.bound else spec.bound_note
 
 

@@ -28,7 +28,7 @@ from topomark.reference.run.map_check import check_map
 from topomark.reference.files.outputs import guarded
 from topomark.reference.files.overwrite import claim_dir, claim_file
 from topomark.reference.replay.replay import load_trace, replay
-from topomark.reference.oracle.marker_messages import MAX_COUNT
+from topomark.spec.kit import MAX_COUNT
 from topomark.reference.worlds.argument import resolve_world
 
 __all__ = ["run_external_command", "check_map_command", "replay_command", "drive_command",
@@ -60,9 +60,10 @@ def _protocol_choice(args) -> tuple[int, Kit | None]:
         kit = Kit.from_json(parse_json(args.kit, "--kit", object_pairs_hook=no_duplicate_keys))
     except InvalidInput as exc:
         raise InvalidInput(str(exc) if str(exc).startswith("--kit") else f"--kit: {exc}") from None
-    counts = (kit.vertex, kit.edge, kit.either)
-    if max(counts) > MAX_COUNT or (sum(counts) == 0 and kit.thread is None):
-        raise InvalidInput(f"--kit: give 1..{MAX_COUNT} vertex or edge markers or a thread, got {kit.to_json()}")
+    if kit.vertex + kit.edge + kit.either == 0 and kit.thread is None:
+        raise InvalidInput(f"--kit: give 1..{MAX_COUNT:,} vertex or edge markers or a thread, got {kit.to_json()}")
+    if kit.cap_refusal() is not None:
+        raise InvalidInput(f"--kit: {kit.cap_refusal()}")
     return 2, kit
 
 def _make_limits(args) -> Limits:

@@ -72,7 +72,7 @@ def write_outputs(result: z3search.SearchResult, out: str) -> list[str]:
     a, b = result.worlds
     save_world(a, d / "a.json")
     save_world(b, d / "b.json")
-    (d / "relation.json").write_text(json.dumps(z3search.relation_to_json(result.relation)) + "\n")
+    (d / "relation.json").write_text(json.dumps(z3search.relation_to_json(result.relation)) + "\n", encoding="utf-8")
     caption = (f"{result.marker}: M = ({','.join(map(str, result.motions))}) gives "
                f"P = ({', '.join(map(str, result.perceptions))}) in both worlds")
     save_pair(a, b, d / "pair.svg", titles=("A", "B"), caption=caption)

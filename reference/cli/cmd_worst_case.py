@@ -21,24 +21,37 @@ run did not (a failure, a wrong map, a violated invariant), 2 on bad input, 3
 when topomark's checked and unchecked runs, or the two exhaustive searches,
 disagree.  The options are :mod:`topomark.reference.cli.options.worst_case`'s; this module is imported
 when the command runs.
+
+Every size is bounded before work (:mod:`topomark.reference.worstcase.limits`), and so is everything the command
+is handed: ``--summarise`` directories are read back and recomputed
+(:mod:`topomark.reference.worstcase.summary_input`; exit 1 if a recomputed cost exceeds its exact bound),
+``-o DIR`` must be a directory a file can be written in (a device, a FIFO or a read-only place is refused before
+work), ``--search`` refuses the options of the exhaustive search.  Without ``--shards``, the search keeps its
+tasks in a temporary folder ``topomark-worst-case-PID-*``: SIGTERM ends the command through Python's exit, so
+the folder is removed; after a SIGKILL it stays, and the next ``worst-case`` removes every such folder whose
+process is gone.
 """
 
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
+import os
+import shutil
+import signal
 import sys
 import tempfile
 from pathlib import Path
 from typing import Any
 
 from topomark.reference.files.outputs import guarded
-from topomark.reference.files.overwrite import claim_dir, named_path
+from topomark.reference.files.overwrite import named_path
 from topomark.spec.errors import InvalidInput
 
 from topomark.reference.cli.args import check_jobs, check_max_degree, check_min_vertices
-from topomark.reference.cli.cmd_worst_search import search_command, setup_of
-from topomark.reference.cli.options.worst_case import MAX_EXHAUSTIVE
+from topomark.reference.cli.cmd_worst_search import claim_out, search_command, setup_of
+from topomark.reference.worstcase.limits import MAX_EXHAUSTIVE, exhaustive_refusal, search_refusal
 
 __all__ = ["worst_case_command"]
 
@@ -52,36 +65,114 @@ def _validate(args: argparse.Namespace) -> None:
     check_min_vertices(args.min_vertices, args.max_vertices)
     check_max_degree(args.max_degree)
     check_jobs(args.jobs)
+    refusal = exhaustive_refusal(args.max_vertices, args.max_degree)
+    if refusal:
+        raise InvalidInput(refusal)
     if args.cross_check and args.max_vertices > 5:
         raise InvalidInput(f"--cross-check runs the brute force for n <= 5 only, not --max-vertices {args.max_vertices}")
 
 
+EXHAUSTIVE_ONLY = {"max_vertices": ("--max-vertices", None), "min_vertices": ("--min-vertices", 2),
+                   "jobs": ("--jobs", 1), "scheduler": ("--scheduler", None), "shards": ("--shards", None),
+                   "sample": ("--sample", 0.001), "cross_check": ("--cross-check", False)}
+"""The options of the exhaustive search, with their defaults: ``--search`` refuses any given another value."""
+
+
+def _check_search(args: argparse.Namespace) -> None:
+    for key, (flag, default) in EXHAUSTIVE_ONLY.items():
+        if getattr(args, key) != default:
+            raise InvalidInput(f"{flag} is an option of the exhaustive search; --search does not use it")
+    for n in args.vertices:
+        refusal = search_refusal(n, args.evaluations)
+        if refusal:
+            raise InvalidInput(refusal)
+
+
 def worst_case_command(args: argparse.Namespace) -> int:
     if args.summarise:
-        from topomark.reference.worstcase.summary import summarise
-        missing = [d for d in args.summarise if not Path(d).is_dir()]
-        if missing:
-            raise InvalidInput(f"--summarise: {missing[0]!r} is not a directory (give the --out directories of runs)")
-        claim_dir(args.out, "-o", args.force)
-        if args.out is not None:
-            out = Path(args.out)
-            guarded(out, lambda: (out / "worst-case.md").write_text(summarise([Path(d) for d in args.summarise], out)))
-            print(f"wrote {out / 'worst-case.md'}")
-        else:
-            print(summarise([Path(d) for d in args.summarise]), end="")
-        return 0
+        return _summarise(args)
     named_path(args.shards, "--shards")  # resumed, not claimed: an earlier run's shards are reused
     if args.search:
+        _check_search(args)
         return search_command(args)
     _validate(args)
-    claim_dir(args.out, "-o", args.force)
+    claim_out(args.out, args.force)
     setup = setup_of(args)
     progress = None if args.quiet or args.json else (lambda line: print(line, file=sys.stderr, flush=True))
     degree = min(args.max_degree, args.max_vertices - 1)
     if args.shards is not None:
-        return _finish(args, setup, degree, _run(args, setup, degree, Path(args.shards), progress))
-    with tempfile.TemporaryDirectory(prefix="topomark-worst-case-") as root:
-        return _finish(args, setup, degree, _run(args, setup, degree, Path(root), progress))
+        return _finish(args, setup, degree, _run(args, setup, degree, Path(args.shards).absolute(), progress))
+    with _terminated_exits(), scratch_dir() as root:
+        return _finish(args, setup, degree, _run(args, setup, degree, root, progress))
+
+
+def _summarise(args: argparse.Namespace) -> int:
+    from topomark.reference.worstcase.summary import summarise_runs
+    missing = [d for d in args.summarise if not Path(d).is_dir()]
+    if missing:
+        raise InvalidInput(f"--summarise: {missing[0]!r} is not a directory (give the --out directories of runs)")
+    claim_out(args.out, args.force)
+    dirs = [Path(d) for d in args.summarise]
+    if args.out is None:
+        text, held = summarise_runs(dirs)
+        print(text, end="")
+        return 0 if held else 1
+    out = Path(args.out)
+    text, held = summarise_runs(dirs, out)
+    guarded(out, lambda: (out / "worst-case.md").write_text(text, encoding="utf-8"))
+    print(f"wrote {out / 'worst-case.md'}")
+    return 0 if held else 1
+
+
+SCRATCH = "topomark-worst-case-"
+"""The prefix of the temporary folders: ``topomark-worst-case-PID-XXXX`` in the system's temporary directory."""
+
+
+def _alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:  # another user's process
+        return True
+    return True
+
+
+def remove_stale(parent: Path) -> list[Path]:
+    """Remove the temporary folders in ``parent`` left by worst-case runs whose process is gone (a SIGKILL)."""
+    removed = []
+    for entry in parent.glob(f"{SCRATCH}*"):
+        pid = entry.name[len(SCRATCH):].split("-", 1)[0]
+        if pid.isdigit() and int(pid) != os.getpid() and not _alive(int(pid)) and entry.is_dir() \
+                and not entry.is_symlink():
+            shutil.rmtree(entry, ignore_errors=True)
+            removed.append(entry)
+    return removed
+
+
+@contextlib.contextmanager
+def scratch_dir():
+    """A temporary folder named with this process's id, removed at the end; stale ones are removed first."""
+    remove_stale(Path(tempfile.gettempdir()))
+    with tempfile.TemporaryDirectory(prefix=f"{SCRATCH}{os.getpid()}-") as root:
+        yield Path(root)
+
+
+@contextlib.contextmanager
+def _terminated_exits():
+    """While the block runs, SIGTERM raises SystemExit (exit 143), so every ``with`` and ``finally`` runs."""
+    def exit_on_term(signum, frame):
+        raise SystemExit(128 + signal.SIGTERM)
+
+    try:
+        previous = signal.signal(signal.SIGTERM, exit_on_term)
+    except ValueError:  # not the main thread: the handler cannot be installed, the default stays
+        yield
+        return
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
 
 
 def _run(args, setup, degree: int, root: Path, progress) -> dict[str, Any]:

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 import time
 from pathlib import Path
@@ -19,7 +20,28 @@ from typing import Any
 
 from topomark.spec.errors import InvalidInput
 
-__all__ = ["search_command", "setup_of"]
+from topomark.reference.files.outputs import check_output_dir
+from topomark.reference.files.overwrite import claim_dir
+
+__all__ = ["claim_out", "search_command", "setup_of"]
+
+
+def claim_out(path: str | None, force: bool) -> None:
+    """``-o DIR``, claimed (:func:`~topomark.reference.files.overwrite.claim_dir`), made, and a file written and
+    removed there: a device, a FIFO, a read-only place are refused before the work, naming ``-o``."""
+    claim_dir(path, "-o", force)
+    if path is None:
+        return
+    try:
+        out = check_output_dir(path)
+        probe = out / f".topomark-probe-{os.getpid()}"
+        probe.write_bytes(b"")
+        probe.unlink()
+    except InvalidInput as e:
+        raise InvalidInput(f"-o {e}") from None
+    except OSError as e:
+        raise InvalidInput(f"-o {path}: cannot write there: {e.strerror or e}") from None
+
 
 def setup_of(args: argparse.Namespace):
     """The shared setup of a worst-case search from the command line (bad input: exit 2)."""
@@ -40,11 +62,10 @@ def setup_of(args: argparse.Namespace):
 def search_command(args: argparse.Namespace) -> int:
     from topomark.reference.worstcase.fit import fit_exponents
     from topomark.reference.worstcase.search import adversarial_search
-    from topomark.reference.files.overwrite import claim_dir
     setup = setup_of(args)
     if args.evaluations < 1:
         raise InvalidInput(f"--evaluations must be at least 1, not {args.evaluations}")
-    claim_dir(args.out, "-o", args.force)
+    claim_out(args.out, args.force)
     rows: list[dict[str, Any]] = []
     for n in args.vertices:
         progress = None if args.quiet or args.json else _Progress(n, args.evaluations)
@@ -83,12 +104,13 @@ class _Progress:
 
 def _write(out: Path, data: dict[str, Any]) -> None:
     out.mkdir(parents=True, exist_ok=True)
-    (out / "worst-case-search.json").write_text(json.dumps(data, indent=1, sort_keys=True) + "\n")
+    (out / "worst-case-search.json").write_text(json.dumps(data, indent=1, sort_keys=True) + "\n", encoding="utf-8")
     for r in data["per_n"]:
         for kind in ("search", "random"):
             best = r[kind].get("best")
             if best and best.get("world"):
-                (out / f"{kind}-best-n{r['n']}.json").write_text(json.dumps(best["world"], indent=1) + "\n")
+                (out / f"{kind}-best-n{r['n']}.json").write_text(json.dumps(best["world"], indent=1) + "\n",
+                                                                  encoding="utf-8")
 
 
 def _lines(data: dict[str, Any]) -> str:

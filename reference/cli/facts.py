@@ -34,16 +34,24 @@ _CENSUS = "topomark.proofs.census_exec"
 
 
 def _parameters(registry: Any) -> tuple[tuple[str, str, Any, str], ...]:
-    """Every algorithm option (``explore --NAME``): its name, help, default and the algorithms that take it."""
-    return tuple((p.name, p.help, p.default, ", ".join(s.name for s in registry.REGISTRY.values()
-                                                        if p in s.parameters))
-                 for p in registry.parameters().values())
+    """Every algorithm option (``explore --NAME``): its name, help, default and every algorithm that takes an
+    option of that name — matched by name, as the CLI offers one ``--NAME`` to all of them — each with its own
+    default where they differ (then the default given is None)."""
+    out = []
+    for p in registry.parameters().values():
+        takers = [(s.name, q.default) for s in registry.REGISTRY.values() for q in s.parameters if q.name == p.name]
+        same = len({repr(d) for _, d in takers}) == 1
+        names = ", ".join(n if same else f"{n} (default {d})" for n, d in takers)
+        out.append((p.name, p.help, p.default if same else None, names))
+    return tuple(out)
 
 
 SOURCES: dict[str, tuple[str, Callable[[Any], Any]]] = {  # fact: (the module defining it, how to read it there)
     "algorithms": (_REGISTRY, lambda m: tuple(m.REGISTRY)),
     "parameters": (_REGISTRY, _parameters),
     "lighthouses": (_LIGHTHOUSES, lambda m: tuple(m.LIGHTHOUSES)),
+    "max_marker_count": ("topomark.reference.oracle.marker_messages", lambda m: m.MAX_COUNT),
+    "max_thread": ("topomark.reference.oracle.marker_messages", lambda m: m.MAX_THREAD),
     "max_walk_limit": (_LIGHTHOUSES, lambda m: m.MAX_WALK_LIMIT),
     "max_neighbourhood": (_LIGHTHOUSES, lambda m: m.MAX_NEIGHBOURHOOD),
     "max_threshold": (_LIGHTHOUSES, lambda m: m.MAX_THRESHOLD),
@@ -58,6 +66,7 @@ SOURCES: dict[str, tuple[str, Callable[[Any], Any]]] = {  # fact: (the module de
     "marker_classes": ("topomark.spec.markerclass", lambda m: tuple(m.MARKER_CLASSES)),
     "enumerate_max_vertices": (_ENUMERATE, lambda m: m.MAX_VERTICES),
     "graphs_max_vertices": ("topomark.proofs.graphs", lambda m: m.MAX_VERTICES),
+    "draw_max_vertices": ("topomark.proofs.drawing", lambda m: m.MAX_DRAW_VERTICES),
     "search_max_vertices": ("topomark.proofs.z3search", lambda m: m.MAX_VERTICES),
     "connect_timeout": (_CENSUS, lambda m: m.CONNECT_TIMEOUT),
     "worker_wait": (_CENSUS, lambda m: m.WORKER_WAIT),

@@ -6,12 +6,12 @@ from typing import Any
 
 TABLE: dict[str, Any] = {
     'algorithms': ('basic', 'enh1', 'enh2', 'enh3', 'enh4', 'enh5-d1', 'enh5-d2', 'enh3+4', 'enh3+5', 'footprints',
-                   'labelled-dfs', 'dudek', 'dudek-directional', 'model-tree', 'case-3a', 'case-3b',
+                   'labelled-dfs', 'dudek', 'dudek-directional', 'model-tree', 'single-leaf', 'case-3a', 'case-3b',
                    'case-3b-saving', 'case-1a', 'case-1b', 'case-2', 'case-4', 'case-4-mn', 'case-5-v1',
                    'case-5-v2', 'case-0', 'case-5-edge', 'case-dv-sum', 'extension-1', 'extension-2',
                    'extension-naive', 'case-1b-edgeinfo', 'case-2-edgeinfo', 'case-1a-edgeinfo', 'case-4-edgeinfo',
                    'case-4-mn-edgeinfo', 'case-5-directional', 'thread-carried', 'thread-circumference',
-                   'thread-knots', 'thread-explore', 'thread-fallback'),
+                   'thread-circumference-listing', 'thread-knots', 'thread-explore', 'thread-fallback'),
     'parameters': (('signatures',
                     'global: validate each loop closing against every known vertex (§5.2.2); local: accept every '
                     "degree-matching one (the thesis's comparison)",
@@ -34,22 +34,36 @@ TABLE: dict[str, Any] = {
                    ('cue-m', 'cue (§5.3): the world has this many edges', None, 'model-tree'),
                    ('cue-diameter', "cue (§5.3): the world's diameter", None, 'model-tree'),
                    ('cue-planar', 'cue (§5.3): the world is planar (a genus-0 embedding)', 'no', 'model-tree'),
-                   ('prior', 'prior knowledge (§5.3): single-leaf, the world has exactly one vertex of degree 1',
+                   ('prior',
+                    'prior knowledge (§5.3) as a model-tree prior: single-leaf voids every model with two vertices '
+                    "of degree 1 (the world has exactly one); §5.3's deterministic use of the leaf, as Algorithm "
+                    "3.1's lighthouse, is --algorithm single-leaf",
                     'none', 'model-tree'),
                    ('rank',
                     'rank the completed models by P(model | perceptions), the prior 2^-(n+m+genus) (§5.3), in the '
                     'summary',
                     'no', 'model-tree'),
+                   ('search-limit',
+                    'cap on the traversals of the search for the leaf: past it the run ends with the limit outcome '
+                    '(at most 100,000,000)',
+                    1000000, 'single-leaf'),
                    ('markers',
                     'how many markers the robot carries (default: what its case is assured, from n and m)', None,
-                    'case-3a, case-3b, case-3b-saving, case-1a, case-1b, case-2, case-4, case-4-mn, case-dv-sum, '
-                    'extension-1, extension-2, extension-naive, case-1b-edgeinfo, case-2-edgeinfo, '
-                    'case-1a-edgeinfo, case-4-edgeinfo, case-4-mn-edgeinfo'),
-                   ('thread-length', "the thread's length L in edges (an integer >= 1); the robot knows it", 'n',
-                    'thread-circumference')),
+                    'case-3a, case-3b, case-3b-saving, case-1a, case-1b, case-2, case-4, case-4-mn, case-5-v1, '
+                    'case-5-v2, case-5-edge, case-dv-sum, extension-1, extension-2, extension-naive, '
+                    'case-1b-edgeinfo, case-2-edgeinfo, case-1a-edgeinfo, case-4-edgeinfo, case-4-mn-edgeinfo, '
+                    'case-5-directional'),
+                   ('thread-length',
+                    "the thread's length L in edges (an integer 1..1,000,000, the cap of a marker count); the "
+                    'robot knows it',
+                    None,
+                    'thread-circumference (default n), thread-circumference-listing (default n), thread-explore '
+                    '(default 2), thread-fallback (default 2)')),
     'lighthouses': ('directional-vertex', 'directional-edge', 'vertex-and-edge', 'three-undirected-edge',
                     'three-undirected-vertex', 'undirected-vertex', 'undirected-edge', 'local-pair',
                     'local-degree-list', 'thread'),
+    'max_marker_count': 1000000,
+    'max_thread': 1000000,
     'max_walk_limit': 1000000,
     'max_neighbourhood': 8,
     'max_threshold': 1000001,
@@ -84,6 +98,7 @@ TABLE: dict[str, Any] = {
                        'three-undirected-vertex', 'undirected-edge', 'directional-edge', 'vertex-and-edge'),
     'enumerate_max_vertices': 10,
     'graphs_max_vertices': 12,
+    'draw_max_vertices': 1000,
     'search_max_vertices': 8,
     'connect_timeout': 5,
     'worker_wait': 60,

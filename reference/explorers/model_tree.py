@@ -57,9 +57,12 @@ the registration refuses a false ``cue-n``/``cue-m`` as bad input.
   how many completed models it cannot tell apart.
 * ``prior single-leaf`` (§5.3: "we know that there exists exactly one
   'leaf vertex' in the world"): a model with two places of degree 1 is
-  voided, and so is a completed one with none.  The thesis's use of it — the
-  leaf as a directional lighthouse, deterministic — is a lighthouse
-  algorithm; here it prunes the tree like a cue.
+  voided, and so is a completed one with none.  This is a model-tree prior:
+  it prunes the tree like a cue and keeps Algorithm 5.1's termination and
+  caps, so it is not §5.3's method.  The thesis's use of the knowledge — search
+  for the leaf and use it as Algorithm 3.1's directional lighthouse, mapping
+  deterministically — is the ``single-leaf`` algorithm
+  (:mod:`.single_leaf`).
 * ``rank yes``: the completed models are ranked by P(model | perceptions)
   (:mod:`.model_prior`, §5.3), for the run's summary; it voids nothing.
 * ``cue-planar yes``: a model whose rotation system has genus > 0 is voided

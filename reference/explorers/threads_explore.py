@@ -14,7 +14,8 @@ Algorithm 6.7 lines 8–9 and 14).  At v_u (Algorithm 6.8 lines 6–15):
   senses with its own record of the thread: every thread vertex w of v_u's
   degree and open exit j whose marks, read from j with e added at j, are the
   ones sensed is a hypothesis (w, j).  **Ours**: one hypothesis needs no
-  motion.  Otherwise "the robot searches back along the thread looking for
+  motion (``thread-circumference-listing``, :class:`ListingThreadExplorer`, leaves this out and searches
+  every time, as line 11 of Algorithm 6.7 says).  Otherwise "the robot searches back along the thread looking for
   the vertex that has one more marked edge" (line 7, §6.3.2): it leaves the
   free end at v_u, goes back over e to v_k and walks the thread back toward
   v_s; the vertex with one more thread-marked edge than its record is v_k' =
@@ -62,8 +63,8 @@ Cost purposes: ``new`` (over e), ``retrace`` (back over e, every rewind),
 
 Examples
 --------
->>> ThreadExplorer.name, CircumferenceThreadExplorer.name
-('thread-explore', 'thread-circumference')
+>>> ThreadExplorer.name, CircumferenceThreadExplorer.name, ListingThreadExplorer.name
+('thread-explore', 'thread-circumference', 'thread-circumference-listing')
 """
 
 from __future__ import annotations
@@ -80,7 +81,7 @@ from topomark.spec.signature import Signature, ThreadMark
 from topomark.reference.explorers.policies import Policies, bfs
 from topomark.reference.explorers.walker import MapWalker, StepRecord, places_like
 
-__all__ = ["ThreadIteration", "ThreadWalker", "ThreadExplorer", "CircumferenceThreadExplorer"]
+__all__ = ["ThreadIteration", "ThreadWalker", "ThreadExplorer", "CircumferenceThreadExplorer", "ListingThreadExplorer"]
 
 TIE, UNTIE, LEAVE, TAKE = ThreadOp("tie"), ThreadOp("untie"), ThreadOp("leave"), ThreadOp("take")
 
@@ -227,6 +228,7 @@ class ThreadExplorer(ThreadWalker):
 
     name = "thread-explore"
     retie = True
+    literal = False  # True: search back along the thread at every loop step, as the listing says (no shortcut)
     iteration_type: type = ThreadIteration  # the record of one step (the fallback adds its phase)
 
     def step(self) -> ThreadIteration:
@@ -257,7 +259,7 @@ class ThreadExplorer(ThreadWalker):
         hyps = [(w, j) for w in dict.fromkeys(self.on_thread(-1)) if w not in near and self.S.degree(w) == sig.degree
                 for j in self.open_exits(w) if self._reads(w, j, marks, sig)]
         it.candidates = sorted({w for w, _ in hyps})
-        if len(hyps) == 1:
+        if len(hyps) == 1 and not self.literal:  # ours: the listing searches even then (line 11)
             it.how = "sensed"
             self.rewind()
             return self.loop_augment(it, hyps[0])
@@ -344,3 +346,12 @@ class CircumferenceThreadExplorer(ThreadExplorer):
 
     name = "thread-circumference"
     retie = False
+
+
+class ListingThreadExplorer(CircumferenceThreadExplorer):
+    """Algorithm 6.7 as listed (§6.3.2): at a vertex the thread lay at already, the robot "searches back along
+    the thread looking for the vertex that has one more marked edge" (lines 11–12) every time, even where its
+    record of the thread leaves one vertex it can be — the search ``thread-circumference`` skips then."""
+
+    name = "thread-circumference-listing"
+    literal = True

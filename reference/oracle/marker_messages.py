@@ -33,14 +33,13 @@ import json
 from typing import Any, TypeGuard
 
 from topomark.spec.errors import clip
-from topomark.spec.kit import THREAD_OPS, Kit, MarkerOp, ThreadOp
+from topomark.spec.kit import MAX_COUNT, MAX_THREAD, THREAD_OPS, Kit, MarkerOp, ThreadOp
 from topomark.spec.signature import Signature
 
 from topomark.reference.oracle.protocol import ProtocolError
 
-__all__ = ["MAX_COUNT", "op_from_message", "op_to_message", "refusal"]
+__all__ = ["MAX_COUNT", "MAX_THREAD", "op_from_message", "op_to_message", "refusal"]
 
-MAX_COUNT = 10 ** 6  # markers in one operation, at most
 
 
 def _int(x: Any) -> TypeGuard[int]:

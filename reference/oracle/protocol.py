@@ -50,7 +50,7 @@ VERSIONS = {PROTOCOL: 1, PROTOCOL2: 2}  # the name in ``hello`` -> the version n
 MAX_LINE = 4_000_000  # bytes; a longer line is garbage
 MAX_MESSAGE = 2000  # characters of a verdict message; what the other side sent is quoted clipped
 
-SCHEMA: dict[str, Any] = json.loads(resources.files("topomark.spec").joinpath("protocol.schema.json").read_text())
+SCHEMA: dict[str, Any] = json.loads(resources.files("topomark.spec").joinpath("protocol.schema.json").read_text(encoding="utf-8"))
 """``spec/protocol.schema.json``: one JSON Schema definition per message, the only statement of their shapes."""
 
 if TYPE_CHECKING:

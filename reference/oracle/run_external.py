@@ -1,14 +1,12 @@
 """``run-external``: another program explores a world that topomark plays (thesis §3.1, §3.3–3.4).
 
-topomark is the world side of ``topomark/protocol@1`` and ``@2`` (``spec/protocol.md``):
-it holds the world in a :class:`~topomark.reference.run.simulator.Simulator`,
-answers every ``move`` and ``drop`` with the signature reached (§3.1.1),
-counts the cost in edge traversals (§3.1.2), enforces the marker kit (``@1``:
-Algorithm 3.1's one directional vertex marker, §3.3; ``@2``: any
-:class:`~topomark.spec.kit.Kit`, with drops and pick-ups of vertex and edge
-markers) and the limits, checks I-1 and I-2 (§3.4) on every ``snapshot`` of
-(S, U) the program sends, and judges the final ``map`` by extended
-isomorphism (§3.1.3) against the world with the markers the program left in it.
+topomark is the world side of ``topomark/protocol@1`` and ``@2`` (``spec/protocol.md``): it holds the world in a
+:class:`~topomark.reference.run.simulator.Simulator`, answers every ``move`` and ``drop`` with the signature reached
+(§3.1.1), counts the cost in edge traversals (§3.1.2), enforces the marker kit (``@1``: Algorithm 3.1's one
+directional vertex marker, §3.3; ``@2``: any :class:`~topomark.spec.kit.Kit`) and the limits, checks I-1 and I-2
+(§3.4) on every ``snapshot`` of (S, U), and judges the final ``map`` by extended isomorphism (§3.1.3) against the
+world with the markers the program left in it, and by whether what the program sensed determines it
+(:mod:`~topomark.reference.oracle.determination`).
 
 Time is the program's time: the ``--timeout`` and ``--message-timeout``
 limits count only the time topomark waits for the program
@@ -54,6 +52,7 @@ from topomark.reference.oracle.protocol import MAX_MESSAGE, PROTOCOL, PROTOCOL2,
 from topomark.reference.run.simulator import Simulator
 from topomark.reference.oracle.snapshot_wire import MalformedSnapshot, snapshot_to_map
 from topomark.reference.oracle.marker_messages import op_from_message, refusal
+from topomark.reference.oracle.determination import REWIND, Action, Determination, determination
 
 __all__ = ["Limits", "ExternalResult", "run_external", "REASONS", "LIGHTHOUSE_KIT", "START_ANCHOR", "GAVE_UP"]
 
@@ -78,6 +77,7 @@ REASONS = {
     "snapshot": "a snapshot is malformed",
     "map-invalid": "the final map is not a valid world",
     "not-isomorphic": "the final map is not extended-isomorphic to the world",
+    "guess": "the final map is right, but what the program sensed does not determine it (a witness world shows it)",
 }
 
 
@@ -123,6 +123,7 @@ class ExternalResult:
     violation: Violation | None = None
     map: World | None = None
     rule: str | None = None
+    determination: Determination | None = None  # the search for a witness that the map was a guess
 
     @property
     def passed(self) -> bool:
@@ -134,7 +135,8 @@ class ExternalResult:
                 "snapshots": self.snapshots, "wall_seconds": round(self.wall, 3),
                 "program_seconds": round(self.program_seconds, 3),
                 "topomark_seconds": round(self.topomark_seconds, 3), "stderr_tail": self.stderr,
-                "violation": None if self.violation is None else self.violation.to_json(), "marker_rule": self.rule}
+                "violation": None if self.violation is None else self.violation.to_json(), "marker_rule": self.rule,
+                "determination": None if self.determination is None else self.determination.to_json()}
 
 
 class _Fail(Exception):
@@ -159,6 +161,7 @@ class _Session:
         self.limits = limits
         self.check_snapshots = check_snapshots
         self.snapshots = 0
+        self.actions: list[Action] = []  # what the program did, replayed on other worlds (determination)
 
     def hello(self) -> None:
         kit = {"markers": self.kit.to_json()} if self.version == 1 else {"kit": self.kit.to_json()}
@@ -201,6 +204,7 @@ class _Session:
         except CheckFailure as exc:  # the thread would run out (§6.3): the kit refuses the move
             raise _Fail("marker", refusal({"type": "move", "motion": motion}, self.sim.cost,
                                           exc.violation.detail or str(exc)), exc.violation) from None
+        self.actions.append(motion)
         self.peer.send({"type": "signature", "value": str(sig), "step": self.sim.cost})
 
     def _count_operation(self) -> None:
@@ -220,10 +224,11 @@ class _Session:
             raise _Fail("marker", "drop: an undirected marker, but the marker class is one directional vertex "
                                   "marker (direction must be an exit)")
         try:
-            self.robot.drop_marker(direction)
+            self.robot.operate(MarkerOp("vertex", direction=direction))
         except CheckFailure as exc:
             raise _Fail("marker", refusal({"type": "drop", "direction": direction}, self.sim.cost,
                                           exc.violation.detail or str(exc)), exc.violation) from None
+        self.actions.append(MarkerOp("vertex", direction=direction))
         self.peer.send({"type": "signature", "value": str(self.robot.sense()), "step": self.sim.cost})
 
     def operate(self, msg: dict) -> None:
@@ -242,6 +247,7 @@ class _Session:
         except CheckFailure as exc:
             words = refusal(msg, self.sim.cost, exc.violation.detail or str(exc), op, sensed, self.kit)
             raise _Fail("marker", words, exc.violation) from None
+        self.actions.append(REWIND if getattr(op, "op", None) == "rewind" else op)
         self.peer.send({"type": "signature", "value": str(self.robot.sense()), "step": self.sim.cost})
 
     def snapshot(self, msg: dict) -> None:
@@ -325,15 +331,15 @@ def run_external(world: World, command: Sequence[str], limits: Limits | None = N
 def _judge(world: World, session: _Session) -> ExternalResult:
     """Play the session to its map and judge the map against the world."""
     map_ = session.play()
-    truth = session.sim.world.with_start(world.start)
-    verdict = _dropped_markers(truth, map_)
-    if verdict.isomorphic:
-        words = f"isomorphic (extended isomorphism; {COMPARED}; witness verified)"
-    else:
-        words = f"not isomorphic ({COMPARED}): {verdict.result.mismatch}"
-    return ExternalResult("pass" if verdict.isomorphic else "fail", "ok" if verdict.isomorphic else "not-isomorphic",
-                          words, violation=None if verdict.isomorphic else verdict.result.mismatch,
-                          map=map_, rule=verdict.rule)
+    verdict = _dropped_markers(session.sim.world.with_start(world.start), map_)
+    if not verdict.isomorphic:
+        return ExternalResult("fail", "not-isomorphic", f"not isomorphic ({COMPARED}): {verdict.result.mismatch}",
+                              violation=verdict.result.mismatch, map=map_, rule=verdict.rule)
+    found = determination(session.sim.base_world, session.start, session.kit, session.actions, map_)
+    words = f"isomorphic (extended isomorphism; {COMPARED}; witness verified) and {found.words(map_.n)}"
+    return ExternalResult("pass", "ok", words, map=map_, rule=verdict.rule, determination=found) \
+        if found.witness is None else \
+        ExternalResult("fail", "guess", found.words(map_.n), map=map_, rule=verdict.rule, determination=found)
 
 
 def _checked_kit(version: int, kit: Kit | None) -> Kit:

@@ -35,6 +35,7 @@ import json
 from typing import Any
 
 from topomark.spec.errors import CheckFailure, Violation, clip
+from topomark.spec.kit import MAX_COUNT
 from topomark.spec.mapstate import PartialMap
 from topomark.spec.signature import Signature
 from topomark.spec.thread import ThreadMark
@@ -55,7 +56,6 @@ class MalformedSnapshot(CheckFailure):
 
 
 _FLIP = {"H": "T", "T": "H", None: None}
-_MAX_COUNT = 10 ** 6
 
 
 def _int(x: Any) -> bool:
@@ -121,8 +121,8 @@ def _rebuild(S_obj: dict[str, Any], U: list[Any], version: int) -> PartialMap:
 
 def _count(mark: dict, k: int) -> int:
     count = mark.get("count", 1)
-    if not (_int(count) and 1 <= count <= _MAX_COUNT):
-        raise MalformedSnapshot(f"S.marks[{k}]: count must be an integer 1..{_MAX_COUNT}, "
+    if not (_int(count) and 1 <= count <= MAX_COUNT):
+        raise MalformedSnapshot(f"S.marks[{k}]: count must be an integer 1..{MAX_COUNT}, "
                                 f"got {clip(json.dumps(count))}")
     return count
 
@@ -180,9 +180,9 @@ def _thread_mark(S: PartialMap, k: int, mark: dict) -> None:
         d, head, edges = S.degree(v), t.get("head"), t.get("edges", [])
         ok = ((head is None or (_int(head) and 0 <= head < d)) and isinstance(edges, list)
               and all(isinstance(e, list) and len(e) == 2 and _int(e[0]) and 0 <= e[0] < d and _int(e[1])
-                      and 1 <= e[1] <= _MAX_COUNT for e in edges) and len({e[0] for e in edges}) == len(edges)
+                      and 1 <= e[1] <= MAX_COUNT for e in edges) and len({e[0] for e in edges}) == len(edges)
               and isinstance(t.get("end", False), bool) and _int(t.get("knots", 0))
-              and 0 <= t.get("knots", 0) <= _MAX_COUNT and S.thread_mark(v) is None
+              and 0 <= t.get("knots", 0) <= MAX_COUNT and S.thread_mark(v) is None
               and (t["tied"] or edges or t.get("end", False) or t.get("knots", 0)))  # something lies there
     if not ok:
         raise MalformedSnapshot(f"S.marks[{k}] must be {form} on a vertex of S, its exits < its degree, once, "

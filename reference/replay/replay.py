@@ -50,7 +50,7 @@ from __future__ import annotations
 
 from collections import deque
 from dataclasses import dataclass
-from typing import Any, Iterable, cast
+from typing import Any, Iterable, Iterator, cast
 
 from topomark.spec.errors import InvalidInput, Violation, clip
 from topomark.spec.world import World
@@ -61,9 +61,27 @@ from topomark.reference.replay.divergence import Diverged
 from topomark.reference.replay.rerun_layer import RerunLayer, rerun_spec
 from topomark.reference.replay.robot_layer import RobotLayer
 from topomark.reference.trace.header import header_family, header_kit, header_lighthouse
-from topomark.reference.trace.reader import EVENTS, EVENTS_2, load_trace, parse_trace
+from topomark.reference.trace.reader import EVENTS, EVENTS_2, _records, load_trace, parse_trace
+from topomark.reference.trace.sink import trace_line
 
-__all__ = ["ReplayResult", "replay", "load_trace", "parse_trace", "EVENTS", "EVENTS_2"]
+__all__ = ["ReplayResult", "replay", "load_trace", "parse_trace", "parse_records", "EVENTS", "EVENTS_2"]
+
+
+def parse_records(records: Iterable[Any], source: str = "<records>") -> Iterator[dict[str, Any]]:
+    """``records`` (trace records as objects: an ``Outcome.trace``, or a generator) checked as a trace file's
+    lines are (:func:`load_trace`): each is written as its line and read back, one at a time, so a stream of
+    records is never held whole and the first bad one is refused when reached.  A record that cannot be written
+    as JSON (a set, a cycle, nesting past Python's limit) is :class:`InvalidInput` naming its line."""
+    def lines() -> Iterator[tuple[int, str]]:
+        for k, rec in enumerate(records, 1):
+            try:
+                line = trace_line(rec)
+            except (TypeError, ValueError, RecursionError) as exc:
+                raise InvalidInput(f"{source} line {k}: not a JSON object ({type(exc).__name__}: "
+                                   f"{clip(str(exc), 80)})") from None
+            yield k, line[:-1]
+
+    return _records(lines(), source)
 
 
 @dataclass(frozen=True, repr=False)
@@ -85,6 +103,7 @@ class ReplayResult:
     line: int | None = None
     recorded_failure: bool = False  # the trace's end claims the failure replay found
     layers: tuple[str, ...] = ("robot", "algorithm-3.1")  # the layers replayed: the robot's and the family's, if any
+    rerun: dict[str, Any] | None = None  # the re-run the trace follows (variant_json: the listing or topomark's)
 
     def __repr__(self) -> str:
         """``ReplayResult(ok, cost=5522, iterations=148, layers=robot+algorithm-3.1)``, or the divergence and its
@@ -97,7 +116,7 @@ class ReplayResult:
     def to_json(self) -> dict[str, Any]:
         return {"verified": self.ok, "message": self.message, "cost": self.cost, "iterations": self.iterations,
                 "line": self.line, "divergence": None if self.divergence is None else self.divergence.to_json(),
-                "recorded_failure": self.recorded_failure, "layers": list(self.layers)}
+                "recorded_failure": self.recorded_failure, "layers": list(self.layers), "rerun": self.rerun}
 
 
 # -- replaying ------------------------------------------------------------------
@@ -193,9 +212,10 @@ def replay(world: World, records: Iterable[dict[str, Any]], source: str = "<trac
                           "the trace claims a failure but replay finds none")
         return ReplayResult(False, f"line {line}: {false}", r.robot.steps, r.iterations, false, line, layers=r.layers)
     note = "" if rec["verified"] else " (the recorder did not judge the run: verified false, no violation)"
+    followed = None if r.rerun is None else r.rerun.followed.variant_json()
     if "outcome" in rec:
-        return ReplayResult(True, _stopped(r, rec), r.robot.steps, r.iterations, layers=r.layers)
-    return ReplayResult(True, _verified(r) + note, r.robot.steps, r.iterations, layers=r.layers)
+        return ReplayResult(True, _stopped(r, rec), r.robot.steps, r.iterations, layers=r.layers, rerun=followed)
+    return ReplayResult(True, _verified(r) + note, r.robot.steps, r.iterations, layers=r.layers, rerun=followed)
 
 
 def _refused(r: _Replay, end: dict, line: int) -> ReplayResult:
@@ -213,8 +233,11 @@ def _verified(r: _Replay) -> str:
     """What a positive verdict verified: every layer the trace's family has (trace@1's words as they were)."""
     steps = r.robot.steps
     if r.rerun is not None:
+        run = r.rerun.followed
+        whose = f"{run.name}'s own run ({run.variant_json()['follows']})" if run.name == r.name else \
+            f"the run of {run.name} ({run.variant_json()['follows']}, registered beside {r.name})"
         return (f"{steps} traversals and {_ops(r.robot.ops)}, every perception and signature matches the world, "
-                f"the header's kit is {r.name}'s, and every record and the end are {r.name}'s own run, re-run on "
+                f"the header's kit is {r.name}'s, and every record and the end are {whose}, re-run on "
                 "the world and checked (robot and re-run layers)")
     if r.algorithm is None:
         return (f"{steps} traversals and {_ops(r.robot.ops)}, every perception and signature matches "
@@ -229,7 +252,7 @@ def _verified(r: _Replay) -> str:
 def _stopped(r: _Replay, end: dict) -> str:
     """A run that stopped before it had a map (trace@2 ``end.outcome``): what replay verified up to there."""
     layers = " and the algorithm-3.1 layer's records" if r.algorithm is not None else \
-        f" and {r.name}'s re-run stops here too" if r.rerun is not None else ""
+        f" and the re-run of {r.rerun.followed.name} stops here too" if r.rerun is not None else ""
     return (f"{r.robot.steps} traversals and {_ops(r.robot.ops)}, every perception and signature matches the world"
             f"{layers}; the run stopped before it had a map: {end['outcome']} ({end['reason']})")
 

@@ -340,7 +340,8 @@ def _outcome(world: World, sim: Simulator, explorer, checker: Checker | None, vi
         upper_bound=bound, lighthouse=None if light is None else light.name,
         marker_operations=dict(sorted(sim.operations.items())), explorer=explorer, trace=trace, violation=violation,
         outcome=judged, claimed=claimed, reason=stopped.reason if stopped else None, kit=sim.kit.describe(),
-        bound_checked=checker is not None and "cost-bound" in checker.checks, algorithm=spec.name)
+        bound_checked=checker is not None and "cost-bound" in checker.checks, algorithm=spec.name,
+        bound_whose=spec.bound_whose)
 
 
 def _algorithm_counts(outcome: Outcome, spec: AlgorithmSpec, explorer, world: World, v0_state,

@@ -42,6 +42,8 @@ class Outcome:
     checks: int
     by_purpose: dict[str, int]
     upper_bound: int | None  # the entry's exact cost bound on this world (None: asymptotic or none stated)
+    # whose ``upper_bound`` is and what it bounds (AlgorithmSpec.bound_whose): the thesis's, or topomark's for the
+    # thesis's listing or for its own variant (docs/bounds.md)
     drop_trips: int = 0  # traversals made only to drop markers (part of cost; the simulator's accounting rule)
     lighthouse: str | None = "directional-vertex"
     marker_operations: dict[str, int] = field(default_factory=dict)
@@ -57,6 +59,7 @@ class Outcome:
     extra: dict[str, Any] = field(default_factory=dict)  # the algorithm's own counts (its registry's summary_fn)
     bound_checked: bool = False  # the run was held to ``upper_bound`` (the ``cost-bound`` check)
     algorithm: str = ""  # the registry name of the algorithm that ran
+    bound_whose: str | None = None  # whose ``upper_bound`` is and what it bounds (above)
 
     def __repr__(self) -> str:
         """``Outcome(algorithm='basic', world n=90 m=146, cost=6868, correct, verified, 738 checks)``: what ran,
@@ -88,7 +91,7 @@ class Outcome:
     def summary(self) -> dict[str, Any]:
         out = {k: getattr(self, k) for k in (
             "n", "m", "cost", "drop_trips", "verified", "iterations", "loop_iterations", "nonloop_iterations", "hypotheses",
-            "hypotheses_rejected", "hypotheses_confirmed", "checks", "by_purpose", "upper_bound", "lighthouse",
+            "hypotheses_rejected", "hypotheses_confirmed", "checks", "by_purpose", "upper_bound", "bound_whose", "lighthouse",
             "marker_operations", "outcome", "claimed", "reason", "bound_checked")}
         if self.lighthouse is not None:
             out.update(walk_steps=self.walk_steps, lighthouse_at=self.lighthouse_at)

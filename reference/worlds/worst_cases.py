@@ -35,7 +35,7 @@ from topomark.spec.worldfile import world_from_json
 __all__ = ["WORST_DIR", "WORST_CASES", "worst_case_world", "worst_case_worlds", "describe"]
 
 WORST_DIR = Path(__file__).resolve().parent / "worst"
-WORST_CASES: dict[str, dict[str, Any]] = json.loads((WORST_DIR / "index.json").read_text())
+WORST_CASES: dict[str, dict[str, Any]] = json.loads((WORST_DIR / "index.json").read_text(encoding="utf-8"))
 """name ↦ {"algorithm", "how", "n", "m", "max_degree", "cost", "file"}."""
 
 
@@ -43,7 +43,7 @@ def worst_case_world(case: str) -> World:
     """The worst world ``case`` of :data:`WORST_CASES`, with its start."""
     if case not in WORST_CASES:
         raise InvalidInput(f"unknown worst-case world {case!r}; known: {', '.join(WORST_CASES)}")
-    return world_from_json(json.loads((WORST_DIR / WORST_CASES[case]["file"]).read_text()))
+    return world_from_json(json.loads((WORST_DIR / WORST_CASES[case]["file"]).read_text(encoding="utf-8")))
 
 
 def describe(name: str) -> str:

@@ -109,5 +109,5 @@ def write_report(out: Path, data: dict[str, Any]) -> list[Path]:
     else:
         text += "\n" + "\n".join(f"![{p.stem}]({p.name})" for p in plots) + "\n"
     path = out / "worst-case.md"
-    path.write_text(text)
+    path.write_text(text, encoding="utf-8")
     return [path, *(plots or [])]

@@ -93,8 +93,8 @@ def write_outputs(out: Path, data: dict[str, Any], max_degree: int, tallies: dic
             if witness is None:
                 continue
             path = out / f"argmax-{kind}-n{n}.json"
-            path.write_text(json.dumps(argmax_world(n, max_degree, witness), indent=1) + "\n")
+            path.write_text(json.dumps(argmax_world(n, max_degree, witness), indent=1) + "\n", encoding="utf-8")
             written.append(path)
     path = out / "worst-case.json"
-    path.write_text(json.dumps(data, indent=1, sort_keys=True) + "\n")
+    path.write_text(json.dumps(data, indent=1, sort_keys=True) + "\n", encoding="utf-8")
     return [path, *written]

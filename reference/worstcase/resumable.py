@@ -15,8 +15,15 @@ On disk (``topomark/worst-case@1``), in one directory::
 Every file is a record sealed with its BLAKE2b checksum
 (:func:`topomark.proofs.census_shards.seal`), and a task file names the
 manifest's checksum, so a resume trusts only files of this search written by
-this code; a task whose file is missing or damaged runs again.  A killed
-search so resumes where it stopped.
+this code; a task whose file is missing or fails its checksum runs again.  A
+killed search so resumes where it stopped.  A checksum is no signature, so a
+resume trusts no more than it can check (:mod:`.task_record`): the manifest's
+task list must be the plan of its parameters; a task file whose seal holds but
+whose tallies are not consistent, or whose tallied maximum its task does not
+give when run again, is bad input (exit 2) naming the file; every file is read
+back as a regular file of bounded size (a FIFO or a device is refused).
+The directory is used by its absolute path, so workers elsewhere (a Dask
+cluster) find it.
 
 At the end every argmax run is re-run checked and must reproduce its cost
 with a verified map (exit 3 otherwise: topomark's two runs disagree).
@@ -25,19 +32,22 @@ with a verified map (exit 3 otherwise: topomark's two runs disagree).
 from __future__ import annotations
 
 import hashlib
+import json
 import time
 import importlib.util
 from pathlib import Path
 from typing import Any, Callable
 
 from topomark.proofs.census_exec import Progress, executor
-from topomark.proofs.census_integrity import Damaged, package_version, read_record
+from topomark.proofs.census_integrity import Damaged, package_version, read_record_text
 from topomark.proofs.census_map import plan, world_at
 from topomark.proofs.census_shards import seal, write_json
 from topomark.spec.errors import InvalidInput, TopomarkFault
 
 from topomark.reference.worstcase.exhaustive import Setup, run_start, run_task
+from topomark.reference.worstcase.readback import read_regular
 from topomark.reference.worstcase.tally import SizeTally, Witness, merge_tallies
+from topomark.reference.worstcase.task_record import check_record
 
 __all__ = ["FORMAT", "Search", "worst_case", "code_version", "task_path"]
 
@@ -69,6 +79,25 @@ def task_path(root: Path, task: int) -> Path:
     return root / f"task-{task}.json"
 
 
+def _read(path: Path) -> dict[str, Any]:
+    """The sealed record in ``path``: a regular file of bounded size (else exit 2) whose checksum holds
+    (else :class:`Damaged`)."""
+    data = read_regular(path, "worst-case shards")
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError:
+        raise Damaged("it is not UTF-8 text") from None
+    try:
+        return read_record_text(text)
+    except RecursionError:
+        raise Damaged("it is nested too deeply") from None
+
+
+def _plan(params: dict[str, Any], task_worlds: int) -> tuple[list, list]:
+    planned = plan(params["max_vertices"], params["max_degree"], params["min_vertices"], task_worlds)
+    return [[list(u) for u, _ in task] for task in planned], [sum(e for _, e in task) for task in planned]
+
+
 class Search:
     """One exhaustive search: its parameters, directory and manifest (read on resume, else written)."""
 
@@ -79,6 +108,7 @@ class Search:
         self.params = {**setup.to_json(), "max_vertices": max_vertices, "max_degree": max_degree,
                        "min_vertices": min_vertices}
         self.manifest = self._prepare(task_worlds)
+        self.resumed: set[int] = set()
 
     def _prepare(self, task_worlds: int) -> dict[str, Any]:
         try:
@@ -87,15 +117,14 @@ class Search:
             raise InvalidInput(f"worst-case directory {str(self.root)!r} cannot be made: {e.strerror or e}") from None
         path = self.root / "manifest.json"
         p = self.params
-        if not path.exists():
-            planned = plan(p["max_vertices"], p["max_degree"], p["min_vertices"], task_worlds)
-            manifest = seal({"format": FORMAT, "code": code_version(), "params": p,
-                             "tasks": [[list(u) for u, _ in task] for task in planned],
-                             "estimated": [sum(e for _, e in task) for task in planned]})
+        if not (path.exists() or path.is_symlink()):
+            tasks, estimated = _plan(p, task_worlds)
+            manifest = seal({"format": FORMAT, "code": code_version(), "params": p, "task_worlds": task_worlds,
+                             "tasks": tasks, "estimated": estimated})
             write_json(path, manifest)
             return manifest
         try:
-            manifest = read_record(path)
+            manifest = _read(path)
         except Damaged as e:
             raise InvalidInput(f"{path}: damaged: {e}; remove {self.root} or choose an empty directory") from None
         if manifest.get("format") != FORMAT:
@@ -103,22 +132,29 @@ class Search:
         if manifest.get("params") != p or manifest.get("code") != code_version():
             raise InvalidInput(f"{self.root} holds another worst-case search ({manifest.get('params')}, "
                                f"{manifest.get('code')}); use an empty directory or the same options and code")
+        tw = manifest.get("task_worlds", task_worlds)  # a manifest of an earlier topomark has none: the default
+        if type(tw) is not int or tw < 1 or [manifest.get("tasks"), manifest.get("estimated")] != list(_plan(p, tw)):
+            raise InvalidInput(f"{path}: its task list is not the plan of its parameters (edited?); remove "
+                               f"{self.root} or choose an empty directory")
         return manifest
 
     def finished(self, note: Callable[[str], None]) -> dict[int, dict[str, Any]]:
         """The tasks whose files pass their checks; a damaged one is reported and will run again."""
         good = {}
-        for t in range(len(self.manifest["tasks"])):
+        for t, units in enumerate(self.manifest["tasks"]):
             path = task_path(self.root, t)
-            if not path.exists():
+            if not (path.exists() or path.is_symlink()):
                 continue
             try:
-                record = read_record(path)
+                record = _read(path)
                 if record.get("search") != self.manifest["checksum"] or record.get("task") != t:
                     raise Damaged("it belongs to another search or task")
-                good[t] = record
             except Damaged as e:
                 note(f"worst-case: {path}: {e}; running task {t} again")
+                continue
+            check_record(path, record, units)  # sealed but inconsistent: edited and resealed, exit 2
+            good[t] = record
+        self.resumed = set(good)
         return good
 
     def run(self, jobs: int, scheduler: str | None, progress: Callable[[str], None] | None) -> dict[int, dict]:
@@ -172,22 +208,42 @@ def recheck_argmax(setup: Setup, max_degree: int, tally: SizeTally) -> tuple[lis
     return seen, problems
 
 
+def _verify_resumed(search: Search, record: dict[str, Any]) -> None:
+    """Run a resumed task again: if it does not give what its file says, the file is bad input (exit 2)."""
+    t = record["task"]
+    if t not in search.resumed:
+        return
+    fresh = json.loads(json.dumps(run_task(search.setup, search.max_degree,
+                                           [tuple(u) for u in search.manifest["tasks"][t]])))
+    if any(record.get(k) != v for k, v in fresh.items()):
+        raise InvalidInput(f"{task_path(search.root, t)}: task {t} run again does not give what the file says "
+                           "(edited and resealed?); remove the file to run the task again")
+
+
 def worst_case(setup: Setup, max_vertices: int, max_degree: int, root: Path, min_vertices: int = 2,
                jobs: int = 1, scheduler: str | None = None, progress: Callable[[str], None] | None = None,
                task_worlds: int = 2000) -> dict[str, Any]:
     """Run (or resume) the exhaustive search in ``root``; the merged tallies and what the checks found."""
-    search = Search(setup, max_vertices, max_degree, min_vertices, root, task_worlds)
+    search = Search(setup, max_vertices, max_degree, min_vertices, Path(root).absolute(), task_worlds)
     records = search.run(jobs, scheduler, progress)
     parts = [{t["n"]: SizeTally.from_json(t) for t in r["tallies"]} for r in records.values()]
     tallies = merge_tallies(parts)
     problems = [p for r in records.values() for p in r["problems"]]
-    disagree = next((p for p in problems if p["kind"] == "disagree"), None)
-    if disagree is not None:
-        raise TopomarkFault(f"a checked re-run disagrees with its unchecked run: {disagree}",
-                            check="checked and unchecked runs agree")
+    for r in records.values():
+        if any(p["kind"] == "disagree" for p in r["problems"]):
+            _verify_resumed(search, r)
+            raise TopomarkFault(f"a checked re-run disagrees with its unchecked run: "
+                                f"{next(p for p in r['problems'] if p['kind'] == 'disagree')}",
+                                check="checked and unchecked runs agree")
     count, checked = sum(r["problem_count"] for r in records.values()), sum(r["checked"] for r in records.values())
     for tally in tallies.values():
-        seen, found = recheck_argmax(setup, max_degree, tally)
+        try:
+            seen, found = recheck_argmax(setup, max_degree, tally)
+        except TopomarkFault:
+            for r in records.values():  # the task whose file holds the maximum: does it give it when run again?
+                if any(t["n"] == tally.n and t["max_cost"] == tally.max_cost for t in r["tallies"]):
+                    _verify_resumed(search, r)
+            raise
         checked, count, problems = checked + len(seen), count + len(found), problems + found
     return {"tallies": tallies, "refused": sum(r["refused"] for r in records.values()), "checked": checked,
             "problem_count": count, "problems": problems[:20], "manifest": search.manifest}

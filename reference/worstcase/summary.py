@@ -7,7 +7,10 @@ the exact maxima per n beside the thesis's bound, the structure of the worst
 worlds (:func:`structure`: what makes them bad), and the adversarial maxima
 with their fitted growth.  It states which numbers are proved (exhaustive,
 exact for every world of that size) and which are only found (search: a lower
-bound on the worst case).
+bound on the worst case).  What it reads is checked and recomputed first
+(:mod:`~topomark.reference.worstcase.summary_input`): a damaged or edited
+directory is bad input (exit 2) naming the file and field, and a cost above
+the exact bound, being recomputed, is a negative verdict (exit 1).
 
 Examples
 --------
@@ -19,8 +22,6 @@ Examples
 
 from __future__ import annotations
 
-import json
-import shutil
 from pathlib import Path
 from typing import Any
 
@@ -32,9 +33,11 @@ from topomark.spec.worldfile import world_from_json
 from topomark.reference.run.explore import explore
 from topomark.reference.bench.reports.plots import curve, drawn, finish, new, points
 from topomark.reference.worstcase.fit import fit_exponents
+from topomark.reference.worstcase.readback import read_regular
 from topomark.reference.worstcase.report import THESIS
+from topomark.reference.worstcase.summary_input import bound_broken, load_runs
 
-__all__ = ["structure", "summarise"]
+__all__ = ["structure", "summarise", "summarise_runs"]
 
 QUESTION = ("\"the derived upper cost bound O(m²n) of the basic single directional immovable marker algorithm is "
             "quite loose for some environments … it is worth investigating whether the worst case scenarios exist (at "
@@ -56,16 +59,6 @@ def structure(world: World, algorithm: str) -> dict[str, Any]:
             "degrees": "".join(str(d) for d in sorted((d for _, d in g.degree()), reverse=True))}
 
 
-def _load(dirs: list[Path]) -> tuple[list[dict], list[dict]]:
-    exhaustive, searched = [], []
-    for d in dirs:
-        if (d / "worst-case.json").exists():
-            exhaustive.append({**json.loads((d / "worst-case.json").read_text()), "dir": str(d)})
-        if (d / "worst-case-search.json").exists():
-            searched.append(json.loads((d / "worst-case-search.json").read_text()))
-    return exhaustive, searched
-
-
 def _findings(runs: list[dict], shapes: list[dict]) -> list[str]:
     """What the exhaustive tables say, computed from them."""
     out = []
@@ -73,8 +66,9 @@ def _findings(runs: list[dict], shapes: list[dict]) -> list[str]:
         rows = [r for r in data["per_n"] if r["n"] >= 4 and r["max_ratio_to_bound"] is not None]
         if rows:
             last, top = rows[-1], max(r["max_ratio_to_bound"] for r in rows)
-            verdict = "the bound holds with room to spare" if top < 1 else "the bound is reached" if top == 1 else \
-                "the bound does NOT hold"
+            exact = max(r["ratio_exact"][0] / r["ratio_exact"][1] for r in rows)  # recomputed by load_runs
+            verdict = "the bound holds with room to spare" if exact < 1 else "the bound is reached" if exact == 1 \
+                else "the bound does NOT hold (exit 1)"
             out.append(f"- `{data['algorithm']}`, degree ≤ {data['max_degree']}: at n = {last['n']} the worst run costs "
                        f"{last['max_ratio_to_bound']} of its exact bound (largest over 4 ≤ n: {top}); {verdict}.")
     if shapes:
@@ -188,16 +182,24 @@ def _distributions(out: Path, exhaustive: list[dict]) -> list[Path]:
     copied = []
     for data in exhaustive:
         source = Path(data["dir"]) / "worst-case-cost-per-m.png"
-        if source.exists():
+        if source.exists() or source.is_symlink():  # read back as a regular file of bounded size, or refused
+            # the name is the run's checked algorithm (a registered name) and sizes: never a path of the file's
             target = out / f"worst-case-{data['algorithm']}-n{data['max_vertices']}-d{data['max_degree']}-cost-per-m.png"
-            shutil.copyfile(source, target)
+            target.write_bytes(read_regular(source, "--summarise"))
             copied.append(target)
     return copied
 
 
 def summarise(dirs: list[Path], out: Path | None = None) -> str:
     """The report over every output directory in ``dirs``; with ``out``, also its plot, drawn there."""
-    exhaustive, searched = _load(dirs)
+    return summarise_runs(dirs, out)[0]
+
+
+def summarise_runs(dirs: list[Path], out: Path | None = None) -> tuple[str, bool]:
+    """:func:`summarise`, and whether every summarised exhaustive run stays within its exact bound (the
+    directories are read and recomputed by :func:`~topomark.reference.worstcase.summary_input.load_runs`:
+    bad input naming the file and field otherwise)."""
+    exhaustive, searched = load_runs(dirs)
     lines = ["# Worst cases: the thesis's open question, measured", "", f"> {QUESTION}", "",
              f"- **Thesis:** {THESIS}",
              "- **Proved here** (exhaustive): the largest cost of each algorithm over every world up to the sizes "
@@ -213,4 +215,4 @@ def summarise(dirs: list[Path], out: Path | None = None) -> str:
         out.mkdir(parents=True, exist_ok=True)
         plots = (_plot(out, exhaustive, searched) or []) + _distributions(out, exhaustive)
         lines += [f"![{p.stem}]({p.name})" for p in plots]
-    return "\n".join(lines) + "\n"
+    return "\n".join(lines) + "\n", not bound_broken(exhaustive)

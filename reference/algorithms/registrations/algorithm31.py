@@ -97,7 +97,8 @@ def lighthouse_algorithm(name: str, thesis: str, explorer: Callable[..., Any], b
     >>> spec.policies().edge, spec.options[0], spec.bound_for(3, 3)
     ('fifo', 'policy edge=fifo|nearest|lifo', 22)
     """
-    how = dict(bound_fn=upper_bound, bound_formula=_FORMULA, bound_excludes=_UNCOUNTED) if exact else \
+    how = dict(bound_fn=upper_bound, bound_formula=_FORMULA, bound_excludes=_UNCOUNTED, bound_source="thesis") \
+        if exact else \
         dict(bound_bench="tables")
     return AlgorithmSpec(**{**dict(name=name, thesis=thesis, kit=_KIT, bound=bound, markers="1", deterministic=True,
                                    options=policy_options(edge_policy or "nearest"), checks=ALGORITHM_3_1_CHECKS,

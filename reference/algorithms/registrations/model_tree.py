@@ -73,7 +73,9 @@ PARAMETERS = (
     Parameter("cue-diameter", "cue (§5.3): the world's diameter", None, 1),
     Parameter("cue-planar", "cue (§5.3): the world is planar (a genus-0 embedding)", DEFAULTS["cue-planar"], None,
               ("yes", "no")),
-    Parameter("prior", "prior knowledge (§5.3): single-leaf, the world has exactly one vertex of degree 1",
+    Parameter("prior", "prior knowledge (§5.3) as a model-tree prior: single-leaf voids every model with two "
+              "vertices of degree 1 (the world has exactly one); §5.3's deterministic use of the leaf, as Algorithm "
+              "3.1's lighthouse, is --algorithm single-leaf",
               DEFAULTS["prior"], None, ("none", "single-leaf")),
     Parameter("rank", "rank the completed models by P(model | perceptions), the prior 2^-(n+m+genus) (§5.3), "
               "in the summary", DEFAULTS["rank"], None, ("yes", "no")),
@@ -148,7 +150,7 @@ def write_models(explorer, directory: str | Path) -> list[Path]:
     paths = []
     for k, S in enumerate(explorer.completed_models, 1):
         path = out / f"model-{k:04d}.json"
-        path.write_text(dumps_world(S.to_world(start=(0, 0))))
+        path.write_text(dumps_world(S.to_world(start=(0, 0))), encoding="utf-8")
         paths.append(path)
     return paths
 

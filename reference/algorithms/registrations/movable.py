@@ -50,17 +50,23 @@ def directional_bound(n: int, m: int) -> int:
 _OPTIONS = ("policy edge=nearest|fifo|lifo",)
 _BOUND = "O(mn) (§2.3.1); bound_fn: ours, exact for our explorer"
 _OURS = "ours: our explorer's exact worst case behind O(mn) (§2.3.1)"
+SEARCH = ("§2.3.1 gives no listing (Dudek et al.'s is in [24, 26]) and says the robot searches \"visiting known "
+          "vertices in S\": this explorer visits only those that can be v_u (its degree, an unexplored edge, neither "
+          "v_k nor a neighbour of v_k) and looks at every vertex it passes on the way")
+"""What topomark's movable-marker search changes relative to the thesis's description (``changes``)."""
 
 SPECS = (
     AlgorithmSpec(name="dudek", thesis="§2.3.1, Dudek et al. [24, 26]", kit=Kit(vertex=1, movable=True),
                   bound=_BOUND, markers="1", deterministic=True, options=_OPTIONS, checks=STEPWISE_MAP_CHECKS,
                   bound_fn=dudek_bound, bound_formula=f"3(n − 1)² + (m − n + 1)(7n − 8), {_OURS}",
                   explorer=MovableMarkerExplorer, uses_lighthouse=False,
-                  marker_bound_fn=lambda n, m: 1, family="robot"),
+                  marker_bound_fn=lambda n, m: 1, family="robot",
+                  changes=f"{SEARCH}; the undirected back-link search tests v_k's unexplored exits in order and the "
+                          "last one needs no test"),
     AlgorithmSpec(name="dudek-directional", thesis="§2.3.1, Dudek et al. [24, 26]; directional variant [27]",
                   kit=Kit(vertex=1, directional=True, movable=True), bound=_BOUND, markers="1", deterministic=True,
                   options=_OPTIONS, checks=STEPWISE_MAP_CHECKS, bound_fn=directional_bound,
                   bound_formula=f"3(n − 1)² + (m − n + 1)(3n − 1), {_OURS}",
                   explorer=DirectionalMovableMarkerExplorer, uses_lighthouse=False, marker_bound_fn=lambda n, m: 1,
-                  family="robot"),
+                  family="robot", changes=SEARCH),
 )

@@ -10,6 +10,8 @@ name                  thread       Table 6.3        cost bound (bound_fn: ours, 
 ===================== ============ ================ ==================================================
 thread-carried        ε (0)        ε, retied, O(mn) :func:`directional_bound` (it is that explorer)
 thread-circumference  n (or L)     c(G), O(mn)      :func:`circumference_bound`
+thread-circumference- n (or L)     c(G), O(mn)      :func:`circumference_bound` (Algorithm 6.7 as listed)
+listing
 thread-knots          m + 1        l ≫ m, O(m)      :func:`knots_bound` = 4m − 2n + 2
 thread-explore        L (default 2) l < c(G), O(mn) :func:`explore_bound`
 thread-fallback       L (default 2) l < c(G), O(m²n) :func:`fallback_bound`
@@ -17,6 +19,16 @@ thread-fallback       L (default 2) l < c(G), O(m²n) :func:`fallback_bound`
 
 Decisions:
 
+* **Two entries for Algorithm 6.7.**  ``thread-circumference`` is topomark's variant: where its record of
+  the thread leaves one vertex and exit v_u can be, it skips the search back along the thread (lines 11–12;
+  :mod:`~topomark.reference.explorers.threads_explore`).  ``thread-circumference-listing`` is the listing as
+  written: it searches at every loop step.  Both are registered (not a policy of one entry) so that each has
+  its own conformance suite whose reference costs are that explorer's, and so a trace names which one it
+  follows; replay's re-run accepts a trace of either under either name and says which it followed.  Both
+  are held to :func:`circumference_bound`, topomark's bound **for the listing as written** (derived in
+  ``docs/bounds.md`` and checked against the listing on every small world of a family,
+  ``tests/test_listing_reference.py``); the variant never costs more than the listing on the same world
+  (it leaves out searches only), so the same bound holds it.
 * **l = c(G).**  A kit is computed from n, m and the options only (``AlgorithmSpec.kit_fn``): the
   simulator cannot give the kit c(G) itself, and the robot may not know the world.  And c(G) is not
   enough (§6.3.2 asks for a thread that reaches any vertex without forming a cycle, then calls it c(G), the
@@ -37,15 +49,17 @@ Decisions:
 * The robot is never told n or m (§6.2.1); only ``thread-explore`` (and ``thread-circumference``
   when given ``--thread-length``) knows its thread's length, as §6.3.3 assumes.
 
-Bounds (ours: the thesis gives O(·) only), derived in the explorer modules:
+Bounds (topomark's: the thesis gives O(·) only, Table 6.3), derived in the explorer modules; whose each is
+and what it bounds is its entry's ``bound_source``:
 
 * The phase-I/phase-II fallback (§6.3.3, :mod:`~topomark.reference.explorers.threads_fallback`): its
   phase I is a prefix of Algorithm 6.7's steps (below), the free end left costs no move, and each phase-II step
   is one pass of Algorithm 3.1's loop body with S at least as large and U no larger than the pass that (3.1)
   or (3.2) counts for it (§3.5.2): Algorithm 6.7's bound plus (3.1)+(3.2).
 
-* Algorithm 6.7: n − 1 tree edges laid and rewound once each; a loop step lays e, and either rewinds it
-  at once or goes back over e, walks the thread back (≤ n − 1) and rewinds e: ≤ n + 2.
+* Algorithm 6.7 as listed (a bound of the listing, ``docs/bounds.md``): n − 1 tree edges laid and rewound once
+  each; a loop step lays e, goes back over e, walks the thread back (≤ n − 1) and rewinds e: ≤ n + 2
+  (topomark's variant rewinds e at once where it needs no search: 2).
 * Algorithm 6.8: every step lays e once and every laid edge is rewound once (2m); a step's search is at
   most the thread (n) or the movable marker search, to v_k and through the candidates and back
   (2(n − 1)), then back over e (≤ 2n); each retie walks ≤ n − 1, at most n of them.
@@ -60,21 +74,25 @@ from __future__ import annotations
 
 from typing import Any
 
+from topomark.spec.kit import MAX_THREAD
 from topomark.spec.kit import Kit
 
 from topomark.reference.algorithms.algorithm_spec import STEPWISE_MAP_CHECKS, AlgorithmSpec, Parameter
 from topomark.reference.explorers.threads_carried import CarriedThreadExplorer
-from topomark.reference.explorers.threads_explore import CircumferenceThreadExplorer, ThreadExplorer
+from topomark.reference.explorers.threads_explore import (CircumferenceThreadExplorer, ListingThreadExplorer,
+                                                          ThreadExplorer)
 from topomark.reference.explorers.threads_fallback import FallbackThreadExplorer
 from topomark.reference.explorers.threads_knots import KnotThreadExplorer
 from topomark.reference.algorithms.bounds import upper_bound
-from topomark.reference.algorithms.registrations.movable import directional_bound
+from topomark.reference.algorithms.registrations.movable import SEARCH, directional_bound
 
 __all__ = ["SPECS", "circumference_bound", "knots_bound", "explore_bound", "fallback_bound", "directional_bound"]
 
 
+
+
 def circumference_bound(n: int, m: int) -> int:
-    """Our bound for Algorithm 6.7: 2(n − 1) + (m − n + 1)(n + 2)."""
+    """Topomark's bound for Algorithm 6.7 as listed (``docs/bounds.md``): 2(n − 1) + (m − n + 1)(n + 2)."""
     return 2 * (n - 1) + (m - n + 1) * (n + 2)
 
 
@@ -93,8 +111,8 @@ def fallback_bound(n: int, m: int) -> int:
     return circumference_bound(n, m) + upper_bound(n, m)
 
 
-LENGTH = Parameter("thread-length", "the thread's length L in edges (an integer >= 1); the robot knows it",
-                   default="n", minimum=1)
+LENGTH = Parameter("thread-length", f"the thread's length L in edges (an integer 1..{MAX_THREAD:,}, the cap of "
+                   "a marker count); the robot knows it", default="n", minimum=1, maximum=MAX_THREAD)
 """``thread-circumference``'s option: not given ("n"), the kit holds n edges and the robot is not told."""
 
 
@@ -107,31 +125,40 @@ _ROBOT: dict[str, Any] = dict(deterministic=True, checks=STEPWISE_MAP_CHECKS, us
                               marker_bound_fn=lambda n, m: 0, family="robot")
 """What every thread algorithm shares: one edge joins S per step, and no marker is ever dropped (a thread is
 no marker, so the marker bound is 0)."""
-_O_MN = "O(mn) (Table 6.3); bound_fn: ours"
+_O_MN = "O(mn) (Table 6.3); bound_fn: topomark's"
+_SKIPS = ("where the robot's record of the thread leaves one vertex and exit v_u can be, it skips the search back "
+          "along the thread (Algorithm 6.7 lines 11–12) and rewinds e at once: the same map, fewer traversals")
 _OURS = "ours: our explorer's exact worst case behind O(mn) (Table 6.3)"
 
 SPECS = (
     AlgorithmSpec(name="thread-carried", thesis="§6.3.1, l = ε thread carried and retied",
                   kit=Kit(thread=0), bound=_O_MN, markers="no marker; a thread of length ε", options=("policy edge",),
-                  bound_fn=directional_bound, explorer=CarriedThreadExplorer,
+                  bound_fn=directional_bound, explorer=CarriedThreadExplorer, changes=SEARCH,
                   bound_formula=f"3(n − 1)² + (m − n + 1)(3n − 1), {_OURS} (§6.3.1)", **_ROBOT),
-    AlgorithmSpec(name="thread-circumference",
-                  thesis="§6.3.2, Algorithm 6.7 (l = c(G), given n: see the docstring)",
-                  kit=Kit(thread=0), bound=_O_MN, markers="no marker; a thread of n edges (--thread-length: L)",
-                  options=("thread-length L (default n; reaching L is the failed outcome 'out of thread')",),
-                  bound_fn=circumference_bound, explorer=CircumferenceThreadExplorer,
-                  bound_formula=f"2(n − 1) + (m − n + 1)(n + 2), {_OURS} (§6.3.2, Algorithm 6.7)",
-                  parameters=(LENGTH,), kit_fn=_circumference_kit, **_ROBOT),
+    *(AlgorithmSpec(name=name, thesis=f"§6.3.2, Algorithm 6.7{what} (l = c(G), given n: see the docstring)",
+                    kit=Kit(thread=0), bound=_O_MN, markers="no marker; a thread of n edges (--thread-length: L)",
+                    options=("thread-length L (default n; reaching L is the failed outcome 'out of thread')",),
+                    bound_fn=circumference_bound, explorer=explorer, bound_source="listing",
+                    bound_formula="2(n − 1) + (m − n + 1)(n + 2), topomark's exact worst case of Algorithm 6.7 as "
+                                  "listed (§6.3.2; docs/bounds.md), behind O(mn) (Table 6.3)",
+                    parameters=(LENGTH,), kit_fn=_circumference_kit, changes=changes,
+                    listing_entry=None if changes is None else "thread-circumference-listing", **_ROBOT)
+      for name, what, explorer, changes in (
+          ("thread-circumference", "", CircumferenceThreadExplorer, _SKIPS),
+          ("thread-circumference-listing", " as listed", ListingThreadExplorer, None))),
     AlgorithmSpec(name="thread-knots", thesis="§6.3.2, l ≫ m thread with knots (Figure 6.20)",
                   kit=Kit(thread=0), bound="O(m) (Table 6.3); bound_fn: ours, exact worst case",
                   markers="no marker; a thread of m + 1 edges", options=(), bound_fn=knots_bound,
                   bound_formula="4m − 2n + 2, ours: the exact worst case behind O(m) (Table 6.3, §6.3.2)",
-                  explorer=KnotThreadExplorer, kit_fn=lambda n, m, opts: Kit(thread=m + 1), **_ROBOT),
+                  explorer=KnotThreadExplorer, kit_fn=lambda n, m, opts: Kit(thread=m + 1),
+                  changes="the thesis gives no listing (Figure 6.20, §6.3.2): at a known v_k' with one unexplored exit "
+                          "that exit is e', with no back-link validation", **_ROBOT),
     AlgorithmSpec(name="thread-explore", thesis="§6.3.3, Algorithm 6.8 (l < c(G), explore-explore)",
                   kit=Kit(thread=2), bound=_O_MN, markers="no marker; a thread of --thread-length edges",
                   options=("thread-length L (default 2, Figure 6.21)",), bound_fn=explore_bound,
                   bound_formula=f"2m + 2nm + n(n − 1), {_OURS} (§6.3.3, Algorithm 6.8)",
-                  explorer=ThreadExplorer, parameters=(Parameter("thread-length", LENGTH.help, default=2, minimum=1),),
+                  explorer=ThreadExplorer, changes=_SKIPS.replace("Algorithm 6.7 lines 11–12", "Algorithm 6.8 line 7"),
+                  parameters=(Parameter("thread-length", LENGTH.help, default=2, minimum=1, maximum=MAX_THREAD),),
                   kit_fn=lambda n, m, opts: Kit(thread=opts["thread-length"]), **_ROBOT),
     AlgorithmSpec(name="thread-fallback",
                   thesis="§6.3.3, phase-I/phase-II fallback (l < c(G), Algorithm 6.7 then Algorithm 3.1)",
@@ -142,7 +169,7 @@ SPECS = (
                   bound_fn=fallback_bound,
                   bound_formula="2(n − 1) + (m − n + 1)(n + 2) + (3.1) + (3.2), ours: Algorithm 6.7's bound for "
                                 "phase I and Algorithm 3.1's (§3.5.2) for phase II, behind O(m²n) (§6.3.3)",
-                  explorer=FallbackThreadExplorer,
-                  parameters=(Parameter("thread-length", LENGTH.help, default=2, minimum=1),),
+                  explorer=FallbackThreadExplorer, changes=f"phase I is thread-circumference's steps: {_SKIPS}",
+                  parameters=(Parameter("thread-length", LENGTH.help, default=2, minimum=1, maximum=MAX_THREAD),),
                   kit_fn=lambda n, m, opts: Kit(thread=opts["thread-length"]), **_ROBOT),
 )

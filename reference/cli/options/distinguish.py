@@ -6,6 +6,7 @@ from topomark.reference.cli.args import MAX_JOBS
 from topomark.reference.cli.facts import fact
 from topomark.reference.cli.options import add_marker_bounds
 from topomark.reference.cli.parser import Later
+from topomark.reference.worstcase.limits import MAX_WORLDS, degree_table
 
 __all__ = ["register"]
 
@@ -26,7 +27,11 @@ def register(sub) -> None:
                                    "interrupted. A resumed census verifies every shard file (checksums, census "
                                    "parameters, code version) before trusting it: a damaged task or shard is "
                                    "computed again (said on stderr); a damaged, older-format or other census's "
-                                   "manifest is exit 2 naming it. Worker processes die with the census.")
+                                   "manifest is exit 2 naming it; a shard file that is not a regular file (a FIFO, "
+                                   "a device) is exit 2 naming it. Worker processes die with the census. At most "
+                                   f"{MAX_WORLDS:,} worlds are enumerated at the largest n, so the largest "
+                                   f"--max-degree per --max-vertices is {degree_table()} (exit 2 past it, before "
+                                   "work).")
     add_marker_bounds(q, fact("enumerate_max_vertices"))
     q.add_argument("--jobs", type=int, default=1, metavar="N", help=f"worker processes, 1 to {MAX_JOBS} (default 1)")
     q.add_argument("--shards", metavar="DIR", help="keep the map/reduce shards in DIR; a killed census run again "

@@ -25,9 +25,10 @@ def register(sub) -> None:
     p.add_argument("--lighthouse", default=None, metavar="NAME",
                    help=f"how v0 is marked: {', '.join(fact('lighthouses'))} (default directional-vertex, Algorithm 3.1's; "
                         "for Algorithm 3.1 and the Chapter 4 enhancements only)")
-    for name, text, default, takers in fact("parameters"):
+    for name, text, default, takers in fact("parameters"):  # every algorithm taking --NAME, each its default
+        own = "" if "(default " in takers else f"; default {default}"  # each taker's own default, where they differ
         p.add_argument(f"--{name}", dest=f"param_{name.replace('-', '_')}", metavar="VALUE",
-                       help=f"{text} (for {takers}; default {default})")
+                       help=f"{text} (for {takers}{own})")
     p.add_argument("--policy", action="append", default=[], metavar="KIND=NAME",
                    help=f"edge={'|'.join(fact('edge_policies'))}, hypothesis={'|'.join(fact('hypothesis_policies'))}, "
                         f"path={'|'.join(fact('path_policies'))}; a bare NAME sets the edge policy (repeatable; only the "

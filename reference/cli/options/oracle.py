@@ -139,7 +139,9 @@ def _protocol_options(p) -> None:
     p.add_argument("--protocol", type=int, choices=(1, 2), metavar="1|2",
                    help="the protocol version spoken to the program (default 1; 2 with --kit)")
     p.add_argument("--kit", metavar="JSON", help="the program's marker kit, e.g. '{\"undirected-edge\": 3}' "
-                                                  "(implies --protocol 2; default {\"directional-vertex\": 1})")
+                                                  "(implies --protocol 2; default {\"directional-vertex\": 1}; at "
+                                                  f"most {fact('max_marker_count'):,} markers of a kind and a thread "
+                                                  f"of at most {fact('max_thread'):,} edges)")
 
 
 def _limits(p) -> None:

@@ -24,7 +24,8 @@ def register(sub) -> None:
     p.add_argument("--show", metavar="FILE", help="summarise a world file instead")
     p.add_argument("--draw", metavar="GENERATOR_OR_FILE",
                    help="draw a world (a generator or a world file) to -o FILE, .svg or .png by its suffix (PNG needs "
-                        "matplotlib): vertex names, exit indices clockwise, markers, the start and the edge it faces")
+                        "matplotlib): vertex names, exit indices clockwise, markers, the start and the edge it faces; at most "
+                        f"{fact('draw_max_vertices'):,} vertices (a larger world is refused, exit 2)")
     p.add_argument("--json", action="store_true", help="machine-readable output")
     p.set_defaults(handler=Later("cmd_world", "world_command"))
     q = sub.add_parser("iso",

@@ -8,9 +8,10 @@ from topomark.reference.cli.facts import fact
 from topomark.reference.cli.options import add_force
 from topomark.reference.cli.parser import Later
 
-__all__ = ["register", "MAX_EXHAUSTIVE"]
+from topomark.reference.worstcase.limits import (MAX_EVALUATIONS, MAX_EXHAUSTIVE, MAX_SEARCH_PRODUCT,
+                                                 MAX_SEARCH_VERTICES, MAX_WORLDS, degree_table)
 
-MAX_EXHAUSTIVE = 8  # the census's enumeration reaches n = 8 (topomark.proofs.enumerate.MAX_VERTICES)
+__all__ = ["register", "MAX_EXHAUSTIVE"]
 
 
 def register(sub) -> None:
@@ -23,7 +24,9 @@ def register(sub) -> None:
     p.add_argument("--policy", action="append", default=[], metavar="KIND=NAME",
                    help="edge, hypothesis or path policy, as for explore (repeatable)")
     p.add_argument("--max-vertices", type=int, metavar="N", help=f"largest world size (exhaustive: 2..{MAX_EXHAUSTIVE})")
-    p.add_argument("--max-degree", type=int, default=4, metavar="D", help="largest vertex degree (default 4)")
+    p.add_argument("--max-degree", type=int, default=4, metavar="D",
+                   help=f"largest vertex degree (default 4); at most {MAX_WORLDS:,} worlds are enumerated at the "
+                        f"largest n, so the largest degree per --max-vertices is {degree_table()}")
     p.add_argument("--min-vertices", type=int, default=2, metavar="M", help="smallest world size (default 2)")
     p.add_argument("--jobs", type=int, default=1, metavar="N", help=f"worker processes, 1 to {MAX_JOBS} (default 1)")
     p.add_argument("--scheduler", metavar="ADDRESS", help="run the tasks on a Dask cluster (an address, or 'local')")
@@ -46,11 +49,15 @@ def register(sub) -> None:
 
 def add_search_arguments(p) -> None:
     g = p.add_argument_group("adversarial search (--search)")
-    g.add_argument("--search", action="store_true", help="search worlds past exhaustive sizes for a bad one")
+    g.add_argument("--search", action="store_true", help="search worlds past exhaustive sizes for a bad one "
+                   "(the exhaustive search's options --max-vertices, --min-vertices, --jobs, --scheduler, --shards, "
+                   "--sample and --cross-check are refused with it)")
     g.add_argument("--vertices", type=int, nargs="+", default=[20], metavar="N",
-                   help="world sizes to search (default 20)")
+                   help=f"world sizes to search (default 20), 3..{MAX_SEARCH_VERTICES:,}")
     g.add_argument("--evaluations", type=int, default=400, metavar="K",
-                   help="runs per size for the search, and as many random worlds (default 400)")
+                   help=f"runs per size for the search, and as many random worlds (default 400), 1..{MAX_EVALUATIONS:,}; "
+                        f"each size times K at most {MAX_SEARCH_PRODUCT:,} (a quarter of the runs' worlds are held at "
+                        "once)")
     g.add_argument("--objective", choices=fact("objectives"), default="cost",
                    help="what to maximise: cost, cost-per-m, or ratio (cost / the exact bound)")
     g.add_argument("--world-family", choices=("lattice-hole",),

@@ -6,6 +6,8 @@
   readable);
 * :mod:`.export` — writing a suite with topomark's own checked runs;
 * :mod:`.lint` — checking a suite, every trace replayed;
+* :mod:`.judgement` — whose a case's bound is, and the two judgements: FAIL above a bound of the thesis's
+  listing, a difference above topomark's variant;
 * :mod:`.runner` — running an external implementation against it through
   ``topomark/protocol@1`` or ``@2`` and comparing it with the reference of the
   same algorithm.

@@ -6,7 +6,9 @@ test vectors, :func:`export` writes a self-describing, versioned directory
 Algorithm 3.1, topomark's checked run under each named policy (trace and
 map; the cost in edge traversals, §3.1.2); and for every algorithm chosen
 (:func:`~topomark.reference.oracle.conformance.cases.suite_algorithms`), each
-case's kit, bound, expected outcome and topomark's own run of that algorithm
+case's kit, bound (with ``bound_source``: whose it is and what it bounds, the thesis's listing or topomark's
+variant, :mod:`~topomark.reference.oracle.conformance.judgement`), expected outcome and topomark's own run of
+that algorithm (``variant``: the listing as written, or topomark's variant of it, and what that changes)
 (:func:`~topomark.reference.run.explore.explore` with its trace): its cost,
 its marker operations by kind, its trace and — when it ends with one — its
 map, markers included.  The suite is linted before :func:`export` returns.
@@ -26,6 +28,7 @@ from topomark.spec.worldfile import dumps_world, schema
 from topomark.reference.algorithms.registry import AlgorithmSpec
 from topomark.reference.oracle.conformance.cases import (POLICIES, algorithm_cases, default_cases, family_of,
                                                          suite_algorithms)
+from topomark.reference.oracle.conformance.judgement import spec_bound_source
 from topomark.reference.oracle.conformance.lint import lint
 from topomark.reference.oracle.conformance.manifest import SUITE_FORMAT, SUITE_VERSION
 from topomark.reference.oracle.protocol import PROTOCOL, PROTOCOL2
@@ -107,7 +110,8 @@ def _export_suite(root: Path, spec: AlgorithmSpec) -> dict[str, Any]:
     """One algorithm's suite: its cases, each with topomark's checked run of it."""
     (root / "algorithms" / spec.name).mkdir(parents=True, exist_ok=True)
     return {"algorithm": spec.name, "family": family_of(spec), "thesis": spec.thesis, "bound": spec.bound,
-            "bound_note": spec.bound_note, "markers": spec.markers, "protocol": PROTOCOL2,
+            "bound_note": spec.bound_note, "bound_source": spec_bound_source(spec), "variant": spec.variant_json(),
+            "markers": spec.markers, "protocol": PROTOCOL2,
             "cases": [entry for case in algorithm_cases(spec) if (entry := _export_algorithm_case(root, spec, *case))]}
 
 
@@ -132,6 +136,7 @@ def _export_algorithm_case(root: Path, spec: AlgorithmSpec, name: str, world_nam
     opts = spec.parse_options(options)
     return {"name": name, "description": text, "world": _write_world(root, world_name, world),
             "n": world.n, "m": world.m, "options": options, "kit": spec.kit_for(world.n, world.m, opts).to_json(),
-            "bound": spec.bound_for(world.n, world.m), "expected": out.outcome, "reason": out.reason,
+            "bound": spec.bound_for(world.n, world.m), "bound_source": spec_bound_source(spec),
+            "variant": spec.variant_json(), "expected": out.outcome, "reason": out.reason,
             "reference": {"cost": out.cost, "marker_operations": dict(out.marker_operations), "trace":
                           f"{base}.trace.jsonl", "map": map_rel}}

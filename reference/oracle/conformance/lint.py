@@ -9,8 +9,8 @@ every listed file present, every reference trace verified by
 :func:`topomark.reference.replay.replay.replay` with the cost the manifest
 claims, every Algorithm 3.1 reference map isomorphic to its world.  For an
 algorithm's suite (``@2``) also: the algorithm is registered, the case's kit
-is the one the registry gives it on that world with those options, its bound
-the registry's, the trace's kit that kit and its end the expected outcome, and
+is the one the registry gives it on that world with those options, its bound,
+whose the bound is and the variant its run was made with the registry's (when the suite records them), the trace's kit that kit and its end the expected outcome, and
 a map (where the run ends with one) the world's embedded graph.
 """
 
@@ -27,6 +27,7 @@ from topomark.spec.worldfile import FORMAT as WORLD_FORMAT
 from topomark.spec.worldfile import MAX_WORLD_BYTES, loads_world, schema
 
 from topomark.reference.algorithms.registry import algorithm_spec
+from topomark.reference.oracle.conformance.judgement import spec_bound_source
 from topomark.reference.oracle.conformance.manifest import bad, load_manifest
 from topomark.reference.replay.replay import load_trace, replay
 from topomark.reference.run.map_check import check_map
@@ -138,6 +139,7 @@ def _lint_algorithm_case(root: Path, algorithm: str, case: dict, validate, liste
     if case["bound"] != spec.bound_for(world.n, world.m):
         bad(root, f"{where}: manifest bound {case['bound']} but {algorithm}'s bound here is "
                   f"{spec.bound_for(world.n, world.m)}")
+    _check_provenance(root, where, case, spec)
     ref = case["reference"]
     if ref["map"] is not None:
         map_ = _load_checked(root, ref["map"], validate, listed, where)
@@ -146,6 +148,19 @@ def _lint_algorithm_case(root: Path, algorithm: str, case: dict, validate, liste
     _replayed(root, world, ref["trace"], ref["cost"], where, listed, replay_traces)
     if replay_traces:
         _check_ends(root, ref["trace"], case, kit, where, algorithm)
+
+
+def _check_provenance(root: Path, where: str, case: dict, spec: Any) -> None:
+    """Whose the bound is (``bound_source.source``) and which explorer made the run (``variant.follows``), where
+    the suite records them, are the registry's (their prose may differ between versions)."""
+    source, want = case.get("bound_source"), spec_bound_source(spec)
+    if "bound_source" in case and (source and source["source"]) != (want and want["source"]):
+        bad(root, f"{where}: manifest bound_source {source and source['source']!r} but {spec.name}'s bound is "
+                  f"{spec.bound_whose or 'none'}")
+    variant = case.get("variant")
+    if variant is not None and variant["follows"] != spec.variant_json()["follows"]:
+        bad(root, f"{where}: manifest variant follows {variant['follows']} but {spec.name}'s run is made with "
+                  f"{spec.variant_json()['follows']}")
 
 
 def _check_ends(root: Path, rel: str, case: dict, kit: dict, where: str, case_algorithm: str) -> None:

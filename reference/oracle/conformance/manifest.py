@@ -12,7 +12,10 @@ one reference run per named policy, §3.3).  ``@2`` (version 2.x) holds the same
 a world, the kit that algorithm is given on it (the registry's
 ``kit_for(n, m, options)``, §6.2.1), the bound, the expected outcome
 (``correct``, or ``failed`` where the kit runs out), and topomark's reference run
-(cost, marker operations by kind, trace, map).  Both stay readable.
+(cost, marker operations by kind, trace, map).  From version 2.1 each such case also names whose its bound is
+(``bound_source``: the thesis's, or topomark's for the listing or for its own variant) and the variant its
+reference run was made with (``variant``); a 2.0 suite without them stays readable.  Both formats stay
+readable.
 """
 
 from __future__ import annotations
@@ -31,7 +34,7 @@ __all__ = ["SUITE_FORMAT", "SUITE_VERSION", "SUITE_FORMAT_1", "SUITE_VERSION_1",
            "load_manifest", "check_manifest", "bad"]
 
 SUITE_FORMAT = "topomark/conformance@2"
-SUITE_VERSION = "2.0.0"
+SUITE_VERSION = "2.1.0"  # 2.1: each algorithm case says whose its bound is and which variant made its run
 SUITE_FORMAT_1 = "topomark/conformance@1"
 SUITE_VERSION_1 = "1.0.0"
 VERSIONS = {SUITE_FORMAT_1: SUITE_VERSION_1, SUITE_FORMAT: SUITE_VERSION}
@@ -174,6 +177,7 @@ def _check_algorithm_case(root: Path, where: str, case: dict) -> None:
         field(root, f"{where}.{key}", case.get(key), isinstance(case.get(key), dict), "an object")
     if case.get("bound") is not None:
         count(root, f"{where}.bound", case.get("bound"))
+    _check_provenance(root, where, case)
     expected = case.get("expected")
     field(root, f"{where}.expected", expected, expected in OUTCOMES, f"one of {', '.join(OUTCOMES)}")
     reason = case.get("reason")
@@ -192,3 +196,20 @@ def _check_algorithm_case(root: Path, where: str, case: dict) -> None:
     else:
         field(root, f"{where}.reference.map", ref.get("map"), ref.get("map") is None,
               "null (a run that fails has no map)")
+
+
+def _check_provenance(root: Path, where: str, case: dict) -> None:
+    """Version 2.1's ``bound_source`` (an object naming its ``source``, null exactly when ``bound`` is) and
+    ``variant`` (an object whose ``follows`` is the listing or topomark's variant); a 2.0 case has neither."""
+    if "bound_source" in case:
+        source = case["bound_source"]
+        ok = source is None if case.get("bound") is None else (
+            isinstance(source, dict) and source.get("source") in ("thesis", "listing", "variant")
+            and isinstance(source.get("binds"), bool) and isinstance(source.get("whose"), str))
+        field(root, f"{where}.bound_source", source, ok, "null without a bound, else an object {source: thesis|"
+                                                         "listing|variant, author, bounds, binds, whose, formula}")
+    if "variant" in case:
+        variant = case["variant"]
+        field(root, f"{where}.variant", variant, isinstance(variant, dict) and variant.get("follows") in
+              ("the thesis's listing", "topomark's variant"), "an object {algorithm, follows: \"the thesis's "
+              "listing\" or \"topomark's variant\", changes, listing_entry}")

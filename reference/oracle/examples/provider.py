@@ -140,7 +140,7 @@ def main(argv):
     path, options = argv[0], dict(zip(argv[1::2], argv[2::2]))
     version = int(options.get("--protocol", "1"))
     kit = json.loads(options.get("--kit", '{"directional-vertex": 1}'))
-    world = World(json.load(open(path)), kit)
+    world = World(json.load(open(path, encoding="utf-8")), kit)
     hello = {"type": "hello", "protocol": "topomark/protocol@%d" % version, "role": "world",
              "signature": world.signature()}
     hello["markers" if version == 1 else "kit"] = kit

@@ -1,0 +1,208 @@
+"""Whether a program's observations determine its map: no credit for a guess (thesis §3.1).
+
+The robot must *build* a map extended-isomorphic to the world from what it senses (§3.1: degrees, markers, the
+thread), so a right map is not enough: the observations the program made must leave it no other answer.  A program
+that sends a two-vertex map before moving has the right map of a two-vertex chain, but a three-vertex chain would
+have shown it the same thing.
+
+The rule, as the oracle applies it after a map is found extended-isomorphic to the world: the program's actions
+(motions, marker and thread operations, in order) are replayed on other worlds; a world on which every signature the
+robot senses is the same as in the world played (the robot's own language: :class:`~topomark.spec.signature.
+Signature` compared as sensed) and which is not isomorphic to the map is a **witness** that the map was a guess, and
+the verdict is ``fail`` with reason ``guess``.  The worlds tried:
+
+* **an untraversed edge subdivided.**  An edge the robot never crossed is replaced by a path of two edges through a
+  new vertex of degree 2: every vertex the robot visits keeps its degree and its exits, so nothing it senses
+  changes, and the world has one vertex more than the map.  Any map sent before every edge was crossed fails.
+* **a two-fold cover.**  Two copies of the world with one edge's ends crossed between the copies (the 2-lift with
+  voltage 1 on that edge, tried for each edge in turn).  The robot's walk lifts to it from the first copy of the
+  start; where the program never checked a return (a marker it dropped, seen again, tells the copies apart), the
+  cover shows it the same signatures, and it has twice the vertices of the map.
+
+Decision (the thesis is silent on how an oracle should tell knowledge from luck): the check is **sound** — a guess
+is failed only with a witness world, replayed step by step by the simulator that played the run and seen to give
+every signature, which is not isomorphic to the map (it has more vertices) — and not complete: a map can be
+undetermined in ways no subdivision or two-fold cover shows (a program that knows the vertex count, which no
+protocol kit gives, would need others).  The covers' replays are bounded by :data:`MAX_REPLAY_STEPS` actions in
+all; a run past that bound is judged on the subdivisions alone, and :class:`Determination` says so
+(``complete=False``).
+
+Examples
+--------
+>>> from topomark.reference.worlds.deterministic import chain, cycle
+>>> two = chain(2)  # a program that sends the two-vertex chain before it moves
+>>> found = determination(two, two.start_state(), LIGHTHOUSE, [], two)
+>>> found.witness.n, found.how
+(3, 'subdivided')
+>>> three = cycle(3)  # once round a triangle, never dropping the marker: a hexagon looks the same
+>>> found = determination(three, three.start_state(), LIGHTHOUSE, [1, 1, 1], three)
+>>> found.witness.n, found.how
+(6, 'two-fold cover')
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Sequence, Union
+
+from topomark.spec.errors import CheckFailure, InvalidInput, InvalidWorld
+from topomark.spec.kit import Kit, MarkerOp, ThreadOp
+from topomark.spec.signature import Signature
+from topomark.spec.world import Start, World
+
+from topomark.reference.run.simulator import Simulator
+
+__all__ = ["Action", "Determination", "determination", "agrees", "subdivided", "two_fold_cover",
+           "MAX_REPLAY_STEPS", "LIGHTHOUSE", "REWIND"]
+
+REWIND = "rewind"  # the @2 thread operation that moves back along the thread
+Action = Union[int, MarkerOp, ThreadOp, str]
+"""One thing the program did: a motion (int), a marker or thread operation, or :data:`REWIND`."""
+LIGHTHOUSE = Kit(vertex=1, directional=True)  # Algorithm 3.1's kit, for the example
+MAX_REPLAY_STEPS = 2_000_000  # actions replayed on two-fold covers, over all of them, per judged run
+
+
+@dataclass(frozen=True)
+class Determination:
+    """What the replays found: a witness world (None: none found), how it was made, what was tried."""
+
+    witness: World | None
+    how: str | None  # "subdivided" or "two-fold cover"
+    edge: tuple[str, str] | None  # the edge subdivided, or crossed between the copies
+    candidates: int  # worlds replayed
+    complete: bool  # False: the covers' replay bound was reached before every edge was tried
+
+    def words(self, map_n: int) -> str:
+        """Why the map was a guess; without a witness, that what the robot sensed determined the map."""
+        if self.witness is None:
+            return (f"determined by what the program sensed (no witness of a guess among {self.candidates} worlds "
+                    f"replayed{'' if self.complete else ', the replay bound reached'})")
+        u, w = self.edge or ("?", "?")
+        why = (f"the robot never crossed the edge {u}–{w}; with a vertex added on it" if self.how == "subdivided"
+               else f"the robot never told apart the two copies of a two-fold cover of the world (the edge {u}–{w} "
+                    "crossed between them); on it")
+        return (f"the map is right, but the program's observations do not determine it: {why}, every signature the "
+                f"robot sensed is the same, and that world has {self.witness.n} vertices, not {map_n} (the witness)")
+
+    def to_json(self) -> dict:
+        from topomark.spec.worldfile import world_to_json
+
+        return {"witness": None if self.witness is None else world_to_json(self.witness), "how": self.how,
+                "edge": None if self.edge is None else list(self.edge), "candidates": self.candidates,
+                "complete": self.complete}
+
+
+def _act(sim: Simulator, action: Action) -> Signature:
+    """Do ``action`` in ``sim``; the signature sensed after it."""
+    robot = sim.robot()
+    if isinstance(action, int):
+        return robot.move(action, "other")
+    if isinstance(action, str):
+        assert action == REWIND, f"an action is a motion, an operation or {REWIND!r}"
+        return robot.rewind("other")
+    robot.operate(action)
+    return robot.sense()
+
+
+def agrees(candidate: World, at: tuple[str, int], truth: World, start: tuple[str, int], kit: Kit,
+           actions: Sequence[Action], budget: int | None = None) -> tuple[bool | None, int]:
+    """Whether ``actions`` sense the same signatures on ``candidate`` from ``at`` as on ``truth`` from ``start``
+    (both without markers), and how many actions were replayed; None when ``budget`` actions were replayed without
+    a difference and more remain."""
+    real, other = Simulator(truth, start, kit), Simulator(candidate, at, kit)
+    if str(real.robot().sense()) != str(other.robot().sense()):
+        return False, 0
+    for done, action in enumerate(actions):
+        if budget is not None and done >= budget:
+            return None, done
+        seen = _act(real, action)
+        try:
+            if str(_act(other, action)) != str(seen):
+                return False, done + 1
+        except (CheckFailure, InvalidInput):  # the candidate refuses what the world allowed: a difference
+            return False, done + 1
+    return True, len(actions)
+
+
+def _crossed(truth: World, start: tuple[str, int], kit: Kit, actions: Sequence[Action]) -> set[frozenset]:
+    """The edges the robot crossed, each as the set of its two darts (vertex, exit)."""
+    sim, crossed = Simulator(truth, start, kit), set()
+    for action in actions:
+        before = sim.cost
+        _act(sim, action)
+        if sim.cost != before:
+            w, j = sim.state
+            u = truth.rotation[w][j]
+            crossed.add(frozenset({(w, j), (u, truth.index(u, w))}))
+    return crossed
+
+
+def _edges(world: World) -> list[tuple[str, int, str, int]]:
+    return [(v, i, w, world.index(w, v)) for v in world.vertices for i, w in enumerate(world.rotation[v])
+            if (v, i) < (w, world.index(w, v))]
+
+
+def _fresh(taken, name: str) -> str:
+    while name in taken:
+        name += "'"
+    return name
+
+
+def subdivided(world: World, start: tuple[str, int], u: str, i: int) -> World:
+    """``world`` (no markers) with the edge at exit ``i`` of ``u`` replaced by two edges through a new vertex;
+    the robot starts where ``start`` says, facing the same exit."""
+    w = world.rotation[u][i]
+    j = world.index(w, u)
+    x = _fresh(world.rotation, f"{u}|{w}")
+    rotation = {v: list(ns) for v, ns in world.rotation.items()}
+    rotation[u][i], rotation[w][j] = x, x
+    rotation[x] = [u, w]
+    return World(rotation, (), Start(start[0], rotation[start[0]][start[1]]))
+
+
+def two_fold_cover(world: World, start: tuple[str, int], u: str, i: int) -> World | None:
+    """Two copies of ``world`` (no markers) with the edge at exit ``i`` of ``u`` crossed between them, the robot
+    starting in the first copy as ``start`` says; None when the cover is not connected (the edge is a bridge)."""
+    w = world.rotation[u][i]
+    crossed = {(u, w), (w, u)}
+    taken = set(world.rotation)
+    names = {(v, s): _fresh(taken, f"{v}~{s}") for v in world.vertices for s in (0, 1)}
+    rotation = {names[v, s]: [names[x, s ^ ((v, x) in crossed)] for x in world.rotation[v]]
+                for v in world.vertices for s in (0, 1)}
+    at = names[start[0], 0]
+    try:
+        return World(rotation, (), Start(at, rotation[at][start[1]]))
+    except InvalidWorld:  # two components: the edge is a bridge
+        return None
+
+
+def determination(truth: World, start: tuple[str, int], kit: Kit, actions: Sequence[Action], map_: World,
+                  max_steps: int = MAX_REPLAY_STEPS) -> Determination:
+    """Look for a witness that ``map_`` (found extended-isomorphic to ``truth``) was a guess (module docstring).
+
+    ``truth`` is the world played, without markers; ``start`` its start state; ``actions`` what the program did.
+    """
+    crossed = _crossed(truth, start, kit, actions)
+    tried = 0
+    for u, i, w, j in _edges(truth):
+        if frozenset({(u, i), (w, j)}) in crossed:
+            continue
+        candidate = subdivided(truth, start, u, i)
+        tried += 1
+        if agrees(candidate, start, truth, start, kit, actions)[0]:
+            assert candidate.n != map_.n, "a witness has more vertices than the map"
+            return Determination(candidate, "subdivided", (u, w), tried, True)
+    budget = max_steps
+    for u, i, w, j in _edges(truth):
+        cover = two_fold_cover(truth, start, u, i)
+        if cover is None:
+            continue
+        tried += 1
+        same, used = agrees(cover, cover.start_state(), truth, start, kit, actions, budget)
+        if same is None:
+            return Determination(None, None, None, tried, False)
+        budget -= used
+        if same:
+            assert cover.n != map_.n, "a witness has more vertices than the map"
+            return Determination(cover, "two-fold cover", (u, w), tried, True)
+    return Determination(None, None, None, tried, True)
