@@ -38,7 +38,7 @@ from topomark.reference.explorers.policies import Policies
 from topomark.reference.worlds import generators as g
 from topomark.reference.worlds.worst_cases import worst_case_worlds
 
-__all__ = ["POLICIES", "FAMILIES", "default_cases", "algorithm_cases", "family_of", "suite_algorithms", "started"]
+__all__ = ["POLICIES", "FAMILIES", "default_cases", "algorithm_cases", "accepts", "family_of", "suite_algorithms", "started"]
 
 POLICIES: dict[str, Policies] = {  # the default, and each other named policy of policies.py alone
     "default": Policies(),
@@ -123,25 +123,35 @@ def _algorithm_worlds() -> list[tuple[str, str, World]]:
     )]
 
 
+_TIGHT = {  # an option that sizes the kit ↦ (its smallest value, the case's name suffix, what the kit then is)
+    "markers": (lambda p: max(2, p.minimum or 0), "markers", "markers (--markers {k}): an exact budget that may run "
+                "out, when the algorithm must report failure (§6.2.1), or, for Case 5, force phase II"),
+    "thread-length": (lambda p: 1, "thread", "edge of thread (--thread-length {k}): a thread too short for the world, "
+                      "when the algorithm must report failure (§6.3.2)"),
+}
+
+
 def algorithm_cases(spec: AlgorithmSpec) -> list[tuple[str, str, str, World, dict[str, Any]]]:
     """(name, world name, description, world, options) of ``spec``'s suite: the shared worlds with the registry's
-    default kit, and a smallest kit where the kit's size is an option (``--markers``).  An algorithm for a class
+    default kit, and a smallest kit where the kit's size is an option (``--markers``, ``--thread-length``: the
+    export keeps such a case only where its run goes a way the others do not,
+    :mod:`~topomark.reference.oracle.conformance.coverage`).  An algorithm for a class
     of worlds (its registration's ``check_world``) has a case on the shared worlds it accepts only (a tree walk:
     the chain); one that accepts none of them has no suite (:func:`suite_algorithms`)."""
     cases: list[tuple[str, str, str, World, dict[str, Any]]] = [
         (name, name, f"{text}, with the kit {spec.name} is given on it", world, {})
-        for name, text, world in _algorithm_worlds() + _stress_cases([spec.name]) if _accepts(spec, world)]
-    markers = next((p for p in spec.parameters if p.name == "markers"), None)
-    if markers is not None and _accepts(spec, _algorithm_worlds()[2][2]):
-        k = max(2, markers.minimum or 0)
-        name, text, world = _algorithm_worlds()[2]
-        cases.append((f"{name}-markers-{k}", name, f"{text} with only {k} markers (--markers {k}): an exact budget that "
-                                            "may run out, when the algorithm must report failure", world,
-                      {"markers": k}))
+        for name, text, world in _algorithm_worlds() + _stress_cases([spec.name]) if accepts(spec, world)]
+    name, text, world = _algorithm_worlds()[2]
+    for p in spec.parameters:
+        if p.name in _TIGHT and accepts(spec, world):
+            smallest, suffix, words = _TIGHT[p.name]
+            k = smallest(p)
+            cases.append((f"{name}-{suffix}-{k}", name, f"{text} with only {k} {words.format(k=k)}", world,
+                          {p.name: k}))
     return cases
 
 
-def _accepts(spec: AlgorithmSpec, world: World) -> bool:
+def accepts(spec: AlgorithmSpec, world: World) -> bool:
     """Whether ``spec``'s registration accepts ``world`` with its default options (``check_world``)."""
     if spec.check_world is None:
         return True
