@@ -80,7 +80,7 @@ SPECS = (
         deterministic=True, options=("markers",), checks=MARKER_MAP_CHECKS, explorer=UndirectedSaving,
         uses_lighthouse=False, parameters=(MARKERS,), kit_fn=lambda n, m, o: Kit(edge=_count(n, o)),
         marker_bound_fn=lambda n, m: sum_to(n - 1), family="robot", status="implemented, expected to fail",
-        ways=("correct", "failed-out-of-markers", "failed-marks-ambiguous", "drop-trip"),
+        ways=("correct", "failed-out-of-markers", "failed-marks-ambiguous", "drop-trip", "wrong-map"),
         status_reason="the marked edges 'may not always identify a visited vertex and its incident edges' "
                       "(§6.2.1 Case 4): two neighbours whose only marked edge joins them show the same signature "
                       "(Figure 6.10(b)); on figure-6.10 the run ends failed (the marks fit two edges)"),

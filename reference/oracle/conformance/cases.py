@@ -12,11 +12,12 @@ path choices open).
 C4, the 2×3 lattice, K4, a chiral world, a chain) under the kit the registry gives that algorithm on
 each (``kit_for(n, m, options)``: the thesis's exact budgets, e.g. Case 3a's
 Σ_{k=1}^{n−1} k), and, for an algorithm whose kit size is an
-option (``--markers``), the 2×3 lattice with the smallest kit it takes — where
-most run out of markers and must report failure (§6.2.1: "running out is the
-``failed`` outcome"); and, as stress cases, the worst worlds ``topomark
-worst-case`` found for it (:mod:`topomark.reference.worlds.worst_cases`,
-§7.2).  Only deterministic algorithms have suites: a reference
+option (``--markers``, ``--thread-length``), the 2×3 lattice with the smallest kit it takes — where
+most run out of markers or thread and must report failure (§6.2.1: "running out is the
+``failed`` outcome"; §6.3.2), and where Case 5 is forced into phase II; and, as stress cases, the worst worlds
+``topomark worst-case`` found for it (:mod:`topomark.reference.worlds.worst_cases`,
+§7.2).  The export keeps the cases that cover the ways the algorithm's runs can go
+(:mod:`~topomark.reference.oracle.conformance.coverage`).  Only deterministic algorithms have suites: a reference
 run of a randomised one fixes nothing a client could be held to.
 
 :data:`FAMILIES` groups the algorithms for ``--family``: a family's members

@@ -11,7 +11,7 @@ no client can be held to (``in_suite`` False: a wrong map, a cap).
 
 from __future__ import annotations
 
-from typing import Any, Iterable
+from typing import Any, Iterable, cast
 
 from topomark.spec.errors import CheckFailure
 from topomark.spec.world import World
@@ -32,16 +32,20 @@ def reference_runs(spec: AlgorithmSpec, cases: Iterable[Case] | None = None) -> 
 
     Every run must end ``correct`` or ``failed``: a violation, or any other end, is topomark's own failure
     (:class:`CheckFailure`)."""
-    runs = [_run(spec, case) for case in (algorithm_cases(spec) if cases is None else cases)]
+    runs = [cast(tuple, _run(spec, case)) for case in (algorithm_cases(spec) if cases is None else cases)]
     registered = {way for case, _, ways in runs if not case[4] for way in ways}
     runs = [run for run in runs if not run[0][4] or set(run[2]) - registered]
     return runs + _filling(spec, runs)
 
 
-def _run(spec: AlgorithmSpec, case: Case) -> tuple[Case, Outcome, list[str]]:
+def _run(spec: AlgorithmSpec, case: Case, strict: bool = True) -> tuple[Case, Outcome, list[str]] | None:
+    """The case, topomark's checked run of it and the ways it went; a run that ends neither correct nor failed is
+    topomark's own failure (``strict``) or, for a world only tried (:func:`_filling`), None."""
     name, _, _, world, options = case
     out = explore(world, spec, options=options, check_mode="incremental")
     if out.violation is not None or out.outcome not in ("correct", "failed"):
+        if not strict:
+            return None
         raise CheckFailure(f"the reference run of {spec.name} on {name} ended {out.outcome}: "
                            f"{out.violation or out.reason}")
     return case, out, ways_of(out, spec.ways)
@@ -49,17 +53,18 @@ def _run(spec: AlgorithmSpec, case: Case) -> tuple[Case, Outcome, list[str]]:
 
 def _filling(spec: AlgorithmSpec, runs: list[tuple[Case, Outcome, list[str]]]) -> list[tuple[Case, Outcome, list[str]]]:
     """Where ``runs`` leave a declared way uncovered, the first of Algorithm 3.1's worlds (in
-    :func:`~.cases.default_cases`' order, with the registered kit) whose run goes it, until none is left or the
-    worlds are used up (Enhancement 5's sensing rejects no hypothesis on the small shared worlds, §4.3)."""
+    :func:`~.cases.default_cases`' order, with the registered kit; none that carries a marker already) whose run goes it, until none is left or the
+    worlds are used up (Enhancement 5's sensing rejects no hypothesis on the small shared worlds, §4.3).  A world
+    whose run ends with a wrong map is passed over: no client is held to one."""
     missing = set(uncovered(spec, [ways for _, _, ways in runs]))
     have = {case[0] for case, _, _ in runs}
     added: list[tuple[Case, Outcome, list[str]]] = []
     for name, text, world in default_cases() if missing else ():
-        if name in have or not accepts(spec, world):
+        if name in have or world.markers or not accepts(spec, world):  # a kit algorithm drops its own markers
             continue
         run = _run(spec, (name, name, f"{text}, with the kit {spec.name} is given on it: the first world where its "
-                                      "run goes a way the shared worlds do not", world, {}))
-        if missing & set(run[2]):
+                                      "run goes a way the shared worlds do not", world, {}), strict=False)
+        if run is not None and missing & set(run[2]):
             added.append(run)
             missing -= set(run[2])
         if not missing:
