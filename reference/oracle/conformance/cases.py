@@ -9,7 +9,7 @@ every named policy of :data:`POLICIES` (§3.3 leaves the edge, hypothesis and
 path choices open).
 
 :func:`algorithm_cases` are one algorithm's: a few small worlds (the triangle,
-C4, the 2×3 lattice, K4, a chiral world, a chain) under the kit the registry gives that algorithm on
+C4, the 2×3 lattice, K4, a chiral world, a chain, a triangle with one leaf) under the kit the registry gives that algorithm on
 each (``kit_for(n, m, options)``: the thesis's exact budgets, e.g. Case 3a's
 Σ_{k=1}^{n−1} k), and, for an algorithm whose kit size is an
 option (``--markers``, ``--thread-length``), the 2×3 lattice with the smallest kit it takes — where
@@ -68,6 +68,10 @@ CHIRAL = World({"0": ("1", "2", "4"), "1": ("0", "2"), "2": ("1", "0", "3"), "3"
 """The smallest connected planar world (networkx's atlas) not extended-isomorphic to its mirror image: a map
 with every rotation reversed fails on it, where on the wheels, the cycles and K4 it would pass."""
 
+PAW = World({"0": ("1", "2", "3"), "1": ("0", "2"), "2": ("1", "0"), "3": ("0",)}, (), Start("1", "2"))
+"""A triangle with one leaf (the paw), entered away from the leaf: the shared world with exactly one place of
+degree 1, where §5.3's single-leaf search walks before it maps."""
+
 
 def started(world: World) -> World:
     """The world with an explicit start: its own, or its first vertex facing exit 0."""
@@ -121,6 +125,7 @@ def _algorithm_worlds() -> list[tuple[str, str, World]]:
         ("complete-4", "§3.5.3: the complete graph K4 (non-planar rotation)", g.complete(4)),
         ("chiral-5", "a triangle with a leaf at two of its corners: its mirror image is another world", CHIRAL),
         ("chain-6", "a chain of 6 vertices: a tree", g.chain(6)),
+        ("paw-4", "a triangle with one leaf, entered away from it", PAW),
     )]
 
 
