@@ -67,8 +67,8 @@ def test_every_world_and_map_is_valid_against_the_published_schema(suite):
     published = json.loads((suite / "schema" / "world.schema.json").read_text())
     validator = jsonschema.Draft202012Validator(published)
     files = list((suite / "worlds").glob("*.json")) + list((suite / "reference").rglob("*.map.json"))  # the
-    # algorithm suites use Algorithm 3.1's worlds of the same name, and add the chiral world
-    assert len(files) == len(manifest(suite)["cases"]) * (1 + len(conformance.POLICIES)) + 1
+    # algorithm suites use Algorithm 3.1's worlds of the same name, and add the chiral world and the paw
+    assert len(files) == len(manifest(suite)["cases"]) * (1 + len(conformance.POLICIES)) + 2
     for path in files:
         assert not list(validator.iter_errors(json.loads(path.read_text()))), path
 

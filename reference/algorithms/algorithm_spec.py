@@ -12,6 +12,8 @@ Every exact bound says **whose it is** (``bound_source``, :data:`BOUND_SOURCES`,
 thesis's, topomark's for the thesis's listing as written, or topomark's for its own variant; only the first two
 bind a conformance client (``bound_binds``).  ``changes`` says what the explorer changes relative to the listing
 (None: it follows it), ``listing_entry`` the entry that runs the listing literally, where there is one.
+``ways`` names the phases its runs can pass through and the outcomes they can end with
+(:mod:`~topomark.reference.algorithms.ways`, each with its thesis section and a predicate over a finished run).
 Two shapes of algorithm exist:
 
 * **lighthouse algorithms** (``uses_lighthouse=True``: Algorithm 3.1 and the
@@ -69,6 +71,7 @@ from topomark.reference.explorers.lighthouses import LIGHTHOUSES, Lighthouse, li
 from topomark.reference.explorers.policies import Policies
 from topomark.reference.algorithms.expectation import (CORRECT, EXPECTATIONS, FAILS_BY_DESIGN, broadest,
                                                        lighthouse_expectation)
+from topomark.reference.algorithms.ways import WAYS, check_ways
 
 __all__ = ["AlgorithmSpec", "Listed", "Parameter", "STATUSES", "BOUND_SOURCES", "CHECKS", "ALGORITHM_3_1_CHECKS", "MARKER_MAP_CHECKS", "STEPWISE_MAP_CHECKS"]
 
@@ -183,6 +186,7 @@ class AlgorithmSpec:
     bound_source: str = "variant"  # whose the exact bound is and what it bounds (BOUND_SOURCES)
     changes: str | None = None  # what the explorer changes relative to the thesis's listing (None: follows it)
     listing_entry: str | None = None  # the registered entry that follows the listing literally, if any
+    ways: tuple[str, ...] = ("correct",)  # the phases and outcomes its runs can go through (ways.WAYS)
 
     def __post_init__(self) -> None:
         if self.status not in (IMPLEMENTED, EXPECTED_TO_FAIL):
@@ -209,6 +213,7 @@ class AlgorithmSpec:
         if self.edge_policy is not None and (self.edge_policy not in EDGE_CHOICES or "edge" not in self.policy_kinds):
             raise ValueError(f"algorithm {self.name}: edge_policy {self.edge_policy!r} is a registered edge choice "
                              f"({', '.join(EDGE_CHOICES)}) of an algorithm that declares 'policy edge' in its options")
+        check_ways(self.name, self.ways)
         if self.bound_source not in BOUND_SOURCES:
             raise ValueError(f"algorithm {self.name}: bound_source {self.bound_source!r} is not one of {BOUND_SOURCES}")
         if self.bound_fn is not None and "cost-bound" not in self.checks:  # every exact bound is checked
@@ -363,7 +368,8 @@ class AlgorithmSpec:
                "bound_checked": self.bound_checked, "bound_note": self.bound_note, "status": self.status,
                "policies": self.policies_json(self.policies()), "bound_source": self.bound_source
                if self.bound_fn is not None else None, "bound_whose": self.bound_whose,
-               "bound_binds": self.bound_binds, **{k: v for k, v in self.variant_json().items() if k != "algorithm"}}
+               "bound_binds": self.bound_binds, "ways": {w: WAYS[w].to_json() for w in self.ways},
+               **{k: v for k, v in self.variant_json().items() if k != "algorithm"}}
         if self.status_reason:
             out["status_reason"] = self.status_reason
         out.update(self._expectation_json())

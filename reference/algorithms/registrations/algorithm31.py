@@ -102,7 +102,12 @@ def lighthouse_algorithm(name: str, thesis: str, explorer: Callable[..., Any], b
         dict(bound_bench="tables")
     return AlgorithmSpec(**{**dict(name=name, thesis=thesis, kit=_KIT, bound=bound, markers="1", deterministic=True,
                                    options=policy_options(edge_policy or "nearest"), checks=ALGORITHM_3_1_CHECKS,
-                                   explorer=explorer, edge_policy=edge_policy), **how, **fields})
+                                   explorer=explorer, edge_policy=edge_policy, ways=_WAYS), **how, **fields})
+
+
+_WAYS = ("correct", "hypothesis-rejected", "hypothesis-confirmed")
+"""How a run of Algorithm 3.1 (and of each Chapter 4 composition) goes: hypotheses rejected and confirmed (§3.3),
+ending with the map; a lighthouse search that gives up is the lighthouse strategy's way, not the algorithm's."""
 
 
 def _enhancement(name: str) -> AlgorithmSpec:

@@ -59,7 +59,7 @@ _FOOTPRINTS = footprint_spec(
     kind=Kit(either=1))
 
 SPECS = (
-    replace(_FOOTPRINTS, parameters=(), checks=STEPWISE_MAP_CHECKS),
+    replace(_FOOTPRINTS, parameters=(), checks=STEPWISE_MAP_CHECKS, ways=("correct",)),  # its kit never runs short
     AlgorithmSpec(
         name="labelled-dfs",
         thesis="§2.3.1, a labelled graph explored depth first, every place distinctly marked (Tables 2.2 and 2.3)",

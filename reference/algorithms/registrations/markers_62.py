@@ -66,19 +66,21 @@ SPECS = (
         bound="O(m·d_max)", markers="Σ_{k=1}^{n−1} k undirected V-markers (Σ_{k=1}^{n} k if the kit allows)",
         deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=VertexCounts,
         uses_lighthouse=False, parameters=(MARKERS,), kit_fn=lambda n, m, o: Kit(vertex=_count(n, o)),
-        marker_bound_fn=lambda n, m: sum_to(n), family="robot", bound_bench="table-6.1"),
+        marker_bound_fn=lambda n, m: sum_to(n), family="robot", bound_bench="table-6.1", ways=("correct", "failed-out-of-markers")),
     AlgorithmSpec(
         name="case-3b", thesis="§6.2.1 Case 3b (Figures 6.7, 6.8)", kit=Kit(edge=1),
         bound="O(m)", markers="Σ_{k=1}^{n−1} k undirected E-markers",
         deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=EdgeCounts,
         uses_lighthouse=False, parameters=(MARKERS,), kit_fn=lambda n, m, o: Kit(edge=_count(n, o)),
-        marker_bound_fn=lambda n, m: sum_to(n - 1), family="robot", bound_bench="table-6.1"),
+        marker_bound_fn=lambda n, m: sum_to(n - 1), family="robot", bound_bench="table-6.1",
+        ways=("correct", "failed-out-of-markers", "drop-trip")),
     AlgorithmSpec(
         name="case-3b-saving", thesis="§6.2.1 Case 3b saving markers like Algorithm 6.3: fails (Case 4, Figure 6.10)",
         kit=Kit(edge=1), bound=None, markers="at most Σ_{k=1}^{n−1} k undirected E-markers (Case 3b's kit)",
         deterministic=True, options=("markers",), checks=MARKER_MAP_CHECKS, explorer=UndirectedSaving,
         uses_lighthouse=False, parameters=(MARKERS,), kit_fn=lambda n, m, o: Kit(edge=_count(n, o)),
         marker_bound_fn=lambda n, m: sum_to(n - 1), family="robot", status="implemented, expected to fail",
+        ways=("correct", "failed-out-of-markers", "failed-marks-ambiguous", "drop-trip", "wrong-map"),
         status_reason="the marked edges 'may not always identify a visited vertex and its incident edges' "
                       "(§6.2.1 Case 4): two neighbours whose only marked edge joins them show the same signature "
                       "(Figure 6.10(b)); on figure-6.10 the run ends failed (the marks fit two edges)"),
@@ -89,14 +91,15 @@ SPECS = (
         deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=DirectionalVertexCounts,
         uses_lighthouse=False, parameters=(MARKERS,),
         kit_fn=lambda n, m, o: Kit(vertex=_count(n, o), directional=True),
-        marker_bound_fn=lambda n, m: sum_to(n), family="robot", bound_bench="table-6.2"),
+        marker_bound_fn=lambda n, m: sum_to(n), family="robot", bound_bench="table-6.2", ways=("correct", "failed-out-of-markers")),
     AlgorithmSpec(
         name="extension-1", thesis="§6.2.2 extension-1 of Case 3b (Figure 6.15, Table 6.2)",
         kit=Kit(edge=1, directional=True), bound="O(m)", markers="Σ_{k=1}^{⌈m/2⌉} k directional E-markers",
         deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=MarkFirstEdges,
         uses_lighthouse=False, parameters=(MARKERS,),
         kit_fn=lambda n, m, o: Kit(edge=_count(n, o, sum_to(ceil_half(m))), directional=True),
-        marker_bound_fn=lambda n, m: sum_to(ceil_half(m)), family="robot", bound_bench="table-6.2"),
+        marker_bound_fn=lambda n, m: sum_to(ceil_half(m)), family="robot", bound_bench="table-6.2",
+        ways=("correct", "failed-out-of-markers")),
     AlgorithmSpec(
         name="extension-2",
         thesis="§6.2.2 extension-2 of Case 3b, Algorithm 6.6 (Figure 6.16, Table 6.2)",
@@ -104,7 +107,8 @@ SPECS = (
         deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=SavingEdgeCounts,
         uses_lighthouse=False, parameters=(MARKERS,),
         kit_fn=lambda n, m, o: Kit(edge=_count(n, o, sum_to(ceil_half(n - 1))), directional=True),
-        marker_bound_fn=lambda n, m: sum_to(ceil_half(n - 1)), family="robot", bound_bench="table-6.2"),
+        marker_bound_fn=lambda n, m: sum_to(ceil_half(n - 1)), family="robot", bound_bench="table-6.2",
+        ways=("correct", "failed-out-of-markers", "drop-trip")),
     AlgorithmSpec(
         name="extension-naive",
         thesis="§6.2.2 the naive extension of Case 3b, extension-2 without coming back: fails (Figure 6.15)",
@@ -114,6 +118,7 @@ SPECS = (
         uses_lighthouse=False, parameters=(MARKERS,),
         kit_fn=lambda n, m, o: Kit(edge=_count(n, o, sum_to(ceil_half(n - 1))), directional=True),
         marker_bound_fn=lambda n, m: sum_to(ceil_half(n - 1)), family="robot", status="implemented, expected to fail",
+        ways=("correct", "failed-out-of-markers", "drop-trip", "wrong-map"),
         status_reason="'this extension idea does not work when a loop edge e is explored ... and v_k has no "
                       "marked edges yet' (§6.2.2, Figure 6.15(b)-(c)): v_k is left unmarked and later taken for a "
                       "new place; on figure-6.15 the checker finds the wrong map"),

@@ -107,7 +107,7 @@ def footprint_spec(name, thesis, markers, explorer, kit_fn, marker_bound_fn, cit
     return AlgorithmSpec(name=name, thesis=thesis, kit=kind, bound=_BOUND.format(cites), markers=markers,
                          deterministic=True, options=options, checks=MARKER_MAP_CHECKS, bound_fn=footprints_bound,
                          explorer=explorer, uses_lighthouse=False, parameters=(MARKERS,), kit_fn=kit_fn,
-                         marker_bound_fn=marker_bound_fn, family="robot",
+                         marker_bound_fn=marker_bound_fn, family="robot", ways=("correct", "failed-out-of-markers"),
                          bound_formula=f"(n − 1)² + (m − n + 1)(3n − 1), ours: the exact worst case of the footprint "
                                        f"search behind O(mn) ({cites})")
 

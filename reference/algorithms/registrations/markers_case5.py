@@ -112,25 +112,29 @@ def _directional_kit(n: int, m: int, options: dict) -> Kit:
     return Kit(vertex=sum_to(n) if given is None else given, directional=True)
 
 
+_WAYS = ("correct", "phase-i", "phase-ii")
+"""How a Case 5 run goes (§6.2.1 Case 5): phase I while the markers last, phase II once they run short, and the
+map at the end — with K > 3 markers it never fails for want of them."""
+
 SPECS = (
     AlgorithmSpec(
         name="case-5-v1", thesis="§6.2.1 Case 5 Version-1, Algorithm 6.4",
         kit=Kit(vertex=1), bound="O(m²n) (§6.2.1 Case 5; O(m·d_max) when every place is marked)",
         markers="K > 3 undirected V-markers, any K (Σ_{k=1}^{n} k mark every place)", deterministic=True,
         options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=VertexCountsThenLighthouse, uses_lighthouse=False,
-        parameters=(MARKERS,), kit_fn=_v1_kit, marker_bound_fn=lambda n, m: sum_to(n), family="robot", bound_bench="table-6.1"),
+        parameters=(MARKERS,), kit_fn=_v1_kit, marker_bound_fn=lambda n, m: sum_to(n), family="robot", bound_bench="table-6.1", ways=_WAYS),
     AlgorithmSpec(
         name="case-5-v2", thesis="§6.2.1 Case 5 Version-2, Algorithm 6.5",
         kit=Kit(vertex=1, edge=1), bound="O(m²n) (Table 6.1; O(mn) when every place and loop edge is marked, §6.2.1 Case 5)",
         markers="K > 3 undirected V-E-markers, any K, one pool (m + 4 mark every place and loop edge)",
         deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=VertexEdgeThenLighthouse,
-        uses_lighthouse=False, parameters=(MARKERS,), kit_fn=_v2_kit, marker_bound_fn=v2_markers, family="robot", bound_bench="table-6.1"),
+        uses_lighthouse=False, parameters=(MARKERS,), kit_fn=_v2_kit, marker_bound_fn=v2_markers, family="robot", bound_bench="table-6.1", ways=_WAYS),
     AlgorithmSpec(
         name="case-0", thesis="§6.2.1 Case 0, n markers, one per visited vertex: fails (Figure 6.3)",
         kit=Kit(vertex=1), bound=None, markers="n undirected V-markers", deterministic=False, options=("policy edge",),
         checks=MARKER_MAP_CHECKS, explorer=EveryVertexMarked, uses_lighthouse=False,
         kit_fn=lambda n, m, o: Kit(vertex=n), marker_bound_fn=lambda n, m: n, family="robot",
-        status="implemented, expected to fail",
+        status="implemented, expected to fail", ways=("correct", "failed-marks-ambiguous"),
         status_reason="'this approach does not work in general' (§6.2.1 Case 0, Figure 6.3): a marked place that several "
                       "edges fit ends the run failed (on complete:n=4, for one)"),
     AlgorithmSpec(
@@ -139,7 +143,7 @@ SPECS = (
         markers="K > 3 undirected E-markers, any K (Σ_{k=1}^{n−1} k mark every tree edge)", deterministic=True,
         options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=EdgeCountsThenLighthouse,
         uses_lighthouse=False, parameters=(MARKERS,), kit_fn=_edge_kit, marker_bound_fn=lambda n, m: sum_to(n - 1),
-        family="robot", bound_bench="table-6.1"),
+        family="robot", bound_bench="table-6.1", ways=(*_WAYS, "drop-trip")),
     AlgorithmSpec(
         name="case-5-directional", thesis="§6.2.2 Table 6.2 \"unknown k > 3\", directional: Version-1 "
                                          "with directional V-markers (§6.2.1 Case 5, §6.2.2)",
@@ -147,5 +151,5 @@ SPECS = (
         markers="K > 3 directional V-markers, any K (Σ_{k=1}^{n} k mark every place)", deterministic=True,
         options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=DirectionalCountsThenLighthouse,
         uses_lighthouse=False, parameters=(MARKERS,), kit_fn=_directional_kit, marker_bound_fn=lambda n, m: sum_to(n),
-        family="robot", bound_bench="table-6.2"),
+        family="robot", bound_bench="table-6.2", ways=_WAYS),
 )

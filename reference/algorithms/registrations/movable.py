@@ -60,7 +60,7 @@ SPECS = (
                   bound=_BOUND, markers="1", deterministic=True, options=_OPTIONS, checks=STEPWISE_MAP_CHECKS,
                   bound_fn=dudek_bound, bound_formula=f"3(n − 1)² + (m − n + 1)(7n − 8), {_OURS}",
                   explorer=MovableMarkerExplorer, uses_lighthouse=False,
-                  marker_bound_fn=lambda n, m: 1, family="robot",
+                  marker_bound_fn=lambda n, m: 1, family="robot", ways=("correct", "marker-moved"),
                   changes=f"{SEARCH}; the undirected back-link search tests v_k's unexplored exits in order and the "
                           "last one needs no test"),
     AlgorithmSpec(name="dudek-directional", thesis="§2.3.1, Dudek et al. [24, 26]; directional variant [27]",
@@ -68,5 +68,5 @@ SPECS = (
                   options=_OPTIONS, checks=STEPWISE_MAP_CHECKS, bound_fn=directional_bound,
                   bound_formula=f"3(n − 1)² + (m − n + 1)(3n − 1), {_OURS}",
                   explorer=DirectionalMovableMarkerExplorer, uses_lighthouse=False, marker_bound_fn=lambda n, m: 1,
-                  family="robot", changes=SEARCH),
+                  family="robot", changes=SEARCH, ways=("correct", "marker-moved")),
 )

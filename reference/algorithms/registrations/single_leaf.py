@@ -72,6 +72,6 @@ SPECS = (
                               maximum=MAX_SEARCH_LIMIT),),
         checks=(*ALGORITHM_3_1_CHECKS, "marker-budget"),
         explorer=SingleLeafExplorer, uses_lighthouse=False, marker_bound_fn=lambda n, m: 0, family="robot",
-        check_world=single_leaf_only, summary_fn=summary,
+        check_world=single_leaf_only, summary_fn=summary, ways=("correct", "limit", "leaf-search"),
     ),
 )

@@ -121,6 +121,9 @@ def _circumference_kit(n: int, m: int, opts: dict) -> Kit:
     return Kit(thread=n if length in ("n", None) else length)
 
 
+_LAID = ("correct", "thread-laid", "thread-rewound")
+"""How a run of Algorithm 6.7 goes (§6.3.2): the thread laid and rewound, and — a thread shorter than the world
+needs — out of thread."""
 _ROBOT: dict[str, Any] = dict(deterministic=True, checks=STEPWISE_MAP_CHECKS, uses_lighthouse=False,
                               marker_bound_fn=lambda n, m: 0, family="robot")
 """What every thread algorithm shares: one edge joins S per step, and no marker is ever dropped (a thread is
@@ -134,6 +137,7 @@ SPECS = (
     AlgorithmSpec(name="thread-carried", thesis="§6.3.1, l = ε thread carried and retied",
                   kit=Kit(thread=0), bound=_O_MN, markers="no marker; a thread of length ε", options=("policy edge",),
                   bound_fn=directional_bound, explorer=CarriedThreadExplorer, changes=SEARCH,
+                  ways=("correct", "thread-laid", "thread-retied"),
                   bound_formula=f"3(n − 1)² + (m − n + 1)(3n − 1), {_OURS} (§6.3.1)", **_ROBOT),
     *(AlgorithmSpec(name=name, thesis=f"§6.3.2, Algorithm 6.7{what} (l = c(G), given n: see the docstring)",
                     kit=Kit(thread=0), bound=_O_MN, markers="no marker; a thread of n edges (--thread-length: L)",
@@ -142,7 +146,8 @@ SPECS = (
                     bound_formula="2(n − 1) + (m − n + 1)(n + 2), topomark's exact worst case of Algorithm 6.7 as "
                                   "listed (§6.3.2; docs/bounds.md), behind O(mn) (Table 6.3)",
                     parameters=(LENGTH,), kit_fn=_circumference_kit, changes=changes,
-                    listing_entry=None if changes is None else "thread-circumference-listing", **_ROBOT)
+                    listing_entry=None if changes is None else "thread-circumference-listing",
+                    ways=(*_LAID, "failed-out-of-thread"), **_ROBOT)
       for name, what, explorer, changes in (
           ("thread-circumference", "", CircumferenceThreadExplorer, _SKIPS),
           ("thread-circumference-listing", " as listed", ListingThreadExplorer, None))),
@@ -151,13 +156,14 @@ SPECS = (
                   markers="no marker; a thread of m + 1 edges", options=(), bound_fn=knots_bound,
                   bound_formula="4m − 2n + 2, ours: the exact worst case behind O(m) (Table 6.3, §6.3.2)",
                   explorer=KnotThreadExplorer, kit_fn=lambda n, m, opts: Kit(thread=m + 1),
+                  ways=(*_LAID, "thread-knots"),
                   changes="the thesis gives no listing (Figure 6.20, §6.3.2): at a known v_k' with one unexplored exit "
                           "that exit is e', with no back-link validation", **_ROBOT),
     AlgorithmSpec(name="thread-explore", thesis="§6.3.3, Algorithm 6.8 (l < c(G), explore-explore)",
                   kit=Kit(thread=2), bound=_O_MN, markers="no marker; a thread of --thread-length edges",
                   options=("thread-length L (default 2, Figure 6.21)",), bound_fn=explore_bound,
                   bound_formula=f"2m + 2nm + n(n − 1), {_OURS} (§6.3.3, Algorithm 6.8)",
-                  explorer=ThreadExplorer, changes=_SKIPS.replace("Algorithm 6.7 lines 11–12", "Algorithm 6.8 line 7"),
+                  explorer=ThreadExplorer, ways=(*_LAID, "thread-retied"), changes=_SKIPS.replace("Algorithm 6.7 lines 11–12", "Algorithm 6.8 line 7"),
                   parameters=(Parameter("thread-length", LENGTH.help, default=2, minimum=1, maximum=MAX_THREAD),),
                   kit_fn=lambda n, m, opts: Kit(thread=opts["thread-length"]), **_ROBOT),
     AlgorithmSpec(name="thread-fallback",
@@ -169,7 +175,7 @@ SPECS = (
                   bound_fn=fallback_bound,
                   bound_formula="2(n − 1) + (m − n + 1)(n + 2) + (3.1) + (3.2), ours: Algorithm 6.7's bound for "
                                 "phase I and Algorithm 3.1's (§3.5.2) for phase II, behind O(m²n) (§6.3.3)",
-                  explorer=FallbackThreadExplorer, changes=f"phase I is thread-circumference's steps: {_SKIPS}",
+                  explorer=FallbackThreadExplorer, ways=("correct", "thread-laid", "thread-phase-ii"), changes=f"phase I is thread-circumference's steps: {_SKIPS}",
                   parameters=(Parameter("thread-length", LENGTH.help, default=2, minimum=1, maximum=MAX_THREAD),),
                   kit_fn=lambda n, m, opts: Kit(thread=opts["thread-length"]), **_ROBOT),
 )

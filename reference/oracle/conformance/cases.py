@@ -9,14 +9,15 @@ every named policy of :data:`POLICIES` (§3.3 leaves the edge, hypothesis and
 path choices open).
 
 :func:`algorithm_cases` are one algorithm's: a few small worlds (the triangle,
-C4, the 2×3 lattice, K4, a chiral world, a chain) under the kit the registry gives that algorithm on
+C4, the 2×3 lattice, K4, a chiral world, a chain, a triangle with one leaf) under the kit the registry gives that algorithm on
 each (``kit_for(n, m, options)``: the thesis's exact budgets, e.g. Case 3a's
 Σ_{k=1}^{n−1} k), and, for an algorithm whose kit size is an
-option (``--markers``), the 2×3 lattice with the smallest kit it takes — where
-most run out of markers and must report failure (§6.2.1: "running out is the
-``failed`` outcome"); and, as stress cases, the worst worlds ``topomark
-worst-case`` found for it (:mod:`topomark.reference.worlds.worst_cases`,
-§7.2).  Only deterministic algorithms have suites: a reference
+option (``--markers``, ``--thread-length``), the 2×3 lattice with the smallest kit it takes — where
+most run out of markers or thread and must report failure (§6.2.1: "running out is the
+``failed`` outcome"; §6.3.2), and where Case 5 is forced into phase II; and, as stress cases, the worst worlds
+``topomark worst-case`` found for it (:mod:`topomark.reference.worlds.worst_cases`,
+§7.2).  The export keeps the cases that cover the ways the algorithm's runs can go
+(:mod:`~topomark.reference.oracle.conformance.coverage`).  Only deterministic algorithms have suites: a reference
 run of a randomised one fixes nothing a client could be held to.
 
 :data:`FAMILIES` groups the algorithms for ``--family``: a family's members
@@ -38,7 +39,7 @@ from topomark.reference.explorers.policies import Policies
 from topomark.reference.worlds import generators as g
 from topomark.reference.worlds.worst_cases import worst_case_worlds
 
-__all__ = ["POLICIES", "FAMILIES", "default_cases", "algorithm_cases", "family_of", "suite_algorithms", "started"]
+__all__ = ["POLICIES", "FAMILIES", "default_cases", "algorithm_cases", "accepts", "family_of", "suite_algorithms", "started"]
 
 POLICIES: dict[str, Policies] = {  # the default, and each other named policy of policies.py alone
     "default": Policies(),
@@ -66,6 +67,10 @@ CHIRAL = World({"0": ("1", "2", "4"), "1": ("0", "2"), "2": ("1", "0", "3"), "3"
                Start("0", "1"))
 """The smallest connected planar world (networkx's atlas) not extended-isomorphic to its mirror image: a map
 with every rotation reversed fails on it, where on the wheels, the cycles and K4 it would pass."""
+
+PAW = World({"0": ("1", "2", "3"), "1": ("0", "2"), "2": ("1", "0"), "3": ("0",)}, (), Start("1", "2"))
+"""A triangle with one leaf (the paw), entered away from the leaf: the shared world with exactly one place of
+degree 1, where §5.3's single-leaf search walks before it maps."""
 
 
 def started(world: World) -> World:
@@ -120,28 +125,39 @@ def _algorithm_worlds() -> list[tuple[str, str, World]]:
         ("complete-4", "§3.5.3: the complete graph K4 (non-planar rotation)", g.complete(4)),
         ("chiral-5", "a triangle with a leaf at two of its corners: its mirror image is another world", CHIRAL),
         ("chain-6", "a chain of 6 vertices: a tree", g.chain(6)),
+        ("paw-4", "a triangle with one leaf, entered away from it", PAW),
     )]
+
+
+_TIGHT = {  # an option that sizes the kit ↦ (its smallest value, the case's name suffix, what the kit then is)
+    "markers": (lambda p: max(2, p.minimum or 0), "markers", "markers (--markers {k}): an exact budget that may run "
+                "out, when the algorithm must report failure (§6.2.1), or, for Case 5, force phase II"),
+    "thread-length": (lambda p: 1, "thread", "edge of thread (--thread-length {k}): a thread too short for the world, "
+                      "when the algorithm must report failure (§6.3.2)"),
+}
 
 
 def algorithm_cases(spec: AlgorithmSpec) -> list[tuple[str, str, str, World, dict[str, Any]]]:
     """(name, world name, description, world, options) of ``spec``'s suite: the shared worlds with the registry's
-    default kit, and a smallest kit where the kit's size is an option (``--markers``).  An algorithm for a class
+    default kit, and a smallest kit where the kit's size is an option (``--markers``, ``--thread-length``: the
+    export keeps such a case only where its run goes a way the others do not,
+    :mod:`~topomark.reference.oracle.conformance.coverage`).  An algorithm for a class
     of worlds (its registration's ``check_world``) has a case on the shared worlds it accepts only (a tree walk:
     the chain); one that accepts none of them has no suite (:func:`suite_algorithms`)."""
     cases: list[tuple[str, str, str, World, dict[str, Any]]] = [
         (name, name, f"{text}, with the kit {spec.name} is given on it", world, {})
-        for name, text, world in _algorithm_worlds() + _stress_cases([spec.name]) if _accepts(spec, world)]
-    markers = next((p for p in spec.parameters if p.name == "markers"), None)
-    if markers is not None and _accepts(spec, _algorithm_worlds()[2][2]):
-        k = max(2, markers.minimum or 0)
-        name, text, world = _algorithm_worlds()[2]
-        cases.append((f"{name}-markers-{k}", name, f"{text} with only {k} markers (--markers {k}): an exact budget that "
-                                            "may run out, when the algorithm must report failure", world,
-                      {"markers": k}))
+        for name, text, world in _algorithm_worlds() + _stress_cases([spec.name]) if accepts(spec, world)]
+    name, text, world = _algorithm_worlds()[2]
+    for p in spec.parameters:
+        if p.name in _TIGHT and accepts(spec, world):
+            smallest, suffix, words = _TIGHT[p.name]
+            k = smallest(p)
+            cases.append((f"{name}-{suffix}-{k}", name, f"{text} with only {k} {words.format(k=k)}", world,
+                          {p.name: k}))
     return cases
 
 
-def _accepts(spec: AlgorithmSpec, world: World) -> bool:
+def accepts(spec: AlgorithmSpec, world: World) -> bool:
     """Whether ``spec``'s registration accepts ``world`` with its default options (``check_world``)."""
     if spec.check_world is None:
         return True

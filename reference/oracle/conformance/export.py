@@ -10,7 +10,8 @@ case's kit, bound (with ``bound_source``: whose it is and what it bounds, the th
 variant, :mod:`~topomark.reference.oracle.conformance.judgement`), expected outcome and topomark's own run of
 that algorithm (``variant``: the listing as written, or topomark's variant of it, and what that changes)
 (:func:`~topomark.reference.run.explore.explore` with its trace): its cost,
-its marker operations by kind, its trace and — when it ends with one — its
+its marker operations by kind, its trace, the ways it went (``ways``: phases and outcome,
+:mod:`~topomark.reference.algorithms.ways`) and — when it ends with one — its
 map, markers included.  The suite is linted before :func:`export` returns.
 """
 
@@ -26,13 +27,14 @@ from topomark.spec.worldfile import FORMAT as WORLD_FORMAT
 from topomark.spec.worldfile import dumps_world, schema
 
 from topomark.reference.algorithms.registry import AlgorithmSpec
-from topomark.reference.oracle.conformance.cases import (POLICIES, algorithm_cases, default_cases, family_of,
-                                                         suite_algorithms)
+from topomark.reference.oracle.conformance.cases import POLICIES, default_cases, family_of, suite_algorithms
+from topomark.reference.oracle.conformance.coverage import declared_json, reference_runs
 from topomark.reference.oracle.conformance.judgement import spec_bound_source
 from topomark.reference.oracle.conformance.lint import lint
 from topomark.reference.oracle.conformance.manifest import SUITE_FORMAT, SUITE_VERSION
 from topomark.reference.oracle.protocol import PROTOCOL, PROTOCOL2
 from topomark.reference.run.explore import explore
+from topomark.reference.run.outcome import Outcome
 from topomark.reference.trace.records import TRACE_FORMAT, dump_trace
 
 __all__ = ["export", "LAYOUT"]
@@ -107,26 +109,19 @@ def _export_case(root: Path, name: str, text: str, world: World) -> dict[str, An
 
 
 def _export_suite(root: Path, spec: AlgorithmSpec) -> dict[str, Any]:
-    """One algorithm's suite: its cases, each with topomark's checked run of it."""
+    """One algorithm's suite: the ways its runs can go (``ways``), its cases, each with topomark's checked run of
+    it and the ways that run went (:mod:`~topomark.reference.oracle.conformance.coverage`)."""
     (root / "algorithms" / spec.name).mkdir(parents=True, exist_ok=True)
     return {"algorithm": spec.name, "family": family_of(spec), "thesis": spec.thesis, "bound": spec.bound,
             "bound_note": spec.bound_note, "bound_source": spec_bound_source(spec), "variant": spec.variant_json(),
-            "markers": spec.markers, "protocol": PROTOCOL2,
-            "cases": [entry for case in algorithm_cases(spec) if (entry := _export_algorithm_case(root, spec, *case))]}
+            "markers": spec.markers, "protocol": PROTOCOL2, "ways": declared_json(spec),
+            "cases": [_export_algorithm_case(root, spec, *case, out, ways) for case, out, ways in reference_runs(spec)]}
 
 
 def _export_algorithm_case(root: Path, spec: AlgorithmSpec, name: str, world_name: str, text: str, world: World,
-                           options: dict[str, Any]) -> dict[str, Any] | None:
-    """The case: world, kit, bound, and the reference run — which must end correct, or failed (out of markers);
-    a violation or any other end is topomark's own failure.  A smaller kit (``options``) that does not run out is
-    left out (None): Case 5's K ≥ 4 suffices on the 2×3 lattice, and its @2 kit does not show K (K vertex and K
-    edge markers, of which the explorer draws K in all), so a client could not be held to it."""
-    out = explore(world, spec, options=options, check_mode="incremental")
-    if out.violation is not None or out.outcome not in ("correct", "failed"):
-        raise CheckFailure(f"the reference run of {spec.name} on {name} ended {out.outcome}: "
-                           f"{out.violation or out.reason}")
-    if options and out.outcome != "failed":
-        return None
+                           options: dict[str, Any], out: Outcome, ways: list[str]) -> dict[str, Any]:
+    """The case: world, kit, bound, the reference run ``out`` (correct, or failed: the kit runs out) and the ways
+    it went."""
     base = f"algorithms/{spec.name}/{name}"
     (root / f"{base}.trace.jsonl").write_text(dump_trace(out.trace), encoding="utf-8")
     map_rel = None
@@ -137,6 +132,6 @@ def _export_algorithm_case(root: Path, spec: AlgorithmSpec, name: str, world_nam
     return {"name": name, "description": text, "world": _write_world(root, world_name, world),
             "n": world.n, "m": world.m, "options": options, "kit": spec.kit_for(world.n, world.m, opts).to_json(),
             "bound": spec.bound_for(world.n, world.m), "bound_source": spec_bound_source(spec),
-            "variant": spec.variant_json(), "expected": out.outcome, "reason": out.reason,
+            "variant": spec.variant_json(), "expected": out.outcome, "reason": out.reason, "ways": ways,
             "reference": {"cost": out.cost, "marker_operations": dict(out.marker_operations), "trace":
                           f"{base}.trace.jsonl", "map": map_rel}}

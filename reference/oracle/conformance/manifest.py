@@ -14,8 +14,9 @@ a world, the kit that algorithm is given on it (the registry's
 (``correct``, or ``failed`` where the kit runs out), and topomark's reference run
 (cost, marker operations by kind, trace, map).  From version 2.1 each such case also names whose its bound is
 (``bound_source``: the thesis's, or topomark's for the listing or for its own variant) and the variant its
-reference run was made with (``variant``); a 2.0 suite without them stays readable.  Both formats stay
-readable.
+reference run was made with (``variant``); from version 2.2 each suite declares the ways its algorithm's runs can
+go (``ways``: name ↦ kind, text, thesis section) and each case the ways its reference run went (``ways``: a list of
+those names).  A 2.0 or 2.1 suite without them stays readable.  Both formats stay readable.
 """
 
 from __future__ import annotations
@@ -34,7 +35,8 @@ __all__ = ["SUITE_FORMAT", "SUITE_VERSION", "SUITE_FORMAT_1", "SUITE_VERSION_1",
            "load_manifest", "check_manifest", "bad"]
 
 SUITE_FORMAT = "topomark/conformance@2"
-SUITE_VERSION = "2.1.0"  # 2.1: each algorithm case says whose its bound is and which variant made its run
+SUITE_VERSION = "2.2.0"  # 2.1: each algorithm case says whose its bound is and which variant made its run;
+# 2.2: each algorithm suite declares the ways its runs can go, each case the ways its reference run went
 SUITE_FORMAT_1 = "topomark/conformance@1"
 SUITE_VERSION_1 = "1.0.0"
 VERSIONS = {SUITE_FORMAT_1: SUITE_VERSION_1, SUITE_FORMAT: SUITE_VERSION}
@@ -165,6 +167,25 @@ def _check_suite(root: Path, where: str, suite: dict) -> None:
     for k, case in enumerate(cases):
         _check_name(root, f"{where}.cases[{k}]", case, names)
         _check_algorithm_case(root, f"{where}.cases[{k}] ({case['name']})", case)
+    _check_ways(root, where, suite)
+
+
+def _check_ways(root: Path, where: str, suite: dict) -> None:
+    """Version 2.2's ``ways``: the suite's an object (name ↦ {kind, text, thesis}), each case's a list of names it
+    declares; a 2.0 or 2.1 suite has neither."""
+    declared: Any = suite.get("ways")  # JSON, checked here
+    if declared is None:
+        for k, case in enumerate(suite["cases"]):
+            field(root, f"{where}.cases[{k}].ways", case.get("ways"), "ways" not in case, "absent (the suite "
+                                                                                          "declares no ways)")
+        return
+    field(root, f"{where}.ways", declared, isinstance(declared, dict) and all(
+        isinstance(v, dict) and v.get("kind") in ("phase", "outcome") and isinstance(v.get("thesis"), str)
+        for v in declared.values()), "an object: way ↦ {kind: phase|outcome, text, thesis}")
+    for k, case in enumerate(suite["cases"]):
+        ways = case.get("ways")
+        field(root, f"{where}.cases[{k}].ways", ways, isinstance(ways, list) and all(
+            isinstance(w, str) and w in declared for w in ways), "a list of the ways the suite declares")
 
 
 def _check_algorithm_case(root: Path, where: str, case: dict) -> None:

@@ -33,9 +33,10 @@ The listing, line by line:
 14. rewind the thread to a vertex that is not fully explored.
 
 When U is empty the thread is all rewound to v0; the robot unties it there and
-sends the map.  The thread never runs out: it is at most a simple path of S
-(n − 1 edges) plus e, and the kit gives it (§6.3.2 assumes l = c(G) suffices;
-topomark gives n edges).  The world is a simple graph, as the thesis's worlds
+sends the map.  The laid thread is at most a simple path of S (n − 1 edges)
+plus e, and topomark's default kit gives n edges (§6.3.2 assumes l = c(G)
+suffices); with a shorter thread, once every edge of it is laid and line 5
+would lay one more, the robot gives up (sends ``error``: out of thread).  The world is a simple graph, as the thesis's worlds
 are.
 """
 import json
@@ -79,6 +80,7 @@ class Explorer:
         self.U = [(0, i) for i in range(len(self.exits[0]))]
         self.pos = (0, 0)  # (map vertex, the exit it was entered by); v0 faces its exit 0
         self.laid = []  # the thread: darts (v, i) of S from v0, in the order laid
+        self.length = hello["kit"]["thread"]  # the robot knows its thread's length (§6.3)
 
     def op(self, name):
         send({"type": "thread", "op": name})
@@ -134,6 +136,9 @@ class Explorer:
     def iterate(self):
         vk = self.pos[0]
         i = min(x for v, x in self.U if v == vk)  # line 4: the closest edge, where the thread ends
+        if len(self.laid) == self.length:  # line 5 needs one more edge of thread than the robot has
+            send({"type": "error", "message": "out of thread: all %d edges are laid" % self.length})
+            sys.exit(1)
         self.U.remove((vk, i))
         self.laid.append((vk, i))  # line 5
         degree, tied, edges = self.move(i)
