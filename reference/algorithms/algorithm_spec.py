@@ -16,24 +16,18 @@ bind a conformance client (``bound_binds``).  ``changes`` says what the explorer
 (:mod:`~topomark.reference.algorithms.ways`, each with its thesis section and a predicate over a finished run).
 Two shapes of algorithm exist:
 
-* **lighthouse algorithms** (``uses_lighthouse=True``: Algorithm 3.1 and the
-  Chapter 4 enhancements) establish v0 with any lighthouse strategy
-  (:mod:`topomark.reference.explorers.lighthouses`); the kit is the
-  lighthouse's; the explorer is built as ``cls(robot, policies, observer,
-  lighthouse)``;
-* **kit algorithms** (everything else: markers dropped all through the
-  exploration, §6.2; movable markers, §2.3.1; threads, §6.3; no marker,
-  §5.2) are given the kit ``kit_for(n, m, options)`` — the simulator computes
-  it from the world, the robot never learns n or m (§6.2.1) — and are
-  built as ``cls(robot, policies, observer, options)``.
+* **lighthouse algorithms** (``uses_lighthouse=True``: Algorithm 3.1 and the Chapter 4 enhancements) establish v0
+  with any lighthouse strategy (:mod:`topomark.reference.explorers.lighthouses`); the kit is the lighthouse's; the
+  explorer is built as ``cls(robot, policies, observer, lighthouse)``;
+* **kit algorithms** (everything else: markers dropped all through the exploration, §6.2; movable markers, §2.3.1;
+  threads, §6.3; no marker, §5.2) are given the kit ``kit_for(n, m, options)`` — the simulator computes it from the
+  world, the robot never learns n or m (§6.2.1) — and are built as ``cls(robot, policies, observer, options)``.
 
-Every entry carries a **status** (:data:`STATUSES`): ``implemented`` (it is
-expected to map every world it accepts), ``implemented, expected to fail`` (the
-thesis says the idea fails; ``status_reason`` names the lines and the world
-where its runs end ``failed`` or ``wrong-map``, and the checker judges it like
-any other), or ``not implementable from the thesis`` — a :class:`Listed`
-algorithm, listed by ``topomark algorithms`` with the reason, with no explorer,
-which ``topomark explore`` refuses as bad input.  What its runs are expected to end with
+Every entry carries a **status** (:data:`STATUSES`): ``implemented`` (it is expected to map every world it
+accepts), ``implemented, expected to fail`` (the thesis says the idea fails; ``status_reason`` names the lines and
+the world where its runs end ``failed`` or ``wrong-map``, and the checker judges it like any other), or ``not
+implementable from the thesis`` — a :class:`Listed` algorithm, listed by ``topomark algorithms`` with the reason,
+with no explorer, which ``topomark explore`` refuses as bad input.  What its runs are expected to end with
 (:meth:`AlgorithmSpec.expectation`, :mod:`~topomark.reference.algorithms.expectation`) follows from the status —
 ``correct`` when implemented, ``fails-by-design`` when expected to fail — unless the entry states otherwise
 (``expected``, with its thesis reference), per world family where it differs (``expected_by_family``), and broadened
