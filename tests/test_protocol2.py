@@ -156,8 +156,8 @@ def test_cli_client2_and_the_conformance_suite_at_2(tmp_path, capsys):
     (["--kit", '{"directional-edge": 1, "thread": -3}'], "thread length must be a non-negative integer"),
     (["--kit", '{"sideways-edge": 1}'], "unknown key"),
     (["--kit", "{"], "--kit"),
-    (["--kit", "{}"], "give 1..1000000"),
-    (["--kit", '{"undirected-edge": 10000001}'], "give 1..1000000"),
+    (["--kit", "{}"], "give 1..1,000,000"),
+    (["--kit", '{"undirected-edge": 10000001}'], "edge markers: at most 1,000,000"),
     (["--protocol", "3"], "invalid choice"),
 ])
 def test_cli_protocol_and_kit_bad_input_exits_2(args, words, capsys):
