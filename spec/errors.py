@@ -149,7 +149,8 @@ class InvalidWorld(InvalidInput):
 
 
 class InvalidKeyword(InvalidInput, TypeError):
-    """A keyword argument a Python function of topomark does not take (a misspelt option, say).
+    """A keyword argument a Python function of topomark does not take (a misspelt option, say), or arguments its
+    signature cannot take (too many, a required one missing).
 
     Both bad input (an :class:`InvalidInput`, as every refusal of topomark) and a :class:`TypeError`, as Python
     raises for an unexpected keyword of any function, so either ``except`` catches it.

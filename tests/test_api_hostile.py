@@ -8,6 +8,7 @@ search of 300,000 vertices, an algorithm option of None meaning "no limit") fail
 
 from __future__ import annotations
 
+import inspect
 import itertools
 import signal
 from typing import Any, Callable
@@ -230,3 +231,17 @@ def test_adversarial_search_takes_the_policies_explore_takes():
 def test_worst_case_takes_policies_and_still_answers():
     rows = T.worst_case("basic", 3, 2, policies={"edge": "lifo"})
     assert [r["n"] for r in rows] == [2, 3] and all(r["runs"] > 0 for r in rows)
+
+
+@pytest.mark.parametrize("name", [n for n in T.__all__ if inspect.isfunction(getattr(T, n))])
+def test_a_call_the_signature_cannot_take_is_bad_input_naming_the_function(name):
+    """Too many positional arguments, or a required one missing: bad input, as a misspelt keyword is, and still
+    the TypeError Python raises for such a call."""
+    function = getattr(T, name)
+    with pytest.raises(InvalidKeyword, match=rf"^{name}\(\) cannot be called so: too many positional arguments"):
+        function(*([None] * 12))
+    required = [p for p in inspect.signature(function).parameters.values()
+                if p.default is p.empty and p.kind == p.POSITIONAL_OR_KEYWORD]
+    if required:
+        with pytest.raises(TypeError, match=rf"^{name}\(\) cannot be called so: missing a required argument"):
+            function()

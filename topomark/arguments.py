@@ -35,7 +35,7 @@ from typing import Any, ParamSpec, TypeVar
 from topomark.keywords import unexpected_keyword
 from topomark.reference.cli.args import check_seconds
 from topomark.reference.worstcase.limits import LARGEST_DEGREE, degree_table
-from topomark.spec.errors import InvalidInput, clip
+from topomark.spec.errors import InvalidInput, InvalidKeyword, clip
 
 __all__ = ["integer", "fraction", "seconds", "flag", "text", "optional_text", "path", "callback",
            "largest_degree", "keywords_checked"]
@@ -147,17 +147,25 @@ def largest_degree(max_vertices: int, max_degree: int) -> int:
 
 def keywords_checked(function: Callable[P, R]) -> Callable[P, R]:
     """``function``, whose unexpected keyword raises :class:`~topomark.spec.errors.InvalidKeyword` (an
-    InvalidInput and a TypeError, as Python raises) naming the closest keywords it takes."""
-    parameters = inspect.signature(function).parameters.values()
+    InvalidInput and a TypeError, as Python raises) naming the closest keywords it takes, and so does a call its
+    signature cannot take (too many positional arguments, a required one missing, one given twice); a function
+    with ``**options`` checks its own keywords."""
+    signature = inspect.signature(function)
+    parameters = signature.parameters.values()
     takes = [p.name for p in parameters if p.kind in (p.POSITIONAL_OR_KEYWORD, p.KEYWORD_ONLY)]
     name = function.__name__
     words = f"{name}() takes {', '.join(takes) or 'no keywords'}"
+    open_ended = any(p.kind == p.VAR_KEYWORD for p in parameters)  # **options: checked by the function itself
 
     @functools.wraps(function)
     def checked(*args: P.args, **kwargs: P.kwargs) -> R:
         for keyword in kwargs:
-            if keyword not in takes:
+            if keyword not in takes and not open_ended:
                 raise unexpected_keyword(name, keyword, takes, words)
+        try:
+            signature.bind(*args, **kwargs)
+        except TypeError as exc:  # too many positional arguments, a required one missing, one given twice
+            raise InvalidKeyword(f"{name}() cannot be called so: {exc}; {words}") from None
         return function(*args, **kwargs)
 
     return checked

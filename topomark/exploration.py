@@ -45,6 +45,7 @@ __all__ = ["explore", "check_map", "isomorphic", "replay", "algorithms", "polici
            "Witness", "ReplayResult", "AlgorithmSpec", "Listed", "Policies"]
 
 
+@keywords_checked
 def explore(world: WorldLike, algorithm: str = "basic", lighthouse: str | Lighthouse | None = None,
             policies: Policies | Mapping[str, str] | None = None, check: bool = True, *,
             trace: str | os.PathLike[str] | None = None, record: bool = True, **options: Any) -> Outcome:

@@ -83,6 +83,7 @@ def save_world(world: World, path: str | os.PathLike[str]) -> None:
     write_output(checked_path("path", path), dumps_world(world))
 
 
+@keywords_checked
 def generate(name: str | os.PathLike[str], **params: Any) -> World:
     """The world ``name`` names: a generator (``topomark world --help`` lists them and their defaults), a
     generator text such as ``"lattice-hole:rows=5,cols=5"``, or a world file — what ``explore`` and the
