@@ -62,8 +62,9 @@ def _protocol_choice(args) -> tuple[int, Kit | None]:
         raise InvalidInput(str(exc) if str(exc).startswith("--kit") else f"--kit: {exc}") from None
     if kit.vertex + kit.edge + kit.either == 0 and kit.thread is None:
         raise InvalidInput(f"--kit: give 1..{MAX_COUNT:,} vertex or edge markers or a thread, got {kit.to_json()}")
-    if kit.cap_refusal() is not None:
-        raise InvalidInput(f"--kit: {kit.cap_refusal()}")
+    past_caps = kit.cap_refusal()
+    if past_caps is not None:
+        raise InvalidInput(f"--kit: {past_caps}")
     return 2, kit
 
 def _make_limits(args) -> Limits:

@@ -42,6 +42,7 @@ Examples
 
 from __future__ import annotations
 
+from array import array
 from dataclasses import dataclass
 from typing import Sequence, Union
 
@@ -124,17 +125,37 @@ def agrees(candidate: World, at: tuple[str, int], truth: World, start: tuple[str
     return True, len(actions)
 
 
-def _crossed(truth: World, start: tuple[str, int], kit: Kit, actions: Sequence[Action]) -> set[frozenset]:
-    """The edges the robot crossed, each as the set of its two darts (vertex, exit)."""
+def _walk(truth: World, start: tuple[str, int], kit: Kit, actions: Sequence[Action]) -> tuple[set[frozenset], array]:
+    """Replay ``actions`` on ``truth`` once: the edges the robot crossed (each as the set of its two darts (vertex,
+    exit)) and a hash of each signature it sensed, the start's first, for candidates to be compared against."""
     sim, crossed = Simulator(truth, start, kit), set()
+    seen = array("q", [hash(str(sim.robot().sense()))])
     for action in actions:
         before = sim.cost
-        _act(sim, action)
+        seen.append(hash(str(_act(sim, action))))
         if sim.cost != before:
             w, j = sim.state
             u = truth.rotation[w][j]
             crossed.add(frozenset({(w, j), (u, truth.index(u, w))}))
-    return crossed
+    return crossed, seen
+
+
+def _matches(candidate: World, at: tuple[str, int], kit: Kit, actions: Sequence[Action], seen: array,
+             budget: int | None = None) -> tuple[bool | None, int]:
+    """:func:`agrees` against the signatures' hashes of the world's replay (:func:`_walk`), replaying the candidate
+    only; a full match of hashes is then confirmed by :func:`agrees`, signature by signature."""
+    other = Simulator(candidate, at, kit)
+    if hash(str(other.robot().sense())) != seen[0]:
+        return False, 0
+    for done, action in enumerate(actions):
+        if budget is not None and done >= budget:
+            return None, done
+        try:
+            if hash(str(_act(other, action))) != seen[done + 1]:
+                return False, done + 1
+        except (CheckFailure, InvalidInput):  # the candidate refuses what the world allowed: a difference
+            return False, done + 1
+    return True, len(actions)
 
 
 def _edges(world: World) -> list[tuple[str, int, str, int]]:
@@ -182,14 +203,15 @@ def determination(truth: World, start: tuple[str, int], kit: Kit, actions: Seque
 
     ``truth`` is the world played, without markers; ``start`` its start state; ``actions`` what the program did.
     """
-    crossed = _crossed(truth, start, kit, actions)
+    crossed, seen = _walk(truth, start, kit, actions)
     tried = 0
     for u, i, w, j in _edges(truth):
         if frozenset({(u, i), (w, j)}) in crossed:
             continue
         candidate = subdivided(truth, start, u, i)
         tried += 1
-        if agrees(candidate, start, truth, start, kit, actions)[0]:
+        if _matches(candidate, start, kit, actions, seen)[0] and agrees(candidate, start, truth, start, kit,
+                                                                          actions)[0]:
             assert candidate.n != map_.n, "a witness has more vertices than the map"
             return Determination(candidate, "subdivided", (u, w), tried, True)
     budget = max_steps
@@ -198,11 +220,11 @@ def determination(truth: World, start: tuple[str, int], kit: Kit, actions: Seque
         if cover is None:
             continue
         tried += 1
-        same, used = agrees(cover, cover.start_state(), truth, start, kit, actions, budget)
+        same, used = _matches(cover, cover.start_state(), kit, actions, seen, budget)
         if same is None:
             return Determination(None, None, None, tried, False)
         budget -= used
-        if same:
+        if same and agrees(cover, cover.start_state(), truth, start, kit, actions)[0]:
             assert cover.n != map_.n, "a witness has more vertices than the map"
             return Determination(cover, "two-fold cover", (u, w), tried, True)
     return Determination(None, None, None, tried, True)

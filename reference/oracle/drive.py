@@ -122,8 +122,9 @@ class _Link:
             kit = Kit.from_json(obj)
         except InvalidInput as exc:
             raise ProtocolError("garbage", f"hello.kit: {clip(str(exc), 300)}") from None
-        if kit.cap_refusal() is not None:
-            raise ProtocolError("garbage", f"hello.kit: {kit.cap_refusal()}")
+        past_caps = kit.cap_refusal()
+        if past_caps is not None:
+            raise ProtocolError("garbage", f"hello.kit: {past_caps}")
         held = {"vertex": 0, "edge": 0, "either": 0}  # dropped so far: each kind's own, the pool (Kit.draw)
         for op in self.light.ops:
             if op.kind == "thread":  # §6.3: the kit must have a thread

@@ -336,10 +336,10 @@ def _judge(world: World, session: _Session) -> ExternalResult:
         return ExternalResult("fail", "not-isomorphic", f"not isomorphic ({COMPARED}): {verdict.result.mismatch}",
                               violation=verdict.result.mismatch, map=map_, rule=verdict.rule)
     found = determination(session.sim.base_world, session.start, session.kit, session.actions, map_)
+    if found.witness is not None:
+        return ExternalResult("fail", "guess", found.words(map_.n), map=map_, rule=verdict.rule, determination=found)
     words = f"isomorphic (extended isomorphism; {COMPARED}; witness verified) and {found.words(map_.n)}"
-    return ExternalResult("pass", "ok", words, map=map_, rule=verdict.rule, determination=found) \
-        if found.witness is None else \
-        ExternalResult("fail", "guess", found.words(map_.n), map=map_, rule=verdict.rule, determination=found)
+    return ExternalResult("pass", "ok", words, map=map_, rule=verdict.rule, determination=found)
 
 
 def _checked_kit(version: int, kit: Kit | None) -> Kit:

@@ -2,81 +2,48 @@
 
 A directory handed back to topomark (``worst-case --summarise DIR``, ``worst-case --shards DIR``) may hold
 anything under the names topomark writes: a symbolic link to ``/dev/zero``, a FIFO no one writes, a file of
-300 MB.  The rule: every file read back is opened without blocking (``O_NONBLOCK``: opening a FIFO does not wait
-for a writer), checked on the open descriptor to be a regular file (``S_ISREG`` of ``fstat``, so a link to a
-device is refused whatever its name) and no larger than a cap, and read to at most that cap.  JSON is read as
-strict UTF-8 with no ``NaN`` or ``Infinity``; nesting too deep, numbers too long and text that is not JSON are
-all bad input (:class:`~topomark.spec.errors.InvalidInput`, exit 2) naming the file.
+300 MB.  The rule is the one every input file of topomark follows (:func:`topomark.spec.jsontext.open_regular_file`:
+opened without blocking, checked on the open descriptor to be a regular file, no larger than a cap), here with the
+cap :data:`MAX_READ_BYTES` and the caller's name for the file in front of the message.  JSON is read as strict UTF-8
+with no ``NaN`` or ``Infinity``; nesting too deep and text that is not JSON are bad input naming the file.  Integers
+are not limited in digits here, unlike :func:`topomark.spec.jsontext.parse_json`: an out-of-range field is then
+refused by the schema of the file (:mod:`.summary_input`), which names the field.
 
 Examples
 --------
 >>> read_regular("/dev/zero", "the plot")
 Traceback (most recent call last):
 ...
-topomark.spec.errors.InvalidInput: the plot /dev/zero: not a regular file (a character device); refused
+topomark.spec.errors.InvalidInput: the plot /dev/zero: not a regular file (a directory, FIFO or device cannot be read as input)
 """
 
 from __future__ import annotations
 
 import json
 import os
-import stat
-from pathlib import Path
 from typing import Any
 
 from topomark.spec.errors import InvalidInput
+from topomark.spec.jsontext import open_regular_file
 
-__all__ = ["MAX_READ_BYTES", "read_regular", "read_json", "is_regular_or_absent"]
+__all__ = ["MAX_READ_BYTES", "read_regular", "read_json"]
 
 MAX_READ_BYTES = 16 * 2**20
 """The largest file read back (16 MiB): the JSON and plots a worst-case run writes are far smaller."""
-
-_KINDS = ((stat.S_ISDIR, "a directory"), (stat.S_ISFIFO, "a FIFO"), (stat.S_ISCHR, "a character device"),
-          (stat.S_ISBLK, "a block device"), (stat.S_ISSOCK, "a socket"))
-
-
-def _kind(mode: int) -> str:
-    return next((name for test, name in _KINDS if test(mode)), "not a regular file")
 
 
 def read_regular(path: str | os.PathLike, what: str, cap: int = MAX_READ_BYTES) -> bytes:
     """The bytes of ``path`` if it is a regular file of at most ``cap`` bytes; else InvalidInput naming it."""
     try:
-        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | getattr(os, "O_NOCTTY", 0))
+        with open_regular_file(str(path), max_bytes=cap) as fh:
+            data = fh.read(cap + 1)
+    except InvalidInput as exc:
+        raise InvalidInput(f"{what} {exc}") from None
     except OSError as e:
         raise InvalidInput(f"{what} {path}: cannot be read ({e.strerror or e})") from None
-    try:
-        mode, size = (s := os.fstat(fd)).st_mode, s.st_size
-        if not stat.S_ISREG(mode):
-            raise InvalidInput(f"{what} {path}: not a regular file ({_kind(mode)}); refused")
-        if size > cap:
-            raise InvalidInput(f"{what} {path}: {size} bytes, more than the {cap} read back; refused")
-        data = os.read(fd, cap + 1) if size else b""
-        while size and len(data) < size and len(data) <= cap:  # os.read may return less than asked
-            more = os.read(fd, cap + 1 - len(data))
-            if not more:
-                break
-            data += more
-        if len(data) > cap:
-            raise InvalidInput(f"{what} {path}: it grew past the {cap} bytes read back; refused")
-        return data
-    except OSError as e:
-        raise InvalidInput(f"{what} {path}: cannot be read ({e.strerror or e})") from None
-    finally:
-        os.close(fd)
-
-
-def is_regular_or_absent(path: Path, what: str) -> bool:
-    """Whether ``path`` exists (False: it does not); InvalidInput if it exists and is not a regular file."""
-    try:
-        mode = os.stat(path).st_mode
-    except FileNotFoundError:
-        return False
-    except OSError as e:
-        raise InvalidInput(f"{what} {path}: cannot be read ({e.strerror or e})") from None
-    if not stat.S_ISREG(mode):
-        raise InvalidInput(f"{what} {path}: not a regular file ({_kind(mode)}); refused")
-    return True
+    if len(data) > cap:
+        raise InvalidInput(f"{what} {path}: it grew past the {cap} bytes read back; refused")
+    return data
 
 
 def _constant(name: str) -> Any:
