@@ -21,6 +21,10 @@ the same census run from an empty directory would not give.  The rules:
   digest of the map data it summarised (:func:`inputs_digest`: every task's
   data checksum and slice); failing any, the shard is reduced again, saying so.
 
+Every JSON file is read back as a regular file of at most :data:`MAX_RECORD_BYTES` (:func:`read_capped`),
+checked on the open descriptor.  A record whose checks all hold may still have been edited and resealed: what a
+resume computes again to find that is :mod:`topomark.proofs.census_recheck`.
+
 A file that changes after it was verified (a map file shorter than its slice
 when a shard is reduced, a task record that fails its check right after the
 task ran) stops the census with exit 2 naming the file.
@@ -41,15 +45,22 @@ from __future__ import annotations
 import hashlib
 import importlib.util
 import json
+import os
 from functools import lru_cache
 from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
 from typing import Any
 
 from topomark.proofs.census_shards import RECORD, checksum, digest, done_path, map_path, reduce_path
+from topomark.spec.errors import InvalidInput
+from topomark.spec.jsontext import open_regular_file
 
-__all__ = ["Damaged", "code_version", "package_version", "read_record", "read_record_text", "check_done", "check_reduce",
+__all__ = ["Damaged", "MAX_RECORD_BYTES", "code_version", "package_version", "read_capped", "read_record",
+           "read_record_text", "check_done", "check_reduce",
            "inputs_digest", "file_digest", "CODE_MODULES"]
+
+MAX_RECORD_BYTES = 64 << 20
+"""The largest manifest or record read back (64 MiB): a larger file is no record this format writes."""
 
 CODE_MODULES = ("topomark.proofs.census", "topomark.proofs.census_map", "topomark.proofs.census_language",
                 "topomark.proofs.census_shards", "topomark.proofs.enumerate", "topomark.spec.world",
@@ -94,7 +105,7 @@ def read_record_text(text: str) -> dict[str, Any]:
     """A record from its JSON text, if it is an object whose checksum holds; else :class:`Damaged`."""
     try:
         record = json.loads(text)
-    except ValueError:
+    except (ValueError, RecursionError):  # RecursionError: nested too deeply to be a record
         raise Damaged("it is not JSON") from None
     if not isinstance(record, dict) or not isinstance(record.get("checksum"), str):
         raise Damaged("it is not a checksummed record")
@@ -103,12 +114,32 @@ def read_record_text(text: str) -> dict[str, Any]:
     return record
 
 
-def read_record(path: Path) -> dict[str, Any]:
-    """The record in ``path`` (see :func:`read_record_text`); an unreadable file is :class:`Damaged`."""
+def read_capped(path: Path, cap: int = MAX_RECORD_BYTES) -> bytes:
+    """The bytes of the regular file ``path`` if it holds at most ``cap``; a file that is not a regular file (a
+    FIFO, a device, a directory) is InvalidInput (exit 2), a larger or unreadable one :class:`Damaged`."""
     try:
-        text = path.read_bytes().decode("utf-8")
-    except (OSError, UnicodeDecodeError) as e:
-        raise Damaged(f"it cannot be read ({getattr(e, 'strerror', None) or e})") from None
+        fh = open_regular_file(path, max_bytes=None)  # opened without blocking, checked on the descriptor
+    except InvalidInput as e:
+        if os.path.lexists(path) and not path.is_file():
+            raise
+        raise Damaged(f"it cannot be read ({e})") from None
+    try:
+        with fh:
+            data = fh.read(cap + 1)
+    except OSError as e:
+        raise Damaged(f"it cannot be read ({e.strerror or e})") from None
+    if len(data) > cap:
+        raise Damaged(f"it holds more than {cap:,} bytes, more than any record of the format")
+    return data
+
+
+def read_record(path: Path) -> dict[str, Any]:
+    """The record in ``path`` (see :func:`read_record_text`, :func:`read_capped`); an unreadable or oversized file
+    is :class:`Damaged`."""
+    try:
+        text = read_capped(path).decode("utf-8")
+    except UnicodeDecodeError:
+        raise Damaged("it is not UTF-8 text") from None
     return read_record_text(text)
 
 

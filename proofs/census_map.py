@@ -56,7 +56,7 @@ from topomark.proofs.census_shards import (combine, digest, done_path, map_path,
 from topomark.proofs.enumerate import connected_graphs, graph_automorphisms, world_of_rotation
 from topomark.spec.world import DartMark, World
 
-__all__ = ["Unit", "plan", "estimate", "rotation_count", "run_map", "unit_worlds", "world_at", "world_records",
+__all__ = ["Unit", "plan", "estimate", "rotation_count", "map_task", "run_map", "unit_worlds", "world_at", "world_records",
            "marked"]
 
 Unit = tuple[int, int, int, int]  # (n, graph index, c, C): the ranks c, c + C, c + 2C, ...
@@ -251,11 +251,11 @@ def world_records(class_name: str, world_id: tuple[int, int, int], world: World,
     return placements
 
 
-def run_map(root: str, task: int, class_name: str, max_degree: int, units: list[Unit],
-            shards: int, census: str = "") -> dict[str, Any]:
-    """Run map task ``task`` of census ``census`` (the manifest's checksum) into directory ``root``; returns
-    (and writes) its ``done`` record: ``{"sizes": {n: [worlds, placements]}, "offsets": shard boundaries in its
-    data file}``, with the data's size and checksum (:mod:`topomark.proofs.census_integrity`)."""
+def map_task(task: int, class_name: str, max_degree: int, units: list[Unit], shards: int,
+             census: str = "") -> tuple[bytes, dict[str, Any]]:
+    """Map task ``task`` of census ``census`` (the manifest's checksum) computed, nothing written: its data
+    file's bytes and its sealed ``done`` record (``{"sizes": {n: [worlds, placements]}, "offsets": shard
+    boundaries in the data}``, with the data's size and checksum, :mod:`topomark.proofs.census_integrity`)."""
     rows: list[tuple] = []
     sizes: dict[int, list[int]] = {}
     for unit in units:
@@ -268,11 +268,18 @@ def run_map(root: str, task: int, class_name: str, max_degree: int, units: list[
     where = shard_of(recs, shards)
     order = np.argsort(where, kind="stable")
     bounds = np.searchsorted(where[order], np.arange(shards + 1))
-    path = Path(root)
     data = recs[order].tobytes()
+    return data, seal({"sizes": {str(n): v for n, v in sizes.items()}, "offsets": [int(b) for b in bounds],
+                       "records": len(recs), "bytes": len(data), "data": digest(data), "census": census,
+                       "task": task, "code": code_version()})
+
+
+def run_map(root: str, task: int, class_name: str, max_degree: int, units: list[Unit],
+            shards: int, census: str = "") -> dict[str, Any]:
+    """Run map task ``task`` (:func:`map_task`) into directory ``root``: the data file, then the ``done``
+    record, which it returns."""
+    data, result = map_task(task, class_name, max_degree, units, shards, census)
+    path = Path(root)
     write_atomic(map_path(path, task), data)
-    result = seal({"sizes": {str(n): v for n, v in sizes.items()}, "offsets": [int(b) for b in bounds],
-                   "records": len(recs), "bytes": len(data), "data": digest(data), "census": census, "task": task,
-                   "code": code_version()})
     write_json(done_path(path, task), result)
     return result

@@ -15,8 +15,11 @@ worlds, and a killed run resumes:
    device is exit 2 naming it, checked once before anything is read);
 3. reduce every shard without a ``reduce`` file, or whose file fails its
    checks (:func:`reduce_shard`);
-4. merge the shard summaries, rebuild the smallest counterexample from its
-   record and re-check it with bisimulation and ``find_isomorphism``.
+4. merge the shard summaries; on a resume, compute again a seeded sample of
+   the kept records and those the verdict rests on, and refuse the directory
+   (exit 2 naming the file) if one differs (:mod:`~topomark.proofs.census_recheck`);
+5. rebuild the smallest counterexample from its record and re-check it with
+   bisimulation and ``find_isomorphism``.
 
 Tasks run on an executor (:mod:`topomark.proofs.census_exec`): inline,
 local processes (``jobs``) or a Dask cluster (``scheduler``).  The on-disk
@@ -35,6 +38,7 @@ from __future__ import annotations
 
 import json
 import os
+import secrets
 import stat
 import time
 from pathlib import Path
@@ -43,11 +47,12 @@ from typing import Any, Callable
 from topomark.proofs.census import CensusResult, SizeRow, recheck_pair, stderr_progress
 from topomark.proofs.census_exec import Executor, Progress, executor
 from topomark.proofs.census_map import plan, run_map, world_at
+from topomark.proofs.census_recheck import recheck_resumed
 from topomark.proofs.census_integrity import (Damaged, check_done, check_reduce, code_version, inputs_digest,
-                                              read_record_text)
+                                              read_capped, read_record_text)
 from topomark.proofs.census_shards import (FORMAT, done_path, merge_summaries, read_shard, reduce_path, seal, summary,
                                            write_json)
-from topomark.spec.errors import InvalidInput
+from topomark.spec.errors import InvalidInput, clip
 from topomark.spec.markerclass import marker_class
 
 __all__ = ["sharded_census", "reduce_shard", "default_shards", "prepare"]
@@ -91,10 +96,10 @@ def _writable(root: Path) -> None:
 def _read_manifest(path: Path, params: dict[str, Any]) -> dict[str, Any]:
     """The manifest in ``path`` if every check of :mod:`~topomark.proofs.census_integrity` holds; else exit 2."""
     try:
-        text = path.read_bytes().decode("utf-8")
+        text = read_capped(path).decode("utf-8")
         raw = json.loads(text)
-    except (OSError, UnicodeDecodeError, ValueError) as e:
-        raise InvalidInput(f"{path}: not a census manifest ({getattr(e, 'strerror', None) or e})") from None
+    except (Damaged, UnicodeDecodeError, ValueError, RecursionError) as e:
+        raise InvalidInput(f"{path}: not a census manifest ({clip(str(e), 120)})") from None
     if isinstance(raw, dict) and raw.get("format") == "topomark/census-shards@1":
         raise InvalidInput(f"{path}: written by an older topomark in format topomark/census-shards@1, whose shards "
                            f"carry no checksums and cannot be verified; remove {path.parent} or choose an empty "
@@ -161,9 +166,11 @@ def _verified_done(root: Path, manifest: dict[str, Any], note: Callable[[str], N
 
 
 def _map_phase(ex: Executor, root: Path, manifest: dict[str, Any], progress: Progress,
-               note: Callable[[str], None]) -> list[dict[str, Any]]:
+               note: Callable[[str], None]) -> tuple[list[dict[str, Any]], set[int]]:
+    """Every map task's record, and the tasks kept from an earlier run (not computed now)."""
     p = manifest["params"]
     done = _verified_done(root, manifest, note)
+    kept = set(done)
     todo = []
     for t, task in enumerate(manifest["tasks"]):
         est = sum(e for _, e in task)
@@ -181,11 +188,12 @@ def _map_phase(ex: Executor, root: Path, manifest: dict[str, Any], progress: Pro
             raise InvalidInput(f"{done_path(root, t)}: {e}, just after task {t} ran (another process or another "
                                f"topomark version wrote it)") from None
         progress.done(todo[i][1], sum(w for w, _ in result["sizes"].values()))
-    return [done[t] for t in range(len(manifest["tasks"]))]
+    return [done[t] for t in range(len(manifest["tasks"]))], kept
 
 
 def _reduce_phase(ex: Executor, root: Path, manifest: dict[str, Any], done: list[dict[str, Any]],
-                  all_pairs: bool, note: Callable[[str], None]) -> list[dict[str, Any]]:
+                  all_pairs: bool, note: Callable[[str], None]) -> tuple[list[dict[str, Any]], set[int]]:
+    """Every shard's summary, and the shards kept from an earlier run (not reduced now)."""
     p = manifest["params"]
     sizes = p["max_vertices"] - p["min_n"] + 1
     out: dict[int, dict[str, Any]] = {}
@@ -204,9 +212,10 @@ def _reduce_phase(ex: Executor, root: Path, manifest: dict[str, Any], done: list
         calls.append((reduce_shard, (str(root), s, slices, p["min_n"], p["max_vertices"], all_pairs,
                                      manifest["checksum"], inputs)))
         which.append(s)
+    kept = set(out)
     for i, result in ex.run(calls):
         out[which[i]] = result
-    return [out[s] for s in sorted(out)]
+    return [out[s] for s in sorted(out)], kept
 
 
 def _rows(manifest: dict[str, Any], total: dict[str, Any], done: list[dict[str, Any]]) -> tuple[SizeRow, ...]:
@@ -229,7 +238,7 @@ def sharded_census(class_name: str, max_vertices: int, max_degree: int, root: st
                    jobs: int = 1, scheduler: str | None = None, min_vertices: int = 2,
                    progress: Callable[[str], None] | None = None, task_worlds: int = 2000,
                    shards: int | None = None, verify_all: bool = False,
-                   note: Callable[[str], None] = stderr_progress) -> CensusResult:
+                   note: Callable[[str], None] = stderr_progress, recheck_seed: int | None = None) -> CensusResult:
     """The census of ``class_name`` as map and reduce over shards in directory ``root`` (resumed if present).
 
     ``jobs`` local worker processes (1: inline), or ``scheduler``: a Dask
@@ -237,7 +246,9 @@ def sharded_census(class_name: str, max_vertices: int, max_degree: int, root: st
     smallest members of every ambiguous class, as :func:`census` does.
     A resume verifies every file before it trusts it
     (:mod:`~topomark.proofs.census_integrity`); a damaged task or shard is
-    computed again and reported through ``note`` (standard error).
+    computed again and reported through ``note`` (standard error); a sample of the kept records, and those the
+    verdict rests on, are computed again and compared (:mod:`~topomark.proofs.census_recheck`, seeded by
+    ``recheck_seed``, drawn afresh if None).
     ``task_worlds`` and ``shards`` apply to a new directory; a resume keeps
     the manifest's.
     """
@@ -250,9 +261,12 @@ def sharded_census(class_name: str, max_vertices: int, max_degree: int, root: st
     manifest = prepare(path, params, task_worlds, shards)
     with executor(jobs, scheduler, tasks=max(len(manifest["tasks"]), manifest["shards"])) as ex:
         bar = Progress(manifest["estimated_worlds"], progress)
-        done = _map_phase(ex, path, manifest, bar, note)
+        done, kept_tasks = _map_phase(ex, path, manifest, bar, note)
         bar.finish()
-        total = merge_summaries(_reduce_phase(ex, path, manifest, done, verify_all, note))
+        parts, kept_shards = _reduce_phase(ex, path, manifest, done, verify_all, note)
+    total = merge_summaries(parts)
+    seed = secrets.randbits(32) if recheck_seed is None else recheck_seed
+    recheck_resumed(path, manifest, done, kept_tasks, parts, kept_shards, total, seed, note)
     rows = _rows(manifest, total, done)
 
     def rebuild(member: list[int]):

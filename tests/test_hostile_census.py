@@ -143,7 +143,8 @@ def test_files_of_a_census_with_other_parameters_are_recomputed(baseline, copy, 
         shutil.copy(other / name, copy / name)
     notes: list[str] = []
     assert run(copy, notes) == baseline[1]
-    assert len(notes) == 2 and all("census" in n for n in notes)
+    damage = [n for n in notes if "computing again map task(s)" not in n]  # the resume's re-check says so too
+    assert len(damage) == 2 and all("census" in n for n in damage)
 
 
 def test_the_reported_break_an_emptied_map_file_keeps_the_counterexample(tmp_path, capsys):
@@ -201,7 +202,8 @@ def test_two_writers_at_once_give_the_undamaged_answer(baseline, tmp_path):
     assert [p.returncode for p in procs] == [1, 1], [e for _, e in outs]
     pairs = {json.dumps(json.loads(o)["smallest_counterexample"]) for o, _ in outs}
     notes: list[str] = []
-    assert len(pairs) == 1 and run(root, notes) == run(tmp_path / "fresh") and notes == []
+    assert len(pairs) == 1 and run(root, notes) == run(tmp_path / "fresh")
+    assert [n for n in notes if "computing again map task(s)" not in n] == []  # nothing damaged
 
 
 # -- workers die with their leader ------------------------------------------------------------
