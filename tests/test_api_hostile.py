@@ -9,6 +9,7 @@ search of 300,000 vertices, an algorithm option of None meaning "no limit") fail
 from __future__ import annotations
 
 import inspect
+import json
 import itertools
 import signal
 from typing import Any, Callable
@@ -245,3 +246,39 @@ def test_a_call_the_signature_cannot_take_is_bad_input_naming_the_function(name)
     if required:
         with pytest.raises(TypeError, match=rf"^{name}\(\) cannot be called so: missing a required argument"):
             function()
+
+
+def _endless_valid(pulled: list[int]) -> Any:
+    """A valid trace that never ends: the robot family's header, then moves around a 4-cycle for ever."""
+    from topomark.spec.kit import Kit
+
+    yield {"event": "header", "format": "topomark/trace@2", "family": "robot", "algorithm": "chapter-6-sketch",
+           "policies": {}, "lighthouse": None, "kit": Kit(vertex=1, movable=True).to_json(), "n": 4, "m": 4}
+    for step in itertools.count(1):
+        pulled.append(step)
+        yield {"event": "move", "step": step, "motion": 0, "perception": "[2,A,A]", "purpose": "other"}
+
+
+def test_an_endless_valid_generator_is_refused_at_the_record_cap(alarm, monkeypatch):
+    """The cap the command's trace files have (MAX_TRACE_RECORDS, lowered here so the test is quick) ends an
+    endless generator of valid records: one InvalidInput naming the record, read one at a time up to it."""
+    from topomark.reference.trace import reader
+
+    monkeypatch.setattr(reader, "MAX_TRACE_RECORDS", 2000)
+    pulled: list[int] = []
+    with pytest.raises(InvalidInput, match=r"^<records> line 2001: the trace goes on past 2,000 records") as caught:
+        T.replay(W, _endless_valid(pulled))
+    assert len(pulled) == 2000 and "\n" not in str(caught.value) and "--" not in str(caught.value)
+
+
+def test_a_trace_file_past_the_record_cap_is_exit_2(tmp_path, monkeypatch, capsys):
+    from topomark.reference.cli.main import main
+    from topomark.reference.trace import reader
+
+    monkeypatch.setattr(reader, "MAX_TRACE_RECORDS", 50)
+    T.save_world(T.generate(W), tmp_path / "w.json")
+    records = _endless_valid([])
+    (tmp_path / "t.jsonl").write_text("".join(json.dumps(next(records)) + "\n" for _ in range(60)))
+    assert main(["replay", str(tmp_path / "w.json"), str(tmp_path / "t.jsonl")]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "t.jsonl line 51: the trace goes on past 50 records" in err

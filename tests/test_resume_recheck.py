@@ -211,3 +211,80 @@ def test_a_manifest_too_deep_or_too_large_is_exit_2_naming_it(copy, capsys, text
     assert main([*ARGV, "--shards", str(copy)]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "manifest.json: not a census manifest" in err and "Traceback" not in err
+
+
+# -- the worst case's resume: the same rule ----------------------------------------------------------------
+def _worst(root: Path, seed: int | None = None):
+    from topomark.reference.worstcase.exhaustive import Setup
+    from topomark.reference.worstcase.resumable import worst_case
+    found = worst_case(Setup("basic", sample=0), 5, 3, root, task_worlds=4, recheck_seed=seed)
+    return {n: (t.max_cost, t.runs, t.argmax_cost) for n, t in found["tallies"].items()}
+
+
+@pytest.fixture(scope="module")
+def worst_dir(tmp_path_factory):
+    root = tmp_path_factory.mktemp("worst") / "w"
+    return root, _worst(root)
+
+
+@pytest.fixture
+def worst_copy(worst_dir, tmp_path):
+    root = tmp_path / "w"
+    shutil.copytree(worst_dir[0], root)
+    return root
+
+
+def _worst_unchecked(monkeypatch) -> None:
+    from topomark.reference.worstcase import resumable
+    monkeypatch.setattr(resumable, "_recheck_kept", lambda *a, **k: None)
+
+
+def _holding(root: Path, n: int, cost: int) -> int:
+    return next(t for t in range(len(_manifest(root)["tasks"]))
+                if any(x["n"] == n and x["max_cost"] == cost for x in
+                       json.loads((root / f"task-{t}.json").read_text())["tallies"]))
+
+
+def test_a_resealed_task_file_hiding_the_worst_run_is_refused_whatever_the_seed(worst_dir, worst_copy, monkeypatch):
+    """The task holding the largest cost at n = 5 forges it away, consistently (every check of task_record
+    holds): the other tasks' largest cost would become the answer, and its re-run argmax would agree."""
+    top = worst_dir[1][5][0]
+    task = _holding(worst_copy, 5, top)
+
+    def hide(r):
+        t = next(x for x in r["tallies"] if x["n"] == 5)
+        gone = sum(p[2] for p in t["pairs"] if p[1] >= 20)
+        t["pairs"] = [p for p in t["pairs"] if p[1] < 20]
+        t.update(runs=t["runs"] - gone, max_cost=max(p[1] for p in t["pairs"]))
+        t["outcomes"]["correct"] -= gone
+        best = max(t["pairs"], key=lambda p: p[1] / p[0])
+        t["cost_m"] = [best[1], best[0]]
+    _reseal(worst_copy / f"task-{task}.json", hide)
+    with monkeypatch.context() as m:
+        _worst_unchecked(m)
+        assert _worst(worst_copy)[5][0] < top  # the forgery changes the answer without the re-check
+    tasks = len(_manifest(worst_copy)["tasks"])
+    with pytest.raises(InvalidInput, match=rf"task-{task}\.json: task {task} run again does not give what the file"):
+        _worst(worst_copy, seed=_seed_missing(tasks, task))
+
+
+def test_a_resealed_task_file_with_other_counts_is_refused_when_drawn(worst_dir, worst_copy, monkeypatch):
+    task = _holding(worst_copy, 4, 10)  # not the task of any maximum: only the sample finds it
+
+    def more(r):
+        t = next(x for x in r["tallies"] if x["n"] == 4)
+        t["pairs"][0][2] += 1
+        t["runs"] += 1
+        t["outcomes"]["correct"] += 1
+    _reseal(worst_copy / f"task-{task}.json", more)
+    with monkeypatch.context() as m:
+        _worst_unchecked(m)
+        assert _worst(worst_copy)[4][1] == worst_dir[1][4][1] + 1
+    tasks = len(_manifest(worst_copy)["tasks"])
+    assert _worst(worst_copy, seed=_seed_missing(tasks, task))[4][1] == worst_dir[1][4][1] + 1  # a sample
+    with pytest.raises(InvalidInput, match=rf"task-{task}\.json: task {task} run again"):
+        _worst(worst_copy, seed=_seed_drawing(tasks, task))
+
+
+def test_an_untouched_worst_case_resume_answers_the_same(worst_dir, worst_copy):
+    assert _worst(worst_copy) == worst_dir[1]

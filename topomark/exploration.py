@@ -195,13 +195,14 @@ def replay(world: WorldLike, trace: str | os.PathLike[str] | Iterable[dict[str, 
 
     ``trace`` is a trace file or its records (``explore(...).trace``, or any iterable of them, a generator
     too); records are read back through the trace format's reader one at a time, so they are checked exactly
-    as a file's lines are, and a stream of records is never held whole (an endless generator is read for as
-    long as it yields, in bounded memory, as a growing file would be).  ``result.ok`` is the verdict,
+    as a file's lines are, and a stream of records is never held whole: one record at a time, and at most
+    :data:`~topomark.reference.trace.reader.MAX_TRACE_RECORDS` (100,000,000) of them, as from a file: an endless
+    generator is refused there.  ``result.ok`` is the verdict,
     ``result.message`` says what was verified or where the trace first diverges from the world.
 
     Bad input raises InvalidInput: a world that is not one, a ``trace`` that is neither a path nor an
     iterable of records (a dict, a str of JSON), and the first record the trace format refuses (what
-    cannot be JSON, NaN, a missing header, a second header, ...).
+    cannot be JSON, NaN, a missing header, a second header, a record past the 100,000,000th, ...).
 
     Examples
     --------

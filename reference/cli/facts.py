@@ -53,6 +53,8 @@ SOURCES: dict[str, tuple[str, Callable[[Any], Any]]] = {  # fact: (the module de
     "max_marker_count": ("topomark.reference.oracle.marker_messages", lambda m: m.MAX_COUNT),
     "max_thread": ("topomark.reference.oracle.marker_messages", lambda m: m.MAX_THREAD),
     "max_walk_limit": (_LIGHTHOUSES, lambda m: m.MAX_WALK_LIMIT),
+    "max_trace_records": ("topomark.reference.trace.reader", lambda m: m.MAX_TRACE_RECORDS),
+    "max_trace_line_bytes": ("topomark.reference.trace.reader", lambda m: m.MAX_LINE_BYTES),
     "max_neighbourhood": (_LIGHTHOUSES, lambda m: m.MAX_NEIGHBOURHOOD),
     "max_threshold": (_LIGHTHOUSES, lambda m: m.MAX_THRESHOLD),
     "edge_policies": (_POLICIES, lambda m: tuple(m.EDGE_CHOICES)),  # the built-in and the registered ones

@@ -65,6 +65,8 @@ TABLE: dict[str, Any] = {
     'max_marker_count': 1000000,
     'max_thread': 1000000,
     'max_walk_limit': 1000000,
+    'max_trace_records': 100000000,
+    'max_trace_line_bytes': 67108864,
     'max_neighbourhood': 8,
     'max_threshold': 1000001,
     'edge_policies': ('nearest', 'fifo', 'lifo'),

@@ -8,7 +8,8 @@ InvalidInput` (exit 2) naming the file and line (``spec/trace.md``):
 
 * the file: a regular file (a FIFO, ``/dev/zero`` or a directory is refused
   before it is read, :func:`topomark.spec.jsontext.open_regular_file`), UTF-8,
-  every line at most :data:`MAX_LINE_BYTES`, no empty line;
+  every line at most :data:`MAX_LINE_BYTES`, no empty line, at most
+  :data:`MAX_TRACE_RECORDS` lines (records given as objects too);
 * each line: JSON within :func:`topomark.spec.jsontext.parse_json`'s limits
   (nesting, integer size, no NaN), an object with an ``event`` the header's
   format and family allow and exactly the fields :data:`EVENTS` (trace@1) or
@@ -45,10 +46,16 @@ from topomark.reference.explorers.robot import PURPOSES
 from topomark.reference.trace.header import check_header, header_policies
 
 __all__ = ["EVENTS", "EVENTS_2", "HYPOTHESIS", "ENHANCEMENT", "VIOLATION", "OUTCOMES", "REJECTED_BY", "MAX_LINE_BYTES",
+           "MAX_TRACE_RECORDS",
            "load_trace", "parse_trace", "header_policies", "signature"]
 
 MAX_LINE_BYTES = 64 << 20
 """A longer line is refused (64 MiB: the largest record, an iteration of a 10,000-vertex world, is far smaller)."""
+
+MAX_TRACE_RECORDS = 100_000_000
+"""A trace of more records is refused when its record past this is reached, from a file (``topomark replay``) or
+from an iterable of records (:func:`topomark.replay`: an endless generator ends there).  A hundred million
+records is about ten times the longest run a topomark benchmark records, and several hours of replay."""
 
 OUTCOMES = ("case 1", "case 2", "case 3", "untested")
 REJECTED_BY = ("motion", "overlap", "map")
@@ -212,6 +219,9 @@ def _records(lines: Iterable[tuple[int, str]], source: str) -> Iterator[dict[str
     table, allowed = EVENTS, tuple(EVENTS)
     for k, line in lines:
         where = f"{source} line {k}"
+        if k > MAX_TRACE_RECORDS:  # read at each call: a test lowers it
+            raise InvalidInput(f"{where}: the trace goes on past {MAX_TRACE_RECORDS:,} records, the most a trace "
+                               "may hold; refused")
         if not line.strip():
             raise InvalidInput(f"{where}: empty line (a trace has one JSON object per line)")
         rec = parse_json(line, where)

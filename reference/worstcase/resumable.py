@@ -19,8 +19,14 @@ this code; a task whose file is missing or fails its checksum runs again.  A
 killed search so resumes where it stopped.  A checksum is no signature, so a
 resume trusts no more than it can check (:mod:`.task_record`): the manifest's
 task list must be the plan of its parameters; a task file whose seal holds but
-whose tallies are not consistent, or whose tallied maximum its task does not
-give when run again, is bad input (exit 2) naming the file; every file is read
+whose tallies are not consistent is bad input (exit 2) naming the file.  A
+record edited consistently and resealed passes those checks, so a resume also
+runs again (:func:`_recheck_kept`) a seeded sample of the kept tasks
+(:data:`topomark.proofs.census_recheck.RECHECK_FRACTION`, at least one; the
+seed drawn afresh each time and reported) and every kept task whose file holds
+a witness of a tallied maximum or reports a problem; one that does not give
+what its file says is bad input (exit 2) naming the file, as in the census
+(:mod:`topomark.proofs.census_recheck`); every file is read
 back as a regular file of bounded size (a FIFO or a device is refused).
 The directory is used by its absolute path, so workers elsewhere (a Dask
 cluster) find it.
@@ -33,6 +39,7 @@ from __future__ import annotations
 
 import hashlib
 import json
+import secrets
 import time
 import importlib.util
 from pathlib import Path
@@ -41,6 +48,7 @@ from typing import Any, Callable
 from topomark.proofs.census_exec import Progress, executor
 from topomark.proofs.census_integrity import Damaged, package_version, read_record_text
 from topomark.proofs.census_map import plan, world_at
+from topomark.proofs.census_recheck import recheck_sample
 from topomark.proofs.census_shards import seal, write_json
 from topomark.spec.errors import InvalidInput, TopomarkFault
 
@@ -220,14 +228,36 @@ def _verify_resumed(search: Search, record: dict[str, Any]) -> None:
                            "(edited and resealed?); remove the file to run the task again")
 
 
+def _recheck_kept(search: Search, records: dict[int, dict[str, Any]], tallies: dict[int, SizeTally], seed: int,
+                  progress: Callable[[str], None] | None) -> None:
+    """Run again the kept tasks a resume must not take on trust (the rule of the module's docstring): a seeded
+    sample, every task holding a tallied maximum's witness and every task reporting a problem."""
+    if not search.resumed:
+        return
+    witnesses = {(n, tuple(w)) for n, t in tallies.items()
+                 for w in (t.argmax_cost, t.argmax_cost_m, t.argmax_ratio) if w is not None}
+    verdicts = {t for t in search.resumed if records[t]["problems"] or records[t]["problem_count"] or any(
+        (x["n"], tuple(x[k])) in witnesses for x in records[t]["tallies"]
+        for k in ("argmax_cost", "argmax_cost_m", "argmax_ratio") if x[k] is not None)}
+    again = sorted(set(recheck_sample(search.resumed, seed)) | verdicts)
+    if progress is not None:
+        progress(f"worst-case: resumed {len(search.resumed)} task(s); running task(s) "
+                 f"{', '.join(map(str, again[:20]))}{' ...' if len(again) > 20 else ''} again to check them "
+                 f"(seed {seed})")
+    for t in again:
+        _verify_resumed(search, records[t])
+
+
 def worst_case(setup: Setup, max_vertices: int, max_degree: int, root: Path, min_vertices: int = 2,
                jobs: int = 1, scheduler: str | None = None, progress: Callable[[str], None] | None = None,
-               task_worlds: int = 2000) -> dict[str, Any]:
-    """Run (or resume) the exhaustive search in ``root``; the merged tallies and what the checks found."""
+               task_worlds: int = 2000, recheck_seed: int | None = None) -> dict[str, Any]:
+    """Run (or resume) the exhaustive search in ``root``; the merged tallies and what the checks found
+    (a resume runs kept tasks again as the module says, seeded by ``recheck_seed``, drawn afresh if None)."""
     search = Search(setup, max_vertices, max_degree, min_vertices, Path(root).absolute(), task_worlds)
     records = search.run(jobs, scheduler, progress)
     parts = [{t["n"]: SizeTally.from_json(t) for t in r["tallies"]} for r in records.values()]
     tallies = merge_tallies(parts)
+    _recheck_kept(search, records, tallies, secrets.randbits(32) if recheck_seed is None else recheck_seed, progress)
     problems = [p for r in records.values() for p in r["problems"]]
     for r in records.values():
         if any(p["kind"] == "disagree" for p in r["problems"]):

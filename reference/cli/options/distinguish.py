@@ -28,7 +28,10 @@ def register(sub) -> None:
                                    "parameters, code version) before trusting it: a damaged task or shard is "
                                    "computed again (said on stderr); a damaged, older-format or other census's "
                                    "manifest is exit 2 naming it; a shard file that is not a regular file (a FIFO, "
-                                   "a device) is exit 2 naming it. Worker processes die with the census. At most "
+                                   "a device) is exit 2 naming it. A seal finds damage, not an edit: a resume also "
+                                   "computes again a seeded sample of the kept tasks and shards (1 percent, at least one) "
+                                   "and those the reported counterexample rests on, and a kept record they do not "
+                                   "reproduce is exit 2 naming its file. Worker processes die with the census. At most "
                                    f"{MAX_WORLDS:,} worlds are enumerated at the largest n, so the largest "
                                    f"--max-degree per --max-vertices is {degree_table()} (exit 2 past it, before "
                                    "work).")

@@ -44,7 +44,9 @@ def register(sub) -> None:
     r = sub.add_parser("replay",
                        description="Replay TRACE on WORLD: every perception, the cost, I-1/I-2 after every "
                                    "iteration (S and U rebuilt from the joins) and the final map. Exit 0 if it "
-                                   "holds up, 1 at the first divergence (step, expected, found), 2 on bad input.")
+                                   "holds up, 1 at the first divergence (step, expected, found), 2 on bad input (a "
+                                   f"trace of more than {fact('max_trace_records'):,} records, or a line of more "
+                                   f"than {fact('max_trace_line_bytes') >> 20} MiB, too).")
     r.add_argument("world", metavar="WORLD", help="the world file the trace was recorded on")
     r.add_argument("trace", metavar="TRACE", help="the JSON Lines trace file to replay")
     r.add_argument("--json", action="store_true", help=JSON_HELP)

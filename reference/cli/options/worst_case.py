@@ -30,7 +30,9 @@ def register(sub) -> None:
     p.add_argument("--min-vertices", type=int, default=2, metavar="M", help="smallest world size (default 2)")
     p.add_argument("--jobs", type=int, default=1, metavar="N", help=f"worker processes, 1 to {MAX_JOBS} (default 1)")
     p.add_argument("--scheduler", metavar="ADDRESS", help="run the tasks on a Dask cluster (an address, or 'local')")
-    p.add_argument("--shards", metavar="DIR", help="keep the tasks' results in DIR; run again, it resumes")
+    p.add_argument("--shards", metavar="DIR", help="keep the tasks' results in DIR; run again, it resumes, running again a "
+                   "seeded sample of the kept tasks (1 percent, at least one) and those holding a maximum or a problem: a "
+                   "task file they do not reproduce (edited and resealed) is exit 2 naming it")
     p.add_argument("--sample", type=float, default=0.001, metavar="FRACTION",
                    help="fraction of the runs re-run checked (default 0.001; every argmax is always re-checked)")
     p.add_argument("--seed", type=seed, default=0, help="seed of the checked sample and of --search (default 0)")
