@@ -46,6 +46,7 @@ import time
 from typing import Any, Callable, Iterator
 
 from topomark.spec.errors import InvalidInput
+from topomark.spec.spelling import option
 
 __all__ = ["Executor", "executor", "worker_count", "Progress", "CONNECT_TIMEOUT", "WORKER_WAIT", "ORPHAN_POLL",
            "die_with_leader"]
@@ -114,7 +115,7 @@ def _distributed():
     try:
         import distributed
     except ImportError:
-        raise InvalidInput("--scheduler needs Dask: pip install 'dask[distributed]' (from a checkout: pip install '.[cluster]')") from None
+        raise InvalidInput(f"{option('scheduler')} needs Dask: pip install 'dask[distributed]' (from a checkout: pip install '.[cluster]')") from None
     return distributed
 
 
@@ -191,7 +192,7 @@ def executor(jobs: int, scheduler: str | None, tasks: int | None = None) -> Iter
     With ``tasks`` (the most calls any one :meth:`Executor.run` will get), at most that many local workers start.
     """
     if jobs < 1:
-        raise InvalidInput(f"--jobs must be at least 1, not {jobs}")
+        raise InvalidInput(f"{option('jobs')} must be at least 1, not {jobs}")
     if tasks is not None:
         jobs = worker_count(jobs, tasks)
     if scheduler is not None:

@@ -68,6 +68,7 @@ import z3
 
 from topomark.spec.errors import CheckFailure, InvalidInput
 from topomark.spec.markerclass import marker_class
+from topomark.spec.spelling import option
 
 from topomark.proofs.z3decode import covering_walk, decode_pair, reachable_relation, recheck
 from topomark.proofs.z3fixing import canonical_labelling, pair_is_model
@@ -104,12 +105,12 @@ def size_pairs(max_vertices: int, min_vertices: int = 2) -> list[tuple[int, int]
 def _validate(marker: str, max_vertices: int, max_degree: int, min_vertices: int) -> None:
     marker_class(marker)
     if not isinstance(max_vertices, int) or max_vertices < 2:
-        raise InvalidInput(f"--max-vertices must be an integer >= 2 (a world has at least 2 vertices), "
+        raise InvalidInput(f"{option('max-vertices')} must be an integer >= 2 (a world has at least 2 vertices), "
                            f"got {max_vertices!r}")
     if max_vertices > MAX_VERTICES:
-        raise InvalidInput(f"--max-vertices {max_vertices} is too large for the solver (at most {MAX_VERTICES})")
+        raise InvalidInput(f"{option('max-vertices', max_vertices)} is too large for the solver (at most {MAX_VERTICES})")
     if not isinstance(max_degree, int) or max_degree < 1:
-        raise InvalidInput(f"--max-degree must be an integer >= 1, got {max_degree!r}")
+        raise InvalidInput(f"{option('max-degree')} must be an integer >= 1, got {max_degree!r}")
     if not isinstance(min_vertices, int) or not 2 <= min_vertices <= max_vertices:
         raise InvalidInput(f"min_vertices must be between 2 and {max_vertices}, got {min_vertices!r}")
 

@@ -93,6 +93,19 @@ CASES: list[tuple[str, Callable[[], Any], type[Exception], str]] = [
     ("explore option NaN", lambda: T.explore(W, algorithm="model-tree", max_steps=NAN), InvalidInput, "max_steps"),
     ("explore option bool", lambda: T.explore(W, algorithm="model-tree", max_steps=True), InvalidInput, "not bool"),
     ("explore misspelt", lambda: T.explore(W, algoritm="basic"), InvalidKeyword, "did you mean 'algorithm'"),
+    # explore: options checked deep in the registry, named as keywords (topomark.spec.spelling)
+    ("explore option too small", lambda: T.explore(W, algorithm="model-tree", max_models=0), InvalidInput,
+     "max_models must be an integer >= 1, got 0"),
+    ("explore option too large", lambda: T.explore(W, algorithm="model-tree", max_models=10 ** 9), InvalidInput,
+     "max_models must be at most 100,000"),
+    ("explore option choice", lambda: T.explore(W, algorithm="model-tree", prior="nope"), InvalidInput,
+     "prior must be one of none, single-leaf"),
+    ("explore false cue", lambda: T.explore(W, algorithm="model-tree", cue_diameter=5), InvalidInput,
+     "cue_diameter=5 is false for this world"),
+    ("explore false cue n", lambda: T.explore(W, algorithm="model-tree", cue_n=7), InvalidInput,
+     "cue_n=7 is false for this world"),
+    ("explore false prior", lambda: T.explore(W, algorithm="model-tree", prior="single-leaf"), InvalidInput,
+     "prior='single-leaf' is false for this world"),
     # check_map, isomorphic, distinguish
     ("check_map None", lambda: T.check_map(W, None), InvalidInput, "a world must be"),
     ("check_map misspelt", lambda: T.check_map(W, map=W), InvalidKeyword, "did you mean 'map_'"),
@@ -131,7 +144,8 @@ CASES: list[tuple[str, Callable[[], Any], type[Exception], str]] = [
     ("census max_vertices None", lambda: T.census("none", None, 2), InvalidInput, "not NoneType"),
     ("census max_degree NaN", lambda: T.census("none", 3, NAN), InvalidInput, "max_degree must be"),
     ("census max_degree huge", lambda: T.census("none", 3, 10 ** 100), InvalidInput, "max_degree must be"),
-    ("census too many worlds", lambda: T.census("none", 8, 7), InvalidInput, "enumerates too many worlds"),
+    ("census too many worlds", lambda: T.census("none", 8, 7), InvalidInput,
+     "max_degree=7 with max_vertices=8 enumerates more than"),
     ("census jobs float", lambda: T.census("none", 3, 2, jobs=1.5), InvalidInput, "jobs must be an integer"),
     ("census jobs str", lambda: T.census("none", 3, 2, jobs="2"), InvalidInput, "not str"),
     ("census shards int", lambda: T.census("none", 3, 2, shards=3), InvalidInput, "shards must be a path"),
@@ -154,7 +168,8 @@ CASES: list[tuple[str, Callable[[], Any], type[Exception], str]] = [
     ("worst_case max_vertices None", lambda: T.worst_case("basic", None, 2), InvalidInput, "not NoneType"),
     ("worst_case max_vertices float", lambda: T.worst_case("basic", 3.0, 2), InvalidInput, "not float (3.0)"),
     ("worst_case max_vertices bool", lambda: T.worst_case("basic", True, 2), InvalidInput, "not bool"),
-    ("worst_case too many worlds", lambda: T.worst_case("basic", 7, 6), InvalidInput, "enumerates too many worlds"),
+    ("worst_case too many worlds", lambda: T.worst_case("basic", 7, 6), InvalidInput,
+     "max_degree=6 with max_vertices=7 enumerates more than"),
     ("worst_case max_degree 0", lambda: T.worst_case("basic", 3, 0), InvalidInput, "max_degree must be"),
     ("worst_case max_degree NaN", lambda: T.worst_case("basic", 3, NAN), InvalidInput, "max_degree must be"),
     ("worst_case max_degree huge", lambda: T.worst_case("basic", 3, 10 ** 100), InvalidInput, "101 digits"),
@@ -195,6 +210,7 @@ def test_a_hostile_argument_is_one_precise_refusal(alarm, call, error, fragment,
     message = str(caught.value)
     assert fragment in message and "\n" not in message
     assert isinstance(caught.value, InvalidInput)
+    assert "--" not in message  # a Python caller is told the keyword argument, never a command-line flag
 
 
 def test_every_public_function_has_a_case():
@@ -282,3 +298,33 @@ def test_a_trace_file_past_the_record_cap_is_exit_2(tmp_path, monkeypatch, capsy
     assert main(["replay", str(tmp_path / "w.json"), str(tmp_path / "t.jsonl")]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "t.jsonl line 51: the trace goes on past 50 records" in err
+
+
+def test_a_run_stopped_by_a_limit_through_the_api_replays_from_the_command_line(tmp_path, capsys):
+    """A run's reason is part of the run (recorded in the trace's end, compared by replay's re-run), so it keeps
+    one spelling whoever started it: a trace the API records replays from the command line, and the reverse."""
+    from topomark.reference.cli.main import main
+
+    world = T.generate("lattice:rows=3,cols=3")
+    T.save_world(world, tmp_path / "w.json")
+    run = T.explore(world, algorithm="model-tree", max_steps=1, trace=tmp_path / "api.jsonl")
+    assert run.outcome == "limit" and "max-steps 1 reached" in run.reason
+    assert main(["replay", str(tmp_path / "w.json"), str(tmp_path / "api.jsonl")]) == 0
+    assert main(["explore", str(tmp_path / "w.json"), "--algorithm", "model-tree", "--max-steps", "1",
+                 "--trace", str(tmp_path / "cli.jsonl")]) in (0, 1)
+    capsys.readouterr()
+    assert T.replay(world, tmp_path / "cli.jsonl").ok
+
+
+@pytest.mark.parametrize("argv, flag", [
+    (["explore", W, "--algorithm", "model-tree", "--max-models", "0"], "--max-models must be an integer >= 1"),
+    (["explore", W, "--algorithm", "model-tree", "--cue-diameter", "5"], "--cue-diameter 5 is false"),
+    (["worst-case", "--max-vertices", "7", "--max-degree", "6"], "--max-degree 6 with --max-vertices 7"),
+    (["census", "--marker", "none", "--max-vertices", "9", "--max-degree", "4"], "--max-degree 4 with --max-vertices 9"),
+    (["world", "cycle:n=4", "--seed", "3"], "--seed has no effect"),
+])
+def test_the_command_line_still_names_its_flags(argv, flag, capsys):
+    from topomark.reference.cli.main import main
+
+    assert main(argv) == 2
+    assert flag in capsys.readouterr().err

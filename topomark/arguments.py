@@ -34,8 +34,9 @@ from typing import Any, ParamSpec, TypeVar
 
 from topomark.keywords import unexpected_keyword
 from topomark.reference.cli.args import check_seconds
-from topomark.reference.worstcase.limits import LARGEST_DEGREE, degree_table
+from topomark.reference.worstcase.limits import exhaustive_refusal
 from topomark.spec.errors import InvalidInput, InvalidKeyword, clip
+from topomark.spec.spelling import python_spelling
 
 __all__ = ["integer", "fraction", "seconds", "flag", "text", "optional_text", "path", "callback",
            "largest_degree", "keywords_checked"]
@@ -138,10 +139,9 @@ def callback(name: str, value: Any) -> Any:
 def largest_degree(max_vertices: int, max_degree: int) -> int:
     """``max_degree`` if the exhaustive search of worlds up to ``max_vertices`` vertices fits in memory with it
     (:data:`~topomark.reference.worstcase.limits.LARGEST_DEGREE`, the command's own bound); else InvalidInput."""
-    largest = LARGEST_DEGREE.get(max_vertices)
-    if largest is not None and min(max_degree, max_vertices - 1) > largest:
-        raise InvalidInput(f"max_degree {max_degree} with max_vertices {max_vertices} enumerates too many worlds to "
-                           f"hold (at most {largest} there; the largest degree at each n: {degree_table()})")
+    refusal = exhaustive_refusal(max_vertices, max_degree)  # the command's own check, naming the keywords here
+    if refusal is not None:
+        raise InvalidInput(refusal)
     return max_degree
 
 
@@ -149,7 +149,9 @@ def keywords_checked(function: Callable[P, R]) -> Callable[P, R]:
     """``function``, whose unexpected keyword raises :class:`~topomark.spec.errors.InvalidKeyword` (an
     InvalidInput and a TypeError, as Python raises) naming the closest keywords it takes, and so does a call its
     signature cannot take (too many positional arguments, a required one missing, one given twice); a function
-    with ``**options`` checks its own keywords."""
+    with ``**options`` checks its own keywords.  The function runs inside
+    :func:`~topomark.spec.spelling.python_spelling`: a message naming an option, however deep it is raised,
+    names the keyword argument (``max_models``), not the command line's flag (``--max-models``)."""
     signature = inspect.signature(function)
     parameters = signature.parameters.values()
     takes = [p.name for p in parameters if p.kind in (p.POSITIONAL_OR_KEYWORD, p.KEYWORD_ONLY)]
@@ -166,6 +168,7 @@ def keywords_checked(function: Callable[P, R]) -> Callable[P, R]:
             signature.bind(*args, **kwargs)
         except TypeError as exc:  # too many positional arguments, a required one missing, one given twice
             raise InvalidKeyword(f"{name}() cannot be called so: {exc}; {words}") from None
-        return function(*args, **kwargs)
+        with python_spelling():  # every message naming an option names the keyword (topomark.spec.spelling)
+            return function(*args, **kwargs)
 
     return checked

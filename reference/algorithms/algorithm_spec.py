@@ -59,6 +59,7 @@ from typing import Any, Callable, Mapping
 
 from topomark.spec.errors import InvalidInput, clip
 from topomark.spec.kit import Kit
+from topomark.spec.spelling import option
 
 from topomark.reference.explorers.edge_choices import EDGE_CHOICES
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES, Lighthouse, lighthouse as lighthouse_named
@@ -128,19 +129,19 @@ class Parameter:
         """``value`` (a string from the command line, or already typed) checked; bad input names the option."""
         if self.choices:
             if value not in self.choices:
-                raise InvalidInput(f"--{self.name} must be one of {', '.join(self.choices)}, "
+                raise InvalidInput(f"{option(self.name)} must be one of {', '.join(self.choices)}, "
                                    f"got {clip(repr(value), 60)}")
             return value
         text = str(value).strip()
         if isinstance(value, bool) or not (text.isascii() and text.lstrip("-").isdigit()) or len(text) > 18:
             bound = f" and at most {self.maximum:,}" if self.maximum is not None else ""
-            raise InvalidInput(f"--{self.name} must be an integer >= {self.minimum}{bound}, got "
+            raise InvalidInput(f"{option(self.name)} must be an integer >= {self.minimum}{bound}, got "
                                f"{clip(repr(value), 60)}")
         number = int(text)
         if self.minimum is not None and number < self.minimum:
-            raise InvalidInput(f"--{self.name} must be an integer >= {self.minimum}, got {value!r}")
+            raise InvalidInput(f"{option(self.name)} must be an integer >= {self.minimum}, got {value!r}")
         if self.maximum is not None and number > self.maximum:
-            raise InvalidInput(f"--{self.name} must be at most {self.maximum:,}, got {number}")
+            raise InvalidInput(f"{option(self.name)} must be at most {self.maximum:,}, got {number}")
         return number
 
 
@@ -341,8 +342,8 @@ class AlgorithmSpec:
             if value is None:
                 continue
             if name not in known:
-                takes = ", ".join(f"--{p}" for p in known) or "none"
-                raise InvalidInput(f"the algorithm {self.name} takes no option --{name} (its options: {takes})")
+                takes = ", ".join(option(p) for p in known) or "none"
+                raise InvalidInput(f"the algorithm {self.name} takes no option {option(name)} (its options: {takes})")
             out[name] = known[name].parse(value)
         return out
 

@@ -82,6 +82,7 @@ from topomark.spec.errors import InvalidInput, clip, unknown_name
 from topomark.spec.kit import Kit, MarkerOp, ThreadOp
 from topomark.spec.mapstate import PartialMap
 from topomark.spec.signature import Signature, back_link_table, signature_at
+from topomark.spec.spelling import option
 
 from topomark.reference.explorers.inconsistency import inconsistent
 from topomark.reference.explorers.lighthouse_search import after_search, search_edge, search_vertex
@@ -228,10 +229,10 @@ class Lighthouse:
         unchanged); bad input names the option."""
         given = {k: v for k, v in given.items() if v is not None}
         for key, value in given.items():
-            flag = "--" + key.replace("_", "-")
+            flag = option(key.replace("_", "-"))
             if key not in self.options:
                 raise InvalidInput(f"the {self.name} lighthouse takes no option {flag}"
-                                   + (f" (it takes {', '.join('--' + o.replace('_', '-') for o in self.options)})"
+                                   + (f" (it takes {', '.join(option(o.replace('_', '-')) for o in self.options)})"
                                       if self.options else "; only a searched lighthouse does: "
                                       + ", ".join(h.name for h in LIGHTHOUSES.values() if h.options)))
             given[key] = _option_value(key, flag, value)
@@ -321,11 +322,11 @@ def configured(name: str | None, seed=None, walk_limit=None, neighbourhood=None,
     seed then goes in its generator text, ``lattice-hole:seed=3``); otherwise it stays the generator's seed.
     """
     if name is None:
-        given = [f for f, v in (("--walk-limit", walk_limit), ("--neighbourhood", neighbourhood),
-                                ("--threshold", threshold)) if v is not None]
+        given = [option(f) for f, v in (("walk-limit", walk_limit), ("neighbourhood", neighbourhood),
+                                        ("threshold", threshold)) if v is not None]
         if given:
             flag = given[0]
-            raise InvalidInput(f"{flag} is an option of a searched lighthouse (--lighthouse "
+            raise InvalidInput(f"{flag} is an option of a searched lighthouse ({option('lighthouse')} "
                                + "|".join(h.name for h in LIGHTHOUSES.values() if h.options) + ")")
         return None, seed
     light = lighthouse(name)

@@ -19,6 +19,7 @@ from pathlib import Path
 from topomark.spec.errors import InvalidInput, clip, did_you_mean
 from topomark.spec.world import World
 from topomark.spec.worldfile import load_world
+from topomark.spec.spelling import option
 
 from topomark.reference.worlds.generators import GENERATORS, PARAMETERS, generate
 
@@ -55,9 +56,9 @@ def resolve_world(text: str, seed: int | None = None) -> World:
     if name in GENERATORS and not exists:
         if seed is not None:
             if "seed" not in PARAMETERS[name]:
-                raise InvalidInput(f"--seed has no effect: generator {name!r} is not random")
+                raise InvalidInput(f"{option('seed')} has no effect: generator {name!r} is not random")
             if "seed" in params:
-                raise InvalidInput(f"seed given twice: --seed {seed} and seed={params['seed']} in {text!r}")
+                raise InvalidInput(f"seed given twice: {option('seed', seed)} and seed={params['seed']} in {text!r}")
             params["seed"] = str(seed)
         try:
             return generate(name, **params)
@@ -65,7 +66,7 @@ def resolve_world(text: str, seed: int | None = None) -> World:
             raise exc.__class__(f"{clip(text, 80)}: {exc}") from None
     if exists or text.endswith(".json"):
         if seed is not None:
-            raise InvalidInput(f"--seed has no effect on a world file ({text})")
+            raise InvalidInput(f"{option('seed')} has no effect on a world file ({text})")
         return load_world(text)
     raise InvalidInput(f"{clip(text, 80, quote=True)} is neither a world file nor a generator"
                        f"{did_you_mean(name, GENERATORS)} (generators: {', '.join(GENERATORS)})")

@@ -30,6 +30,8 @@ Examples
 
 from __future__ import annotations
 
+from topomark.spec.spelling import option
+
 __all__ = ["MAX_EXHAUSTIVE", "MAX_WORLDS", "LARGEST_DEGREE", "MAX_SEARCH_VERTICES", "MAX_EVALUATIONS",
            "MAX_SEARCH_PRODUCT", "exhaustive_refusal", "search_refusal", "degree_table"]
 
@@ -57,18 +59,18 @@ def exhaustive_refusal(max_vertices: int, max_degree: int) -> str | None:
     degree = min(max_degree, max_vertices - 1)  # a degree above n - 1 is n - 1
     if largest is None or degree <= largest:
         return None
-    return (f"--max-degree {max_degree} with --max-vertices {max_vertices} enumerates more than {MAX_WORLDS:,} worlds "
+    return (f"{option('max-degree', max_degree)} with {option('max-vertices', max_vertices)} enumerates more than {MAX_WORLDS:,} worlds "
             f"at n = {max_vertices} (at most {largest} there; the largest degree at each n: {degree_table()})")
 
 
 def search_refusal(vertices: int, evaluations: int) -> str | None:
     """Why one size of ``--search`` would not fit in memory, or None if it fits."""
     if vertices > MAX_SEARCH_VERTICES:
-        return f"--vertices {vertices} is more than {MAX_SEARCH_VERTICES:,} (the search's largest world size)"
+        return f"{option('vertices', vertices)} is more than {MAX_SEARCH_VERTICES:,} (the search's largest world size)"
     if evaluations > MAX_EVALUATIONS:
-        return (f"--evaluations {evaluations} is more than {MAX_EVALUATIONS:,} (the search holds a quarter of its "
+        return (f"{option('evaluations', evaluations)} is more than {MAX_EVALUATIONS:,} (the search holds a quarter of its "
                 "runs' worlds at once)")
     if vertices * evaluations > MAX_SEARCH_PRODUCT:
-        return (f"--vertices {vertices} with --evaluations {evaluations}: their product is more than "
+        return (f"{option('vertices', vertices)} with {option('evaluations', evaluations)}: their product is more than "
                 f"{MAX_SEARCH_PRODUCT:,} (the search holds a quarter of its runs' worlds at once)")
     return None

@@ -38,6 +38,7 @@ from topomark.spec.errors import InvalidInput
 from topomark.spec.isomorphism import anchored
 from topomark.spec.kit import Kit
 from topomark.spec.worldfile import dumps_world
+from topomark.spec.spelling import option
 
 from topomark.reference.algorithms.algorithm_spec import AlgorithmSpec, Parameter
 from topomark.reference.explorers.model_prior import posteriors
@@ -87,7 +88,7 @@ def _kit(n: int, m: int, options: dict) -> Kit:
     for name, true in (("cue-n", n), ("cue-m", m)):
         given = options.get(name)
         if given is not None and given != true:
-            raise InvalidInput(f"--{name} {given} is false for this world ({name[4:]} = {true}): a cue is prior "
+            raise InvalidInput(f"{option(name, given)} is false for this world ({name[4:]} = {true}): a cue is prior "
                                f"knowledge of the world")
     return Kit()
 
@@ -99,12 +100,12 @@ def check_cues(world, options: dict) -> None:
     if D is not None:
         true = _diameter(world)
         if true != D:
-            raise InvalidInput(f"--cue-diameter {D} is false for this world (diameter = {true})")
+            raise InvalidInput(f"{option('cue-diameter', D)} is false for this world (diameter = {true})")
     if options.get("cue-planar") == "yes" and world.genus() != 0:
-        raise InvalidInput(f"--cue-planar yes is false for this world (its embedding has genus {world.genus()})")
+        raise InvalidInput(f"{option('cue-planar', 'yes')} is false for this world (its embedding has genus {world.genus()})")
     leaves = sum(len(world.rotation[v]) == 1 for v in world.vertices)
     if options.get("prior") == "single-leaf" and leaves != 1:
-        raise InvalidInput(f"--prior single-leaf is false for this world (it has {leaves} vertices of degree 1)")
+        raise InvalidInput(f"{option('prior', 'single-leaf')} is false for this world (it has {leaves} vertices of degree 1)")
 
 
 def _diameter(world) -> int:
