@@ -16,6 +16,7 @@ module             concept (thesis section)
 ``worldfile``      the ``topomark/world@1`` JSON format and its schema
 ``errors``         invalid input (exit 2) vs failed checks (exit 1)
 ``violation``      a failed check described: condition, place, expected, found
+``spelling``       how a message names an option: ``--flag`` or ``keyword`` (the API)
 =================  ======================================================
 
 Everything else in topomark uses these predicates and restates none of them.
