@@ -147,7 +147,9 @@ def census(marker: str, max_vertices: int, max_degree: int, jobs: int = 1,
     ``result.smallest_counterexample`` is the smallest indistinguishable non-isomorphic pair (re-checked), or
     None; ``result.rows`` counts worlds, placements and languages per size.  The census runs as map and
     reduce over shards: in ``jobs`` processes, or on a Dask ``scheduler``; ``shards`` keeps them in a
-    directory so that an interrupted census resumes (a temporary directory otherwise).  ``progress`` is
+    directory so that an interrupted census resumes (a temporary directory otherwise); a resume computes again
+    a seeded sample of what it kept and the records its counterexample rests on, and a record edited since it
+    was written raises InvalidInput naming its file (:mod:`topomark.proofs.census_recheck`).  ``progress`` is
     called with a line of text now and then.
 
     Raises InvalidInput before any work for an unknown marker class, ``max_vertices`` outside 2 to 10 (the

@@ -52,7 +52,8 @@ def worst_case(algorithm: str = "basic", max_vertices: int = 5, max_degree: int 
                lighthouse: str | None = None, policies: Policies | Mapping[str, str] | None = None, jobs: int = 1,
                sample: float = 0.001, seed: int = 0, shards: str | Path | None = None) -> list[dict[str, Any]]:
     """The exhaustive worst case of ``algorithm``, one row per n (the ``per_n`` of ``topomark worst-case
-    --json``).  ``shards`` keeps the tasks on disk so a second call resumes; without it they live in a
+    --json``).  ``shards`` keeps the tasks on disk so a second call resumes (running again a seeded sample of the kept
+    tasks and those holding a maximum: a task file edited since it was written raises InvalidInput naming it); without it they live in a
     temporary directory.  A checked re-run that disagrees with its unchecked run raises
     :class:`~topomark.spec.errors.TopomarkFault`; runs that did not map their world are counted in each row's
     ``outcomes``.

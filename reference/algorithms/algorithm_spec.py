@@ -129,8 +129,7 @@ class Parameter:
         """``value`` (a string from the command line, or already typed) checked; bad input names the option."""
         if self.choices:
             if value not in self.choices:
-                raise InvalidInput(f"{option(self.name)} must be one of {', '.join(self.choices)}, "
-                                   f"got {clip(repr(value), 60)}")
+                raise InvalidInput(f"{option(self.name)} must be one of {', '.join(self.choices)}, got {clip(repr(value), 60)}")
             return value
         text = str(value).strip()
         if isinstance(value, bool) or not (text.isascii() and text.lstrip("-").isdigit()) or len(text) > 18:
