@@ -3,7 +3,7 @@
 Every module in ``reference/explorers/`` (found by listing the folder, so a
 new explorer is covered without editing this file; the robot interface and
 the policies it is handed live there too) may import only the spec's
-signature, map-state, kit and error modules and each other; never the world,
+signature, map-state, kit, error and spelling modules and each other; never the world,
 the simulator, the checker or anything that can reach the truth.  The layering
 of the whole package is tested in ``tests/test_layers.py``.
 """
@@ -26,6 +26,7 @@ SIBLINGS = {f"topomark.reference.explorers.{p.stem}" for p in EXPLORERS.glob("*.
 ALLOWED = {
     "__future__", "dataclasses", "typing", "collections",
     "topomark.spec.signature", "topomark.spec.mapstate", "topomark.spec.errors", "topomark.spec.kit",
+    "topomark.spec.spelling",  # how a refusal names an option (a context variable): nothing of the world
 } | SIBLINGS
 
 
