@@ -86,11 +86,12 @@ from topomark.spec.errors import ExplorerFault
 from topomark.spec.kit import MarkerOp
 from topomark.spec.signature import Signature
 
-from topomark.reference.explorers.policies import Policies
+from topomark.reference.explorers.policies import Policies, bfs_preorder
 from topomark.reference.explorers.robot import Robot
 from topomark.reference.explorers.walker import MapWalker, StepRecord, places_like
 
-__all__ = ["MarkerIteration", "MovableMarkerExplorer", "DirectionalMovableMarkerExplorer"]
+__all__ = ["MarkerIteration", "MovableMarkerExplorer", "DirectionalMovableMarkerExplorer", "ListingMovableMarkerExplorer",
+           "ListingDirectionalMovableMarkerExplorer"]
 
 PICK_UP = MarkerOp("vertex", pick_up=True)
 
@@ -117,6 +118,7 @@ class MovableMarkerExplorer(MapWalker):
     loop_check = "Dudek loop"
     loop_proof = "Dudek's back-link validation, whose marker always leads back (§2.3.1)"
     directional = False
+    literal = False  # the listing as written (:class:`ListingMovableMarkerExplorer`)
 
     def __init__(self, robot: Robot, policies: Policies | None = None,
                  observer: Callable[["MovableMarkerExplorer", MarkerIteration], None] | None = None,
@@ -132,8 +134,8 @@ class MovableMarkerExplorer(MapWalker):
         vk, i = it.edge
         self.travel_to(vk, parent)
         it.signature = sig = self.take_exit(i, "new")
-        it.candidates = places_like(self.S, vk, sig.degree)
-        if not it.candidates:  # no known vertex can be v_u: it is new, nothing to drop
+        it.candidates = self.places(vk, sig.degree)
+        if not it.candidates and not self.literal:  # no known vertex can be v_u: it is new, nothing to drop
             self.non_loop_augment(it, sig)
         else:
             self.robot.operate(MarkerOp("vertex", direction=0 if self.directional else None))
@@ -151,6 +153,10 @@ class MovableMarkerExplorer(MapWalker):
         return self.record(it)
 
     # -- place validation (§2.3.1) -------------------------------------------------------
+    def places(self, vk: int, degree: int) -> list[int]:
+        """The known vertices the search visits: those that could be v_u (:func:`~.walker.places_like`)."""
+        return places_like(self.S, vk, degree)
+
     def search(self, candidates: list[int]) -> tuple[int, Signature] | None:
         """Visit the candidates (:func:`~.walker.places_like`) until the marker is seen; where (the robot
         stands there) and what it sensed.  Every vertex the robot enters is looked at, so a candidate passed on
@@ -183,7 +189,7 @@ class MovableMarkerExplorer(MapWalker):
         vk, i = it.edge
         open_exits = self.open_exits(x)
         self.robot.operate(PICK_UP)
-        if len(open_exits) == 1:
+        if len(open_exits) == 1 and not self.literal:  # e' with no search (the listing searches anyway)
             return open_exits[0]
         self.walk_to(vk, "drop")  # a drop trip: to v_k to drop the marker, and back to v_k'
         self.robot.operate(MarkerOp("vertex"))
@@ -219,3 +225,27 @@ class DirectionalMovableMarkerExplorer(MovableMarkerExplorer):
         x, entry = self.position
         self.robot.operate(PICK_UP)
         return (entry + cast(int, sig.vertex_direction)) % self.S.degree(x)  # the directional marker's reading
+
+
+def _visit_all_of_s(self: MovableMarkerExplorer, vk: int, degree: int) -> list[int]:
+    """§2.3.1's search as written, "visiting known vertices in S": every known vertex but v_k (where the robot
+    stands, having seen no marker there), in the preorder of a breadth-first tree of S rooted at v_k."""
+    return bfs_preorder(self.S, vk)[1:]
+
+
+class ListingMovableMarkerExplorer(MovableMarkerExplorer):
+    """§2.3.1's description as written (``dudek-listing``): the marker dropped at every v_u, every known vertex
+    of S visited, and the back-link search made at every loop step (module docstring: the listing)."""
+
+    name = "dudek-listing"
+    literal = True
+    places = _visit_all_of_s
+
+
+class ListingDirectionalMovableMarkerExplorer(DirectionalMovableMarkerExplorer):
+    """The directional variant as written (``dudek-directional-listing``; §2.3.1, §6.3.1): the marker dropped
+    at every v_u pointing at e, every known vertex of S visited; e' is where the marker points."""
+
+    name = "dudek-directional-listing"
+    literal = True
+    places = _visit_all_of_s

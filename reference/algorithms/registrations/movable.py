@@ -32,9 +32,11 @@ from __future__ import annotations
 from topomark.spec.kit import Kit
 
 from topomark.reference.algorithms.algorithm_spec import STEPWISE_MAP_CHECKS, AlgorithmSpec
-from topomark.reference.explorers.movable_marker import DirectionalMovableMarkerExplorer, MovableMarkerExplorer
+from topomark.reference.explorers.movable_marker import (DirectionalMovableMarkerExplorer,
+                                                          ListingDirectionalMovableMarkerExplorer,
+                                                          ListingMovableMarkerExplorer, MovableMarkerExplorer)
 
-__all__ = ["SPECS", "dudek_bound", "directional_bound"]
+__all__ = ["SPECS", "dudek_bound", "directional_bound", "dudek_listing_bound", "directional_listing_bound"]
 
 
 def dudek_bound(n: int, m: int) -> int:
@@ -47,9 +49,24 @@ def directional_bound(n: int, m: int) -> int:
     return 3 * (n - 1) ** 2 + (m - n + 1) * (3 * n - 1)
 
 
+def dudek_listing_bound(n: int, m: int) -> int:
+    """Topomark's bound for §2.3.1's description as written (``dudek-listing``; ``docs/bounds.md``):
+    3n(n − 1)/2 + (m − n + 1)(6n − 7)."""
+    return 3 * n * (n - 1) // 2 + (m - n + 1) * (6 * n - 7)
+
+
+def directional_listing_bound(n: int, m: int) -> int:
+    """Topomark's bound for the directional variant as written (``dudek-directional-listing``;
+    ``docs/bounds.md``): 3n(n − 1)/2 + (m − n + 1)(3n − 3)."""
+    return 3 * n * (n - 1) // 2 + (m - n + 1) * (3 * n - 3)
+
+
 _OPTIONS = ("policy edge=nearest|fifo|lifo",)
 _BOUND = "O(mn) (§2.3.1); bound_fn: ours, exact for our explorer"
 _OURS = "ours: our explorer's exact worst case behind O(mn) (§2.3.1)"
+_BOUND_LISTING = "O(mn) (§2.3.1); bound_fn: topomark's, for the description as written"
+_LISTING = ("topomark's worst case of §2.3.1's description as written (docs/bounds.md), behind O(mn) "
+            "(§2.3.1)")
 SEARCH = ("§2.3.1 gives no listing (Dudek et al.'s is in [24, 26]) and says the robot searches \"visiting known "
           "vertices in S\": this explorer visits only those that can be v_u (its degree, an unexplored edge, neither "
           "v_k nor a neighbour of v_k) and looks at every vertex it passes on the way")
@@ -61,12 +78,27 @@ SPECS = (
                   bound_fn=dudek_bound, bound_formula=f"3(n − 1)² + (m − n + 1)(7n − 8), {_OURS}",
                   explorer=MovableMarkerExplorer, uses_lighthouse=False,
                   marker_bound_fn=lambda n, m: 1, family="robot", ways=("correct", "marker-moved"),
-                  changes=f"{SEARCH}; the undirected back-link search tests v_k's unexplored exits in order and the "
-                          "last one needs no test"),
+                  changes=f"{SEARCH}; it drops nothing where no known vertex can be v_u, and where v_k' has a "
+                          "single unexplored exit that exit is e', with no back-link search",
+                  listing_entry="dudek-listing"),
+    AlgorithmSpec(name="dudek-listing", thesis="§2.3.1, Dudek et al. [24, 26], as written",
+                  kit=Kit(vertex=1, movable=True), bound=_BOUND_LISTING, markers="1", deterministic=True,
+                  options=_OPTIONS, checks=STEPWISE_MAP_CHECKS, bound_fn=dudek_listing_bound,
+                  bound_source="listing", bound_formula=f"3n(n − 1)/2 + (m − n + 1)(6n − 7), {_LISTING}",
+                  explorer=ListingMovableMarkerExplorer, uses_lighthouse=False, marker_bound_fn=lambda n, m: 1,
+                  family="robot", ways=("correct", "marker-moved")),
     AlgorithmSpec(name="dudek-directional", thesis="§2.3.1, Dudek et al. [24, 26]; directional variant [27]",
                   kit=Kit(vertex=1, directional=True, movable=True), bound=_BOUND, markers="1", deterministic=True,
                   options=_OPTIONS, checks=STEPWISE_MAP_CHECKS, bound_fn=directional_bound,
                   bound_formula=f"3(n − 1)² + (m − n + 1)(3n − 1), {_OURS}",
                   explorer=DirectionalMovableMarkerExplorer, uses_lighthouse=False, marker_bound_fn=lambda n, m: 1,
-                  family="robot", changes=SEARCH, ways=("correct", "marker-moved")),
+                  family="robot", changes=f"{SEARCH}; it drops nothing where no known vertex can be v_u",
+                  listing_entry="dudek-directional-listing", ways=("correct", "marker-moved")),
+    AlgorithmSpec(name="dudek-directional-listing",
+                  thesis="§2.3.1, Dudek et al. [24, 26]; directional variant [27] (§6.3.1), as written",
+                  kit=Kit(vertex=1, directional=True, movable=True), bound=_BOUND_LISTING, markers="1",
+                  deterministic=True, options=_OPTIONS, checks=STEPWISE_MAP_CHECKS, bound_fn=directional_listing_bound,
+                  bound_source="listing", bound_formula=f"3n(n − 1)/2 + (m − n + 1)(3n − 3), {_LISTING}",
+                  explorer=ListingDirectionalMovableMarkerExplorer, uses_lighthouse=False,
+                  marker_bound_fn=lambda n, m: 1, family="robot", ways=("correct", "marker-moved")),
 )
