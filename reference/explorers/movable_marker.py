@@ -22,6 +22,12 @@ and answers "have I been here before?":
    pointing at the entry edge e, so where it is found its direction names
    e' at once — no back-link search.
 
+§2.3.1 gives no listing, but its description is precise enough to follow
+as written — drop at v_u, come back, visit the known vertices of S, search
+v_k''s unexplored edges — once the choices below are made; so each marker
+has two explorers: topomark's (which leaves out moves that cannot change
+the answer) and the description as written (the ``-listing`` classes).
+
 The thesis leaves open, and this module decides (each tested on the
 smallest world that shows it in ``tests/test_movable_marker.py``):
 
@@ -30,28 +36,45 @@ smallest world that shows it in ``tests/test_movable_marker.py``):
   strategies as "Depth-One search strategies which always drop a marker at
   the unknown end of an edge and comes back".
 * **which known vertices are visited** — §2.3.1 says "visiting known vertices
-  in S"; only those that can be v_u are visited: the same degree as v_u
-  (§2.3.1: "two vertices appear identical to the robot if they have the same
-  degree"), at least one unexplored edge (v_u is reached by the unexplored
-  e, so e' is unexplored at v_u), neither v_k nor a neighbour of v_k in S
-  (no self-loops, no multi-edges: §3.1.1, §2.3.1 "Redundant or
-  self-referential edges are prohibited").  They are visited in the
-  preorder of a breadth-first tree of S rooted at v_k (children by exit
-  index), each reached by a shortest path in S; every vertex the robot
-  passes is looked at, so one passed on the way is not visited again.
-  With no such vertex, v_u is new and nothing is dropped.
+  in S".  Topomark's explorers (``dudek``, ``dudek-directional``) visit only
+  those that can be v_u: the same degree as v_u (§2.3.1: "two vertices
+  appear identical to the robot if they have the same degree"), at least one
+  unexplored edge (v_u is reached by the unexplored e, so e' is unexplored at
+  v_u), neither v_k nor a neighbour of v_k in S (no self-loops, no
+  multi-edges: §3.1.1, §2.3.1 "Redundant or self-referential edges are
+  prohibited"); with no such vertex, v_u is new and nothing is dropped.  The
+  description as written (``dudek-listing``, ``dudek-directional-listing``)
+  drops the marker at every v_u and visits every known vertex but v_k.
+  Either way they are visited in the preorder of a breadth-first tree of S
+  rooted at v_k (children by exit index), each reached by a shortest path in
+  S: the thesis fixes no order, and this one makes the search one closed walk
+  of at most 2(n_s − 1) traversals over n_s known vertices (the tree's Euler
+  tour), which is what the O(mn) of §2.3.1 needs ("the robot may have to
+  visit each vertex in S in order to validate an edge", §6.3.1), and makes
+  the candidates' walk a shortcut of the listing's.  Every vertex the robot
+  enters is looked at (the marker is part of what it senses there, §2.3.1:
+  "whether the marker is present at the current vertex"), so one passed on
+  the way is not visited again, and the search stops where the marker is
+  first seen.
 * **when the marker is picked up** — at the end of every step, before the
   next edge is chosen: at v_u (non-loop: the robot walks back to v_k and
-  over e once more), at v_k' (directional loop, or undirected when v_k' has
-  a single unexplored edge: that edge is e', §2.3.1's search has one
-  candidate and needs no move), or at v_k (undirected back-link search).
+  over e once more), at v_k' (directional loop, or, in topomark's undirected
+  explorer, when v_k' has a single unexplored edge: that edge is e', the
+  search has one candidate and needs no move), or at v_k (undirected
+  back-link search, which the description as written makes at every loop
+  step: "the robot drops the marker at v_k and goes back to v_k'", with no
+  exception for a single unexplored edge).
   So between steps the marker is held and the world carries none: S never
   shows a mark, and I-1/I-2 and the final extended isomorphism (markers
   included) are checked between steps exactly as for Algorithm 3.1.
 * **the order of the back-link search** — v_k''s unexplored exits in index
   order; each failed one is traversed back (two moves), the last one
   needs no test (when the others failed it is e', and crossing it reaches
-  v_k, where the marker must be picked up anyway).
+  v_k, where the marker must be picked up anyway).  The thesis names no order
+  ("traverses each of the (unexplored) incident edges"); the bound of
+  ``docs/bounds.md`` holds for every order.  The robot walks to v_k by a
+  shortest path of S too (§2.3.1 names the shortest path only for the way
+  back to v_k').
 
 Cost accounting (the robot's purposes, :data:`~topomark.reference.explorers.robot.PURPOSES`):
 
@@ -75,6 +98,8 @@ Examples
 --------
 >>> MovableMarkerExplorer.name, DirectionalMovableMarkerExplorer.name
 ('dudek', 'dudek-directional')
+>>> ListingMovableMarkerExplorer.name, ListingDirectionalMovableMarkerExplorer.name
+('dudek-listing', 'dudek-directional-listing')
 """
 
 from __future__ import annotations
@@ -182,8 +207,8 @@ class MovableMarkerExplorer(MapWalker):
         """The exit e' of v_k' (where the robot stands, the marker found) that e leads to; the marker picked up.
 
         §2.3.1: drop the marker at v_k, go back to v_k' along the shortest known
-        path, traverse v_k''s unexplored edges looking for it.  A single
-        unexplored edge at v_k' is e' with no move.
+        path, traverse v_k''s unexplored edges looking for it.  In topomark's
+        explorer a single unexplored edge at v_k' is e' with no move.
         """
         x = self.position[0]
         vk, i = it.edge
