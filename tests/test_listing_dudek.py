@@ -15,14 +15,17 @@ from __future__ import annotations
 
 import ast
 import copy
+import json
 import sys
 from pathlib import Path
 
 import pytest
 
+from conftest import bare, make_world
 from topomark.proofs.enumerate import embedded_worlds
 from topomark.spec.world import Start
 from topomark.reference.algorithms.registry import REGISTRY, algorithm_spec, variant
+from topomark.reference.cli.main import main
 from topomark.reference.algorithms.registrations.movable import directional_listing_bound, dudek_listing_bound
 from topomark.reference.explorers.edge_choices import EDGE_CHOICES
 from topomark.reference.explorers.movable_marker import ListingMovableMarkerExplorer
@@ -202,3 +205,18 @@ def test_a_client_over_the_description_s_bound_fails(suite, tmp_path):
     rows = run_algorithms(suite, wasteful, NAMES, select="triangle")
     assert len(rows) == 4 and not any(r.passed for r in rows) and {r.reason for r in rows} == {"bound"}
     assert all("topomark's bound for the thesis's listing" in r.message for r in rows)
+
+
+@pytest.mark.parametrize("name", ["dudek-listing", "dudek-directional-listing"])
+@pytest.mark.parametrize("world", ["wheel-a", "lattice-hole:rows=4,cols=4,seed=1"])
+def test_the_literal_client_makes_the_description_s_moves(capsys, name, world):
+    """Written from §2.3.1 alone, the client makes the choices the explorer module states, and so costs
+    exactly what ``name`` costs on the same world."""
+    unmarked = bare(make_world(world))
+    spec = algorithm_spec(name)
+    kit = json.dumps(spec.kit_for(unmarked.n, unmarked.m, {}).to_json())
+    code = main(["run-external", world, "--kit", kit, "--json", "--", sys.executable, str(CLIENT)])
+    report = json.loads(capsys.readouterr().out)
+    assert (code, report["verdict"]) == (0, "pass"), report["message"]
+    ours = explore(unmarked, spec)
+    assert ours.outcome == "correct" and report["cost"] == ours.cost <= spec.bound_for(unmarked.n, unmarked.m)

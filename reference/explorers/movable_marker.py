@@ -125,7 +125,7 @@ PICK_UP = MarkerOp("vertex", pick_up=True)
 class MarkerIteration(StepRecord):
     """One step: the edge e explored, what was sensed at v_u, and how the marker resolved it (no hypotheses)."""
 
-    candidates: list[int] = field(default_factory=list)  # known vertices that could be v_u, in visiting order
+    candidates: list[int] = field(default_factory=list)  # the known vertices the search visits, in order
     found: int | None = None  # the known vertex v_k' where the marker was found (loop)
     probes: int = 0  # v_k''s unexplored edges traversed in the back-link search
 
