@@ -29,7 +29,8 @@ has two explorers: topomark's (which leaves out moves that cannot change
 the answer) and the description as written (the ``-listing`` classes).
 
 The thesis leaves open, and this module decides (each tested on the
-smallest world that shows it in ``tests/test_movable_marker.py``):
+smallest world that shows it in ``tests/test_movable_marker.py`` and, for
+the description as written, ``tests/test_listing_dudek.py``):
 
 * **how the robot returns after a drop** — back over e to v_k (it cannot walk
   S from an unknown place).  §2.3.1 describes Dudek et al.'s class of
