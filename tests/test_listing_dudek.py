@@ -21,7 +21,7 @@ from pathlib import Path
 
 import pytest
 
-from conftest import bare, make_world
+from conftest import SMALL_WORLDS, bare, make_world
 from topomark.proofs.enumerate import embedded_worlds
 from topomark.spec.world import Start
 from topomark.reference.algorithms.registry import REGISTRY, algorithm_spec, variant
@@ -220,3 +220,22 @@ def test_the_literal_client_makes_the_description_s_moves(capsys, name, world):
     assert (code, report["verdict"]) == (0, "pass"), report["message"]
     ours = explore(unmarked, spec)
     assert ours.outcome == "correct" and report["cost"] == ours.cost <= spec.bound_for(unmarked.n, unmarked.m)
+
+
+@pytest.mark.parametrize("name", ["dudek-listing", "dudek-directional-listing"])
+@pytest.mark.parametrize("text", SMALL_WORLDS)
+def test_the_description_drops_once_per_step_and_searches_back_at_every_loop(name, text):
+    """On the thesis's small worlds: the map is right, the cost within the bound, and the marker is dropped at
+    every v_u — and, undirected, once more at v_k for the back-link search of every loop step, which tries at
+    least one exit — and picked up again each time."""
+    w = bare(make_world(text))
+    out = explore(w, name)
+    assert (out.outcome, out.verified, out.violation) == ("correct", True, None)
+    loops = w.m - w.n + 1
+    assert (out.nonloop_iterations, out.loop_iterations) == (w.n - 1, loops)
+    assert out.cost <= algorithm_spec(name).bound_for(w.n, w.m)
+    directional = algorithm_spec(name).kit.directional
+    drops = w.m + (0 if directional else loops)
+    assert out.marker_operations == {"drop": drops, "pick_up": drops}
+    probes = [it.probes for it in out.explorer.iterations if it.kind == "loop"]
+    assert all(p == 0 for p in probes) if directional else all(p >= 1 for p in probes)
