@@ -43,7 +43,8 @@ def cases(root: Path, algorithm: str) -> dict:
 @pytest.mark.slow
 def test_each_case_carries_the_registry_kit_bound_and_reference_run(suite):
     got = suites(suite)
-    assert set(got) == set(CHOSEN) | {"dudek", "dudek-directional", "thread-carried", "thread-circumference",
+    assert set(got) == set(CHOSEN) | {"dudek", "dudek-listing", "dudek-directional", "dudek-directional-listing",
+                                      "thread-carried", "thread-circumference",
                                       "thread-circumference-listing",
                                       "thread-knots", "thread-explore", "thread-fallback"}
     assert manifest(suite)["format"] == "topomark/conformance@2" and manifest(suite)["suites_protocol"].endswith("@2")
@@ -58,6 +59,7 @@ def test_each_case_carries_the_registry_kit_bound_and_reference_run(suite):
     assert cases(suite, "case-1b")["triangle"]["kit"] == {"undirected-either": 4}  # m + 1 V-E-markers (§6.2.1 Case 1b)
     assert set(cases(suite, "extension-1")["cycle-4"]["kit"]) == {"directional-edge"}
     assert cases(suite, "dudek")["cycle-4"]["reference"]["marker_operations"] == {"drop": 2, "pick_up": 2}
+    assert cases(suite, "dudek-listing")["cycle-4"]["reference"]["marker_operations"] == {"drop": 5, "pick_up": 5}
     assert "thread" in cases(suite, "thread-explore")["lattice-2x3"]["kit"]
     budget = cases(suite, "case-3a")["lattice-2x3-markers-2"]
     assert budget["expected"] == "failed" and "out of markers" in budget["reason"]

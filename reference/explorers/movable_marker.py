@@ -22,36 +22,60 @@ and answers "have I been here before?":
    pointing at the entry edge e, so where it is found its direction names
    e' at once — no back-link search.
 
+§2.3.1 gives no listing, but its description is precise enough to follow
+as written — drop at v_u, come back, visit the known vertices of S, search
+v_k''s unexplored edges — once the choices below are made; so each marker
+has two explorers: topomark's (which leaves out moves that cannot change
+the answer) and the description as written (the ``-listing`` classes).
+
 The thesis leaves open, and this module decides (each tested on the
-smallest world that shows it in ``tests/test_movable_marker.py``):
+smallest world that shows it in ``tests/test_movable_marker.py`` and, for
+the description as written, ``tests/test_listing_dudek.py``):
 
 * **how the robot returns after a drop** — back over e to v_k (it cannot walk
   S from an unknown place).  §2.3.1 describes Dudek et al.'s class of
   strategies as "Depth-One search strategies which always drop a marker at
   the unknown end of an edge and comes back".
 * **which known vertices are visited** — §2.3.1 says "visiting known vertices
-  in S"; only those that can be v_u are visited: the same degree as v_u
-  (§2.3.1: "two vertices appear identical to the robot if they have the same
-  degree"), at least one unexplored edge (v_u is reached by the unexplored
-  e, so e' is unexplored at v_u), neither v_k nor a neighbour of v_k in S
-  (no self-loops, no multi-edges: §3.1.1, §2.3.1 "Redundant or
-  self-referential edges are prohibited").  They are visited in the
-  preorder of a breadth-first tree of S rooted at v_k (children by exit
-  index), each reached by a shortest path in S; every vertex the robot
-  passes is looked at, so one passed on the way is not visited again.
-  With no such vertex, v_u is new and nothing is dropped.
+  in S".  Topomark's explorers (``dudek``, ``dudek-directional``) visit only
+  those that can be v_u: the same degree as v_u (§2.3.1: "two vertices
+  appear identical to the robot if they have the same degree"), at least one
+  unexplored edge (v_u is reached by the unexplored e, so e' is unexplored at
+  v_u), neither v_k nor a neighbour of v_k in S (no self-loops, no
+  multi-edges: §3.1.1, §2.3.1 "Redundant or self-referential edges are
+  prohibited"); with no such vertex, v_u is new and nothing is dropped.  The
+  description as written (``dudek-listing``, ``dudek-directional-listing``)
+  drops the marker at every v_u and visits every known vertex but v_k.
+  Either way they are visited in the preorder of a breadth-first tree of S
+  rooted at v_k (children by exit index), each reached by a shortest path in
+  S: the thesis fixes no order, and this one makes the search one closed walk
+  of at most 2(n_s − 1) traversals over n_s known vertices (the tree's Euler
+  tour), which is what the O(mn) of §2.3.1 needs ("the robot may have to
+  visit each vertex in S in order to validate an edge", §6.3.1), and makes
+  the candidates' walk a shortcut of the listing's.  Every vertex the robot
+  enters is looked at (the marker is part of what it senses there, §2.3.1:
+  "whether the marker is present at the current vertex"), so one passed on
+  the way is not visited again, and the search stops where the marker is
+  first seen.
 * **when the marker is picked up** — at the end of every step, before the
   next edge is chosen: at v_u (non-loop: the robot walks back to v_k and
-  over e once more), at v_k' (directional loop, or undirected when v_k' has
-  a single unexplored edge: that edge is e', §2.3.1's search has one
-  candidate and needs no move), or at v_k (undirected back-link search).
+  over e once more), at v_k' (directional loop, or, in topomark's undirected
+  explorer, when v_k' has a single unexplored edge: that edge is e', the
+  search has one candidate and needs no move), or at v_k (undirected
+  back-link search, which the description as written makes at every loop
+  step: "the robot drops the marker at v_k and goes back to v_k'", with no
+  exception for a single unexplored edge).
   So between steps the marker is held and the world carries none: S never
   shows a mark, and I-1/I-2 and the final extended isomorphism (markers
   included) are checked between steps exactly as for Algorithm 3.1.
 * **the order of the back-link search** — v_k''s unexplored exits in index
   order; each failed one is traversed back (two moves), the last one
   needs no test (when the others failed it is e', and crossing it reaches
-  v_k, where the marker must be picked up anyway).
+  v_k, where the marker must be picked up anyway).  The thesis names no order
+  ("traverses each of the (unexplored) incident edges"); the bound of
+  ``docs/bounds.md`` holds for every order.  The robot walks to v_k by a
+  shortest path of S too (§2.3.1 names the shortest path only for the way
+  back to v_k').
 
 Cost accounting (the robot's purposes, :data:`~topomark.reference.explorers.robot.PURPOSES`):
 
@@ -75,6 +99,8 @@ Examples
 --------
 >>> MovableMarkerExplorer.name, DirectionalMovableMarkerExplorer.name
 ('dudek', 'dudek-directional')
+>>> ListingMovableMarkerExplorer.name, ListingDirectionalMovableMarkerExplorer.name
+('dudek-listing', 'dudek-directional-listing')
 """
 
 from __future__ import annotations
@@ -86,11 +112,12 @@ from topomark.spec.errors import ExplorerFault
 from topomark.spec.kit import MarkerOp
 from topomark.spec.signature import Signature
 
-from topomark.reference.explorers.policies import Policies
+from topomark.reference.explorers.policies import Policies, bfs_preorder
 from topomark.reference.explorers.robot import Robot
 from topomark.reference.explorers.walker import MapWalker, StepRecord, places_like
 
-__all__ = ["MarkerIteration", "MovableMarkerExplorer", "DirectionalMovableMarkerExplorer"]
+__all__ = ["MarkerIteration", "MovableMarkerExplorer", "DirectionalMovableMarkerExplorer", "ListingMovableMarkerExplorer",
+           "ListingDirectionalMovableMarkerExplorer"]
 
 PICK_UP = MarkerOp("vertex", pick_up=True)
 
@@ -99,7 +126,7 @@ PICK_UP = MarkerOp("vertex", pick_up=True)
 class MarkerIteration(StepRecord):
     """One step: the edge e explored, what was sensed at v_u, and how the marker resolved it (no hypotheses)."""
 
-    candidates: list[int] = field(default_factory=list)  # known vertices that could be v_u, in visiting order
+    candidates: list[int] = field(default_factory=list)  # the known vertices the search visits, in order
     found: int | None = None  # the known vertex v_k' where the marker was found (loop)
     probes: int = 0  # v_k''s unexplored edges traversed in the back-link search
 
@@ -117,6 +144,7 @@ class MovableMarkerExplorer(MapWalker):
     loop_check = "Dudek loop"
     loop_proof = "Dudek's back-link validation, whose marker always leads back (§2.3.1)"
     directional = False
+    literal = False  # the listing as written (:class:`ListingMovableMarkerExplorer`)
 
     def __init__(self, robot: Robot, policies: Policies | None = None,
                  observer: Callable[["MovableMarkerExplorer", MarkerIteration], None] | None = None,
@@ -132,8 +160,8 @@ class MovableMarkerExplorer(MapWalker):
         vk, i = it.edge
         self.travel_to(vk, parent)
         it.signature = sig = self.take_exit(i, "new")
-        it.candidates = places_like(self.S, vk, sig.degree)
-        if not it.candidates:  # no known vertex can be v_u: it is new, nothing to drop
+        it.candidates = self.places(vk, sig.degree)
+        if not it.candidates and not self.literal:  # no known vertex can be v_u: it is new, nothing to drop
             self.non_loop_augment(it, sig)
         else:
             self.robot.operate(MarkerOp("vertex", direction=0 if self.directional else None))
@@ -151,6 +179,10 @@ class MovableMarkerExplorer(MapWalker):
         return self.record(it)
 
     # -- place validation (§2.3.1) -------------------------------------------------------
+    def places(self, vk: int, degree: int) -> list[int]:
+        """The known vertices the search visits: those that could be v_u (:func:`~.walker.places_like`)."""
+        return places_like(self.S, vk, degree)
+
     def search(self, candidates: list[int]) -> tuple[int, Signature] | None:
         """Visit the candidates (:func:`~.walker.places_like`) until the marker is seen; where (the robot
         stands there) and what it sensed.  Every vertex the robot enters is looked at, so a candidate passed on
@@ -176,14 +208,14 @@ class MovableMarkerExplorer(MapWalker):
         """The exit e' of v_k' (where the robot stands, the marker found) that e leads to; the marker picked up.
 
         §2.3.1: drop the marker at v_k, go back to v_k' along the shortest known
-        path, traverse v_k''s unexplored edges looking for it.  A single
-        unexplored edge at v_k' is e' with no move.
+        path, traverse v_k''s unexplored edges looking for it.  In topomark's
+        explorer a single unexplored edge at v_k' is e' with no move.
         """
         x = self.position[0]
         vk, i = it.edge
         open_exits = self.open_exits(x)
         self.robot.operate(PICK_UP)
-        if len(open_exits) == 1:
+        if len(open_exits) == 1 and not self.literal:  # e' with no search (the listing searches anyway)
             return open_exits[0]
         self.walk_to(vk, "drop")  # a drop trip: to v_k to drop the marker, and back to v_k'
         self.robot.operate(MarkerOp("vertex"))
@@ -219,3 +251,27 @@ class DirectionalMovableMarkerExplorer(MovableMarkerExplorer):
         x, entry = self.position
         self.robot.operate(PICK_UP)
         return (entry + cast(int, sig.vertex_direction)) % self.S.degree(x)  # the directional marker's reading
+
+
+def _visit_all_of_s(self: MovableMarkerExplorer, vk: int, degree: int) -> list[int]:
+    """§2.3.1's search as written, "visiting known vertices in S": every known vertex but v_k (where the robot
+    stands, having seen no marker there), in the preorder of a breadth-first tree of S rooted at v_k."""
+    return bfs_preorder(self.S, vk)[1:]
+
+
+class ListingMovableMarkerExplorer(MovableMarkerExplorer):
+    """§2.3.1's description as written (``dudek-listing``): the marker dropped at every v_u, every known vertex
+    of S visited, and the back-link search made at every loop step (module docstring: the listing)."""
+
+    name = "dudek-listing"
+    literal = True
+    places = _visit_all_of_s
+
+
+class ListingDirectionalMovableMarkerExplorer(DirectionalMovableMarkerExplorer):
+    """The directional variant as written (``dudek-directional-listing``; §2.3.1, §6.3.1): the marker dropped
+    at every v_u pointing at e, every known vertex of S visited; e' is where the marker points."""
+
+    name = "dudek-directional-listing"
+    literal = True
+    places = _visit_all_of_s
