@@ -79,9 +79,9 @@ from topomark.spec.kit import Kit
 
 from topomark.reference.algorithms.algorithm_spec import STEPWISE_MAP_CHECKS, AlgorithmSpec, Parameter
 from topomark.reference.explorers.threads_carried import CarriedThreadExplorer
-from topomark.reference.explorers.threads_explore import (CircumferenceThreadExplorer, ListingThreadExplorer,
-                                                          ThreadExplorer)
-from topomark.reference.explorers.threads_fallback import FallbackThreadExplorer
+from topomark.reference.explorers.threads_explore import (CircumferenceThreadExplorer, ListingExploreExplorer,
+                                                          ListingThreadExplorer, ThreadExplorer)
+from topomark.reference.explorers.threads_fallback import FallbackThreadExplorer, ListingFallbackThreadExplorer
 from topomark.reference.explorers.threads_knots import KnotThreadExplorer
 from topomark.reference.algorithms.bounds import upper_bound
 from topomark.reference.algorithms.registrations.movable import SEARCH, directional_bound
@@ -132,6 +132,9 @@ _O_MN = "O(mn) (Table 6.3); bound_fn: topomark's"
 _SKIPS = ("where the robot's record of the thread leaves one vertex and exit v_u can be, it skips the search back "
           "along the thread (Algorithm 6.7 lines 11–12) and rewinds e at once: the same map, fewer traversals")
 _OURS = "ours: our explorer's exact worst case behind O(mn) (Table 6.3)"
+_EXPLORE_SKIPS = ("where the robot's record of the thread leaves one vertex and exit v_u can be, it skips the search "
+                  "back along the thread (Algorithm 6.8 line 7) and rewinds e at once; line 11's search leaves out "
+                  "v_k's neighbours, which a simple world rules out (§3.1.1): the same map, fewer traversals")
 
 SPECS = (
     AlgorithmSpec(name="thread-carried", thesis="§6.3.1, l = ε thread carried and retied",
@@ -159,23 +162,34 @@ SPECS = (
                   ways=(*_LAID, "thread-knots"),
                   changes="the thesis gives no listing (Figure 6.20, §6.3.2): at a known v_k' with one unexplored exit "
                           "that exit is e', with no back-link validation", **_ROBOT),
-    AlgorithmSpec(name="thread-explore", thesis="§6.3.3, Algorithm 6.8 (l < c(G), explore-explore)",
-                  kit=Kit(thread=2), bound=_O_MN, markers="no marker; a thread of --thread-length edges",
-                  options=("thread-length L (default 2, Figure 6.21)",), bound_fn=explore_bound,
-                  bound_formula=f"2m + 2nm + n(n − 1), {_OURS} (§6.3.3, Algorithm 6.8)",
-                  explorer=ThreadExplorer, ways=(*_LAID, "thread-retied"), changes=_SKIPS.replace("Algorithm 6.7 lines 11–12", "Algorithm 6.8 line 7"),
-                  parameters=(Parameter("thread-length", LENGTH.help, default=2, minimum=1, maximum=MAX_THREAD),),
-                  kit_fn=lambda n, m, opts: Kit(thread=opts["thread-length"]), **_ROBOT),
-    AlgorithmSpec(name="thread-fallback",
-                  thesis="§6.3.3, phase-I/phase-II fallback (l < c(G), Algorithm 6.7 then Algorithm 3.1)",
-                  kit=Kit(thread=2), bound="O(m²n) (§6.3.3); bound_fn: ours",
-                  markers="no marker; a thread of --thread-length edges, left laid once it runs out",
-                  options=("thread-length L (default 2, Figure 6.21)", "policy edge=nearest|fifo|lifo (phase II)",
-                           "policy hypothesis=fifo|lifo|shortest (phase II)", "policy path=shortest|dfs (phase II)"),
-                  bound_fn=fallback_bound,
-                  bound_formula="2(n − 1) + (m − n + 1)(n + 2) + (3.1) + (3.2), ours: Algorithm 6.7's bound for "
-                                "phase I and Algorithm 3.1's (§3.5.2) for phase II, behind O(m²n) (§6.3.3)",
-                  explorer=FallbackThreadExplorer, ways=("correct", "thread-laid", "thread-phase-ii"), changes=f"phase I is thread-circumference's steps: {_SKIPS}",
-                  parameters=(Parameter("thread-length", LENGTH.help, default=2, minimum=1, maximum=MAX_THREAD),),
-                  kit_fn=lambda n, m, opts: Kit(thread=opts["thread-length"]), **_ROBOT),
+    *(AlgorithmSpec(name=name, thesis=f"§6.3.3, Algorithm 6.8{what} (l < c(G), explore-explore)",
+                    kit=Kit(thread=2), bound=_O_MN, markers="no marker; a thread of --thread-length edges",
+                    options=("thread-length L (default 2, Figure 6.21)",), bound_fn=explore_bound,
+                    bound_source="listing",
+                    bound_formula="2m + 2nm + n(n − 1), topomark's bound for Algorithm 6.8 as listed (§6.3.3; "
+                                  "docs/bounds.md), behind O(mn) (Table 6.3)",
+                    explorer=explorer, ways=(*_LAID, "thread-retied"), changes=changes,
+                    listing_entry=None if changes is None else "thread-explore-listing",
+                    parameters=(Parameter("thread-length", LENGTH.help, default=2, minimum=1, maximum=MAX_THREAD),),
+                    kit_fn=lambda n, m, opts: Kit(thread=opts["thread-length"]), **_ROBOT)
+      for name, what, explorer, changes in (
+          ("thread-explore", "", ThreadExplorer, _EXPLORE_SKIPS),
+          ("thread-explore-listing", " as listed", ListingExploreExplorer, None))),
+    *(AlgorithmSpec(name=name,
+                    thesis=f"§6.3.3, phase-I/phase-II fallback (l < c(G), Algorithm 6.7{what} then Algorithm 3.1)",
+                    kit=Kit(thread=2), bound="O(m²n) (§6.3.3); bound_fn: topomark's",
+                    markers="no marker; a thread of --thread-length edges, left laid once it runs out",
+                    options=("thread-length L (default 2, Figure 6.21)", "policy edge=nearest|fifo|lifo (phase II)",
+                             "policy hypothesis=fifo|lifo|shortest (phase II)", "policy path=shortest|dfs (phase II)"),
+                    bound_fn=fallback_bound, bound_source="listing",
+                    bound_formula="2(n − 1) + (m − n + 1)(n + 2) + (3.1) + (3.2), topomark's bound for phase I as "
+                                  "Algorithm 6.7 is listed (§6.3.2) plus Algorithm 3.1's (§3.5.2) for phase II "
+                                  "(docs/bounds.md), behind O(m²n) (§6.3.3)",
+                    explorer=explorer, ways=("correct", "thread-laid", "thread-phase-ii"), changes=changes,
+                    listing_entry=None if changes is None else "thread-fallback-listing",
+                    parameters=(Parameter("thread-length", LENGTH.help, default=2, minimum=1, maximum=MAX_THREAD),),
+                    kit_fn=lambda n, m, opts: Kit(thread=opts["thread-length"]), **_ROBOT)
+      for name, what, explorer, changes in (
+          ("thread-fallback", "", FallbackThreadExplorer, f"phase I is thread-circumference's steps: {_SKIPS}"),
+          ("thread-fallback-listing", " as listed", ListingFallbackThreadExplorer, None))),
 )
