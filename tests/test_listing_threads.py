@@ -6,7 +6,8 @@ phase I, Algorithm 6.7, §6.3.2): the conformance oracle fails a program only fo
   four vertices from every start for thread lengths 1–3, and topomark's variants never cost more there;
 * replay's re-run accepts a trace of either explorer of a pair under either name and says which it followed;
 * an independent client written from Algorithm 6.8 (``client_thread_listing.py --explore``) makes the listing's
-  own reference costs and passes topomark's variant's suite with differences, never a FAIL;
+  own reference costs and passes topomark's variant's suite with differences, never a FAIL; so does one written
+  from the fallback's text with phase I as Algorithm 6.7 is listed (``--fallback``);
 * §6.3.1's carried thread and §6.3.2's knots have no listing: their bounds are topomark's for its explorer, so a
   cost above them is a difference, never a FAIL.
 """
@@ -110,20 +111,44 @@ def _client(tmp_path: Path, path: Path, old: str = "", new: str = "", *args: str
     return [sys.executable, str(copied), *args]
 
 
-def test_the_literal_client_makes_the_listing_s_costs_and_differences_from_the_variant(suite, tmp_path):
-    rows = run_algorithms(suite, _client(tmp_path, CLIENT, "", "", "--explore"), EXPLORE)
+@pytest.mark.parametrize("name", EXPLORE)
+def test_the_literal_client_makes_the_listing_s_costs_and_differences_from_the_variant(suite, tmp_path, name):
+    rows = run_algorithms(suite, _client(tmp_path, CLIENT, "", "", "--explore"), [name])
     assert rows and all(r.passed for r in rows), [r.to_json() for r in rows if not r.passed]
     for row in rows:
         j = row.to_json()
         assert j["bound_binds"] and j["bound_source"]["source"] == "listing"
-        if row.algorithm == "thread-explore-listing":  # the listing's own reference: the same costs
+        if name == "thread-explore-listing":  # the listing's own reference: the same costs
             assert j["cost"] == j["reference"]["cost"] and j["difference"] is None
             assert j["reference"]["variant"]["follows"] == "the thesis's listing"
-    differences = [r.to_json() for r in rows if r.reason == "difference"]
-    assert differences and all(d["algorithm"] == "thread-explore" for d in differences)
-    d = differences[0]
-    assert d["difference"]["variant_figure"] == d["reference"]["cost"] < d["cost"] <= d["bound"]
-    assert "thread-explore (topomark's variant)" in d["message"]
+    if name == "thread-explore":
+        differences = [r.to_json() for r in rows if r.reason == "difference"]
+        assert differences
+        d = differences[0]
+        assert d["difference"]["variant_figure"] == d["reference"]["cost"] < d["cost"] <= d["bound"]
+        assert "thread-explore (topomark's variant)" in d["message"]
+
+
+def test_the_literal_client_plays_the_fallback_with_the_listing_s_costs_and_no_fail(suite, tmp_path):
+    rows = run_algorithms(suite, _client(tmp_path, CLIENT, "", "", "--fallback"), FALLBACK)
+    assert rows and all(r.passed for r in rows), [r.to_json() for r in rows if not r.passed]
+    assert {r.algorithm for r in rows} == set(FALLBACK)
+    for row in rows:
+        j = row.to_json()
+        assert j["bound_binds"] and j["cost"] <= j["bound"]
+        if row.algorithm == "thread-fallback-listing":
+            assert j["cost"] == j["reference"]["cost"] and j["difference"] is None
+        elif j["cost"] > j["reference"]["cost"]:  # topomark's phase I skipped a search: a difference
+            assert row.reason == "difference" and "thread-fallback (topomark's variant)" in j["message"]
+
+
+def test_a_fallback_client_that_leaves_the_thread_off_its_map_fails(suite, tmp_path):
+    forgetful = _client(tmp_path, CLIENT, "        if self.phase == 2:  # the fallback leaves the thread",
+                        "        if self.phase == 0:  # the fallback leaves the thread", "--fallback")
+    rows = run_algorithms(suite, forgetful, ["thread-fallback-listing"])
+    failed = [r for r in rows if not r.passed]  # the cases that reach phase II, where the thread stays laid
+    assert failed and {r.reason for r in failed} == {"not-isomorphic"}
+    assert all("thread-phase-ii" in r.case["ways"] for r in failed)
 
 
 def test_a_literal_client_that_searches_no_neighbour_of_v_k_is_not_the_listing(suite, tmp_path):

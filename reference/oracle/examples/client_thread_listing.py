@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Algorithm 6.7 of the thesis, "Mapping with a l = c(G) thread" (§6.3.2), as listed — and with
 ``--explore`` Algorithm 6.8, "Mapping with a l < c(G) thread. Explore-explore approach" (§6.3.3), as
+listed — and with ``--fallback`` §6.3.3's phase-I/phase-II fallback, its phase I as Algorithm 6.7 is
 listed — speaking topomark/protocol@2 with a thread kit.
 
 Standalone on purpose (standard library only, no topomark import): it is written from the listing, not
@@ -10,6 +11,7 @@ Run it under topomark, which plays the world and judges the map:
     topomark run-external WORLD --kit '{"thread": N}' -- python3 client_thread_listing.py
     topomark conformance run SUITE --algorithm thread-circumference-listing -- python3 client_thread_listing.py
     topomark conformance run SUITE --algorithm thread-explore-listing -- python3 client_thread_listing.py --explore
+    topomark conformance run SUITE --algorithm thread-fallback-listing -- python3 client_thread_listing.py --fallback
 
 The listing, line by line:
 
@@ -60,7 +62,23 @@ Choices the listing leaves open, made here as topomark's own runs make them:
 a closest edge is the lowest-numbered unexplored exit where the thread ends;
 line 11 visits its vertices in the preorder of a breadth-first tree of S
 rooted at v_k (children by exit); shortest paths are breadth-first, exits in
-order; the new v_s is the closest, the lowest-numbered among equals.  The laid thread is at most a simple path of S (n − 1 edges)
+order; the new v_s is the closest, the lowest-numbered among equals.
+
+The fallback (``--fallback``, §6.3.3: "the robot uses thread to do
+validations when it possesses thread (phase-I), and when it runs out of
+thread (phase-II), it applies the hypothesis-based traversal strategy
+developed for the single immovable marker algorithm") runs Algorithm 6.7 as
+above until the robot stands at a place with an unexplored edge and all l
+edges are laid.  There it leaves the free end (``leave``) and the thread
+stays where it lies: tied at v0 along one edge, v0 is Algorithm 3.1's
+lighthouse (§3.3).  Each phase-II step takes a nearest unexplored edge (the
+first of U among the closest), walks a breadth-first tree of S to v_k and
+follows e; v_u showing v0's marks (``T`` and its one thread edge) is v0,
+entered by the exit they name; otherwise every unexplored dart of S (not at
+v_k) whose place, entered by it, shows what v_u shows — thread marks and free
+end included — is a hypothesis, taken in U's order and tested by walking the
+breadth-first tree to v0 and comparing every place; a failed one is
+retraced; none confirmed, v_u is new.  The laid thread is at most a simple path of S (n − 1 edges)
 plus e, and topomark's default kit gives n edges (§6.3.2 assumes l = c(G)
 suffices); with a shorter thread, once every edge of it is laid and line 5
 would lay one more, the robot gives up (sends ``error``: out of thread).  The world is a simple graph, as the thesis's worlds
@@ -100,12 +118,15 @@ def parse(sig):
 
 
 class Explorer:
-    def __init__(self, explore=False):
+    def __init__(self, explore=False, fallback=False):
         hello = receive()
         if hello["protocol"] != "topomark/protocol@2" or not hello["kit"].get("thread"):
             send({"type": "error", "message": "I need topomark/protocol@2 and a thread of at least one edge"})
             sys.exit(2)
         self.explore = explore  # Algorithm 6.8 (§6.3.3) rather than Algorithm 6.7 (§6.3.2)
+        self.fallback = fallback  # Algorithm 6.7, then Algorithm 3.1 once the thread is all laid (§6.3.3)
+        self.phase = 1
+        self.end, self.marks = None, {}  # phase II: where the free end lies, and the thread's marks
         self.exits = [[None] * parse(hello["signature"])[0]]  # S: exits[v][i] = [w, j] or None
         self.U = [(0, i) for i in range(len(self.exits[0]))]
         self.pos = (0, 0)  # (map vertex, the exit it was entered by); v0 faces its exit 0
@@ -252,6 +273,76 @@ class Explorer:
             self.rewind()
         self.rewind_to_open()
 
+    def sensed(self):
+        """The last signature as (degree, tied, thread edges by relative exit, free end here)."""
+        degree, tied, edges = parse(self.seen)
+        return degree, tied, edges, "F" in self.seen[1:-1].split(",")
+
+    def expect(self, v, entry):
+        """Phase II: what S says map vertex v shows, entered by exit ``entry`` (the thread lies as recorded)."""
+        d = len(self.exits[v])
+        marks = Counter({(x - entry) % d: k for x, k in self.marks.get(v, Counter()).items()})
+        return d, v == 0, marks, v == self.end
+
+    def step(self, motion):
+        send({"type": "move", "motion": motion})
+        self.seen = receive()["value"]
+        return self.sensed()
+
+    def run_out(self):
+        """The thread is all laid at a place with an unexplored edge: leave the free end, start phase II."""
+        self.op("leave")
+        self.phase, self.end, self.marks = 2, self.pos[0], self.record()
+
+    def phase_two(self):
+        """One pass of Algorithm 3.1's loop with v0, where the thread is tied, as the lighthouse (§3.3)."""
+        parent = self.tree(self.pos[0])
+        depth = {}
+        for v, up in parent.items():
+            depth[v] = 0 if up is None else depth[up[0]] + 1
+        vk, i = self.U.pop(min(range(len(self.U)), key=lambda k: (depth[self.U[k][0]], k)))  # nearest e
+        self.walk_to(vk)
+        self.move(i)
+        sig = self.sensed()
+        far, heading = next(((0, e) for e in range(len(self.exits[0])) if self.expect(0, e) == sig), None), 0
+        if far is not None:
+            self.pos = far
+        else:
+            far, heading = self.validate(vk, sig)
+        if far is not None:  # loop augmentation with the existing indices; e' leaves U
+            self.U.remove(far)
+            self.exits[vk][i], self.exits[far[0]][far[1]] = list(far), [vk, i]
+        else:
+            self.join(vk, i, sig[0])
+            self.pos = (self.pos[0], heading)
+
+    def validate(self, vk, sig):
+        """Algorithm 3.1 lines 8-20: the confirmed e' (the robot then at v0) or None, and the heading at v_u."""
+        toward = {v: self.exits[up[0]][up[1]][1] for v, up in self.tree(0).items() if up is not None}
+        heading = 0
+        for v, i in [h for h in self.U if h[0] != vk and len(self.exits[h[0]]) == sig[0] and self.expect(*h) == sig]:
+            path, x, entry = [], v, i  # the motions from v (entered by e') to v0, with what each place shows
+            while x != 0:
+                motion = (toward[x] - entry) % len(self.exits[x])
+                x, entry = self.exits[x][toward[x]]
+                path.append((motion, self.expect(x, entry)))
+            done = []  # (physical motion, degree reached)
+            for k, (motion, want) in enumerate(path):
+                physical = (motion - heading) % sig[0] if k == 0 else motion  # turned by the heading at v_u
+                got = self.step(physical)
+                done.append((physical, got[0]))
+                if got != want:
+                    break
+            else:
+                self.pos = (0, entry)
+                return (v, i), heading
+            self.step(0)  # retrace (line 17): back along the last edge, then every motion reversed
+            degrees = [sig[0]] + [d for _, d in done]
+            for k in range(len(done) - 1, 0, -1):
+                self.step((-done[k][0]) % degrees[k])
+            heading = (heading + done[0][0]) % sig[0]
+        return None, heading
+
     def retie(self):
         """Algorithm 6.8 lines 18-21: at v_s fully explored, untie; tie again at a closest vertex not fully explored."""
         self.op("untie")
@@ -269,17 +360,24 @@ class Explorer:
         while self.U:  # line 3
             if self.explore and not self.laid and not self.is_open(self.pos[0]):
                 self.retie()
-            self.iterate()
-        while self.laid:
+            if self.fallback and self.phase == 1 and len(self.laid) == self.length:
+                self.run_out()
+            if self.phase == 2:
+                self.phase_two()
+            else:
+                self.iterate()
+        while self.laid and self.phase == 1:
             self.rewind()
-        self.op("untie")
+        if self.phase == 1:
+            self.op("untie")
         names = ["s%d" % v for v in range(len(self.exits))]
-        send({"type": "map", "world": {
-            "format": "topomark/world@1",
-            "rotation": {names[v]: [names[w] for w, _ in row] for v, row in enumerate(self.exits)},
-            "markers": []}})
+        world = {"format": "topomark/world@1",
+                 "rotation": {names[v]: [names[w] for w, _ in row] for v, row in enumerate(self.exits)}, "markers": []}
+        if self.phase == 2:  # the fallback leaves the thread where it lies: the map shows it
+            world["thread"] = {"walk": ["s0"] + [names[self.exits[v][x][0]] for v, x in self.laid], "end": "left"}
+        send({"type": "map", "world": world})
         receive()
 
 
 if __name__ == "__main__":
-    Explorer(explore="--explore" in sys.argv[1:]).run()
+    Explorer(explore="--explore" in sys.argv[1:], fallback="--fallback" in sys.argv[1:]).run()
