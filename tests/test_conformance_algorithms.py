@@ -46,7 +46,8 @@ def test_each_case_carries_the_registry_kit_bound_and_reference_run(suite):
     assert set(got) == set(CHOSEN) | {"dudek", "dudek-listing", "dudek-directional", "dudek-directional-listing",
                                       "thread-carried", "thread-circumference",
                                       "thread-circumference-listing",
-                                      "thread-knots", "thread-explore", "thread-fallback"}
+                                      "thread-knots", "thread-explore", "thread-fallback",
+                                      "thread-explore-listing", "thread-fallback-listing"}
     assert manifest(suite)["format"] == "topomark/conformance@2" and manifest(suite)["suites_protocol"].endswith("@2")
     for name, entry in got.items():
         spec = algorithm_spec(name)

@@ -65,7 +65,7 @@ def test_the_registry_names_the_listing_and_whose_each_bound_is():
     assert literal.follows_listing and literal.listing_entry is None
     assert ours.bound_source == literal.bound_source == "listing" and ours.bound_binds and literal.bound_binds
     assert algorithm_spec("basic").bound_source == "thesis" and algorithm_spec("basic").bound_binds
-    assert algorithm_spec("thread-explore").bound_source == "variant" and not algorithm_spec("thread-explore").bound_binds
+    assert algorithm_spec("thread-knots").bound_source == "variant" and not algorithm_spec("thread-knots").bound_binds
     for spec in REGISTRY.values():  # every exact bound says whose it is, in the listing too
         if spec.bound_fn is not None:
             assert spec.bound_whose in spec.bound_note and spec.to_json()["bound_whose"] == spec.bound_whose
@@ -155,9 +155,9 @@ def test_a_client_with_a_wrong_map_fails(suite, tmp_path):
 
 
 def test_a_client_over_the_listing_s_bound_fails(suite, tmp_path):
-    wasteful = _client(tmp_path, '        self.op("untie")\n',
+    wasteful = _client(tmp_path, '        self.op("untie")\n        names',
                        '        self.op("untie")\n        for _ in range(2):\n            self.move(0)\n'
-                       '            self.move_back(*self.pos)\n')
+                       '            self.move_back(*self.pos)\n        names')
     rows = run_algorithms(suite, wasteful, PAIR, select="triangle")
     assert len(rows) == 2 and not any(r.passed for r in rows)
     assert {r.reason for r in rows} == {"bound"}

@@ -12,7 +12,8 @@ TABLE: dict[str, Any] = {
                    'case-dv-sum', 'extension-1', 'extension-2', 'extension-naive', 'case-1b-edgeinfo',
                    'case-2-edgeinfo', 'case-1a-edgeinfo', 'case-4-edgeinfo', 'case-4-mn-edgeinfo',
                    'case-5-directional', 'thread-carried', 'thread-circumference', 'thread-circumference-listing',
-                   'thread-knots', 'thread-explore', 'thread-fallback'),
+                   'thread-knots', 'thread-explore', 'thread-explore-listing', 'thread-fallback',
+                   'thread-fallback-listing'),
     'parameters': (('signatures',
                     'global: validate each loop closing against every known vertex (§5.2.2); local: accept every '
                     "degree-matching one (the thesis's comparison)",
@@ -59,7 +60,8 @@ TABLE: dict[str, Any] = {
                     'robot knows it',
                     None,
                     'thread-circumference (default n), thread-circumference-listing (default n), thread-explore '
-                    '(default 2), thread-fallback (default 2)')),
+                    '(default 2), thread-explore-listing (default 2), thread-fallback (default 2), '
+                    'thread-fallback-listing (default 2)')),
     'lighthouses': ('directional-vertex', 'directional-edge', 'vertex-and-edge', 'three-undirected-edge',
                     'three-undirected-vertex', 'undirected-vertex', 'undirected-edge', 'local-pair',
                     'local-degree-list', 'thread'),

@@ -14,8 +14,9 @@ Algorithm 6.7 lines 8–9 and 14).  At v_u (Algorithm 6.8 lines 6–15):
   senses with its own record of the thread: every thread vertex w of v_u's
   degree and open exit j whose marks, read from j with e added at j, are the
   ones sensed is a hypothesis (w, j).  **Ours**: one hypothesis needs no
-  motion (``thread-circumference-listing``, :class:`ListingThreadExplorer`, leaves this out and searches
-  every time, as line 11 of Algorithm 6.7 says).  Otherwise "the robot searches back along the thread looking for
+  motion (``thread-circumference-listing``, :class:`ListingThreadExplorer`, and ``thread-explore-listing``,
+  :class:`ListingExploreExplorer`, leave this out and search every time, as line 11 of Algorithm 6.7 and
+  line 7 of Algorithm 6.8 say).  Otherwise "the robot searches back along the thread looking for
   the vertex that has one more marked edge" (line 7, §6.3.2): it leaves the
   free end at v_u, goes back over e to v_k and walks the thread back toward
   v_s; the vertex with one more thread-marked edge than its record is v_k' =
@@ -28,7 +29,9 @@ Algorithm 6.7 lines 8–9 and 14).  At v_u (Algorithm 6.8 lines 6–15):
   searches "non-thread vertices on S that has unexplored edges and has the
   same degree as v_u, looking for the vertex containing the thread's free
   end" (the candidates of the movable marker explorer, minus the thread's
-  vertices, visited in the same order), leaving the free end at v_u.  Found
+  vertices, visited in the same order; **ours**: not v_k's neighbours, which a
+  simple world rules out, §3.1.1 — ``thread-explore-listing`` visits them too),
+  leaving the free end at v_u.  Found
   at v_k': the thread's one edge there is e'; take the end, rewind e.  Not
   found: v_u is new; walk back to v_k, cross e and take the end (ours: line 11,
   Algorithm 6.8, does not say how the robot gets back to the free end).
@@ -63,8 +66,8 @@ Cost purposes: ``new`` (over e), ``retrace`` (back over e, every rewind),
 
 Examples
 --------
->>> ThreadExplorer.name, CircumferenceThreadExplorer.name, ListingThreadExplorer.name
-('thread-explore', 'thread-circumference', 'thread-circumference-listing')
+>>> ThreadExplorer.name, CircumferenceThreadExplorer.name, ListingThreadExplorer.name, ListingExploreExplorer.name
+('thread-explore', 'thread-circumference', 'thread-circumference-listing', 'thread-explore-listing')
 """
 
 from __future__ import annotations
@@ -78,10 +81,11 @@ from topomark.spec.kit import ThreadOp
 from topomark.spec.mapstate import MapDart
 from topomark.spec.signature import Signature, ThreadMark
 
-from topomark.reference.explorers.policies import Policies, bfs
+from topomark.reference.explorers.policies import Policies, bfs, in_preorder
 from topomark.reference.explorers.walker import MapWalker, StepRecord, places_like
 
-__all__ = ["ThreadIteration", "ThreadWalker", "ThreadExplorer", "CircumferenceThreadExplorer", "ListingThreadExplorer"]
+__all__ = ["ThreadIteration", "ThreadWalker", "ThreadExplorer", "ListingExploreExplorer", "CircumferenceThreadExplorer",
+           "ListingThreadExplorer"]
 
 TIE, UNTIE, LEAVE, TAKE = ThreadOp("tie"), ThreadOp("untie"), ThreadOp("leave"), ThreadOp("take")
 
@@ -228,7 +232,7 @@ class ThreadExplorer(ThreadWalker):
 
     name = "thread-explore"
     retie = True
-    literal = False  # True: search back along the thread at every loop step, as the listing says (no shortcut)
+    literal = False  # True: the listing as written, every search it lists (lines 7 and 11), no shortcut
     iteration_type: type = ThreadIteration  # the record of one step (the fallback adds its phase)
 
     def step(self) -> ThreadIteration:
@@ -293,7 +297,11 @@ class ThreadExplorer(ThreadWalker):
         """Line 11: search the known vertices off the thread that could be v_u for the free end left there."""
         vk, i = it.edge
         thread = set(self.on_thread(-1))
-        it.candidates = [w for w in places_like(self.S, vk, sig.degree) if w not in thread]
+        if self.literal:  # line 11 as listed: every vertex off the thread with an unexplored edge and v_u's degree
+            like = in_preorder(self.S, vk, {v for v in self.S.unexplored.ends() if self.S.degree(v) == sig.degree})
+        else:  # ours: not v_k's neighbours either, which a simple world rules out (§3.1.1)
+            like = places_like(self.S, vk, sig.degree)
+        it.candidates = [w for w in like if w not in thread]
         if not it.candidates:
             it.how = "new"
             self.non_loop_augment(it, sig)
@@ -354,4 +362,20 @@ class ListingThreadExplorer(CircumferenceThreadExplorer):
     record of the thread leaves one vertex it can be — the search ``thread-circumference`` skips then."""
 
     name = "thread-circumference-listing"
+    literal = True
+
+
+class ListingExploreExplorer(ThreadExplorer):
+    """Algorithm 6.8 as listed (§6.3.3): at a vertex the thread lay at already, the robot "searches back along the
+    thread looking for the vertex having one more stringed edge" (line 7) every time, even where its record of the
+    thread leaves one vertex it can be; and line 11 searches every "non-thread vertex on S that has unexplored
+    edges and has the same degree as v_u", v_k's neighbours too — the two shortcuts ``thread-explore`` takes.
+
+    Where the listing is silent the decisions are ``thread-explore``'s (§6.3.3): the closest edge is the lowest
+    unexplored exit where the thread ends; line 11 visits the candidates in the preorder of a breadth-first
+    tree of S rooted at v_k, along shortest paths, and ends at the first place entered that shows the free end;
+    not found, the robot walks back to v_k and over e for the free end; the new v_s (line 21) is the closest
+    frontier vertex."""
+
+    name = "thread-explore-listing"
     literal = True

@@ -10,7 +10,11 @@ approach has an O(m²n) cost bound" (§6.3.3).
   :class:`~topomark.reference.explorers.threads_explore.CircumferenceThreadExplorer`):
   the thread is tied at v0 and laid closest-first, rewound after a loop edge
   or at a fully explored place; a place without thread is new, a place with
-  it is found on the thread.
+  it is found on the thread.  ``thread-fallback`` takes topomark's shortcut
+  there (no search back along the thread where the robot's record of it
+  leaves one vertex v_u can be); ``thread-fallback-listing``
+  (:class:`ListingFallbackThreadExplorer`) runs phase I as Algorithm 6.7 is
+  listed, searching at every loop step (lines 11–12).
 * **Phase II** starts when the robot stands at a place with an unexplored
   edge and all l edges of its thread are laid.  It leaves the free end there:
   from then on the thread is an immovable mark, tied at v0 and laid along a
@@ -47,8 +51,8 @@ Algorithm 3.1's (``travel``, ``new``, ``validation``, ``retrace``).
 
 Examples
 --------
->>> FallbackThreadExplorer.name
-'thread-fallback'
+>>> FallbackThreadExplorer.name, ListingFallbackThreadExplorer.name
+('thread-fallback', 'thread-fallback-listing')
 """
 
 from __future__ import annotations
@@ -63,7 +67,7 @@ from topomark.reference.explorers.algorithm31 import (V0, Hypothesis, Lighthouse
 from topomark.reference.explorers.policies import bfs
 from topomark.reference.explorers.threads_explore import LEAVE, CircumferenceThreadExplorer, ThreadIteration
 
-__all__ = ["FallbackIteration", "FallbackThreadExplorer"]
+__all__ = ["FallbackIteration", "FallbackThreadExplorer", "ListingFallbackThreadExplorer"]
 
 
 @dataclass
@@ -140,3 +144,12 @@ class FallbackThreadExplorer(CircumferenceThreadExplorer):
             it.how = "new"
             self.non_loop_augment(it, sig, heading)
         return self.finish(it)
+
+
+class ListingFallbackThreadExplorer(FallbackThreadExplorer):
+    """The fallback with phase I as Algorithm 6.7 is listed (§6.3.2, lines 11–12): at a vertex the thread lay at
+    already the robot searches back along the thread every time (the steps of ``thread-circumference-listing``);
+    phase II is unchanged, Algorithm 3.1 (§3.3) with v0 as the lighthouse."""
+
+    name = "thread-fallback-listing"
+    literal = True
