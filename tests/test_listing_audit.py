@@ -12,7 +12,7 @@ import pytest
 
 from topomark.spec.world import Start, World
 from topomark.reference.algorithms.registry import REGISTRY, algorithm_spec
-from topomark.reference.explorers import edge_footprints, enhanced, expansion, saving_markers
+from topomark.reference.explorers import case5_v1, edge_footprints, enhanced, expansion, saving_markers
 from topomark.reference.explorers.counted_markers import DirectionalVertexCounts
 from topomark.reference.explorers.policies import parents_toward
 from topomark.reference.run.explore import explore
@@ -121,11 +121,19 @@ def test_the_listing_s_robot_moves_more_on_the_smallest_world_found(monkeypatch,
     assert literal.cost == listing > ours
 
 
+@pytest.mark.parametrize("name", ["case-5-v1", "case-5-directional"])
+def test_algorithm_6_4_s_literal_counter_fails_on_the_triangle_where_the_unique_counts_map_it(monkeypatch, name):
+    world, spec = _world(TRIANGLE, "v0", "v1"), algorithm_spec(name)
+    assert explore(world, spec).outcome == "correct"
+    monkeypatch.setattr(case5_v1.VertexCountsThenLighthouse, "next_count", lambda self: len(self.count_of))
+    assert explore(world, spec).outcome == "failed"  # v0 and the first new place both show one marker
+
+
 def test_entries_changing_their_listing_are_those_the_audit_found():
     changed = {name for name, spec in REGISTRY.items() if spec.changes}
     audited = {"enh3", "enh4", "enh5-d2", "enh3+4", "enh3+5", "footprints", "model-tree", "case-1a", "case-1b", "case-2",
                "case-4", "case-4-mn", "case-5-v1", "case-5-v2", "case-dv-sum", "extension-2", "case-1b-edgeinfo",
-               "case-2-edgeinfo", "case-1a-edgeinfo", "case-4-edgeinfo", "case-4-mn-edgeinfo"}
+               "case-2-edgeinfo", "case-1a-edgeinfo", "case-4-edgeinfo", "case-4-mn-edgeinfo", "case-5-directional"}
     follows = {"basic", "enh1", "enh2", "enh5-d1", "labelled-dfs", "single-leaf", "case-3a", "case-3b",
-               "case-3b-saving", "case-0", "case-5-edge", "case-5-directional", "extension-1", "extension-naive"}
+               "case-3b-saving", "case-0", "case-5-edge", "extension-1", "extension-naive"}
     assert audited <= changed and not follows & changed

@@ -113,6 +113,12 @@ def _directional_kit(n: int, m: int, options: dict) -> Kit:
     return Kit(vertex=sum_to(n) if given is None else given, directional=True)
 
 
+_COUNTER = ("Algorithm 6.4's counter (lines 1, 3, 13, 15) gives the first new place one marker, v0's label: this "
+            "explorer counts as Algorithm 6.2 does (v0 1, the j-th new place j + 1), so every count is unique as "
+            "§6.2.1 Case 5 requires; the literal counter fails on the triangle")
+"""What Version-1 (and its directional form) changes relative to Algorithm 6.4 (``changes``; shown by
+``tests/test_listing_audit.py``)."""
+
 _WAYS = ("correct", "phase-i", "phase-ii")
 """How a Case 5 run goes (§6.2.1 Case 5): phase I while the markers last, phase II once they run short, and the
 map at the end — with K > 3 markers it never fails for want of them."""
@@ -124,9 +130,7 @@ SPECS = (
         markers="K > 3 undirected V-markers, any K (Σ_{k=1}^{n} k mark every place)", deterministic=True,
         options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=VertexCountsThenLighthouse, uses_lighthouse=False,
         parameters=(MARKERS,), kit_fn=_v1_kit, marker_bound_fn=lambda n, m: sum_to(n), family="robot", bound_bench="table-6.1", ways=_WAYS,
-        changes="Algorithm 6.4's counter (lines 1, 3, 13, 15) gives the first new place one marker, v0's label: this "
-                "explorer counts as Algorithm 6.2 does (v0 1, the j-th new place j + 1), so every count is unique as "
-                "§6.2.1 Case 5 requires; the literal counter fails on the triangle"),
+        changes=_COUNTER),
     AlgorithmSpec(
         name="case-5-v2", thesis="§6.2.1 Case 5 Version-2, Algorithm 6.5",
         kit=Kit(vertex=1, edge=1), bound="O(m²n) (Table 6.1; O(mn) when every place and loop edge is marked, §6.2.1 Case 5)",
@@ -158,5 +162,6 @@ SPECS = (
         markers="K > 3 directional V-markers, any K (Σ_{k=1}^{n} k mark every place)", deterministic=True,
         options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=DirectionalCountsThenLighthouse,
         uses_lighthouse=False, parameters=(MARKERS,), kit_fn=_directional_kit, marker_bound_fn=lambda n, m: sum_to(n),
-        family="robot", bound_bench="table-6.2", ways=_WAYS),
+        family="robot", bound_bench="table-6.2", ways=_WAYS,
+        changes=f"Version-1's phase I with directional markers, and so its {_COUNTER}"),
 )
