@@ -24,6 +24,8 @@ K4 = {"v0": ["v1", "v2", "v3"], "v1": ["v0", "v2", "v3"], "v2": ["v0", "v1", "v3
 CHAIN4 = {"v0": ["v1", "v3"], "v1": ["v0", "v2"], "v2": ["v1"], "v3": ["v0"]}
 TRIANGLE = {"v0": ["v1", "v2"], "v1": ["v0", "v2"], "v2": ["v0", "v1"]}
 KITE = {"v0": ["v1", "v2", "v3"], "v1": ["v0", "v2"], "v2": ["v0", "v1", "v3"], "v3": ["v0", "v2"]}
+FIVE_9 = {"v0": ["v1", "v3", "v4"], "v1": ["v0", "v2", "v3", "v4"], "v2": ["v1", "v3", "v4"],
+          "v3": ["v0", "v1", "v2", "v4"], "v4": ["v0", "v1", "v2", "v3"]}  # 5 places, 9 edges: case-5-v2's
 SIX = {"v0": ["v1", "v4"], "v1": ["v0", "v2", "v5"], "v2": ["v1", "v3"], "v3": ["v2", "v4", "v5"],
        "v4": ["v0", "v3", "v5"], "v5": ["v1", "v3", "v4"]}
 
@@ -107,6 +109,7 @@ CASES = [  # entry, world, start, facing, the change undone, our cost, the listi
     ("case-2-edgeinfo", FIVE, "v2", "v0", _neighbours_of_vk_too, 19, 20),
     ("case-4-edgeinfo", FIVE, "v2", "v0", _neighbours_of_vk_too, 19, 20),
     ("case-4-mn-edgeinfo", FIVE, "v2", "v0", _neighbours_of_vk_too, 19, 20),
+    ("case-5-v2", FIVE_9, "v1", "v4", _neighbours_of_vk_too, 20, 21),
     ("case-1a", SIX, "v0", "v1", _check_at_the_candidate_only, 23, 25),
     ("footprints", FIVE, "v0", "v3", _check_at_the_candidate_only, 22, 24),
     ("extension-2", TRIANGLE, "v0", "v1", _always_come_back, 5, 6),
