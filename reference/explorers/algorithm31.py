@@ -40,6 +40,22 @@ S (line 6) and the two augmentations (lines 24–28) — is the
 lighthouse, H, and the test of its hypotheses (:func:`validate_in_turn`, which
 Case 5's phase II runs too).
 
+Correspondence with Algorithm 3.1 (``basic`` follows it step by step; the audit is ``docs/bounds.md``):
+
+* lines 1–3 → :meth:`LighthouseExplorer.start`; line 4 → :meth:`~.walker.MapWalker.done`;
+* line 5 → ``policies.choose_edge``; line 6 → ``travel_to``; line 7 → ``take_exit`` (the marker's case, §3.3,
+  → ``lighthouse_entry`` and loop augmentation at once);
+* lines 8, 11–12 → :meth:`LighthouseExplorer.hypotheses` (:func:`hypothesis_darts`); lines 9–10, 13–20 →
+  :func:`validate_in_turn` (line 13 :func:`walk_hypothesis`, cases (1)/(2) its first mismatch, line 17
+  :func:`retrace_motions`, the re-alignment to e the next motion's turn);
+* lines 22–25 → :meth:`LighthouseExplorer.loop_augment`; lines 26–28 → :meth:`LighthouseExplorer.non_loop_augment`.
+
+Choices the listing leaves open (§3.3): which e leaves U (line 5, the edge policy, default ``nearest``), the path
+of line 6 and the simple path of line 11 (the path policy, default shortest: one breadth-first tree to v0 per
+iteration), the order of H (line 10, the hypothesis policy, default U's order).  H leaves out v_k itself, as
+§3.3's text does ("Every vertex (except v_k) in S could potentially correspond to v_u"); it keeps v_k's known
+neighbours, as the text does.
+
 References
 ----------
 Algorithm 3.1 and §3.3–3.4 of *Exploring topological environments*; the

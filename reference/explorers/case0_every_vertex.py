@@ -23,6 +23,10 @@ the first would be a guess the robot knows to be one, and on some worlds the
 checker would refute the map it claims.  No fitting dart is ``failed`` too (it
 cannot happen in a simple world, as said above).
 
+There is no listing: the explorer follows the text (§6.2.1 Case 0) and validates nothing with motion.  Leaving
+out the darts at v_k and its neighbours (never e', §3.1.1) decides only where the run can go on without a guess:
+a reading that kept them would stop, failed, at the first marked place they make ambiguous.
+
 ``tests/test_markers_case5.py`` shows why no choice can be right: the pairs of
 worlds under ``tests/vectors/case0/`` (found by search over small worlds) give
 the robot the same perceptions up to the first marked place, where several

@@ -26,6 +26,10 @@ The thesis only names this version; it is built as Version-1 is (Algorithm
   it with the expected marks at both ends fixes which end and the entry edge at
   v_l, as Version-1's v_l-then-v_n does (§6.2.1 Case 5).
 
+There is no listing for this version ("a similar E-marker algorithm", §6.2.1 Case 5): it follows Case 3b's
+text in phase I and Algorithm 6.4 lines 16–35 in phase II (H as line 17–18 with the marks for the signature,
+hypotheses in turn as lines 19–30, augmentation as lines 31–35), with the choices above.
+
 Kit: K undirected E-markers (``--markers K``, K > 3, §6.2.1 Case 5); the default is
 Case 3b's Σ_{k=1}^{n−1} k, which marks every non-loop edge of the exploration
 tree, so phase II never runs and the algorithm is Case 3b (O(m), §6.2.1 Case 4); with

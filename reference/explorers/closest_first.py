@@ -18,6 +18,11 @@ rule 1 makes its next edge the first one explored, marked by rule 2 or 3
 (§6.2.1 Case 4).  The search is Case 1a's (Algorithm 6.3 lines 14–24) or Case
 2's (c_1 and c_2).
 
+Correspondence with Algorithm 6.3: line 3 → rule 1 (``edge_policy``); lines 5–6 and 16–17 →
+:meth:`ClosestFirst.non_loop_markers` and the loop marker (dropped from v_u, the same edge marked either way);
+lines 7–13 → the footprint loop's new-place branch; lines 14–24 → its search, which changes the listing's
+moves as every footprint search does (:mod:`.edge_footprints`; ``changes`` in the registrations).
+
 Decision: **m − ⌊(n−1)/2⌋, not m − ⌊n/2⌋** (§6.2.1 Case 4).  The thesis counts
 "the m − (n − 1) loop edges" and "Maximumly, half (⌈(n−1)/2⌉) of the
 non-loop edges", which is m − (n − 1) + ⌈(n−1)/2⌉ = m − ⌊(n−1)/2⌋; the

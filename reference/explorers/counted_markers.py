@@ -74,6 +74,17 @@ Decisions, with the thesis references:
   by the relative exits 1, 2, ..., deg−1 in turn (clockwise from the entry edge),
   each failed probe returning at once (line 33, purpose ``retrace``).
 
+Correspondence with Algorithm 6.2 (``case-3a`` follows it step by step): lines 1–3 →
+:meth:`VertexCounts.begin` and the walker's S and U; lines 5–7 → the walker's loop (e from U by the edge
+policy, S walked to v_k); lines 8–16 → the first branch of :meth:`VertexCounts.arrive` (line 10's "enough
+markers" is the drop the kit accepts, ``try_drop``; line 16's flag is ``blank``); line 18 → ``vertex_of``;
+lines 19–35 → :meth:`VertexCounts.probe` and :meth:`VertexCounts.explored_exit` (line 25's "c ∈ s": the
+sensed count is a known neighbour over an explored edge of v_k').  Left open: which e leaves U (line 6) and the
+order of line 21's edges (clockwise from the entry).  ``case-3b`` (no listing) follows §6.2.1 Case 3b's text:
+the drop trip, and observation (2)'s identification with no motion (:meth:`EdgeCounts.identify`).
+``case-dv-sum`` (§6.2.2, no listing) is Algorithm 6.2 with directional markers; it changes line 6's order once
+the blank is known (``changes`` in its registration, the last decision above).
+
 Examples
 --------
 >>> sum_to(4)

@@ -17,6 +17,13 @@ which has one more marked edge than is shown on the map":
   markers on every non-loop edge, one on every loop edge; candidates must
   show c_1 single- and c_2 double-marked edges.
 
+Correspondence with Algorithm 6.1 (Case 2; Cases 1a and 1b are its text's variants): line 1 →
+the walker's S and U; lines 3–4 → the walker's loop; lines 5–8 → :meth:`FootprintSearch.arrive`'s
+first branch (:meth:`FootprintSearch.is_new`, :meth:`FootprintSearch.on_new`); lines 9–10 →
+:meth:`FootprintSearch.mark_loop_edge` and the move back over e; lines 11–19 →
+:meth:`FootprintSearch.search` (:meth:`FootprintSearch.candidates`,
+:meth:`FootprintSearch.walk_looking`), then the loop augmentation.
+
 Search (common to the three and to Case 4, :mod:`.closest_first`): on a
 marked v_u the robot drops one marker on e (Algorithm 6.1 line 10 "drops a
 marker during transit on e"; Figure 6.5(b)), goes back over e to v_k, and
@@ -44,6 +51,10 @@ Decisions, with the thesis references (each shown in ``tests/test_markers_621.py
   search stops wherever v_k' is seen (as in
   :mod:`.movable_marker`).  The walk from v_k through all candidates is at
   most the tree's Euler tour, 2(n − 1) moves (purpose ``validation``).
+  This changes the listing's moves (Algorithm 6.1 lines 11–13 visit
+  every candidate, v_k's neighbours included, and check each where the
+  robot goes): every footprint search's registration says so (``changes``,
+  :data:`~topomark.reference.algorithms.registrations.markers_621.SEARCH_CHANGES`).
 * **Case 1b with m markers**: the robot learns that it is out
   of markers when a drop is refused (:meth:`MarkerWalk.try_drop`; the
   kernel's robot does not count what it carries), that is *after* following

@@ -27,7 +27,14 @@ hypothesized (v_k', e'), as Enhancement-3 traces executed paths.
 Choices (the thesis is silent): a neighbour already sensed during this
 iteration (validation, or a record) is not visited again; v_k's side of v_u's
 distance-2 neighbourhood is not walked (v_k is in S; its known neighbours
-are not re-sensed).
+are not re-sensed).  The first changes Algorithm 4.4 line 22's moves (``enh4``)
+and Algorithm 4.5 line 7's with d = 2 (``enh5-d2``): their registrations say so
+(``changes``).  With d = 1 (``enh5-d1``) nothing is known at v_u's other exits
+on entering it (a record beyond e holds v_u's own signature only), so it
+follows Algorithm 4.5 step by step: lines 1–6, 9–22 are Algorithm 3.1's
+(:mod:`.algorithm31`); line 7 → :meth:`ExpandedSignaturesOfCurrentPlace.on_enter`
+(:func:`expand`); line 8 → ``prune`` (v_k behind e, ``known_on_entering``);
+line 23 → ``recorded_depth``.
 """
 
 from __future__ import annotations

@@ -26,6 +26,9 @@ algorithm, with the status "implemented, expected to fail":
   (§6.2.2, Figure 6.15(c)); a later entry into v_k senses no marked edge and
   takes it for a new place: ``wrong-map``.
 
+Neither has a listing of its own; each follows the text quoted above, on its base's steps (Case 3b's, and
+Algorithm 6.6's without lines 19–20), and makes no choice that changes the moves.
+
 The figures' drawings are not in the text; the worlds that show each failure
 are rebuilt from the captions in :mod:`topomark.reference.worlds.figures`.
 

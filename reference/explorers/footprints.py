@@ -35,7 +35,9 @@ Decisions, with the thesis references (each shown in ``tests/test_baselines.py``
   rooted at v_k, each by a shortest path of S, sensing every vertex it passes
   (stopping wherever v_k' is seen) — not filtered by the marked edges v_u
   showed, nor by an unexplored edge, as the thesis's own Cases 1a and 2 do
-  (Algorithm 6.1 lines 11–12).  The walk is still within the tree's Euler tour
+  (Algorithm 6.1 lines 11–12).  Looking at every vertex passed changes the
+  text's moves ("visiting each (other) known vertex"), which the registration
+  says (``changes``).  The walk is still within the tree's Euler tour
   (2(n − 1) moves), so the registered exact bound is the footprint searches'.
 * **Back to v_k over e** before the search ("the robot returning to v_k",
   §2.3.1): purpose ``retrace``, as in Cases 1a and 2.

@@ -40,6 +40,10 @@ Decisions, with the thesis references (each shown in ``tests/test_baselines.py``
   (the way back is the shortest path the next step takes, at most one more
   move than the tree path): at most 2(n − 1) + 2(m − n + 1) = 2m traversals.
 
+§2.3.1 gives no listing: the explorer follows its text (no validation, depth-first search).  The labels'
+form is the choice above; it changes no move, since an edge label would tell the robot nothing the
+direction of a vertex label does not.
+
 Examples
 --------
 >>> LabelledGraphDFS.name

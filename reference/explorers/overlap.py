@@ -18,6 +18,15 @@ v_u visit the same places (the execution trie,
     hypothesis policy's order), retraces only to the last overlapped vertex
     and executes the non-overlapped motions.  Enhancements 2 and 3 use this
     stage too (Algorithms 4.2, 4.3).
+
+Correspondence with Algorithm 4.1 (``enh1`` follows it step by step): lines 1–5, 27–30 are Algorithm 3.1's
+(:mod:`.algorithm31`); lines 6–7 → ``hypotheses``; lines 8–9, 11–13 →
+:meth:`~.enhanced.EnhancedExplorer.attempt`; line 15 → the robot stays (``stays``); lines 16–20 →
+:class:`OverlapStage1` (``reject_without_motion``); lines 21–22 → the loop's end in
+:meth:`~.enhanced.EnhancedExplorer.validate` (back to v_u by ``goto(0)`` for line 30); lines 23–26 →
+:meth:`OverlapStage2.choose` and ``attempt``'s retrace to the overlapped node.  Left open (§4.1): the first
+hypothesis (line 8: the hypothesis policy's), ties in line 23 (the policy's order), and, with no overlap, the
+next one is the policy's first, walked from v_u ("the robot moves back to v_u", §4.1).
 """
 
 from __future__ import annotations

@@ -35,6 +35,14 @@ Decisions, with the thesis references:
   one unexplored edge of the map, or none, the run stops with
   :class:`~topomark.spec.errors.AlgorithmFailed` (never silently).
 
+Correspondence with Algorithm 6.6 (``extension-2``): line 4 → the ``nearest`` edge policy (closest first);
+line 5 → :meth:`SavingEdgeCounts.marked` (read from S); lines 6–7 → the walker's loop; lines 8–13 → the first
+branch of :meth:`SavingEdgeCounts.arrive` (lines 9–11, the drop trip, → ``drop_on``); lines 14–18 →
+:meth:`SavingEdgeCounts.identify` and the loop augmentation; lines 19–20 → the come-back, taken only while v_k
+has an unexplored edge, as §6.2.2's text says — a change to the listing's moves (``changes`` in its
+registration).  ``extension-1`` has no listing; it follows §6.2.2's text (markers on e in transit from an
+unmarked v_k, :meth:`MarkFirstEdges.depart`, loop edge or not).
+
 Examples
 --------
 >>> ceil_half(5), ceil_half(6)

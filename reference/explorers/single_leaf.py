@@ -15,6 +15,10 @@ leaf vertex as the directional lighthouse the world can be mapped deterministica
    hypothesis is validated by walking S to the leaf; arriving at a place of degree 1 is arriving at v0 by its
    exit 0.  Its loop conditions (§3.4) and its bound (3.1)+(3.2) (§3.5.2) hold as for any lighthouse.
 
+§5.3 gives no listing: steps 1–2 follow its text, the search's order being the choice it leaves open; step 3 is
+Algorithm 3.1 line by line (the correspondence in :mod:`.algorithm31`), with the leaf's ``[1,A,A]`` in place of
+the marker's signature at line 7.
+
 A world without exactly one leaf is refused before the run (the prior is false: bad input, as for the model
 tree's ``--prior single-leaf``): with two leaves the signature ``[1,A,A]`` names two places, and with none
 the search never ends.

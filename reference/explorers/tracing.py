@@ -16,6 +16,14 @@ the records of T reached; only nodes added since the last check are traced.
 Choice (the thesis is silent): the hypothesized edge e''/e itself is part of
 the traced map (it is part of S if h'' holds); tracing on S alone stops at
 any other unexplored edge.
+
+Correspondence with Algorithm 4.2 (``enh2`` follows it step by step): lines 1–15, 21–33 as Algorithm 4.1's
+(:mod:`.overlap`, stage 2 for lines 23–28); lines 16–20 → :meth:`ExecutedPathsOnS.contradiction`, run by
+``reject_without_motion`` after every mismatch on the paths executed for e since the last check (the earlier
+ones were traced then; no path is executed before line 9, so nothing is rejected before it).  ``enh3`` adds T
+(lines 2, 21, 36–37 → :meth:`ExecutedPathsOnSAndUnknownPlaces.store`, :func:`~.records.record_trie`) and
+changes its listing: T's records beyond e count as known before any motion (:func:`~.records.graft`;
+``changes`` in its registration).
 """
 
 from __future__ import annotations

@@ -49,7 +49,7 @@ from topomark.reference.explorers.compositions import ENHANCEMENTS, EXPLORERS
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES
 from topomark.reference.explorers.policies import EDGE_POLICIES
 
-__all__ = ["SPECS", "POLICY_OPTIONS", "BOUND", "lighthouse_algorithm", "policy_options"]
+__all__ = ["SPECS", "POLICY_OPTIONS", "BOUND", "CHANGES", "lighthouse_algorithm", "policy_options"]
 
 
 def policy_options(edge: str = "nearest") -> tuple[str, ...]:
@@ -110,13 +110,35 @@ _WAYS = ("correct", "hypothesis-rejected", "hypothesis-confirmed")
 ending with the map; a lighthouse search that gives up is the lighthouse strategy's way, not the algorithm's."""
 
 
+_T_BEYOND_E = ("Algorithm 4.3 traces only the motions executed for e, after a mismatch (lines 16–24), looking unknown "
+               "places up in T: this explorer also counts T's records beyond e itself as known at v_u before any "
+               "motion, so a hypothesis they contradict is rejected before the first one is walked (lines 8–9 walk "
+               "it unchecked) and at every later check")
+_NEIGHBOURS_SENSED = ("Algorithm 4.4 line 22 has the robot explore all the other neighbours of a new v_u: this "
+                      "explorer skips each one already sensed in this iteration (a rejected hypothesis's first "
+                      "motion), 2 traversals fewer for each")
+_PLACES_KNOWN = ("Algorithm 4.5 line 7 has the robot explore all the distance-d neighbours of v_u: with d = 2 this "
+                 "explorer skips the places T's records beyond e already show (sensed when v_k was new, line 23), "
+                 "2 traversals fewer for each, and does not walk v_k's side (v_k is in S)")
+CHANGES = {
+    "enh3": _T_BEYOND_E,
+    "enh4": _NEIGHBOURS_SENSED,
+    "enh5-d2": _PLACES_KNOWN,
+    "enh3+4": f"§4.3 gives no listing; its parts change theirs: {_T_BEYOND_E}; {_NEIGHBOURS_SENSED}",
+    "enh3+5": f"§4.3 gives no listing; its parts change theirs: {_T_BEYOND_E}; {_PLACES_KNOWN}",
+}
+"""What each Chapter 4 composition changes relative to its listing (``changes``; the others follow theirs, as
+their modules' correspondences say): each is shown, on the smallest world the enumeration finds, by
+``tests/test_listing_audit.py``."""
+
+
 def _enhancement(name: str) -> AlgorithmSpec:
     """A Chapter 4 composition: (3.1)+(3.2) where it adds no motion, else O(m²n) asymptotic (module docstring)."""
     enh = ENHANCEMENTS[name]
     inherits = not (enh.prune or enh.expand_new or enh.expand_place)
     bound = f"{BOUND}, inherited (§4.1 adds no motion)" if inherits else \
         "O(m²n) (Chapter 4; its expansion traversals are outside (3.1)+(3.2), §4.2)"
-    return lighthouse_algorithm(name, enh.section, EXPLORERS[name], bound, inherits)
+    return lighthouse_algorithm(name, enh.section, EXPLORERS[name], bound, inherits, changes=CHANGES.get(name))
 
 
 SPECS = (

@@ -59,7 +59,10 @@ _FOOTPRINTS = footprint_spec(
     kind=Kit(either=1))
 
 SPECS = (
-    replace(_FOOTPRINTS, parameters=(), checks=STEPWISE_MAP_CHECKS, ways=("correct",)),  # its kit never runs short
+    replace(_FOOTPRINTS, parameters=(), checks=STEPWISE_MAP_CHECKS, ways=("correct",),  # its kit never runs short
+            changes="§2.3.1 gives no listing and has the robot visit \"each (other) known vertex in S which has the "
+                    "same degree as v_u\": this explorer checks every vertex it passes, so one passed is not visited "
+                    "again and the search stops wherever v_k' is seen"),
     AlgorithmSpec(
         name="labelled-dfs",
         thesis="§2.3.1, a labelled graph explored depth first, every place distinctly marked (Tables 2.2 and 2.3)",

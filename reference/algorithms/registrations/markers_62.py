@@ -91,7 +91,10 @@ SPECS = (
         deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=DirectionalVertexCounts,
         uses_lighthouse=False, parameters=(MARKERS,),
         kit_fn=lambda n, m, o: Kit(vertex=_count(n, o), directional=True),
-        marker_bound_fn=lambda n, m: sum_to(n), family="robot", bound_bench="table-6.2", ways=("correct", "failed-out-of-markers")),
+        marker_bound_fn=lambda n, m: sum_to(n), family="robot", bound_bench="table-6.2", ways=("correct", "failed-out-of-markers"),
+        changes="once the last new place is left blank (Algorithm 6.2 lines 14–16), its unexplored edges are taken "
+                "first, whatever the edge policy (line 6 leaves the choice open), so no loop edge enters the blank "
+                "and needs its back-link probed (lines 19–35): the edge policy alone would choose otherwise"),
     AlgorithmSpec(
         name="extension-1", thesis="§6.2.2 extension-1 of Case 3b (Figure 6.15, Table 6.2)",
         kit=Kit(edge=1, directional=True), bound="O(m)", markers="Σ_{k=1}^{⌈m/2⌉} k directional E-markers",
@@ -108,7 +111,10 @@ SPECS = (
         uses_lighthouse=False, parameters=(MARKERS,),
         kit_fn=lambda n, m, o: Kit(edge=_count(n, o, sum_to(ceil_half(n - 1))), directional=True),
         marker_bound_fn=lambda n, m: sum_to(ceil_half(n - 1)), family="robot", bound_bench="table-6.2",
-        ways=("correct", "failed-out-of-markers", "drop-trip")),
+        ways=("correct", "failed-out-of-markers", "drop-trip"),
+        changes="Algorithm 6.6 lines 19–20 bring the robot back to an unmarked v_k after every loop edge: this "
+                "explorer comes back only if v_k still has an unexplored edge, as §6.2.2's text says (\"unless v_k "
+                "has no unexplored edges now\"), one traversal fewer otherwise"),
     AlgorithmSpec(
         name="extension-naive",
         thesis="§6.2.2 the naive extension of Case 3b, extension-2 without coming back: fails (Figure 6.15)",

@@ -58,7 +58,7 @@ from topomark.reference.algorithms.algorithm_spec import MARKER_MAP_CHECKS, Algo
 from topomark.reference.explorers.closest_first import ClosestFirst, ClosestFirstDouble
 from topomark.reference.explorers.edge_footprints import DoubleMarkedEdges, EdgeFootprints, VertexEdgeFootprints
 
-__all__ = ["SPECS", "footprints_bound", "case_4_markers", "case_4_mn_markers", "MARKER_OPTIONS", "kit_size", "case_1b_kit",
+__all__ = ["SPECS", "SEARCH_CHANGES", "footprints_bound", "case_4_markers", "case_4_mn_markers", "MARKER_OPTIONS", "kit_size", "case_1b_kit",
            "footprint_spec"]
 
 MARKERS = Parameter("markers", "how many markers the robot carries (default: what its case is assured, "
@@ -94,20 +94,30 @@ def case_1b_kit(n: int, m: int, options: dict) -> Kit:
 
 _BOUND = "O(mn) ({}); bound_fn: ours, exact for our explorer"
 MARKER_OPTIONS = ("markers",)
+SEARCH_CHANGES = ("the listing's search (Algorithm 6.1 lines 11–19, Algorithm 6.3 lines 18–24; the text of Cases 1a "
+                  "and 1b) visits every vertex of S with an unexplored edge, v_u's degree and its marks, and checks "
+                  "each where it goes: this explorer leaves out the known neighbours of v_k (no multi-edges, §3.1.1) "
+                  "and checks every vertex it passes, so one passed is not visited again and the search stops "
+                  "wherever v_k' is seen")
+"""What every footprint search of §6.2.1 (and §6.2.2's edgeINFO variants) changes relative to its listing: the
+search of :class:`~topomark.reference.explorers.edge_footprints.FootprintSearch` (``tests/test_listing_audit.py``
+shows each half on the smallest world the enumeration finds)."""
 
 
 def footprint_spec(name, thesis, markers, explorer, kit_fn, marker_bound_fn, cites, options=MARKER_OPTIONS + ("policy edge",),
-          kind=Kit(edge=1)):
+          kind=Kit(edge=1), changes=SEARCH_CHANGES):
     """The registration template of a §6.2.1 footprint search: a kit algorithm (``explorer`` built as
     ``explorer(robot, policies, observer, options)``) taking ``--markers``, deterministic, held to
     :data:`~topomark.reference.algorithms.algorithm_spec.MARKER_MAP_CHECKS` and to the exact bound
     :func:`footprints_bound`; ``kit_fn(n, m, options)`` gives the kit, ``marker_bound_fn(n, m)`` the stated marker
     bound (``markers`` in words, ``cites`` its thesis line).  ``kind``: the kind of marker the kit holds (the
-    registry's ``kit``; the counts come from ``kit_fn``)."""
+    registry's ``kit``; the counts come from ``kit_fn``).  ``changes``: what the search changes relative to the
+    listing (default :data:`SEARCH_CHANGES`)."""
     return AlgorithmSpec(name=name, thesis=thesis, kit=kind, bound=_BOUND.format(cites), markers=markers,
                          deterministic=True, options=options, checks=MARKER_MAP_CHECKS, bound_fn=footprints_bound,
                          explorer=explorer, uses_lighthouse=False, parameters=(MARKERS,), kit_fn=kit_fn,
                          marker_bound_fn=marker_bound_fn, family="robot", ways=("correct", "failed-out-of-markers"),
+                         changes=changes,
                          bound_formula=f"(n − 1)² + (m − n + 1)(3n − 1), ours: the exact worst case of the footprint "
                                        f"search behind O(mn) ({cites})")
 

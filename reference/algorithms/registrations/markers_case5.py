@@ -72,6 +72,7 @@ from __future__ import annotations
 from topomark.spec.kit import Kit
 
 from topomark.reference.algorithms.algorithm_spec import MARKER_MAP_CHECKS, AlgorithmSpec, Parameter
+from topomark.reference.algorithms.registrations.markers_621 import SEARCH_CHANGES
 from topomark.reference.explorers.case0_every_vertex import EveryVertexMarked
 from topomark.reference.explorers.case5_directional import DirectionalCountsThenLighthouse
 from topomark.reference.explorers.case5_edge import EdgeCountsThenLighthouse
@@ -112,6 +113,12 @@ def _directional_kit(n: int, m: int, options: dict) -> Kit:
     return Kit(vertex=sum_to(n) if given is None else given, directional=True)
 
 
+_COUNTER = ("Algorithm 6.4's counter (lines 1, 3, 13, 15) gives the first new place one marker, v0's label: this "
+            "explorer counts as Algorithm 6.2 does (v0 1, the j-th new place j + 1), so every count is unique as "
+            "§6.2.1 Case 5 requires; the literal counter fails on the triangle")
+"""What Version-1 (and its directional form) changes relative to Algorithm 6.4 (``changes``; shown by
+``tests/test_listing_audit.py``)."""
+
 _WAYS = ("correct", "phase-i", "phase-ii")
 """How a Case 5 run goes (§6.2.1 Case 5): phase I while the markers last, phase II once they run short, and the
 map at the end — with K > 3 markers it never fails for want of them."""
@@ -122,13 +129,17 @@ SPECS = (
         kit=Kit(vertex=1), bound="O(m²n) (§6.2.1 Case 5; O(m·d_max) when every place is marked)",
         markers="K > 3 undirected V-markers, any K (Σ_{k=1}^{n} k mark every place)", deterministic=True,
         options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=VertexCountsThenLighthouse, uses_lighthouse=False,
-        parameters=(MARKERS,), kit_fn=_v1_kit, marker_bound_fn=lambda n, m: sum_to(n), family="robot", bound_bench="table-6.1", ways=_WAYS),
+        parameters=(MARKERS,), kit_fn=_v1_kit, marker_bound_fn=lambda n, m: sum_to(n), family="robot", bound_bench="table-6.1", ways=_WAYS,
+        changes=_COUNTER),
     AlgorithmSpec(
         name="case-5-v2", thesis="§6.2.1 Case 5 Version-2, Algorithm 6.5",
         kit=Kit(vertex=1, edge=1), bound="O(m²n) (Table 6.1; O(mn) when every place and loop edge is marked, §6.2.1 Case 5)",
         markers="K > 3 undirected V-E-markers, any K, one pool (m + 4 mark every place and loop edge)",
         deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=VertexEdgeThenLighthouse,
-        uses_lighthouse=False, parameters=(MARKERS,), kit_fn=_v2_kit, marker_bound_fn=v2_markers, family="robot", bound_bench="table-6.1", ways=_WAYS),
+        uses_lighthouse=False, parameters=(MARKERS,), kit_fn=_v2_kit, marker_bound_fn=v2_markers, family="robot", bound_bench="table-6.1", ways=_WAYS,
+        changes="phase I's search is Case 1b's (Algorithm 6.5 line 12: \"See algorithms in Case 1\"), with its "
+                "change: " + SEARCH_CHANGES + "; and Algorithm 6.5 line 23 (\"do not match throughout\" → confirm) "
+                "is read as \"match throughout\" (line 21 repeats it; the literal line maps the paw wrongly)"),
     AlgorithmSpec(
         name="case-0", thesis="§6.2.1 Case 0, n markers, one per visited vertex: fails (Figure 6.3)",
         kit=Kit(vertex=1), bound=None, markers="n undirected V-markers", deterministic=False, options=("policy edge",),
@@ -151,5 +162,6 @@ SPECS = (
         markers="K > 3 directional V-markers, any K (Σ_{k=1}^{n} k mark every place)", deterministic=True,
         options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=DirectionalCountsThenLighthouse,
         uses_lighthouse=False, parameters=(MARKERS,), kit_fn=_directional_kit, marker_bound_fn=lambda n, m: sum_to(n),
-        family="robot", bound_bench="table-6.2", ways=_WAYS),
+        family="robot", bound_bench="table-6.2", ways=_WAYS,
+        changes=f"Version-1's phase I with directional markers, and so its {_COUNTER}"),
 )

@@ -166,6 +166,12 @@ SPECS = (
         explorer=ModelTreeExplorer, uses_lighthouse=False, parameters=PARAMETERS, kit_fn=_kit,
         marker_bound_fn=lambda n, m: 0, family="robot", check_world=check_cues, summary_fn=summary,
         write_models=write_models, expected="may-fail", ways=("correct", "limit", "failed-models-undecided", "wrong-map"),
+        changes="Algorithm 5.1 line 17 takes every unexplored edge whose known end shows v_u's degree: this explorer "
+                "forms no hypothesis that would make a self-loop or a multi-edge (§3.1.1), and walks lines 18–23's "
+                "paths to every known vertex as one breadth-first tree (§5.2.2's captured path overlap); and besides "
+                "§5.2.2's stopping rule (one completed model for the window) it stops as soon as the sole live model "
+                "is completed, when the traversal map is completed (a tree world), and, failed, when every live "
+                "model is completed and no walk tells them apart",
         expected_reason="\"Without a marker, the robot cannot map a world deterministically\" (§5.2): the "
                         "models may never meet the termination window (§5.2.2) and end at a cap, or the sole "
                         "completed model may be wrong (Figure 3.4, §5.2.2)"),
