@@ -98,7 +98,7 @@ def scan(radices: Any, source: Any, base: Any, table: Any, rank: int, step: int,
 def compiled() -> Callable[..., tuple[int, int, int]] | None:
     """:func:`scan` compiled by numba, or None when numba is not installed."""
     try:
-        import numba  # type: ignore[import-not-found, unused-ignore]
+        import numba
     except ImportError:
         return None
     jitted: Callable[..., tuple[int, int, int]] = numba.njit(cache=True, nogil=True)(scan)
