@@ -20,9 +20,13 @@ with canonical deduplication*:
 * no pruning by automorphisms inside the search: slower than nauty on
   symmetric graphs but simple enough to trust; fine for n ≤ 10.
 
-Why not nauty?  Debian's ``nauty`` is not a Python dependency, and the PyPI
-wheel (``pynauty-prebuilt``) wraps nauty in GPLv3 code while topomark is MIT;
-a pure-Python generator keeps the install as it is.  The counts are checked
+Where nauty's ``geng`` is installed (Debian's ``nauty`` package),
+:mod:`topomark.proofs.geng` lists the graphs with it instead, relabelled by
+:func:`canonical` and sorted by :func:`ordered`, so the list is the same
+tuple either way; this module is the fallback, and the independent side of
+the cross-check.  Why not link nauty?  The PyPI wheel (``pynauty-prebuilt``)
+wraps nauty in GPLv3 code while topomark is MIT; geng runs as a separate
+program, and without it a pure-Python generator keeps the install as it is.  The counts are checked
 against the atlas for n ≤ 7 (tests/test_graphs.py) and against published
 figures:
 
