@@ -29,12 +29,13 @@ the same output (tests/test_orbit_kernel.py runs both on the same graphs).
 
 Examples
 --------
+The triangle: one cyclic order per vertex, six automorphisms, one world (rank 0) fixed by all six:
+
 >>> import numpy as np
->>> # the triangle: 1 cyclic order per vertex, 6 automorphisms, one world
 >>> t = (np.array([1, 1, 1]), np.array([0, 1, 2, 1, 0, 2, 2, 1, 0, 0, 2, 1, 1, 2, 0, 2, 0, 1]), np.array([0, 1, 2]),
 ...      np.zeros(18, dtype=np.int64))
 >>> [a.tolist() for a in next(representatives(*t, start=0, step=1, stop=1))]
-[[0], [6], [0, 1, 2, 3, 4, 5]]
+[[0], [0, 6], [0, 1, 2, 3, 4, 5]]
 """
 
 from __future__ import annotations

@@ -19,8 +19,8 @@ automorphism's action on them.
 
 Examples
 --------
->>> sum(len(b) for b in embedded_batches(7, 4))   # Burnside: 1 + 2 + 9 + 275 + 7229 + 213986
-221502
+>>> sum(len(b) for b in embedded_batches(6, 4))   # Burnside: 1 + 2 + 9 + 275 + 7229
+7516
 >>> b = next(graph_batches(4, 3, 5))               # K4: 16 rotation systems, 3 worlds
 >>> b.ranks.tolist(), b.nbr[1].tolist()
 ([0, 1, 5], [1, 2, 3, 0, 2, 3, 0, 1, 3, 0, 2, 1])
