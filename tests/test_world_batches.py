@@ -17,7 +17,8 @@ import pytest
 from topomark.proofs import orbit_kernel
 from topomark.proofs.burnside import worlds_on
 from topomark.proofs.census_map import unit_arrays, unit_worlds
-from topomark.proofs.enumerate import _image, _orbit_representatives, embedded_worlds, world_of_rotation
+from topomark.proofs.enumerate import (_image, _orbit_representatives, embedded_worlds, graph_automorphisms,
+                                       rotation_systems, world_of_rotation)
 from topomark.proofs.graphs import automorphisms, classes
 from topomark.proofs.orbit_kernel import compiled, representatives, scan
 from topomark.proofs.world_arrays import back_links, from_arrays, to_arrays
@@ -118,6 +119,21 @@ def test_unit_worlds_are_the_same_with_the_plain_kernel(monkeypatch):
     monkeypatch.setattr(orbit_kernel, "compiled", lambda: None)
     assert [list(unit_worlds(u, 4)) for u in units] == with_default
     assert [r for r, _, _ in with_default[2]] == [0, 1, 5]  # K4: 16 rotation systems, 3 worlds
+
+
+def test_unit_worlds_keep_their_meaning():
+    """(rank, world, autos): rank = the world's position in rotation_systems' product order, autos = every
+    automorphism of the graph fixing it, in graph_automorphisms' order with the identity moved first."""
+    for n, d, gi in [(4, 3, 5), (5, 3, 9), (6, 3, 28), (6, 4, 60)]:
+        g = graphs_of(n, d)[gi]
+        rank_of = {rot: r for r, rot in enumerate(rotation_systems(g))}
+        autos = sorted(graph_automorphisms(g), key=lambda s: any(k != v for k, v in s.items()))
+        for c, step in [(0, 1), (1, 2)]:
+            rows = list(unit_worlds((n, gi, c, step), d))
+            reps = [rot for rot in _orbit_representatives(g) if rank_of[rot] % step == c]
+            assert [rank for rank, _, _ in rows] == [rank_of[rot] for rot in reps]
+            assert [w for _, w, _ in rows] == [world_of_rotation(rot) for rot in reps]
+            assert [a for _, _, a in rows] == [tuple(s for s in autos if _image(rot, s) == rot) for rot in reps]
 
 
 def test_unit_arrays_are_unit_worlds_as_arrays():
