@@ -102,7 +102,10 @@ def compiled() -> Callable[..., tuple[int, int, int]] | None:
         import numba
     except ImportError:
         return None
-    jitted: Callable[..., tuple[int, int, int]] = numba.njit(cache=True, nogil=True)(scan)
+    try:  # compiled once per machine, kept beside the module or in the user's cache directory
+        jitted: Callable[..., tuple[int, int, int]] = numba.njit(cache=True, nogil=True)(scan)
+    except RuntimeError:  # no writable place for numba's cache: compile in every process instead
+        jitted = numba.njit(nogil=True)(scan)
     return jitted
 
 

@@ -172,3 +172,11 @@ def test_eight_vertices_degree_four_counts_are_burnsides():
             for i in range(0, len(b), max(1, len(b) // 5)):
                 assert np.array_equal(to_arrays(from_arrays(b.offsets, b.nbr[i])).back, b.back[i])
     assert total == 7_149_942
+
+
+def test_without_a_place_for_numbas_cache_the_kernel_still_compiles(monkeypatch):
+    numba = pytest.importorskip("numba", reason="numba is not installed: nothing to compile")
+    monkeypatch.setattr(numba.core.config, "CACHE_LOCATOR_CLASSES", "NoSuchLocator", raising=False)
+    fresh = orbit_kernel.compiled.__wrapped__()
+    assert fresh is not None
+    assert _kernel_output(4, 3, 5, (fresh, True), chunk=2) == _kernel_output(4, 3, 5, PLAIN, chunk=2)
