@@ -25,7 +25,7 @@ otherwise, and the two give the *same tuple*:
 * **Automorphisms.**  The canonical search that relabels a graph finds its
   whole automorphism group on the way, so nauty is not asked for it
   (``dreadnaut`` per graph would add a process per graph and, through
-  pynauty, a GPL dependency).  The relabelling costs about 0.5 ms per graph
+  pynauty, a GPL dependency).  The relabelling costs well under 1 ms per graph
   at n = 8, 9.
 * **n ≤ 7.**  :func:`topomark.proofs.enumerate.connected_graphs` keeps
   networkx's atlas there (its order fixes the census's pinned figures); geng
