@@ -39,9 +39,7 @@ Examples
 from __future__ import annotations
 
 import hashlib
-import itertools
 import math
-from functools import lru_cache
 from pathlib import Path
 from typing import Any, Iterator
 
@@ -53,23 +51,18 @@ from topomark.proofs.census_language import start_digests
 from topomark.proofs.census_integrity import code_version
 from topomark.proofs.census_shards import (combine, digest, done_path, map_path, records, seal, shard_of, write_atomic,
                                            write_json)
-from topomark.proofs.enumerate import connected_graphs, graph_automorphisms, world_of_rotation
+from topomark.proofs.enumerate import world_of_rotation
+from topomark.proofs.world_batches import WorldBatch, graph_batches
+from topomark.proofs.world_batches import automorphisms_of as _autos
+from topomark.proofs.world_batches import graph_data as _graph_data
+from topomark.proofs.world_batches import graphs_of as _graphs
 from topomark.spec.world import DartMark, World
 
-__all__ = ["Unit", "plan", "estimate", "rotation_count", "map_task", "run_map", "unit_worlds", "world_at", "world_records",
+__all__ = ["Unit", "plan", "estimate", "rotation_count", "map_task", "run_map", "unit_arrays", "unit_worlds", "world_at",
+           "world_records",
            "marked"]
 
 Unit = tuple[int, int, int, int]  # (n, graph index, c, C): the ranks c, c + C, c + 2C, ...
-
-
-@lru_cache(maxsize=None)
-def _graphs(n: int, max_degree: int) -> tuple[nx.Graph, ...]:
-    return tuple(connected_graphs(n, max_degree))
-
-
-@lru_cache(maxsize=64)
-def _autos(n: int, max_degree: int, gi: int) -> tuple[dict[int, int], ...]:
-    return tuple(graph_automorphisms(_graphs(n, max_degree)[gi]))
 
 
 def estimate(g: nx.Graph, autos: int) -> int:
@@ -100,34 +93,6 @@ def plan(max_vertices: int, max_degree: int, min_vertices: int = 2,
     return tasks
 
 
-@lru_cache(maxsize=64)
-def _graph_data(n: int, max_degree: int, gi: int) -> tuple[list[list[tuple[int, ...]]], list[int], list[tuple]]:
-    """Per vertex its cyclic orders (the factors of ``enumerate.rotation_systems``, in its order), their
-    numbers, and every automorphism sigma of graph ``gi`` (the identity first) with its action on choices:
-    ``rows[u] = (w, table)`` where ``w = sigma⁻¹(u)`` and ``table[d]`` is the index, among u's choices,
-    of the image of w's choice ``d`` (written from its least neighbour, as ``enumerate._normal`` does)."""
-    g = _graphs(n, max_degree)[gi]
-    choices = []
-    for v in range(n):
-        first, *rest = sorted(g[v])
-        choices.append([(first, *perm) for perm in itertools.permutations(rest)])
-    index = [{c: d for d, c in enumerate(cs)} for cs in choices]
-    actions = []
-    for sigma in sorted(_autos(n, max_degree, gi), key=lambda s: any(k != v for k, v in s.items())):
-        inverse = {v: k for k, v in sigma.items()}
-        rows = []
-        for u in range(n):
-            w = inverse[u]
-            table = []
-            for c in choices[w]:
-                image = [sigma[x] for x in c]
-                k = image.index(min(image))
-                table.append(index[u][tuple(image[k:] + image[:k])])
-            rows.append((w, table))
-        actions.append((sigma, rows))
-    return choices, [len(c) for c in choices], actions
-
-
 def rotation_count(n: int, max_degree: int, gi: int) -> int:
     """The number of rotation systems of graph ``gi``: ranks run over ``range(rotation_count(...))``."""
     return math.prod(_graph_data(n, max_degree, gi)[1])
@@ -141,24 +106,11 @@ def _digits(rank: int, radices: list[int]) -> list[int]:
     return digits
 
 
-def _stabiliser(digits: list[int], actions: list[tuple]) -> tuple[dict[int, int], ...] | None:
-    """The automorphisms fixing the rotation system ``digits`` if it is the least of its orbit, else None.
-
-    Product order on systems is the order of their digit lists (each
-    vertex's choices are in lexicographic order), so the image is compared
-    digit by digit, stopping at the first that differs.
-    """
-    fixing = []
-    for sigma, rows in actions:
-        for u, (w, table) in enumerate(rows):
-            e, d = table[digits[w]], digits[u]
-            if e != d:
-                if e < d:
-                    return None
-                break
-        else:
-            fixing.append(sigma)
-    return tuple(fixing)
+def unit_arrays(unit: Unit, max_degree: int) -> Iterator[WorldBatch]:
+    """The unit's orbit representatives as batches of world arrays (:mod:`topomark.proofs.world_batches`),
+    ascending by rank: the worlds :func:`unit_worlds` lists, without a World object per world."""
+    n, gi, c, step = unit
+    return graph_batches(n, max_degree, gi, c, step)
 
 
 def unit_worlds(unit: Unit, max_degree: int) -> Iterator[tuple[int, World, tuple[dict[int, int], ...]]]:
@@ -166,18 +118,21 @@ def unit_worlds(unit: Unit, max_degree: int) -> Iterator[tuple[int, World, tuple
 
     A representative is the least rotation system of its Aut-orbit in
     product order, the one :func:`topomark.proofs.enumerate.embedded_worlds`
-    lists; deciding it needs only the system itself, so a graph's ranks split
-    into units that run anywhere — by residue, not by range, because the
-    representatives crowd at small ranks (``tests/test_census_shards.py`` checks the
-    representatives against ``enumerate._orbit_representatives``).
+    lists; deciding it needs only the system itself
+    (:mod:`topomark.proofs.orbit_kernel`), so a graph's ranks split into
+    units that run anywhere — by residue, not by range, because the
+    representatives crowd at small ranks (``tests/test_census_shards.py``
+    checks the representatives against ``enumerate._orbit_representatives``).
+    The automorphisms of the world (those of the graph fixing its rotation
+    system) come in :func:`~topomark.proofs.world_batches.graph_data`'s
+    order, the identity first.
     """
-    n, gi, c, step = unit
-    choices, radices, actions = _graph_data(n, max_degree, gi)
-    for rank in range(c, math.prod(radices), step):
-        digits = _digits(rank, radices)
-        fixing = _stabiliser(digits, actions)
-        if fixing is not None:
-            yield rank, world_of_rotation(tuple(choices[v][d] for v, d in enumerate(digits))), fixing
+    n, gi = unit[0], unit[1]
+    choices, _, actions = _graph_data(n, max_degree, gi)
+    for batch in unit_arrays(unit, max_degree):
+        for i, digits in enumerate(batch.digits.tolist()):
+            world = world_of_rotation(tuple(choices[v][d] for v, d in enumerate(digits)))
+            yield int(batch.ranks[i]), world, tuple(actions[a][0] for a in batch.stabiliser(i).tolist())
 
 
 def world_at(n: int, max_degree: int, gi: int, rank: int) -> World:

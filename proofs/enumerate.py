@@ -8,11 +8,13 @@ relabelling of its exits; mirror images differ).
 
 * :func:`connected_graphs` lists connected simple graphs up to graph
   isomorphism: networkx's graph atlas for n ≤ 7 and
-  :mod:`topomark.proofs.graphs` (vertex augmentation with a canonical form)
-  for 8 ≤ n ≤ :data:`MAX_VERTICES`.  Decision: the atlas stays for n ≤ 7,
-  although both give the same classes (tests/test_graphs.py), because the
-  atlas fixes the order of graphs and so of worlds, and the census's smallest
-  counterexamples and pinned figures at n ≤ 7 come from that order.
+  :func:`topomark.proofs.geng.graph_classes` (nauty's geng where installed,
+  else :mod:`topomark.proofs.graphs`' vertex augmentation; the same list
+  either way) for 8 ≤ n ≤ :data:`MAX_VERTICES`.  Decision: the atlas stays
+  for n ≤ 7, although all three give the same classes (tests/test_graphs.py,
+  tests/test_geng.py), because the atlas fixes the order of graphs and so of
+  worlds, and the census's smallest counterexamples and pinned figures at
+  n ≤ 7 come from that order.
 * :func:`embedded_worlds` gives, per graph, one rotation system of every orbit
   of the graph's automorphism group acting on its ``∏ (deg v - 1)!`` rotation
   systems — exactly the extended-isomorphism classes on that graph, since
@@ -42,14 +44,14 @@ from typing import Iterator
 import networkx as nx
 from networkx.algorithms.isomorphism import GraphMatcher
 
-from topomark.proofs.graphs import generate
+from topomark.proofs.geng import graph_classes
 from topomark.spec.errors import InvalidInput
 from topomark.spec.signature import signature_at
 from topomark.spec.world import World
 
 __all__ = ["connected_graphs", "rotation_systems", "embedded_worlds", "canonical_form", "count_by_size",
            "ATLAS_MAX_VERTICES", "MAX_VERTICES",
-           "graph_automorphisms", "world_of_rotation"]
+           "graph_automorphisms", "world_of_rotation", "check_bounds"]
 
 ATLAS_MAX_VERTICES = 7
 MAX_VERTICES = 10
@@ -70,7 +72,7 @@ def connected_graphs(n: int, max_degree: int) -> list[nx.Graph]:
         raise InvalidInput(f"graphs are enumerated for 1..{MAX_VERTICES} vertices, not {n}")
     if n <= ATLAS_MAX_VERTICES:
         return _atlas(n, max_degree)
-    return generate(n, max_degree)
+    return [c.graph() for c in graph_classes(n, max_degree)]
 
 
 # -- rotation systems up to automorphism ------------------------------------------
@@ -133,6 +135,14 @@ def world_of_rotation(rot: tuple[tuple[int, ...], ...]) -> World:
     return World({f"v{v}": [f"v{w}" for w in ns] for v, ns in enumerate(rot)})
 
 
+def check_bounds(max_vertices: int, max_degree: int) -> None:
+    """Refuse (bad input) sizes the enumeration does not list."""
+    if max_vertices > MAX_VERTICES:
+        raise InvalidInput(f"worlds are enumerated up to {MAX_VERTICES} vertices, not {max_vertices}")
+    if max_degree < 1:
+        raise InvalidInput(f"max degree must be at least 1, not {max_degree}")
+
+
 def embedded_worlds(max_vertices: int, max_degree: int, min_vertices: int = 2) -> Iterator[World]:
     """Every connected world with ``min_vertices ≤ n ≤ max_vertices`` and degrees ≤ ``max_degree``.
 
@@ -140,10 +150,7 @@ def embedded_worlds(max_vertices: int, max_degree: int, min_vertices: int = 2) -
     in a fixed order (by n, then graph, then rotation system), without markers
     or start.
     """
-    if max_vertices > MAX_VERTICES:
-        raise InvalidInput(f"worlds are enumerated up to {MAX_VERTICES} vertices, not {max_vertices}")
-    if max_degree < 1:
-        raise InvalidInput(f"max degree must be at least 1, not {max_degree}")
+    check_bounds(max_vertices, max_degree)
     for n in range(max(min_vertices, 2), max_vertices + 1):
         for g in connected_graphs(n, max_degree):
             for rot in _orbit_representatives(g):

@@ -20,9 +20,13 @@ with canonical deduplication*:
 * no pruning by automorphisms inside the search: slower than nauty on
   symmetric graphs but simple enough to trust; fine for n ≤ 10.
 
-Why not nauty?  Debian's ``nauty`` is not a Python dependency, and the PyPI
-wheel (``pynauty-prebuilt``) wraps nauty in GPLv3 code while topomark is MIT;
-a pure-Python generator keeps the install as it is.  The counts are checked
+Where nauty's ``geng`` is installed (Debian's ``nauty`` package),
+:mod:`topomark.proofs.geng` lists the graphs with it instead, relabelled by
+:func:`canonical` and sorted by :func:`ordered`, so the list is the same
+tuple either way; this module is the fallback, and the independent side of
+the cross-check.  Why not link nauty?  The PyPI wheel (``pynauty-prebuilt``)
+wraps nauty in GPLv3 code while topomark is MIT; geng runs as a separate
+program, and without it a pure-Python generator keeps the install as it is.  The counts are checked
 against the atlas for n ≤ 7 (tests/test_graphs.py) and against published
 figures:
 
@@ -53,12 +57,13 @@ from __future__ import annotations
 import itertools
 from dataclasses import dataclass
 from functools import lru_cache
+from typing import Iterable
 
 import networkx as nx
 
 from topomark.spec.errors import InvalidInput
 
-__all__ = ["GraphClass", "canonical", "classes", "generate", "count", "automorphisms", "MAX_VERTICES"]
+__all__ = ["GraphClass", "canonical", "classes", "ordered", "generate", "count", "automorphisms", "MAX_VERTICES"]
 
 MAX_VERTICES = 12
 """Largest n :func:`classes` accepts: the pure-Python search is for small graphs (n = 10, D = 4 is 89,402)."""
@@ -215,8 +220,17 @@ def classes(n: int, max_degree: int) -> tuple[GraphClass, ...]:
         for child in _children(parent, max_degree):
             c = canonical(child)
             found.setdefault(c.adjacency, c)
-    return tuple(sorted(found.values(), key=lambda c: (c.edges, sorted(c.degree(v) for v in range(c.n)),
-                                                        c.adjacency)))
+    return ordered(found.values())
+
+
+def ordered(found: Iterable[GraphClass]) -> tuple[GraphClass, ...]:
+    """Classes in the order :func:`classes` lists them: by edges, sorted degree sequence, canonical adjacency.
+
+    The key depends on the class alone (its canonical form), so any generator
+    that finds the same classes lists them in the same order and labelling
+    (:mod:`topomark.proofs.geng` relies on this).
+    """
+    return tuple(sorted(found, key=lambda c: (c.edges, sorted(c.degree(v) for v in range(c.n)), c.adjacency)))
 
 
 def generate(n: int, max_degree: int) -> list[nx.Graph]:
