@@ -49,6 +49,7 @@ import networkx as nx
 import numpy as np
 
 from topomark.proofs.census import machine, marker_key, marker_layouts, minimise
+from topomark.proofs.census_compiled import rotation_records
 from topomark.proofs.census_language import start_digests
 from topomark.proofs.census_integrity import code_version
 from topomark.proofs.census_shards import (combine, digest, done_path, map_path, records, seal, shard_of, write_atomic,
@@ -56,8 +57,8 @@ from topomark.proofs.census_shards import (combine, digest, done_path, map_path,
 from topomark.proofs.enumerate import connected_graphs, graph_automorphisms, world_of_rotation
 from topomark.spec.world import DartMark, World
 
-__all__ = ["Unit", "plan", "estimate", "rotation_count", "run_map", "unit_worlds", "world_at", "world_records",
-           "marked"]
+__all__ = ["Unit", "plan", "estimate", "rotation_count", "run_map", "unit_worlds", "unit_rotations", "world_at",
+           "world_records", "marked"]
 
 Unit = tuple[int, int, int, int]  # (n, graph index, c, C): the ranks c, c + C, c + 2C, ...
 
@@ -171,13 +172,20 @@ def unit_worlds(unit: Unit, max_degree: int) -> Iterator[tuple[int, World, tuple
     representatives crowd at small ranks (``tests/test_census_shards.py`` checks the
     representatives against ``enumerate._orbit_representatives``).
     """
+    for rank, rot, fixing in unit_rotations(unit, max_degree):
+        yield rank, world_of_rotation(rot), fixing
+
+
+def unit_rotations(unit: Unit, max_degree: int) -> Iterator[tuple[int, tuple[tuple[int, ...], ...],
+                                                                  tuple[dict[int, int], ...]]]:
+    """:func:`unit_worlds` with each world as its rotation system (vertex v's neighbours in clockwise order)."""
     n, gi, c, step = unit
     choices, radices, actions = _graph_data(n, max_degree, gi)
     for rank in range(c, math.prod(radices), step):
         digits = _digits(rank, radices)
         fixing = _stabiliser(digits, actions)
         if fixing is not None:
-            yield rank, world_of_rotation(tuple(choices[v][d] for v, d in enumerate(digits))), fixing
+            yield rank, tuple(choices[v][d] for v, d in enumerate(digits)), fixing
 
 
 def world_at(n: int, max_degree: int, gi: int, rank: int) -> World:
@@ -252,15 +260,24 @@ def world_records(class_name: str, world_id: tuple[int, int, int], world: World,
 
 
 def run_map(root: str, task: int, class_name: str, max_degree: int, units: list[Unit],
-            shards: int, census: str = "") -> dict[str, Any]:
+            shards: int, census: str = "", engine: str = "reference") -> dict[str, Any]:
     """Run map task ``task`` of census ``census`` (the manifest's checksum) into directory ``root``; returns
     (and writes) its ``done`` record: ``{"sizes": {n: [worlds, placements]}, "offsets": shard boundaries in its
-    data file}``, with the data's size and checksum (:mod:`topomark.proofs.census_integrity`)."""
+    data file}``, with the data's size and checksum (:mod:`topomark.proofs.census_integrity`).
+
+    ``engine`` is ``"reference"`` (:func:`world_records`) or ``"compiled"``
+    (:mod:`topomark.proofs.census_compiled`, as ``resolve_engine`` chose it): the records are the same."""
     rows: list[tuple] = []
     sizes: dict[int, list[int]] = {}
     for unit in units:
         n, gi = unit[0], unit[1]
         tally = sizes.setdefault(n, [0, 0])
+        if engine == "compiled":
+            worlds, placements = rotation_records(class_name, n, gi, max_degree, unit_rotations(unit, max_degree),
+                                                  rows)
+            tally[0] += worlds
+            tally[1] += placements
+            continue
         for ri, world, autos in unit_worlds(unit, max_degree):
             tally[0] += 1
             tally[1] += world_records(class_name, (n, gi, ri), world, autos, rows)
