@@ -36,6 +36,7 @@ from typing import Callable, Iterable
 import numpy as np
 
 from topomark.proofs import census_kernel as _kernel
+from topomark.proofs import census_moore as _moore
 from topomark.spec.errors import InvalidInput
 
 __all__ = ["ENGINES", "available", "resolve_engine", "arrays_records", "rotation_records"]
@@ -46,7 +47,7 @@ ENGINES = ("reference", "compiled", "auto")
 
 def available() -> bool:
     """Whether numba compiles the kernel here."""
-    return _kernel.COMPILED
+    return _moore.COMPILED
 
 
 def resolve_engine(engine: str, class_name: str, note: Callable[[str], None] | None = None) -> str:
@@ -79,7 +80,7 @@ def arrays_records(class_name: str, world_id: tuple[int, int, int], offsets: np.
                    rows: list[tuple[bytes, int, tuple, bytes]]) -> int:
     """``census_map.world_records`` on a world given as arrays (vertex k named ``v{k}``) with its automorphisms
     as rows of vertex images (the identity first): the same rows, appended to ``rows``; returns the placements."""
-    texts, rank = _kernel.signature_table(max_degree)
+    texts, rank = _moore.signature_table(max_degree)
     codes, ends, iso, nitems, found, placements = _kernel.world_codes(
         offsets, nbr, back, _kernel.CLASS_CODES[class_name], autos, max_degree, texts, rank)
     n, m = len(offsets) - 1, len(nbr) // 2
@@ -109,7 +110,7 @@ def rotation_records(class_name: str, n: int, gi: int, max_degree: int,
         offsets[1:] = np.cumsum([len(ns) for ns in rot])
         nbr = np.fromiter((w for ns in rot for w in ns), np.int32, int(offsets[-1]))
         sigma = np.array([[s[k] for k in range(n)] for s in autos], np.int32)
-        placements += arrays_records(class_name, (n, gi, rank), offsets, nbr, _kernel.back_of(offsets, nbr), sigma,
+        placements += arrays_records(class_name, (n, gi, rank), offsets, nbr, _moore.back_of(offsets, nbr), sigma,
                                      max_degree, rows)
         worlds_seen += 1
     return worlds_seen, placements

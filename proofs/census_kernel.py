@@ -6,17 +6,9 @@ The same computation as :func:`topomark.proofs.census_map.world_records`
 are all vertex markers (``none``, ``undirected-vertex``, ``directional-vertex``,
 ``two-undirected-vertex``, ``three-undirected-vertex``; §3.2–§3.3, §3.7):
 
-* the robot's Moore machine (:mod:`topomark.proofs.census`): state
-  ``s = offsets[v] + entry`` is robot state ``(v, entry)``, the order of
-  ``World.darts``; motion ``l`` leaves through exit ``(entry + l) mod deg``
-  (:func:`topomark.spec.robot.step`);
-* outputs as small ints: ``(deg * 4 + count) * (D + 1) + direction + 1``
-  (direction -1 for none), each int standing for the text
-  ``str(Signature(deg, count, direction))`` of :mod:`topomark.spec.signature`
-  (:func:`signature_table` builds the texts from the spec and their ranks in
-  text order, which the anchors and code comparisons use);
-* Moore equivalence by partition refinement, blocks numbered by first
-  occurrence as :func:`~topomark.proofs.census.minimise` numbers them;
+* the robot's Moore machine, outputs as small ints standing for the
+  signature texts of :mod:`topomark.spec.signature`, and Moore equivalence
+  (:mod:`topomark.proofs.census_moore`);
 * the quotient, its anchors and the least anchored breadth-first code of
   :mod:`topomark.proofs.census_language`, written byte for byte as
   :func:`~topomark.proofs.census_language.anchored_code` writes it (output
@@ -26,166 +18,44 @@ are all vertex markers (``none``, ``undirected-vertex``, ``directional-vertex``,
   the layout's items ``(0, σ(at), count, σ(points_to) or -1)``, sorted
   (``census_map._layout_code``).
 
+The anchors' rarest output breaks ties by the least text and the codes
+compare as bytes, so the kernel compares outputs by their texts' ranks
+(``signature_table``), which is the byte order of the concatenated texts: a
+signature text ends at its only ``]``, so no text is a prefix of another.
+Every anchor's code has as many blocks (the quotient is strongly connected).
+
 The marker layouts of :mod:`topomark.spec.markerclass` are read here as
-arrays (:data:`CLASS_CODES`, :func:`_layout`); ``tests/test_census_kernel.py``
-checks them against :func:`topomark.proofs.census.marker_layouts` and every
-record against the reference on every world of n ≤ 6, D ≤ 4.
+arrays (:data:`CLASS_CODES`, ``_layout``), in ``MarkerClass.placements``
+order; ``tests/test_census_kernel.py`` checks every record (placement
+indices, digests, iso keys) against the reference on every world of n ≤ 6,
+D ≤ 4, so a layout read otherwise than the spec's is a failing test.
 
 Examples
 --------
 >>> import numpy as np
->>> from topomark.proofs.world_arrays import back_links
+>>> from topomark.proofs.census_moore import back_of, signature_table
 >>> offsets, nbr = np.array([0, 2, 4, 6], np.int32), np.array([1, 2, 2, 0, 0, 1], np.int32)
 >>> texts, ranks = signature_table(2)
->>> out = world_codes(offsets, nbr, back_links(offsets, nbr), CLASS_CODES["undirected-vertex"],
-...                   np.zeros((1, 3), np.int32) + np.arange(3, dtype=np.int32), 2, texts, ranks)
->>> int(out[5])  # placements: 3 vertices x 2 facings
-6
+>>> identity = np.arange(3, dtype=np.int32).reshape(1, 3)
+>>> codes, ends, iso, nitems, rows, placements = world_codes(
+...     offsets, nbr, back_of(offsets, nbr), CLASS_CODES["undirected-vertex"], identity, 2, texts, ranks)
+>>> int(placements), len(ends), rows.tolist()  # 3 vertices x 2 facings; a start per layout (both alike)
+(6, 3, [[0, 0, 0], [1, 2, 0], [2, 4, 0]])
+>>> bytes(codes[:ends[0]])[:16]
+b'[2,V,A][2,A,A][2'
 """
 
 from __future__ import annotations
 
-from functools import lru_cache
-
-from typing import Any, Callable
-
 import numpy as np
 
-from topomark.spec.signature import Signature
+from topomark.proofs.census_moore import COMPILED, machine_arrays, njit, outputs, refine
 
-try:
-    from numba import njit
-    COMPILED = True
-    """Whether numba compiles the kernel here (without it the same functions run as Python, slowly)."""
-except ImportError:  # numba is not installed, or not for this platform
-    COMPILED = False
-
-    def njit(*args: Any, **kwargs: Any) -> Callable[[Callable[..., Any]], Callable[..., Any]]:  # type: ignore[no-redef]
-        return lambda f: f
-
-__all__ = ["CLASS_CODES", "COMPILED", "signature_table", "world_codes", "output_id", "back_of"]
+__all__ = ["CLASS_CODES", "COMPILED", "world_codes"]
 
 CLASS_CODES = {"none": 0, "undirected-vertex": 1, "directional-vertex": 2, "two-undirected-vertex": 3,
                "three-undirected-vertex": 4}
 """The marker classes the kernel computes (vertex markers only), by the code :func:`_layout` reads."""
-
-
-def output_id(degree: int, count: int, direction: int, max_degree: int) -> int:
-    """The small int standing for ``Signature(degree, count, direction or None)`` (direction -1: none)."""
-    return (degree * 4 + count) * (max_degree + 1) + direction + 1
-
-
-@lru_cache(maxsize=16)
-def signature_table(max_degree: int) -> tuple[tuple[np.ndarray, np.ndarray], np.ndarray]:
-    """``((text bytes, offsets), rank)`` of every output id up to ``max_degree``: the signature's text
-    (:class:`~topomark.spec.signature.Signature`, UTF-8) and its rank in text order (ids that stand for no
-    signature: empty text, rank -1)."""
-    size = output_id(max_degree, 3, max_degree - 1, max_degree) + 1
-    texts = [b""] * size
-    for d in range(1, max_degree + 1):
-        for count in range(3):
-            for direction in ([-1] if count == 0 else range(-1, d)):
-                sig = Signature(d, count, None if direction < 0 else direction)
-                texts[output_id(d, count, direction, max_degree)] = str(sig).encode()
-    rank = np.full(size, -1, np.int32)
-    real = sorted((t, i) for i, t in enumerate(texts) if t)
-    for r, (_, i) in enumerate(real):
-        rank[i] = r
-    offsets = np.zeros(size + 1, np.int32)
-    offsets[1:] = np.cumsum([len(t) for t in texts])
-    return (np.frombuffer(b"".join(texts), np.uint8).copy(), offsets), rank
-
-
-@njit(cache=True)
-def _machine(offsets, nbr, back, dmax):  # pragma: no cover - compiled
-    """Successor table ``succ[s, l]`` and degree of every state (spec/robot.py ``step``)."""
-    n = offsets.size - 1
-    size = offsets[n]
-    succ = np.zeros((size, dmax), np.int32)
-    deg = np.empty(size, np.int32)
-    for v in range(n):
-        d = offsets[v + 1] - offsets[v]
-        for e in range(d):
-            s = offsets[v] + e
-            deg[s] = d
-            for motion in range(d):
-                x = offsets[v] + (e + motion) % d
-                succ[s, motion] = offsets[nbr[x]] + back[x]
-    return succ, deg
-
-
-@njit(cache=True)
-def _outputs(offsets, marks, nmarks, width):  # pragma: no cover - compiled
-    """The output id of every state of the world carrying ``marks[:nmarks]`` = (vertex, count, head exit)."""
-    n = offsets.size - 1
-    out = np.empty(offsets[n], np.int32)
-    for v in range(n):
-        d = offsets[v + 1] - offsets[v]
-        count, head = 0, -1
-        for r in range(nmarks):
-            if marks[r, 0] == v:
-                count, head = marks[r, 1], marks[r, 2]
-        for e in range(d):
-            direction = -1 if head < 0 else (head - e) % d
-            out[offsets[v] + e] = (d * 4 + count) * width + direction + 1
-    return out
-
-
-@njit(cache=True)
-def _number(keys, width, block, rep, table):  # pragma: no cover - compiled
-    """Blocks of equal key rows ``keys[s, :width]``, numbered by first occurrence; returns their count."""
-    size = keys.shape[0]
-    mask = table.size - 1
-    table[:] = -1
-    count = 0
-    for s in range(size):
-        h = 0
-        for j in range(width):
-            h = h * 1000003 + keys[s, j] + 2  # int64, wrapping: only a slot to start probing from
-        slot = (h ^ (h >> 17)) & mask
-        while True:
-            b = table[slot]
-            if b < 0:
-                table[slot] = count
-                rep[count] = s
-                block[s] = count
-                count += 1
-                break
-            r = rep[b]
-            same = True
-            for j in range(width):
-                if keys[r, j] != keys[s, j]:
-                    same = False
-                    break
-            if same:
-                block[s] = b
-                break
-            slot = (slot + 1) & mask
-    return count
-
-
-@njit(cache=True)
-def _refine(out, succ, deg):  # pragma: no cover - compiled
-    """Moore equivalence (``census.minimise``): ``(block, representative of each block, block count)``."""
-    size, dmax = succ.shape
-    keys = np.full((size, dmax + 1), -1, np.int64)
-    keys[:, 0] = out
-    block = np.empty(size, np.int32)
-    rep = np.empty(size, np.int32)
-    tsize = 4
-    while tsize < 2 * size:
-        tsize *= 2
-    table = np.empty(tsize, np.int32)
-    count = _number(keys, 1, block, rep, table)
-    while True:
-        for s in range(size):
-            keys[s, 0] = block[s]
-            for motion in range(deg[s]):
-                keys[s, motion + 1] = block[succ[s, motion]]
-        new = _number(keys, dmax + 1, block, rep, table)
-        if new == count:
-            return block, rep, count
-        count = new
 
 
 @njit(cache=True)
@@ -363,8 +233,8 @@ def _same_key(keys, nkeys, q, marks, k):  # pragma: no cover - compiled
 @njit(cache=True)
 def _key_code(offsets, succ, deg, marks, k, width, rank, text, toff, buf, at):  # pragma: no cover - compiled
     """Machine, refinement, least code of one layout: writes the code at ``buf[at:]``; (end, block, x)."""
-    out = _outputs(offsets, marks, k, width)
-    block, rep, q = _refine(out, succ, deg)
+    out = outputs(offsets, marks, k, width)
+    block, rep, q = refine(out, succ, deg)
     qsucc, qdeg, qout = _quotient(out, succ, deg, block, rep, q)
     order, flat, f, x = _least_code(qsucc, qdeg, qout, rank)
     return _write_code(buf, at, qout, order, flat, f, text, toff), block, x
@@ -382,7 +252,7 @@ def world_codes(offsets, nbr, back, cls, autos, max_degree, texts, rank):  # pra
     text, toff = texts
     n = offsets.size - 1
     size = offsets[n]
-    succ, deg = _machine(offsets, nbr, back, max_degree)
+    succ, deg = machine_arrays(offsets, nbr, back, max_degree)
     width = max_degree + 1
     layouts = max(n, size)
     keys, nkeys = np.empty((layouts, 2, 3), np.int32), np.zeros(layouts, np.int32)
@@ -423,16 +293,3 @@ def world_codes(offsets, nbr, back, cls, autos, max_degree, texts, rank):  # pra
                     nrows += 1
             placements += d
     return codes[:at], code_ends[:nq], iso[:nq], nkeys[:nq], rows[:nrows], placements
-
-
-@njit(cache=True)
-def back_of(offsets, nbr):  # pragma: no cover - compiled
-    """``back`` of :mod:`topomark.proofs.world_arrays` (``back_links``), compiled: the entry of every dart."""
-    back = np.empty(nbr.size, np.int32)
-    for k in range(offsets.size - 1):
-        for x in range(offsets[k], offsets[k + 1]):
-            w = nbr[x]
-            for y in range(offsets[w], offsets[w + 1]):
-                if nbr[y] == k:
-                    back[x] = y - offsets[w]
-    return back
