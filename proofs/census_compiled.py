@@ -13,11 +13,12 @@ kernel covers the marker classes with vertex markers only
 others, and every class when numba is not installed, on the reference engine
 (the latter with a one-line notice); ``compiled`` refuses them (exit 2).
 
-This module hashes what the kernel writes: the least anchored code's
-BLAKE2b head and every start's digest as
-:func:`~topomark.proofs.census_language.start_digests` does, and the iso key
-as ``census_map._iso_key`` does.  :func:`arrays_records` takes a world as
-arrays, so an enumerator that yields arrays plugs in without building a
+The kernel hashes as the reference does (the least anchored code's BLAKE2b
+head and every start's digest as
+:func:`~topomark.proofs.census_language.start_digests` does, the iso key as
+``census_map._iso_key`` does; :mod:`topomark.proofs.blake2b_compiled`); this
+module turns its digests into records.  :func:`arrays_records` takes a world
+as arrays, so an enumerator that yields arrays plugs in without building a
 :class:`~topomark.spec.world.World`.
 
 Examples
@@ -30,16 +31,16 @@ Examples
 
 from __future__ import annotations
 
-import hashlib
 from typing import Callable, Iterable
 
 import numpy as np
 
 from topomark.proofs import census_kernel as _kernel
 from topomark.proofs import census_moore as _moore
+from topomark.proofs.census_shards import RECORD
 from topomark.spec.errors import InvalidInput
 
-__all__ = ["ENGINES", "available", "resolve_engine", "arrays_records", "rotation_records"]
+__all__ = ["ENGINES", "available", "resolve_engine", "arrays_records", "rotation_records", "warm_up"]
 
 ENGINES = ("reference", "compiled", "auto")
 
@@ -76,41 +77,56 @@ def resolve_engine(engine: str, class_name: str, note: Callable[[str], None] | N
 
 
 def arrays_records(class_name: str, world_id: tuple[int, int, int], offsets: np.ndarray, nbr: np.ndarray,
-                   back: np.ndarray, autos: np.ndarray, max_degree: int,
-                   rows: list[tuple[bytes, int, tuple, bytes]]) -> int:
+                   back: np.ndarray, autos: np.ndarray, max_degree: int) -> tuple[np.ndarray, int]:
     """``census_map.world_records`` on a world given as arrays (vertex k named ``v{k}``) with its automorphisms
-    as rows of vertex images (the identity first): the same rows, appended to ``rows``; returns the placements."""
+    as rows of vertex images (the identity first): its records (:data:`~topomark.proofs.census_shards.RECORD`,
+    in the reference's order) and its placements."""
+    digests, placements = _digests(class_name, world_id, offsets, nbr, back, autos, max_degree)
+    return _records([(digests, len(offsets) - 1, len(nbr) // 2, world_id[1], world_id[2])]), placements
+
+
+def _digests(class_name: str, world_id: tuple[int, int, int], offsets: np.ndarray, nbr: np.ndarray,
+             back: np.ndarray, autos: np.ndarray, max_degree: int) -> tuple[np.ndarray, int]:
     texts, rank = _moore.signature_table(max_degree)
-    codes, ends, iso, nitems, found, placements = _kernel.world_codes(
-        offsets, nbr, back, _kernel.CLASS_CODES[class_name], autos, max_degree, texts, rank)
-    n, m = len(offsets) - 1, len(nbr) // 2
-    heads, isos, start = [], [], 0
-    for q, end in enumerate(ends.tolist()):
-        heads.append(hashlib.blake2b(hashlib.blake2b(codes[start:end], digest_size=16).digest(),
-                                     digest_size=16))
-        items = tuple(map(tuple, iso[q, :nitems[q]].tolist()))
-        isos.append(hashlib.blake2b(repr((world_id, items)).encode(), digest_size=16).digest())
-        start = end
-    mask = 1 << n
-    for q, k, x in found.tolist():
-        h = heads[q].copy()
-        h.update(x.to_bytes(4, "little"))
-        rows.append((h.digest(), mask, (n, m, world_id[1], world_id[2], k), isos[q]))
-    return int(placements)
+    digests, placements = _kernel.world_digests(offsets, nbr, back, _kernel.CLASS_CODES[class_name], autos,
+                                                max_degree, texts, rank, np.array(world_id, np.int64))
+    return digests, int(placements)
+
+
+def _records(parts: list[tuple[np.ndarray, int, int, int, int]]) -> np.ndarray:
+    """One record array of ``(digests (R, 5), n, m, gi, ri)`` per world: (d0, d1, k, i0, i1) and the world."""
+    if not parts:
+        return np.zeros(0, RECORD)
+    digests = np.concatenate([p[0] for p in parts])
+    counts = [len(p[0]) for p in parts]
+    out = np.zeros(len(digests), RECORD)
+    for j, name in enumerate(("d0", "d1", "k", "i0", "i1")):
+        out[name] = digests[:, j]
+    for j, name in ((1, "n"), (2, "m"), (3, "gi"), (4, "ri")):
+        out[name] = np.repeat([p[j] for p in parts], counts)
+    out["mask"] = np.uint32(1) << out["n"].astype(np.uint32)
+    return out
 
 
 def rotation_records(class_name: str, n: int, gi: int, max_degree: int,
-                     worlds: Iterable[tuple[int, tuple[tuple[int, ...], ...], tuple[dict[int, int], ...]]],
-                     rows: list[tuple[bytes, int, tuple, bytes]]) -> tuple[int, int]:
+                     worlds: Iterable[tuple[int, tuple[tuple[int, ...], ...], tuple[dict[int, int], ...]]]
+                     ) -> tuple[np.ndarray, int, int]:
     """:func:`arrays_records` for ``(rank, rotation system, automorphisms)`` of graph ``gi``
-    (``census_map.unit_rotations``); returns ``(worlds, placements)``."""
-    worlds_seen = placements = 0
+    (``census_map.unit_rotations``); returns ``(records, worlds, placements)``."""
+    parts = []
+    placements = 0
     offsets = np.zeros(n + 1, np.int32)
     for rank, rot, autos in worlds:
         offsets[1:] = np.cumsum([len(ns) for ns in rot])
         nbr = np.fromiter((w for ns in rot for w in ns), np.int32, int(offsets[-1]))
         sigma = np.array([[s[k] for k in range(n)] for s in autos], np.int32)
-        placements += arrays_records(class_name, (n, gi, rank), offsets, nbr, _moore.back_of(offsets, nbr), sigma,
-                                     max_degree, rows)
-        worlds_seen += 1
-    return worlds_seen, placements
+        digests, count = _digests(class_name, (n, gi, rank), offsets, nbr, _moore.back_of(offsets, nbr), sigma,
+                                  max_degree)
+        parts.append((digests, n, len(nbr) // 2, gi, rank))
+        placements += count
+    return _records(parts), len(parts), placements
+
+
+def warm_up() -> None:
+    """Compile the kernel (or load it from numba's cache) by running it on the one-edge world."""
+    rotation_records("directional-vertex", 2, 0, 1, [(0, ((1,), (0,)), ({0: 0, 1: 1},))])

@@ -53,6 +53,7 @@ __all__ = ["Damaged", "code_version", "package_version", "read_record", "read_re
 
 CODE_MODULES = ("topomark.proofs.census", "topomark.proofs.census_map", "topomark.proofs.census_language",
                 "topomark.proofs.census_kernel", "topomark.proofs.census_moore", "topomark.proofs.census_compiled",
+                "topomark.proofs.blake2b_compiled",
                 "topomark.proofs.census_shards", "topomark.proofs.enumerate", "topomark.spec.world",
                 "topomark.spec.markerclass", "topomark.spec.robot")
 """The modules whose code decides what a map task writes: a change to any makes earlier shards another code's."""

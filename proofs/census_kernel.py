@@ -49,9 +49,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from topomark.proofs.blake2b_compiled import blake2b16
 from topomark.proofs.census_moore import COMPILED, machine_arrays, njit, outputs, refine
 
-__all__ = ["CLASS_CODES", "COMPILED", "world_codes"]
+__all__ = ["CLASS_CODES", "COMPILED", "world_codes", "world_digests"]
 
 CLASS_CODES = {"none": 0, "undirected-vertex": 1, "directional-vertex": 2, "two-undirected-vertex": 3,
                "three-undirected-vertex": 4}
@@ -293,3 +294,70 @@ def world_codes(offsets, nbr, back, cls, autos, max_degree, texts, rank):  # pra
                     nrows += 1
             placements += d
     return codes[:at], code_ends[:nq], iso[:nq], nkeys[:nq], rows[:nrows], placements
+
+
+@njit(cache=True)
+def _put(buf, at, text):  # pragma: no cover - compiled
+    for c in text:
+        buf[at] = ord(c)
+        at += 1
+    return at
+
+
+@njit(cache=True)
+def _put_int(buf, at, x):  # pragma: no cover - compiled
+    """``str(x)`` in ASCII at ``buf[at:]``."""
+    if x < 0:
+        buf[at] = 45  # "-"
+        at, x = at + 1, -x
+    digits = 1
+    while x >= 10 ** digits:
+        digits += 1
+    for j in range(digits - 1, -1, -1):
+        buf[at + j] = 48 + x % 10
+        x //= 10
+    return at + digits
+
+
+@njit(cache=True)
+def _iso_repr(buf, world_id, items, k):  # pragma: no cover - compiled
+    """``repr((world_id, tuple of the k items))`` (``census_map._iso_key``'s text) in ``buf``; its length."""
+    at = _put(buf, 0, "((")
+    for j in range(3):
+        at = _put_int(buf, at, world_id[j])
+        at = _put(buf, at, ", " if j < 2 else "), (")
+    for r in range(k):
+        at = _put(buf, at, "(" if r == 0 else ", (")
+        for j in range(4):
+            at = _put_int(buf, at, items[r, j])
+            at = _put(buf, at, ", " if j < 3 else ")")
+    return _put(buf, at, ",))" if k == 1 else "))")
+
+
+@njit(cache=True)
+def world_digests(offsets, nbr, back, cls, autos, max_degree, texts, rank, world_id):  # pragma: no cover
+    """:func:`world_codes` hashed: per record ``(d0, d1, k, i0, i1)`` — the language digest
+    (``census_language.start_digests``), the placement index and the iso key (``census_map._iso_key``) as
+    little-endian words — as an ``(R, 5)`` uint64 array, and the placements."""
+    codes, ends, iso, nitems, rows, placements = world_codes(offsets, nbr, back, cls, autos, max_degree, texts,
+                                                             rank)
+    q = ends.size
+    heads, isos = np.empty((q, 2), np.uint64), np.empty((q, 2), np.uint64)
+    text = np.empty(128, np.uint8)
+    start = 0
+    for j in range(q):
+        heads[j, 0], heads[j, 1] = blake2b16(codes, start, ends[j])
+        isos[j, 0], isos[j, 1] = blake2b16(text, 0, _iso_repr(text, world_id, iso[j], nitems[j]))
+        start = ends[j]
+    out = np.empty((rows.shape[0], 5), np.uint64)
+    msg = np.empty(20, np.uint8)
+    for r in range(rows.shape[0]):
+        j, x = rows[r, 0], rows[r, 2]
+        for b in range(16):
+            msg[b] = (heads[j, b >> 3] >> np.uint64(8 * (b & 7))) & np.uint64(255)
+        for b in range(4):
+            msg[16 + b] = (x >> (8 * b)) & 255
+        out[r, 0], out[r, 1] = blake2b16(msg, 0, 20)
+        out[r, 2] = rows[r, 1]
+        out[r, 3], out[r, 4] = isos[j, 0], isos[j, 1]
+    return out, placements

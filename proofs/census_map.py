@@ -268,20 +268,22 @@ def run_map(root: str, task: int, class_name: str, max_degree: int, units: list[
     ``engine`` is ``"reference"`` (:func:`world_records`) or ``"compiled"``
     (:mod:`topomark.proofs.census_compiled`, as ``resolve_engine`` chose it): the records are the same."""
     rows: list[tuple] = []
+    compiled: list[np.ndarray] = []
     sizes: dict[int, list[int]] = {}
     for unit in units:
         n, gi = unit[0], unit[1]
         tally = sizes.setdefault(n, [0, 0])
         if engine == "compiled":
-            worlds, placements = rotation_records(class_name, n, gi, max_degree, unit_rotations(unit, max_degree),
-                                                  rows)
+            recs, worlds, placements = rotation_records(class_name, n, gi, max_degree,
+                                                        unit_rotations(unit, max_degree))
+            compiled.append(combine(recs))  # combine is associative: per unit, the task holds fewer records
             tally[0] += worlds
             tally[1] += placements
             continue
         for ri, world, autos in unit_worlds(unit, max_degree):
             tally[0] += 1
             tally[1] += world_records(class_name, (n, gi, ri), world, autos, rows)
-    recs = combine(records(rows))
+    recs = combine(np.concatenate([records(rows), *compiled]))
     where = shard_of(recs, shards)
     order = np.argsort(where, kind="stable")
     bounds = np.searchsorted(where[order], np.arange(shards + 1))
