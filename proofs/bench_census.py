@@ -11,7 +11,8 @@ worker's peak RSS, as JSON lines on standard output.
 
 Example (the figures of docs/census.md)::
 
-    python -m topomark.proofs.bench_census directional-vertex 4 14 /tmp/slice-dv
+    python -m topomark.proofs.bench_census directional-vertex 4 14 /tmp/slice-dv --engine reference
+    python -m topomark.proofs.bench_census directional-vertex 4 14 /tmp/slice-dv-c --engine compiled
 """
 import argparse
 import json
@@ -22,6 +23,7 @@ import sys
 import time
 from pathlib import Path
 
+from topomark.proofs.census_compiled import resolve_engine, warm_up
 from topomark.proofs.census_map import plan, run_map
 from topomark.proofs.census_run import default_shards, reduce_shard
 from topomark.proofs.census_shards import RECORD, map_path
@@ -29,10 +31,10 @@ from topomark.proofs.census_shards import RECORD, map_path
 __all__ = ["timed_map", "timed_reduce", "main"]
 
 
-def timed_map(root, t, cls, units, shards):
+def timed_map(root, t, cls, units, shards, engine="reference"):
     """census_map.run_map of one task, with its CPU time, wall time, sizes and the worker's peak RSS."""
     c0, w0 = time.process_time(), time.perf_counter()
-    res = run_map(root, t, cls, 4, units, shards)
+    res = run_map(root, t, cls, 4, units, shards, engine=engine)
     recs = os.path.getsize(map_path(Path(root), t)) // RECORD.itemsize
     return {"task": t, "cpu": time.process_time() - c0, "wall": time.perf_counter() - w0,
             "worlds": sum(w for w, _ in res["sizes"].values()),
@@ -55,20 +57,24 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("k", metavar="K", type=int, help="how many n = 8 map tasks to sample")
     ap.add_argument("seed", metavar="SEED", type=int, help="seed of the sample")
     ap.add_argument("root", metavar="DIR", help="where the slice's shard files are written")
+    ap.add_argument("--engine", default="auto", help="reference, compiled or auto (census_compiled.resolve_engine)")
     args = ap.parse_args(argv)
     cls, k, seed, root = args.cls, args.k, args.seed, args.root
+    engine = resolve_engine(args.engine, cls, lambda line: print(line, file=sys.stderr))
     os.makedirs(root, exist_ok=True)
     t0 = time.perf_counter()
     tasks = plan(8, 4, 8, 2000)
     shards = default_shards(sum(e for t in plan(8, 4, 2, 2000) for _, e in t))
     pick = sorted(random.Random(seed).sample(range(len(tasks)), k))
-    print(json.dumps({"class": cls, "tasks_n8": len(tasks), "shards": shards, "picked": pick,
+    print(json.dumps({"class": cls, "engine": engine, "tasks_n8": len(tasks), "shards": shards, "picked": pick,
                       "est_worlds_n8": sum(e for t in tasks for _, e in t),
                       "plan_s": round(time.perf_counter() - t0, 1)}), flush=True)
     import distributed
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, dashboard_address=None) as cluster, \
             distributed.Client(cluster) as client:
-        futs = [client.submit(timed_map, root, i, cls, [tuple(u) for u, _ in tasks[t]], shards, pure=False)
+        if engine == "compiled":
+            client.run(warm_up)
+        futs = [client.submit(timed_map, root, i, cls, [tuple(u) for u, _ in tasks[t]], shards, engine, pure=False)
                 for i, t in enumerate(pick)]
         done = [f.result() for f in futs]
         for d, t in zip(done, pick):

@@ -63,6 +63,8 @@ MAX_RECORD_BYTES = 64 << 20
 """The largest manifest or record read back (64 MiB): a larger file is no record this format writes."""
 
 CODE_MODULES = ("topomark.proofs.census", "topomark.proofs.census_map", "topomark.proofs.census_language",
+                "topomark.proofs.census_kernel", "topomark.proofs.census_moore", "topomark.proofs.census_compiled",
+                "topomark.proofs.blake2b_compiled",
                 "topomark.proofs.census_shards", "topomark.proofs.enumerate", "topomark.spec.world",
                 "topomark.spec.markerclass", "topomark.spec.robot")
 """The modules whose code decides what a map task writes: a change to any makes earlier shards another code's."""

@@ -47,6 +47,7 @@ import networkx as nx
 import numpy as np
 
 from topomark.proofs.census import machine, marker_key, marker_layouts, minimise
+from topomark.proofs.census_compiled import rotation_records
 from topomark.proofs.census_language import start_digests
 from topomark.proofs.census_integrity import code_version
 from topomark.proofs.census_shards import (combine, digest, done_path, map_path, records, seal, shard_of, write_atomic,
@@ -58,9 +59,8 @@ from topomark.proofs.world_batches import graph_data as _graph_data
 from topomark.proofs.world_batches import graphs_of as _graphs
 from topomark.spec.world import DartMark, World
 
-__all__ = ["Unit", "plan", "estimate", "rotation_count", "map_task", "run_map", "unit_arrays", "unit_worlds", "world_at",
-           "world_records",
-           "marked"]
+__all__ = ["Unit", "plan", "estimate", "rotation_count", "map_task", "run_map", "unit_arrays", "unit_worlds",
+           "unit_rotations", "world_at", "world_records", "marked"]
 
 Unit = tuple[int, int, int, int]  # (n, graph index, c, C): the ranks c, c + C, c + 2C, ...
 
@@ -127,12 +127,19 @@ def unit_worlds(unit: Unit, max_degree: int) -> Iterator[tuple[int, World, tuple
     system) come in :func:`~topomark.proofs.world_batches.graph_data`'s
     order, the identity first.
     """
+    for rank, rot, fixing in unit_rotations(unit, max_degree):
+        yield rank, world_of_rotation(rot), fixing
+
+
+def unit_rotations(unit: Unit, max_degree: int) -> Iterator[tuple[int, tuple[tuple[int, ...], ...],
+                                                                  tuple[dict[int, int], ...]]]:
+    """:func:`unit_worlds` with each world as its rotation system (vertex v's neighbours in clockwise order)."""
     n, gi = unit[0], unit[1]
     choices, _, actions = _graph_data(n, max_degree, gi)
     for batch in unit_arrays(unit, max_degree):
         for i, digits in enumerate(batch.digits.tolist()):
-            world = world_of_rotation(tuple(choices[v][d] for v, d in enumerate(digits)))
-            yield int(batch.ranks[i]), world, tuple(actions[a][0] for a in batch.stabiliser(i).tolist())
+            yield (int(batch.ranks[i]), tuple(choices[v][d] for v, d in enumerate(digits)),
+                   tuple(actions[a][0] for a in batch.stabiliser(i).tolist()))
 
 
 def world_at(n: int, max_degree: int, gi: int, rank: int) -> World:
@@ -207,19 +214,30 @@ def world_records(class_name: str, world_id: tuple[int, int, int], world: World,
 
 
 def map_task(task: int, class_name: str, max_degree: int, units: list[Unit], shards: int,
-             census: str = "") -> tuple[bytes, dict[str, Any]]:
+             census: str = "", engine: str = "reference") -> tuple[bytes, dict[str, Any]]:
     """Map task ``task`` of census ``census`` (the manifest's checksum) computed, nothing written: its data
     file's bytes and its sealed ``done`` record (``{"sizes": {n: [worlds, placements]}, "offsets": shard
-    boundaries in the data}``, with the data's size and checksum, :mod:`topomark.proofs.census_integrity`)."""
+    boundaries in the data}``, with the data's size and checksum, :mod:`topomark.proofs.census_integrity`).
+
+    ``engine`` is ``"reference"`` (:func:`world_records`) or ``"compiled"``
+    (:mod:`topomark.proofs.census_compiled`, as ``resolve_engine`` chose it): the records are the same."""
     rows: list[tuple] = []
+    compiled: list[np.ndarray] = []
     sizes: dict[int, list[int]] = {}
     for unit in units:
         n, gi = unit[0], unit[1]
         tally = sizes.setdefault(n, [0, 0])
+        if engine == "compiled":
+            recs, worlds, placements = rotation_records(class_name, n, gi, max_degree,
+                                                        unit_rotations(unit, max_degree))
+            compiled.append(recs)
+            tally[0] += worlds
+            tally[1] += placements
+            continue
         for ri, world, autos in unit_worlds(unit, max_degree):
             tally[0] += 1
             tally[1] += world_records(class_name, (n, gi, ri), world, autos, rows)
-    recs = combine(records(rows))
+    recs = combine(np.concatenate([records(rows), *compiled]))
     where = shard_of(recs, shards)
     order = np.argsort(where, kind="stable")
     bounds = np.searchsorted(where[order], np.arange(shards + 1))
@@ -230,10 +248,10 @@ def map_task(task: int, class_name: str, max_degree: int, units: list[Unit], sha
 
 
 def run_map(root: str, task: int, class_name: str, max_degree: int, units: list[Unit],
-            shards: int, census: str = "") -> dict[str, Any]:
+            shards: int, census: str = "", engine: str = "reference") -> dict[str, Any]:
     """Run map task ``task`` (:func:`map_task`) into directory ``root``: the data file, then the ``done``
     record, which it returns."""
-    data, result = map_task(task, class_name, max_degree, units, shards, census)
+    data, result = map_task(task, class_name, max_degree, units, shards, census, engine)
     path = Path(root)
     write_atomic(map_path(path, task), data)
     write_json(done_path(path, task), result)

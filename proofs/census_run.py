@@ -45,6 +45,7 @@ from pathlib import Path
 from typing import Any, Callable
 
 from topomark.proofs.census import CensusResult, SizeRow, recheck_pair, stderr_progress
+from topomark.proofs.census_compiled import resolve_engine
 from topomark.proofs.census_exec import Executor, Progress, executor
 from topomark.proofs.census_map import plan, run_map, world_at
 from topomark.proofs.census_recheck import recheck_resumed
@@ -166,7 +167,7 @@ def _verified_done(root: Path, manifest: dict[str, Any], note: Callable[[str], N
 
 
 def _map_phase(ex: Executor, root: Path, manifest: dict[str, Any], progress: Progress,
-               note: Callable[[str], None]) -> tuple[list[dict[str, Any]], set[int]]:
+               note: Callable[[str], None], engine: str) -> tuple[list[dict[str, Any]], set[int]]:
     """Every map task's record, and the tasks kept from an earlier run (not computed now)."""
     p = manifest["params"]
     done = _verified_done(root, manifest, note)
@@ -178,8 +179,8 @@ def _map_phase(ex: Executor, root: Path, manifest: dict[str, Any], progress: Pro
             progress.skip(est, sum(w for w, _ in done[t]["sizes"].values()))
         else:
             todo.append((t, est, [tuple(u) for u, _ in task]))
-    calls = [(run_map, (str(root), t, p["marker"], p["max_degree"], units, manifest["shards"], manifest["checksum"]))
-             for t, _, units in todo]
+    calls = [(run_map, (str(root), t, p["marker"], p["max_degree"], units, manifest["shards"], manifest["checksum"],
+                        engine)) for t, _, units in todo]
     for i, result in ex.run(calls):
         t = todo[i][0]
         try:  # what a worker wrote, checked as a resume would check it
@@ -238,7 +239,8 @@ def sharded_census(class_name: str, max_vertices: int, max_degree: int, root: st
                    jobs: int = 1, scheduler: str | None = None, min_vertices: int = 2,
                    progress: Callable[[str], None] | None = None, task_worlds: int = 2000,
                    shards: int | None = None, verify_all: bool = False,
-                   note: Callable[[str], None] = stderr_progress, recheck_seed: int | None = None) -> CensusResult:
+                   note: Callable[[str], None] = stderr_progress, recheck_seed: int | None = None,
+                   engine: str = "auto") -> CensusResult:
     """The census of ``class_name`` as map and reduce over shards in directory ``root`` (resumed if present).
 
     ``jobs`` local worker processes (1: inline), or ``scheduler``: a Dask
@@ -250,9 +252,13 @@ def sharded_census(class_name: str, max_vertices: int, max_degree: int, root: st
     verdict rests on, are computed again and compared (:mod:`~topomark.proofs.census_recheck`, seeded by
     ``recheck_seed``, drawn afresh if None).
     ``task_worlds`` and ``shards`` apply to a new directory; a resume keeps
-    the manifest's.
+    the manifest's.  ``engine`` (``reference``, ``compiled`` or ``auto``,
+    :func:`~topomark.proofs.census_compiled.resolve_engine`) computes the map
+    tasks; the engines write the same records, so it is not a census
+    parameter: a census resumes on either.
     """
     marker_class(class_name)
+    engine = resolve_engine(engine, class_name, note)
     t0 = time.perf_counter()
     min_n = max(min_vertices, 2)
     params = {"marker": class_name, "max_vertices": max_vertices, "max_degree": max_degree,
@@ -261,7 +267,7 @@ def sharded_census(class_name: str, max_vertices: int, max_degree: int, root: st
     manifest = prepare(path, params, task_worlds, shards)
     with executor(jobs, scheduler, tasks=max(len(manifest["tasks"]), manifest["shards"])) as ex:
         bar = Progress(manifest["estimated_worlds"], progress)
-        done, kept_tasks = _map_phase(ex, path, manifest, bar, note)
+        done, kept_tasks = _map_phase(ex, path, manifest, bar, note, engine)
         bar.finish()
         parts, kept_shards = _reduce_phase(ex, path, manifest, done, verify_all, note)
     total = merge_summaries(parts)

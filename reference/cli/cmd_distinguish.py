@@ -8,7 +8,8 @@ Their options are :mod:`topomark.reference.cli.options.distinguish`'s; this modu
 * ``census --marker CLASS --max-vertices N --max-degree D``: the language
   census of :mod:`topomark.proofs.census`, run as map and reduce over shards
   on disk (:mod:`topomark.proofs.census_run`; ``--jobs``, ``--shards DIR`` to
-  keep and resume them, ``--scheduler`` for Dask); exit 0 when the class has no
+  keep and resume them, ``--scheduler`` for Dask, ``--engine`` for the
+  compiled or the reference map: :mod:`topomark.proofs.census_compiled`); exit 0 when the class has no
   counterexample up to N, 1 when it has one (printed with the smallest pair).
 """
 
@@ -21,6 +22,7 @@ from typing import Any, cast
 
 from topomark.proofs.bisim import bisimulation, check_relation, distinguishing_sequence
 from topomark.proofs.census import CensusResult, stderr_progress
+from topomark.proofs.census_compiled import resolve_engine
 from topomark.proofs.census_run import sharded_census
 from topomark.proofs.enumerate import MAX_VERTICES
 from topomark.reference.cli.args import check_jobs, check_max_degree
@@ -88,6 +90,7 @@ def _validate(args: argparse.Namespace) -> None:
     if refusal:
         raise InvalidInput(refusal)
     check_jobs(args.jobs)
+    resolve_engine(args.engine, args.marker)  # an unknown or unusable engine is exit 2 before work
     named_path(args.shards, "--shards")  # resumed, not claimed: a census's shards are reused on purpose
 
 
@@ -114,11 +117,11 @@ def census_command(args: argparse.Namespace) -> int:
     progress = None if args.quiet else stderr_progress
     if args.shards is not None:
         result = sharded_census(args.marker, args.max_vertices, args.max_degree, args.shards, jobs=args.jobs,
-                                scheduler=args.scheduler, progress=progress)
+                                scheduler=args.scheduler, progress=progress, engine=args.engine)
     else:
         with tempfile.TemporaryDirectory(prefix="topomark-census-") as root:
             result = sharded_census(args.marker, args.max_vertices, args.max_degree, root, jobs=args.jobs,
-                                    scheduler=args.scheduler, progress=progress)
+                                    scheduler=args.scheduler, progress=progress, engine=args.engine)
     pair = result.smallest_counterexample
     data = {"marker": result.marker, "max_vertices": result.max_vertices, "max_degree": result.max_degree,
             "rows": [r.to_json() for r in result.rows], "languages": result.languages,
