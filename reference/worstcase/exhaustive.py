@@ -38,6 +38,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from topomark.proofs.census_map import Unit, unit_worlds
+from topomark.proofs.start_orbits import start_darts
 from topomark.spec.errors import InvalidInput
 from topomark.spec.world import Start, World
 
@@ -70,24 +71,6 @@ class Setup:
     def to_json(self) -> dict[str, Any]:
         return {"algorithm": self.algorithm, "lighthouse": self.lighthouse, "policies": list(self.policies),
                 "sample": self.sample, "seed": self.seed}
-
-
-def _image(world: World, sigma: dict[int, int], v: str, i: int) -> tuple[int, int]:
-    """The dart (v, i) moved by the automorphism ``sigma`` (vertex numbers of ``v0, v1, …``)."""
-    w = world.neighbour(v, i)
-    sv, sw = f"v{sigma[int(v[1:])]}", f"v{sigma[int(w[1:])]}"
-    return int(sv[1:]), world.index(sv, sw)
-
-
-def start_darts(world: World, autos: tuple[dict[int, int], ...]) -> list[tuple[str, int]]:
-    """The least dart of each orbit of the world's automorphisms ``autos`` (identity included) on its darts."""
-    out = []
-    for v in world.vertices:
-        for i in range(world.degree(v)):
-            here = (int(v[1:]), i)
-            if all(_image(world, sigma, v, i) >= here for sigma in autos):
-                out.append((v, i))
-    return out
 
 
 def sampled(setup: Setup, n: int, witness: Witness) -> bool:

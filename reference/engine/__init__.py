@@ -1,0 +1,59 @@
+"""The engine: compiled unchecked runs of Algorithm 3.1, agreeing exactly with the reference (thesis §3.3, §7.2).
+
+The exhaustive worst case (§7.2, ``topomark worst-case``) runs Algorithm 3.1
+unchecked from every start of every small world; the reference explorer is
+written for checking, not speed.  The engine runs the same algorithm compiled
+by numba — the robot (:mod:`.robot`: the world's arrays, the only engine code
+that reads them), the explorer's map (:mod:`.mapstate`) and the loop
+(:mod:`.algorithm31`), driven per world by :mod:`.runs` — and must agree with
+the reference exactly: same claim, cost, split by purpose, marker operations,
+counts and trace digest (:mod:`.digest`), which :mod:`.equality` establishes by
+running both.  It is not a second definition: where they differ, the
+reference is right.
+
+What it runs (:func:`supports`): ``basic`` with the ``directional-vertex``
+lighthouse and the built-in policies.  :func:`available` says whether numba
+imports; without it every run goes through the reference, with identical
+results, and :func:`notice` is the one line said on stderr.
+
+Examples
+--------
+>>> supports("basic", None, ("nearest", "fifo", "shortest")), supports("enh1", None, ("nearest", "fifo", "shortest"))
+(True, False)
+"""
+
+from __future__ import annotations
+
+import importlib
+
+from topomark.reference.explorers.policies import EDGE_POLICIES, HYPOTHESIS_POLICIES, PATH_POLICIES
+
+__all__ = ["available", "supports", "notice", "ENGINES"]
+
+ENGINES = ("reference", "compiled", "auto")
+"""The values of ``--engine``: the reference always; the compiled engine (numba); ``auto``, the compiled one when
+it is available and runs the algorithm, else the reference."""
+
+
+def available() -> bool:
+    """Whether numba imports, so the engine's kernels are compiled (asked afresh each time)."""
+    try:
+        importlib.import_module("numba")
+    except Exception:  # ImportError, or a numba that fails on import
+        return False
+    return True
+
+
+def supports(algorithm: str, lighthouse: str | None, policies: tuple[str, str, str]) -> bool:
+    """Whether the engine runs ``algorithm`` with ``lighthouse`` (None: its default) and ``policies``."""
+    edge, hypothesis, path = policies
+    return (algorithm == "basic" and lighthouse in (None, "directional-vertex") and edge in EDGE_POLICIES
+            and hypothesis in HYPOTHESIS_POLICIES and path in PATH_POLICIES)
+
+
+def notice(uncompiled: bool = False) -> str:
+    """The one line said when numba is missing: the runs go through the reference (or, for the cross-check,
+    through the uncompiled kernels)."""
+    if uncompiled:
+        return "topomark: numba is not installed; the engine's kernels run uncompiled (slower)"
+    return "topomark: numba is not installed; the engine runs through the reference (slower)"
