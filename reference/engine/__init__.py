@@ -26,9 +26,11 @@ from __future__ import annotations
 
 import importlib
 
+from topomark.spec.errors import InvalidInput
+
 from topomark.reference.explorers.policies import EDGE_POLICIES, HYPOTHESIS_POLICIES, PATH_POLICIES
 
-__all__ = ["available", "supports", "notice", "ENGINES"]
+__all__ = ["available", "supports", "notice", "choose", "ENGINES"]
 
 ENGINES = ("reference", "compiled", "auto")
 """The values of ``--engine``: the reference always; the compiled engine (numba); ``auto``, the compiled one when
@@ -57,3 +59,25 @@ def notice(uncompiled: bool = False) -> str:
     if uncompiled:
         return "topomark: numba is not installed; the engine's kernels run uncompiled (slower)"
     return "topomark: numba is not installed; the engine runs through the reference (slower)"
+
+
+def choose(engine: str, algorithm: str, lighthouse: str | None, policies: tuple[str, str, str]) -> tuple[str, str | None]:
+    """The engine a run of ``--engine engine`` uses, ``compiled`` or ``reference``, and the notice to say (or None).
+
+    ``auto``: the compiled engine when it runs the algorithm (:func:`supports`) and numba imports; else the
+    reference — with the notice when only numba is missing.  ``compiled`` for what the engine does not run is bad
+    input; without numba it too falls back to the reference, with the notice."""
+    if engine not in ENGINES:
+        raise InvalidInput(f"--engine must be one of {', '.join(ENGINES)}, not {engine!r}")
+    if engine == "reference":
+        return "reference", None
+    if not supports(algorithm, lighthouse, policies):
+        if engine == "compiled":
+            raise InvalidInput(f"--engine compiled runs the basic algorithm with the directional-vertex lighthouse "
+                               f"and the built-in policies only, not {algorithm} with "
+                               f"{lighthouse or 'its default lighthouse'} and policies {'/'.join(policies)}; "
+                               "use --engine reference or auto")
+        return "reference", None
+    if not available():
+        return "reference", notice()
+    return "compiled", None

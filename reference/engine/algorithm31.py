@@ -34,7 +34,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from topomark.reference.engine.compiled import kernel
+from topomark.reference.engine.compiled import kernel, step
 from topomark.reference.engine.mapstate import (DCAP, LIMIT, NS, PE, PV, ULEN, HEAD, add_vertex, bfs, dfs_toward,
                                                 join, known_signature, neighbours, start_map, u_index, u_pop)
 from topomark.reference.engine.robot import (PURPOSE_NEW, PURPOSE_RETRACE, PURPOSE_TRAVEL, PURPOSE_VALIDATION,
@@ -59,7 +59,7 @@ def new_scratch(vcap: int, ucap: int) -> tuple:
             np.zeros(ucap, dtype=np.int64), np.zeros(vcap + 1, dtype=np.int64), np.zeros(vcap + 2, dtype=np.int64))
 
 
-@kernel
+@step
 def choose_edge(S: tuple, policy: int, dist: np.ndarray) -> int:
     """Line 5: the index in U of e — ``nearest`` (0: the first entry whose end is nearest the robot), ``fifo``
     (1: the oldest), ``lifo`` (2: the newest)."""
@@ -76,7 +76,7 @@ def choose_edge(S: tuple, policy: int, dist: np.ndarray) -> int:
     return at
 
 
-@kernel
+@step
 def take_exit(robot: tuple, S: tuple, v: int, exit_: int, purpose: int) -> tuple:
     """Leave map vertex ``v`` (the believed pose's) by its map exit ``exit_``: the motion counts from the entry."""
     return move(robot, (exit_ - S[5][PE]) % S[0][v], purpose)
@@ -99,7 +99,7 @@ def travel(robot: tuple, S: tuple, W: tuple, target: int) -> None:
         meta[PV], meta[PE] = S[1][v * dcap + i], S[2][v * dcap + i]
 
 
-@kernel
+@step
 def lighthouse_entry(S: tuple, degree: int, direction: int) -> int:
     """The exit of v0 the robot entered by, if what it sensed is v0's (§3.3: the marker gives place and
     back-link at once), else -1."""

@@ -1,7 +1,7 @@
 """Compiling the engine's kernels with numba, or not at all when numba cannot be imported.
 
-:func:`kernel` is the one decorator every compiled function of the engine
-uses: numba's ``njit(cache=True)`` — nopython mode, the machine code kept in
+:func:`kernel` is the decorator the engine's compiled functions use (:func:`step` for
+the small ones, inlined into their callers): numba's ``njit(cache=True)`` — nopython mode, the machine code kept in
 ``__pycache__`` so compilation is paid once per installation, not per process
 — when numba imports, else the function itself, unchanged.  Uncompiled, the
 kernels still run (as slow plain Python), but the engine does not use them:
@@ -18,26 +18,43 @@ Examples
 
 from __future__ import annotations
 
-from typing import Any, Callable, TypeVar
+from typing import Any, Callable, TypeVar, cast
 
-__all__ = ["NUMBA", "NUMBA_ERROR", "kernel"]
+__all__ = ["NUMBA", "NUMBA_ERROR", "kernel", "step"]
 
 F = TypeVar("F", bound=Callable[..., Any])
 
+_numba: Any
 try:
-    import numba
+    import numba as _numba
 except Exception as exc:  # ImportError, or a numba that fails on import (a NumPy it does not support)
-    numba = None
+    _numba = None
     NUMBA_ERROR: str | None = f"{type(exc).__name__}: {exc}"
 else:
     NUMBA_ERROR = None
 
-NUMBA = numba is not None
+NUMBA = _numba is not None
 """Whether numba imported: the kernels are compiled."""
 
 
 def kernel(fn: F) -> F:
     """``fn`` compiled by numba (nopython, cached on disk), or ``fn`` itself without numba."""
-    if numba is None:
+    if _numba is None:
         return fn
-    return numba.njit(cache=True)(fn)
+    return cast(F, _numba.njit(cache=_cached(fn), error_model="numpy")(fn))
+
+
+def step(fn: F) -> F:
+    """A small kernel (a robot call, a query of the map) compiled into every kernel that calls it (numba's
+    ``inline="always"``): its callers pass tuples of arrays, and a call that is not inlined pays for every array
+    of them, more than the step itself costs."""
+    if _numba is None:
+        return fn
+    return cast(F, _numba.njit(cache=_cached(fn), inline="always", error_model="numpy")(fn))
+
+
+def _cached(fn: Callable[..., Any]) -> bool:
+    """Whether ``fn``'s machine code may be kept on disk: only when its module is imported as part of topomark.
+    numba keys its cache by file, not by module name, so a module run under another name (``python -m doctest
+    reference/engine/runs.py``) would leave code that the package then fails to load."""
+    return fn.__module__.startswith("topomark.")

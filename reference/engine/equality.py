@@ -140,7 +140,8 @@ def compare_case(case: Case, combos: tuple = COMBOS) -> tuple[int, list[Disagree
             count += 1
             differ = {k: [got.get(k), want.get(k)] for k in FIELDS if got.get(k) != want.get(k)}
             if differ:
-                found.append(_disagreement(case, start, policies, differ, run.actions.tolist(), codes))
+                mine = [] if run.actions is None else run.actions.tolist()
+                found.append(_disagreement(case, start, policies, differ, mine, codes))
     return count, found
 
 

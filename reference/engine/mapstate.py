@@ -34,7 +34,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from topomark.reference.engine.compiled import kernel
+from topomark.reference.engine.compiled import kernel, step
 
 __all__ = ["new_map", "start_map", "add_vertex", "join", "u_pop", "u_index", "neighbours", "known_signature",
            "bfs", "dfs_toward", "NS", "ULEN", "PV", "PE", "DCAP", "HEAD", "VCAP", "LIMIT"]
@@ -70,7 +70,7 @@ def start_map(S: tuple, degree: int, head: int) -> int:
     return 0
 
 
-@kernel
+@step
 def join(S: tuple, a: int, i: int, b: int, j: int) -> None:
     """Join dart (a, i) and dart (b, j) (loop augmentation's e/e', or a new vertex's exit 0)."""
     dcap, lv, le = S[5][DCAP], S[1], S[2]
@@ -96,7 +96,7 @@ def add_vertex(S: tuple, a: int, i: int, degree: int) -> int:
     return u
 
 
-@kernel
+@step
 def u_pop(S: tuple, k: int) -> None:
     """Remove entry ``k`` of U, the others keeping their order."""
     uv, ue, meta = S[3], S[4], S[5]
@@ -106,7 +106,7 @@ def u_pop(S: tuple, k: int) -> None:
     meta[ULEN] = n - 1
 
 
-@kernel
+@step
 def u_index(S: tuple, v: int, i: int) -> int:
     """The index of dart (v, i) in U, or -1."""
     uv, ue = S[3], S[4]
@@ -116,7 +116,7 @@ def u_index(S: tuple, v: int, i: int) -> int:
     return -1
 
 
-@kernel
+@step
 def neighbours(S: tuple, v: int, w: int) -> bool:
     """Whether map vertices ``v`` and ``w`` are joined by an explored edge."""
     dcap = S[5][DCAP]
@@ -126,7 +126,7 @@ def neighbours(S: tuple, v: int, w: int) -> bool:
     return False
 
 
-@kernel
+@step
 def known_signature(S: tuple, v: int, entry: int) -> tuple:
     """What S says the robot senses at ``v`` entered by ``entry``: (degree, the marker's relative direction or
     -1) — v0 shows its marker (recorded from exit 0 as ``HEAD``, §3.3), every other place none."""

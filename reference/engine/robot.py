@@ -45,7 +45,7 @@ import numpy as np
 
 from topomark.proofs.world_arrays import WorldArrays
 
-from topomark.reference.engine.compiled import kernel
+from topomark.reference.engine.compiled import kernel, step
 from topomark.reference.engine.digest import PURPOSE, describe, move_code, pack_op
 
 __all__ = ["make_robot", "reset", "move", "sense", "drop_vertex", "fault", "CUR", "ENTRY", "MARKER_AT", "MARKER_HEAD", "COST",
@@ -83,7 +83,7 @@ def reset(robot: tuple, vertex: int, facing: int) -> None:
     state[CUR], state[ENTRY], state[MARKER_AT] = vertex, facing, -1
 
 
-@kernel
+@step
 def _log(robot: tuple, code: int) -> None:
     state, log = robot[3], robot[5]
     if state[ACTIONS] < log.shape[0]:
@@ -91,7 +91,7 @@ def _log(robot: tuple, code: int) -> None:
     state[ACTIONS] += 1
 
 
-@kernel
+@step
 def sense(robot: tuple) -> tuple:
     """What the robot senses where it stands: (degree, the marker's relative direction or -1)."""
     offsets, state = robot[0], robot[3]
@@ -102,7 +102,7 @@ def sense(robot: tuple) -> tuple:
     return degree, (state[MARKER_HEAD] - state[ENTRY]) % degree
 
 
-@kernel
+@step
 def move(robot: tuple, motion: int, purpose: int) -> tuple:
     """Leave through exit ``motion`` counted clockwise from the entry edge, for ``purpose`` (its index); what is
     sensed at the far end.  A motion naming no exit sets :data:`FAULT_MOTION`, moves nothing, returns (0, -1)."""
@@ -134,7 +134,7 @@ def drop_vertex(robot: tuple, direction: int) -> None:
     _log(robot, _pack_op(0, 0, 1, 0, direction + 3))
 
 
-@kernel
+@step
 def fault(robot: tuple) -> int:
     """The robot's fault (0: none): a kernel stops at the first."""
     return robot[3][FAULT]

@@ -27,8 +27,6 @@ Examples
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-
 import numpy as np
 
 from topomark.proofs.world_arrays import WorldArrays
@@ -49,26 +47,47 @@ CODE_NAMES = {0: "correct", 1: "e' not in U (Lemma 1, §3.4)", 2: "a self-loop o
 """Each outcome code of :mod:`.algorithm31` in words."""
 
 
-@dataclass
 class EngineRun:
     """What one compiled run did: the outcome code (0: U emptied) and the counts an unchecked
-    :class:`~topomark.reference.run.outcome.Outcome` reports; ``actions`` when logged."""
+    :class:`~topomark.reference.run.outcome.Outcome` reports (``cost``, ``claimed``, ``by_purpose``,
+    ``marker_operations``, ``counts``), read from the kernel's rows when asked; ``actions`` when logged."""
 
-    code: int
-    cost: int
-    by_purpose: dict[str, int]
-    marker_operations: dict[str, int]
-    counts: dict[str, int]
-    actions: np.ndarray | None = field(default=None, repr=False)
+    __slots__ = ("code", "cost", "_counts", "_tallies", "actions")
+
+    def __init__(self, code: int, counts: list[int], tallies: list[int], actions: np.ndarray | None = None):
+        self.code, self.cost, self._counts, self._tallies, self.actions = code, counts[16], counts, tallies, actions
+
+    def __repr__(self) -> str:
+        return (f"EngineRun(code={self.code}, cost={self.cost}, by_purpose={self.by_purpose}, "
+                f"marker_operations={self.marker_operations}, counts={self.counts})")
 
     @property
     def claimed(self) -> str:
         """What the run claims, as the reference's ``Outcome.claimed``: ``correct`` once U is empty."""
         return "correct" if self.code == OK else CODE_NAMES.get(self.code, f"code {self.code}")
 
+    @property
+    def by_purpose(self) -> dict[str, int]:
+        """The traversals per purpose, the purposes moved for only, sorted by name (as the reference's)."""
+        return dict(sorted((PURPOSES[p], k) for p, k in enumerate(self._counts[:len(PURPOSES)]) if k))
+
+    @property
+    def marker_operations(self) -> dict[str, int]:
+        return {"drop": self._counts[DROPS]} if self._counts[DROPS] else {}
+
+    @property
+    def counts(self) -> dict[str, int]:
+        """The iteration and hypothesis counts, named as the reference's outcome names them."""
+        return dict(zip(_COUNT_NAMES, (self._tallies[k] for k in _COUNT_INDEX)))
+
     def digest(self) -> int | None:
         """The trace digest of the logged actions (None if not logged)."""
         return None if self.actions is None else digest(self.actions.tolist())
+
+
+_COUNT_NAMES = ("iterations", "loop_iterations", "nonloop_iterations", "hypotheses", "hypotheses_rejected",
+                "hypotheses_confirmed")
+_COUNT_INDEX = (ITERATIONS, LOOP, NON_LOOP, HYPOTHESES, REJECTED, CONFIRMED)
 
 
 def policy_codes(policies: tuple[str, str, str]) -> tuple[int, int, int]:
@@ -94,16 +113,6 @@ def _run_all(robot: tuple, starts: np.ndarray, edge: int, hypothesis: int, path:
         counts[s, 16] = robot[3][COST]
 
 
-def _run(code: int, counts: np.ndarray, tallies: np.ndarray, actions: np.ndarray | None = None) -> EngineRun:
-    by_purpose = {PURPOSES[p]: int(counts[p]) for p in range(len(PURPOSES)) if counts[p]}
-    ops = {"drop": int(counts[DROPS])} if counts[DROPS] else {}
-    names = ("iterations", "loop_iterations", "nonloop_iterations", "hypotheses", "hypotheses_rejected",
-             "hypotheses_confirmed")
-    index = (ITERATIONS, LOOP, NON_LOOP, HYPOTHESES, REJECTED, CONFIRMED)
-    return EngineRun(int(code), int(counts[16]), dict(sorted(by_purpose.items())), ops,
-                     {name: int(tallies[k]) for name, k in zip(names, index)}, actions)
-
-
 def run_starts(arrays: WorldArrays, starts: list[tuple[int, int]], policies: tuple[str, str, str]) -> list[EngineRun]:
     """Every start of ``starts`` on the world of ``arrays``, in one compiled call."""
     if not starts:
@@ -115,7 +124,7 @@ def run_starts(arrays: WorldArrays, starts: list[tuple[int, int]], policies: tup
     tallies = np.zeros((len(starts), 8), dtype=np.int64)
     _run_all(robot, np.array(starts, dtype=np.int64).reshape(-1, 2), *policy_codes(policies), vcap, dcap, ucap,
              codes, counts, tallies)
-    return [_run(codes[s], counts[s], tallies[s]) for s in range(len(starts))]
+    return [EngineRun(c, k, t) for c, k, t in zip(codes.tolist(), counts.tolist(), tallies.tolist())]
 
 
 def run_logged(arrays: WorldArrays, start: tuple[int, int], policies: tuple[str, str, str],
@@ -130,5 +139,5 @@ def run_logged(arrays: WorldArrays, start: tuple[int, int], policies: tuple[str,
                  tallies)
         done = int(robot[3][ACTIONS])
         if done <= log_size:
-            return _run(codes[0], counts[0], tallies[0], robot[5][:done].copy())
+            return EngineRun(int(codes[0]), counts[0].tolist(), tallies[0].tolist(), robot[5][:done].copy())
         log_size = done
