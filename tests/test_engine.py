@@ -13,10 +13,10 @@ from topomark.proofs.census_map import plan
 from topomark.proofs.world_arrays import to_arrays
 from topomark.reference import engine
 from topomark.reference.cli.main import main
-from topomark.reference.engine import choose, digest as digests, equality, runs
+from topomark.reference.engine import choose, compare, digest as digests, runs
 from topomark.reference.engine.digest import digest, event_code, move_code, op_code
-from topomark.reference.engine.equality import reference_run
-from topomark.reference.engine.equality_cli import main as equality_main
+from topomark.reference.engine.compare import reference_run
+from topomark.reference.engine.equality import main as equality_main
 from topomark.reference.worlds.generators import cycle, lattice
 from topomark.reference.worstcase import exhaustive
 from topomark.reference.worstcase.exhaustive import Setup, run_task
@@ -56,12 +56,12 @@ def test_every_start_and_policy_agrees_on_the_small_census_and_a_random_world():
     count = 0
     for task in plan(4, 3, 2):
         for unit, _ in task:
-            result = equality.run_cases(("census", [unit], 3))
+            result = compare.run_cases(("census", [unit], 3))
             assert result["disagreement_count"] == 0, result["disagreement_text"]
             count += sum(result["counts"].values())
     assert count == 18 * (1 + 3 + 32)
-    text, starts = equality.random_cases(1, 30, seed=5, starts=1)[0]
-    result = equality.run_cases(("random", text, starts))
+    text, starts = compare.random_cases(1, 30, seed=5, starts=1)[0]
+    result = compare.run_cases(("random", text, starts))
     assert result["disagreement_count"] == 0 and result["counts"] == {"random": 18}
 
 
@@ -191,3 +191,16 @@ def test_equality_command_reports_counts_as_json(capsys):
 def test_a_cycle_costs_m():
     run = runs.run_starts(to_arrays(cycle(5)), [(0, 0), (2, 1)], ("lifo", "fifo", "shortest"))
     assert [(r.claimed, r.cost) for r in run] == [("correct", 5), ("correct", 5)]
+
+
+def test_a_changed_kernel_source_drops_the_kept_machine_code(tmp_path):
+    """numba checks a cached kernel against its own file only; the engine's digest of all its sources does more."""
+    from topomark.reference.engine.compiled import KERNEL_SOURCES, fresh_cache
+    for name in KERNEL_SOURCES:
+        (tmp_path / name).write_text(f"# {name}\n")
+    assert fresh_cache(tmp_path)
+    kept = tmp_path / "__pycache__" / "runs._run_all-1.py311.nbi"
+    kept.write_text("old machine code")
+    assert not fresh_cache(tmp_path) and kept.exists()  # nothing changed: the cache stays
+    (tmp_path / "algorithm31.py").write_text("# the loop, edited\n")
+    assert fresh_cache(tmp_path) and not kept.exists()

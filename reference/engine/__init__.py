@@ -7,8 +7,8 @@ by numba — the robot (:mod:`.robot`: the world's arrays, the only engine code
 that reads them), the explorer's map (:mod:`.mapstate`) and the loop
 (:mod:`.algorithm31`), driven per world by :mod:`.runs` — and must agree with
 the reference exactly: same claim, cost, split by purpose, marker operations,
-counts and trace digest (:mod:`.digest`), which :mod:`.equality` establishes by
-running both.  It is not a second definition: where they differ, the
+counts and trace digest (:mod:`.digest`), which :mod:`.compare` establishes by
+running both (the command: :mod:`.equality`).  It is not a second definition: where they differ, the
 reference is right.
 
 What it runs (:func:`supports`): ``basic`` with the ``directional-vertex``

@@ -7,7 +7,7 @@ The engine's counterpart of
 hypothesis ``fifo|lifo|shortest``, path ``shortest|dfs``), making the same
 choices in the same order, so that a run does the very same actions
 (:mod:`.digest`).  The reference stays the definition; the engine is checked
-against it action by action (:mod:`.equality`).
+against it action by action (:mod:`.compare`).
 
 Like the reference explorer, this kernel sees only its robot: it passes the
 robot tuple to :func:`~.robot.move`, :func:`~.robot.sense` and

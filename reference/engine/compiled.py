@@ -18,9 +18,11 @@ Examples
 
 from __future__ import annotations
 
+import hashlib
+from pathlib import Path
 from typing import Any, Callable, TypeVar, cast
 
-__all__ = ["NUMBA", "NUMBA_ERROR", "kernel", "step"]
+__all__ = ["NUMBA", "NUMBA_ERROR", "kernel", "step", "KERNEL_SOURCES", "fresh_cache"]
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -58,3 +60,33 @@ def _cached(fn: Callable[..., Any]) -> bool:
     numba keys its cache by file, not by module name, so a module run under another name (``python -m doctest
     reference/engine/runs.py``) would leave code that the package then fails to load."""
     return fn.__module__.startswith("topomark.")
+
+
+KERNEL_SOURCES = ("compiled.py", "digest.py", "robot.py", "mapstate.py", "algorithm31.py", "runs.py")
+"""The engine's modules holding compiled code: one changed, every kernel is compiled again."""
+
+
+def fresh_cache(folder: Path = Path(__file__).parent) -> bool:
+    """Drop the kept machine code of every kernel when any of :data:`KERNEL_SOURCES` changed; whether it did.
+
+    numba checks a cached function against its own file only, not against the files of the functions it calls:
+    after an edit of :mod:`.algorithm31`, the runs' kernel in :mod:`.runs` would load the old loop.  A digest of
+    all the sources, kept beside the cache, catches that.  A cache folder that cannot be written is left as it is
+    (numba then keeps its cache elsewhere, or none)."""
+    stamp = hashlib.sha256(b"".join((folder / name).read_bytes() for name in KERNEL_SOURCES)).hexdigest()
+    cache = folder / "__pycache__"
+    kept = cache / "engine-sources.sha256"
+    try:
+        if kept.is_file() and kept.read_text() == stamp:
+            return False
+        for old in (*cache.glob("*.nbi"), *cache.glob("*.nbc")):
+            old.unlink()
+        cache.mkdir(exist_ok=True)
+        kept.write_text(stamp)
+    except OSError:
+        pass
+    return True
+
+
+if _numba is not None:
+    fresh_cache()

@@ -9,7 +9,7 @@ what it claimed, the cost and its split by purpose, the marker operations and
 the iteration and hypothesis counts (:class:`EngineRun`).  :func:`run_starts`
 runs every start in one compiled call (the exhaustive search's path);
 :func:`run_logged` runs one start keeping its actions, for the trace digest
-(:mod:`.digest`) and the cross-check (:mod:`.equality`).
+(:mod:`.digest`) and the cross-check (:mod:`.compare`).
 
 A start is a dart ``(vertex index, exit)``: the robot at that vertex facing that
 exit, which plays the entry edge (:meth:`~topomark.spec.world.World.start_state`),
