@@ -10,8 +10,8 @@ choices in the same order, so that a run does the very same actions
 against it action by action (:mod:`.compare`).
 
 Like the reference explorer, this kernel sees only its robot: it passes the
-robot tuple to :func:`~.robot.move`, :func:`~.robot.sense` and
-:func:`~.robot.drop_vertex` and never looks inside (``tests/test_engine_wall.py``).
+robot array to :func:`~.robot.move`, :func:`~.robot.sense` and
+:func:`~.robot.drop_vertex` and never looks inside (``tests/test_engine.py``).
 What it knows is its map (:mod:`.mapstate`) and what those calls returned.
 
 The loop body :func:`iterate` is written once and calls its steps by name, the
@@ -77,13 +77,13 @@ def choose_edge(S: tuple, policy: int, dist: np.ndarray) -> int:
 
 
 @step
-def take_exit(robot: tuple, S: tuple, v: int, exit_: int, purpose: int) -> tuple:
+def take_exit(robot: np.ndarray, S: tuple, v: int, exit_: int, purpose: int) -> tuple:
     """Leave map vertex ``v`` (the believed pose's) by its map exit ``exit_``: the motion counts from the entry."""
     return move(robot, (exit_ - S[5][PE]) % S[0][v], purpose)
 
 
 @kernel
-def travel(robot: tuple, S: tuple, W: tuple, target: int) -> None:
+def travel(robot: np.ndarray, S: tuple, W: tuple, target: int) -> None:
     """Line 6: walk S from the believed pose to ``target`` along the breadth-first tree just searched."""
     meta, dcap, path = S[5], S[5][DCAP], W[DONE]
     count, x = 0, target
@@ -148,7 +148,7 @@ def hypotheses(S: tuple, W: tuple, vk: int, degree: int, direction: int, path_po
 
 
 @kernel
-def walk_hypothesis(robot: tuple, S: tuple, W: tuple, v: int, e: int, degree: int, heading: int) -> tuple:
+def walk_hypothesis(robot: np.ndarray, S: tuple, W: tuple, v: int, e: int, degree: int, heading: int) -> tuple:
     """Lines 11–16: execute h' = (v, e)'s motions from v_u, its first turned by ``heading``, comparing each
     perception with P^E; stop at the first mismatch.  Returns (confirmed, motions done, v0's entry at the end)."""
     dcap, toward, done, degs = S[5][DCAP], W[TO_V0], W[DONE], W[DEGS]
@@ -171,7 +171,7 @@ def walk_hypothesis(robot: tuple, S: tuple, W: tuple, v: int, e: int, degree: in
 
 
 @kernel
-def retrace(robot: tuple, W: tuple, count: int) -> None:
+def retrace(robot: np.ndarray, W: tuple, count: int) -> None:
     """Line 17: the reverse of the ``count`` motions done: 0, then −l mod deg back to v_u."""
     move(robot, 0, PURPOSE_RETRACE)
     for t in range(count - 1, 0, -1):
@@ -179,7 +179,7 @@ def retrace(robot: tuple, W: tuple, count: int) -> None:
 
 
 @kernel
-def validate(robot: tuple, S: tuple, W: tuple, nh: int, degree: int, counts: np.ndarray) -> tuple:
+def validate(robot: np.ndarray, S: tuple, W: tuple, nh: int, degree: int, counts: np.ndarray) -> tuple:
     """Lines 8–20: test H in order from v_u; returns (the confirmed hypothesis's index or -1, the robot's heading
     at v_u counted from e, v0's entry where the confirmed one ended)."""
     heading = 0
@@ -214,7 +214,7 @@ def loop_augment(S: tuple, vk: int, i: int, v: int, e: int) -> int:
 
 
 @kernel
-def iterate(robot: tuple, S: tuple, W: tuple, edge_policy: int, hypothesis_policy: int, path_policy: int,
+def iterate(robot: np.ndarray, S: tuple, W: tuple, edge_policy: int, hypothesis_policy: int, path_policy: int,
             counts: np.ndarray) -> int:
     """One pass through lines 5–28; an outcome code."""
     meta = S[5]
@@ -251,7 +251,7 @@ def iterate(robot: tuple, S: tuple, W: tuple, edge_policy: int, hypothesis_polic
 
 
 @kernel
-def explore(robot: tuple, S: tuple, W: tuple, edge_policy: int, hypothesis_policy: int, path_policy: int,
+def explore(robot: np.ndarray, S: tuple, W: tuple, edge_policy: int, hypothesis_policy: int, path_policy: int,
             counts: np.ndarray) -> int:
     """Algorithm 3.1 from the robot's start: drop the directional marker pointing at the faced exit, S = {v0},
     U = its exits (lines 1–3), then iterate until U is empty (line 4); an outcome code."""

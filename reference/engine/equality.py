@@ -18,7 +18,7 @@ import argparse
 import json
 import sys
 import time
-from concurrent.futures import ProcessPoolExecutor
+from concurrent.futures import ProcessPoolExecutor, as_completed
 from typing import Any, Callable
 
 from topomark.spec.errors import InvalidInput
@@ -57,9 +57,9 @@ def check(max_vertices: int, max_degree: int, randoms: int = 0, random_max: int 
         for k, job in enumerate(jobs_list):
             take(run_cases(job), k + 1)
     else:
-        with ProcessPoolExecutor(jobs) as pool:
-            for k, result in enumerate(pool.map(run_cases, jobs_list)):
-                take(result, k + 1)
+        with ProcessPoolExecutor(jobs) as pool:  # as each task finishes, so the progress line is current
+            for k, future in enumerate(as_completed([pool.submit(run_cases, job) for job in jobs_list])):
+                take(future.result(), k + 1)
     report.update(compared=sum(counts.values()), by_group=dict(sorted(counts.items())),
                   seconds=round(time.perf_counter() - t0, 1), disagreements=report["disagreements"][:20],
                   text=report["text"][:20])

@@ -36,7 +36,7 @@ from topomark.reference.engine.algorithm31 import (CONFIRMED, HYPOTHESES, ITERAT
 from topomark.reference.engine.compiled import kernel
 from topomark.reference.engine.digest import digest
 from topomark.reference.engine.mapstate import new_map
-from topomark.reference.engine.robot import ACTIONS, COST, DROPS, make_robot, reset
+from topomark.reference.engine.robot import ACTIONS, COST, COUNTS, DROPS, log, make_robot, reset
 from topomark.reference.explorers.policies import EDGE_POLICIES, HYPOTHESIS_POLICIES, PATH_POLICIES
 from topomark.reference.explorers.robot import PURPOSES
 
@@ -103,14 +103,14 @@ def _sizes(arrays: WorldArrays) -> tuple[int, int, int]:
 
 
 @kernel
-def _run_all(robot: tuple, starts: np.ndarray, edge: int, hypothesis: int, path: int, vcap: int, dcap: int, ucap: int,
+def _run_all(robot: np.ndarray, starts: np.ndarray, edge: int, hypothesis: int, path: int, vcap: int, dcap: int, ucap: int,
              codes: np.ndarray, counts: np.ndarray, tallies: np.ndarray) -> None:
     S, W = new_map(vcap, dcap, ucap), new_scratch(vcap, ucap)
     for s in range(starts.shape[0]):
         reset(robot, starts[s, 0], starts[s, 1])
         codes[s] = explore(robot, S, W, edge, hypothesis, path, tallies[s])
-        counts[s, :16] = robot[4]
-        counts[s, 16] = robot[3][COST]
+        counts[s, :16] = robot[robot[COUNTS]:robot[COUNTS] + 16]
+        counts[s, 16] = robot[COST]
 
 
 def run_starts(arrays: WorldArrays, starts: list[tuple[int, int]], policies: tuple[str, str, str]) -> list[EngineRun]:
@@ -137,7 +137,7 @@ def run_logged(arrays: WorldArrays, start: tuple[int, int], policies: tuple[str,
         tallies = np.zeros((1, 8), dtype=np.int64)
         _run_all(robot, np.array([start], dtype=np.int64), *policy_codes(policies), vcap, dcap, ucap, codes, counts,
                  tallies)
-        done = int(robot[3][ACTIONS])
-        if done <= log_size:
-            return EngineRun(int(codes[0]), counts[0].tolist(), tallies[0].tolist(), robot[5][:done].copy())
-        log_size = done
+        kept = log(robot)
+        if int(robot[ACTIONS]) <= log_size:
+            return EngineRun(int(codes[0]), counts[0].tolist(), tallies[0].tolist(), kept.copy())
+        log_size = int(robot[ACTIONS])
