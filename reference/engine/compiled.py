@@ -56,10 +56,11 @@ def step(fn: F) -> F:
 
 
 def _cached(fn: Callable[..., Any]) -> bool:
-    """Whether ``fn``'s machine code may be kept on disk: only when its module is imported as part of topomark.
+    """Whether ``fn``'s machine code may be kept on disk: only when its module is imported as part of topomark,
+    from a file (not, say, a docstring's example).
     numba keys its cache by file, not by module name, so a module run under another name (``python -m doctest
     reference/engine/runs.py``) would leave code that the package then fails to load."""
-    return fn.__module__.startswith("topomark.")
+    return fn.__module__.startswith("topomark.") and Path(fn.__code__.co_filename).is_file()
 
 
 KERNEL_SOURCES = ("compiled.py", "digest.py", "robot.py", "mapstate.py", "algorithm31.py", "runs.py")

@@ -24,9 +24,9 @@ build the same trees.
 Examples
 --------
 >>> S = new_map(4, 3, 8)
->>> start_map(S, 2, 0); int(S[5][ULEN]), S[3][:2].tolist()
-(2, [0, 0])
->>> add_vertex(S, 0, 1, 3), int(S[5][ULEN]), u_index(S, 1, 2)
+>>> start_map(S, 2, 0), int(S[5][ULEN]), S[3][:2].tolist()
+(0, 2, [0, 0])
+>>> u_pop(S, 1); add_vertex(S, 0, 1, 3), int(S[5][ULEN]), u_index(S, 1, 2)
 (1, 3, 2)
 """
 
