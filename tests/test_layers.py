@@ -25,7 +25,7 @@ LAYERS = (
     (FACE,),
     ("reference.cli",),
     ("reference.worstcase",),
-    ("reference.oracle", "reference.bench", "reference.claims"),
+    ("reference.oracle", "reference.bench", "reference.claims", "reference.engine"),
     ("reference.replay",),
     ("reference.run",),
     ("reference.trace",),

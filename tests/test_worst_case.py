@@ -8,6 +8,7 @@ import random
 import pytest
 
 from topomark.proofs.census_map import plan, unit_worlds, world_at
+from topomark.proofs.start_orbits import dart_image
 from topomark.reference.cli.main import main
 from topomark.reference.worstcase import exhaustive, resumable
 from topomark.reference.worstcase.brute import brute_force, compare
@@ -25,7 +26,7 @@ def _worlds(n_max: int, degree: int):
 
 
 def _orbit(world, autos, dart):
-    return {exhaustive._image(world, sigma, *dart) for sigma in autos}
+    return {dart_image(world, sigma, *dart) for sigma in autos}
 
 
 def test_start_darts_are_one_per_orbit_and_cover_every_dart():

@@ -74,7 +74,7 @@ def _validate(args: argparse.Namespace) -> None:
 
 EXHAUSTIVE_ONLY = {"max_vertices": ("--max-vertices", None), "min_vertices": ("--min-vertices", 2),
                    "jobs": ("--jobs", 1), "scheduler": ("--scheduler", None), "shards": ("--shards", None),
-                   "sample": ("--sample", 0.001), "cross_check": ("--cross-check", False)}
+                   "sample": ("--sample", 0.001), "cross_check": ("--cross-check", False), "engine": ("--engine", "auto")}
 """The options of the exhaustive search, with their defaults: ``--search`` refuses any given another value."""
 
 
@@ -97,13 +97,25 @@ def worst_case_command(args: argparse.Namespace) -> int:
         return search_command(args)
     _validate(args)
     claim_out(args.out, args.force)
-    setup = setup_of(args)
+    setup = _with_engine(args, setup_of(args))
     progress = None if args.quiet or args.json else (lambda line: print(line, file=sys.stderr, flush=True))
     degree = min(args.max_degree, args.max_vertices - 1)
     if args.shards is not None:
         return _finish(args, setup, degree, _run(args, setup, degree, Path(args.shards).absolute(), progress))
     with _terminated_exits(), scratch_dir() as root:
         return _finish(args, setup, degree, _run(args, setup, degree, root, progress))
+
+
+def _with_engine(args: argparse.Namespace, setup):
+    """``setup`` with the engine ``--engine`` resolves to (:func:`topomark.reference.engine.choose`), its notice
+    said on stderr."""
+    from dataclasses import replace
+
+    from topomark.reference.engine import choose
+    engine, notice = choose(args.engine, setup.algorithm, setup.lighthouse, setup.policies)
+    if notice is not None:
+        print(notice, file=sys.stderr)
+    return replace(setup, engine=engine)
 
 
 def _summarise(args: argparse.Namespace) -> int:

@@ -73,6 +73,7 @@ SOURCES: dict[str, tuple[str, Callable[[Any], Any]]] = {  # fact: (the module de
     "connect_timeout": (_CENSUS, lambda m: m.CONNECT_TIMEOUT),
     "worker_wait": (_CENSUS, lambda m: m.WORKER_WAIT),
     "objectives": ("topomark.reference.worstcase.search", lambda m: m.OBJECTIVES),
+    "engines": ("topomark.reference.engine", lambda m: m.ENGINES),
 }
 
 _help = [False]  # whether the parser being built is only to print help (:func:`for_help`)

@@ -108,4 +108,5 @@ TABLE: dict[str, Any] = {
     'connect_timeout': 5,
     'worker_wait': 60,
     'objectives': ('cost', 'cost-per-m', 'ratio'),
+    'engines': ('reference', 'compiled', 'auto'),
 }

@@ -38,27 +38,35 @@ from dataclasses import dataclass
 from typing import Any
 
 from topomark.proofs.census_map import Unit, unit_worlds
-from topomark.spec.errors import InvalidInput
+from topomark.proofs.start_orbits import start_darts
+from topomark.proofs.world_arrays import to_arrays
+from topomark.spec.errors import InvalidInput, TopomarkFault
 from topomark.spec.world import Start, World
 
 from topomark.reference.algorithms.registry import AlgorithmSpec, algorithm_spec
+from topomark.reference.engine.runs import run_starts
+from topomark.reference.explorers.lighthouses import LIGHTHOUSES
 from topomark.reference.explorers.policies import Policies
 from topomark.reference.run.explore import explore
 from topomark.reference.worstcase.tally import SizeTally, Witness
 
-__all__ = ["Setup", "start_darts", "sampled", "run_start", "run_task"]
+__all__ = ["Setup", "start_darts", "sampled", "run_start", "run_task", "unchecked_runs"]
 
 
 @dataclass(frozen=True)
 class Setup:
-    """What every run of one worst-case search shares: the algorithm, its lighthouse and policies, and the
-    checked sample (``sample``: the fraction of runs re-run checked, drawn by ``seed``)."""
+    """What every run of one worst-case search shares: the algorithm, its lighthouse and policies, the
+    checked sample (``sample``: the fraction of runs re-run checked, drawn by ``seed``), and the engine of the
+    unchecked runs (:func:`unchecked_runs`).  The engine is not part of the search's identity (``to_json``, the
+    manifest): the compiled engine agrees with the reference run for run (:mod:`topomark.reference.engine`), so a
+    search resumes with either."""
 
     algorithm: str
     lighthouse: str | None = None
     policies: tuple[str, str, str] = ("nearest", "fifo", "shortest")
     sample: float = 0.001
     seed: int = 0
+    engine: str = "reference"  # or "compiled" (topomark.reference.engine); not in to_json: both give the same runs
 
     @property
     def spec(self) -> AlgorithmSpec:
@@ -70,24 +78,6 @@ class Setup:
     def to_json(self) -> dict[str, Any]:
         return {"algorithm": self.algorithm, "lighthouse": self.lighthouse, "policies": list(self.policies),
                 "sample": self.sample, "seed": self.seed}
-
-
-def _image(world: World, sigma: dict[int, int], v: str, i: int) -> tuple[int, int]:
-    """The dart (v, i) moved by the automorphism ``sigma`` (vertex numbers of ``v0, v1, …``)."""
-    w = world.neighbour(v, i)
-    sv, sw = f"v{sigma[int(v[1:])]}", f"v{sigma[int(w[1:])]}"
-    return int(sv[1:]), world.index(sv, sw)
-
-
-def start_darts(world: World, autos: tuple[dict[int, int], ...]) -> list[tuple[str, int]]:
-    """The least dart of each orbit of the world's automorphisms ``autos`` (identity included) on its darts."""
-    out = []
-    for v in world.vertices:
-        for i in range(world.degree(v)):
-            here = (int(v[1:]), i)
-            if all(_image(world, sigma, v, i) >= here for sigma in autos):
-                out.append((v, i))
-    return out
 
 
 def sampled(setup: Setup, n: int, witness: Witness) -> bool:
@@ -118,6 +108,34 @@ def _recheck(setup: Setup, world: World, dart: tuple[str, int], unchecked, witne
     return None
 
 
+def unchecked_runs(setup: Setup, world: World, darts: list[tuple[str, int]]) -> list:
+    """The unchecked run from each of ``darts`` (None: a start the algorithm refuses), by the setup's engine.
+
+    The compiled engine converts the world to arrays once and runs every start in one call; a run it ends with
+    a fault code is run again by the reference, which raises its own error, or — if it does not — shows the
+    engine wrong (:class:`~topomark.spec.errors.TopomarkFault`, exit 3)."""
+    if setup.engine != "compiled":
+        out = []
+        for dart in darts:
+            try:
+                out.append(run_start(setup, world, dart))
+            except InvalidInput:
+                out.append(None)
+        return out
+    light = LIGHTHOUSES[setup.lighthouse or "directional-vertex"]
+    number = {v: k for k, v in enumerate(world.vertices)}
+    usable = [d for d in darts if world.degree(d[0]) >= light.min_degree]
+    runs = iter(run_starts(to_arrays(world), [(number[v], i) for v, i in usable], setup.policies))
+    out = [next(runs) if world.degree(d[0]) >= light.min_degree else None for d in darts]
+    for dart, run in zip(darts, out):
+        if run is not None and run.claimed != "correct":
+            checked = run_start(setup, world, dart)  # the reference's own error, if it has one
+            raise TopomarkFault(f"the compiled engine ended the run from {dart} on {world.rotation} with "
+                                f"{run.claimed!r}, the reference with {checked.claimed!r}: the engine and its "
+                                "reference disagree", check="the engine agrees with the reference")
+    return out
+
+
 def run_task(setup: Setup, max_degree: int, units: list[Unit]) -> dict[str, Any]:
     """Every world of ``units`` and every start: the tallies per n, the refused starts, the checked sample."""
     tallies: dict[int, SizeTally] = {}
@@ -129,11 +147,10 @@ def run_task(setup: Setup, max_degree: int, units: list[Unit]) -> dict[str, Any]
         for rank, world, autos in unit_worlds(unit, max_degree):
             tally.add_world()
             bound = setup.spec.bound_for(world.n, world.m)
-            for dart in start_darts(world, autos):
+            darts = start_darts(world, autos)
+            for dart, out in zip(darts, unchecked_runs(setup, world, darts)):
                 witness = (gi, rank, dart[0], dart[1])
-                try:
-                    out = run_start(setup, world, dart)
-                except InvalidInput:
+                if out is None:
                     refused += 1
                     continue
                 tally.add_run(witness, world.m, out.cost, setup.spec.counted_cost(out.cost, out.by_purpose), bound,

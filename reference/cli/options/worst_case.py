@@ -36,6 +36,11 @@ def register(sub) -> None:
     p.add_argument("--sample", type=float, default=0.001, metavar="FRACTION",
                    help="fraction of the runs re-run checked (default 0.001; every argmax is always re-checked)")
     p.add_argument("--seed", type=seed, default=0, help="seed of the checked sample and of --search (default 0)")
+    p.add_argument("--engine", choices=fact("engines"), default="auto",
+                   help="what runs the exhaustive search's unchecked runs: reference, compiled (numba; basic with the "
+                        "directional-vertex lighthouse and the built-in policies), or auto (default: compiled when "
+                        "numba is installed and it runs the algorithm, else reference); every checked re-run is the "
+                        "reference's")
     p.add_argument("--cross-check", action="store_true",
                    help="also run the brute force over labelled rotation systems and require the same maxima (n <= 5)")
     p.add_argument("-o", "--out", metavar="DIR", help="write worst-case.json, the argmax world files, worst-case.md and plots")

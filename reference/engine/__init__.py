@@ -1,0 +1,83 @@
+"""The engine: compiled unchecked runs of Algorithm 3.1, agreeing exactly with the reference (thesis §3.3, §7.2).
+
+The exhaustive worst case (§7.2, ``topomark worst-case``) runs Algorithm 3.1
+unchecked from every start of every small world; the reference explorer is
+written for checking, not speed.  The engine runs the same algorithm compiled
+by numba — the robot (:mod:`.robot`: the world's arrays, the only engine code
+that reads them), the explorer's map (:mod:`.mapstate`) and the loop
+(:mod:`.algorithm31`), driven per world by :mod:`.runs` — and must agree with
+the reference exactly: same claim, cost, split by purpose, marker operations,
+counts and trace digest (:mod:`.digest`), which :mod:`.compare` establishes by
+running both (the command: :mod:`.equality`).  It is not a second definition: where they differ, the
+reference is right.
+
+What it runs (:func:`supports`): ``basic`` with the ``directional-vertex``
+lighthouse and the built-in policies.  :func:`available` says whether numba
+imports; without it every run goes through the reference, with identical
+results, and :func:`notice` is the one line said on stderr.
+
+Examples
+--------
+>>> supports("basic", None, ("nearest", "fifo", "shortest")), supports("enh1", None, ("nearest", "fifo", "shortest"))
+(True, False)
+"""
+
+from __future__ import annotations
+
+import importlib
+
+from topomark.spec.errors import InvalidInput
+
+from topomark.reference.explorers.policies import EDGE_POLICIES, HYPOTHESIS_POLICIES, PATH_POLICIES
+
+__all__ = ["available", "supports", "notice", "choose", "ENGINES"]
+
+ENGINES = ("reference", "compiled", "auto")
+"""The values of ``--engine``: the reference always; the compiled engine (numba); ``auto``, the compiled one when
+it is available and runs the algorithm, else the reference."""
+
+
+def available() -> bool:
+    """Whether numba imports, so the engine's kernels are compiled (asked afresh each time)."""
+    try:
+        importlib.import_module("numba")
+    except Exception:  # ImportError, or a numba that fails on import
+        return False
+    return True
+
+
+def supports(algorithm: str, lighthouse: str | None, policies: tuple[str, str, str]) -> bool:
+    """Whether the engine runs ``algorithm`` with ``lighthouse`` (None: its default) and ``policies``."""
+    edge, hypothesis, path = policies
+    return (algorithm == "basic" and lighthouse in (None, "directional-vertex") and edge in EDGE_POLICIES
+            and hypothesis in HYPOTHESIS_POLICIES and path in PATH_POLICIES)
+
+
+def notice(uncompiled: bool = False) -> str:
+    """The one line said when numba is missing: the runs go through the reference (or, for the cross-check,
+    through the uncompiled kernels)."""
+    if uncompiled:
+        return "topomark: numba is not installed; the engine's kernels run uncompiled (slower)"
+    return "topomark: numba is not installed; the engine runs through the reference (slower)"
+
+
+def choose(engine: str, algorithm: str, lighthouse: str | None, policies: tuple[str, str, str]) -> tuple[str, str | None]:
+    """The engine a run of ``--engine engine`` uses, ``compiled`` or ``reference``, and the notice to say (or None).
+
+    ``auto``: the compiled engine when it runs the algorithm (:func:`supports`) and numba imports; else the
+    reference — with the notice when only numba is missing.  ``compiled`` for what the engine does not run is bad
+    input; without numba it too falls back to the reference, with the notice."""
+    if engine not in ENGINES:
+        raise InvalidInput(f"--engine must be one of {', '.join(ENGINES)}, not {engine!r}")
+    if engine == "reference":
+        return "reference", None
+    if not supports(algorithm, lighthouse, policies):
+        if engine == "compiled":
+            raise InvalidInput(f"--engine compiled runs the basic algorithm with the directional-vertex lighthouse "
+                               f"and the built-in policies only, not {algorithm} with "
+                               f"{lighthouse or 'its default lighthouse'} and policies {'/'.join(policies)}; "
+                               "use --engine reference or auto")
+        return "reference", None
+    if not available():
+        return "reference", notice()
+    return "compiled", None

@@ -1,0 +1,123 @@
+"""``python -m topomark.reference.engine.equality``: the engine's cross-check as a command (thesis §3.3).
+
+Runs :mod:`.compare`'s comparison over the census's worlds with n ≤
+``--max-vertices`` and degrees ≤ ``--max-degree`` and ``--random`` seeded
+random worlds up to ``--random-max-vertices``, in ``--jobs`` processes, and
+reports the number of run pairs compared per size and the time taken.
+
+Exit 0: every pair agrees; 3: the engine and its reference disagree (each
+disagreement named: world, start, policies, first differing action); 2: bad
+input (one line, no traceback).  ``--json`` prints the report as JSON.
+Without numba the engine's kernels run uncompiled, as plain Python (slow): the
+comparison still checks their logic, and a notice on stderr says so.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+import time
+from concurrent.futures import ProcessPoolExecutor, as_completed
+from typing import Any, Callable
+
+from topomark.spec.errors import InvalidInput
+
+from topomark.reference.engine import available, notice
+from topomark.reference.engine.compare import census_cases, random_cases, run_cases
+
+__all__ = ["main", "check", "MAX_VERTICES", "MAX_RANDOM_VERTICES"]
+
+MAX_VERTICES = 7
+"""The largest ``--max-vertices``: n = 7 at degree ≤ 6 is already hours of reference runs."""
+MAX_RANDOM_VERTICES = 500
+
+
+def check(max_vertices: int, max_degree: int, randoms: int = 0, random_max: int = 60, seed: int = 0, jobs: int = 1,
+          progress: Callable[[str], None] | None = None) -> dict[str, Any]:
+    """Compare the engine with the reference on every case; the report (counts, disagreements, seconds)."""
+    t0 = time.perf_counter()
+    jobs_list: list[tuple] = [("census", units, max_degree) for units in census_cases(max_vertices, max_degree)]
+    jobs_list += [("random", text, starts) for text, starts in random_cases(randoms, random_max, seed)]
+    counts: dict[str, int] = {}
+    report: dict[str, Any] = {"worlds": 0, "disagreement_count": 0, "disagreements": [], "text": []}
+
+    def take(result: dict[str, Any], done: int) -> None:
+        for group, count in result["counts"].items():
+            counts[group] = counts.get(group, 0) + count
+        report["worlds"] += result["worlds"]
+        report["disagreement_count"] += result["disagreement_count"]
+        report["disagreements"] += result["disagreements"]
+        report["text"] += result["disagreement_text"]
+        if progress is not None:
+            progress(f"equality: {done}/{len(jobs_list)} tasks, {sum(counts.values())} run pairs compared, "
+                     f"{report['disagreement_count']} disagreeing, {time.perf_counter() - t0:.0f} s")
+
+    if jobs == 1:
+        for k, job in enumerate(jobs_list):
+            take(run_cases(job), k + 1)
+    else:
+        with ProcessPoolExecutor(jobs) as pool:  # as each task finishes, so the progress line is current
+            for k, future in enumerate(as_completed([pool.submit(run_cases, job) for job in jobs_list])):
+                take(future.result(), k + 1)
+    report.update(compared=sum(counts.values()), by_group=dict(sorted(counts.items())),
+                  seconds=round(time.perf_counter() - t0, 1), disagreements=report["disagreements"][:20],
+                  text=report["text"][:20])
+    return report
+
+
+def _parser() -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(prog="python -m topomark.reference.engine.equality",
+                                description="Compare the compiled Algorithm 3.1 with the reference, run by run.")
+    p.add_argument("--max-vertices", type=int, default=5, help="census worlds with n <= this (default 5)")
+    p.add_argument("--max-degree", type=int, default=4, help="and degrees <= this (default 4)")
+    p.add_argument("--random", type=int, default=0, help="this many seeded random worlds too (default 0)")
+    p.add_argument("--random-max-vertices", type=int, default=60, help="their largest n (default 60)")
+    p.add_argument("--seed", type=int, default=0, help="seed of the random worlds and their starts")
+    p.add_argument("--jobs", type=int, default=1, help="processes (default 1)")
+    p.add_argument("--json", action="store_true", help="print the report as JSON")
+    p.add_argument("--quiet", action="store_true", help="no progress lines on stderr")
+    return p
+
+
+def _validate(args: argparse.Namespace) -> None:
+    if not 2 <= args.max_vertices <= MAX_VERTICES:
+        raise InvalidInput(f"--max-vertices must be between 2 and {MAX_VERTICES}, not {args.max_vertices}")
+    if args.max_degree < 2:
+        raise InvalidInput(f"--max-degree must be at least 2, not {args.max_degree}")
+    if args.random < 0 or not 10 <= args.random_max_vertices <= MAX_RANDOM_VERTICES:
+        raise InvalidInput(f"--random must be at least 0 and --random-max-vertices between 10 and "
+                           f"{MAX_RANDOM_VERTICES}")
+    if args.jobs < 1:
+        raise InvalidInput(f"--jobs must be at least 1, not {args.jobs}")
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = _parser().parse_args(argv)
+    try:
+        _validate(args)
+    except InvalidInput as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    if not available():
+        print(notice(uncompiled=True), file=sys.stderr)
+    progress = None if args.quiet or args.json else (lambda line: print(line, file=sys.stderr, flush=True))
+    report = check(args.max_vertices, min(args.max_degree, args.max_vertices - 1), args.random,
+                   args.random_max_vertices, args.seed, args.jobs, progress)
+    if args.json:
+        print(json.dumps({k: v for k, v in report.items() if k != "text"}, sort_keys=True))
+    else:
+        sizes = ", ".join(f"{g}: {c}" for g, c in report["by_group"].items())
+        print(f"{report['compared']} run pairs compared on {report['worlds']} worlds ({sizes}) in "
+              f"{report['seconds']} s; {report['disagreement_count']} disagree")
+    if report["disagreement_count"]:
+        print("topomark failed: its compiled engine and its reference disagree (its own checks disagree):",
+              file=sys.stderr)
+        for line in report["text"]:
+            print(f"  {line}", file=sys.stderr)
+        return 3
+    return 0
+
+
+if __name__ == "__main__":  # pragma: no cover - the command, tested through main()
+    sys.exit(main())
