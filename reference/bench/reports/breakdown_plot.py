@@ -16,6 +16,7 @@ from __future__ import annotations
 
 from itertools import accumulate
 from pathlib import Path
+from typing import Any
 
 from topomark.spec.errors import InvalidInput
 
@@ -27,18 +28,20 @@ __all__ = ["check_plot_file", "save_breakdown_plot", "SUFFIXES"]
 SUFFIXES = (".png", ".svg")
 
 
-def check_plot_file(path: str) -> None:
-    """Bad input unless the plot can be drawn to ``path``: a ``.png`` or ``.svg`` name, and matplotlib."""
+def check_plot_file(path: str) -> Any:
+    """Bad input unless the plot can be drawn to ``path``: a ``.png`` or ``.svg`` name, and matplotlib; returns
+    ``matplotlib.pyplot``."""
     if Path(path).suffix.lower() not in SUFFIXES:
         raise InvalidInput(f"--breakdown-plot {path}: the plot is written as .png or .svg (by the suffix)")
-    if pyplot() is None:
+    plt = pyplot()
+    if plt is None:
         raise InvalidInput(f"--breakdown-plot {path} needs matplotlib: {INSTALL_HINT}")
+    return plt
 
 
 def save_breakdown_plot(breakdown: CostBreakdown, path: str, title: str) -> Path:
     """Draw ``breakdown`` to ``path`` (:func:`check_plot_file` first) under ``title``; return the path."""
-    check_plot_file(path)
-    plt = pyplot()
+    plt = check_plot_file(path)
     rows = breakdown.rows()
     x = [row[0] for row in rows]
     totals = breakdown.by_kind()
