@@ -19,6 +19,11 @@ explorer has started and after every iteration: nothing is added to a move, so a
 before.  Row 0 is the start (the lighthouse set up, §3.3, §5.1); a last
 row ``end`` holds any motion made after the last iteration.
 
+``topomark explore --json`` always carries the per-kind totals
+(``cost_breakdown``: ``cost`` and ``by_kind``, a dozen numbers); the rows, one
+per iteration, only with ``--breakdown``, as lists under ``columns`` — they
+grow with m.  ``--breakdown-plot`` draws them.
+
 It must add up: the hypotheses' validation motions never exceed the
 validation motions the robot made in their iteration, and the rows sum to the
 run's cost — otherwise topomark's own accounting disagrees with itself
