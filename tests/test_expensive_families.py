@@ -12,6 +12,7 @@ from topomark.reference.worstcase.family_costs import STRIP_FROM, strip_cost
 
 CASES = [  # generator, parameters, n, m
     ("strip", {"n": 5}, 5, 7), ("strip", {"n": 13}, 13, 23), ("strip", {"n": 40}, 40, 77),
+    ("strip", {"n": 8, "cap": 1}, 8, 16), ("strip", {"n": 30, "cap": 1}, 30, 60),
     ("circulant", {"n": 11, "k": 2}, 11, 22), ("circulant", {"n": 30, "k": 7}, 30, 60),
     ("k5e-chain", {"gadgets": 1}, 5, 9), ("k5e-chain", {"gadgets": 6}, 30, 59),
     ("cylinder", {"rings": 2, "size": 3}, 6, 9), ("cylinder", {"rings": 7, "size": 4}, 28, 52),
@@ -41,8 +42,16 @@ def test_the_strip_is_the_square_of_a_path_and_the_robot_walks_it_end_to_end():
     assert first == ["non-loop"] * 11  # S is the path 0, 1, ..., 11 before any loop is closed
 
 
+def test_the_capped_strip_is_4_regular_and_costs_more_than_the_strip():
+    w = generate("strip", n=20, cap=1)
+    assert {w.degree(v) for v in w.vertices} == {4}
+    capped, plain = (explore(generate("strip", n=20, cap=c), "basic", record=False) for c in (1, 0))
+    assert capped.verified and capped.cost > plain.cost
+
+
 def test_circulant_and_the_other_families_refuse_impossible_parameters():
-    for name, params in [("circulant", {"n": 10, "k": 5}), ("circulant", {"n": 10, "k": 1}), ("strip", {"n": 4}),
+    for name, params in [("strip", {"n": 9, "cap": 1}), ("strip", {"n": 6, "cap": 1}), ("strip", {"n": 10, "cap": 2}),
+                         ("circulant", {"n": 10, "k": 5}), ("circulant", {"n": 10, "k": 1}), ("strip", {"n": 4}),
                          ("k5e-chain", {"gadgets": 0}), ("cylinder", {"rings": 1, "size": 4})]:
         with pytest.raises(InvalidInput):
             generate(name, **params)

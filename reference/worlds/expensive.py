@@ -22,6 +22,8 @@ the default ``nearest`` edge policy walks S out as one long path.
   closing them never shortens a path to v0.  The worst family found for
   ``basic``: its cost is a cubic in n (per n mod 6), about 23/24·n³, some
   0.2 of the bound (:mod:`topomark.reference.worstcase.family_costs`).
+  ``cap=1`` joins its two ends so that every place has degree 4; that costs
+  more at small n.
 * :func:`circulant` — C_n(1, k), 4-regular: ``i`` joined to ``i±1`` and
   ``i±k`` (mod n).
 * :func:`k5e_chain` — a chain of ``gadgets`` copies of K5 − e (the complete
@@ -62,16 +64,24 @@ def _world(rotation: dict[int, list[int]], facing: int) -> World:
     return World({str(v): tuple(str(x) for x in ns) for v, ns in rotation.items()}, (), Start("0", str(facing)))
 
 
-def strip(n: int) -> World:
+def strip(n: int, cap: int = 0) -> World:
     """The triangulated strip P_n² on n ≥ 5 places, started at place 0 facing place 1 (§3.5.2, §7.2).
 
     Place ``i`` lists clockwise ``i−1, i+1, n−2−i, n−1−i``, each where it is a place other than ``i`` and not
     already listed (places ``0``, ``n−1`` and the two at the fold have degree 2 or 3; m = 2n − 3).  Entered
     from ``i−1``, exit 1 (the next clockwise) leads to ``i+1``: the ``nearest`` policy walks the path
     ``0, 1, …, n−1`` — out along one side of the folded ladder, back along the other — before it closes a loop.
+
+    ``cap=1`` (n even, n ≥ 8) closes the strip into a 4-regular world (m = 2n): with L = n/2, the fold places
+    L−1 and L are joined to the end places 0 and n−1 by the three edges (0, L−1), (n−1, L−1), (n−1, L), and
+    those four places list clockwise 0: 1, n−1, n−2, L−1; n−1: n−2, L, L−1, 0; L−1: L−2, L, 0, n−1;
+    L: L−1, L+1, n−1, L−2.  The robot still walks the path first; the loops closed last are the three joins.
     """
     n = integer_param("n", n, 5)
-    check_size(n, 2 * n - 3, f"strip:n={n}")
+    cap = integer_param("cap", cap, 0)
+    if cap > 1 or (cap and (n % 2 or n < 8)):
+        raise InvalidInput(f"strip: cap is 0 or 1, and cap=1 needs an even n >= 8 (n = {n}, cap = {cap})")
+    check_size(n, 2 * n - 3 + 3 * cap, f"strip:n={n},cap={cap}")
     rotation: dict[int, list[int]] = {}
     for i in range(n):
         listed: list[int] = []
@@ -79,6 +89,10 @@ def strip(n: int) -> World:
             if 0 <= j < n and j != i and j not in listed:
                 listed.append(j)
         rotation[i] = listed
+    if cap:
+        half = n // 2
+        rotation[0], rotation[n - 1] = [1, n - 1, n - 2, half - 1], [n - 2, half, half - 1, 0]
+        rotation[half - 1], rotation[half] = [half - 2, half, 0, n - 1], [half - 1, half + 1, n - 1, half - 2]
     return _world(rotation, 1)
 
 

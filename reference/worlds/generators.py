@@ -160,7 +160,7 @@ PARAMETERS: dict[str, dict[str, Any]] = {
     # The worst worlds topomark worst-case found, with their starts (worlds/worst_cases.py).
     "worst-case": {"case": "basic-n7-d4"},
     # Families of maximum degree 4 that make Algorithm 3.1 expensive, started at an end (worlds/expensive.py).
-    "strip": {"n": 12},
+    "strip": {"n": 12, "cap": 0},
     "circulant": {"n": 12, "k": 2},
     "k5e-chain": {"gadgets": 3},
     "cylinder": {"rings": 4, "size": 4},
