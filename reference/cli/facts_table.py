@@ -84,7 +84,7 @@ TABLE: dict[str, Any] = {
                    'figure-6.10': {},
                    'figure-6.15': {},
                    'worst-case': {'case': 'basic-n7-d4'},
-                   'strip': {'n': 12},
+                   'strip': {'n': 12, 'cap': 0},
                    'circulant': {'n': 12, 'k': 2},
                    'k5e-chain': {'gadgets': 3},
                    'cylinder': {'rings': 4, 'size': 4}},
