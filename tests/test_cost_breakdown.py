@@ -98,12 +98,15 @@ def test_explore_json_carries_the_totals_and_with_breakdown_the_rows(capsys):
     assert "cost by kind of walk" in out and "costliest iterations" in out
 
 
-def test_breakdown_plot_is_drawn_and_refused_without_matplotlib(tmp_path, capsys, monkeypatch):
+@pytest.mark.slow  # matplotlib's import and a rendering: several seconds
+def test_breakdown_plot_is_drawn(tmp_path):
     pytest.importorskip("matplotlib")
     png = tmp_path / "b.png"
     assert main(["explore", "strip:n=8", "--quiet", "--breakdown-plot", str(png)]) == 0
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
-    capsys.readouterr()
+
+
+def test_breakdown_plot_is_refused_for_a_bad_name_or_without_matplotlib(tmp_path, capsys, monkeypatch):
     assert main(["explore", "strip:n=8", "--quiet", "--breakdown-plot", str(tmp_path / "b.gif")]) == 2
     assert ".png or .svg" in capsys.readouterr().err
     monkeypatch.setitem(sys.modules, "matplotlib", None)  # matplotlib not installed
