@@ -13,6 +13,7 @@ from typing import Any, Callable, cast
 from topomark.spec.errors import InvalidInput
 from topomark.spec.worldfile import dumps_world
 
+from topomark.reference.run.breakdown import KINDS
 from topomark.reference.run.explore import check_run, explore
 from topomark.reference.explorers.lighthouses import configured
 from topomark.reference.algorithms.registry import algorithm_spec, parameters
@@ -142,6 +143,10 @@ def explore_command(args) -> int:
     options = {name: getattr(args, f"param_{name.replace('-', '_')}") for name in parameters()}
     claim_file(args.trace, "--trace", args.force)  # before the run: a typo must not cost a long exploration
     claim_file(args.map, "--map", args.force)
+    if args.breakdown_plot is not None:
+        from topomark.reference.bench.reports.breakdown_plot import check_plot_file
+        claim_file(args.breakdown_plot, "--breakdown-plot", args.force)
+        check_plot_file(args.breakdown_plot)  # matplotlib missing: bad input before the run, not after it
     if args.models is not None:
         if spec.write_models is None:
             raise InvalidInput(f"--models: the algorithm {spec.name} keeps no models (model-tree does)")
@@ -163,12 +168,16 @@ def explore_command(args) -> int:
                           progress=_Progress(not (args.quiet or args.json)), check_mode=args.check_mode,
                           keep_hypotheses=False, lighthouse=light, options=options)
     unwritten = _write_map(args.map, outcome)
+    if args.breakdown_plot is not None:
+        from topomark.reference.bench.reports.breakdown_plot import save_breakdown_plot
+        guarded(args.breakdown_plot, lambda: save_breakdown_plot(
+            outcome.breakdown, args.breakdown_plot, f"{args.algorithm} on {label}: cost {outcome.cost}"))
     if args.models is not None:
         write_models = cast(Callable[[Any, str], list[Any]], spec.write_models)  # checked when --models was read
         guarded(args.models, lambda: write_models(outcome.explorer, args.models))
     last = ring.records[:-1]  # the records before the end record
     data = {"world": label, "policies": spec.policies_json(policies), "algorithm": args.algorithm, **outcome.summary(),
-            "checked": not args.no_check}
+            "checked": not args.no_check, "cost_breakdown": outcome.breakdown.to_json(rows=args.breakdown)}
     if args.map:
         data.update(map_written=unwritten is None, **({"map_not_written": unwritten} if unwritten else {}))
     tail = [json.dumps(rec, sort_keys=True) for rec in last] if outcome.violation else []
@@ -178,6 +187,8 @@ def explore_command(args) -> int:
         print(json.dumps(data, indent=1, sort_keys=True))
     else:
         _print_report(args, spec, label, policies, outcome, started, tail)
+        if args.breakdown:
+            print(_breakdown_text(outcome.breakdown))
         if unwritten:
             print(f"no map written to {args.map}: {unwritten}")
     if outcome.violation is not None and args.json:
@@ -185,6 +196,23 @@ def explore_command(args) -> int:
     if outcome.violation is not None:  # even unchecked: the simulator refused an operation the robot tried
         return 1
     return 0 if outcome.outcome == "correct" or (args.no_check and outcome.claimed == "correct") else 1
+
+
+COSTLIEST = 5  # iterations the --breakdown report lists
+
+
+def _breakdown_text(breakdown) -> str:
+    """``--breakdown``'s report: the cost by kind of walk (with its share) and the costliest iterations."""
+    totals = breakdown.by_kind()
+    width = max(len(k) for k in totals)
+    lines = ["cost by kind of walk (§3.5.2):"]
+    lines += [f"  {k:<{width}}  {v:>10}  {v / max(breakdown.cost, 1):6.1%}" for k, v in totals.items() if v]
+    rows = sorted(breakdown.rows(), key=lambda r: -sum(r[3:]))[:COSTLIEST]
+    lines.append(f"costliest iterations (of {len(breakdown.rows())} rows; --json --breakdown has them all):")
+    for row in rows:
+        parts = ", ".join(f"{k} {v}" for k, v in zip(KINDS, row[3:]) if v)
+        lines.append(f"  iteration {row[0]} ({row[1]}, {row[2]} hypotheses): {sum(row[3:])} = {parts}")
+    return "\n".join(lines)
 
 
 def _write_map(path: str | None, outcome) -> str | None:

@@ -91,6 +91,7 @@ class Hypothesis:
     arrival: MapDart = (0, 0)  # (v0, entry) where M ends if h' holds
     outcome: str = "untested"  # "case 1", "case 2", "case 3" or "untested"
     perceived: tuple[Signature, ...] = ()
+    walked: int = 0  # the motions the robot made to test it (its validation walk; the cost breakdown's share)
 
     def to_json(self) -> dict:
         return {"dart": list(self.dart), "motions": list(self.motions),
@@ -136,7 +137,7 @@ def walk_hypothesis(robot: Robot, h: Hypothesis, degree: int, heading: int) -> t
         if got != want:
             h.outcome = "case 2" if step == len(h.motions) - 1 else "case 1"
             break
-    h.perceived = tuple(perceived)
+    h.perceived, h.walked = tuple(perceived), len(done)
     return done, degrees
 
 

@@ -256,6 +256,7 @@ class EnhancedExplorer(LighthouseExplorer):
         for step in range(start, len(h.motions)):
             got = trie.forward(h.motions[step], "validation")
             perceived.append(got)
+            h.walked += 1
             if got != h.expected[step]:
                 h.outcome = "case 2" if step == len(h.motions) - 1 else "case 1"
                 h.rejected_by = "motion"

@@ -35,6 +35,7 @@ from topomark.spec.markerlayer import MarkerLayer, apply_op
 from topomark.spec.world import World
 from topomark.spec.worldfile import marker_to_json
 
+from topomark.reference.run.breakdown import CostBreakdown
 from topomark.reference.run.checker import Checker
 from topomark.reference.run.outcome import Outcome
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES, Lighthouse
@@ -151,6 +152,7 @@ def _run(world: World, spec: AlgorithmSpec, run: "_Run", policies: Policies, emi
     """The run :func:`explore` describes, its records made for ``emit`` (those of the kinds ``wanted``)."""
     emit_move = emit if wanted is None or "move" in wanted else None
     tally = _Tally()
+    split = CostBreakdown()
     if emit:
         emit(trace_header(spec.name, policies, run.light, world, run.kit, spec.family, _given(spec, run.options)))
     layer = ALGORITHM_FAMILIES[spec.family].events
@@ -173,6 +175,7 @@ def _run(world: World, spec: AlgorithmSpec, run: "_Run", policies: Policies, emi
         if emit and "iteration" in layer and (wanted is None or "iteration" in wanted):
             emit({"event": "iteration", **it.to_json()})
         tally.add(it)  # counted before the check: an iteration that fails it is in explorer.iterations too
+        split.after_iteration(sim.by_purpose, it)
         wrong.after_iteration(checker, explorer, it)
         if not keep_hypotheses:
             it.hypotheses = []
@@ -181,8 +184,13 @@ def _run(world: World, spec: AlgorithmSpec, run: "_Run", policies: Policies, emi
 
     explorer = spec.factory(sim.robot(), policies, observer, run.light if spec.uses_lighthouse else run.options)
     started: list = []  # the robot's true state once the explorer has started (v0, for a lighthouse algorithm)
-    violation, stopped = wrong.verdict(*_drive(explorer, checker, lambda: started.append(sim.state)))
+    def on_started() -> None:
+        started.append(sim.state)
+        split.started(sim.by_purpose)
+    violation, stopped = wrong.verdict(*_drive(explorer, checker, on_started))
+    split.finish(sim.by_purpose, sim.cost)
     outcome = _outcome(world, sim, explorer, checker, violation, trace, tally, spec, stopped)
+    outcome.breakdown = split
     _algorithm_counts(outcome, spec, explorer, world, started[0] if started else None, stopped)
     if emit:
         emit(end_record(outcome))

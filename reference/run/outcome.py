@@ -24,7 +24,7 @@ class Outcome:
     without the checker; :data:`topomark.spec.errors.OUTCOMES`), ``claimed`` what the algorithm itself
     claimed, ``verified`` whether the checker saw every invariant hold, ``violation`` the first one that
     did not (or None) and ``reason`` why a stopped algorithm stopped.  ``cost`` counts edge traversals
-    (§3.5), ``by_purpose`` splits it, ``checks`` counts the checks passed, ``n`` and ``m`` are the world's
+    (§3.5), ``by_purpose`` splits it (``breakdown`` splits it further, by iteration and hypothesis outcome), ``checks`` counts the checks passed, ``n`` and ``m`` are the world's
     size.  :attr:`map` is the explored map as a world; ``trace`` the trace records (empty when they went
     to a file or were not kept); ``explorer`` the explorer itself, with its iterations.
     """
@@ -60,6 +60,7 @@ class Outcome:
     bound_checked: bool = False  # the run was held to ``upper_bound`` (the ``cost-bound`` check)
     algorithm: str = ""  # the registry name of the algorithm that ran
     bound_whose: str | None = None  # whose ``upper_bound`` is and what it bounds (above)
+    breakdown: Any = None  # the cost split by iteration and kind (:class:`~topomark.reference.run.breakdown.CostBreakdown`)
 
     def __repr__(self) -> str:
         """``Outcome(algorithm='basic', world n=90 m=146, cost=6868, correct, verified, 738 checks)``: what ran,

@@ -2,8 +2,9 @@
 
 Every generator returns a :class:`~topomark.spec.world.World` (a rotation
 system, §3.1.1) with no markers and no start, except the Figure 3.4/3.6 wheel
-pair, which carries the marker the thesis places on it, and the Figure 6.10 and
-6.15 worlds, which carry the start their figure needs.  Generators are
+pair, which carries the marker the thesis places on it, the Figure 6.10 and
+6.15 worlds, which carry the start their figure needs, and the expensive
+families, which carry the start that makes them expensive.  Generators are
 deterministic: random choices come from ``random.Random(seed)`` only, never
 from the global random state.  Impossible parameters raise
 :class:`~topomark.spec.errors.InvalidInput` with a message naming the
@@ -26,7 +27,10 @@ here:
 * :mod:`~topomark.reference.worlds.figures` -- :func:`figure_6_10` and
   :func:`figure_6_15`, where §6.2's failing marker savings fail;
 * :mod:`~topomark.reference.worlds.worst_cases` -- ``worst-case``: the worst
-  worlds ``topomark worst-case`` found, with their starts (§7.2).
+  worlds ``topomark worst-case`` found, with their starts (§7.2);
+* :mod:`~topomark.reference.worlds.expensive` -- :func:`strip`, :func:`circulant`,
+  :func:`k5e_chain` and :func:`cylinder`: families of maximum degree 4 that make
+  Algorithm 3.1 expensive, with their starts (§3.5.2, §7.2).
 
 This module holds the registry the CLI uses: :data:`GENERATORS`,
 :data:`PARAMETERS`, :func:`generate` and :func:`DEFAULT_WORLD`.
@@ -73,6 +77,7 @@ from topomark.reference.worlds.embedding import circle_positions, from_networkx,
 from topomark.reference.worlds.deterministic import chain, complete, cycle, lattice, wheel_hub_last
 from topomark.reference.worlds.figures import figure_6_10, figure_6_15
 from topomark.reference.worlds.worst_cases import worst_case_world
+from topomark.reference.worlds.expensive import circulant, cylinder, k5e_chain, strip
 from topomark.reference.worlds.holes import complete_hole, lattice_hole
 from topomark.reference.worlds.random_worlds import OtherPairs, random_graph, small_world  # noqa: F401 - OtherPairs: for tests
 from topomark.proofs.wheels import (WHEEL_A_ROTATION, WHEEL_B_ROTATION, wheel_a, wheel_b, wheel_pair,
@@ -101,6 +106,10 @@ __all__ = [
     "WHEEL_B_ROTATION",
     "planar",
     "from_networkx",
+    "strip",
+    "circulant",
+    "k5e_chain",
+    "cylinder",
     "GENERATORS",
     "PARAMETERS",
     "generate",
@@ -124,6 +133,10 @@ GENERATORS: dict[str, Callable[..., World]] = {
     "figure-6.10": figure_6_10,
     "figure-6.15": figure_6_15,
     "worst-case": worst_case_world,
+    "strip": strip,
+    "circulant": circulant,
+    "k5e-chain": k5e_chain,
+    "cylinder": cylinder,
 }
 """CLI name -> generator function."""
 
@@ -146,6 +159,11 @@ PARAMETERS: dict[str, dict[str, Any]] = {
     "figure-6.15": {},
     # The worst worlds topomark worst-case found, with their starts (worlds/worst_cases.py).
     "worst-case": {"case": "basic-n7-d4"},
+    # Families of maximum degree 4 that make Algorithm 3.1 expensive, started at an end (worlds/expensive.py).
+    "strip": {"n": 12, "cap": 0},
+    "circulant": {"n": 12, "k": 2},
+    "k5e-chain": {"gadgets": 3},
+    "cylinder": {"rings": 4, "size": 4},
 }
 """CLI name -> {parameter name: default}.  The default's type is the parameter's type
 (int, float or str); ``generate`` fills in missing parameters from here."""

@@ -53,6 +53,12 @@ def register(sub) -> None:
                                             "writes none and says so")
     p.add_argument("--models", metavar="DIR", help="write every completed model as a world file, in completion order "
                                                    "(model-0001.json, ...; algorithms that keep models: model-tree)")
+    p.add_argument("--breakdown", action="store_true",
+                   help="split the cost by iteration too: --json's cost_breakdown gets one row per iteration (its "
+                        "per-kind totals are always there), the report a table of the kinds and the costliest "
+                        "iterations")
+    p.add_argument("--breakdown-plot", metavar="FILE", help="plot the cost of each iteration, stacked by kind of walk "
+                                                           "(.png or .svg; needs matplotlib)")
     add_force(p)
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.add_argument("--quiet", action="store_true", help="no progress bar")

@@ -1,0 +1,61 @@
+"""What Algorithm 3.1 costs on the triangulated strip, exactly, and why the (3.1)+(3.2) bound is tight for it
+(thesis §3.5.2, §7.2).
+
+§7.2 asks whether the O(m²n) bound of §3.5.2 is tight, and for which graphs.
+On the strip P_n² (:func:`~topomark.reference.worlds.expensive.strip`: m =
+2n − 3, maximum degree 4, started at an end) ``basic`` with its default
+policies costs exactly :func:`strip_cost` — a cubic in n for each residue of
+n mod 6, measured on every n from 5 to 60 and fitted exactly (four sizes fix
+each cubic, the other sizes of its residue check it):
+
+    24·cost = 23n³ − 318n² + 1724n − c₀   (n even; c₀ = 3144, 3176, 3160 for n ≡ 0, 2, 4 mod 6)
+    24·cost = 23n³ − 321n² + 1757n − c₁   (n odd;  c₁ = 3355, 3339, 3323 for n ≡ 1, 3, 5 mod 6)
+
+for n ≥ 9 (:data:`STRIP_FROM`).  The bound (3.1)+(3.2) with m = 2n − 3 is
+14n³/3 + O(n²), so cost/bound rises to 23/112 ≈ 0.205: the bound is tight
+up to that constant on this family — Θ(m²n) with diameter Θ(n) and degree 4.
+
+Why (the cost breakdown of ``topomark explore --breakdown`` shows it): every
+inner place has degree 4 and no marker, so all of them look alike.  Exit 1
+at each new place is the next place of the path ``0, 1, …, n−1``, which the
+``nearest`` policy follows to its end: S is a path, each inner place keeps two
+open exits in U, and at each new place every one of them is a hypothesis
+whose walk matches P^E until v0 should appear — case (2) at the end of a walk
+as long as its path in S, or case (1) where the real walk, on the way back
+along the second side, passes v0 first — each retraced as far.  The rungs and
+diagonals left open join places at the same distance from v0 in S (the path
+folds back on itself), so closing them never shortens a walk, and each loop
+closing tests, in U's order, the open exits of every place before its v_u.
+Measured and fitted the same way, the n − 1 non-loop iterations cost
+5/12·n³ + O(n²) and the n − 2 loop iterations 13/24·n³ + O(n²).
+
+Examples
+--------
+>>> strip_cost(10), strip_cost(20)
+(220, 3671)
+"""
+
+from __future__ import annotations
+
+from topomark.spec.errors import InvalidInput, TopomarkFault
+
+__all__ = ["strip_cost", "STRIP_FROM"]
+
+STRIP_FROM = 9
+"""The least n the formula of :func:`strip_cost` is measured for (below it the fold and the start overlap)."""
+
+_EVEN = {0: 3144, 2: 3176, 4: 3160}
+_ODD = {1: 3355, 3: 3339, 5: 3323}
+
+
+def strip_cost(n: int) -> int:
+    """The cost of ``basic`` (default policies) on ``strip:n=N``, from the exact fit above; n ≥ :data:`STRIP_FROM`."""
+    if n < STRIP_FROM:
+        raise InvalidInput(f"strip_cost: the formula is measured for n >= {STRIP_FROM}, not n = {n}")
+    if n % 2 == 0:
+        total = 23 * n**3 - 318 * n**2 + 1724 * n - _EVEN[n % 6]
+    else:
+        total = 23 * n**3 - 321 * n**2 + 1757 * n - _ODD[n % 6]
+    if total % 24:
+        raise TopomarkFault(f"strip_cost({n}): 24·cost = {total} is not a multiple of 24: the formula is wrong")
+    return total // 24
