@@ -43,10 +43,10 @@ def register(sub) -> None:
                    "(tcp://host:8786), or 'local' for a local Dask cluster of J workers (needs Dask: pip install '.[cluster]' from a checkout); "
                    f"exit 2 if no Dask scheduler answers at ADDRESS within {fact('connect_timeout')} s, or it has no "
                    f"worker within {fact('worker_wait')} s")
-    q.add_argument("--engine", default="auto", metavar="ENGINE", help="how the map computes each world's "
+    q.add_argument("--engine", choices=fact("engines"), default="auto", help="how the map computes each world's "
                    "languages: 'reference' (Python, the definition), 'compiled' (numba; vertex-marker classes only) "
                    "or 'auto' (default: compiled where it applies; without numba the reference, said on stderr). "
-                   "Both give the same shards and results; exit 2 for another value")
+                   "Both give the same shards and results")
     q.add_argument("--json", action="store_true", help="machine-readable output")
     q.add_argument("--quiet", action="store_true", help="no progress on stderr")
     q.set_defaults(handler=Later("cmd_distinguish", "census_command"))
