@@ -10,6 +10,7 @@ Burnside's (slow test).
 from __future__ import annotations
 
 import math
+import os
 
 import numpy as np
 import pytest
@@ -108,7 +109,9 @@ def test_plain_kernel_is_chunk_and_residue_independent(n, d, gi):
 @pytest.mark.parametrize("n,d,gi", SLICE)
 def test_compiled_kernel_gives_the_plain_kernels_output(n, d, gi):
     fast = compiled()
-    if fast is None:
+    if fast is None:  # numba is a dependency where it has wheels; CI (CI=true) must run the compiled kernel
+        if os.environ.get("CI"):
+            pytest.fail("numba is not installed under CI: the compiled kernel cannot be compared")
         pytest.skip("numba is not installed: only the plain kernel runs here (tested above)")
     assert _kernel_output(n, d, gi, (fast, True), chunk=5) == _kernel_output(n, d, gi, PLAIN, chunk=1 << 15)
 

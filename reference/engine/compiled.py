@@ -84,8 +84,8 @@ def fresh_cache(folder: Path = Path(__file__).parent) -> bool:
             old.unlink()
         cache.mkdir(exist_ok=True)
         kept.write_text(stamp)
-    except OSError:
-        pass
+    except OSError:  # a read-only install: numba keeps its cache elsewhere, or none; nothing stale can load from here
+        return True
     return True
 
 
