@@ -328,3 +328,22 @@ def test_the_command_line_still_names_its_flags(argv, flag, capsys):
 
     assert main(argv) == 2
     assert flag in capsys.readouterr().err
+
+
+def test_the_api_writers_refuse_a_file_already_there_unless_forced(tmp_path):
+    """One rule for output paths (reference/files/overwrite.py): ``explore(trace=...)`` and ``save_world`` refuse a
+    file that is there, before any work, naming the keywords; ``force=True`` overwrites it."""
+    trace, world_file = tmp_path / "t.jsonl", tmp_path / "w.json"
+    trace.write_text("keep\n")
+    world_file.write_text("keep\n")
+    with pytest.raises(InvalidInput, match=r"^trace='.*t\.jsonl': the file exists; give force=True to overwrite it$"):
+        T.explore(W, trace=trace)
+    with pytest.raises(InvalidInput, match=r"^path='.*w\.json': the file exists; give force=True to overwrite it$"):
+        T.save_world(T.generate(W), world_file)
+    assert trace.read_text() == world_file.read_text() == "keep\n"  # nothing written
+    T.explore(W, trace=trace, force=True)
+    T.save_world(T.generate(W), world_file, force=True)
+    assert T.replay(W, trace).ok and T.load_world(world_file).n == T.generate(W).n
+    with pytest.raises(InvalidInput, match="force must be True or False"):
+        T.explore(W, trace=tmp_path / "new.jsonl", force="yes")
+    assert not (tmp_path / "new.jsonl").exists()

@@ -32,6 +32,7 @@ from topomark.keywords import check_keywords
 from topomark.reference.algorithms.registry import AlgorithmSpec, Listed, algorithm_spec, listing
 from topomark.reference.explorers.lighthouses import Lighthouse
 from topomark.reference.explorers.policies import Policies
+from topomark.reference.files.overwrite import claim_file
 from topomark.reference.replay.replay import ReplayResult, parse_records, replay as _replay
 from topomark.reference.run.explore import Outcome, explore as _explore
 from topomark.reference.run.map_check import MapVerdict, check_map as _check_map
@@ -48,14 +49,16 @@ __all__ = ["explore", "check_map", "isomorphic", "replay", "algorithms", "polici
 @keywords_checked
 def explore(world: WorldLike, algorithm: str = "basic", lighthouse: str | Lighthouse | None = None,
             policies: Policies | Mapping[str, str] | None = None, check: bool = True, *,
-            trace: str | os.PathLike[str] | None = None, record: bool = True, **options: Any) -> Outcome:
+            trace: str | os.PathLike[str] | None = None, record: bool = True, force: bool = False,
+            **options: Any) -> Outcome:
     """Explore ``world`` with ``algorithm`` and return the outcome, as ``topomark explore`` does.
 
     ``world`` is a World, a world file or a generator text (``"lattice:rows=3,cols=3"``).  ``lighthouse``
     names the strategy of a lighthouse algorithm (default ``directional-vertex``, §3.3); ``policies`` the
     edge, hypothesis and path policies (a :class:`~topomark.reference.explorers.policies.Policies` or a
     mapping such as ``{"edge": "lifo"}``).  ``check=False`` runs without the checker (``verified`` is then
-    False and ``outcome`` ``unchecked``).  The trace goes to the file ``trace`` if given, else it is kept in
+    False and ``outcome`` ``unchecked``).  The trace goes to the file ``trace`` if given (a file already there is refused,
+    before the run, unless ``force=True``, as ``--trace`` is without ``--force``), else it is kept in
     ``outcome.trace`` unless ``record=False``.  Other keywords are the algorithm's own options
     (``topomark algorithms``), an underscore standing for the option's hyphen: ``max_models=50``.
 
@@ -65,7 +68,7 @@ def explore(world: WorldLike, algorithm: str = "basic", lighthouse: str | Lighth
     A violated invariant does not raise: it ends the run with ``outcome.violation`` set (exit 1 in the CLI).
     Bad input raises InvalidInput before the run: an unknown algorithm, lighthouse or policy, a world the
     lighthouse cannot use or that is not a world, ``check`` or ``record`` other than True or False, a
-    ``trace`` that is not a path, an option's value of the wrong type (None, a str or a bool for a count) or
+    ``trace`` that is not a path or names a file already there (without ``force=True``), an option's value of the wrong type (None, a str or a bool for a count) or
     out of its range; a keyword that is neither explore's nor an option of the algorithm raises its subclass
     InvalidKeyword, which is also a TypeError, as Python's own unexpected keywords are.
 
@@ -87,15 +90,16 @@ def explore(world: WorldLike, algorithm: str = "basic", lighthouse: str | Lighth
     chosen = policies_of(policies, spec.name)
     if not (lighthouse is None or isinstance(lighthouse, (str, Lighthouse))):
         text("lighthouse", lighthouse, "a lighthouse strategy's name")
-    check, record = flag("check", check), flag("record", record)
+    check, record, force = flag("check", check), flag("record", record), flag("force", force)
     the_world = resolve(world)
     if trace is None:
         return _explore(the_world, spec, chosen, check, record=record, lighthouse=lighthouse, options=given)
+    claim_file(path("trace", trace), "trace", force)  # before the run: a long exploration must not be lost
     with FileSink(path("trace", trace)) as sink:
         return _explore(the_world, spec, chosen, check, sink=sink, lighthouse=lighthouse, options=given)
 
 
-EXPLORE_KEYWORDS = ("world", "algorithm", "lighthouse", "policies", "check", "trace", "record")
+EXPLORE_KEYWORDS = ("world", "algorithm", "lighthouse", "policies", "check", "trace", "record", "force")
 """The keywords of :func:`explore` itself; the others are the algorithm's options."""
 
 

@@ -23,9 +23,10 @@ import sys
 from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING, Any, TypeAlias, Union
 
-from topomark.arguments import keywords_checked, path as checked_path
+from topomark.arguments import flag, keywords_checked, path as checked_path
 from topomark.keywords import check_keywords
 from topomark.reference.files.outputs import write_output
+from topomark.reference.files.overwrite import claim_file
 from topomark.reference.worlds.argument import parse_generator, resolve_world
 from topomark.reference.worlds.generators import GENERATORS, PARAMETERS, generate as _generate
 from topomark.spec.errors import InvalidInput, clip
@@ -66,9 +67,10 @@ def load_world(path: str | os.PathLike[str]) -> World:
 
 
 @keywords_checked
-def save_world(world: World, path: str | os.PathLike[str]) -> None:
-    """Write ``world`` to ``path`` in the world-file format; an unwritable path, a ``path`` that is not a path
-    and a ``world`` that is not a World (:func:`generate` or :func:`load_world` makes one) are InvalidInput.
+def save_world(world: World, path: str | os.PathLike[str], *, force: bool = False) -> None:
+    """Write ``world`` to ``path`` in the world-file format; an unwritable path, a ``path`` that is not a path,
+    a file already at ``path`` (unless ``force=True``, as ``world -o`` refuses it without ``--force``) and a
+    ``world`` that is not a World (:func:`generate` or :func:`load_world` makes one) are InvalidInput.
 
     Examples
     --------
@@ -80,7 +82,9 @@ def save_world(world: World, path: str | os.PathLike[str]) -> None:
     if not isinstance(world, World):
         raise InvalidInput(f"save_world() writes a World (generate() or load_world() makes one), "
                            f"not {type(world).__name__}")
-    write_output(checked_path("path", path), dumps_world(world))
+    target = checked_path("path", path)
+    claim_file(target, "path", flag("force", force))
+    write_output(target, dumps_world(world))
 
 
 @keywords_checked

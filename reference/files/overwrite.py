@@ -9,6 +9,8 @@ apply it, before any work starts, so a refused command has written nothing:
 * with ``--force`` the file is overwritten, and the directory is written into, its files of the same names
   replaced; what a command lists as its own (``replace``: an earlier suite, earlier models) is removed
   first, so old and new are never mixed;
+* the Python API's writers (``explore(trace=...)``, ``save_world``) follow the same rule with a ``force``
+  keyword, and the message names the keywords (``trace='run.jsonl': ... give force=True ...``);
 * a device or a pipe (``/dev/null``, ``/dev/stdout``) is written as always; an empty path is exit 2;
 * directories that are inputs as well as outputs are not claimed: ``bench -o DIR`` and ``--shards DIR``
   resume from what is in them.
@@ -35,6 +37,7 @@ import shutil
 from pathlib import Path
 
 from topomark.spec.errors import InvalidInput
+from topomark.spec.spelling import in_python
 
 from topomark.reference.files.outputs import check_output
 
@@ -69,6 +72,8 @@ def claim_file(path: str | Path | None, flag: str, force: bool) -> None:
     if p is None:
         return
     if p.is_file() and not force:
+        if in_python():  # the Python API: name the keyword arguments, as the caller typed them
+            raise InvalidInput(f"{flag}={str(path)!r}: the file exists; give force=True to overwrite it")
         raise InvalidInput(f"{flag} {path}: the file exists; give --force to overwrite it")
     check_output(p)
 
