@@ -30,8 +30,9 @@ Decisions:
 
 Examples
 --------
->>> [s.name for s in SPECS]
-['basic', 'enh1', 'enh2', 'enh3', 'enh4', 'enh5-d1', 'enh5-d2', 'enh3+4', 'enh3+5']
+>>> [s.name for s in SPECS]  # doctest: +NORMALIZE_WHITESPACE
+['basic', 'enh1', 'enh2', 'enh3', 'enh4', 'enh5-d1', 'enh5-d2', 'enh3+4', 'enh3+5', 'enh3-listing', 'enh4-listing',
+ 'enh5-d2-listing']
 >>> SPECS[0].bound_for(3, 3), SPECS[4].bound_for(3, 3)  # a triangle: (3.1) + (3.2); enh4: asymptotic only
 (22, None)
 >>> SPECS[4].bound_note
@@ -46,10 +47,12 @@ from topomark.reference.algorithms.algorithm_spec import ALGORITHM_3_1_CHECKS, A
 from topomark.reference.algorithms.bounds import upper_bound
 from topomark.reference.explorers.algorithm31 import LighthouseExplorer
 from topomark.reference.explorers.compositions import ENHANCEMENTS, EXPLORERS
+from topomark.reference.explorers.enhancements_as_listed import AS_LISTED, LISTING_EXPLORERS, VARIANT_OF
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES
 from topomark.reference.explorers.policies import EDGE_POLICIES
 
-__all__ = ["SPECS", "POLICY_OPTIONS", "BOUND", "CHANGES", "lighthouse_algorithm", "policy_options"]
+__all__ = ["SPECS", "POLICY_OPTIONS", "BOUND", "CHANGES", "lighthouse_algorithm", "policy_options",
+           "enh4_listing_bound", "enh5_d2_listing_bound"]
 
 
 def policy_options(edge: str = "nearest") -> tuple[str, ...]:
@@ -138,10 +141,45 @@ def _enhancement(name: str) -> AlgorithmSpec:
     inherits = not (enh.prune or enh.expand_new or enh.expand_place)
     bound = f"{BOUND}, inherited (§4.1 adds no motion)" if inherits else \
         "O(m²n) (Chapter 4; its expansion traversals are outside (3.1)+(3.2), §4.2)"
-    return lighthouse_algorithm(name, enh.section, EXPLORERS[name], bound, inherits, changes=CHANGES.get(name))
+    listed = next((k for k, v in VARIANT_OF.items() if v == name), None)
+    return lighthouse_algorithm(name, enh.section, EXPLORERS[name], bound, inherits, changes=CHANGES.get(name),
+                                listing_entry=listed)
+
+
+def enh4_listing_bound(n: int, m: int) -> int:
+    """Topomark's bound for Algorithm 4.4 as listed (``enh4-listing``; module docstring): (3.1)+(3.2) + 2(2m − n)."""
+    return upper_bound(n, m) + 2 * max(0, 2 * m - n)
+
+
+def enh5_d2_listing_bound(n: int, m: int) -> int:
+    """Topomark's bound for Algorithm 4.5 as listed with d = 2 (``enh5-d2-listing``; module docstring):
+    (3.1)+(3.2) + 2m·min((n − 1)(n − 2), 2m − 2)."""
+    return upper_bound(n, m) + 2 * m * max(0, min((n - 1) * (n - 2), 2 * m - 2))
+
+
+_LISTING = "topomark's bound for the thesis's listing as written (docs/bounds.md), behind O(m²n) (Chapter 4)"
+_LISTING_BOUNDS = {
+    "enh4-listing": (enh4_listing_bound, f"(3.1) + (3.2) + 2(2m − n), {_LISTING}: Algorithm 3.1's passes with H "
+                                         "pruned, and line 22's 2Σ(d_k − 1) ≤ 2(2m − n) expansion traversals (§4.2)"),
+    "enh5-d2-listing": (enh5_d2_listing_bound, f"(3.1) + (3.2) + 2m·min((n − 1)(n − 2), 2m − 2), {_LISTING}: "
+                                               "Algorithm 3.1's passes with H pruned, and line 7's walk to every place "
+                                               "within distance 2 of v_u on each of the m passes"),
+}
+
+
+def _as_listed(name: str) -> AlgorithmSpec:
+    """A Chapter 4 listing as written, registered beside the composition that changes it (module docstring)."""
+    enh, explorer = AS_LISTED[name], LISTING_EXPLORERS[name]
+    thesis = f"{enh.section}, as listed"
+    if name not in _LISTING_BOUNDS:  # Enhancement-3 adds no motion (§4.1): Algorithm 3.1's own bound
+        return lighthouse_algorithm(name, thesis, explorer, f"{BOUND}, inherited (§4.1 adds no motion)")
+    bound_fn, formula = _LISTING_BOUNDS[name]
+    return lighthouse_algorithm(name, thesis, explorer, "O(m²n) (Chapter 4); bound_fn: topomark's, for the listing as "
+                                "written", bound_fn=bound_fn, bound_formula=formula, bound_source="listing")
 
 
 SPECS = (
     lighthouse_algorithm("basic", "§3.3, Algorithm 3.1", LighthouseExplorer),
     *(_enhancement(name) for name in ENHANCEMENTS),
+    *(_as_listed(name) for name in AS_LISTED),
 )
