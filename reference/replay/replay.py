@@ -20,6 +20,9 @@ lighthouse and kit, vocabularies, field sets, signatures, JSON limits — is
   :mod:`~topomark.reference.replay.hypotheses`, S and U rebuilt, I-1/I-2 after every
   iteration, m iterations, U empty, the final map extended-isomorphic to the
   world with the markers dropped);
+* where a Chapter 4 listing is registered beside topomark's variant of it (``enh3`` and ``enh3-listing``, …),
+  whose moves the trace made: :class:`~topomark.reference.replay.variant_match.VariantMatch` re-runs both and
+  names the one it follows (``rerun``), or none — it judges nothing, the algorithm layer does;
 * the recorder's verdict: ``verified: true`` claims all of this;
   ``verified: false`` with a ``violation`` claims a failure — if replay finds
   none that claim is false (exit 1, check ``"trace claim"``), if replay
