@@ -6,12 +6,16 @@
 * each is held to its bound (``docs/bounds.md``): Algorithm 3.1's (3.1)+(3.2) for Algorithm 4.3, which adds no
   motion; topomark's bounds of Algorithms 4.4 and 4.5 as listed, checked on every small world and reached;
 * replay accepts a trace of either explorer under either name and says whose moves it made; a trace that
-  follows neither is still judged by its claims; a trace with one motion changed is refused.
+  follows neither is still judged by its claims; a trace with one motion changed is refused;
+* a program following the listing (topomark's literal explorer as a protocol client) passes the listing's
+  conformance suite with its costs, and the variant's suite with differences, never a failure.
 """
 
 from __future__ import annotations
 
 import copy
+import sys
+from pathlib import Path
 
 import pytest
 
@@ -23,6 +27,7 @@ from topomark.reference.algorithms.registrations.algorithm31 import enh4_listing
 from topomark.reference.algorithms.registry import REGISTRY, algorithm_spec
 from topomark.reference.explorers.edge_choices import EDGE_CHOICES
 from topomark.reference.explorers.policies import Policies
+from topomark.reference.oracle.conformance import export, run_algorithms, suite_algorithms
 from topomark.reference.replay.replay import replay
 from topomark.reference.run.explore import explore
 
@@ -189,3 +194,38 @@ def test_a_trace_named_for_the_listing_with_one_motion_changed_is_refused():
     trace[k]["motion"] = (trace[k]["motion"] + 1) % degree
     result = replay(world, trace)
     assert not result.ok and result.rerun is None and result.line is not None and result.line >= k + 1
+
+
+CLIENT = [sys.executable, str(Path(__file__).resolve().parent / "clients" / "topomark_client.py")]
+DIFFERS = {"enh3": "worst-enh3-n6-d4", "enh4": "complete-4", "enh5-d2": "paw-4"}  # a suite case where they part
+
+
+@pytest.fixture(scope="module")
+def suite(tmp_path_factory) -> Path:
+    root = tmp_path_factory.mktemp("listing-enhancements") / "suite"
+    export(root, cases=[], algorithms=suite_algorithms([n for ours in PAIRS for n in (ours, PAIRS[ours][0])]))
+    return root
+
+
+def _a_program_following_the_listing(suite: Path, ours: str, select: str | None) -> dict:
+    literal = PAIRS[ours][0]
+    rows = run_algorithms(suite, [*CLIENT, literal], [ours, literal], select=select)
+    return {(r.algorithm, r.to_json()["case"]): r.to_json() for r in rows}
+
+
+def _judged_fairly(rows: dict, ours: str) -> None:
+    literal = PAIRS[ours][0]
+    assert rows and all(j["verdict"] == "pass" for j in rows.values()), rows
+    for (algorithm, case), j in rows.items():
+        if algorithm == literal:  # its own suite: the listing's costs exactly
+            assert j["cost"] == j["reference"]["cost"] and j["difference"] is None
+            assert j["reference"]["variant"]["follows"] == "the thesis's listing"
+        elif j["cost"] != j["reference"]["cost"]:  # the variant's suite: a difference, never a failure
+            assert j["reason"] == "difference" and j["cost"] > j["reference"]["cost"]
+    assert rows[(ours, DIFFERS[ours])]["reason"] == "difference"
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("ours", sorted(PAIRS))
+def test_a_program_following_its_listing_passes_every_case_of_both_suites(suite, ours):
+    _judged_fairly(_a_program_following_the_listing(suite, ours, None), ours)
