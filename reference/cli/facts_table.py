@@ -5,15 +5,15 @@ this file; the tests check it is current).  See :mod:`topomark.reference.cli.fac
 from typing import Any
 
 TABLE: dict[str, Any] = {
-    'algorithms': ('basic', 'enh1', 'enh2', 'enh3', 'enh4', 'enh5-d1', 'enh5-d2', 'enh3+4', 'enh3+5', 'footprints',
-                   'labelled-dfs', 'dudek', 'dudek-listing', 'dudek-directional', 'dudek-directional-listing',
-                   'model-tree', 'single-leaf', 'case-3a', 'case-3b', 'case-3b-saving', 'case-1a', 'case-1b',
-                   'case-2', 'case-4', 'case-4-mn', 'case-5-v1', 'case-5-v2', 'case-0', 'case-5-edge',
-                   'case-dv-sum', 'extension-1', 'extension-2', 'extension-naive', 'case-1b-edgeinfo',
-                   'case-2-edgeinfo', 'case-1a-edgeinfo', 'case-4-edgeinfo', 'case-4-mn-edgeinfo',
-                   'case-5-directional', 'thread-carried', 'thread-circumference', 'thread-circumference-listing',
-                   'thread-knots', 'thread-explore', 'thread-explore-listing', 'thread-fallback',
-                   'thread-fallback-listing'),
+    'algorithms': ('basic', 'enh1', 'enh2', 'enh3', 'enh3-listing', 'enh4', 'enh5-d1', 'enh5-d2', 'enh4-listing',
+                   'enh5-d2-listing', 'enh3+4', 'enh3+5', 'footprints', 'labelled-dfs', 'dudek', 'dudek-listing',
+                   'dudek-directional', 'dudek-directional-listing', 'model-tree', 'single-leaf', 'case-3a',
+                   'case-3b', 'case-3b-saving', 'case-1a', 'case-1b', 'case-2', 'case-4', 'case-4-mn', 'case-5-v1',
+                   'case-5-v2', 'case-0', 'case-5-edge', 'case-dv-sum', 'extension-1', 'extension-2',
+                   'extension-naive', 'case-1b-edgeinfo', 'case-2-edgeinfo', 'case-1a-edgeinfo', 'case-4-edgeinfo',
+                   'case-4-mn-edgeinfo', 'case-5-directional', 'thread-carried', 'thread-circumference',
+                   'thread-circumference-listing', 'thread-knots', 'thread-explore', 'thread-explore-listing',
+                   'thread-fallback', 'thread-fallback-listing'),
     'parameters': (('signatures',
                     'global: validate each loop closing against every known vertex (§5.2.2); local: accept every '
                     "degree-matching one (the thesis's comparison)",

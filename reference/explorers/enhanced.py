@@ -71,6 +71,7 @@ class Technique:
     prunes = False  # filters H with expanded signatures
     stays = False  # stage 2: the robot remains where it stopped
     expands_new = False  # senses the neighbours of each new vertex
+    as_listed = False  # makes its listing's moves to the letter (no records beyond e before motion, no place skipped)
 
     @property
     def expands_place(self) -> int:
@@ -136,6 +137,12 @@ class Enhancement:
     def expand_place(self) -> int:
         return max((t.expands_place for t in self.techniques), default=0)
 
+    @property
+    def grafts(self) -> bool:
+        """Whether T's records beyond e join the trie on entering v_u, before any motion: topomark's change to
+        Algorithm 4.3 (its ``changes``), left out where a technique follows its listing to the letter."""
+        return not any(t.as_listed for t in self.techniques)
+
 
 @dataclass
 class EnhancedHypothesis(Hypothesis):
@@ -190,7 +197,8 @@ class EnhancedExplorer(LighthouseExplorer):
         self._states = {}
         for t in self.techniques:
             t.known_on_entering(self, it)
-        it.known += graft(self.T, self.trie, it.edge, self.lighthouse)
+        if self.enhancement.grafts:
+            it.known += graft(self.T, self.trie, it.edge, self.lighthouse)
         for t in self.techniques:
             t.on_enter(self, it)
 

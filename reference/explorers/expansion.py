@@ -34,7 +34,10 @@ on entering it (a record beyond e holds v_u's own signature only), so it
 follows Algorithm 4.5 step by step: lines 1–6, 9–22 are Algorithm 3.1's
 (:mod:`.algorithm31`); line 7 → :meth:`ExpandedSignaturesOfCurrentPlace.on_enter`
 (:func:`expand`); line 8 → ``prune`` (v_k behind e, ``known_on_entering``);
-line 23 → ``recorded_depth``.
+line 23 → ``recorded_depth``.  With ``as_listed`` a technique walks every place
+within d, sensed before or not (:func:`walk_every`): Algorithm 4.4 line 22 and
+Algorithm 4.5 line 7 to the letter, the explorers ``enh4-listing`` and
+``enh5-d2-listing`` (:mod:`~topomark.reference.explorers.enhancements_as_listed`).
 """
 
 from __future__ import annotations
@@ -47,7 +50,7 @@ from topomark.reference.explorers.enhanced import Technique
 from topomark.reference.explorers.execution_trie import ExecutionTrie, TrieNode
 from topomark.reference.explorers.tracing import ExecutedPathsOnSAndUnknownPlaces
 
-__all__ = ["ExpandedSignaturesOfNewVertices", "ExpandedSignaturesOfCurrentPlace", "expand"]
+__all__ = ["ExpandedSignaturesOfNewVertices", "ExpandedSignaturesOfCurrentPlace", "expand", "walk_every"]
 
 _ON_S_AND_D = ExecutedPathsOnSAndUnknownPlaces()
 
@@ -82,11 +85,26 @@ def expand(trie: ExecutionTrie, it, d: int) -> None:
     assert trie.at is start
 
 
+def walk_every(trie: ExecutionTrie, it, d: int) -> None:
+    """Algorithm 4.4 line 22 and 4.5 line 7 as listed: walk to every place within distance d through exits other
+    than the entry, out and back, whether it was sensed before or not."""
+    start = trie.at
+    for m in range(1, trie.at.sig.degree):
+        trie.forward(m, "expansion")
+        it.expansion += 1
+        if d > 1:
+            walk_every(trie, it, d - 1)
+        trie.back("expansion")
+        it.expansion += 1
+    assert trie.at is start
+
+
 @dataclass(frozen=True)
 class _ExpandedSignatures(Technique):
     """What Enhancements 4 and 5 share: v_k known behind e, H filtered, D recorded for new vertices to depth d."""
 
     d: int = 1
+    as_listed: bool = False  # walk every place within d, sensed before or not (Algorithm 4.4 line 22, 4.5 line 7)
     prunes = True
 
     def known_on_entering(self, explorer, it) -> None:
@@ -117,7 +135,7 @@ class ExpandedSignaturesOfNewVertices(_ExpandedSignatures):
     expands_new = True
 
     def after_non_loop(self, explorer, it) -> None:
-        expand(explorer.trie, it, self.d)
+        (walk_every if self.as_listed else expand)(explorer.trie, it, self.d)
 
 
 @dataclass(frozen=True)
@@ -131,4 +149,4 @@ class ExpandedSignaturesOfCurrentPlace(_ExpandedSignatures):
         return self.d
 
     def on_enter(self, explorer, it) -> None:
-        expand(explorer.trie, it, self.d)
+        (walk_every if self.as_listed else expand)(explorer.trie, it, self.d)

@@ -23,7 +23,9 @@ Correspondence with Algorithm 4.2 (``enh2`` follows it step by step): lines 1–
 ones were traced then; no path is executed before line 9, so nothing is rejected before it).  ``enh3`` adds T
 (lines 2, 21, 36–37 → :meth:`ExecutedPathsOnSAndUnknownPlaces.store`, :func:`~.records.record_trie`) and
 changes its listing: T's records beyond e count as known before any motion (:func:`~.records.graft`;
-``changes`` in its registration).
+``changes`` in its registration).  With ``as_listed`` they do not (the composition's ``grafts`` is false): T is
+looked up only while tracing the motions executed for e, Algorithm 4.3 to the letter (``enh3-listing``,
+:mod:`~topomark.reference.explorers.enhancements_as_listed`).
 """
 
 from __future__ import annotations
@@ -97,6 +99,8 @@ class ExecutedPathsOnS(Technique):
 @dataclass(frozen=True)
 class ExecutedPathsOnSAndUnknownPlaces(ExecutedPathsOnS):
     """Enhancement-3: tracing continues into T; after the join every executed path is recorded into T."""
+
+    as_listed: bool = False  # Algorithm 4.3 to the letter: T looked up only while tracing executed motions
 
     section = "§4.1, Enhancement-3, Algorithm 4.3"
     trace = "map+T"

@@ -20,6 +20,9 @@ lighthouse and kit, vocabularies, field sets, signatures, JSON limits — is
   :mod:`~topomark.reference.replay.hypotheses`, S and U rebuilt, I-1/I-2 after every
   iteration, m iterations, U empty, the final map extended-isomorphic to the
   world with the markers dropped);
+* where a Chapter 4 listing is registered beside topomark's variant of it (``enh3`` and ``enh3-listing``, …),
+  whose moves the trace made: :class:`~topomark.reference.replay.variant_match.VariantMatch` re-runs both and
+  names the one it follows (``rerun``), or none — it judges nothing, the algorithm layer does;
 * the recorder's verdict: ``verified: true`` claims all of this;
   ``verified: false`` with a ``violation`` claims a failure — if replay finds
   none that claim is false (exit 1, check ``"trace claim"``), if replay
@@ -60,6 +63,7 @@ from topomark.reference.replay.algorithm31_layer import Algorithm31Layer
 from topomark.reference.replay.divergence import Diverged
 from topomark.reference.replay.rerun_layer import RerunLayer, rerun_spec
 from topomark.reference.replay.robot_layer import RobotLayer
+from topomark.reference.replay.variant_match import VariantMatch, paired
 from topomark.reference.trace.header import header_family, header_kit, header_lighthouse
 from topomark.reference.trace.reader import EVENTS, EVENTS_2, _records, load_trace, parse_trace
 from topomark.reference.trace.sink import trace_line
@@ -130,6 +134,8 @@ class _Replay:
             if family.events else None  # Algorithm 3.1's family always has its lighthouse
         spec = rerun_spec(header)
         self.rerun = RerunLayer(world, header, spec, source) if spec is not None else None
+        pair = paired(header) if self.algorithm is not None else None  # Chapter 4: the listing and the variant
+        self.match = VariantMatch(world, header, pair) if pair is not None else None
         self.layers = family.layers + (("re-run",) if self.rerun is not None else ())
         self.family = family.name
         self.name = header["algorithm"]
@@ -142,6 +148,8 @@ class _Replay:
     def close(self) -> None:
         if self.rerun is not None:
             self.rerun.close()
+        if self.match is not None:
+            self.match.close()
 
     @property
     def iterations(self) -> int:
@@ -170,6 +178,8 @@ class _Replay:
                 alg.end(rec)
         if self.rerun is not None:
             self.rerun.record(rec, where)
+        if self.match is not None:
+            self.match.record(rec)
 
 
 def _claim(end: dict) -> str:
@@ -212,7 +222,8 @@ def replay(world: World, records: Iterable[dict[str, Any]], source: str = "<trac
                           "the trace claims a failure but replay finds none")
         return ReplayResult(False, f"line {line}: {false}", r.robot.steps, r.iterations, false, line, layers=r.layers)
     note = "" if rec["verified"] else " (the recorder did not judge the run: verified false, no violation)"
-    followed = None if r.rerun is None else r.rerun.followed.variant_json()
+    followed = r.rerun.followed.variant_json() if r.rerun is not None else \
+        _matched(r.match) if r.match is not None else None
     if "outcome" in rec:
         return ReplayResult(True, _stopped(r, rec), r.robot.steps, r.iterations, layers=r.layers, rerun=followed)
     return ReplayResult(True, _verified(r) + note, r.robot.steps, r.iterations, layers=r.layers, rerun=followed)
@@ -246,7 +257,23 @@ def _verified(r: _Replay) -> str:
     layers = " (robot and algorithm-3.1 layers)" if r.trace2 else ""
     return (f"{steps} traversals{ops}, {r.iterations} iterations, every perception matches the world, every "
             f"purpose and hypothesis record holds, Lemma 1, I-1/I-2 held after every iteration, the map is "
-            f"extended-isomorphic{layers}")
+            f"extended-isomorphic{layers}{_whose_moves(r.match)}")
+
+
+def _matched(match: VariantMatch) -> dict[str, Any] | None:
+    run = match.followed
+    return None if run is None else run.variant_json()
+
+
+def _whose_moves(match: VariantMatch | None) -> str:
+    """Where a Chapter 4 listing is registered beside topomark's variant: whose moves the trace made."""
+    if match is None:
+        return ""
+    run = match.followed
+    if run is None:
+        return ("; its moves are neither " + " nor ".join(f"{s.name}'s" for s in match.specs) +
+                " (another choice where the thesis leaves one open: the claims above are what is judged)")
+    return f"; its moves are {run.name}'s ({run.variant_json()['follows']}), re-run on the world"
 
 
 def _stopped(r: _Replay, end: dict) -> str:

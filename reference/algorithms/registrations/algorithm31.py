@@ -1,5 +1,6 @@
 """Registration of Algorithm 3.1, ``basic`` (thesis §3.3, §3.4), and of its Chapter 4 enhancements
-(§4.1–4.3): ``enh1`` … ``enh5-d2``, ``enh3+4``, ``enh3+5``.
+(§4.1–4.3): ``enh1`` … ``enh5-d2``, ``enh3+4``, ``enh3+5``, and the listings three of them change, as written:
+``enh3-listing``, ``enh4-listing``, ``enh5-d2-listing``.
 
 All are *lighthouse algorithms*: they establish v0 with any lighthouse strategy
 (:mod:`topomark.reference.explorers.lighthouses`; the listed kit is the default
@@ -18,6 +19,16 @@ Decisions:
   3.1's exact bound (3.1)+(3.2) (§3.5.2), and every checked run holds them to it.  Enhancements 4 and
   5 add expansion traversals that (3.1)+(3.2) does not count ("O(m·d_max) extra traversals may be required",
   §4.2), so theirs is the asymptotic O(m²n) of Chapter 4, measured by the bench (``tables``), never checked per run.
+* **Three listings as written.**  ``enh3``, ``enh4`` and ``enh5-d2`` change their listings (:data:`CHANGES`);
+  Algorithms 4.3, 4.4 and 4.5 (d = 2) as written are registered beside them
+  (:mod:`~topomark.reference.explorers.enhancements_as_listed`; each variant's ``listing_entry``), so a program
+  following a listing has a reference run and a suite of its own.  ``enh3-listing`` adds no motion and keeps
+  (3.1)+(3.2) (``thesis``).  ``enh4-listing`` and ``enh5-d2-listing`` are held to topomark's bounds of the
+  listing as written (``listing``; ``docs/bounds.md``): Algorithm 3.1's passes with H pruned, plus line 22's
+  2Σ(d_k − 1) ≤ 2(2m − n) expansion traversals (:func:`enh4_listing_bound`), or line 7's walk to every place
+  within distance 2 on each of the m passes, 2Σ d_x over v_u's other neighbours ≤ 2·min((n − 1)(n − 2),
+  2m − 2) (:func:`enh5_d2_listing_bound`).  The variants keep Chapter 4's O(m²n).  ``enh3+4`` and ``enh3+5``
+  get no literal entry: §4.3 combines its parts "in a strategic manner" and lists nothing.
 * **What the exact bound counts** (``cost-bound``).  (3.1)+(3.2) bounds the passes through Algorithm 3.1's loop
   body (§3.5.2: "the number of edge traversals required in one pass through the loop body"), which starts with
   the marker already at v0 (line 1).  A lighthouse that is searched for first (§5.1: "first conduct a
@@ -30,8 +41,9 @@ Decisions:
 
 Examples
 --------
->>> [s.name for s in SPECS]
-['basic', 'enh1', 'enh2', 'enh3', 'enh4', 'enh5-d1', 'enh5-d2', 'enh3+4', 'enh3+5']
+>>> [s.name for s in SPECS]  # doctest: +NORMALIZE_WHITESPACE
+['basic', 'enh1', 'enh2', 'enh3', 'enh4', 'enh5-d1', 'enh5-d2', 'enh3+4', 'enh3+5', 'enh3-listing', 'enh4-listing',
+ 'enh5-d2-listing']
 >>> SPECS[0].bound_for(3, 3), SPECS[4].bound_for(3, 3)  # a triangle: (3.1) + (3.2); enh4: asymptotic only
 (22, None)
 >>> SPECS[4].bound_note
@@ -46,10 +58,12 @@ from topomark.reference.algorithms.algorithm_spec import ALGORITHM_3_1_CHECKS, A
 from topomark.reference.algorithms.bounds import upper_bound
 from topomark.reference.explorers.algorithm31 import LighthouseExplorer
 from topomark.reference.explorers.compositions import ENHANCEMENTS, EXPLORERS
+from topomark.reference.explorers.enhancements_as_listed import AS_LISTED, LISTING_EXPLORERS, VARIANT_OF
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES
 from topomark.reference.explorers.policies import EDGE_POLICIES
 
-__all__ = ["SPECS", "POLICY_OPTIONS", "BOUND", "CHANGES", "lighthouse_algorithm", "policy_options"]
+__all__ = ["SPECS", "POLICY_OPTIONS", "BOUND", "CHANGES", "lighthouse_algorithm", "policy_options",
+           "enh4_listing_bound", "enh5_d2_listing_bound"]
 
 
 def policy_options(edge: str = "nearest") -> tuple[str, ...]:
@@ -138,10 +152,45 @@ def _enhancement(name: str) -> AlgorithmSpec:
     inherits = not (enh.prune or enh.expand_new or enh.expand_place)
     bound = f"{BOUND}, inherited (§4.1 adds no motion)" if inherits else \
         "O(m²n) (Chapter 4; its expansion traversals are outside (3.1)+(3.2), §4.2)"
-    return lighthouse_algorithm(name, enh.section, EXPLORERS[name], bound, inherits, changes=CHANGES.get(name))
+    listed = next((k for k, v in VARIANT_OF.items() if v == name), None)
+    return lighthouse_algorithm(name, enh.section, EXPLORERS[name], bound, inherits, changes=CHANGES.get(name),
+                                listing_entry=listed)
+
+
+def enh4_listing_bound(n: int, m: int) -> int:
+    """Topomark's bound for Algorithm 4.4 as listed (``enh4-listing``; module docstring): (3.1)+(3.2) + 2(2m − n)."""
+    return upper_bound(n, m) + 2 * max(0, 2 * m - n)
+
+
+def enh5_d2_listing_bound(n: int, m: int) -> int:
+    """Topomark's bound for Algorithm 4.5 as listed with d = 2 (``enh5-d2-listing``; module docstring):
+    (3.1)+(3.2) + 2m·min((n − 1)(n − 2), 2m − 2)."""
+    return upper_bound(n, m) + 2 * m * max(0, min((n - 1) * (n - 2), 2 * m - 2))
+
+
+_LISTING = "topomark's bound for the thesis's listing as written (docs/bounds.md), behind O(m²n) (Chapter 4)"
+_LISTING_BOUNDS = {
+    "enh4-listing": (enh4_listing_bound, f"(3.1) + (3.2) + 2(2m − n), {_LISTING}: Algorithm 3.1's passes with H "
+                                         "pruned, and line 22's 2Σ(d_k − 1) ≤ 2(2m − n) expansion traversals (§4.2)"),
+    "enh5-d2-listing": (enh5_d2_listing_bound, f"(3.1) + (3.2) + 2m·min((n − 1)(n − 2), 2m − 2), {_LISTING}: "
+                                               "Algorithm 3.1's passes with H pruned, and line 7's walk to every place "
+                                               "within distance 2 of v_u on each of the m passes"),
+}
+
+
+def _as_listed(name: str) -> AlgorithmSpec:
+    """A Chapter 4 listing as written, registered beside the composition that changes it (module docstring)."""
+    enh, explorer = AS_LISTED[name], LISTING_EXPLORERS[name]
+    thesis = f"{enh.section}, as listed"
+    if name not in _LISTING_BOUNDS:  # Enhancement-3 adds no motion (§4.1): Algorithm 3.1's own bound
+        return lighthouse_algorithm(name, thesis, explorer, f"{BOUND}, inherited (§4.1 adds no motion)")
+    bound_fn, formula = _LISTING_BOUNDS[name]
+    return lighthouse_algorithm(name, thesis, explorer, "O(m²n) (Chapter 4); bound_fn: topomark's, for the listing as "
+                                "written", bound_fn=bound_fn, bound_formula=formula, bound_source="listing")
 
 
 SPECS = (
     lighthouse_algorithm("basic", "§3.3, Algorithm 3.1", LighthouseExplorer),
     *(_enhancement(name) for name in ENHANCEMENTS),
+    *(_as_listed(name) for name in AS_LISTED),
 )
