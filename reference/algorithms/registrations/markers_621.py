@@ -129,18 +129,19 @@ def footprint_spec(name, thesis, markers, explorer, kit_fn, marker_bound_fn, cit
                                        f"search behind O(mn) ({cites})")
 
 
-def with_listing(spec: AlgorithmSpec, literal: type) -> tuple[AlgorithmSpec, AlgorithmSpec]:
+def with_listing(spec: AlgorithmSpec, literal: type,
+                 what: str = "the search as listed (Algorithm 6.1 lines 11–19, Algorithm 6.3 lines 18–24)"
+                 ) -> tuple[AlgorithmSpec, AlgorithmSpec]:
     """A footprint entry that changes its listing's search (:data:`SEARCH_CHANGES`) and, beside it, the entry
     ``NAME-listing`` whose explorer ``literal`` searches as listed (``literal = True``): the same kit, markers and
     bound formula, which is topomark's bound for the search as listed (``docs/bounds.md``; checked against the
-    literal entries on every small world, ``tests/test_listing_footprints.py``)."""
+    literal entries on every small world, ``tests/test_listing_footprints.py``).  ``what``: how the thesis
+    entry names the listing followed."""
     name = f"{spec.name}-listing"
     assert spec.changes is not None and getattr(literal, "literal", False) and literal.name == name
-    listed = replace(spec, name=name, thesis=f"{spec.thesis}, the search as listed (Algorithm 6.1 lines 11–19, "
-                                             "Algorithm 6.3 lines 18–24)", explorer=literal,
+    listed = replace(spec, name=name, thesis=f"{spec.thesis}, {what}", explorer=literal,
                      bound=spec.bound.split("; bound_fn")[0] + "; bound_fn: topomark's, for the search as listed", changes=None, listing_entry=None, bound_source="listing",
-                     bound_formula="(n − 1)² + (m − n + 1)(3n − 1), topomark's bound for the search as listed "
-                                   "(Algorithm 6.1 lines 11–19, Algorithm 6.3 lines 18–24; docs/bounds.md), "
+                     bound_formula=f"(n − 1)² + (m − n + 1)(3n − 1), topomark's bound for {what} (docs/bounds.md), "
                                    f"behind O(mn) ({spec.bound_formula.rsplit('(', 1)[-1]}")
     return replace(spec, listing_entry=name), listed
 
