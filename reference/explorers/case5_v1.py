@@ -126,9 +126,9 @@ class VertexCountsThenLighthouse(TwoPhases, VertexCounts):
             return super().explored_exit(x, sig)
         if self.directional:
             self.one_place(None, sig.vertex_count, places)
-        exits = [t for t, far in enumerate(self.M.links(x)) if far is not None and far[0] in places]
-        self.one_place(None, sig.vertex_count, [self.M.links(x)[t][0] for t in exits])
-        return exits[0] if exits else None
+        ends = [(t, far[0]) for t, far in enumerate(self.M.links(x)) if far is not None and far[0] in places]
+        self.one_place(None, sig.vertex_count, [w for _, w in ends])
+        return ends[0][0] if ends else None
 
     def lighthouse_path(self, v: int) -> list[MapDart]:
         """Lines 21–24: a shortest path of S from v_k' = ``v`` to the nearest marked v_l, then to v_n."""

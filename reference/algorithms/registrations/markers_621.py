@@ -135,12 +135,14 @@ def with_listing(spec: AlgorithmSpec, literal: type,
     """A footprint entry that changes its listing's search (:data:`SEARCH_CHANGES`) and, beside it, the entry
     ``NAME-listing`` whose explorer ``literal`` searches as listed (``literal = True``): the same kit, markers and
     bound formula, which is topomark's bound for the search as listed (``docs/bounds.md``; checked against the
-    literal entries on every small world, ``tests/test_listing_footprints.py``).  ``what``: how the thesis
+    literal entries on every small world, ``tests/test_listing_cases.py``).  ``what``: how the thesis
     entry names the listing followed."""
     name = f"{spec.name}-listing"
-    assert spec.changes is not None and getattr(literal, "literal", False) and literal.name == name
+    assert spec.changes is not None and getattr(literal, "literal", False) and getattr(literal, "name", "") == name
+    assert spec.bound is not None and spec.bound_formula is not None  # every footprint entry has both
     listed = replace(spec, name=name, thesis=f"{spec.thesis}, {what}", explorer=literal,
-                     bound=spec.bound.split("; bound_fn")[0] + "; bound_fn: topomark's, for the search as listed", changes=None, listing_entry=None, bound_source="listing",
+                     bound=spec.bound.split("; bound_fn")[0] + "; bound_fn: topomark's, for the search as listed",
+                     changes=None, listing_entry=None, bound_source="listing",
                      bound_formula=f"(n − 1)² + (m − n + 1)(3n − 1), topomark's bound for {what} (docs/bounds.md), "
                                    f"behind O(mn) ({spec.bound_formula.rsplit('(', 1)[-1]}")
     return replace(spec, listing_entry=name), listed

@@ -149,7 +149,7 @@ def failing_listing(spec: AlgorithmSpec, explorer: type, reason: str, way: str,
     correct map (``docs/bounds.md``).  ``ways``: the listing's declared ways where they are not ``spec``'s and
     ``way``."""
     name = f"{spec.name}-listing"
-    assert spec.changes is not None and explorer.literal and explorer.name == name
+    assert spec.changes is not None and getattr(explorer, "literal", False) and getattr(explorer, "name", "") == name
     listed = replace(spec, name=name, thesis=f"{spec.thesis}, as listed: fails", explorer=explorer, changes=None,
                      listing_entry=None, status=EXPECTED_TO_FAIL, status_reason=reason,
                      ways=(*spec.ways, way) if ways is None else ways)
