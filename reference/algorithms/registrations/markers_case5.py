@@ -129,12 +129,13 @@ map at the end — with K > 3 markers it never fails for want of them."""
 
 _COUNTER_FAILS = ("Algorithm 6.4's counter as listed (i ← 1 at line 3, dropped at line 13) gives v0 and the first new "
                   "place one marker each, yet line 9 (Algorithm 6.2 line 18) names v_u by its unique count (§6.2.1 "
-                  "Case 5): where that count must name v_u the run ends failed (on the triangle, for one); where it "
-                  "need not, the listing maps the world")
+                  "Case 5): where that count must name v_u the run ends failed (on the triangle, cycle:n=3, for "
+                  "one); where it need not, the listing maps the world")
 _LINE_23_FAILS = ("Algorithm 6.5 line 23 as printed confirms a hypothesis whose perceptions \"do not match "
                   "throughout\", which line 21 has already rejected: phase II never confirms one and adds a known "
-                  "place again where a loop must be closed by a hypothesis (the paw entered from its pendant with K = "
-                  "4: the wrong map); phase I's search is Case 1b's as listed")
+                  "place again where a loop must be closed by a hypothesis (with --markers 4: the paw entered from "
+                  "its pendant, or lattice:rows=2,cols=3, end with the wrong map); phase I's search is Case 1b's as "
+                  "listed")
 """Why ``case-5-v2-listing`` fails.  Its declared ways leave phase II out: on the suite's worlds every run that
 reaches it must close a loop there and ends with a wrong map, which no conformance case can hold (the smallest-kit
 case is passed over, :mod:`~topomark.reference.oracle.conformance.coverage`)."""
