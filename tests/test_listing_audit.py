@@ -146,3 +146,47 @@ def test_entries_changing_their_listing_are_those_the_audit_found():
     follows = {"basic", "enh1", "enh2", "enh5-d1", "labelled-dfs", "single-leaf", "case-3a", "case-3b",
                "case-3b-saving", "case-0", "case-5-edge", "extension-1", "extension-naive"}
     assert audited <= changed and not follows & changed
+
+
+PAW = {"v0": ["v3"], "v1": ["v2", "v3"], "v2": ["v1", "v3"], "v3": ["v0", "v1", "v2"]}  # a triangle, a pendant
+
+
+def _multi_edge_hypotheses_too(monkeypatch):
+    """Algorithm 5.1 line 17: every unexplored edge whose known end shows v_u's degree is a loop closing, one
+    that would make a multi-edge too (a self-loop is left out: e' is another edge than e)."""
+    from topomark.reference.explorers import model_tree
+    from topomark.reference.explorers.model_tree import Closing, Model, validate
+
+    def augment(self, record, index, shape, dart, degree, children):
+        for hyp in shape.open_darts():
+            if hyp[0] == dart[0] or shape.degree(hyp[0]) != degree:
+                continue
+            closing = Closing(index, hyp)
+            record.hypotheses.append(closing)
+            child = shape.join(dart, hyp)
+            if not self._admissible(child):
+                closing.outcome = "cue"
+                continue
+            ok, closing.moves = validate(self._walker, child, hyp[0], hyp[1], self.options["entry-check"] == "yes")
+            closing.outcome = "case 3" if ok else "case 2"
+            if ok:
+                self._add(children, Model(child, hyp))
+        child = shape.add_vertex(degree, dart)
+        if self._admissible(child):
+            self._add(children, Model(child, (child.n - 1, 0)))
+    monkeypatch.setattr(model_tree.ModelTreeExplorer, "_augment", augment)
+
+
+def test_model_tree_s_listing_moves_more_on_the_smallest_world_found(monkeypatch):
+    """The paw from its hub, told n (``--cue-n 4``: without a cue no run on a world with a cycle ends within the
+    default window soon enough to search): the smallest world an enumeration of every embedded world of up to
+    four vertices from every start found where line 17's multi-edge hypotheses cost validation walks (30
+    against 32).  model-tree is not deterministic in the thesis's sense (it may fail, §5.2.2), but its runs
+    draw nothing at random: the same world and options make the same run, so no seed is needed."""
+    world, spec = _world(PAW, "v3", "v1"), algorithm_spec("model-tree")
+    assert spec.changes is not None and not spec.follows_listing and not spec.deterministic
+    runs = [explore(world, spec, options={"cue-n": 4}) for _ in range(2)]
+    assert [(r.outcome, r.cost) for r in runs] == [("correct", 30)] * 2
+    _multi_edge_hypotheses_too(monkeypatch)
+    literal = explore(world, spec, check=False, options={"cue-n": 4})
+    assert literal.cost == 32 and literal.hypotheses > runs[0].hypotheses

@@ -6,12 +6,16 @@ from typing import Any
 
 TABLE: dict[str, Any] = {
     'algorithms': ('basic', 'enh1', 'enh2', 'enh3', 'enh3-listing', 'enh4', 'enh5-d1', 'enh5-d2', 'enh4-listing',
-                   'enh5-d2-listing', 'enh3+4', 'enh3+5', 'footprints', 'labelled-dfs', 'dudek', 'dudek-listing',
-                   'dudek-directional', 'dudek-directional-listing', 'model-tree', 'single-leaf', 'case-3a',
-                   'case-3b', 'case-3b-saving', 'case-1a', 'case-1b', 'case-2', 'case-4', 'case-4-mn', 'case-5-v1',
-                   'case-5-v2', 'case-0', 'case-5-edge', 'case-dv-sum', 'extension-1', 'extension-2',
-                   'extension-naive', 'case-1b-edgeinfo', 'case-2-edgeinfo', 'case-1a-edgeinfo', 'case-4-edgeinfo',
-                   'case-4-mn-edgeinfo', 'case-5-directional', 'thread-carried', 'thread-circumference',
+                   'enh5-d2-listing', 'enh3+4', 'enh3+5', 'footprints', 'footprints-listing', 'labelled-dfs',
+                   'dudek', 'dudek-listing', 'dudek-directional', 'dudek-directional-listing', 'model-tree',
+                   'single-leaf', 'case-3a', 'case-3b', 'case-3b-saving', 'case-1a', 'case-1a-listing', 'case-1b',
+                   'case-1b-listing', 'case-2', 'case-2-listing', 'case-4', 'case-4-listing', 'case-4-mn',
+                   'case-4-mn-listing', 'case-5-v1', 'case-5-v1-listing', 'case-5-v2', 'case-5-v2-listing',
+                   'case-0', 'case-5-edge', 'case-dv-sum', 'case-dv-sum-listing', 'extension-1', 'extension-2',
+                   'extension-2-listing', 'extension-naive', 'case-1b-edgeinfo', 'case-1b-edgeinfo-listing',
+                   'case-2-edgeinfo', 'case-2-edgeinfo-listing', 'case-1a-edgeinfo', 'case-1a-edgeinfo-listing',
+                   'case-4-edgeinfo', 'case-4-edgeinfo-listing', 'case-4-mn-edgeinfo', 'case-4-mn-edgeinfo-listing',
+                   'case-5-directional', 'case-5-directional-listing', 'thread-carried', 'thread-circumference',
                    'thread-circumference-listing', 'thread-knots', 'thread-explore', 'thread-explore-listing',
                    'thread-fallback', 'thread-fallback-listing'),
     'parameters': (('signatures',
@@ -51,10 +55,14 @@ TABLE: dict[str, Any] = {
                     1000000, 'single-leaf'),
                    ('markers',
                     'how many markers the robot carries (default: what its case is assured, from n and m)', None,
-                    'case-3a, case-3b, case-3b-saving, case-1a, case-1b, case-2, case-4, case-4-mn, case-5-v1, '
-                    'case-5-v2, case-5-edge, case-dv-sum, extension-1, extension-2, extension-naive, '
-                    'case-1b-edgeinfo, case-2-edgeinfo, case-1a-edgeinfo, case-4-edgeinfo, case-4-mn-edgeinfo, '
-                    'case-5-directional'),
+                    'case-3a, case-3b, case-3b-saving, case-1a, case-1a-listing, case-1b, case-1b-listing, case-2, '
+                    'case-2-listing, case-4, case-4-listing, case-4-mn, case-4-mn-listing, case-5-v1, '
+                    'case-5-v1-listing, case-5-v2, case-5-v2-listing, case-5-edge, case-dv-sum, '
+                    'case-dv-sum-listing, extension-1, extension-2, extension-2-listing, extension-naive, '
+                    'case-1b-edgeinfo, case-1b-edgeinfo-listing, case-2-edgeinfo, case-2-edgeinfo-listing, '
+                    'case-1a-edgeinfo, case-1a-edgeinfo-listing, case-4-edgeinfo, case-4-edgeinfo-listing, '
+                    'case-4-mn-edgeinfo, case-4-mn-edgeinfo-listing, case-5-directional, '
+                    'case-5-directional-listing'),
                    ('thread-length',
                     "the thread's length L in edges (an integer 1..1,000,000, the cap of a marker count); the "
                     'robot knows it',

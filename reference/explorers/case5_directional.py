@@ -44,7 +44,7 @@ from topomark.reference.explorers.marker_walk import MarkerStep
 from topomark.reference.explorers.policies import nearest
 from topomark.reference.explorers.walker import tree_path
 
-__all__ = ["DirectionalCountsThenLighthouse"]
+__all__ = ["DirectionalCountsThenLighthouse", "ListingDirectionalCountsThenLighthouse"]
 
 
 class DirectionalCountsThenLighthouse(VertexCountsThenLighthouse):
@@ -66,3 +66,11 @@ class DirectionalCountsThenLighthouse(VertexCountsThenLighthouse):
         if light is None:
             raise AlgorithmFailed(f"no marked place is connected to map vertex {v}")
         return tree_path(parent, v, light)
+
+
+class ListingDirectionalCountsThenLighthouse(DirectionalCountsThenLighthouse):
+    """Version-1 with directional V-markers and Algorithm 6.4's counter as listed (``case-5-directional-listing``):
+    v0 and the first new place both show one marker, so a run fails where that count must name v_u."""
+
+    name = "case-5-directional-listing"
+    literal = True

@@ -27,6 +27,7 @@ Decisions, with the thesis references (each tested in ``tests/test_markers_case5
   gets 1 and the j-th new place j + 1 (i ← 2 at line 3).  The literal counter
   cannot map the triangle, the smallest world with a loop edge: the loop edge's
   far end shows one marker, the label of two places (the ``failed`` outcome).
+  :class:`ListingVertexCountsThenLighthouse` (``case-5-v1-listing``) counts as listed and fails there.
 * **Where phase I ends.**  Line 12 "if the robot has at least i markers" is the
   robot trying the drop (the kernel's robot counts nothing; the simulator
   refuses a drop the kit cannot cover before anything changes,
@@ -67,7 +68,7 @@ from topomark.reference.explorers.counted_markers import VertexCounts
 from topomark.reference.explorers.marker_walk import MarkerStep
 from topomark.reference.explorers.walker import tree_path
 
-__all__ = ["VertexCountsThenLighthouse"]
+__all__ = ["VertexCountsThenLighthouse", "ListingVertexCountsThenLighthouse"]
 
 
 class VertexCountsThenLighthouse(TwoPhases, VertexCounts):
@@ -75,9 +76,11 @@ class VertexCountsThenLighthouse(TwoPhases, VertexCounts):
     (phase II, held: :data:`~.case5_phase2.PHASE_TWO`, which asks :meth:`lighthouse_path` and :meth:`confirms`)."""
 
     name = "case-5-v1"
+    literal = False  # True: Algorithm 6.4's counter as listed, i ← 1 at line 3 (ListingVertexCountsThenLighthouse)
 
     def arrive(self, it: MarkerStep, sig: Signature) -> None:
         if sig.vertex_count:  # lines 7-10: the count names v_u; its back-link by probing
+            self.one_place(it, sig.vertex_count, self.places_counted(sig.vertex_count))
             place = self.vertex_of.get(sig.vertex_count)
             if place is None or self.M.degree(place) != sig.degree:
                 raise AlgorithmFailed(f"iteration {it.number} senses {sig}, which no marked place of the map shows")
@@ -97,8 +100,35 @@ class VertexCountsThenLighthouse(TwoPhases, VertexCounts):
         self.probe(it, place, sig.degree)
 
     def next_count(self) -> int:
-        """i at line 13: v0 has 1, the j-th place discovered gets j + 1 (the counter decision above)."""
-        return len(self.count_of) + 1
+        """i at line 13: v0 has 1, the j-th place discovered gets j + 1 (the counter decision above); as listed
+        (``literal``), i starts at 1 (line 3), so the j-th place gets j and the first one v0's count."""
+        return len(self.count_of) + (0 if self.literal else 1)
+
+    def places_counted(self, count: int) -> list[int]:
+        """The places of the map marked with ``count`` markers (one, but for the listing's counter)."""
+        return [v for v, c in self.count_of.items() if c == count]
+
+    def one_place(self, it: MarkerStep | None, count: int, places: list[int]) -> None:
+        """Algorithm 6.2 line 18 (which lines 8–9 follow) names v_u by its *unique* count: fail where the
+        listing's counter gave ``count`` markers to more than one of ``places``."""
+        if len(places) > 1:
+            where = f"iteration {it.number}: " if it is not None else ""
+            raise AlgorithmFailed(f"{where}{count} marker(s) mark {len(places)} places of the map (Algorithm 6.4's "
+                                  "counter, lines 1, 3 and 13, gives v0 and the first new place one each): the "
+                                  "count does not name the place")
+
+    def explored_exit(self, x: int, sig: Signature) -> int | None:
+        """Line 9 (Algorithm 6.2 lines 19–35): as :meth:`VertexCounts.explored_exit`; with the listing's counter a
+        count two places share is read as "c ∈ s", the counts at the far ends of x's explored edges, and fails
+        where it fits more than one of them (or, directional, names no one place)."""
+        places = self.places_counted(sig.vertex_count) if sig.vertex_count else []
+        if len(places) < 2:
+            return super().explored_exit(x, sig)
+        if self.directional:
+            self.one_place(None, sig.vertex_count, places)
+        ends = [(t, far[0]) for t, far in enumerate(self.M.links(x)) if far is not None and far[0] in places]
+        self.one_place(None, sig.vertex_count, [w for _, w in ends])
+        return ends[0][0] if ends else None
 
     def lighthouse_path(self, v: int) -> list[MapDart]:
         """Lines 21–24: a shortest path of S from v_k' = ``v`` to the nearest marked v_l, then to v_n."""
@@ -114,3 +144,11 @@ class VertexCountsThenLighthouse(TwoPhases, VertexCounts):
     def confirms(self, h: Hypothesis) -> bool:
         """A hypothesis whose perceptions matched P^E throughout is confirmed (Algorithm 6.4 line 29)."""
         return True
+
+
+class ListingVertexCountsThenLighthouse(VertexCountsThenLighthouse):
+    """Algorithm 6.4 as listed (``case-5-v1-listing``): its counter gives v0 and the first new place one marker
+    each, so a run fails where a count two places share must name v_u (the triangle, for one)."""
+
+    name = "case-5-v1-listing"
+    literal = True

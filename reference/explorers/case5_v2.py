@@ -75,7 +75,7 @@ from topomark.reference.explorers.edge_footprints import FootprintSearch, Vertex
 from topomark.reference.explorers.marker_walk import MarkerStep
 from topomark.reference.explorers.walker import tree_path
 
-__all__ = ["VertexEdgeThenLighthouse", "E0"]
+__all__ = ["VertexEdgeThenLighthouse", "E0", "ListingVertexEdgeThenLighthouse"]
 
 E0: MapDart = (0, 0)
 """The double-marked edge e0, as v0's map exit: the exit the robot faces at the start."""
@@ -152,5 +152,15 @@ class VertexEdgeThenLighthouse(TwoPhases, VertexEdgeFootprints):
 
     def confirms(self, h: Hypothesis) -> bool:
         """A hypothesis whose perceptions matched P^E throughout is confirmed: line 23 read as "match
-        throughout" (the decision above; read literally, "do not match throughout", it would never confirm one)."""
-        return True
+        throughout" (the decision above; read literally, "do not match throughout", it would never confirm one).
+        As listed (``literal``): never — a hypothesis that matched throughout is not confirmed."""
+        return not self.literal
+
+
+class ListingVertexEdgeThenLighthouse(VertexEdgeThenLighthouse):
+    """Algorithm 6.5 as listed (``case-5-v2-listing``): phase I's search as Algorithm 6.1 lines 11–19 list it
+    (Case 1b's, line 12), and line 23 as printed, so phase II confirms no hypothesis and maps a loop it must close
+    by one (the paw with K = 4) wrongly."""
+
+    name = "case-5-v2-listing"
+    literal = True

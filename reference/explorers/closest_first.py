@@ -51,7 +51,7 @@ from __future__ import annotations
 from topomark.reference.explorers.policies import Policies
 from topomark.reference.explorers.edge_footprints import DoubleMarkedEdges, EdgeFootprints
 
-__all__ = ["ClosestFirst", "ClosestFirstDouble", "NEAREST"]
+__all__ = ["ClosestFirst", "ClosestFirstDouble", "NEAREST", "ListingClosestFirst", "ListingClosestFirstDouble"]
 
 NEAREST = Policies(edge="nearest")
 """Rule (1), §6.2.1 Case 4: the edge whose known end is closest to the robot (ties by U's order)."""
@@ -69,6 +69,12 @@ class ClosestFirst(EdgeFootprints):
         return 0 if self.M.dart_marks(vk) else 1
 
 
+class ListingClosestFirst(ClosestFirst):
+    """Algorithm 6.3 as listed (``case-4-listing``): its search as lines 18–24 list it."""
+
+    name, literal = "case-4-listing", True
+
+
 class ClosestFirstDouble(DoubleMarkedEdges):
     """The extension of Case 2 (§6.2.1 Case 4): two markers on a non-loop edge only from an unmarked v_k."""
 
@@ -79,3 +85,9 @@ class ClosestFirstDouble(DoubleMarkedEdges):
     def non_loop_markers(self, vk: int) -> int:
         """Two markers on e if v_k has no marked edge, else none (§6.2.1 Case 4)."""
         return 0 if self.M.dart_marks(vk) else 2
+
+
+class ListingClosestFirstDouble(ClosestFirstDouble):
+    """The closest-first extension of Case 2 with the search as listed (``case-4-mn-listing``)."""
+
+    name, literal = "case-4-mn-listing", True

@@ -83,7 +83,8 @@ sensed count is a known neighbour over an explored edge of v_k').  Left open: wh
 order of line 21's edges (clockwise from the entry).  ``case-3b`` (no listing) follows §6.2.1 Case 3b's text:
 the drop trip, and observation (2)'s identification with no motion (:meth:`EdgeCounts.identify`).
 ``case-dv-sum`` (§6.2.2, no listing) is Algorithm 6.2 with directional markers; it changes line 6's order once
-the blank is known (``changes`` in its registration, the last decision above).
+the blank is known (``changes`` in its registration, the last decision above);
+:class:`ListingDirectionalVertexCounts` (``case-dv-sum-listing``) takes line 6 by the edge policy alone.
 
 Examples
 --------
@@ -103,7 +104,7 @@ from topomark.spec.signature import Signature, signature_at
 from topomark.reference.explorers.marker_walk import MarkerStep, MarkerWalk
 from topomark.reference.explorers.policies import bfs
 
-__all__ = ["EdgeCounts", "VertexCounts", "DirectionalVertexCounts", "sum_to"]
+__all__ = ["EdgeCounts", "VertexCounts", "DirectionalVertexCounts", "ListingDirectionalVertexCounts", "sum_to"]
 
 
 def sum_to(k: int) -> int:
@@ -245,11 +246,20 @@ class DirectionalVertexCounts(VertexCounts):
 
     name = "case-dv-sum"
     directional = True
+    literal = False  # True: line 6 by the edge policy alone (ListingDirectionalVertexCounts)
 
     @property
     def edge_policy(self):
         """The edge policy given, except that the blank place's unexplored edges go first once it is known."""
-        return self.policies if self.blank is None else _BlankFirst(self.policies, self.blank)
+        return self.policies if self.blank is None or self.literal else _BlankFirst(self.policies, self.blank)
+
+
+class ListingDirectionalVertexCounts(DirectionalVertexCounts):
+    """Algorithm 6.2 as listed with §6.2.2's directional markers (``case-dv-sum-listing``): line 6 takes e by the
+    edge policy alone, so a loop edge entering the blank has its back-link probed (lines 19–35)."""
+
+    name = "case-dv-sum-listing"
+    literal = True
 
 
 class _BlankFirst:

@@ -55,6 +55,9 @@ Decisions, with the thesis references (each shown in ``tests/test_markers_621.py
   every candidate, v_k's neighbours included, and check each where the
   robot goes): every footprint search's registration says so (``changes``,
   :data:`~topomark.reference.algorithms.registrations.markers_621.SEARCH_CHANGES`).
+  ``literal = True`` (the ``-listing`` classes and entries) searches as listed: every vertex of S but v_k
+  with an unexplored edge, v_u's degree and its marks, in the same order by the same paths, each checked
+  where the robot goes and nowhere on the way.
 * **Case 1b with m markers**: the robot learns that it is out
   of markers when a drop is refused (:meth:`MarkerWalk.try_drop`; the
   kernel's robot does not count what it carries), that is *after* following
@@ -93,7 +96,7 @@ from topomark.reference.explorers.policies import in_preorder, open_ends_beyond,
 from topomark.reference.explorers.marker_walk import MarkerStep, MarkerWalk
 
 __all__ = ["marks_key", "Marking", "UNDIRECTED", "FootprintSearch", "EdgeFootprints", "VertexEdgeFootprints",
-           "DoubleMarkedEdges"]
+           "DoubleMarkedEdges", "ListingEdgeFootprints", "ListingVertexEdgeFootprints", "ListingDoubleMarkedEdges"]
 
 
 def marks_key(sig: Signature) -> tuple[int, ...]:
@@ -137,6 +140,7 @@ class FootprintSearch(MarkerWalk):
     name = "footprints"
     loop_markers = 1  # markers on a loop edge (Cases 1a, 1b, 2, 4: one)
     marking: Marking = UNDIRECTED  # how the markers are dropped and read (§6.2.2's directional ones: edge_info)
+    literal = False  # True: the search as listed (Algorithm 6.1 lines 11–19): v_k's neighbours too, checked there only
 
     def is_new(self, sig: Signature) -> bool:
         """v_u has not been visited (E-marker algorithms: no other marked edge, §6.2.1 Case 1a)."""
@@ -204,8 +208,8 @@ class FootprintSearch(MarkerWalk):
     def candidates(self, vk: int, key: tuple[int, ...], degree: int) -> list[int]:
         """Known vertices that could be v_u, in the preorder of a breadth-first tree of S rooted at v_k."""
         M = self.M
-        return in_preorder(M, vk, {v for v in open_ends_beyond(M, vk)
-                                   if M.degree(v) == degree and map_key(M, v) == key})
+        ends = {v for v in M.unexplored.ends() if v != vk} if self.literal else open_ends_beyond(M, vk)
+        return in_preorder(M, vk, {v for v in ends if M.degree(v) == degree and map_key(M, v) == key})
 
     def walk_looking(self, target: int, looked: set[int]) -> tuple[int, int, int] | None:
         """Walk a shortest path of S to ``target``, sensing every vertex entered; at the first one showing a
@@ -214,6 +218,8 @@ class FootprintSearch(MarkerWalk):
         for dart in self.path_to(target, parent):
             sig = self.leave(dart, "validation")
             v, entry = self.position
+            if self.literal and v != target:  # as listed: "robot goes there, sensing the marked edges there"
+                continue
             looked.add(v)
             shown = self.map_signature(v, entry).edges
             extra = set(sig.edges) - set(shown) if sig.edges != shown else ()  # (the same edges: nothing more)
@@ -236,6 +242,12 @@ class EdgeFootprints(FootprintSearch):
         return 1
 
 
+class ListingEdgeFootprints(EdgeFootprints):
+    """Case 1a with the search as listed (``case-1a-listing``; Algorithm 6.1 lines 11–19)."""
+
+    name, literal = "case-1a-listing", True
+
+
 class DoubleMarkedEdges(FootprintSearch):
     """Case 2, Algorithm 6.1: two markers on each non-loop edge, one on each loop edge; m + n − 1 in all."""
 
@@ -243,6 +255,12 @@ class DoubleMarkedEdges(FootprintSearch):
 
     def non_loop_markers(self, vk: int) -> int:
         return 2
+
+
+class ListingDoubleMarkedEdges(DoubleMarkedEdges):
+    """Case 2, Algorithm 6.1 as listed (``case-2-listing``): its search as lines 11–19 list it."""
+
+    name, literal = "case-2-listing", True
 
 
 class VertexEdgeFootprints(FootprintSearch):
@@ -280,3 +298,9 @@ class VertexEdgeFootprints(FootprintSearch):
             return False
         raise AlgorithmFailed(f"out of markers at iteration {it.number}: the loop edge cannot be marked and "
                               f"{len(left)} unexplored edges are left")
+
+
+class ListingVertexEdgeFootprints(VertexEdgeFootprints):
+    """Case 1b with the search as listed (``case-1b-listing``; Algorithm 6.1 lines 11–19, Case 1b's text)."""
+
+    name, literal = "case-1b-listing", True

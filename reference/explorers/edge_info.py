@@ -127,7 +127,9 @@ from topomark.reference.explorers.edge_footprints import (DoubleMarkedEdges, Edg
 from topomark.reference.explorers.marker_walk import MarkerStep
 
 __all__ = ["matching_darts", "EdgeInfo", "EDGE_INFO", "EdgeInfoFootprints", "DoubleMarkedEdgeInfo",
-           "EdgeFootprintsEdgeInfo", "ClosestFirstEdgeInfo", "ClosestFirstDoubleEdgeInfo"]
+           "EdgeFootprintsEdgeInfo", "ClosestFirstEdgeInfo", "ClosestFirstDoubleEdgeInfo",
+           "ListingEdgeInfoFootprints", "ListingDoubleMarkedEdgeInfo", "ListingEdgeFootprintsEdgeInfo",
+           "ListingClosestFirstEdgeInfo", "ListingClosestFirstDoubleEdgeInfo"]
 
 
 def matching_darts(M: PartialMap, w: int, sensed: Signature, exits: list[int] | None = None) -> list[int]:
@@ -213,3 +215,33 @@ class ClosestFirstDoubleEdgeInfo(ClosestFirstDouble):
 
     name = "case-4-mn-edgeinfo"
     marking = EDGE_INFO
+
+
+class ListingEdgeInfoFootprints(EdgeInfoFootprints):
+    """``case-1b-edgeinfo`` with the search as listed (``case-1b-edgeinfo-listing``; Algorithm 6.1 lines 11–19, 6.3 lines 18–24)."""
+
+    name, literal = "case-1b-edgeinfo-listing", True
+
+
+class ListingDoubleMarkedEdgeInfo(DoubleMarkedEdgeInfo):
+    """``case-2-edgeinfo`` with the search as listed (``case-2-edgeinfo-listing``; Algorithm 6.1 lines 11–19, 6.3 lines 18–24)."""
+
+    name, literal = "case-2-edgeinfo-listing", True
+
+
+class ListingEdgeFootprintsEdgeInfo(EdgeFootprintsEdgeInfo):
+    """``case-1a-edgeinfo`` with the search as listed (``case-1a-edgeinfo-listing``; Algorithm 6.1 lines 11–19, 6.3 lines 18–24)."""
+
+    name, literal = "case-1a-edgeinfo-listing", True
+
+
+class ListingClosestFirstEdgeInfo(ClosestFirstEdgeInfo):
+    """``case-4-edgeinfo`` with the search as listed (``case-4-edgeinfo-listing``; Algorithm 6.1 lines 11–19, 6.3 lines 18–24)."""
+
+    name, literal = "case-4-edgeinfo-listing", True
+
+
+class ListingClosestFirstDoubleEdgeInfo(ClosestFirstDoubleEdgeInfo):
+    """``case-4-mn-edgeinfo`` with the search as listed (``case-4-mn-edgeinfo-listing``; Algorithm 6.1 lines 11–19, 6.3 lines 18–24)."""
+
+    name, literal = "case-4-mn-edgeinfo-listing", True

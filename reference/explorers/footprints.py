@@ -37,7 +37,8 @@ Decisions, with the thesis references (each shown in ``tests/test_baselines.py``
   showed, nor by an unexplored edge, as the thesis's own Cases 1a and 2 do
   (Algorithm 6.1 lines 11–12).  Looking at every vertex passed changes the
   text's moves ("visiting each (other) known vertex"), which the registration
-  says (``changes``).  The walk is still within the tree's Euler tour
+  says (``changes``); ``footprints-listing`` (:class:`ListingFootprints`) checks each candidate only where
+  it goes, as written.  The walk is still within the tree's Euler tour
   (2(n − 1) moves), so the registered exact bound is the footprint searches'.
 * **Back to v_k over e** before the search ("the robot returning to v_k",
   §2.3.1): purpose ``retrace``, as in Cases 1a and 2.
@@ -62,7 +63,7 @@ from topomark.reference.explorers.edge_footprints import FootprintSearch
 from topomark.reference.explorers.marker_walk import MarkerStep
 from topomark.reference.explorers.policies import in_preorder
 
-__all__ = ["Footprints"]
+__all__ = ["Footprints", "ListingFootprints"]
 
 
 class Footprints(FootprintSearch):
@@ -91,3 +92,10 @@ class Footprints(FootprintSearch):
         breadth-first tree of S rooted at v_k; the marks v_u showed (``key``) are not used."""
         M = self.M
         return in_preorder(M, vk, {v for v in M.vertices if v != vk and M.degree(v) == degree})
+
+
+class ListingFootprints(Footprints):
+    """§2.3.1's footprints as written (``footprints-listing``): each candidate checked where the robot goes to it
+    ("visiting each (other) known vertex in S which has the same degree as v_u"), none on the way."""
+
+    name, literal = "footprints-listing", True

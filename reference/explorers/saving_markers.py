@@ -40,7 +40,7 @@ line 5 → :meth:`SavingEdgeCounts.marked` (read from S); lines 6–7 → the wa
 branch of :meth:`SavingEdgeCounts.arrive` (lines 9–11, the drop trip, → ``drop_on``); lines 14–18 →
 :meth:`SavingEdgeCounts.identify` and the loop augmentation; lines 19–20 → the come-back, taken only while v_k
 has an unexplored edge, as §6.2.2's text says — a change to the listing's moves (``changes`` in its
-registration).  ``extension-1`` has no listing; it follows §6.2.2's text (markers on e in transit from an
+registration); :class:`ListingSavingEdgeCounts` (``extension-2-listing``) takes lines 19–20 as listed.  ``extension-1`` has no listing; it follows §6.2.2's text (markers on e in transit from an
 unmarked v_k, :meth:`MarkFirstEdges.depart`, loop edge or not).
 
 Examples
@@ -58,7 +58,7 @@ from topomark.spec.signature import Signature, signature_at
 
 from topomark.reference.explorers.marker_walk import MarkerStep, MarkerWalk
 
-__all__ = ["SavingEdgeCounts", "MarkFirstEdges", "ceil_half"]
+__all__ = ["SavingEdgeCounts", "ListingSavingEdgeCounts", "MarkFirstEdges", "ceil_half"]
 
 
 def ceil_half(k: int) -> int:
@@ -71,6 +71,7 @@ class SavingEdgeCounts(MarkerWalk):
 
     name = "extension-2"
     come_back = True  # rule (3), lines 19-20; False is the naive extension that fails (§6.2.2, Figure 6.15(b)-(c))
+    literal = False  # True: lines 19-20 as listed, back to an unmarked v_k after every loop edge
 
     def __init__(self, robot, policies=None, observer=None, options=None):
         super().__init__(robot, policies, observer, options)
@@ -101,8 +102,8 @@ class SavingEdgeCounts(MarkerWalk):
                 self.ends[count] = (it.edge, (u, 0))
             return
         self.loop(it, self.identify(it, sig, sig.edges))  # lines 15-18
-        if self.come_back and not self.marked(vk) and any(x is None for x in self.M.links(vk)):  # lines 19-20
-            self.leave(self.position, "travel")
+        if self.come_back and not self.marked(vk) and (self.literal or any(x is None for x in self.M.links(vk))):
+            self.leave(self.position, "travel")  # lines 19-20 (ours: only while v_k has an unexplored edge)
 
     def identify(self, it: MarkerStep, sig: Signature, items) -> MapDart:
         """Lines 15–16: the unexplored dart e' = (v_k', j) that the marked edges ``items`` sensed at v_u name."""
@@ -120,6 +121,14 @@ class SavingEdgeCounts(MarkerWalk):
             raise AlgorithmFailed(f"iteration {it.number}: the marked edges at v_u, {sig}, fit {len(matches)} "
                                   f"unexplored edges of the map {sorted(matches)}, not one")
         return matches.pop()
+
+
+class ListingSavingEdgeCounts(SavingEdgeCounts):
+    """Algorithm 6.6 as listed (``extension-2-listing``): lines 19–20 bring the robot back to an unmarked v_k
+    after every loop edge, whether or not v_k has an unexplored edge left."""
+
+    name = "extension-2-listing"
+    literal = True
 
 
 class MarkFirstEdges(SavingEdgeCounts):

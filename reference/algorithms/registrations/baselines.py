@@ -19,6 +19,8 @@ robot never learns them.  Every run of either drops its whole kit (the
   the exact worst case of the footprint search (its candidates are visited
   within the Euler tour of a breadth-first tree of S, whichever they are).
   It takes the edge policy (``--policy edge=...``), as Cases 1a and 2 do.
+  ``footprints-listing`` is §2.3.1's text as written beside it (each candidate checked only where the robot
+  goes), held to the same formula as a bound of the text (``docs/bounds.md``).
 * ``labelled-dfs``: the thesis states O(m) (§2.3.1, Table 2.3); 2m is ours, exact
   for depth-first search (the explorer's docstring derives it).  It takes no
   policy: depth first is what the bound needs.
@@ -26,10 +28,10 @@ robot never learns them.  Every run of either drops its whole kit (the
 Examples
 --------
 >>> [s.name for s in SPECS]
-['footprints', 'labelled-dfs']
->>> [s.kit_for(4, 4, {}).describe() for s in SPECS]  # the 4-cycle
+['footprints', 'footprints-listing', 'labelled-dfs']
+>>> [s.kit_for(4, 4, {}).describe() for s in SPECS[1:]]  # the 4-cycle
 ['8 undirected vertex-or-edge markers', '10 directional vertex markers']
->>> [s.bound_for(4, 4) for s in SPECS]
+>>> [s.bound_for(4, 4) for s in SPECS[1:]]
 [20, 8]
 """
 
@@ -40,8 +42,8 @@ from dataclasses import replace
 from topomark.spec.kit import Kit
 
 from topomark.reference.algorithms.algorithm_spec import STEPWISE_MAP_CHECKS, AlgorithmSpec
-from topomark.reference.algorithms.registrations.markers_621 import footprint_spec, footprints_bound
-from topomark.reference.explorers.footprints import Footprints
+from topomark.reference.algorithms.registrations.markers_621 import footprint_spec, footprints_bound, with_listing
+from topomark.reference.explorers.footprints import Footprints, ListingFootprints
 from topomark.reference.explorers.labelled_graph import LabelledGraphDFS
 
 __all__ = ["SPECS", "labels"]
@@ -59,10 +61,11 @@ _FOOTPRINTS = footprint_spec(
     kind=Kit(either=1))
 
 SPECS = (
-    replace(_FOOTPRINTS, parameters=(), checks=STEPWISE_MAP_CHECKS, ways=("correct",),  # its kit never runs short
+    *with_listing(replace(_FOOTPRINTS, parameters=(), checks=STEPWISE_MAP_CHECKS, ways=("correct",),  # never runs short
             changes="§2.3.1 gives no listing and has the robot visit \"each (other) known vertex in S which has the "
                     "same degree as v_u\": this explorer checks every vertex it passes, so one passed is not visited "
-                    "again and the search stops wherever v_k' is seen"),
+                    "again and the search stops wherever v_k' is seen"), ListingFootprints,
+                  "its search as §2.3.1 writes it, each candidate checked where the robot goes"),
     AlgorithmSpec(
         name="labelled-dfs",
         thesis="§2.3.1, a labelled graph explored depth first, every place distinctly marked (Tables 2.2 and 2.3)",

@@ -29,10 +29,18 @@ lines, §6.2.1 Case 3a, §6.2.2, are in :mod:`~topomark.reference.explorers.coun
 on ``wheel-hub-last``, where the blank is the hub of degree d_max, the cost is
 3m/2 − 2, within O(m) (``tests/test_markers_62.py``).
 
+Two entries follow their listing where topomark's explorer changes it (``changes``, ``listing_entry``;
+``docs/bounds.md``): ``case-dv-sum-listing`` takes Algorithm 6.2's line 6 by the edge policy alone, so the blank's
+loop edges are probed as lines 19–35 list (O(m·d_max) on a wheel whose hub is found last, not Table 6.2's O(m));
+``extension-2-listing`` comes back to an unmarked v_k after every loop edge (Algorithm 6.6 lines 19–20).  Neither
+has an exact bound (the thesis's are O(·) only): each is measured by the bench like its variant, and replay's
+re-run accepts a trace of either explorer of a pair under either name and says which it followed.
+
 Examples
 --------
->>> [s.name for s in SPECS]
-['case-3a', 'case-3b', 'case-3b-saving', 'case-dv-sum', 'extension-1', 'extension-2', 'extension-naive']
+>>> [s.name for s in SPECS]  # doctest: +NORMALIZE_WHITESPACE
+['case-3a', 'case-3b', 'case-3b-saving', 'case-dv-sum', 'case-dv-sum-listing', 'extension-1', 'extension-2',
+ 'extension-2-listing', 'extension-naive']
 >>> SPECS[1].kit_for(5, 7, {"markers": None}).describe()
 '10 undirected edge markers'
 >>> SPECS[3].kit_for(5, 7, {"markers": 3}).describe()
@@ -44,9 +52,11 @@ from __future__ import annotations
 from topomark.spec.kit import Kit
 
 from topomark.reference.algorithms.algorithm_spec import MARKER_MAP_CHECKS, AlgorithmSpec, Parameter
-from topomark.reference.explorers.counted_markers import DirectionalVertexCounts, EdgeCounts, VertexCounts, sum_to
+from topomark.reference.explorers.counted_markers import (DirectionalVertexCounts, EdgeCounts,
+                                                          ListingDirectionalVertexCounts, VertexCounts, sum_to)
 from topomark.reference.explorers.failing_savings import NaiveExtension, UndirectedSaving
-from topomark.reference.explorers.saving_markers import MarkFirstEdges, SavingEdgeCounts, ceil_half
+from topomark.reference.explorers.saving_markers import (ListingSavingEdgeCounts, MarkFirstEdges, SavingEdgeCounts,
+                                                         ceil_half)
 
 __all__ = ["SPECS"]
 
@@ -59,6 +69,16 @@ def _count(n: int, options: dict, assured: int | None = None) -> int:
     given = options.get("markers")
     return (sum_to(n - 1) if assured is None else assured) if given is None else given
 
+
+_BLANK_FIRST = ("once the last new place is left blank (Algorithm 6.2 lines 14–16), its unexplored edges are taken "
+                "first, whatever the edge policy (line 6 leaves the choice open), so no loop edge enters the blank "
+                "and needs its back-link probed (lines 19–35): the edge policy alone would choose otherwise")
+"""What ``case-dv-sum`` changes relative to Algorithm 6.2 (``case-dv-sum-listing`` takes line 6 by the policy)."""
+_COME_BACK_SOMETIMES = (
+    "Algorithm 6.6 lines 19–20 bring the robot back to an unmarked v_k after every loop edge: this explorer comes "
+    "back only if v_k still has an unexplored edge, as §6.2.2's text says (\"unless v_k has no unexplored edges "
+    "now\"), one traversal fewer otherwise")
+"""What ``extension-2`` changes relative to Algorithm 6.6 (``extension-2-listing`` follows lines 19–20)."""
 
 SPECS = (
     AlgorithmSpec(
@@ -84,17 +104,20 @@ SPECS = (
         status_reason="the marked edges 'may not always identify a visited vertex and its incident edges' "
                       "(§6.2.1 Case 4): two neighbours whose only marked edge joins them show the same signature "
                       "(Figure 6.10(b)); on figure-6.10 the run ends failed (the marks fit two edges)"),
-    AlgorithmSpec(
-        name="case-dv-sum", thesis="§6.2.2 Σ_{k=1}^{n−1} k directional V-markers (Table 6.2)",
-        kit=Kit(vertex=1, directional=True), bound="O(m)",
+    *(AlgorithmSpec(
+        name=name, thesis=f"§6.2.2 Σ_{{k=1}}^{{n−1}} k directional V-markers (Table 6.2){what}",
+        kit=Kit(vertex=1, directional=True), bound=bound,
         markers="Σ_{k=1}^{n−1} k directional V-markers (Σ_{k=1}^{n} k if the kit allows)",
-        deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=DirectionalVertexCounts,
+        deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=explorer,
         uses_lighthouse=False, parameters=(MARKERS,),
         kit_fn=lambda n, m, o: Kit(vertex=_count(n, o), directional=True),
-        marker_bound_fn=lambda n, m: sum_to(n), family="robot", bound_bench="table-6.2", ways=("correct", "failed-out-of-markers"),
-        changes="once the last new place is left blank (Algorithm 6.2 lines 14–16), its unexplored edges are taken "
-                "first, whatever the edge policy (line 6 leaves the choice open), so no loop edge enters the blank "
-                "and needs its back-link probed (lines 19–35): the edge policy alone would choose otherwise"),
+        marker_bound_fn=lambda n, m: sum_to(n), family="robot", bound_bench="table-6.2",
+        ways=("correct", "failed-out-of-markers"), changes=changes,
+        listing_entry=None if changes is None else "case-dv-sum-listing")
+      for name, what, explorer, bound, changes in (
+          ("case-dv-sum", "", DirectionalVertexCounts, "O(m)", _BLANK_FIRST),
+          ("case-dv-sum-listing", ": Algorithm 6.2 as listed", ListingDirectionalVertexCounts,
+           "O(m) (Table 6.2); as listed, a blank of degree d_max probed: O(m·d_max) (§6.2.1 Case 3a)", None))),
     AlgorithmSpec(
         name="extension-1", thesis="§6.2.2 extension-1 of Case 3b (Figure 6.15, Table 6.2)",
         kit=Kit(edge=1, directional=True), bound="O(m)", markers="Σ_{k=1}^{⌈m/2⌉} k directional E-markers",
@@ -103,18 +126,18 @@ SPECS = (
         kit_fn=lambda n, m, o: Kit(edge=_count(n, o, sum_to(ceil_half(m))), directional=True),
         marker_bound_fn=lambda n, m: sum_to(ceil_half(m)), family="robot", bound_bench="table-6.2",
         ways=("correct", "failed-out-of-markers")),
-    AlgorithmSpec(
-        name="extension-2",
-        thesis="§6.2.2 extension-2 of Case 3b, Algorithm 6.6 (Figure 6.16, Table 6.2)",
+    *(AlgorithmSpec(
+        name=name, thesis=f"§6.2.2 extension-2 of Case 3b, Algorithm 6.6{what} (Figure 6.16, Table 6.2)",
         kit=Kit(edge=1, directional=True), bound="O(m)", markers="Σ_{k=1}^{⌈(n−1)/2⌉} k directional E-markers",
-        deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=SavingEdgeCounts,
+        deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=explorer,
         uses_lighthouse=False, parameters=(MARKERS,),
         kit_fn=lambda n, m, o: Kit(edge=_count(n, o, sum_to(ceil_half(n - 1))), directional=True),
         marker_bound_fn=lambda n, m: sum_to(ceil_half(n - 1)), family="robot", bound_bench="table-6.2",
-        ways=("correct", "failed-out-of-markers", "drop-trip"),
-        changes="Algorithm 6.6 lines 19–20 bring the robot back to an unmarked v_k after every loop edge: this "
-                "explorer comes back only if v_k still has an unexplored edge, as §6.2.2's text says (\"unless v_k "
-                "has no unexplored edges now\"), one traversal fewer otherwise"),
+        ways=("correct", "failed-out-of-markers", "drop-trip"), changes=changes,
+        listing_entry=None if changes is None else "extension-2-listing")
+      for name, what, explorer, changes in (
+          ("extension-2", "", SavingEdgeCounts, _COME_BACK_SOMETIMES),
+          ("extension-2-listing", " as listed", ListingSavingEdgeCounts, None))),
     AlgorithmSpec(
         name="extension-naive",
         thesis="§6.2.2 the naive extension of Case 3b, extension-2 without coming back: fails (Figure 6.15)",

@@ -41,9 +41,11 @@ S rooted at v_k, each by a shortest path, at most the tree's Euler tour
 
 Examples
 --------
->>> [s.name for s in SPECS]
+>>> [s.name for s in SPECS][::2]
 ['case-1a', 'case-1b', 'case-2', 'case-4', 'case-4-mn']
->>> [s.kit_for(4, 4, {"markers": None}).describe() for s in SPECS]  # the 4-cycle
+>>> [s.name for s in SPECS][1::2]  # the search as listed
+['case-1a-listing', 'case-1b-listing', 'case-2-listing', 'case-4-listing', 'case-4-mn-listing']
+>>> [s.kit_for(4, 4, {"markers": None}).describe() for s in SPECS[::2]]  # the 4-cycle
 ['4 undirected edge markers', '5 undirected vertex-or-edge markers', '8 undirected edge markers', \
 '3 undirected edge markers', '5 undirected edge markers']
 >>> footprints_bound(3, 3)  # the triangle: two non-loop steps, one loop step
@@ -52,13 +54,18 @@ Examples
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from topomark.spec.kit import Kit
 
 from topomark.reference.algorithms.algorithm_spec import MARKER_MAP_CHECKS, AlgorithmSpec, Parameter
-from topomark.reference.explorers.closest_first import ClosestFirst, ClosestFirstDouble
-from topomark.reference.explorers.edge_footprints import DoubleMarkedEdges, EdgeFootprints, VertexEdgeFootprints
+from topomark.reference.explorers.closest_first import (ClosestFirst, ClosestFirstDouble, ListingClosestFirst,
+                                                        ListingClosestFirstDouble)
+from topomark.reference.explorers.edge_footprints import (DoubleMarkedEdges, EdgeFootprints, ListingDoubleMarkedEdges,
+                                                          ListingEdgeFootprints, ListingVertexEdgeFootprints,
+                                                          VertexEdgeFootprints)
 
-__all__ = ["SPECS", "SEARCH_CHANGES", "footprints_bound", "case_4_markers", "case_4_mn_markers", "MARKER_OPTIONS", "kit_size", "case_1b_kit",
+__all__ = ["SPECS", "SEARCH_CHANGES", "with_listing", "footprints_bound", "case_4_markers", "case_4_mn_markers", "MARKER_OPTIONS", "kit_size", "case_1b_kit",
            "footprint_spec"]
 
 MARKERS = Parameter("markers", "how many markers the robot carries (default: what its case is assured, "
@@ -122,19 +129,42 @@ def footprint_spec(name, thesis, markers, explorer, kit_fn, marker_bound_fn, cit
                                        f"search behind O(mn) ({cites})")
 
 
+def with_listing(spec: AlgorithmSpec, literal: type,
+                 what: str = "the search as listed (Algorithm 6.1 lines 11–19, Algorithm 6.3 lines 18–24)"
+                 ) -> tuple[AlgorithmSpec, AlgorithmSpec]:
+    """A footprint entry that changes its listing's search (:data:`SEARCH_CHANGES`) and, beside it, the entry
+    ``NAME-listing`` whose explorer ``literal`` searches as listed (``literal = True``): the same kit, markers and
+    bound formula, which is topomark's bound for the search as listed (``docs/bounds.md``; checked against the
+    literal entries on every small world, ``tests/test_listing_cases.py``).  ``what``: how the thesis
+    entry names the listing followed."""
+    name = f"{spec.name}-listing"
+    assert spec.changes is not None and getattr(literal, "literal", False) and getattr(literal, "name", "") == name
+    assert spec.bound is not None and spec.bound_formula is not None  # every footprint entry has both
+    listed = replace(spec, name=name, thesis=f"{spec.thesis}, {what}", explorer=literal,
+                     bound=spec.bound.split("; bound_fn")[0] + "; bound_fn: topomark's, for the search as listed",
+                     changes=None, listing_entry=None, bound_source="listing",
+                     bound_formula=f"(n − 1)² + (m − n + 1)(3n − 1), topomark's bound for {what} (docs/bounds.md), "
+                                   f"behind O(mn) ({spec.bound_formula.rsplit('(', 1)[-1]}")
+    return replace(spec, listing_entry=name), listed
+
+
 SPECS = (
-    footprint_spec("case-1a", "§6.2.1 Case 1a, m E-markers (Figure 6.4; footprints [18])", "m undirected E-markers",
-          EdgeFootprints, lambda n, m, o: Kit(edge=kit_size(o, m)), lambda n, m: m, "§6.2.1 Case 1a"),
-    footprint_spec("case-1b", "§6.2.1 Case 1b, m + 1 V-E-markers, extendable to m (Figure 6.5)",
+    *with_listing(footprint_spec("case-1a", "§6.2.1 Case 1a, m E-markers (Figure 6.4; footprints [18])",
+          "m undirected E-markers", EdgeFootprints, lambda n, m, o: Kit(edge=kit_size(o, m)), lambda n, m: m,
+          "§6.2.1 Case 1a"), ListingEdgeFootprints),
+    *with_listing(footprint_spec("case-1b", "§6.2.1 Case 1b, m + 1 V-E-markers, extendable to m (Figure 6.5)",
           "m + 1 undirected V-E-markers, one pool (m with the extension, §6.2.1 Case 1b)", VertexEdgeFootprints, case_1b_kit,
-          lambda n, m: m + 1, "§6.2.1 Case 1b", kind=Kit(either=1)),
-    footprint_spec("case-2", "§6.2.1 Case 2, Algorithm 6.1, m + n E-markers",
+          lambda n, m: m + 1, "§6.2.1 Case 1b", kind=Kit(either=1)), ListingVertexEdgeFootprints),
+    *with_listing(footprint_spec("case-2", "§6.2.1 Case 2, Algorithm 6.1, m + n E-markers",
           "m + n undirected E-markers (m + n − 1 used, §6.2.1 Case 2)", DoubleMarkedEdges,
           lambda n, m, o: Kit(edge=kit_size(o, m + n)), lambda n, m: m + n - 1, "§6.2.1 Case 2"),
-    footprint_spec("case-4", "§6.2.1 Case 4, Algorithm 6.3, closest-first (Figure 6.9)",
+          ListingDoubleMarkedEdges),
+    *with_listing(footprint_spec("case-4", "§6.2.1 Case 4, Algorithm 6.3, closest-first (Figure 6.9)",
           "m − ⌊(n−1)/2⌋ undirected E-markers (stated m − ⌊n/2⌋, §6.2.1 Case 4: one short for even n)", ClosestFirst,
           lambda n, m, o: Kit(edge=kit_size(o, case_4_markers(n, m))), case_4_markers, "§6.2.1 Case 4", MARKER_OPTIONS),
-    footprint_spec("case-4-mn", "§6.2.1 Case 4, the closest-first extension of Case 2",
+          ListingClosestFirst),
+    *with_listing(footprint_spec("case-4-mn", "§6.2.1 Case 4, the closest-first extension of Case 2",
           "m + [n even] undirected E-markers (stated m, §6.2.1 Case 4: one short for even n)", ClosestFirstDouble,
           lambda n, m, o: Kit(edge=kit_size(o, case_4_mn_markers(n, m))), case_4_mn_markers, "§6.2.1 Case 4", MARKER_OPTIONS),
+          ListingClosestFirstDouble),
 )

@@ -23,9 +23,9 @@ edgeINFO at the entry, as ``case-2-edgeinfo`` (:mod:`~topomark.reference.explore
 
 Examples
 --------
->>> [s.name for s in SPECS]
+>>> [s.name for s in SPECS][::2]  # each followed by its NAME-listing, the search as listed
 ['case-1b-edgeinfo', 'case-2-edgeinfo', 'case-1a-edgeinfo', 'case-4-edgeinfo', 'case-4-mn-edgeinfo']
->>> SPECS[3].kit_for(4, 4, {"markers": None}).describe()  # the 4-cycle: m − ⌊(n−1)/2⌋ = 3
+>>> SPECS[6].kit_for(4, 4, {"markers": None}).describe()  # the 4-cycle: m − ⌊(n−1)/2⌋ = 3
 '3 directional edge markers'
 >>> SPECS[0].kit_for(4, 4, {"markers": None}).describe()  # the 4-cycle
 '5 directional vertex-or-edge markers'
@@ -40,10 +40,12 @@ from dataclasses import replace
 from topomark.spec.kit import Kit
 
 from topomark.reference.explorers.edge_info import (ClosestFirstDoubleEdgeInfo, ClosestFirstEdgeInfo, DoubleMarkedEdgeInfo,
-                                   EdgeFootprintsEdgeInfo, EdgeInfoFootprints)
+                                   EdgeFootprintsEdgeInfo, EdgeInfoFootprints, ListingClosestFirstDoubleEdgeInfo,
+                                   ListingClosestFirstEdgeInfo, ListingDoubleMarkedEdgeInfo,
+                                   ListingEdgeFootprintsEdgeInfo, ListingEdgeInfoFootprints)
 from topomark.reference.algorithms.registrations.markers_621 import (MARKER_OPTIONS, case_1b_kit, case_4_markers,
                                                                      case_4_mn_markers, footprint_spec,
-                                                                     footprints_bound, kit_size)
+                                                                     footprints_bound, kit_size, with_listing)
 
 __all__ = ["SPECS", "edge_only_spec"]
 
@@ -65,20 +67,21 @@ def edge_only_spec(name: str, thesis: str, markers: str, explorer, count, bound,
 
 
 SPECS = (
-    footprint_spec("case-1b-edgeinfo", "§6.2.2 Case 1b with directional V-E-markers, edgeINFO (Figure 6.14)",
+    *with_listing(footprint_spec("case-1b-edgeinfo", "§6.2.2 Case 1b with directional V-E-markers, edgeINFO (Figure 6.14)",
           "m + 1 directional V-E-markers, one pool (as case-1b)", EdgeInfoFootprints, _directional_1b_kit,
-          lambda n, m: m + 1, "§6.2.2", kind=Kit(either=1, directional=True)),
-    edge_only_spec("case-2-edgeinfo", "§6.2.2 Case 2 (Algorithm 6.1) with directional E-markers, edgeINFO anchored at "
+          lambda n, m: m + 1, "§6.2.2", kind=Kit(either=1, directional=True)), ListingEdgeInfoFootprints),
+    *with_listing(edge_only_spec("case-2-edgeinfo", "§6.2.2 Case 2 (Algorithm 6.1) with directional E-markers, edgeINFO anchored at "
                "the entry (§6.2.2)", "m + n directional E-markers (m + n − 1 used, §6.2.1 Case 2)", DoubleMarkedEdgeInfo,
-               lambda n, m: m + n, lambda n, m: m + n - 1),
-    edge_only_spec("case-1a-edgeinfo", "§6.2.2 Case 1a with directional E-markers, edgeINFO anchored at the entry "
+               lambda n, m: m + n, lambda n, m: m + n - 1), ListingDoubleMarkedEdgeInfo),
+    *with_listing(edge_only_spec("case-1a-edgeinfo", "§6.2.2 Case 1a with directional E-markers, edgeINFO anchored at the entry "
                "(§6.2.2; Figure 6.17, §6.2.2)", "m directional E-markers (as case-1a)", EdgeFootprintsEdgeInfo,
-               lambda n, m: m, lambda n, m: m),
-    edge_only_spec("case-4-edgeinfo", "§6.2.2 Case 4 (Algorithm 6.3, closest-first) with directional E-markers, "
+               lambda n, m: m, lambda n, m: m), ListingEdgeFootprintsEdgeInfo),
+    *with_listing(edge_only_spec("case-4-edgeinfo", "§6.2.2 Case 4 (Algorithm 6.3, closest-first) with directional E-markers, "
                "edgeINFO anchored at the entry (§6.2.2)", "m − ⌊(n−1)/2⌋ directional E-markers (as case-4; stated "
                "m − ⌊n/2⌋, §6.2.1 Case 4)", ClosestFirstEdgeInfo, case_4_markers, case_4_markers, MARKER_OPTIONS),
-    edge_only_spec("case-4-mn-edgeinfo", "§6.2.2 Case 4, the closest-first extension of Case 2, with directional "
+          ListingClosestFirstEdgeInfo),
+    *with_listing(edge_only_spec("case-4-mn-edgeinfo", "§6.2.2 Case 4, the closest-first extension of Case 2, with directional "
                "E-markers, edgeINFO anchored at the entry (§6.2.2)", "m + [n even] directional E-markers (as "
                "case-4-mn; stated m, §6.2.1 Case 4)", ClosestFirstDoubleEdgeInfo, case_4_mn_markers, case_4_mn_markers,
-               MARKER_OPTIONS),
+               MARKER_OPTIONS), ListingClosestFirstDoubleEdgeInfo),
 )

@@ -55,32 +55,36 @@ worlds are not isomorphic (``tests/test_markers_case5.py`` certifies them).
 
 Examples
 --------
->>> [s.name for s in SPECS]
-['case-5-v1', 'case-5-v2', 'case-0', 'case-5-edge', 'case-5-directional']
->>> SPECS[3].kit_for(4, 5, {"markers": 5}).describe(), SPECS[4].kit_for(4, 5, {"markers": None}).describe()
+>>> [s.name for s in SPECS]  # doctest: +NORMALIZE_WHITESPACE
+['case-5-v1', 'case-5-v1-listing', 'case-5-v2', 'case-5-v2-listing', 'case-0', 'case-5-edge', 'case-5-directional',
+ 'case-5-directional-listing']
+>>> SPECS[5].kit_for(4, 5, {"markers": 5}).describe(), SPECS[6].kit_for(4, 5, {"markers": None}).describe()
 ('5 undirected edge markers', '10 directional vertex markers')
 >>> SPECS[0].kit_for(4, 5, {"markers": None}).describe()
 '10 undirected vertex markers'
->>> SPECS[1].kit_for(4, 5, {"markers": None}).describe()
+>>> SPECS[2].kit_for(4, 5, {"markers": None}).describe()
 '5 undirected vertex markers, 4 undirected edge markers'
->>> SPECS[1].kit_for(4, 5, {"markers": 6}).describe()
+>>> SPECS[2].kit_for(4, 5, {"markers": 6}).describe()
 '6 undirected vertex-or-edge markers'
 """
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from topomark.spec.kit import Kit
 
-from topomark.reference.algorithms.algorithm_spec import MARKER_MAP_CHECKS, AlgorithmSpec, Parameter
+from topomark.reference.algorithms.algorithm_spec import EXPECTED_TO_FAIL, MARKER_MAP_CHECKS, AlgorithmSpec, Parameter
 from topomark.reference.algorithms.registrations.markers_621 import SEARCH_CHANGES
 from topomark.reference.explorers.case0_every_vertex import EveryVertexMarked
-from topomark.reference.explorers.case5_directional import DirectionalCountsThenLighthouse
+from topomark.reference.explorers.case5_directional import (DirectionalCountsThenLighthouse,
+                                                            ListingDirectionalCountsThenLighthouse)
 from topomark.reference.explorers.case5_edge import EdgeCountsThenLighthouse
-from topomark.reference.explorers.case5_v1 import VertexCountsThenLighthouse
-from topomark.reference.explorers.case5_v2 import VertexEdgeThenLighthouse
+from topomark.reference.explorers.case5_v1 import ListingVertexCountsThenLighthouse, VertexCountsThenLighthouse
+from topomark.reference.explorers.case5_v2 import ListingVertexEdgeThenLighthouse, VertexEdgeThenLighthouse
 from topomark.reference.explorers.counted_markers import sum_to
 
-__all__ = ["SPECS", "v2_markers"]
+__all__ = ["SPECS", "v2_markers", "failing_listing"]
 
 MARKERS = Parameter("markers", "how many markers the robot carries, K > 3 (default: enough for phase I to the end, "
                                "from n and m)", None, minimum=4)
@@ -123,15 +127,45 @@ _WAYS = ("correct", "phase-i", "phase-ii")
 """How a Case 5 run goes (§6.2.1 Case 5): phase I while the markers last, phase II once they run short, and the
 map at the end — with K > 3 markers it never fails for want of them."""
 
+_COUNTER_FAILS = ("Algorithm 6.4's counter as listed (i ← 1 at line 3, dropped at line 13) gives v0 and the first new "
+                  "place one marker each, yet line 9 (Algorithm 6.2 line 18) names v_u by its unique count (§6.2.1 "
+                  "Case 5): where that count must name v_u the run ends failed (on the triangle, cycle:n=3, for "
+                  "one); where it need not, the listing maps the world")
+_LINE_23_FAILS = ("Algorithm 6.5 line 23 as printed confirms a hypothesis whose perceptions \"do not match "
+                  "throughout\", which line 21 has already rejected: phase II never confirms one and adds a known "
+                  "place again where a loop must be closed by a hypothesis (with --markers 4: the paw entered from "
+                  "its pendant, or lattice:rows=2,cols=3, end with the wrong map); phase I's search is Case 1b's as "
+                  "listed")
+"""Why ``case-5-v2-listing`` fails.  Its declared ways leave phase II out: on the suite's worlds every run that
+reaches it must close a loop there and ends with a wrong map, which no conformance case can hold (the smallest-kit
+case is passed over, :mod:`~topomark.reference.oracle.conformance.coverage`)."""
+
+
+def failing_listing(spec: AlgorithmSpec, explorer: type, reason: str, way: str,
+                    ways: tuple[str, ...] | None = None) -> tuple[AlgorithmSpec, AlgorithmSpec]:
+    """``spec`` naming its listing entry, and beside it ``NAME-listing``: the listing followed to the letter by
+    ``explorer``, registered "implemented, expected to fail" with ``reason`` (its lines and the world that shows
+    it) and the ``way`` its runs fail by: a run of it may end correct, failed or with a wrong map
+    (``fails-by-design``), and a conformance case whose reference run fails is passed by giving up or by a
+    correct map (``docs/bounds.md``).  ``ways``: the listing's declared ways where they are not ``spec``'s and
+    ``way``."""
+    name = f"{spec.name}-listing"
+    assert spec.changes is not None and getattr(explorer, "literal", False) and getattr(explorer, "name", "") == name
+    listed = replace(spec, name=name, thesis=f"{spec.thesis}, as listed: fails", explorer=explorer, changes=None,
+                     listing_entry=None, status=EXPECTED_TO_FAIL, status_reason=reason,
+                     ways=(*spec.ways, way) if ways is None else ways)
+    return replace(spec, listing_entry=name), listed
+
+
 SPECS = (
-    AlgorithmSpec(
+    *failing_listing(AlgorithmSpec(
         name="case-5-v1", thesis="§6.2.1 Case 5 Version-1, Algorithm 6.4",
         kit=Kit(vertex=1), bound="O(m²n) (§6.2.1 Case 5; O(m·d_max) when every place is marked)",
         markers="K > 3 undirected V-markers, any K (Σ_{k=1}^{n} k mark every place)", deterministic=True,
         options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=VertexCountsThenLighthouse, uses_lighthouse=False,
         parameters=(MARKERS,), kit_fn=_v1_kit, marker_bound_fn=lambda n, m: sum_to(n), family="robot", bound_bench="table-6.1", ways=_WAYS,
-        changes=_COUNTER),
-    AlgorithmSpec(
+        changes=_COUNTER), ListingVertexCountsThenLighthouse, _COUNTER_FAILS, "failed-marks-ambiguous"),
+    *failing_listing(AlgorithmSpec(
         name="case-5-v2", thesis="§6.2.1 Case 5 Version-2, Algorithm 6.5",
         kit=Kit(vertex=1, edge=1), bound="O(m²n) (Table 6.1; O(mn) when every place and loop edge is marked, §6.2.1 Case 5)",
         markers="K > 3 undirected V-E-markers, any K, one pool (m + 4 mark every place and loop edge)",
@@ -140,6 +174,7 @@ SPECS = (
         changes="phase I's search is Case 1b's (Algorithm 6.5 line 12: \"See algorithms in Case 1\"), with its "
                 "change: " + SEARCH_CHANGES + "; and Algorithm 6.5 line 23 (\"do not match throughout\" → confirm) "
                 "is read as \"match throughout\" (line 21 repeats it; the literal line maps the paw wrongly)"),
+        ListingVertexEdgeThenLighthouse, _LINE_23_FAILS, "wrong-map", ("correct", "phase-i", "wrong-map")),
     AlgorithmSpec(
         name="case-0", thesis="§6.2.1 Case 0, n markers, one per visited vertex: fails (Figure 6.3)",
         kit=Kit(vertex=1), bound=None, markers="n undirected V-markers", deterministic=False, options=("policy edge",),
@@ -155,7 +190,7 @@ SPECS = (
         options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=EdgeCountsThenLighthouse,
         uses_lighthouse=False, parameters=(MARKERS,), kit_fn=_edge_kit, marker_bound_fn=lambda n, m: sum_to(n - 1),
         family="robot", bound_bench="table-6.1", ways=(*_WAYS, "drop-trip")),
-    AlgorithmSpec(
+    *failing_listing(AlgorithmSpec(
         name="case-5-directional", thesis="§6.2.2 Table 6.2 \"unknown k > 3\", directional: Version-1 "
                                          "with directional V-markers (§6.2.1 Case 5, §6.2.2)",
         kit=Kit(vertex=1, directional=True), bound="O(m²n) (Table 6.2, directional column)",
@@ -164,4 +199,5 @@ SPECS = (
         uses_lighthouse=False, parameters=(MARKERS,), kit_fn=_directional_kit, marker_bound_fn=lambda n, m: sum_to(n),
         family="robot", bound_bench="table-6.2", ways=_WAYS,
         changes=f"Version-1's phase I with directional markers, and so its {_COUNTER}"),
+        ListingDirectionalCountsThenLighthouse, _COUNTER_FAILS, "failed-marks-ambiguous"),
 )
