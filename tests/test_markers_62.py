@@ -205,3 +205,22 @@ def test_the_directional_vertex_markers_never_probe_even_with_a_blank_place(text
     out = explore(bare(make_world(text)), "case-dv-sum", record=False)
     assert out.outcome == "correct" and out.explorer.blank is not None
     assert set(out.by_purpose) <= {"new", "travel"} and not any(it.probes for it in out.explorer.iterations)
+
+
+@pytest.mark.parametrize("name", ["extension-1", "extension-2", "extension-2-listing", "extension-naive"])
+def test_the_extensions_of_case_3b_take_no_edge_policy(name, capsys):
+    """§6.2.2 rule (1): the extensions explore closest-first, so ``--policy edge=...`` is refused (exit 2)."""
+    assert "policy edge" not in REGISTRY[name].options
+    assert main(["explore", "lattice:rows=3,cols=3", "--algorithm", name, "--policy", "edge=fifo"]) == 2
+    assert "takes no edge policy" in capsys.readouterr().err
+
+
+def test_closest_first_is_what_keeps_extension_2_s_places_marked():
+    """Why the extensions fix the edge policy: run with ``fifo`` instead of closest-first, extension-2 reaches a
+    place with no marked edge and the checker's I-1 stops it (the policy the registry no longer lets through)."""
+    from topomark.reference.explorers.policies import Policies
+
+    world = generate("lattice", rows=3, cols=3)
+    assert explore(world, "extension-2").outcome == "correct"
+    run = explore(world, "extension-2", policies=Policies(edge="fifo"))
+    assert run.violation is not None and "I-1" in str(run.violation)

@@ -80,6 +80,12 @@ _COME_BACK_SOMETIMES = (
     "now\"), one traversal fewer otherwise")
 """What ``extension-2`` changes relative to Algorithm 6.6 (``extension-2-listing`` follows lines 19–20)."""
 
+CLOSEST_FIRST = ("markers",)
+"""The options of §6.2.2's extensions of Case 3b: ``--markers`` only.  They take no edge policy: rule (1) of
+§6.2.2 ("the robot selects the *closest* edge to explore in the next iteration"; Table 6.2's "closest-first") is what
+keeps every accessible visited place marked, so the ``nearest`` policy is part of the algorithm (with ``fifo`` the
+run reaches a place with no marked edge and I-1 fails on ``lattice:rows=3,cols=3``)."""
+
 SPECS = (
     AlgorithmSpec(
         name="case-3a", thesis="§6.2.1 Case 3a, Algorithm 6.2 (Figure 6.6)", kit=Kit(vertex=1),
@@ -121,7 +127,7 @@ SPECS = (
     AlgorithmSpec(
         name="extension-1", thesis="§6.2.2 extension-1 of Case 3b (Figure 6.15, Table 6.2)",
         kit=Kit(edge=1, directional=True), bound="O(m)", markers="Σ_{k=1}^{⌈m/2⌉} k directional E-markers",
-        deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=MarkFirstEdges,
+        deterministic=True, options=CLOSEST_FIRST, checks=MARKER_MAP_CHECKS, explorer=MarkFirstEdges,
         uses_lighthouse=False, parameters=(MARKERS,),
         kit_fn=lambda n, m, o: Kit(edge=_count(n, o, sum_to(ceil_half(m))), directional=True),
         marker_bound_fn=lambda n, m: sum_to(ceil_half(m)), family="robot", bound_bench="table-6.2",
@@ -129,7 +135,7 @@ SPECS = (
     *(AlgorithmSpec(
         name=name, thesis=f"§6.2.2 extension-2 of Case 3b, Algorithm 6.6{what} (Figure 6.16, Table 6.2)",
         kit=Kit(edge=1, directional=True), bound="O(m)", markers="Σ_{k=1}^{⌈(n−1)/2⌉} k directional E-markers",
-        deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=explorer,
+        deterministic=True, options=CLOSEST_FIRST, checks=MARKER_MAP_CHECKS, explorer=explorer,
         uses_lighthouse=False, parameters=(MARKERS,),
         kit_fn=lambda n, m, o: Kit(edge=_count(n, o, sum_to(ceil_half(n - 1))), directional=True),
         marker_bound_fn=lambda n, m: sum_to(ceil_half(n - 1)), family="robot", bound_bench="table-6.2",
@@ -143,7 +149,7 @@ SPECS = (
         thesis="§6.2.2 the naive extension of Case 3b, extension-2 without coming back: fails (Figure 6.15)",
         kit=Kit(edge=1, directional=True), bound=None,
         markers="at most Σ_{k=1}^{⌈(n−1)/2⌉} k directional E-markers (extension-2's kit)",
-        deterministic=True, options=("markers", "policy edge"), checks=MARKER_MAP_CHECKS, explorer=NaiveExtension,
+        deterministic=True, options=CLOSEST_FIRST, checks=MARKER_MAP_CHECKS, explorer=NaiveExtension,
         uses_lighthouse=False, parameters=(MARKERS,),
         kit_fn=lambda n, m, o: Kit(edge=_count(n, o, sum_to(ceil_half(n - 1))), directional=True),
         marker_bound_fn=lambda n, m: sum_to(ceil_half(n - 1)), family="robot", status="implemented, expected to fail",
