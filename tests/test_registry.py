@@ -123,3 +123,24 @@ def test_register_lists_a_new_algorithm_in_thesis_order_and_unregister_takes_it_
 def test_specs_are_built_by_keyword():
     with pytest.raises(TypeError):
         registry.AlgorithmSpec("x", "§1", *REGISTRY["basic"].to_json().values())
+
+
+def _unmeasured(registry, experiments):
+    """The entries whose asymptotic bound names a bench experiment that does not run them."""
+    runs = {name: {a for part in e.parts for a in part.algorithms} for name, e in experiments.items()}
+    return sorted(n for n, s in registry.items() if s.bound_bench and n not in runs.get(s.bound_bench, ()))
+
+
+def test_an_asymptotic_bound_names_a_bench_experiment_that_runs_the_entry():
+    """``bound_bench`` is what a run's report cites ("measured by bench table-6.2"): the experiment must run the
+    entry, or the citation is untrue.  Seeded: an entry dropped from its experiment is caught."""
+    from dataclasses import replace
+
+    from topomark.reference.algorithms.registry import REGISTRY
+    from topomark.reference.bench.plan import EXPERIMENTS
+
+    assert _unmeasured(REGISTRY, EXPERIMENTS) == []
+    table = EXPERIMENTS["table-6.2"]
+    dropped = replace(table, parts=tuple(replace(p, algorithms=tuple(a for a in p.algorithms if a != "extension-2-listing"))
+                                         for p in table.parts))
+    assert _unmeasured(REGISTRY, {**EXPERIMENTS, "table-6.2": dropped}) == ["extension-2-listing"]

@@ -164,7 +164,7 @@ EXPERIMENTS["lighthouses"] = Experiment(
     "The lighthouses of §3.3, §6.1 and §6.2 side by side (lattice-hole and complete-hole worlds)")
 TABLE_61_ALGS = ("case-1a", "case-1b", "case-2", "case-3a", "case-3b", "case-4", "case-4-mn", "case-5-v1",
                  "case-5-v2", "case-5-edge", "case-0")
-TABLE_62_ALGS = ("case-dv-sum", "extension-1", "extension-2", "case-3b",  # case-3b: the undirected original
+TABLE_62_ALGS = ("case-dv-sum", "case-dv-sum-listing", "extension-1", "extension-2", "extension-2-listing", "case-3b",  # case-3b: the undirected original
                  "case-1b-edgeinfo", "case-1b", "case-2-edgeinfo", "case-2",  # §6.2.2's edgeINFO and their originals
                  "case-1a-edgeinfo", "case-1a", "case-4-edgeinfo", "case-4", "case-4-mn-edgeinfo", "case-4-mn",
                  "case-5-directional")

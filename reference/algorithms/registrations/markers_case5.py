@@ -147,12 +147,13 @@ def failing_listing(spec: AlgorithmSpec, explorer: type, reason: str, way: str,
     ``explorer``, registered "implemented, expected to fail" with ``reason`` (its lines and the world that shows
     it) and the ``way`` its runs fail by: a run of it may end correct, failed or with a wrong map
     (``fails-by-design``), and a conformance case whose reference run fails is passed by giving up or by a
-    correct map (``docs/bounds.md``).  ``ways``: the listing's declared ways where they are not ``spec``'s and
+    correct map (``docs/bounds.md``); like every entry expected to fail it states no cost bound (the bench's
+    tables measure the entries that map).  ``ways``: the listing's declared ways where they are not ``spec``'s and
     ``way``."""
     name = f"{spec.name}-listing"
     assert spec.changes is not None and getattr(explorer, "literal", False) and getattr(explorer, "name", "") == name
     listed = replace(spec, name=name, thesis=f"{spec.thesis}, as listed: fails", explorer=explorer, changes=None,
-                     listing_entry=None, status=EXPECTED_TO_FAIL, status_reason=reason,
+                     listing_entry=None, bound=None, bound_bench=None, status=EXPECTED_TO_FAIL, status_reason=reason,
                      ways=(*spec.ways, way) if ways is None else ways)
     return replace(spec, listing_entry=name), listed
 
