@@ -7,7 +7,9 @@ from __future__ import annotations
 import contextlib
 import json
 import sys
+import tempfile
 import time
+from pathlib import Path
 from typing import Any, Callable, cast
 
 from topomark.spec.errors import InvalidInput
@@ -143,6 +145,7 @@ def explore_command(args) -> int:
     options = {name: getattr(args, f"param_{name.replace('-', '_')}") for name in parameters()}
     claim_file(args.trace, "--trace", args.force)  # before the run: a typo must not cost a long exploration
     claim_file(args.map, "--map", args.force)
+    claim_file(args.view, "--view", args.force)
     if args.breakdown_plot is not None:
         from topomark.reference.bench.reports.breakdown_plot import check_plot_file
         claim_file(args.breakdown_plot, "--breakdown-plot", args.force)
@@ -163,10 +166,16 @@ def explore_command(args) -> int:
     started = time.monotonic()
     ring = RingSink(TAIL + 1)
     with contextlib.ExitStack() as stack:
-        sink = TeeSink(stack.enter_context(FileSink(args.trace)), ring) if args.trace else ring
-        outcome = explore(world, spec, policies, check=not args.no_check, sink=sink,
-                          progress=_Progress(not (args.quiet or args.json)), check_mode=args.check_mode,
-                          keep_hypotheses=False, lighthouse=light, options=options)
+        trace = args.trace or (str(Path(stack.enter_context(tempfile.TemporaryDirectory())) / "trace.jsonl")
+                               if args.view else None)
+        with contextlib.ExitStack() as files:
+            sink = TeeSink(files.enter_context(FileSink(trace)), ring) if trace else ring
+            outcome = explore(world, spec, policies, check=not args.no_check, sink=sink,
+                              progress=_Progress(not (args.quiet or args.json)), check_mode=args.check_mode,
+                              keep_hypotheses=False, lighthouse=light, options=options)
+        if args.view:
+            from topomark.reference.viewer.view import view_trace
+            view_trace(cast(str, trace), world, args.view, f"{args.algorithm} on {label}")
     unwritten = _write_map(args.map, outcome)
     if args.breakdown_plot is not None:
         from topomark.reference.bench.reports.breakdown_plot import save_breakdown_plot

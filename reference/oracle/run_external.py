@@ -124,6 +124,8 @@ class ExternalResult:
     map: World | None = None
     rule: str | None = None
     determination: Determination | None = None  # the search for a witness that the map was a guess
+    trace: list[dict[str, Any]] = field(default_factory=list)  # with record=: the robot layer, a trace@2 (robot family)
+    world: World | None = None  # with record=: the world the trace was recorded on (its markers left out)
 
     @property
     def passed(self) -> bool:
@@ -149,11 +151,13 @@ class _Session:
     """One game of the world side against one program."""
 
     def __init__(self, world: World, peer: Peer, limits: Limits, check_snapshots: bool, version: int = 1,
-                 kit: Kit = LIGHTHOUSE_KIT):
+                 kit: Kit = LIGHTHOUSE_KIT, record: bool = False):
         self.world = world
         bare, self.start = prepare_world(world)
         self.version, self.kit = version, kit
-        self.sim = Simulator(bare, self.start, kit)
+        self.records: list[dict[str, Any]] | None = [] if record else None
+        self.sim = Simulator(bare, self.start, kit, listener=self._moved if record else None,
+                             op_listener=self._operated if record else None)
         self.robot = self.sim.robot()  # the program gets exactly the robot interface, over the pipe
         self.peer = peer
         self.max_traversals = limits.traversals(world)
@@ -162,6 +166,21 @@ class _Session:
         self.check_snapshots = check_snapshots
         self.snapshots = 0
         self.actions: list[Action] = []  # what the program did, replayed on other worlds (determination)
+
+    def _moved(self, motion: int, purpose: str, sig: Any, state: Any) -> None:
+        cast(list, self.records).append({"event": "move", "step": self.sim.cost, "motion": motion,
+                                         "perception": str(sig), "purpose": purpose})
+
+    def _operated(self, event: dict[str, Any]) -> None:
+        cast(list, self.records).append({"event": "op", **event})
+
+    def trace(self) -> list[dict[str, Any]]:
+        """What the program's robot did, as a trace@2 of the ``robot`` family (``spec/trace.md``), its end
+        unjudged: the run viewer replays it on the world and shows the verdict beside it."""
+        header = {"event": "header", "format": "topomark/trace@2", "family": "robot", "algorithm": "external program",
+                  "policies": {}, "lighthouse": None, "kit": self.kit.to_json(), "n": self.world.n, "m": self.world.m}
+        end = {"event": "end", "cost": self.sim.cost, "verified": False, "violation": None}
+        return [header, *(self.records or []), end]
 
     def hello(self) -> None:
         kit = {"markers": self.kit.to_json()} if self.version == 1 else {"kit": self.kit.to_json()}
@@ -288,7 +307,8 @@ class _Session:
 
 
 def run_external(world: World, command: Sequence[str], limits: Limits | None = None,
-                 check_snapshots: bool = True, version: int = 1, kit: Kit | None = None) -> ExternalResult:
+                 check_snapshots: bool = True, version: int = 1, kit: Kit | None = None,
+                 record: bool = False) -> ExternalResult:
     """Play ``world`` to ``command`` and judge it; bad input (world, command, kit) raises InvalidInput.
 
     ``version`` is the protocol spoken (1 or 2); ``kit`` what the program
@@ -306,7 +326,7 @@ def run_external(world: World, command: Sequence[str], limits: Limits | None = N
     session = None
     with Peer(command, limits.message, limits.wall) as peer:
         try:
-            session = _Session(world, peer, limits, check_snapshots, version, kit)
+            session = _Session(world, peer, limits, check_snapshots, version, kit, record)
             result = _judge(world, session)
             _say(peer, {"type": "bye", "verdict": result.verdict, "cost": session.sim.cost})
             peer.finish()
@@ -320,6 +340,8 @@ def run_external(world: World, command: Sequence[str], limits: Limits | None = N
         result.cost, result.snapshots = session.sim.cost, session.snapshots
         result.operations = session.sim.operations.total()
         result.marker_operations = dict(sorted(session.sim.operations.items()))
+        result.trace = session.trace() if record else []
+        result.world = session.sim.base_world if record else None
     result.message = clip(result.message, MAX_MESSAGE)
     result.wall = time.monotonic() - started
     result.program_seconds = min(peer.waited, result.wall)

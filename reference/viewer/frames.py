@@ -32,6 +32,7 @@ from array import array
 from dataclasses import dataclass, field
 from typing import Any
 
+from topomark.spec.errors import Violation
 from topomark.spec.marker import EdgeMarker, VertexMarker
 from topomark.spec.world import Start, World
 
@@ -63,6 +64,17 @@ class RunFrames:
     iterations: list[dict[str, Any]] = field(default_factory=list)
     v0: list[int] | None = None  # [frame, world vertex, exit offset]: map v0 once established
     result: ReplayResult | None = None
+    failure: Violation | None = None  # a verdict given beside the trace (a conformance run's), shown at its end
+
+    def judged(self) -> tuple[Violation | None, int | None, int | None]:
+        """The failure shown, its frame and its line: replay's divergence, else the verdict given beside the
+        trace (at the last frame), else none."""
+        r = self.result
+        if r is not None and not r.ok and r.divergence is not None and r.line is not None:
+            return r.divergence, r.line - 1, r.line
+        if self.failure is not None:
+            return self.failure, self.frames - 1, self.frames
+        return None, None, None
 
     @property
     def frames(self) -> int:

@@ -84,9 +84,9 @@ def _events(f: RunFrames) -> list[list[Any]]:
         kind = "vertex" if it["augmentation"] == "non-loop" else "loop"
         what = f"vertex v{it['joined'][1][0]} added" if kind == "vertex" else "loop closed"
         events.append([it["frame"], "rejected" if rejected else kind, f"iteration {it['iteration']}: {what}{note}"])
-    bad = f.divergence_frame
-    if bad is not None:
-        events.append([bad, "violation", f"diverged: {f.result.divergence.check if f.result and f.result.divergence else ''}"])
+    failure, bad, _ = f.judged()
+    if failure is not None:
+        events.append([bad, "violation", f"failed: {failure.check}"])
     elif f.frames:
         events.append([f.frames - 1, "end", "end: " + ("verified" if f.result and f.result.ok else "not verified")])
     return sorted(events, key=lambda e: e[0])
@@ -114,7 +114,7 @@ def run_data(f: RunFrames, size: float) -> dict[str, Any]:
     assert result is not None, "the frames were taken by a replay"
     pos, _ = positions(world, size)
     index = {v: k for k, v in enumerate(world.vertices)}
-    div = result.divergence
+    div, bad, _ = f.judged()
     return {
         "vertices": list(world.vertices), "pos": [[round(pos[v][0], 1), round(pos[v][1], 1)] for v in world.vertices],
         "rotation": [[index[w] for w in world.rotation[v]] for v in world.vertices], "m": world.m,
@@ -122,9 +122,9 @@ def run_data(f: RunFrames, size: float) -> dict[str, Any]:
         "cols": {name: _column(getattr(f, name)) for name in ("kind", "vertex", "entry", "walk", "hyp")},
         "markers": f.markers, "thread": f.thread, "iterations": f.iterations, "v0": f.v0,
         "events": _events(f), "checks": _checks(result.layers),
-        "verdict": {"ok": result.ok, "message": result.message, "frame": f.divergence_frame,
+        "verdict": {"ok": div is None, "message": result.message, "frame": bad,
                     "divergence": None if div is None else div.to_json()},
-        "open": f.divergence_frame or 0}
+        "open": bad or 0}
 
 
 def _asset(name: str) -> str:
@@ -153,11 +153,11 @@ def _drawings(f: RunFrames, title: str, size: float) -> tuple[str, str]:
 def _divergence(f: RunFrames) -> str:
     """The divergence side by side: what the reference (the world, the specification, topomark's re-run)
     expected and what the program's trace claims, at the line where they first differ."""
-    r = f.result
-    if r is None or r.ok or r.divergence is None:
+    v, _, line = f.judged()
+    if v is None:
         return ""
-    v = r.divergence
-    return (f'<section id="tm-divergence"><h2>Diverged at line {r.line} ({escape(v.where)}): {escape(v.check)}</h2>'
+    how = "Diverged" if f.failure is None else "Failed"
+    return (f'<section id="tm-divergence"><h2>{how} at line {line} ({escape(v.where)}): {escape(v.check)}</h2>'
             f'<div class="side"><div><h3>the reference expected</h3><pre id="tm-expected">{escape(v.expected)}</pre>'
             f'</div><div><h3>the program\'s trace claims</h3><pre id="tm-found">{escape(v.found)}</pre></div></div>'
             f'<p>{escape(v.detail)}</p><p>The frames run up to this line; the run before it is verified.</p></section>')
@@ -172,6 +172,8 @@ def page(f: RunFrames, title: str) -> str:
     r, h = f.result, f.header
     assert r is not None, "the frames were taken by a replay"
     verdict = ("VERIFIED " if r.ok else "DIVERGED ") + r.message
+    if r.ok and f.failure is not None:
+        verdict = f"FAILED {f.failure} (the trace's robot layer replays: {r.message})"
     body = _asset("body.html").format(
         title=escape(title), algorithm=escape(h.get("algorithm", "")), kit=escape(_kit(h)),
         layers=escape(", ".join(r.layers)), verdict=escape(verdict), world=world, map=the_map, legend=escape(LEGEND),

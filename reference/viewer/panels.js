@@ -14,7 +14,11 @@
     if (!D.iterations.length && !D.v0) { box.innerHTML = "<p>This trace's family records no algorithm layer: the robot's moves and marker operations only.</p>"; return; }
     if (!D.v0 || D.v0[0] > f) { box.innerHTML = "<p>The lighthouse is being established (Algorithm 3.1 line 1).</p>"; return; }
     const k = closed ? done - 1 : done;
-    if (k >= its.length) { box.innerHTML = "<p>After the last iteration (" + done + " of m = " + D.m + ").</p>"; return; }
+    if (k >= its.length) {
+      box.innerHTML = done < D.m ? "<p><b>iteration " + (done + 1) + "</b> of m = " + D.m + " (in progress; its record is not reached)</p>"
+        : "<p>After the last iteration (" + done + " of m = " + D.m + ").</p>";
+      return;
+    }
     const it = its[k];
     let html = "<p><b>iteration " + it.iteration + "</b> of m = " + D.m + (closed ? " (its record: done)" : " (in progress)") +
       ": e = " + dart(it.edge) + ", v_u's signature " + esc(it.signature) + (it.by_marker ? " (the lighthouse: recognised by the marker)" : "") + "</p>";

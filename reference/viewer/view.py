@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from topomark.spec.errors import Violation
 from topomark.spec.world import World
 
 from topomark.reference.files.outputs import write_output
@@ -26,11 +27,15 @@ def default_output(trace: str | Path) -> str:
     return str(Path(trace).with_suffix(".html"))
 
 
-def view_trace(trace: str | Path, world: World | None, output: str | Path, title: str | None = None) -> RunFrames:
+def view_trace(trace: str | Path, world: World | None, output: str | Path, title: str | None = None,
+               failure: Violation | None = None) -> RunFrames:
     """Replay the trace file ``trace`` on ``world`` (None: the world its own final map gives) and write its page
-    to ``output``; returns the frames, whose ``result`` is replay's verdict."""
+    to ``output``; returns the frames, whose ``result`` is replay's verdict.  ``failure`` is a verdict given
+    beside the trace (a conformance run's: what the reference expected, what the program did), shown at its end
+    when replay itself finds nothing."""
     if world is None:
         world = world_of_trace(trace)
     frames = take_frames(world, load_trace(trace), str(trace))
+    frames.failure = failure
     write_output(output, page(frames, title or Path(trace).name))
     return frames
