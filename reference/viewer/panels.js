@@ -8,8 +8,11 @@
   const V = D.verdict, bad = V.frame;
   const COLOURS = {vertex: "#27ae60", loop: "#2980b9", rejected: "#e67e22", marker: "#8e44ad", violation: "#c0392b", end: "#222"};
 
+  let shownKey = "";
   function showIteration(f, done, closed, h) {
-    const its = D.iterations, box = $("tm-iteration");
+    const its = D.iterations, box = $("tm-iteration"), key = [done, closed, h, D.v0 && D.v0[0] <= f].join();
+    if (key === shownKey) return;  // drawn already: stepping within one walk redraws nothing
+    shownKey = key;
     $("tm-hypothesis").textContent = "none";
     if (!D.iterations.length && !D.v0) { box.innerHTML = "<p>This trace's family records no algorithm layer: the robot's moves and marker operations only.</p>"; return; }
     if (!D.v0 || D.v0[0] > f) { box.innerHTML = "<p>The lighthouse is being established (Algorithm 3.1 line 1).</p>"; return; }

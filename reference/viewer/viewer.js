@@ -18,6 +18,11 @@
     if (kind[f] === ITER) k++;
     steps[f] = s; done[f] = k;
   }
+  const K = D.kinds.length, split = new Int32Array(N * K);  // the moves of each kind of walk up to each frame
+  for (let f = 0; f < N; f++) {
+    if (f > 0) split.copyWithin(f * K, (f - 1) * K, f * K);
+    if (walk[f] >= 0) split[f * K + walk[f]]++;
+  }
   const stepFrame = new Int32Array(steps[N - 1] + 1);  // the frame of each step's move
   for (let f = 0; f < N; f++) if (kind[f] === MOVE) stepFrame[steps[f]] = f;
   const names = D.vertices, pos = D.pos, rot = D.rotation;
@@ -72,7 +77,7 @@
   }
   function drawTrail(g, f) {  // the walk of this iteration so far; the hypothesis under test's walk highlighted
     const from = done[f] === 0 ? 0 : D.iterations[done[f] - 1].frame;
-    for (let k = Math.max(from + 1, f - 400); k <= f; k++) {
+    for (let k = Math.max(from + 1, f - 120); k <= f; k++) {  // the last 120 lines of it at most
       if (kind[k] !== MOVE) continue;
       const p = pos[vertex[k - 1]], q = pos[vertex[k]];
       const tested = hyp[f] >= 0 && hyp[k] === hyp[f] && kind[f] === MOVE;
@@ -142,8 +147,7 @@
     $("tm-map-vertices").textContent = S.places.filter((p) => p).length;
     TM.showIteration(f, done[f], kind[f] === ITER, hyp[f]);
     TM.showChecks(f, D.records[kind[f]]);
-    const row = new Array(D.kinds.length).fill(0);
-    for (let k = 0; k <= f; k++) if (walk[k] >= 0) row[walk[k]]++;
+    const row = split.subarray(f * K, f * K + K);
     $("tm-split").innerHTML = D.kinds.map((k, i) => "<tr" + (row[i] ? "" : " class=zero") + "><td>" + k + "</td><td id='tm-kind-" + i + "'>" + row[i] + "</td></tr>").join("");
     TM.cursor(f);
   };
