@@ -6,6 +6,7 @@ from __future__ import annotations
 import json
 import re
 from collections import Counter
+from pathlib import Path
 
 import pytest
 
@@ -145,3 +146,13 @@ def test_explore_and_replay_write_the_same_page(tmp_path, capsys):
     capsys.readouterr()
     strip = lambda text: re.sub(r"<title>.*?</title>|<h1>.*?</h1>|<text x=\"8.0\" y=\"16\"[^>]*>[^<]*</text>", "", text)
     assert strip((tmp_path / "e.html").read_text()) == strip((tmp_path / "r.html").read_text())
+
+
+def test_the_docs_example_page_is_current(tmp_path, capsys):
+    """``docs/viewer-example.html``, linked from the tutorial, is what ``explore --view`` writes today."""
+    out = tmp_path / "viewer-example.html"
+    assert main(["explore", "lattice:rows=4,cols=4", "--view", str(out), "--quiet"]) == 0
+    capsys.readouterr()
+    docs = Path(__file__).resolve().parents[1] / "docs" / "viewer-example.html"
+    assert out.read_text() == docs.read_text(), ("regenerate it: topomark explore lattice:rows=4,cols=4 --view "
+                                                 "docs/viewer-example.html --force")

@@ -29,5 +29,5 @@ def view_command(args) -> int:
     data = {"trace": args.trace, "world": args.world, "page": output, "frames": frames.frames,
             "verified": result.ok, "message": result.message, "line": result.line}
     emit(args, data, f"wrote {output}: {frames.frames:,} lines of {args.trace}, "
-                     + ("verified" if result.ok else f"diverged at line {result.line}: {result.message}"))
+                     + ("verified" if result.ok else f"DIVERGED {result.message}"))
     return 0 if result.ok else 1
