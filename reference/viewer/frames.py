@@ -62,6 +62,7 @@ class RunFrames:
     markers: list[list[Any]] = field(default_factory=list)  # [frame, [marker, ...]] after each change
     thread: list[list[Any]] = field(default_factory=list)  # [frame, [vertex, ...] laid walk, held] after each change
     iterations: list[dict[str, Any]] = field(default_factory=list)
+    ops: list[list[Any]] = field(default_factory=list)  # [frame, words] for each marker or thread operation
     v0: list[int] | None = None  # [frame, world vertex, exit offset]: map v0 once established
     result: ReplayResult | None = None
     failure: Violation | None = None  # a verdict given beside the trace (a conformance run's), shown at its end
@@ -137,6 +138,10 @@ class _Observer:
             if rec["purpose"] == "new":
                 self.new_state = sim.state
         self._markers(sim, frame)
+        if event in ("op", "drop"):
+            what = "drop directional vertex marker" if event == "drop" else \
+                f"{rec['op'].replace('_', ' ')} {'thread' if rec['kind'] == 'thread' else rec['kind'] + ' marker'}"
+            f.ops.append([frame, f"{what} at {v}"])
         alg = r.algorithm
         if f.v0 is None and alg is not None and alg.S is not None:
             f.v0 = [frame, self.index[alg.anchor[0]], alg.anchor[1]]

@@ -72,12 +72,10 @@ def _column(values: array) -> str:
 
 
 def _events(f: RunFrames) -> list[list[Any]]:
-    """The timeline: [frame, type, words] for each marker operation, iteration and the end or the divergence."""
-    names = f.world.vertices
+    """The timeline: [frame, type, words] for each marker or thread operation, iteration, and the end or the
+    failure."""
     events: list[list[Any]] = []
-    for frame, marks in f.markers:
-        events.append([frame, "marker", "markers: " + (", ".join(
-            f"{names[m[1]]}" if m[0] == "v" else f"{names[m[1]]}-{names[m[2]]}" for m in marks) or "none")])
+    events += [[frame, "marker", words] for frame, words in f.ops]
     for it in f.iterations:
         rejected = sum(h[3] in ("case 1", "case 2") for h in it["hypotheses"])
         note = f", {rejected} hypothes{'is' if rejected == 1 else 'es'} rejected" if rejected else ""
