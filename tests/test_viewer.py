@@ -156,3 +156,27 @@ def test_the_docs_example_page_is_current(tmp_path, capsys):
     docs = Path(__file__).resolve().parents[1] / "docs" / "viewer-example.html"
     assert out.read_text() == docs.read_text(), ("regenerate it: topomark explore lattice:rows=4,cols=4 --view "
                                                  "docs/viewer-example.html --force")
+
+
+def test_a_stopped_run_or_a_moving_lighthouse_does_not_give_its_world(tmp_path, capsys):
+    from topomark.reference.explorers.lighthouses import LIGHTHOUSES
+    world = g.lattice(3, 3)
+    moved = explore(world, lighthouse=LIGHTHOUSES["three-undirected-vertex"]).trace  # walks to mark a neighbour
+    _, t = _files(tmp_path, world, moved)
+    assert main(["view", t, "-o", str(tmp_path / "v.html")]) == 2
+    assert "the lighthouse moved the robot before v0 was established" in capsys.readouterr().err
+    assert main(["view", t, "--world", str(tmp_path / "w.json"), "-o", str(tmp_path / "v.html")]) == 0
+    capsys.readouterr()
+    stopped = explore(g.cycle(6), lighthouse=LIGHTHOUSES["undirected-vertex"]).trace  # outcome failed
+    assert stopped[-1].get("outcome") == "failed"
+    _, t = _files(tmp_path, g.cycle(6), stopped)
+    assert main(["view", t, "-o", str(tmp_path / "s.html")]) == 2
+    assert "the run stopped before its map was complete (failed)" in capsys.readouterr().err
+
+
+def test_the_page_is_never_written_over_its_trace(tmp_path, capsys):
+    world = g.cycle(4)
+    w, _ = _files(tmp_path, world, explore(world).trace)
+    (tmp_path / "t.html").write_text(dump_trace(explore(world).trace))
+    assert main(["view", str(tmp_path / "t.html"), "--world", w, "--force"]) == 2
+    assert "written over the trace" in capsys.readouterr().err
