@@ -180,3 +180,15 @@ def test_the_page_is_never_written_over_its_trace(tmp_path, capsys):
     (tmp_path / "t.html").write_text(dump_trace(explore(world).trace))
     assert main(["view", str(tmp_path / "t.html"), "--world", w, "--force"]) == 2
     assert "written over the trace" in capsys.readouterr().err
+
+
+def test_a_divergence_at_the_header_is_a_page_of_one_line(tmp_path, capsys):
+    """Replay's re-run layer judges the header's kit before any record: the page still has its first line."""
+    world = g.lattice(3, 3)
+    trace = explore(world, "dudek").trace
+    trace[0]["kit"] = {"movable": True, "undirected-vertex": 2}
+    w, t = _files(tmp_path, world, trace)
+    assert main(["view", t, "--world", w, "-o", str(tmp_path / "v.html")]) == 1
+    assert "wrote" in capsys.readouterr().out
+    f = take_frames(world, iter(parse_trace(dump_trace(trace))), "t")
+    assert f.frames == 1 and f.divergence_frame == 0 and f.judged()[0].check == "marker kit"

@@ -28,6 +28,6 @@ def view_command(args) -> int:
     result = cast(ReplayResult, frames.result)
     data = {"trace": args.trace, "world": args.world, "page": output, "frames": frames.frames,
             "verified": result.ok, "message": result.message, "line": result.line}
-    emit(args, data, f"wrote {output}: {frames.frames:,} lines of {args.trace}, "
+    emit(args, data, f"wrote {output}: {frames.frames:,} line{'s' if frames.frames != 1 else ''} of {args.trace}, "
                      + ("verified" if result.ok else f"DIVERGED {result.message}"))
     return 0 if result.ok else 1

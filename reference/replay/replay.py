@@ -201,9 +201,9 @@ def replay(world: World, records: Iterable[dict[str, Any]], source: str = "<trac
     r = _Replay(world, header, source)
     line, rec = 1, header
     try:
-        r.begin()
         if observe is not None:
             observe(r, header, 1)
+        r.begin()
         for line, rec in enumerate(records, 2):
             try:
                 r.record(rec, f"{source} line {line}")
