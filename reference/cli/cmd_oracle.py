@@ -24,6 +24,7 @@ from topomark.reference.cli.args import check_count, check_seconds
 from topomark.reference.cli.cmd_explore import parse_policies
 from topomark.reference.oracle.drive import drive
 from topomark.reference.explorers.lighthouses import lighthouse
+from topomark.reference.oracle.program_trace import ProgramTrace
 from topomark.reference.oracle.run_external import Limits, run_external
 from topomark.reference.run.map_check import check_map
 from topomark.reference.files.outputs import check_output_dir, guarded, write_output
@@ -105,7 +106,7 @@ def check_map_command(args) -> int:
 
 def replay_command(args) -> int:
     world = load_world(args.world)
-    if args.view:
+    if args.view is not None:
         from topomark.reference.viewer.view import view_trace
         claim_file(args.view, "--view", args.force)
         result = cast(ReplayResult, view_trace(args.trace, world, args.view).result)
@@ -208,12 +209,12 @@ def _view_failures(directory: str, rows: list) -> list[str]:
     for row in rows:
         if row.passed:
             continue
-        r = row.result
+        r, program = row.result, cast(ProgramTrace, row.result.program)  # kept: the run was recorded
         name = (row.name if isinstance(row, conformance.Row) else f"{row.algorithm}-{row.case['name']}")
         stem = str(Path(directory) / "".join(c if c.isalnum() or c in "-_." else "_" for c in name))
-        write_output(stem + ".jsonl", dump_trace(r.trace))
+        write_output(stem + ".jsonl", dump_trace(program.records()))
         failure = r.violation or Violation("conformance", r.reason, "a pass: a correct map within the limits",
                                            r.message, f"the program's verdict: {r.verdict} ({r.reason})")
-        view_trace(stem + ".jsonl", r.world, stem + ".html", f"{name}: {r.reason}", failure)
+        view_trace(stem + ".jsonl", program.world, stem + ".html", f"{name}: {r.reason}", failure)
         pages.append(stem + ".html")
     return pages

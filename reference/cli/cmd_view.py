@@ -19,7 +19,7 @@ __all__ = ["view_command"]
 
 
 def view_command(args) -> int:
-    output = args.output or default_output(args.trace)
+    output = default_output(args.trace) if args.output is None else args.output
     if Path(output).resolve() == Path(args.trace).resolve():
         raise InvalidInput(f"-o: the page would be written over the trace {args.trace} itself; name another with -o")
     claim_file(output, "-o", args.force)

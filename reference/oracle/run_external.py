@@ -8,18 +8,15 @@ directional vertex marker, §3.3; ``@2``: any :class:`~topomark.spec.kit.Kit`) a
 world with the markers the program left in it, and by whether what the program sensed determines it
 (:mod:`~topomark.reference.oracle.determination`).
 
-Time is the program's time: the ``--timeout`` and ``--message-timeout``
-limits count only the time topomark waits for the program
-(:class:`~topomark.reference.oracle.peer.Peer`); what topomark spends
-checking snapshots and judging the map is reported apart
-(:attr:`ExternalResult.program_seconds`, :attr:`ExternalResult.topomark_seconds`)
-and never makes a ``timeout``.
+Time is the program's time: the ``--timeout`` and ``--message-timeout`` limits count only the time topomark waits
+for the program (:class:`~topomark.reference.oracle.peer.Peer`); what topomark spends checking snapshots and judging
+the map is reported apart (:attr:`ExternalResult.program_seconds`, :attr:`ExternalResult.topomark_seconds`) and
+never makes a ``timeout``.  With ``record``, what the program's robot did is kept as a trace
+(:class:`~topomark.reference.oracle.program_trace.ProgramTrace`, ``ExternalResult.program``), for the run viewer.
 
-The world is played without markers: the program drops its own from its
-kit.  A world file may carry the marker Algorithm 3.1's robot drops at the
-start (a directional vertex marker pointing at the faced exit, §3.3: the
-marker of a map written by an explorer), which is taken away whatever the
-kit; any other marker, or a thread, is bad input that says so.
+The world is played without markers: the program drops its own from its kit.  A world file may carry the marker
+Algorithm 3.1's robot drops at the start (a directional vertex marker pointing at the faced exit, §3.3: the marker
+of a map written by an explorer), which is taken away whatever the kit; any other marker, or a thread, is bad input.
 
 Whatever the program does, the session ends with an :class:`ExternalResult`:
 a crash, a hang, garbage on stdout, an exit that does not exist, a second
@@ -47,6 +44,7 @@ from topomark.reference.algorithms.bounds import upper_bound
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES
 from topomark.reference.run.explore import dropped_at_start, prepare_world
 from topomark.reference.run.map_check import MapVerdict
+from topomark.reference.oracle.program_trace import ProgramTrace
 from topomark.reference.oracle.peer import Peer
 from topomark.reference.oracle.protocol import MAX_MESSAGE, PROTOCOL, PROTOCOL2, Expect, ProtocolError, shape_error
 from topomark.reference.run.simulator import Simulator
@@ -124,8 +122,7 @@ class ExternalResult:
     map: World | None = None
     rule: str | None = None
     determination: Determination | None = None  # the search for a witness that the map was a guess
-    trace: list[dict[str, Any]] = field(default_factory=list)  # with record=: the robot layer, a trace@2 (robot family)
-    world: World | None = None  # with record=: the world the trace was recorded on (its markers left out)
+    program: ProgramTrace | None = None  # with record=: what the program's robot did, as a trace
 
     @property
     def passed(self) -> bool:
@@ -155,9 +152,8 @@ class _Session:
         self.world = world
         bare, self.start = prepare_world(world)
         self.version, self.kit = version, kit
-        self.records: list[dict[str, Any]] | None = [] if record else None
-        self.sim = Simulator(bare, self.start, kit, listener=self._moved if record else None,
-                             op_listener=self._operated if record else None)
+        self.program = ProgramTrace(bare, kit) if record else None
+        self.sim = Simulator(bare, self.start, kit, *(self.program.listeners() if self.program else ()))
         self.robot = self.sim.robot()  # the program gets exactly the robot interface, over the pipe
         self.peer = peer
         self.max_traversals = limits.traversals(world)
@@ -166,21 +162,6 @@ class _Session:
         self.check_snapshots = check_snapshots
         self.snapshots = 0
         self.actions: list[Action] = []  # what the program did, replayed on other worlds (determination)
-
-    def _moved(self, motion: int, purpose: str, sig: Any, state: Any) -> None:
-        cast(list, self.records).append({"event": "move", "step": self.sim.cost, "motion": motion,
-                                         "perception": str(sig), "purpose": purpose})
-
-    def _operated(self, event: dict[str, Any]) -> None:
-        cast(list, self.records).append({"event": "op", **event})
-
-    def trace(self) -> list[dict[str, Any]]:
-        """What the program's robot did, as a trace@2 of the ``robot`` family (``spec/trace.md``), its end
-        unjudged: the run viewer replays it on the world and shows the verdict beside it."""
-        header = {"event": "header", "format": "topomark/trace@2", "family": "robot", "algorithm": "external program",
-                  "policies": {}, "lighthouse": None, "kit": self.kit.to_json(), "n": self.world.n, "m": self.world.m}
-        end = {"event": "end", "cost": self.sim.cost, "verified": False, "violation": None}
-        return [header, *(self.records or []), end]
 
     def hello(self) -> None:
         kit = {"markers": self.kit.to_json()} if self.version == 1 else {"kit": self.kit.to_json()}
@@ -306,14 +287,12 @@ class _Session:
             raise _Fail("map-invalid", f"the map is not a valid world: {exc}") from None
 
 
-def run_external(world: World, command: Sequence[str], limits: Limits | None = None,
-                 check_snapshots: bool = True, version: int = 1, kit: Kit | None = None,
-                 record: bool = False) -> ExternalResult:
+def run_external(world: World, command: Sequence[str], limits: Limits | None = None, check_snapshots: bool = True,
+                 version: int = 1, kit: Kit | None = None, record: bool = False) -> ExternalResult:
     """Play ``world`` to ``command`` and judge it; bad input (world, command, kit) raises InvalidInput.
 
-    ``version`` is the protocol spoken (1 or 2); ``kit`` what the program
-    carries (default Algorithm 3.1's one directional vertex marker; another
-    kit needs ``version=2``).
+    ``version`` is the protocol spoken (1 or 2); ``kit`` what the program carries (default Algorithm 3.1's one
+    directional vertex marker; another kit needs ``version=2``); ``record`` keeps its trace (``result.program``).
 
     The program and everything it started are killed when the session ends,
     whatever the verdict (:class:`~topomark.reference.oracle.peer.Peer`).
@@ -340,8 +319,7 @@ def run_external(world: World, command: Sequence[str], limits: Limits | None = N
         result.cost, result.snapshots = session.sim.cost, session.snapshots
         result.operations = session.sim.operations.total()
         result.marker_operations = dict(sorted(session.sim.operations.items()))
-        result.trace = session.trace() if record else []
-        result.world = session.sim.base_world if record else None
+        result.program = session.program
     result.message = clip(result.message, MAX_MESSAGE)
     result.wall = time.monotonic() - started
     result.program_seconds = min(peer.waited, result.wall)
