@@ -39,7 +39,7 @@ from topomark.spec.world import World
 
 from topomark.proofs.drawing_png import save_drawing
 
-__all__ = ["layout", "world_svg", "pair_svg", "save_pair", "save_world", "drawing_size", "clockwise_ok",
+__all__ = ["layout", "positions", "world_svg", "pair_svg", "save_pair", "save_world", "drawing_size", "clockwise_ok",
            "MAX_DRAW_VERTICES", "check_draw_size"]
 
 MAX_DRAW_VERTICES = 1000
@@ -304,12 +304,19 @@ def _start(world: World, pos) -> list[str]:
         f'<text x="{c[0]:.1f}" y="{c[1] + 3:.1f}" font-size="9" fill="#27ae60" text-anchor="middle">start</text>']
 
 
+def positions(world: World, size: float = SIZE, dx: float = 0.0) -> tuple[dict[str, tuple[float, float]], bool]:
+    """Where :func:`world_svg` (and :func:`pair_svg` at ``dx``) puts each vertex: :func:`layout`'s positions below
+    the title line; and whether they show the rotation faithfully.  A drawing laid over a world's own (the run
+    viewer's robot and markers) takes its coordinates from here."""
+    pos, faithful = layout(world, size)
+    return {v: (x + dx, y + 18) for v, (x, y) in pos.items()}, faithful
+
+
 def _world_group(world: World, title: str, dx: float, size: float, note: str = "",
                  crop: bool = False) -> tuple[list[str], float]:
     """The drawing of one world at ``dx``, and the height it takes (``crop``: only as tall as the layout, not
     ``size``); ``note`` follows the n, m, genus line under it."""
-    pos, faithful = layout(world, size)
-    pos = {v: (x + dx, y + 18) for v, (x, y) in pos.items()}
+    pos, faithful = positions(world, size, dx)
     bottom = (max(y for _, y in pos.values()) + MARGIN - 6) if crop else size + 30
     note = ("" if faithful else " (non-planar embedding: exit labels give the rotation)") + \
         (f"; {note}" if note else "")

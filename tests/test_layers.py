@@ -26,6 +26,7 @@ LAYERS = (
     ("reference.cli",),
     ("reference.worstcase",),
     ("reference.oracle", "reference.bench", "reference.claims", "reference.engine"),
+    ("reference.viewer",),
     ("reference.replay",),
     ("reference.run",),
     ("reference.trace",),

@@ -7,7 +7,9 @@ from __future__ import annotations
 import contextlib
 import json
 import sys
+import tempfile
 import time
+from pathlib import Path
 from typing import Any, Callable, cast
 
 from topomark.spec.errors import InvalidInput
@@ -143,6 +145,7 @@ def explore_command(args) -> int:
     options = {name: getattr(args, f"param_{name.replace('-', '_')}") for name in parameters()}
     claim_file(args.trace, "--trace", args.force)  # before the run: a typo must not cost a long exploration
     claim_file(args.map, "--map", args.force)
+    claim_file(args.view, "--view", args.force)
     if args.breakdown_plot is not None:
         from topomark.reference.bench.reports.breakdown_plot import check_plot_file
         claim_file(args.breakdown_plot, "--breakdown-plot", args.force)
@@ -162,11 +165,7 @@ def explore_command(args) -> int:
     check_run(world, spec, light, options)  # refused before the trace file is started
     started = time.monotonic()
     ring = RingSink(TAIL + 1)
-    with contextlib.ExitStack() as stack:
-        sink = TeeSink(stack.enter_context(FileSink(args.trace)), ring) if args.trace else ring
-        outcome = explore(world, spec, policies, check=not args.no_check, sink=sink,
-                          progress=_Progress(not (args.quiet or args.json)), check_mode=args.check_mode,
-                          keep_hypotheses=False, lighthouse=light, options=options)
+    outcome = _explored(args, world, spec, policies, light, options, label, ring)
     unwritten = _write_map(args.map, outcome)
     if args.breakdown_plot is not None:
         from topomark.reference.bench.reports.breakdown_plot import save_breakdown_plot
@@ -196,6 +195,23 @@ def explore_command(args) -> int:
     if outcome.violation is not None:  # even unchecked: the simulator refused an operation the robot tried
         return 1
     return 0 if outcome.outcome == "correct" or (args.no_check and outcome.claimed == "correct") else 1
+
+
+def _explored(args, world, spec, policies, light, options, label: str, ring: RingSink):
+    """The run, its trace streamed to ``ring`` and to ``--trace`` (for ``--view`` alone, a temporary file);
+    with ``--view``, the viewer's page of that trace."""
+    with contextlib.ExitStack() as stack:
+        trace = args.trace or (str(Path(stack.enter_context(tempfile.TemporaryDirectory())) / "trace.jsonl")
+                               if args.view else None)
+        with contextlib.ExitStack() as files:
+            sink = TeeSink(files.enter_context(FileSink(trace)), ring) if trace else ring
+            outcome = explore(world, spec, policies, check=not args.no_check, sink=sink,
+                              progress=_Progress(not (args.quiet or args.json)), check_mode=args.check_mode,
+                              keep_hypotheses=False, lighthouse=light, options=options)
+        if args.view:
+            from topomark.reference.viewer.view import view_trace
+            view_trace(cast(str, trace), world, args.view, f"{args.algorithm} on {label}")
+    return outcome
 
 
 COSTLIEST = 5  # iterations the --breakdown report lists

@@ -8,10 +8,11 @@ is imported when one runs.
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import cast
 import sys
 
-from topomark.spec.errors import InvalidInput
+from topomark.spec.errors import InvalidInput, Violation
 from topomark.spec.jsontext import no_duplicate_keys, parse_json
 from topomark.spec.kit import Kit
 from topomark.spec.world import World
@@ -23,11 +24,12 @@ from topomark.reference.cli.args import check_count, check_seconds
 from topomark.reference.cli.cmd_explore import parse_policies
 from topomark.reference.oracle.drive import drive
 from topomark.reference.explorers.lighthouses import lighthouse
+from topomark.reference.oracle.program_trace import ProgramTrace
 from topomark.reference.oracle.run_external import Limits, run_external
 from topomark.reference.run.map_check import check_map
-from topomark.reference.files.outputs import guarded
+from topomark.reference.files.outputs import check_output_dir, guarded, write_output
 from topomark.reference.files.overwrite import claim_dir, claim_file
-from topomark.reference.replay.replay import load_trace, replay
+from topomark.reference.replay.replay import ReplayResult, load_trace, replay
 from topomark.spec.kit import MAX_COUNT
 from topomark.reference.worlds.argument import resolve_world
 
@@ -104,7 +106,12 @@ def check_map_command(args) -> int:
 
 def replay_command(args) -> int:
     world = load_world(args.world)
-    result = replay(world, load_trace(args.trace), args.trace)
+    if args.view is not None:
+        from topomark.reference.viewer.view import view_trace
+        claim_file(args.view, "--view", args.force)
+        result = cast(ReplayResult, view_trace(args.trace, world, args.view).result)
+    else:
+        result = replay(world, load_trace(args.trace), args.trace)
     data = {"world": args.world, "trace": args.trace, **result.to_json()}
     emit(args, data, ("VERIFIED " if result.ok else "DIVERGED ") + result.message)
     return 0 if result.ok else 1
@@ -176,10 +183,38 @@ def conformance_run(args) -> int:
     version, kit = _protocol_choice(args)
     show = None if args.json else (lambda row: print(f"  {row.to_json()['case']}: {row.to_json()['verdict']}",
                                                      file=sys.stderr))
-    rows, wall = conformance.timed_run(args.dir, command, limits, args.select, show, version, kit, algorithms)
+    claim_dir(args.view_failures, "--view-failures", args.force, replace=("*.jsonl", "*.html"))
+    rows, wall = conformance.timed_run(args.dir, command, limits, args.select, show, version, kit, algorithms,
+                                       record=args.view_failures is not None)
     passed = sum(r.passed for r in rows)
     data = {"dir": args.dir, "command": command, "protocol": 2 if algorithms else version, "algorithms": algorithms,
             "passed": passed, "total": len(rows), "wall_seconds": round(wall, 3), "cases": [r.to_json() for r in rows]}
     table = conformance.render_algorithm_table(rows, wall) if algorithms else conformance.render_table(rows, wall)
+    if args.view_failures is not None:
+        pages = _view_failures(args.view_failures, rows)
+        data["views"] = pages
+        table += f"\n{len(pages)} failing case{'s' if len(pages) != 1 else ''} drawn in {args.view_failures}"
     emit(args, data, table)
     return 0 if passed == len(rows) else 1
+
+
+def _view_failures(directory: str, rows: list) -> list[str]:
+    """Each failing case's trace and viewer page in ``directory`` (:mod:`topomark.reference.viewer`); the pages'
+    names."""
+    from topomark.reference.trace.records import dump_trace
+    from topomark.reference.viewer.view import view_trace
+
+    check_output_dir(directory)
+    pages = []
+    for row in rows:
+        if row.passed:
+            continue
+        r, program = row.result, cast(ProgramTrace, row.result.program)  # kept: the run was recorded
+        name = (row.name if isinstance(row, conformance.Row) else f"{row.algorithm}-{row.case['name']}")
+        stem = str(Path(directory) / "".join(c if c.isalnum() or c in "-_." else "_" for c in name))
+        write_output(stem + ".jsonl", dump_trace(program.records()))
+        failure = r.violation or Violation("conformance", r.reason, "a pass: a correct map within the limits",
+                                           r.message, f"the program's verdict: {r.verdict} ({r.reason})")
+        view_trace(stem + ".jsonl", program.world, stem + ".html", f"{name}: {r.reason}", failure)
+        pages.append(stem + ".html")
+    return pages

@@ -65,6 +65,7 @@ COMMANDS = {  # name: (module of .options that registers it, summary for topomar
     "replay": ("oracle", "verify a topomark/trace@1 trace recorded by any implementation"),
     "drive": ("oracle", "drive an external world provider (simulator or robot bridge) with Algorithm 3.1"),
     "conformance": ("oracle", "export, lint or run the conformance suite (topomark/conformance@2)"),
+    "view": ("view", "a trace stepped through in the browser: one self-contained HTML page"),
     "bench": ("bench", "run a thesis experiment (figures 3.10-3.12, tables 4.1-4.8, lighthouses, "
                            "tables 6.1-6.2) and write CSV + report"),
     "algorithms": ("algorithms", "list the registered algorithms with their thesis references and bounds"),

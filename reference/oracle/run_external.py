@@ -8,18 +8,15 @@ directional vertex marker, §3.3; ``@2``: any :class:`~topomark.spec.kit.Kit`) a
 world with the markers the program left in it, and by whether what the program sensed determines it
 (:mod:`~topomark.reference.oracle.determination`).
 
-Time is the program's time: the ``--timeout`` and ``--message-timeout``
-limits count only the time topomark waits for the program
-(:class:`~topomark.reference.oracle.peer.Peer`); what topomark spends
-checking snapshots and judging the map is reported apart
-(:attr:`ExternalResult.program_seconds`, :attr:`ExternalResult.topomark_seconds`)
-and never makes a ``timeout``.
+Time is the program's time: the ``--timeout`` and ``--message-timeout`` limits count only the time topomark waits
+for the program (:class:`~topomark.reference.oracle.peer.Peer`); what topomark spends checking snapshots and judging
+the map is reported apart (:attr:`ExternalResult.program_seconds`, :attr:`ExternalResult.topomark_seconds`) and
+never makes a ``timeout``.  With ``record``, what the program's robot did is kept as a trace
+(:class:`~topomark.reference.oracle.program_trace.ProgramTrace`, ``ExternalResult.program``), for the run viewer.
 
-The world is played without markers: the program drops its own from its
-kit.  A world file may carry the marker Algorithm 3.1's robot drops at the
-start (a directional vertex marker pointing at the faced exit, §3.3: the
-marker of a map written by an explorer), which is taken away whatever the
-kit; any other marker, or a thread, is bad input that says so.
+The world is played without markers: the program drops its own from its kit.  A world file may carry the marker
+Algorithm 3.1's robot drops at the start (a directional vertex marker pointing at the faced exit, §3.3: the marker
+of a map written by an explorer), which is taken away whatever the kit; any other marker, or a thread, is bad input.
 
 Whatever the program does, the session ends with an :class:`ExternalResult`:
 a crash, a hang, garbage on stdout, an exit that does not exist, a second
@@ -47,6 +44,7 @@ from topomark.reference.algorithms.bounds import upper_bound
 from topomark.reference.explorers.lighthouses import LIGHTHOUSES
 from topomark.reference.run.explore import dropped_at_start, prepare_world
 from topomark.reference.run.map_check import MapVerdict
+from topomark.reference.oracle.program_trace import ProgramTrace
 from topomark.reference.oracle.peer import Peer
 from topomark.reference.oracle.protocol import MAX_MESSAGE, PROTOCOL, PROTOCOL2, Expect, ProtocolError, shape_error
 from topomark.reference.run.simulator import Simulator
@@ -124,6 +122,7 @@ class ExternalResult:
     map: World | None = None
     rule: str | None = None
     determination: Determination | None = None  # the search for a witness that the map was a guess
+    program: ProgramTrace | None = None  # with record=: what the program's robot did, as a trace
 
     @property
     def passed(self) -> bool:
@@ -149,11 +148,12 @@ class _Session:
     """One game of the world side against one program."""
 
     def __init__(self, world: World, peer: Peer, limits: Limits, check_snapshots: bool, version: int = 1,
-                 kit: Kit = LIGHTHOUSE_KIT):
+                 kit: Kit = LIGHTHOUSE_KIT, record: bool = False):
         self.world = world
         bare, self.start = prepare_world(world)
         self.version, self.kit = version, kit
-        self.sim = Simulator(bare, self.start, kit)
+        self.program = ProgramTrace(bare, kit) if record else None
+        self.sim = Simulator(bare, self.start, kit, *(self.program.listeners() if self.program else ()))
         self.robot = self.sim.robot()  # the program gets exactly the robot interface, over the pipe
         self.peer = peer
         self.max_traversals = limits.traversals(world)
@@ -287,13 +287,12 @@ class _Session:
             raise _Fail("map-invalid", f"the map is not a valid world: {exc}") from None
 
 
-def run_external(world: World, command: Sequence[str], limits: Limits | None = None,
-                 check_snapshots: bool = True, version: int = 1, kit: Kit | None = None) -> ExternalResult:
+def run_external(world: World, command: Sequence[str], limits: Limits | None = None, check_snapshots: bool = True,
+                 version: int = 1, kit: Kit | None = None, record: bool = False) -> ExternalResult:
     """Play ``world`` to ``command`` and judge it; bad input (world, command, kit) raises InvalidInput.
 
-    ``version`` is the protocol spoken (1 or 2); ``kit`` what the program
-    carries (default Algorithm 3.1's one directional vertex marker; another
-    kit needs ``version=2``).
+    ``version`` is the protocol spoken (1 or 2); ``kit`` what the program carries (default Algorithm 3.1's one
+    directional vertex marker; another kit needs ``version=2``); ``record`` keeps its trace (``result.program``).
 
     The program and everything it started are killed when the session ends,
     whatever the verdict (:class:`~topomark.reference.oracle.peer.Peer`).
@@ -306,7 +305,7 @@ def run_external(world: World, command: Sequence[str], limits: Limits | None = N
     session = None
     with Peer(command, limits.message, limits.wall) as peer:
         try:
-            session = _Session(world, peer, limits, check_snapshots, version, kit)
+            session = _Session(world, peer, limits, check_snapshots, version, kit, record)
             result = _judge(world, session)
             _say(peer, {"type": "bye", "verdict": result.verdict, "cost": session.sim.cost})
             peer.finish()
@@ -320,6 +319,7 @@ def run_external(world: World, command: Sequence[str], limits: Limits | None = N
         result.cost, result.snapshots = session.sim.cost, session.snapshots
         result.operations = session.sim.operations.total()
         result.marker_operations = dict(sorted(session.sim.operations.items()))
+        result.program = session.program
     result.message = clip(result.message, MAX_MESSAGE)
     result.wall = time.monotonic() - started
     result.program_seconds = min(peer.waited, result.wall)

@@ -53,7 +53,7 @@ from __future__ import annotations
 
 from collections import deque
 from dataclasses import dataclass
-from typing import Any, Iterable, Iterator, cast
+from typing import Any, Callable, Iterable, Iterator, cast
 
 from topomark.spec.errors import InvalidInput, Violation, clip
 from topomark.spec.world import World
@@ -68,7 +68,7 @@ from topomark.reference.trace.header import header_family, header_kit, header_li
 from topomark.reference.trace.reader import EVENTS, EVENTS_2, _records, load_trace, parse_trace
 from topomark.reference.trace.sink import trace_line
 
-__all__ = ["ReplayResult", "replay", "load_trace", "parse_trace", "parse_records", "EVENTS", "EVENTS_2"]
+__all__ = ["ReplayResult", "Observer", "replay", "load_trace", "parse_trace", "parse_records", "EVENTS", "EVENTS_2"]
 
 
 def parse_records(records: Iterable[Any], source: str = "<records>") -> Iterator[dict[str, Any]]:
@@ -188,12 +188,20 @@ def _claim(end: dict) -> str:
         f"a failed run: {Violation(v['check'], v['where'], v['expected'], v['found'], v['detail'])}"
 
 
-def replay(world: World, records: Iterable[dict[str, Any]], source: str = "<trace>") -> ReplayResult:
+Observer = Callable[[Any, dict[str, Any], int], None]
+"""Called with the replay's layers (``robot``: the :class:`RobotLayer`; ``algorithm``: the
+:class:`Algorithm31Layer` or None), a record and its line, once the record is replayed — or has diverged."""
+
+
+def replay(world: World, records: Iterable[dict[str, Any]], source: str = "<trace>",
+           observe: Observer | None = None) -> ReplayResult:
     """Verify checked trace records (:func:`load_trace`, :func:`parse_trace`) against ``world``.
 
     The first divergence, or a positive verdict; a claimed failure replay does
     not reproduce is a divergence.  Bad input anywhere in the trace (even after
-    the divergence) is raised as :class:`InvalidInput`.
+    the divergence) is raised as :class:`InvalidInput`.  ``observe`` (the run
+    viewer's) sees the layers after every record up to the divergence, the
+    header's included.
     """
     records = iter(records)
     header = next(records)
@@ -203,9 +211,18 @@ def replay(world: World, records: Iterable[dict[str, Any]], source: str = "<trac
     r = _Replay(world, header, source)
     line, rec = 1, header
     try:
+        if observe is not None:
+            observe(r, header, 1)
         r.begin()
         for line, rec in enumerate(records, 2):
-            r.record(rec, f"{source} line {line}")
+            try:
+                r.record(rec, f"{source} line {line}")
+            except Diverged:
+                if observe is not None:
+                    observe(r, rec, line)
+                raise
+            if observe is not None:
+                observe(r, rec, line)
     except Diverged as exc:
         r.close()
         rest = deque(records, maxlen=1)  # read (and so check) every later line: bad input outranks a divergence

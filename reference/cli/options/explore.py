@@ -49,6 +49,8 @@ def register(sub) -> None:
                    help="how I-1/I-2 are evaluated each iteration: per journalled change (default), from scratch, "
                         "or both (they must agree); the final verdict is always from scratch")
     p.add_argument("--trace", metavar="FILE", help="write the JSON Lines trace here")
+    p.add_argument("--view", metavar="FILE", help="write the run's viewer page here (as topomark view writes it: one "
+                                                 "self-contained HTML file to step through in a browser)")
     p.add_argument("--map", metavar="FILE", help="write the final map (world format, marker included); a run that stops without a map "
                                             "writes none and says so")
     p.add_argument("--models", metavar="DIR", help="write every completed model as a world file, in completion order "

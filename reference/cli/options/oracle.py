@@ -49,6 +49,9 @@ def register(sub) -> None:
                                    f"than {fact('max_trace_line_bytes') >> 20} MiB, too).")
     r.add_argument("world", metavar="WORLD", help="the world file the trace was recorded on")
     r.add_argument("trace", metavar="TRACE", help="the JSON Lines trace file to replay")
+    r.add_argument("--view", metavar="FILE", help="also write the replayed run's viewer page here (as topomark view "
+                                                 "writes it; a divergence is shown beside the run up to it)")
+    add_force(r)
     r.add_argument("--json", action="store_true", help=JSON_HELP)
     r.set_defaults(handler=Later("cmd_oracle", "replay_command"))
 
@@ -128,6 +131,11 @@ def _conformance_options(p) -> None:
     _suite_choice(p, "run the suite of the algorithm NAME through topomark/protocol@2, each case with its own kit "
                      "(repeatable; without it and --family: Algorithm 3.1's cases)")
     p.add_argument("-k", "--select", metavar="TEXT", help="only the cases whose name contains TEXT")
+    p.add_argument("--view-failures", metavar="DIR",
+                   help="for each failing case, write the program's run to DIR: its trace (CASE.jsonl, the robot "
+                        "layer) and its viewer page (CASE.html: the run up to the failure, what the reference "
+                        "expected beside what the program did)")
+    add_force(p)
     p.add_argument("--json", action="store_true", help=JSON_HELP)
 
 

@@ -75,9 +75,9 @@ class Row:
 
 def run(directory: str | Path, command: Sequence[str], limits: Limits | None = None,
         select: str | None = None, progress: Callable[[Row], None] | None = None, version: int = 1,
-        kit: Kit | None = None) -> list[Row]:
+        kit: Kit | None = None, record: bool = False) -> list[Row]:
     """Run ``command`` on every Algorithm 3.1 case (or those whose name contains ``select``), speaking protocol
-    ``version`` with ``kit``."""
+    ``version`` with ``kit``; ``record``: each result keeps the program's trace (the run viewer's)."""
     root = Path(directory)
     manifest = lint(root, replay_traces=False)
     rows = []
@@ -86,7 +86,7 @@ def run(directory: str | Path, command: Sequence[str], limits: Limits | None = N
             continue
         world = load_world(root / case["world"])
         costs = {k: v["cost"] for k, v in case["reference"].items()}
-        row = Row(case["name"], world.n, world.m, run_external(world, command, limits, version=version, kit=kit),
+        row = Row(case["name"], world.n, world.m, run_external(world, command, limits, version=version, kit=kit, record=record),
                   costs.get("default", min(costs.values())), min(costs.values()))
         rows.append(row)
         if progress is not None:
@@ -168,7 +168,7 @@ class AlgorithmRow:
 
 def run_algorithms(directory: str | Path, command: Sequence[str], algorithms: Sequence[str],
                    limits: Limits | None = None, select: str | None = None,
-                   progress: Callable[[AlgorithmRow], None] | None = None) -> list[AlgorithmRow]:
+                   progress: Callable[[AlgorithmRow], None] | None = None, record: bool = False) -> list[AlgorithmRow]:
     """Run ``command`` on every case of the suites of ``algorithms`` (or those whose name contains ``select``),
     through ``topomark/protocol@2`` with each case's kit."""
     root = Path(directory)
@@ -187,7 +187,7 @@ def run_algorithms(directory: str | Path, command: Sequence[str], algorithms: Se
             if select and select not in case["name"]:
                 continue
             world = load_world(root / case["world"])
-            result = run_external(world, command, limits, version=2, kit=Kit.from_json(case["kit"]))
+            result = run_external(world, command, limits, version=2, kit=Kit.from_json(case["kit"]), record=record)
             rows.append(AlgorithmRow(name, case, result))
             if progress is not None:
                 progress(rows[-1])
@@ -261,12 +261,12 @@ def _bound_cell(j: dict[str, Any]) -> str:
 
 
 def timed_run(directory, command, limits=None, select=None, progress=None, version: int = 1,
-              kit: Kit | None = None, algorithms: Sequence[str] = ()) -> tuple[list, float]:
+              kit: Kit | None = None, algorithms: Sequence[str] = (), record: bool = False) -> tuple[list, float]:
     """:func:`run` (no ``algorithms``) or :func:`run_algorithms`, and the wall time it took."""
     started = time.monotonic()
     rows: list[Any]  # Row or AlgorithmRow
     if algorithms:
-        rows = run_algorithms(directory, command, algorithms, limits, select, progress)
+        rows = run_algorithms(directory, command, algorithms, limits, select, progress, record)
     else:
-        rows = run(directory, command, limits, select, progress, version, kit)
+        rows = run(directory, command, limits, select, progress, version, kit, record)
     return rows, time.monotonic() - started
