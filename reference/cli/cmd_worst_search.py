@@ -70,12 +70,13 @@ def search_command(args: argparse.Namespace) -> int:
     for n in args.vertices:
         progress = None if args.quiet or args.json else _Progress(n, args.evaluations)
         kw = dict(objective=args.objective, evaluations=args.evaluations, seed=args.seed, lighthouse=setup.lighthouse,
-                  policies=setup.policy(), family=args.world_family)
+                  policies=setup.policy(), family=args.world_family, restart=args.restart_family, engine=args.engine)
         found = adversarial_search(setup.algorithm, n, args.max_degree, progress=progress, **kw).to_json()
         rows.append({"n": n, "search": found, "random": found.pop("random")})
     best = [{**r["search"]["best"], "n": r["n"]} for r in rows if r["search"].get("best")]
     data = {"algorithm": setup.algorithm, "setup": setup.to_json(), "max_degree": args.max_degree,
-            "objective": args.objective, "family": args.world_family, "evaluations": args.evaluations, "per_n": rows,
+            "objective": args.objective, "family": args.world_family, "restart": args.restart_family,
+            "evaluations": args.evaluations, "per_n": rows,
             "fit": fit_exponents(best) if len(best) >= 3 else None,  # two points fit any power exactly
             "method": "seeded local search: a lower bound on the worst case, not the worst case"}
     if args.out is not None:
