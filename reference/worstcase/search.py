@@ -370,6 +370,8 @@ def adversarial_search(algorithm: str = "basic", n: int = 20, max_degree: int = 
     toolbox.register("clone", _clone)
     first = min(problem.evaluations, MU if problem.restart else max(MU, problem.evaluations // START_SHARE))
     population = [_Individual([problem.draw(rng)]) for _ in range(first)]
+    if problem.restart is not None:  # the family's own world among them: a restart can only gain on it
+        population[0] = _Individual([family_world(problem.restart, problem.n)[0]])
     generations = math.ceil((problem.evaluations - first) / LAMBDA)
     with _global_random(problem.seed):
         algorithms.eaMuPlusLambda(population, toolbox, mu=min(MU, first), lambda_=LAMBDA, cxpb=0.0, mutpb=1.0,
