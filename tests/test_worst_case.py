@@ -211,7 +211,12 @@ def test_the_summary_says_what_is_proved_and_describes_the_worst_worlds(tmp_path
     assert "§7.2" in text and "## Proved" in text
     row = next(line for line in text.splitlines() if line.startswith("| basic | 3 | 4 |"))
     assert "hypotheses rejected" in row and "diam" in row
-    assert "of its exact bound" in text and "the bound holds with room to spare" in text
+    assert "the largest cost / exact bound" in text and "the bound holds with room to spare" in text
+    # K4 costs the most (17) at a ratio of its own; the largest ratio is another world's (m = 3), in its own column
+    cells = [c.strip() for c in row.strip("|").split("|")]
+    assert cells[5:7] == ["17", "0.1197"] and cells[7].startswith("m=6, diam 1") and cells[8] == "0.2273 (m=3)"
+    # diameter-1 worlds are left out of the eccentricity count: K4 is the only max-cost world here
+    assert "1 distinct worlds with their start" in text and "Of the 0 of diameter ≥ 2" in text
     assert main(["worst-case", "--summarise", str(tmp_path / "missing")]) == 2
 
 

@@ -100,3 +100,19 @@ def test_the_engine_scores_candidates_as_the_reference_does():
     for _ in range(12):
         cand = fast.move(fast.draw(rng), rng)
         assert fast.run(cand) == slow.run(cand)
+
+
+def test_the_report_names_each_found_world_by_its_generator_text_and_fits_only_over_five_sizes(tmp_path, capsys):
+    from topomark.reference.cli.main import main
+    five, three = tmp_path / "five", tmp_path / "three"
+    for out, sizes in ((five, ["8", "9", "10", "11", "12"]), (three, ["14", "16", "18"])):
+        assert main(["worst-case", "--search", "--vertices", *sizes, "--evaluations", "1", "--restart-family",
+                     "strip", "--quiet", "-o", str(out)]) == 0  # one run: the family's own world
+    capsys.readouterr()
+    assert main(["worst-case", "--summarise", str(five)]) == 0
+    text = capsys.readouterr().out
+    row = next(line for line in text.splitlines() if line.startswith("| basic | strip | 9 |"))
+    assert "`strip:n=9,cap=0`" in row and "`strip:n=8,cap=1`" in text
+    assert "95 % CI" in text and "over 5 sizes" in text and "--restart-family strip" in text
+    assert main(["worst-case", "--summarise", str(three)]) == 0
+    assert "no fit (3 sizes; a growth fit needs at least 5)" in capsys.readouterr().out
