@@ -27,7 +27,7 @@ neighbours instead of random worlds.
 
 >>> import random
 >>> w = family_world("strip", 12)[0]
->>> moved = structural_move(w, "switch", 4, random.Random(3))
+>>> moved = structural_move(w, "switch", 4, random.Random(0))  # None when the draw cannot switch (seed 1)
 >>> sorted(moved.degree(v) for v in moved.vertices) == sorted(w.degree(v) for v in w.vertices)
 True
 >>> family_world("strip", 12)[1], family_world("circulant", 12)[1]

@@ -38,6 +38,7 @@ from topomark.reference.worstcase.naming import generator_text
 from topomark.reference.worstcase.readback import read_regular
 from topomark.reference.worstcase.report import THESIS
 from topomark.reference.worstcase.summary_input import bound_broken, load_runs
+from topomark.reference.worstcase.verdicts import verdicts
 
 __all__ = ["structure", "summarise", "summarise_runs", "MIN_FIT_SIZES"]
 
@@ -172,6 +173,17 @@ def _search_section(runs: list[dict]) -> list[str]:
                     *fits, ""]
 
 
+def _names(searched: list[dict]) -> dict[tuple[str, int], str | None]:
+    """(algorithm, n) ↦ the generator text of the best world found there (the largest cost over its runs)."""
+    best: dict[tuple[str, int], dict] = {}
+    for data in searched:
+        for r in data["per_n"]:
+            s, key = r["search"].get("best"), (data["algorithm"], r["n"])
+            if s and not data.get("family") and (key not in best or s["cost"] > best[key]["cost"]):
+                best[key] = s
+    return {key: generator_text(world_from_json(s["world"])) for key, s in best.items()}
+
+
 def _bound_growth(best: list[dict[str, Any]]) -> str:
     """How the exact bound grows over the same worlds (the cost each found world would need to reach it)."""
     bounds = [{**b, "cost": b["cost"] / b["ratio_to_bound"]} for b in best if b.get("ratio_to_bound")]
@@ -256,6 +268,8 @@ def summarise_runs(dirs: list[Path], out: Path | None = None) -> tuple[str, bool
         lines += _exhaustive_section(exhaustive)
     if searched:
         lines += _search_section(searched)
+    lines += ["## What this says about §7.2, per algorithm", "", f"- **Thesis:** {THESIS}",
+              *verdicts(exhaustive, searched, _names(searched)), ""]
     lines += ["## How this page was made", "", "`topomark worst-case --summarise` over the outputs (`-o DIR`) of:", "",
               *[f"- `{c}`" for c in _commands(exhaustive, searched)], ""]
     if out is not None:
