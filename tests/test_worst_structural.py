@@ -116,3 +116,19 @@ def test_the_report_names_each_found_world_by_its_generator_text_and_fits_only_o
     assert "95 % CI" in text and "over 5 sizes" in text and "--restart-family strip" in text
     assert main(["worst-case", "--summarise", str(three)]) == 0
     assert "no fit (3 sizes; a growth fit needs at least 5)" in capsys.readouterr().out
+
+
+def _searched(algorithm, ratios):
+    return [{"algorithm": algorithm, "max_degree": 4, "family": None, "per_n": [
+        {"n": n, "search": {"best": {"cost": 10 * n, "ratio_to_bound": q}}} for n, q in zip((20, 50, 100), ratios)]}]
+
+
+def test_the_verdict_says_the_bound_is_tight_only_where_the_ratio_does_not_fall():
+    from topomark.reference.worstcase.verdicts import STRIP_SAYS, verdicts
+    rising = verdicts([], _searched("enh1", [0.1, 0.12, 0.12]), {("enh1", 50): "strip:n=50,cap=1"})[0]
+    assert rising.startswith("- `enh1`: Shown") and "n = 50: 0.1200 (`strip:n=50,cap=1`)" in rising
+    assert "does not fall with n on worlds of maximum degree 4" in rising
+    falling = verdicts([], _searched("enh1", [0.1, 0.12, 0.11]))[0]
+    assert "falls somewhere over the sizes searched" in falling and "does not fall" not in falling
+    basic = verdicts([], _searched("basic", [0.1, 0.12, 0.11]))[0]  # basic rests on the strip's exact formula
+    assert STRIP_SAYS[1:] in basic and "23/24·n³" in basic
