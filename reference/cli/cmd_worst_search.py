@@ -1,8 +1,10 @@
 """``topomark worst-case --search``: bad worlds past exhaustive sizes, by seeded local search (thesis §7.2).
 
 For each size ``--vertices N ...`` the search (:func:`topomark.reference.worstcase.search.adversarial_search`)
-changes one vertex's rotation, adds or removes an edge, or moves the start, keeping the world connected and within
-``--max-degree``, and keeps what raises the ``--objective``; the same number of random worlds
+changes one vertex's rotation, adds or removes an edge, moves the start, switches two edges or transposes two
+neighbours (:mod:`topomark.reference.worstcase.structural`), keeping the world connected and within
+``--max-degree``, and keeps what raises the ``--objective``; ``--restart-family`` starts it from a named family's
+world instead of random worlds; the same number of random worlds
 (:func:`~topomark.reference.worstcase.search.random_baseline`, run by the search) is the yardstick.  What it finds is a lower bound on
 the worst case, not the worst case.  The growth of the best cost with m, n, the diameter and the maximum degree is
 fitted on log-log axes (:func:`~topomark.reference.worstcase.fit.fit_exponents`).

@@ -24,7 +24,9 @@ them), and DEAP is maintained, documented and small. ``simanneal`` was the alter
 2019 and its own auto-tuning of temperatures spends evaluations we count. DEAP draws from the global ``random``
 module: the search seeds it with ``seed`` and restores its state afterwards, and the moves draw from their own
 ``random.Random`` — the same seed gives the same best world and cost (in one process, as runs are
-deterministic). The budget is exact: the generations are sized to it and an offspring past the budget is not run
+deterministic). With a restart family (:mod:`.structural`) the first generation is that family's world at n places
+and μ − 1 neighbours of it instead: a search from structure that is already expensive, moved by the structural
+moves that keep degrees, gains where random worlds barely beat chance. The budget is exact: the generations are sized to it and an offspring past the budget is not run
 (it scores −∞ and is not counted).
 
 :func:`random_baseline` is the comparison the search must beat: the best of as many random worlds
