@@ -201,7 +201,7 @@ def test_every_large_kept_worst_world_costs_what_its_index_says_and_is_no_stress
     assert large and not stress & {f"worst-{name}" for name in large}
     for name in large:
         world, entry = worst_case_world(name), WORST_CASES[name]
-        assert (world.n, world.m) == (entry["n"], entry["m"]) and entry["n"] >= 50
+        assert (world.n, world.m) == (entry["n"], entry["m"]) and entry["n"] >= 30
         if entry["n"] <= 50 or not available():  # the reference, checked; past n = 50 it takes minutes
             run = explore(world, entry["algorithm"])
             assert run.verified and run.cost == entry["cost"], name

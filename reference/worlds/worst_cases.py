@@ -12,7 +12,7 @@ says, per name, which algorithm it is worst for, how it was found
 (``exhaustive``: the largest cost over every world of its size and degree
 bound, proved by enumeration; ``search``: the largest found, a lower bound on
 the worst case), its size and degree bound, and the cost.  An entry with
-``"stress": false`` (a world too large to run checked in every suite, n ≥ 50)
+``"stress": false`` (a world too large to run checked in every suite, n ≥ 30)
 is kept for the worst-case report to name, and left out of the stress cases.
 
 Examples
