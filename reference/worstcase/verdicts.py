@@ -7,7 +7,7 @@ the report summarises, each sentence from its own evidence:
 * **proved** — the exhaustive runs: the largest cost / exact bound over every world up to their size, exact;
 * **shown** — the search runs: the best world found per size (a lower bound on the worst case), its cost / exact
   bound and its generator text; for ``basic`` also the strip's exact cost formula
-  (:func:`~.family_costs.strip_cost`, measured at every size from 9 to 60);
+  (:func:`~.family_costs.strip_cost`, fitted on the sizes up to 60 and checked at every size from 9 to 200);
 * **says** — what that means for the thesis's questions, stated no further than the evidence goes: a ratio that
   does not fall as n grows on worlds of maximum degree 4 says the O(m²n) bound is tight up to a constant there,
   so no bound in the degree alone can be smaller; worlds that all have diameter Θ(n) leave a bound in the
