@@ -149,15 +149,16 @@ def _search_section(runs: list[dict]) -> list[str]:
              "| best random |",
              "|---|---|---|---|---|---|---|---|---|---|"]
     fits = []
-    for data in sorted(runs, key=lambda d: (d["algorithm"], d.get("restart") or "", d["per_n"][0]["n"])):
+    rows = sorted(((data, r) for data in runs for r in data["per_n"]),
+                  key=lambda p: (p[0]["algorithm"], p[0].get("family") or "", p[0].get("restart") or "", p[1]["n"]))
+    for data, r in rows:  # by size within an algorithm, whichever run each size came from
         name = f"{data['algorithm']}{' lattice-hole' if data.get('family') else ''}"
-        for r in data["per_n"]:
-            s, b = r["search"].get("best") or {}, r["random"].get("best") or {}
-            holes = f" (holes: {', '.join(s['holes']) or 'none'})" if "holes" in s else ""
-            text = generator_text(world_from_json(s["world"])) if s.get("world") else None
-            lines.append(f"| {name} | {data.get('restart') or 'random worlds'} | {r['n']} | {s.get('m')} | "
-                         f"{s.get('diameter')} | {s.get('max_degree')} | {s.get('cost')}{holes} | "
-                         f"{f'`{text}`' if text else 'none'} | {s.get('ratio_to_bound')} | {b.get('cost')} |")
+        s, b = r["search"].get("best") or {}, r["random"].get("best") or {}
+        holes = f" (holes: {', '.join(s['holes']) or 'none'})" if "holes" in s else ""
+        text = generator_text(world_from_json(s["world"])) if s.get("world") else None
+        lines.append(f"| {name} | {data.get('restart') or 'random worlds'} | {r['n']} | {s.get('m')} | "
+                     f"{s.get('diameter')} | {s.get('max_degree')} | {s.get('cost')}{holes} | "
+                     f"{f'`{text}`' if text else 'none'} | {s.get('ratio_to_bound')} | {b.get('cost')} |")
     by_name: dict[str, list[dict]] = {}
     for data in runs:
         name = f"{data['algorithm']}{' lattice-hole' if data.get('family') else ''}"
