@@ -66,3 +66,30 @@ def test_strip_cost_formula_matches_a_checked_run(n):
 def test_strip_cost_formula_refuses_sizes_it_was_not_measured_for():
     with pytest.raises(InvalidInput):
         strip_cost(STRIP_FROM - 1)
+
+
+def _engine_cost(world):
+    from topomark.proofs.world_arrays import to_arrays
+    from topomark.reference.engine.runs import run_starts
+    at, entry = world.start_state()
+    run = run_starts(to_arrays(world), [(world.vertices.index(at), entry)], ("nearest", "fifo", "shortest"))[0]
+    assert run.claimed == "correct"
+    return run.cost
+
+
+def _needs_engine():
+    import os
+    from topomark.reference.engine import available
+    if not available() and not os.environ.get("CI"):
+        pytest.skip("numba is not installed: the compiled engine (equal to the reference) cannot run every size")
+
+
+def test_strip_cost_formula_holds_at_every_size_it_was_measured_for():
+    _needs_engine()
+    assert [n for n in range(STRIP_FROM, 61) if _engine_cost(generate("strip", n=n)) != strip_cost(n)] == []
+
+
+@pytest.mark.slow
+def test_strip_cost_formula_holds_past_its_measured_sizes_up_to_200():
+    _needs_engine()
+    assert [n for n in range(61, 201) if _engine_cost(generate("strip", n=n)) != strip_cost(n)] == []

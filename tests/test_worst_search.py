@@ -161,10 +161,23 @@ def test_fit_exponents_recovers_known_exponents():
     rows = [{"n": n, "m": m, "diameter": d, "max_degree": k, "cost": 5 * d**3}
             for n, m, d, k in ((10, 12, 2, 3), (20, 30, 3, 3), (40, 70, 5, 4), (80, 90, 9, 4))]
     fit = fit_exponents(rows)
-    assert fit["diameter"] == {"exponent": 3.0, "r2": 1.0}
+    assert fit["diameter"] == {"exponent": 3.0, "r2": 1.0, "ci95": [3.0, 3.0]}
     assert fit["m"]["r2"] < 1.0 and fit["rows"] == 4
+    lo, hi = fit["m"]["ci95"]
+    assert lo < fit["m"]["exponent"] < hi
     rows = [{**row, "cost": 0.5 * row["m"] ** 1.5 * row["n"] ** 0.5} for row in rows]
     assert fit_exponents(rows)["m_n"] == {"c": 0.5, "a": 1.5, "b": 0.5, "r2": 1.0}
+
+
+def test_the_exponents_confidence_interval_is_students_t_on_the_slopes_standard_error():
+    """Points (0, 0), (1, 1), (2, 1), (3, 2) in log-log: slope 0.6, residual variance 0.1, Sxx 5, so the
+    interval is 0.6 ± t(0.975, 2)·√(0.1/5) = 0.6 ± 4.303·0.141421."""
+    import math
+    rows = [{"n": 2, "m": math.e ** x, "diameter": 1, "max_degree": 2, "cost": math.e ** y}
+            for x, y in ((0, 0), (1, 1), (2, 1), (3, 2))]
+    got = fit_exponents(rows)["m"]
+    half = 4.303 * math.sqrt(0.1 / 5)
+    assert got["exponent"] == pytest.approx(0.6) and got["ci95"] == pytest.approx([0.6 - half, 0.6 + half], abs=1e-6)
 
 
 def test_fit_exponents_refuses_a_row_without_a_positive_cost():

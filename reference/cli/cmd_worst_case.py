@@ -74,7 +74,7 @@ def _validate(args: argparse.Namespace) -> None:
 
 EXHAUSTIVE_ONLY = {"max_vertices": ("--max-vertices", None), "min_vertices": ("--min-vertices", 2),
                    "jobs": ("--jobs", 1), "scheduler": ("--scheduler", None), "shards": ("--shards", None),
-                   "sample": ("--sample", 0.001), "cross_check": ("--cross-check", False), "engine": ("--engine", "auto")}
+                   "sample": ("--sample", 0.001), "cross_check": ("--cross-check", False)}
 """The options of the exhaustive search, with their defaults: ``--search`` refuses any given another value."""
 
 

@@ -1,8 +1,10 @@
 """``topomark worst-case --search``: bad worlds past exhaustive sizes, by seeded local search (thesis §7.2).
 
 For each size ``--vertices N ...`` the search (:func:`topomark.reference.worstcase.search.adversarial_search`)
-changes one vertex's rotation, adds or removes an edge, or moves the start, keeping the world connected and within
-``--max-degree``, and keeps what raises the ``--objective``; the same number of random worlds
+changes one vertex's rotation, adds or removes an edge, moves the start, switches two edges or transposes two
+neighbours (:mod:`topomark.reference.worstcase.structural`), keeping the world connected and within
+``--max-degree``, and keeps what raises the ``--objective``; ``--restart-family`` starts it from a named family's
+world instead of random worlds; the same number of random worlds
 (:func:`~topomark.reference.worstcase.search.random_baseline`, run by the search) is the yardstick.  What it finds is a lower bound on
 the worst case, not the worst case.  The growth of the best cost with m, n, the diameter and the maximum degree is
 fitted on log-log axes (:func:`~topomark.reference.worstcase.fit.fit_exponents`).
@@ -70,12 +72,13 @@ def search_command(args: argparse.Namespace) -> int:
     for n in args.vertices:
         progress = None if args.quiet or args.json else _Progress(n, args.evaluations)
         kw = dict(objective=args.objective, evaluations=args.evaluations, seed=args.seed, lighthouse=setup.lighthouse,
-                  policies=setup.policy(), family=args.world_family)
+                  policies=setup.policy(), family=args.world_family, restart=args.restart_family, engine=args.engine)
         found = adversarial_search(setup.algorithm, n, args.max_degree, progress=progress, **kw).to_json()
         rows.append({"n": n, "search": found, "random": found.pop("random")})
     best = [{**r["search"]["best"], "n": r["n"]} for r in rows if r["search"].get("best")]
     data = {"algorithm": setup.algorithm, "setup": setup.to_json(), "max_degree": args.max_degree,
-            "objective": args.objective, "family": args.world_family, "evaluations": args.evaluations, "per_n": rows,
+            "objective": args.objective, "family": args.world_family, "restart": args.restart_family,
+            "evaluations": args.evaluations, "per_n": rows,
             "fit": fit_exponents(best) if len(best) >= 3 else None,  # two points fit any power exactly
             "method": "seeded local search: a lower bound on the worst case, not the worst case"}
     if args.out is not None:

@@ -74,6 +74,7 @@ SOURCES: dict[str, tuple[str, Callable[[Any], Any]]] = {  # fact: (the module de
     "worker_wait": (_CENSUS, lambda m: m.WORKER_WAIT),
     "objectives": ("topomark.reference.worstcase.search", lambda m: m.OBJECTIVES),
     "engines": ("topomark.reference.engine", lambda m: m.ENGINES),
+    "restart_families": ("topomark.reference.worstcase.structural", lambda m: m.RESTART_FAMILIES),
 }
 
 _help = [False]  # whether the parser being built is only to print help (:func:`for_help`)

@@ -121,4 +121,5 @@ TABLE: dict[str, Any] = {
     'worker_wait': 60,
     'objectives': ('cost', 'cost-per-m', 'ratio'),
     'engines': ('reference', 'compiled', 'auto'),
+    'restart_families': ('strip', 'circulant', 'k5e-chain'),
 }

@@ -9,7 +9,9 @@ neighbour it faces).
 * A **general** candidate is a :class:`~topomark.spec.world.World` with vertices ``"0"`` … ``"n-1"``.
   :func:`move_world` changes it by one of: a new cyclic order at one vertex of degree >= 3 (a vertex of degree
   <= 2 has only one), an edge added between two vertices of degree < D, an edge removed that is not a bridge
-  (so the world stays connected and no degree falls to 0), or the start moved.  :func:`random_world` draws
+  (so the world stays connected and no degree falls to 0), or the start moved (:data:`MOVES`); or by one of
+  the structural moves of :mod:`.structural` (two edges switched, two neighbours transposed, a rotation at the
+  marker redrawn), which keep every degree (:data:`ALL_MOVES`).  :func:`random_world` draws
   one: a random spanning tree of degree <= D, then random extra edges up to a random target m, a random
   clockwise order at each vertex and a random start.
 * A **lattice-hole** candidate (:class:`LatticeHoles`) is a rows x cols lattice
@@ -38,10 +40,15 @@ from topomark.spec.world import Start, World
 
 from topomark.reference.worlds.deterministic import lattice_graph
 from topomark.reference.worlds.embedding import from_positions
+from topomark.reference.worstcase.structural import STRUCTURAL_MOVES, structural_move
 
-__all__ = ["random_world", "move_world", "graph_of", "LatticeHoles", "random_lattice", "move_lattice", "MOVES"]
+__all__ = ["random_world", "move_world", "graph_of", "LatticeHoles", "random_lattice", "move_lattice", "MOVES",
+           "ALL_MOVES"]
 
 MOVES = ("rotation", "add-edge", "remove-edge", "start")
+ALL_MOVES = MOVES + STRUCTURAL_MOVES
+"""The moves of the search: these four and the structural ones of :mod:`.structural` (``switch``, ``transpose``,
+``marker``)."""
 _TRIES = 64  # a move that finds nothing to do (no vertex of degree >= 3, no free pair...) tries another kind
 
 
@@ -109,6 +116,8 @@ def _first_dart(rotation: dict[str, list[str]]) -> Start:
 
 
 def _try_move(world: World, kind: str, max_degree: int, rng: random.Random) -> World | None:
+    if kind in STRUCTURAL_MOVES:
+        return structural_move(world, kind, max_degree, rng)
     rot = {v: list(ns) for v, ns in world.rotation.items()}
     vertices = list(world.vertices)
     if kind == "rotation":
@@ -139,7 +148,7 @@ def _try_move(world: World, kind: str, max_degree: int, rng: random.Random) -> W
 
 
 def move_world(world: World, max_degree: int, rng: random.Random, kinds: tuple[str, ...] = MOVES) -> World:
-    """``world`` changed by one move of ``kinds`` (:data:`MOVES`), drawn at random; the result is a valid world
+    """``world`` changed by one move of ``kinds`` (:data:`MOVES`, or any of :data:`ALL_MOVES`), drawn at random; the result is a valid world
     of the same vertices with degrees in [1, ``max_degree``] and a start.  A kind that finds nothing to do is
     replaced by another draw; moving the start always can (every vertex has a neighbour)."""
     for _ in range(_TRIES):

@@ -24,7 +24,9 @@ them), and DEAP is maintained, documented and small. ``simanneal`` was the alter
 2019 and its own auto-tuning of temperatures spends evaluations we count. DEAP draws from the global ``random``
 module: the search seeds it with ``seed`` and restores its state afterwards, and the moves draw from their own
 ``random.Random`` — the same seed gives the same best world and cost (in one process, as runs are
-deterministic). The budget is exact: the generations are sized to it and an offspring past the budget is not run
+deterministic). With a restart family (:mod:`.structural`) the first generation is that family's world at n places
+and μ − 1 neighbours of it instead: a search from structure that is already expensive, moved by the structural
+moves that keep degrees, gains where random worlds barely beat chance. The budget is exact: the generations are sized to it and an offspring past the budget is not run
 (it scores −∞ and is not counted).
 
 :func:`random_baseline` is the comparison the search must beat: the best of as many random worlds
@@ -36,6 +38,7 @@ growth of the best found over several n.
 from __future__ import annotations
 
 import contextlib
+import dataclasses
 import math
 import random
 from dataclasses import dataclass, field
@@ -53,7 +56,9 @@ from topomark.reference.explorers.policies import Policies
 from topomark.reference.run.explore import explore
 from topomark.reference.worlds.deterministic import integer_param, seed_param
 from topomark.reference.worstcase.fit import fit_exponents
-from topomark.reference.worstcase.moves import LatticeHoles, move_lattice, move_world, random_lattice, random_world
+from topomark.reference.worstcase.moves import (ALL_MOVES, LatticeHoles, move_lattice, move_world, random_lattice,
+                                                random_world)
+from topomark.reference.worstcase.structural import family_world
 
 __all__ = ["adversarial_search", "random_baseline", "fit_exponents", "AdversarialResult", "Found", "OBJECTIVES",
            "FAMILIES", "MU", "LAMBDA", "START_SHARE"]
@@ -112,6 +117,7 @@ class AdversarialResult:
     history: list[tuple[int, float]]
     random: "AdversarialResult | None" = None
     spec: AlgorithmSpec | None = field(default=None, repr=False)
+    restart: str | None = None
 
     def __repr__(self) -> str:
         """``AdversarialResult(algorithm='basic', objective='cost', n=8, best cost=59 on n=8 m=11, 20 evaluations,
@@ -128,7 +134,7 @@ class AdversarialResult:
         spec = self.spec or algorithm_spec(self.algorithm)
         out: dict[str, Any] = {
             "algorithm": self.algorithm, "objective": self.objective, "n": self.n, "max_degree": self.max_degree,
-            "evaluations": self.evaluations, "seed": self.seed, "family": self.family,
+            "evaluations": self.evaluations, "seed": self.seed, "family": self.family, "restart": self.restart,
             "best": None if self.best is None else self.best.to_json(spec), "failures": self.failures,
             "history": [{"evaluations": k, "best": None if math.isinf(s) else s} for k, s in self.history]}
         if self.random is not None:
@@ -150,11 +156,18 @@ class _Problem:
     lighthouse: str | None
     policies: Policies | None
     shape: tuple[int, int] = (0, 0)
+    restart: str | None = None  # the family the first generation starts from (structural.RESTART_FAMILIES)
+    engine: bool = False  # runs through the compiled Algorithm 3.1 (topomark.reference.engine), equal to the reference
 
     def world_of(self, cand: World | LatticeHoles) -> World:
         return cand.world if isinstance(cand, LatticeHoles) else cand
 
     def draw(self, rng: random.Random) -> World | LatticeHoles:
+        if self.restart is not None:  # the family's world, or a neighbour of it a few moves away
+            world = family_world(self.restart, self.n)[0]
+            for _ in range(rng.randrange(4)):
+                world = move_world(world, self.max_degree, rng, ALL_MOVES)
+            return world
         if self.family == "lattice-hole":
             return random_lattice(*self.shape, rng)
         return random_world(self.n, self.max_degree, rng)
@@ -162,28 +175,41 @@ class _Problem:
     def move(self, cand: World | LatticeHoles, rng: random.Random) -> World | LatticeHoles:
         if isinstance(cand, LatticeHoles):
             return move_lattice(cand, rng)
-        return move_world(cand, self.max_degree, rng)
+        return move_world(cand, self.max_degree, rng, ALL_MOVES)
+
+    def outcome(self, world: World) -> tuple[str, int, dict[str, int]]:
+        """(claimed, cost, cost by purpose) of the unchecked run on ``world`` from its start."""
+        if self.engine:
+            from topomark.proofs.world_arrays import to_arrays
+            from topomark.reference.engine.runs import run_starts
+            at, entry = world.start_state()
+            policies = self.policies or Policies()
+            run = run_starts(to_arrays(world), [(world.vertices.index(at), entry)],
+                             (policies.edge, policies.hypothesis, policies.path))[0]
+            return run.claimed, run.cost, run.by_purpose
+        out = explore(world, self.spec, lighthouse=self.lighthouse, policies=self.policies, check=False, record=False)
+        return out.claimed, out.cost, out.by_purpose
 
     def run(self, cand: World | LatticeHoles) -> tuple[float, tuple[int, int] | None]:
         """(score, (cost, counted cost)) of one run; (−∞, None) for a run that does not end ``correct``."""
         world = self.world_of(cand)
         try:
-            out = explore(world, self.spec, lighthouse=self.lighthouse, policies=self.policies, check=False,
-                          record=False)
+            claimed, cost, by_purpose = self.outcome(world)
         except (InvalidInput, AlgorithmStopped, CheckFailure):
             return -math.inf, None
-        if out.claimed != "correct":
+        if claimed != "correct":
             return -math.inf, None
-        costs = (out.cost, self.spec.counted_cost(out.cost, out.by_purpose))
+        costs = (cost, self.spec.counted_cost(cost, by_purpose))
         if self.objective == "cost":
-            return float(out.cost), costs
+            return float(cost), costs
         if self.objective == "cost-per-m":
-            return out.cost / world.m, costs
+            return cost / world.m, costs
         return costs[1] / self.spec.bound_for(world.n, world.m), costs  # type: ignore[operator]
 
 
 def _problem(algorithm: str, n: Any, max_degree: Any, objective: str, evaluations: Any, seed: Any,
-             lighthouse: str | None, policies: Policies | None, family: str | None) -> _Problem:
+             lighthouse: str | None, policies: Policies | None, family: str | None, restart: str | None = None,
+             engine: str = "reference") -> _Problem:
     """The parameters checked: each wrong one is bad input naming it."""
     spec = algorithm_spec(algorithm)
     n = integer_param("n", n, 3)
@@ -200,6 +226,16 @@ def _problem(algorithm: str, n: Any, max_degree: Any, objective: str, evaluation
         raise InvalidInput(f"unknown family {family!r} (choose from {', '.join(FAMILIES)})")
     spec.lighthouse_for(lighthouse)
     problem = _Problem(spec, objective, n, max_degree, evaluations, seed, family, lighthouse, policies)
+    if restart is not None:
+        if family != "general":
+            raise InvalidInput(f"a restart family replaces the random worlds of the general search, not the "
+                               f"{family} family's")
+        world = family_world(restart, n)[0]  # an unknown family or size: bad input here, before the runs
+        if max(world.degree(v) for v in world.vertices) > max_degree:
+            raise InvalidInput(f"the restart family {restart} has places of degree 4: max_degree must be >= 4, "
+                               f"got {max_degree}")
+        problem.restart = restart
+    problem.engine = _compiled(engine, spec.name, lighthouse, policies)
     if family == "lattice-hole":
         if max_degree < 4:
             raise InvalidInput(f"the lattice-hole family has cells of degree 4: max_degree must be >= 4, "
@@ -207,6 +243,14 @@ def _problem(algorithm: str, n: Any, max_degree: Any, objective: str, evaluation
         rows = math.isqrt(n)
         problem.shape = (rows, n // rows)
     return problem
+
+
+def _compiled(engine: str, algorithm: str, lighthouse: str | None, policies: Policies | None) -> bool:
+    """Whether the runs go through the compiled engine (``engine``: reference, compiled or auto, as
+    :func:`topomark.reference.engine.choose` resolves it)."""
+    from topomark.reference.engine import choose
+    p = policies or Policies()
+    return choose(engine, algorithm, lighthouse, (p.edge, p.hypothesis, p.path))[0] == "compiled"
 
 
 # -- counting evaluations, the best so far and the history -----------------------------------
@@ -246,21 +290,23 @@ class _Tally:
             holes = cand.hole_names() if isinstance(cand, LatticeHoles) else None
             found = Found(p.world_of(cand), score, cost, counted, holes)
         return AdversarialResult(p.spec.name, p.objective, p.n, p.max_degree, self.done, p.seed, p.family, found,
-                            self.failures, self.history, spec=p.spec)
+                            self.failures, self.history, spec=p.spec, restart=p.restart)
 
 
 # -- the random baseline and the (μ+λ) search ------------------------------------------------------
 def random_baseline(algorithm: str = "basic", n: int = 20, max_degree: int = 4, objective: str = "cost",
                     evaluations: int = 200, seed: int = 0, lighthouse: str | None = None,
                     policies: Policies | None = None, family: str | None = None,
-                    progress: Callable[[int, float], None] | None = None) -> AdversarialResult:
+                    progress: Callable[[int, float], None] | None = None, engine: str = "reference") -> AdversarialResult:
     """The best of ``evaluations`` random candidates (:func:`~.moves.random_world`, or
     :func:`~.moves.random_lattice` for ``family="lattice-hole"``), drawn from ``random.Random(seed)``."""
-    problem = _problem(algorithm, n, max_degree, objective, evaluations, seed, lighthouse, policies, family)
+    problem = _problem(algorithm, n, max_degree, objective, evaluations, seed, lighthouse, policies, family,
+                       engine=engine)
     return _baseline(problem, progress)
 
 
 def _baseline(problem: _Problem, progress: Callable[[int, float], None] | None) -> AdversarialResult:
+    problem = dataclasses.replace(problem, restart=None)  # random worlds, whatever the search started from
     rng = random.Random(f"random-baseline:{problem.seed}")
     tally = _Tally(problem, progress)
     for _ in range(problem.evaluations):
@@ -301,25 +347,33 @@ def _global_random(seed: int) -> Iterator[None]:
 def adversarial_search(algorithm: str = "basic", n: int = 20, max_degree: int = 4, objective: str = "cost",
                        evaluations: int = 200, seed: int = 0, lighthouse: str | None = None,
                        policies: Policies | None = None, family: str | None = None,
-                       progress: Callable[[int, float], None] | None = None, baseline: bool = True) -> AdversarialResult:
+                       progress: Callable[[int, float], None] | None = None, baseline: bool = True,
+                       restart: str | None = None, engine: str = "reference") -> AdversarialResult:
     """Search for a world (start included) of ``n`` vertices and degrees <= ``max_degree`` maximising
     ``objective`` for ``algorithm``, in ``evaluations`` runs, by DEAP's (μ+λ) strategy (:data:`MU`,
     :data:`LAMBDA`) from a first generation of a quarter of the budget (at least μ) of random candidates
     (:data:`START_SHARE`), the best μ of which the strategy keeps; with ``baseline`` (the default),
     :func:`random_baseline` with the same budget and seed is run too and kept in ``.random``.
     ``family="lattice-hole"`` searches hole patterns of the ⌊√n⌋ x ⌊n/⌊√n⌋⌋ lattice (8 x 8 for n = 64) instead.
+    ``restart`` (one of :data:`~.structural.RESTART_FAMILIES`) starts from that family's world at n places
+    (:func:`~.structural.family_world`) and μ of its neighbours instead of random worlds.  ``engine`` (reference,
+    compiled or auto) says what runs the candidates: the compiled Algorithm 3.1, which agrees with the reference
+    exactly, runs ``basic`` some hundred times faster.
     ``progress(evaluations_done, best_score)`` is called after about every 1/20 of the budget.  Bad parameters
     raise InvalidInput naming the first wrong one."""
-    problem = _problem(algorithm, n, max_degree, objective, evaluations, seed, lighthouse, policies, family)
+    problem = _problem(algorithm, n, max_degree, objective, evaluations, seed, lighthouse, policies, family, restart,
+                       engine)
     tally = _Tally(problem, progress)
     rng = random.Random(f"adversarial-search:{problem.seed}")
     toolbox = base.Toolbox()
     toolbox.register("evaluate", lambda ind: (tally.evaluate(ind[0]),))
     toolbox.register("mutate", lambda ind: (_mutated(ind, problem, rng),))
-    toolbox.register("select", tools.selBest)
+    toolbox.register("select", lambda inds, k: tools.selBest(inds[::-1], k))  # ties: the newer (a plateau walks)
     toolbox.register("clone", _clone)
-    first = min(problem.evaluations, max(MU, problem.evaluations // START_SHARE))
+    first = min(problem.evaluations, MU if problem.restart else max(MU, problem.evaluations // START_SHARE))
     population = [_Individual([problem.draw(rng)]) for _ in range(first)]
+    if problem.restart is not None:  # the family's own world among them: a restart can only gain on it
+        population[0] = _Individual([family_world(problem.restart, problem.n)[0]])
     generations = math.ceil((problem.evaluations - first) / LAMBDA)
     with _global_random(problem.seed):
         algorithms.eaMuPlusLambda(population, toolbox, mu=min(MU, first), lambda_=LAMBDA, cxpb=0.0, mutpb=1.0,

@@ -30,14 +30,20 @@ import networkx as nx
 from topomark.spec.world import World
 from topomark.spec.worldfile import world_from_json
 
+from topomark.reference.algorithms.registry import algorithm_spec
 from topomark.reference.run.explore import explore
 from topomark.reference.bench.reports.plots import curve, drawn, finish, new, points
 from topomark.reference.worstcase.fit import fit_exponents
+from topomark.reference.worstcase.naming import generator_text
 from topomark.reference.worstcase.readback import read_regular
 from topomark.reference.worstcase.report import THESIS
 from topomark.reference.worstcase.summary_input import bound_broken, load_runs
+from topomark.reference.worstcase.verdicts import verdicts
 
-__all__ = ["structure", "summarise", "summarise_runs"]
+__all__ = ["structure", "summarise", "summarise_runs", "MIN_FIT_SIZES"]
+
+MIN_FIT_SIZES = 5
+"""The fewest sizes a growth fit is made over: three points fit a power law nearly whatever they are."""
 
 QUESTION = ("\"the derived upper cost bound O(m²n) of the basic single directional immovable marker algorithm is "
             "quite loose for some environments … it is worth investigating whether the worst case scenarios exist (at "
@@ -51,7 +57,10 @@ def structure(world: World, algorithm: str) -> dict[str, Any]:
     g = nx.Graph([(v, w) for v in world.vertices for w in world.rotation[v]])
     start = world.start_state()[0]
     run = explore(world, algorithm)
-    return {"n": world.n, "m": world.m, "diameter": nx.diameter(g), "max_degree": max(dict(g.degree()).values()),
+    spec = algorithm_spec(algorithm)
+    bound = spec.bound_for(world.n, world.m)
+    ratio = None if bound is None else round(spec.counted_cost(run.cost, run.by_purpose) / bound, 4)
+    return {"n": world.n, "ratio_to_bound": ratio, "m": world.m, "diameter": nx.diameter(g), "max_degree": max(dict(g.degree()).values()),
             "genus": world.genus(), "start_degree": world.degree(start),
             "start_eccentricity": nx.eccentricity(g, start), "cost": run.cost, "verified": run.verified,
             "loop_iterations": run.loop_iterations, "hypotheses": run.hypotheses,
@@ -59,77 +68,127 @@ def structure(world: World, algorithm: str) -> dict[str, Any]:
             "degrees": "".join(str(d) for d in sorted((d for _, d in g.degree()), reverse=True))}
 
 
-def _findings(runs: list[dict], shapes: list[dict]) -> list[str]:
-    """What the exhaustive tables say, computed from them."""
+def _findings(runs: list[dict], shapes: list[tuple[dict, World]]) -> list[str]:
+    """What the exhaustive tables say, computed from them: each ratio from one world, structure counted over
+    distinct worlds, and nothing that holds by definition."""
     out = []
     for data in sorted(runs, key=lambda d: (d["algorithm"], d["max_degree"])):
         rows = [r for r in data["per_n"] if r["n"] >= 4 and r["max_ratio_to_bound"] is not None]
         if rows:
-            last, top = rows[-1], max(r["max_ratio_to_bound"] for r in rows)
+            last, top = rows[-1], max(rows, key=lambda r: r["max_ratio_to_bound"])
             exact = max(r["ratio_exact"][0] / r["ratio_exact"][1] for r in rows)  # recomputed by load_runs
             verdict = "the bound holds with room to spare" if exact < 1 else "the bound is reached" if exact == 1 \
                 else "the bound does NOT hold (exit 1)"
-            out.append(f"- `{data['algorithm']}`, degree ≤ {data['max_degree']}: at n = {last['n']} the worst run costs "
-                       f"{last['max_ratio_to_bound']} of its exact bound (largest over 4 ≤ n: {top}); {verdict}.")
+            out.append(f"- `{data['algorithm']}`, degree ≤ {data['max_degree']}: the largest cost / exact bound at "
+                       f"n = {last['n']} is {last['max_ratio_to_bound']}, over 4 ≤ n ≤ {last['n']} "
+                       f"{top['max_ratio_to_bound']} (at n = {top['n']}); {verdict}.")
     if shapes:
-        far = sum(1 for s in shapes if s["start_eccentricity"] == s["diameter"])
-        full = sum(1 for s in shapes if s["degrees"].count(str(s["max_degree"])) >= s["n"] - 1)
-        out.append(f"- In {far} of {len(shapes)} worst worlds the start (where the lighthouse is) is as far from some "
-                   f"place as any two places are (eccentricity = diameter); in {full} of {len(shapes)} all but at most "
-                   "one place have the largest degree: the worst worlds are dense and the robot starts on their rim.")
+        out.append(_distinct(shapes))
     return out
+
+
+def _distinct(shapes: list[tuple[dict, World]]) -> str:
+    """The structure of the max-cost worlds counted once per distinct world (start included), leaving out the
+    start's eccentricity in worlds of diameter 1, where every start is as far as any two places are."""
+    from topomark.proofs.enumerate import canonical_form
+    worlds = {canonical_form(w): s for s, w in shapes}
+    embedded = {canonical_form(w.with_start(None)) for _, w in shapes}
+    wide = [s for s in worlds.values() if s["diameter"] >= 2]
+    far = sum(1 for s in wide if s["start_eccentricity"] == s["diameter"])
+    full = sum(1 for s in worlds.values() if s["degrees"].count(str(s["max_degree"])) >= s["n"] - 1)
+    return (f"- The {len(shapes)} max-cost rows above are {len(worlds)} distinct worlds with their start "
+            f"({len(embedded)} distinct embedded worlds). Of the {len(wide)} of diameter ≥ 2, {far} start (where "
+            f"the lighthouse is) at eccentricity = diameter; in {full} of the {len(worlds)} all but at most one "
+            "place have the largest degree.")
 
 
 def _exhaustive_section(runs: list[dict]) -> list[str]:
     lines = ["## Proved: the exact worst case for every world up to a size", "",
              "Every embedded world up to extended isomorphism with n vertices and degrees ≤ D, from every start up to "
              "the world's automorphisms; the maxima are exact for those sizes.", "",
-             "| algorithm | D | n | worlds | runs | max cost | max cost/m | max cost / exact bound | structure of the "
-             "worst world (m, diameter, degrees, genus, start eccentricity; loop iterations, hypotheses rejected) |",
-             "|---|---|---|---|---|---|---|---|---|"]
+             "Each row's max cost, its cost / exact bound and its structure are of one world (the max-cost world, "
+             "with its start); the largest cost / exact bound over the same worlds is its own column, with its own "
+             "world's size. The largest cost/m is over all worlds.", "",
+             "| algorithm | D | n | worlds | runs | max cost | its cost / exact bound | structure of the max-cost "
+             "world (m, diameter, degrees, genus, start eccentricity; loop iterations, hypotheses rejected) | "
+             "largest cost / exact bound (its world's m) | largest cost/m |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
     shapes = []
     for data in sorted(runs, key=lambda d: (d["algorithm"], d["max_degree"])):
         for r in data["per_n"]:
             if r["argmax"] is None or r["n"] < 4:
                 continue
-            s = structure(world_from_json(r["argmax"]), data["algorithm"])
-            shapes.append(s)
+            world = world_from_json(r["argmax"])
+            s = structure(world, data["algorithm"])
+            shapes.append((s, world))
             shape = (f"m={s['m']}, diam {s['diameter']}, degrees {s['degrees']}, genus {s['genus']}, "
                      f"ecc {s['start_eccentricity']}; {s['loop_iterations']} loops, "
                      f"{s['hypotheses_rejected']}/{s['hypotheses']} hypotheses rejected")
+            ratio_m = "" if r["ratio_exact"] is None else f" (m={_bound_m(data, r)})"
             lines.append(f"| {data['algorithm']} | {data['max_degree']} | {r['n']} | {r['worlds']} | {r['runs']} | "
-                         f"{r['max_cost']} | {r['max_cost_per_m']} | {r['max_ratio_to_bound']} | {shape} |")
+                         f"{r['max_cost']} | {s['ratio_to_bound']} | {shape} | {r['max_ratio_to_bound']}{ratio_m} | "
+                         f"{r['max_cost_per_m']} |")
     return lines + ["", *_findings(runs, shapes), ""]
+
+
+def _bound_m(data: dict, r: dict) -> int:
+    """The m of the world with the largest cost / exact bound: the m whose exact bound is the ratio's denominator."""
+    spec = algorithm_spec(data["algorithm"])
+    ms = [m for m in range(r["n"] - 1, r["n"] * data["max_degree"] // 2 + 1)
+          if spec.bound_for(r["n"], m) == r["ratio_exact"][1]]
+    assert len(ms) == 1, "the exact bound grows with m, so it names its world's m"
+    return ms[0]
 
 
 def _search_section(runs: list[dict]) -> list[str]:
     lines = ["## Found: bad worlds past exhaustive sizes (lower bounds)", "",
              "Seeded local search; the best world found is a lower bound on the worst case, set beside the best of as "
-             "many random worlds.", "",
-             "| algorithm | objective | n | m | diameter | max degree | best found | best random | found / bound |",
-             "|---|---|---|---|---|---|---|---|---|"]
+             "many random worlds. Each row's figures are of one world, named by a generator text that "
+             "`topomark explore` accepts (none: the world is only in the run's output directory).", "",
+             "| algorithm | started from | n | m | diameter | max degree | best found | its world | found / bound "
+             "| best random |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
     fits = []
-    for data in sorted(runs, key=lambda d: d["algorithm"]):
-        for r in data["per_n"]:
-            s, b = r["search"].get("best") or {}, r["random"].get("best") or {}
-            holes = f" (holes: {', '.join(s['holes']) or 'none'})" if "holes" in s else ""
-            lines.append(f"| {data['algorithm']}{' lattice-hole' if data.get('family') else ''} | "
-                         f"{data['objective']} | {r['n']} | {s.get('m')} | {s.get('diameter')} | {s.get('max_degree')} "
-                         f"| {s.get('cost')}{holes} | {b.get('cost')} | {s.get('ratio_to_bound')} |")
-        best = [{**r["search"]["best"], "n": r["n"]} for r in data["per_n"] if r["search"].get("best")]
-        if len(best) >= 3:  # fitted here, from the rows, so every report fits alike
-            name = f"{data['algorithm']}{' lattice-hole' if data.get('family') else ''}"
+    rows = sorted(((data, r) for data in runs for r in data["per_n"]),
+                  key=lambda p: (p[0]["algorithm"], p[0].get("family") or "", p[0].get("restart") or "", p[1]["n"]))
+    for data, r in rows:  # by size within an algorithm, whichever run each size came from
+        name = f"{data['algorithm']}{' lattice-hole' if data.get('family') else ''}"
+        s, b = r["search"].get("best") or {}, r["random"].get("best") or {}
+        holes = f" (holes: {', '.join(s['holes']) or 'none'})" if "holes" in s else ""
+        text = generator_text(world_from_json(s["world"])) if s.get("world") else None
+        lines.append(f"| {name} | {data.get('restart') or 'random worlds'} | {r['n']} | {s.get('m')} | "
+                     f"{s.get('diameter')} | {s.get('max_degree')} | {s.get('cost')}{holes} | "
+                     f"{f'`{text}`' if text else 'none'} | {s.get('ratio_to_bound')} | {b.get('cost')} |")
+    by_name: dict[str, list[dict]] = {}
+    for data in runs:
+        name = f"{data['algorithm']}{' lattice-hole' if data.get('family') else ''}"
+        by_name.setdefault(name, []).extend({**r["search"]["best"], "n": r["n"]} for r in data["per_n"]
+                                            if r["search"].get("best"))
+    for name, best in sorted(by_name.items()):
+        sizes = len({b["n"] for b in best})
+        if sizes >= MIN_FIT_SIZES:  # fitted here, from the rows, so every report fits alike
             fits.append(f"- {name}: {_fit_text(fit_exponents(best))}{_bound_growth(best)}")
-    if fits:
-        lines += ["", "Fitted growth of the best cost found (log-log least squares over the sizes searched):", "",
-                  *fits]
-    return lines + [""]
+        else:
+            fits.append(f"- {name}: no fit ({sizes} sizes; a growth fit needs at least {MIN_FIT_SIZES})")
+    return lines + ["", "Growth of the best cost found (log-log least squares, 95 % confidence intervals):", "",
+                    *fits, ""]
+
+
+def _names(searched: list[dict]) -> dict[tuple[str, int], str | None]:
+    """(algorithm, n) ↦ the generator text of the best world found there (the largest cost over its runs)."""
+    best: dict[tuple[str, int], dict] = {}
+    for data in searched:
+        for r in data["per_n"]:
+            s, key = r["search"].get("best"), (data["algorithm"], r["n"])
+            if s and not data.get("family") and (key not in best or s["cost"] > best[key]["cost"]):
+                best[key] = s
+    return {key: generator_text(world_from_json(s["world"])) for key, s in best.items()}
 
 
 def _bound_growth(best: list[dict[str, Any]]) -> str:
     """How the exact bound grows over the same worlds (the cost each found world would need to reach it)."""
     bounds = [{**b, "cost": b["cost"] / b["ratio_to_bound"]} for b in best if b.get("ratio_to_bound")]
-    if len(bounds) < 3:
+    if len(bounds) < MIN_FIT_SIZES:
         return ""
     fit = fit_exponents(bounds)["n"]
     return f"; the exact bound at those worlds grows as n^{fit['exponent']:.2f}" if fit else ""
@@ -137,8 +196,8 @@ def _bound_growth(best: list[dict[str, Any]]) -> str:
 
 def _fit_text(fit: dict[str, Any]) -> str:
     """``cost ∝ m^2.02 (R² 0.984), …`` for the factors that varied."""
-    parts = [f"{f}^{fit[f]['exponent']:.2f} (R² {fit[f]['r2']})" for f in ("m", "n", "diameter", "max_degree")
-             if fit.get(f)]
+    parts = [f"{f}^{fit[f]['exponent']:.2f} (95 % CI {fit[f]['ci95'][0]:.2f} to {fit[f]['ci95'][1]:.2f}, "
+             f"R² {fit[f]['r2']})" for f in ("m", "n", "diameter", "max_degree") if fit.get(f) and "ci95" in fit[f]]
     two = fit.get("m_n")
     if two:
         parts.append(f"c·m^{two['a']:.2f}·n^{two['b']:.2f} (R² {two['r2']})")
@@ -171,6 +230,7 @@ def _commands(exhaustive: list[dict], searched: list[dict]) -> list[str]:
                    f"--max-degree {d['max_degree']}")
     for d in sorted(searched, key=lambda d: (d["algorithm"], d.get("family") or "")):
         family = f" --world-family {d['family']}" if d.get("family") else ""
+        family += f" --restart-family {d['restart']}" if d.get("restart") else ""
         sizes = " ".join(str(r["n"]) for r in d["per_n"])
         out.append(f"topomark worst-case --search --algorithm {d['algorithm']}{family} --vertices {sizes} "
                    f"--evaluations {d['evaluations']} --max-degree {d['max_degree']}")
@@ -201,14 +261,20 @@ def summarise_runs(dirs: list[Path], out: Path | None = None) -> tuple[str, bool
     bad input naming the file and field otherwise)."""
     exhaustive, searched = load_runs(dirs)
     lines = ["# Worst cases: the thesis's open question, measured", "", f"> {QUESTION}", "",
-             f"- **Thesis:** {THESIS}",
-             "- **Proved here** (exhaustive): the largest cost of each algorithm over every world up to the sizes "
-             "below, exactly.", "- **Found here** (search): worlds at least this bad exist at larger sizes; the "
-             "true worst case may be worse.", ""]
+             f"- **Thesis:** {THESIS}"]
+    if exhaustive:
+        lines.append("- **Proved here** (exhaustive): the largest cost of each algorithm over every world up to the "
+                     "sizes below, exactly.")
+    if searched:
+        lines.append("- **Found here** (search): worlds at least this bad exist at larger sizes; the true worst case "
+                     "may be worse.")
+    lines.append("")
     if exhaustive:
         lines += _exhaustive_section(exhaustive)
     if searched:
         lines += _search_section(searched)
+    lines += ["## What this says about §7.2, per algorithm", "", f"- **Thesis:** {THESIS}",
+              *verdicts(exhaustive, searched, _names(searched)), ""]
     lines += ["## How this page was made", "", "`topomark worst-case --summarise` over the outputs (`-o DIR`) of:", "",
               *[f"- `{c}`" for c in _commands(exhaustive, searched)], ""]
     if out is not None:

@@ -38,6 +38,7 @@ from topomark.reference.run.explore import explore
 from topomark.reference.worstcase.exhaustive import Setup, run_start
 from topomark.reference.worstcase.limits import MAX_EXHAUSTIVE, MAX_SEARCH_VERTICES, exhaustive_refusal
 from topomark.reference.worstcase.readback import read_json
+from topomark.reference.worstcase.structural import RESTART_FAMILIES
 
 __all__ = ["EXHAUSTIVE", "SEARCH", "load_runs"]
 
@@ -83,6 +84,7 @@ _BEST = {"oneOf": [{"type": "null"}, {
 SEARCH = {"type": "object", "required": ["algorithm", "setup", "max_degree", "objective", "evaluations", "per_n"],
           "properties": {"algorithm": _NAME, "setup": _SETUP, "objective": _NAME,
                          "family": {"oneOf": [{"type": "null"}, {"enum": ["lattice-hole"]}]},
+                         "restart": {"oneOf": [{"type": "null"}, {"enum": list(RESTART_FAMILIES)}]},
                          "max_degree": {"type": "integer", "minimum": 2, "maximum": MAX_DEGREE},
                          "evaluations": {"type": "integer", "minimum": 1, "maximum": 2**62},
                          "per_n": {"type": "array", "maxItems": 64, "items": {

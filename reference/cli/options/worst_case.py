@@ -37,7 +37,7 @@ def register(sub) -> None:
                    help="fraction of the runs re-run checked (default 0.001; every argmax is always re-checked)")
     p.add_argument("--seed", type=seed, default=0, help="seed of the checked sample and of --search (default 0)")
     p.add_argument("--engine", choices=fact("engines"), default="auto",
-                   help="what runs the exhaustive search's unchecked runs: reference, compiled (numba; basic with the "
+                   help="what runs the unchecked runs of the exhaustive search and of --search: reference, compiled (numba; basic with the "
                         "directional-vertex lighthouse and the built-in policies), or auto (default: compiled when "
                         "numba is installed and it runs the algorithm, else reference); every checked re-run is the "
                         "reference's")
@@ -67,5 +67,9 @@ def add_search_arguments(p) -> None:
                         "once)")
     g.add_argument("--objective", choices=fact("objectives"), default="cost",
                    help="what to maximise: cost, cost-per-m, or ratio (cost / the exact bound)")
+    g.add_argument("--restart-family", choices=fact("restart_families"), metavar="NAME",
+                   help="start the search from this family's world at each size and its neighbours instead of random "
+                        "worlds: strip (strip:n=N,cap=1 for even N >= 8, else cap=0), circulant (circulant:n=N,k=2) "
+                        "or k5e-chain (N a multiple of 5)")
     g.add_argument("--world-family", choices=("lattice-hole",),
                    help="search within a family of worlds: lattice-hole (a lattice, which cells are removed)")

@@ -1,0 +1,91 @@
+"""What the worst-case report says per algorithm, in three sentences: proved, shown, and what it means for §7.2.
+
+§7.2 asks whether the O(m²n) bound of Algorithm 3.1 (§3.5.2) is tight, for which classes of graphs, and whether
+a bound in the diameter or the maximum degree could hold.  :func:`verdicts` answers per algorithm from the runs
+the report summarises, each sentence from its own evidence:
+
+* **proved** — the exhaustive runs: the largest cost / exact bound over every world up to their size, exact;
+* **shown** — the search runs: the best world found per size (a lower bound on the worst case), its cost / exact
+  bound and its generator text; for ``basic`` also the strip's exact cost formula
+  (:func:`~.family_costs.strip_cost`, fitted on the sizes up to 60 and checked at every size from 9 to 200);
+* **says** — what that means for the thesis's questions, stated no further than the evidence goes: a ratio that
+  does not fall as n grows on worlds of maximum degree 4 says the O(m²n) bound is tight up to a constant there,
+  so no bound in the degree alone can be smaller; worlds that all have diameter Θ(n) leave a bound in the
+  diameter open.
+
+>>> verdicts([], [])
+[]
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+__all__ = ["verdicts", "STRIP_STATEMENT", "STRIP_SAYS"]
+
+STRIP_STATEMENT = ("on the triangulated strip `strip:n=N` (maximum degree 4, m = 2n − 3, diameter ⌊n/2⌋, "
+                   "the start at an end) the cost is exactly a cubic in n per n mod 6, 23/24·n³ + O(n²), so cost / "
+                   "bound rises to 23/112 ≈ 0.205")
+
+STRIP_SAYS = ("says: the strip alone makes the O(m²n) bound tight up to a constant factor on worlds of maximum "
+              "degree 4 (cost Θ(n³) = Θ(m²n)), so no bound in the degree alone can be smaller; the strip's diameter "
+              "is Θ(n), so whether a bound in the diameter holds stays open")
+
+
+def _proved(runs: list[dict[str, Any]]) -> str | None:
+    rows = [(r["ratio_exact"][0] / r["ratio_exact"][1], r["n"], d["max_degree"]) for d in runs for r in d["per_n"]
+            if r["n"] >= 4 and r.get("ratio_exact")]
+    if not rows:
+        return None
+    top = max(rows)
+    sizes = max(r[1] for r in rows)
+    return (f"proved (every world up to n = {sizes}): the largest cost is {top[0]:.4f} of the exact bound "
+            f"(at n = {top[1]}, degree ≤ {top[2]})")
+
+
+def _shown(runs: list[dict[str, Any]], names: dict[tuple[str, int], str | None]) -> tuple[str | None, list[float]]:
+    best: dict[int, dict[str, Any]] = {}
+    for d in runs:
+        for r in d["per_n"]:
+            s = r["search"].get("best")
+            if s and s.get("ratio_to_bound") is not None and (r["n"] not in best or s["cost"] > best[r["n"]]["cost"]):
+                best[r["n"]] = {**s, "algorithm": d["algorithm"]}
+    if not best:
+        return None, []
+    parts = []
+    for n in sorted(best):
+        text = names.get((best[n]["algorithm"], n))
+        parts.append(f"n = {n}: {best[n]['ratio_to_bound']:.4f}" + (f" (`{text}`)" if text else ""))
+    return "shown (the best world found per size, cost / exact bound): " + "; ".join(parts), \
+        [best[n]["ratio_to_bound"] for n in sorted(best)]
+
+
+def _says(ratios: list[float], degree: int | None) -> str:
+    if len(ratios) < 2:
+        return "says: too few sizes searched to tell how cost / bound moves with n"
+    falling = any(b < a for a, b in zip(ratios, ratios[1:]))
+    if falling:
+        return ("says: cost / bound falls somewhere over the sizes searched, so these worlds do not show the "
+                "O(m²n) bound tight; the search may have missed worse worlds")
+    return (f"says: cost / bound does not fall with n on worlds of maximum degree {degree}, so the O(m²n) bound "
+            "is reached up to a constant factor there and no bound in the degree alone can be smaller; every world "
+            "shown has diameter Θ(n), so whether a bound in the diameter holds stays open")
+
+
+def verdicts(exhaustive: list[dict[str, Any]], searched: list[dict[str, Any]],
+             names: dict[tuple[str, int], str | None] | None = None) -> list[str]:
+    """One line per algorithm: ``- `name`: proved …; shown …; says …`` (the parts it has evidence for).
+    ``names`` maps (algorithm, n) to the generator text of the best world found there, if it has one."""
+    names = names or {}
+    out = []
+    for algorithm in sorted({d["algorithm"] for d in exhaustive} | {d["algorithm"] for d in searched}):
+        proved = _proved([d for d in exhaustive if d["algorithm"] == algorithm])
+        runs = [d for d in searched if d["algorithm"] == algorithm and not d.get("family")]
+        shown, ratios = _shown(runs, names)
+        if algorithm == "basic":
+            shown = f"{shown}; and {STRIP_STATEMENT}" if shown else f"shown: {STRIP_STATEMENT}"
+        degree = max((d["max_degree"] for d in runs), default=None)
+        says = STRIP_SAYS if algorithm == "basic" else _says(ratios, degree) if runs else None
+        parts = [p for p in (proved, shown, says) if p]
+        out.append(f"- `{algorithm}`: " + ". ".join(p[0].upper() + p[1:] for p in parts) + ".")
+    return out

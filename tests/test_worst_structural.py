@@ -1,0 +1,134 @@
+"""The structural moves and family restarts of the worst-case search (§7.2): a switch splices two paths and keeps
+every degree, a transpose and a marker move re-embed one place, a restart starts from the family's own world, and
+the compiled engine scores a candidate exactly as the reference does."""
+
+from __future__ import annotations
+
+import os
+import random
+from collections import Counter
+
+import networkx as nx
+import pytest
+
+from topomark.reference.engine import available
+from topomark.reference.run.explore import explore
+from topomark.reference.algorithms.registry import algorithm_spec
+from topomark.reference.worlds.expensive import strip
+from topomark.reference.worstcase.moves import graph_of
+from topomark.reference.worstcase.search import _problem, adversarial_search
+from topomark.reference.worstcase.structural import family_text, family_world, structural_move
+from topomark.spec.errors import InvalidInput
+
+
+def _degrees(w):
+    return Counter({v: w.degree(v) for v in w.vertices})
+
+
+def _edges(w):
+    return set(map(frozenset, w.edges()))
+
+
+def test_a_switch_replaces_two_edges_by_two_and_keeps_every_degree_and_connection():
+    rng, w = random.Random(1), strip(16, cap=1)
+    switched = 0
+    for _ in range(200):
+        moved = structural_move(w, "switch", 4, rng)
+        if moved is None:
+            continue
+        switched += 1
+        gone, new = _edges(w) - _edges(moved), _edges(moved) - _edges(w)
+        assert len(gone) == len(new) == 2
+        assert set().union(*gone) == set().union(*new)  # the same four places, joined crosswise
+        assert _degrees(moved) == _degrees(w) and nx.is_connected(graph_of(moved))
+        w = moved
+    assert switched >= 50
+
+
+@pytest.mark.parametrize("kind", ["transpose", "marker"])
+def test_a_transpose_reorders_one_rotation_and_a_marker_move_one_at_or_beside_the_start(kind):
+    rng, w = random.Random(2), strip(12, cap=1)
+    for _ in range(100):
+        moved = structural_move(w, kind, 4, rng)
+        assert moved is not None and _edges(moved) == _edges(w) and moved.start == w.start
+        changed = [v for v in w.vertices if moved.rotation[v] != w.rotation[v]]
+        assert len(changed) == 1 and sorted(moved.rotation[changed[0]]) == sorted(w.rotation[changed[0]])
+        if kind == "marker":
+            assert changed[0] == w.start.at or changed[0] in w.rotation[w.start.at]
+
+
+def test_an_unknown_move_or_family_or_size_is_bad_input_naming_it():
+    with pytest.raises(InvalidInput, match="unknown structural move 'fold'"):
+        structural_move(strip(8), "fold", 4, random.Random(0))
+    with pytest.raises(InvalidInput, match="unknown restart family 'ladder'"):
+        family_text("ladder", 20)
+    with pytest.raises(InvalidInput, match="multiple of 5, not 21"):
+        family_world("k5e-chain", 21)
+    with pytest.raises(InvalidInput, match="max_degree must be >= 4, got 3"):
+        adversarial_search("basic", 20, 3, evaluations=5, restart="strip", baseline=False)
+    with pytest.raises(InvalidInput, match="not the lattice-hole family"):
+        adversarial_search("basic", 16, 4, evaluations=5, restart="strip", family="lattice-hole", baseline=False)
+
+
+@pytest.mark.parametrize("family,n", [("strip", 20), ("strip", 21), ("circulant", 20), ("k5e-chain", 20)])
+def test_a_family_world_has_n_places_and_is_what_its_text_generates(family, n):
+    from topomark.reference.worlds.argument import parse_generator
+    from topomark.reference.worlds.generators import generate
+    w, text = family_world(family, n)
+    name, params = parse_generator(text)
+    assert w.n == n and generate(name, **params).rotation == w.rotation
+
+
+def test_a_restarted_search_is_never_worse_than_its_family_world():
+    """The family's own world is in the first generation, and (μ+λ) keeps the best: a restart can only gain."""
+    spec = algorithm_spec("basic")
+    own = explore(family_world("strip", 14)[0], spec, check=False, record=False).cost
+    found = adversarial_search("basic", 14, 4, evaluations=40, seed=3, restart="strip", baseline=False)
+    assert found.best is not None and found.best.cost >= own and found.restart == "strip"
+    assert found.to_json()["restart"] == "strip"
+    rerun = explore(found.best.world, spec, check=True, record=False)
+    assert rerun.claimed == "correct" and rerun.cost == found.best.cost
+
+
+@pytest.mark.skipif(not available() and not os.environ.get("CI"),
+                    reason="numba is not installed: the compiled engine cannot run")
+def test_the_engine_scores_candidates_as_the_reference_does():
+    rng = random.Random(4)
+    fast = _problem("basic", 12, 4, "ratio", 10, 0, None, None, None, "strip", "compiled")
+    slow = _problem("basic", 12, 4, "ratio", 10, 0, None, None, None, "strip", "reference")
+    assert fast.engine and not slow.engine
+    for _ in range(12):
+        cand = fast.move(fast.draw(rng), rng)
+        assert fast.run(cand) == slow.run(cand)
+
+
+def test_the_report_names_each_found_world_by_its_generator_text_and_fits_only_over_five_sizes(tmp_path, capsys):
+    from topomark.reference.cli.main import main
+    five, three = tmp_path / "five", tmp_path / "three"
+    for out, sizes in ((five, ["8", "9", "10", "11", "12"]), (three, ["14", "16", "18"])):
+        assert main(["worst-case", "--search", "--vertices", *sizes, "--evaluations", "1", "--restart-family",
+                     "strip", "--quiet", "-o", str(out)]) == 0  # one run: the family's own world
+    capsys.readouterr()
+    assert main(["worst-case", "--summarise", str(five)]) == 0
+    text = capsys.readouterr().out
+    row = next(line for line in text.splitlines() if line.startswith("| basic | strip | 9 |"))
+    assert "`strip:n=9,cap=0`" in row and "`strip:n=8,cap=1`" in text
+    assert "95 % CI" in text and "over 5 sizes" in text and "--restart-family strip" in text
+    assert main(["worst-case", "--summarise", str(three)]) == 0
+    assert "no fit (3 sizes; a growth fit needs at least 5)" in capsys.readouterr().out
+
+
+def _searched(algorithm, ratios):
+    return [{"algorithm": algorithm, "max_degree": 4, "family": None, "per_n": [
+        {"n": n, "search": {"best": {"cost": 10 * n, "ratio_to_bound": q}}} for n, q in zip((20, 50, 100), ratios)]}]
+
+
+def test_the_verdict_says_the_bound_is_tight_only_where_the_ratio_does_not_fall():
+    from topomark.reference.worstcase.verdicts import STRIP_SAYS, verdicts
+    rising = verdicts([], _searched("enh1", [0.1, 0.12, 0.12]), {("enh1", 50): "strip:n=50,cap=1"})[0]
+    assert rising.startswith("- `enh1`: Shown") and "n = 50: 0.1200 (`strip:n=50,cap=1`)" in rising
+    assert "does not fall with n on worlds of maximum degree 4" in rising
+    falling = verdicts([], _searched("enh1", [0.1, 0.12, 0.11]))[0]
+    assert "falls somewhere over the sizes searched" in falling and "does not fall" not in falling
+    basic = verdicts([], _searched("basic", [0.1, 0.12, 0.11]))[0]  # basic rests on the strip's exact formula
+    assert STRIP_SAYS[1:] in basic and "23/24·n³" in basic
