@@ -12,7 +12,7 @@ from topomark.proofs.census_map import plan
 from topomark.proofs.world_arrays import to_arrays
 from topomark.reference import engine
 from topomark.reference.cli.main import main
-from topomark.reference.engine import FOOTPRINT_CASES, choose, compare, footprint_runs
+from topomark.reference.engine import FOOTPRINT_CASES, choose, compare, footprint_runs, runs
 from topomark.reference.engine.compare import reference_run
 from topomark.reference.engine.equality import main as equality_main
 from topomark.reference.worlds.generators import lattice
@@ -39,7 +39,7 @@ def test_every_start_agrees_on_the_small_census(algorithm):
 def test_one_run_agrees_field_by_field_with_its_searches_and_markers():
     world = lattice(3, 3)
     want, codes = reference_run(world, ("0,0", 0), ("lifo", "fifo", "shortest"), "case-2")
-    run = footprint_runs.run_logged("case-2", to_arrays(world), (0, 0), ("lifo", "fifo", "shortest"))
+    run = runs.run_logged(to_arrays(world), (0, 0), ("lifo", "fifo", "shortest"), algorithm="case-2")
     assert run.actions.tolist() == codes and run.digest() == want["digest"]
     assert (run.claimed, run.cost, run.by_purpose, run.marker_operations) == (
         want["claimed"], want["cost"], want["by_purpose"], want["marker_operations"])
@@ -107,3 +107,10 @@ def test_the_wall_the_footprint_kernel_takes_no_world_and_reads_no_marks():
         elif isinstance(node, ast.ImportFrom) and node.module and "world" in node.module:
             found.append(f"import from {node.module}")
     assert found == []
+
+
+def test_the_bench_times_a_footprint_search_and_checks_its_costs():
+    from topomark.reference.engine.bench import bench
+    report = bench(4, 3, every=2, algorithm="case-2")
+    assert report["algorithm"] == "case-2" and report["costs_agree"]
+    assert (report["starts"], report["reference_runs"]) == (32, 16)

@@ -6,7 +6,9 @@ undirected markers (:mod:`.marks`) are built on the world's arrays once, the
 kit each start begins with is the one the algorithm's registration gives the
 world (:meth:`~topomark.reference.algorithms.algorithm_spec.AlgorithmSpec.kit_for`,
 no ``--markers``: what ``topomark worst-case`` runs), and each start's run is
-reported as an :class:`~.runs.EngineRun`, as the reference's unchecked
+reported as the rows :class:`~.runs.EngineRun` reads (:func:`~.runs.run_starts`
+and :func:`~.runs.run_logged` call :func:`rows` and :func:`logged` for these
+algorithms), as the reference's unchecked
 :class:`~topomark.reference.run.outcome.Outcome` reports it.  Only the edge
 policy applies (Case 4 chooses the nearest edge whatever it is given, as its
 reference does).
@@ -15,9 +17,9 @@ Examples
 --------
 >>> from topomark.reference.worlds.generators import cycle
 >>> from topomark.proofs.world_arrays import to_arrays
->>> run = run_logged("case-2", to_arrays(cycle(4)), (0, 0), ("nearest", "fifo", "shortest"))
->>> run.claimed, run.cost, run.by_purpose, run.marker_operations
-('correct', 8, {'new': 4, 'retrace': 1, 'validation': 3}, {'drop': 4})
+>>> code, counts, tallies, actions = logged("case-2", to_arrays(cycle(4)), (0, 0), ("nearest", "fifo", "shortest"))
+>>> code, counts[16], len(actions), tallies[:3]
+(0, 8, 12, [4, 1, 3])
 """
 
 from __future__ import annotations
@@ -33,10 +35,9 @@ from topomark.reference.engine.footprints import CASES, explore, new_footprint_s
 from topomark.reference.engine.mapstate import new_map
 from topomark.reference.engine.marks import new_marks, reset_marks
 from topomark.reference.engine.robot import ACTIONS, COST, COUNTS, log, make_robot, reset
-from topomark.reference.engine.runs import EngineRun
 from topomark.reference.explorers.policies import EDGE_POLICIES
 
-__all__ = ["kit_of", "run_starts", "run_logged"]
+__all__ = ["kit_of", "rows", "logged"]
 
 
 def kit_of(algorithm: str, arrays: WorldArrays) -> tuple[int, int, int]:
@@ -74,20 +75,21 @@ def _call(algorithm: str, arrays: WorldArrays, starts: list[tuple[int, int]], po
     return robot, codes, counts, tallies
 
 
-def run_starts(algorithm: str, arrays: WorldArrays, starts: list[tuple[int, int]],
-               policies: tuple[str, str, str]) -> list[EngineRun]:
-    """Every start of ``starts`` on the world of ``arrays`` by the footprint search ``algorithm``, in one call."""
+def rows(algorithm: str, arrays: WorldArrays, starts: list[tuple[int, int]],
+         policies: tuple[str, str, str]) -> list[tuple[int, list[int], list[int]]]:
+    """Every start of ``starts`` on the world of ``arrays`` by the footprint search ``algorithm``, in one call:
+    per start its outcome code, its counts (traversals per purpose, drops, cost) and its tallies."""
     if not starts:
         return []
     _, codes, counts, tallies = _call(algorithm, arrays, starts, policies, 0)
-    return [EngineRun(c, k, t) for c, k, t in zip(codes.tolist(), counts.tolist(), tallies.tolist())]
+    return list(zip(codes.tolist(), counts.tolist(), tallies.tolist()))
 
 
-def run_logged(algorithm: str, arrays: WorldArrays, start: tuple[int, int], policies: tuple[str, str, str],
-               log_size: int = 4096) -> EngineRun:
-    """One start, its actions kept (the log grows until every action fits)."""
+def logged(algorithm: str, arrays: WorldArrays, start: tuple[int, int], policies: tuple[str, str, str],
+           log_size: int = 4096) -> tuple[int, list[int], list[int], np.ndarray]:
+    """One start, its actions kept (the log grows until every action fits): :func:`rows`'s row and the actions."""
     while True:
         robot, codes, counts, tallies = _call(algorithm, arrays, [start], policies, log_size)
         if int(robot[ACTIONS]) <= log_size:
-            return EngineRun(int(codes[0]), counts[0].tolist(), tallies[0].tolist(), log(robot).copy())
+            return int(codes[0]), counts[0].tolist(), tallies[0].tolist(), log(robot).copy()
         log_size = int(robot[ACTIONS])

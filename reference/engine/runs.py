@@ -33,6 +33,7 @@ from topomark.proofs.world_arrays import WorldArrays
 
 from topomark.reference.engine.algorithm31 import (CONFIRMED, HYPOTHESES, ITERATIONS, LOOP, NON_LOOP, OK, REJECTED,
                                                    explore, new_scratch)
+from topomark.reference.engine import footprint_runs
 from topomark.reference.engine.compiled import kernel
 from topomark.reference.engine.digest import digest
 from topomark.reference.engine.mapstate import new_map
@@ -118,8 +119,7 @@ def run_starts(arrays: WorldArrays, starts: list[tuple[int, int]], policies: tup
     """Every start of ``starts`` on the world of ``arrays``, in one compiled call (``algorithm``: ``basic``, or a
     footprint search of §6.2.1, :mod:`.footprint_runs`)."""
     if algorithm != "basic":
-        from topomark.reference.engine import footprint_runs
-        return footprint_runs.run_starts(algorithm, arrays, starts, policies)
+        return [EngineRun(*row) for row in footprint_runs.rows(algorithm, arrays, starts, policies)]
     if not starts:
         return []
     vcap, dcap, ucap = _sizes(arrays)
@@ -136,8 +136,7 @@ def run_logged(arrays: WorldArrays, start: tuple[int, int], policies: tuple[str,
                log_size: int = 4096, algorithm: str = "basic") -> EngineRun:
     """One start, its actions kept (the log grows until every action fits)."""
     if algorithm != "basic":
-        from topomark.reference.engine import footprint_runs
-        return footprint_runs.run_logged(algorithm, arrays, start, policies, log_size)
+        return EngineRun(*footprint_runs.logged(algorithm, arrays, start, policies, log_size))
     vcap, dcap, ucap = _sizes(arrays)
     while True:
         robot = make_robot(arrays, start[0], start[1], log_size)
