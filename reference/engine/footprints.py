@@ -23,8 +23,12 @@ counts on its marked edges), neither v_k nor a neighbour of v_k, in the
 preorder of a breadth-first tree of S rooted at v_k (:func:`candidates`);
 each is walked to by a shortest path of S, every vertex passed looked at, the
 search stopping wherever v_k' shows (:func:`walk_looking`).  Those two
-functions are where the listing's literal search (every candidate visited,
-checked only where the robot goes) would differ: a variant adds a case there.
+functions are the seam for the search as Algorithm 6.1 lines 11–19 list it
+(every candidate visited, v_k's neighbours included, each checked where the
+robot goes and nowhere on the way): a literal variant would keep v_k's
+neighbours in :func:`candidates` and look only at the target in
+:func:`walk_looking`, selected by one more integer argument; the engine runs
+the registered searches, not the listings.
 
 The kernel sees only its robot and the robot's marks (:mod:`.robot`,
 :mod:`.marks`); what it knows is its map (:mod:`.mapstate`) and ``mk``, the
