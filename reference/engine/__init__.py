@@ -43,8 +43,8 @@ it is available and runs the algorithm, else the reference."""
 
 
 FOOTPRINT_CASES = ("case-1a", "case-1b", "case-2", "case-4", "case-4-mn")
-"""The footprint searches of §6.2.1 the engine runs (:mod:`.footprints`): every one ``worst-case`` can be asked
-for, with the kit its registration gives (no ``--markers``)."""
+"""The footprint searches of §6.2.1 the engine runs (:mod:`.footprints`), each with the kit its registration
+gives (``worst-case`` takes no ``--markers``); §6.2.2's edgeINFO variants and the listings are not compiled."""
 
 
 def available() -> bool:

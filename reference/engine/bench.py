@@ -5,8 +5,9 @@
 and degrees ≤ D and every start orbit (as ``topomark worst-case`` does; the
 enumeration is not timed), then times
 
-* the reference's unchecked runs of the algorithm (``basic``, or a footprint
-  search of §6.2.1 the engine runs) (:func:`~topomark.reference.worstcase.exhaustive.run_start`)
+* the reference's unchecked runs of the algorithm (``--algorithm``: ``basic``,
+  or a footprint search of §6.2.1 the engine runs; as
+  :func:`~topomark.reference.worstcase.exhaustive.run_start` runs them)
   on every K-th start (K = 1: all; a fixed sample when the reference is too
   slow to run them all);
 * the engine's runs of every start, world by world as the exhaustive search
