@@ -114,3 +114,20 @@ def test_the_bench_times_a_footprint_search_and_checks_its_costs():
     report = bench(4, 3, every=2, algorithm="case-2")
     assert report["algorithm"] == "case-2" and report["costs_agree"]
     assert (report["starts"], report["reference_runs"]) == (32, 16)
+
+
+@pytest.mark.parametrize("algorithm, kit", [("case-1a", (0, 9, 0)), ("case-1b", (0, 0, 10)), ("case-2", (0, 12, 0)),
+                                            ("case-4", (0, 5, 0))])
+def test_a_short_kit_fails_where_the_references_runs_out(monkeypatch, algorithm, kit):
+    """With fewer markers than assured (the 3x3 lattice: m = 12), both stop at the same refused drop."""
+    from topomark.reference.engine.compare import _Actions
+    from topomark.reference.explorers.policies import Policies
+    from topomark.reference.run.explore import explore
+    world = lattice(3, 3)
+    monkeypatch.setattr(footprint_runs, "kit_of", lambda name, arrays: kit)
+    run = runs.run_logged(to_arrays(world), (0, 0), ("nearest", "fifo", "shortest"), algorithm=algorithm)
+    sink = _Actions()
+    out = explore(world, algorithm, Policies(), check=False, record=False, sink=sink, options={"markers": sum(kit)})
+    assert (run.claimed, run.cost, run.by_purpose, run.marker_operations, run.counts["iterations"]) == (
+        out.claimed, out.cost, out.by_purpose, out.marker_operations, out.iterations)
+    assert run.actions.tolist() == sink.codes and run.claimed == "failed" and out.iterations < 12
