@@ -131,3 +131,28 @@ def test_a_short_kit_fails_where_the_references_runs_out(monkeypatch, algorithm,
     assert (run.claimed, run.cost, run.by_purpose, run.marker_operations, run.counts["iterations"]) == (
         out.claimed, out.cost, out.by_purpose, out.marker_operations, out.iterations)
     assert run.actions.tolist() == sink.codes and run.claimed == "failed" and out.iterations < 12
+
+
+def test_case_1b_with_m_markers_runs_the_extension_as_its_reference(monkeypatch):
+    """§6.2.1 Case 1b: m markers suffice, the last iteration's refused drop taken as its reference takes it — a new
+    leaf left unmarked, or the one edge left in U joined with no search — on every start of n <= 4, D <= 3."""
+    from topomark.proofs.census_map import unit_worlds
+    from topomark.reference.engine.compare import _Actions
+    from topomark.reference.explorers.policies import Policies
+    from topomark.reference.run.explore import explore
+    from topomark.spec.world import Start
+    monkeypatch.setattr(footprint_runs, "kit_of", lambda name, arrays: (0, 0, arrays.m))
+    seen = set()
+    worlds = [w for task in plan(4, 3, 2) for unit, _ in task for _, w, _autos in unit_worlds(unit, 3)]
+    for world in [*worlds, lattice(3, 3)]:
+        arrays = to_arrays(world)
+        number = {v: k for k, v in enumerate(arrays.names)}
+        for v, i in [(v, i) for v in world.vertices for i in range(world.degree(v))]:
+            run = runs.run_logged(arrays, (number[v], i), ("nearest", "fifo", "shortest"), algorithm="case-1b")
+            sink = _Actions()
+            out = explore(world.with_start(Start(v, world.neighbour(v, i))), "case-1b", Policies(), check=False,
+                          record=False, sink=sink, options={"markers": world.m})
+            assert (run.claimed, run.cost, run.marker_operations, run.counts["loop_iterations"]) == (
+                out.claimed, out.cost, out.marker_operations, out.loop_iterations) and run.actions.tolist() == sink.codes
+            seen.add((out.claimed, out.loop_iterations > 0))
+    assert seen == {("correct", False), ("correct", True)}  # trees end on a leaf, the others on a loop edge

@@ -35,9 +35,10 @@ The kernel sees only its robot and the robot's marks (:mod:`.robot`,
 markers S shows on each map dart.  Outcome codes: :mod:`.algorithm31`'s, and
 :data:`FAILED` (no candidate shows the footprint, or the one that does is not
 an unexplored edge carrying the loop marker) and :data:`OUT_OF_MARKERS` (a drop
-the kit cannot cover), both the reference's ``failed``.  The engine runs the
-kits the registrations give (what ``worst-case`` runs): Case 1b's extension to
-m markers (a refused drop in the last iteration) is not compiled.
+the kit cannot cover), both the reference's ``failed``.  Case 1b's extension
+to m markers is compiled as its reference runs it: a refused drop ends the run
+only where the last iteration's edge cannot be processed without it
+(:func:`last_edge`; :func:`arrive_new`).
 """
 
 from __future__ import annotations
@@ -53,7 +54,7 @@ from topomark.reference.engine.robot import PURPOSE_NEW, PURPOSE_RETRACE, PURPOS
 from topomark.reference.engine.marks import drop_edge, drop_place, place_marks, sensed_edges
 
 __all__ = ["CASES", "FAILED", "OUT_OF_MARKERS", "new_footprint_scratch", "explore", "iterate", "arrive_new",
-           "validate", "candidates", "walk_looking"]
+           "validate", "last_edge", "candidates", "walk_looking"]
 
 FAILED, OUT_OF_MARKERS = 10, 11
 CASES = {"case-1a": 0, "case-1b": 1, "case-2": 2, "case-4": 3, "case-4-mn": 4}
@@ -117,9 +118,22 @@ def arrive_new(robot: np.ndarray, marks: np.ndarray, S: tuple, F: tuple, case: i
             return OUT_OF_MARKERS
         dcap = S[5][DCAP]
         F[MK][u * dcap], F[MK][vk * dcap + i] = count, count
-    if _MARKS_PLACES[case] and not drop_place(robot, marks):
-        return OUT_OF_MARKERS
+    if _MARKS_PLACES[case] and not drop_place(robot, marks):  # Case 1b's extension: the last iteration only
+        return FAILED if degree != 1 or S[5][ULEN] > 0 else OK
     return OK
+
+
+@kernel
+def last_edge(S: tuple, F: tuple, vk: int, i: int, degree: int) -> int:
+    """Case 1b's extension (§6.2.1 Case 1b): out of markers at a known v_u, the one edge left in U must be e'
+    (its vertex showing v_u's degree and marks as seen from it), and e/e' is added with no further motion."""
+    v, e, dcap = S[3][0], S[4][0], S[5][DCAP]
+    if S[5][ULEN] != 1 or S[0][v] != degree:
+        return FAILED
+    for p in range(degree):
+        if F[SENSED][p] != F[MK][v * dcap + (e + p) % degree]:
+            return FAILED
+    return loop_augment(S, vk, i, v, e)  # the robot stands at v_k', entered by e'
 
 
 @kernel
@@ -183,13 +197,13 @@ def walk_looking(robot: np.ndarray, marks: np.ndarray, S: tuple, W: tuple, F: tu
 
 
 @kernel
-def validate(robot: np.ndarray, marks: np.ndarray, S: tuple, W: tuple, F: tuple, vk: int, i: int,
+def validate(robot: np.ndarray, marks: np.ndarray, S: tuple, W: tuple, F: tuple, case: int, vk: int, i: int,
              degree: int) -> int:
     """v_u is known (Algorithm 6.1 lines 9–19, Algorithm 6.3 lines 14–24): the loop marker on e, back to v_k over
     e, the candidates searched for v_k'; then e/e' joined, the robot at v_k'."""
     key = _marks_key(F[SENSED], degree)  # what v_u showed on arrival, e not yet marked
     if not drop_edge(robot, marks, 0, LOOP_MARKERS):
-        return OUT_OF_MARKERS
+        return last_edge(S, F, vk, i, degree) if _MARKS_PLACES[case] else OUT_OF_MARKERS
     move(robot, 0, PURPOSE_RETRACE)
     if fault(robot):
         return ROBOT
@@ -235,7 +249,7 @@ def iterate(robot: np.ndarray, marks: np.ndarray, S: tuple, W: tuple, F: tuple, 
     if new:
         code = arrive_new(robot, marks, S, F, case, vk, i, degree)
     else:
-        code = validate(robot, marks, S, W, F, vk, i, degree)
+        code = validate(robot, marks, S, W, F, case, vk, i, degree)
     if code == OK:  # the reference counts the iterations it records: the finished ones
         counts[ITERATIONS] += 1
         counts[NON_LOOP if new else LOOP] += 1
