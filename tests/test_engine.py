@@ -122,8 +122,8 @@ def test_the_exhaustive_search_gives_the_same_record_with_either_engine():
 def test_seeded_fault_an_engine_fault_code_is_exit_3_when_the_reference_runs_clean(monkeypatch):
     real = exhaustive.run_starts
 
-    def failing(arrays, starts, policies):
-        out = real(arrays, starts, policies)
+    def failing(arrays, starts, policies, algorithm="basic"):
+        out = real(arrays, starts, policies, algorithm)
         out[0].code = 1
         return out
 
@@ -183,7 +183,7 @@ def test_the_package_imports_and_its_kernels_run_uncompiled_without_numba():
 
 
 def test_equality_command_reports_counts_as_json(capsys):
-    assert equality_main(["--max-vertices", "3", "--max-degree", "2", "--json"]) == 0
+    assert equality_main(["--max-vertices", "3", "--max-degree", "2", "--json", "--algorithm", "basic"]) == 0
     report = json.loads(capsys.readouterr().out)
     assert report["compared"] == 18 * 4 and report["by_group"] == {"2": 18, "3": 54}
     assert equality_main(["--max-vertices", "9"]) == 2

@@ -12,13 +12,18 @@ running both (the command: :mod:`.equality`).  It is not a second definition: wh
 reference is right.
 
 What it runs (:func:`supports`): ``basic`` with the ``directional-vertex``
-lighthouse and the built-in policies.  :func:`available` says whether numba
+lighthouse and the built-in policies; the footprint searches of §6.2.1
+(:data:`FOOTPRINT_CASES`: Cases 1a, 1b, 2 and the two of Case 4, one compiled
+search with the case as a parameter, :mod:`.footprints`) with the kits their
+registrations give and the built-in edge policies.  :func:`available` says whether numba
 imports; without it every run goes through the reference, with identical
 results, and :func:`notice` is the one line said on stderr.
 
 Examples
 --------
 >>> supports("basic", None, ("nearest", "fifo", "shortest")), supports("enh1", None, ("nearest", "fifo", "shortest"))
+(True, False)
+>>> supports("case-2", None, ("lifo", "fifo", "shortest")), supports("case-2-edgeinfo", None, ("nearest", "fifo", "shortest"))
 (True, False)
 """
 
@@ -30,11 +35,16 @@ from topomark.spec.errors import InvalidInput
 
 from topomark.reference.explorers.policies import EDGE_POLICIES, HYPOTHESIS_POLICIES, PATH_POLICIES
 
-__all__ = ["available", "supports", "notice", "choose", "ENGINES"]
+__all__ = ["available", "supports", "notice", "choose", "ENGINES", "FOOTPRINT_CASES"]
 
 ENGINES = ("reference", "compiled", "auto")
 """The values of ``--engine``: the reference always; the compiled engine (numba); ``auto``, the compiled one when
 it is available and runs the algorithm, else the reference."""
+
+
+FOOTPRINT_CASES = ("case-1a", "case-1b", "case-2", "case-4", "case-4-mn")
+"""The footprint searches of §6.2.1 the engine runs (:mod:`.footprints`), each with the kit its registration
+gives (``worst-case`` takes no ``--markers``); §6.2.2's edgeINFO variants and the listings are not compiled."""
 
 
 def available() -> bool:
@@ -49,6 +59,8 @@ def available() -> bool:
 def supports(algorithm: str, lighthouse: str | None, policies: tuple[str, str, str]) -> bool:
     """Whether the engine runs ``algorithm`` with ``lighthouse`` (None: its default) and ``policies``."""
     edge, hypothesis, path = policies
+    if algorithm in FOOTPRINT_CASES:  # kit algorithms: no lighthouse; only the edge policy applies
+        return lighthouse is None and edge in EDGE_POLICIES
     return (algorithm == "basic" and lighthouse in (None, "directional-vertex") and edge in EDGE_POLICIES
             and hypothesis in HYPOTHESIS_POLICIES and path in PATH_POLICIES)
 
@@ -74,7 +86,8 @@ def choose(engine: str, algorithm: str, lighthouse: str | None, policies: tuple[
     if not supports(algorithm, lighthouse, policies):
         if engine == "compiled":
             raise InvalidInput(f"--engine compiled runs the basic algorithm with the directional-vertex lighthouse "
-                               f"and the built-in policies only, not {algorithm} with "
+                               f"and the built-in policies, and {', '.join(FOOTPRINT_CASES)} with their edge "
+                               f"policies, only, not {algorithm} with "
                                f"{lighthouse or 'its default lighthouse'} and policies {'/'.join(policies)}; "
                                "use --engine reference or auto")
         return "reference", None

@@ -20,6 +20,10 @@ The runs compared (:func:`check`):
 * seeded random worlds (:func:`random_cases`: ``random`` and ``small-world``
   generators up to a given n) from a few seeded starts, under every combination.
 
+The footprint searches of §6.2.1 (:mod:`.footprints`) are compared the same
+way, each with the kit its registration gives, under the policies that apply
+to it (:func:`combos_for`: the three edge policies; Case 4's nearest only).
+
 The command is :mod:`.equality` (``python -m topomark.reference.engine.equality``).
 """
 
@@ -42,8 +46,8 @@ from topomark.reference.explorers.policies import EDGE_POLICIES, HYPOTHESIS_POLI
 from topomark.reference.run.explore import explore
 from topomark.reference.worlds.argument import resolve_world
 
-__all__ = ["COMBOS", "Case", "Disagreement", "reference_run", "compare_case", "census_cases", "random_cases",
-           "run_cases", "FIELDS"]
+__all__ = ["COMBOS", "Case", "Disagreement", "reference_run", "combos_for", "compare_case", "census_cases",
+           "random_cases", "run_cases", "FIELDS"]
 
 COMBOS = tuple(itertools.product(EDGE_POLICIES, HYPOTHESIS_POLICIES, PATH_POLICIES))
 """Every combination (edge, hypothesis, path) of the built-in policies the engine runs."""
@@ -100,14 +104,17 @@ class _Actions:
             self.codes.append(code)
 
 
-def reference_run(world: World, start: tuple[str, int], policies: tuple[str, str, str]) -> tuple[dict, list[int]]:
-    """The reference's unchecked run of ``basic`` from ``start`` (the robot at v facing exit i, as the exhaustive
-    search starts it): the compared fields, and the action codes."""
+def reference_run(world: World, start: tuple[str, int], policies: tuple[str, str, str],
+                  algorithm: str = "basic") -> tuple[dict, list[int]]:
+    """The reference's unchecked run of ``algorithm`` from ``start`` (the robot at v facing exit i, as the
+    exhaustive search starts it; a footprint search with its registration's kit): the compared fields, and the
+    action codes."""
     v, i = start
     sink = _Actions()
+    light = "directional-vertex" if algorithm == "basic" else None
     try:
-        out = explore(world.with_start(Start(v, world.neighbour(v, i))), "basic", Policies(*policies), check=False,
-                      record=False, sink=sink, lighthouse="directional-vertex")
+        out = explore(world.with_start(Start(v, world.neighbour(v, i))), algorithm, Policies(*policies), check=False,
+                      record=False, sink=sink, lighthouse=light)
     except TopomarkError as exc:  # a fault of the explorer (Lemma 1 broken): its message is what it claimed
         return {"claimed": f"{type(exc).__name__}: {exc}", "digest": digest(sink.codes)}, sink.codes
     fields = {"claimed": out.claimed, "cost": out.cost, "by_purpose": out.by_purpose,
@@ -121,28 +128,39 @@ def _engine_fields(run: EngineRun) -> dict:
             "marker_operations": run.marker_operations, **run.counts, "digest": run.digest()}
 
 
-def compare_case(case: Case, combos: tuple = COMBOS) -> tuple[int, list[Disagreement]]:
+def combos_for(algorithm: str) -> tuple:
+    """The policy combinations compared for ``algorithm``: all of :data:`COMBOS` for ``basic``; a footprint search
+    takes the edge policy only (Case 4 none: it chooses the nearest edge whatever it is given)."""
+    if algorithm == "basic":
+        return COMBOS
+    edges = ("nearest",) if algorithm in ("case-4", "case-4-mn") else EDGE_POLICIES
+    return tuple((edge, "fifo", "shortest") for edge in edges)
+
+
+def compare_case(case: Case, combos: tuple = COMBOS, algorithm: str = "basic") -> tuple[int, list[Disagreement]]:
     """Every start of ``case`` under every policy combination: the number of pairs compared and the disagreements."""
     arrays = to_arrays(case.world)
     number = {v: k for k, v in enumerate(arrays.names)}
     found, count = [], 0
     for start in case.starts:
         for policies in combos:
-            want, codes = reference_run(case.world, start, policies)
-            run = run_logged(arrays, (number[start[0]], start[1]), policies)
+            want, codes = reference_run(case.world, start, policies, algorithm)
+            run = run_logged(arrays, (number[start[0]], start[1]), policies, algorithm=algorithm)
             got = _engine_fields(run)
             count += 1
             differ = {k: [got.get(k), want.get(k)] for k in FIELDS if got.get(k) != want.get(k)}
             if differ:
                 mine = [] if run.actions is None else run.actions.tolist()
-                found.append(_disagreement(case, start, policies, differ, mine, codes))
+                found.append(_disagreement(case, start, policies, differ, mine, codes, algorithm))
     return count, found
 
 
-def _disagreement(case: Case, start, policies, differ: dict, mine: list[int], theirs: list[int]) -> Disagreement:
+def _disagreement(case: Case, start, policies, differ: dict, mine: list[int], theirs: list[int],
+                  algorithm: str = "basic") -> Disagreement:
     step = next((k for k, (a, b) in enumerate(zip(mine, theirs)) if a != b), min(len(mine), len(theirs)))
     shown = [describe(c[step]) if step < len(c) else "nothing (the run had ended)" for c in (mine, theirs)]
-    return Disagreement(case.name, start, policies, differ, step, *shown)
+    name = case.name if algorithm == "basic" else f"{case.name} ({algorithm})"
+    return Disagreement(name, start, policies, differ, step, *shown)
 
 
 def census_cases(max_vertices: int, max_degree: int, task_worlds: int = 200) -> list[list[tuple]]:
@@ -174,9 +192,9 @@ def random_cases(count: int, max_vertices: int, seed: int, starts: int = 2) -> l
     return out
 
 
-def run_cases(job: tuple) -> dict[str, Any]:
-    """One task: ``("census", units, max_degree)`` or ``("random", text, starts)``; the counts per group and the
-    first disagreements."""
+def run_cases(job: tuple, algorithm: str = "basic") -> dict[str, Any]:
+    """One task: ``("census", units, max_degree)`` or ``("random", text, starts)``, run by ``algorithm``; the
+    counts per group and the first disagreements."""
     if job[0] == "census":
         cases: Iterator[Case] = _unit_cases(job[1], job[2])
     else:
@@ -186,7 +204,7 @@ def run_cases(job: tuple) -> dict[str, Any]:
     worlds = 0
     for case in cases:
         worlds += 1
-        count, bad = compare_case(case)
+        count, bad = compare_case(case, combos_for(algorithm), algorithm)
         counts[case.group] = counts.get(case.group, 0) + count
         found += bad
     return {"counts": counts, "worlds": worlds, "disagreements": [d.to_json() for d in found[:5]],

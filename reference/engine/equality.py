@@ -1,6 +1,8 @@
 """``python -m topomark.reference.engine.equality``: the engine's cross-check as a command (thesis §3.3).
 
-Runs :mod:`.compare`'s comparison over the census's worlds with n ≤
+Runs :mod:`.compare`'s comparison, for each ``--algorithm`` (repeatable;
+default every algorithm the engine runs: ``basic`` and the footprint searches
+of §6.2.1), over the census's worlds with n ≤
 ``--max-vertices`` and degrees ≤ ``--max-degree`` and ``--random`` seeded
 random worlds up to ``--random-max-vertices``, in ``--jobs`` processes, and
 reports the number of run pairs compared per size and the time taken.
@@ -23,10 +25,13 @@ from typing import Any, Callable
 
 from topomark.spec.errors import InvalidInput
 
-from topomark.reference.engine import available, notice
+from topomark.reference.engine import FOOTPRINT_CASES, available, notice
 from topomark.reference.engine.compare import census_cases, random_cases, run_cases
 
-__all__ = ["main", "check", "MAX_VERTICES", "MAX_RANDOM_VERTICES"]
+__all__ = ["main", "check", "ALGORITHMS", "MAX_VERTICES", "MAX_RANDOM_VERTICES"]
+
+ALGORITHMS = ("basic",) + FOOTPRINT_CASES
+"""What ``--algorithm`` takes: every algorithm the engine runs (:func:`topomark.reference.engine.supports`)."""
 
 MAX_VERTICES = 7
 """The largest ``--max-vertices``: n = 7 at degree ≤ 6 is already hours of reference runs."""
@@ -34,18 +39,23 @@ MAX_RANDOM_VERTICES = 500
 
 
 def check(max_vertices: int, max_degree: int, randoms: int = 0, random_max: int = 60, seed: int = 0, jobs: int = 1,
-          progress: Callable[[str], None] | None = None) -> dict[str, Any]:
-    """Compare the engine with the reference on every case; the report (counts, disagreements, seconds)."""
+          progress: Callable[[str], None] | None = None, algorithms: tuple[str, ...] = ("basic",)) -> dict[str, Any]:
+    """Compare the engine with the reference on every case, for each of ``algorithms``; the report (counts per
+    size and per algorithm, disagreements, seconds)."""
     t0 = time.perf_counter()
-    jobs_list: list[tuple] = [("census", units, max_degree) for units in census_cases(max_vertices, max_degree)]
-    jobs_list += [("random", text, starts) for text, starts in random_cases(randoms, random_max, seed)]
+    cases: list[tuple] = [("census", units, max_degree) for units in census_cases(max_vertices, max_degree)]
+    cases += [("random", text, starts) for text, starts in random_cases(randoms, random_max, seed)]
+    jobs_list = [(job, algorithm) for algorithm in algorithms for job in cases]
     counts: dict[str, int] = {}
+    per_algorithm: dict[str, int] = {}
     report: dict[str, Any] = {"worlds": 0, "disagreement_count": 0, "disagreements": [], "text": []}
 
-    def take(result: dict[str, Any], done: int) -> None:
+    def take(result: dict[str, Any], algorithm: str, done: int) -> None:
         for group, count in result["counts"].items():
             counts[group] = counts.get(group, 0) + count
-        report["worlds"] += result["worlds"]
+            per_algorithm[algorithm] = per_algorithm.get(algorithm, 0) + count
+        if algorithm == algorithms[0]:  # the same worlds for every algorithm
+            report["worlds"] += result["worlds"]
         report["disagreement_count"] += result["disagreement_count"]
         report["disagreements"] += result["disagreements"]
         report["text"] += result["disagreement_text"]
@@ -54,13 +64,15 @@ def check(max_vertices: int, max_degree: int, randoms: int = 0, random_max: int 
                      f"{report['disagreement_count']} disagreeing, {time.perf_counter() - t0:.0f} s")
 
     if jobs == 1:
-        for k, job in enumerate(jobs_list):
-            take(run_cases(job), k + 1)
+        for k, (job, algorithm) in enumerate(jobs_list):
+            take(run_cases(job, algorithm), algorithm, k + 1)
     else:
         with ProcessPoolExecutor(jobs) as pool:  # as each task finishes, so the progress line is current
-            for k, future in enumerate(as_completed([pool.submit(run_cases, job) for job in jobs_list])):
-                take(future.result(), k + 1)
+            futures = {pool.submit(run_cases, job, algorithm): algorithm for job, algorithm in jobs_list}
+            for k, future in enumerate(as_completed(futures)):
+                take(future.result(), futures[future], k + 1)
     report.update(compared=sum(counts.values()), by_group=dict(sorted(counts.items())),
+                  by_algorithm={a: per_algorithm.get(a, 0) for a in algorithms},
                   seconds=round(time.perf_counter() - t0, 1), disagreements=report["disagreements"][:20],
                   text=report["text"][:20])
     return report
@@ -69,6 +81,8 @@ def check(max_vertices: int, max_degree: int, randoms: int = 0, random_max: int 
 def _parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="python -m topomark.reference.engine.equality",
                                 description="Compare the compiled Algorithm 3.1 with the reference, run by run.")
+    p.add_argument("--algorithm", action="append", choices=ALGORITHMS, metavar="NAME",
+                   help=f"compare this algorithm (repeatable; default all: {', '.join(ALGORITHMS)})")
     p.add_argument("--max-vertices", type=int, default=5, help="census worlds with n <= this (default 5)")
     p.add_argument("--max-degree", type=int, default=4, help="and degrees <= this (default 4)")
     p.add_argument("--random", type=int, default=0, help="this many seeded random worlds too (default 0)")
@@ -103,12 +117,14 @@ def main(argv: list[str] | None = None) -> int:
         print(notice(uncompiled=True), file=sys.stderr)
     progress = None if args.quiet or args.json else (lambda line: print(line, file=sys.stderr, flush=True))
     report = check(args.max_vertices, min(args.max_degree, args.max_vertices - 1), args.random,
-                   args.random_max_vertices, args.seed, args.jobs, progress)
+                   args.random_max_vertices, args.seed, args.jobs, progress,
+                   tuple(dict.fromkeys(args.algorithm or ALGORITHMS)))
     if args.json:
         print(json.dumps({k: v for k, v in report.items() if k != "text"}, sort_keys=True))
     else:
         sizes = ", ".join(f"{g}: {c}" for g, c in report["by_group"].items())
-        print(f"{report['compared']} run pairs compared on {report['worlds']} worlds ({sizes}) in "
+        algorithms = ", ".join(f"{a}: {c}" for a, c in report["by_algorithm"].items())
+        print(f"{report['compared']} run pairs compared on {report['worlds']} worlds ({sizes}; {algorithms}) in "
               f"{report['seconds']} s; {report['disagreement_count']} disagree")
     if report["disagreement_count"]:
         print("topomark failed: its compiled engine and its reference disagree (its own checks disagree):",

@@ -50,7 +50,7 @@ from topomark.reference.engine.digest import PURPOSE, describe, move_code, pack_
 
 __all__ = ["make_robot", "reset", "move", "sense", "drop_vertex", "fault", "counts", "log", "CUR", "ENTRY",
            "MARKER_AT", "MARKER_HEAD", "COST", "ACTIONS", "FAULT", "FAULT_MOTION", "FAULT_KIT", "DROPS",
-           "PURPOSE_TRAVEL", "PURPOSE_NEW", "PURPOSE_VALIDATION", "PURPOSE_RETRACE", "describe"]
+           "PURPOSE_TRAVEL", "PURPOSE_NEW", "PURPOSE_VALIDATION", "PURPOSE_RETRACE", "describe", "log_action"]
 
 CUR, ENTRY, MARKER_AT, MARKER_HEAD, COST, ACTIONS, FAULT, OFFSETS, NBR, BACK, COUNTS, LOG, LOG_SIZE = range(13)
 """Header entries: the true vertex and entry, the marker's vertex (-1: not dropped) and world exit, the cost, the
@@ -104,6 +104,10 @@ def _log(robot: np.ndarray, code: int) -> None:
     if robot[ACTIONS] < robot[LOG_SIZE]:
         robot[robot[LOG] + robot[ACTIONS]] = code
     robot[ACTIONS] += 1
+
+
+log_action = _log
+"""Log one action code (a marker operation of another kit, :mod:`.marks`), as every move and drop is logged."""
 
 
 @step

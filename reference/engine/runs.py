@@ -33,6 +33,7 @@ from topomark.proofs.world_arrays import WorldArrays
 
 from topomark.reference.engine.algorithm31 import (CONFIRMED, HYPOTHESES, ITERATIONS, LOOP, NON_LOOP, OK, REJECTED,
                                                    explore, new_scratch)
+from topomark.reference.engine import footprint_runs
 from topomark.reference.engine.compiled import kernel
 from topomark.reference.engine.digest import digest
 from topomark.reference.engine.mapstate import new_map
@@ -43,7 +44,7 @@ from topomark.reference.explorers.robot import PURPOSES
 __all__ = ["EngineRun", "policy_codes", "run_starts", "run_logged", "CODE_NAMES"]
 
 CODE_NAMES = {0: "correct", 1: "e' not in U (Lemma 1, §3.4)", 2: "a self-loop or second edge (§3.1.1)",
-              3: "the robot refused a motion or a drop", 4: "the map outgrew its buffers"}
+              3: "the robot refused a motion or a drop", 4: "the map outgrew its buffers", 10: "failed", 11: "failed"}
 """Each outcome code of :mod:`.algorithm31` in words."""
 
 
@@ -113,8 +114,12 @@ def _run_all(robot: np.ndarray, starts: np.ndarray, edge: int, hypothesis: int, 
         counts[s, 16] = robot[COST]
 
 
-def run_starts(arrays: WorldArrays, starts: list[tuple[int, int]], policies: tuple[str, str, str]) -> list[EngineRun]:
-    """Every start of ``starts`` on the world of ``arrays``, in one compiled call."""
+def run_starts(arrays: WorldArrays, starts: list[tuple[int, int]], policies: tuple[str, str, str],
+               algorithm: str = "basic") -> list[EngineRun]:
+    """Every start of ``starts`` on the world of ``arrays``, in one compiled call (``algorithm``: ``basic``, or a
+    footprint search of §6.2.1, :mod:`.footprint_runs`)."""
+    if algorithm != "basic":
+        return [EngineRun(*row) for row in footprint_runs.rows(algorithm, arrays, starts, policies)]
     if not starts:
         return []
     vcap, dcap, ucap = _sizes(arrays)
@@ -128,8 +133,10 @@ def run_starts(arrays: WorldArrays, starts: list[tuple[int, int]], policies: tup
 
 
 def run_logged(arrays: WorldArrays, start: tuple[int, int], policies: tuple[str, str, str],
-               log_size: int = 4096) -> EngineRun:
+               log_size: int = 4096, algorithm: str = "basic") -> EngineRun:
     """One start, its actions kept (the log grows until every action fits)."""
+    if algorithm != "basic":
+        return EngineRun(*footprint_runs.logged(algorithm, arrays, start, policies, log_size))
     vcap, dcap, ucap = _sizes(arrays)
     while True:
         robot = make_robot(arrays, start[0], start[1], log_size)
