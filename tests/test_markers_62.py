@@ -215,12 +215,15 @@ def test_the_extensions_of_case_3b_take_no_edge_policy(name, capsys):
     assert "takes no edge policy" in capsys.readouterr().err
 
 
-def test_closest_first_is_what_keeps_extension_2_s_places_marked():
-    """Why the extensions fix the edge policy: run with ``fifo`` instead of closest-first, extension-2 reaches a
-    place with no marked edge and the checker's I-1 stops it (the policy the registry no longer lets through)."""
+def test_closest_first_is_what_keeps_extension_2_s_places_marked(monkeypatch):
+    """Why the extensions fix the edge policy (rule (1)): a policy given is ignored, and with closest-first replaced
+    by ``fifo`` inside the explorer, extension-2 reaches a place with no marked edge and the checker's I-1 stops it."""
     from topomark.reference.explorers.policies import Policies
+    from topomark.reference.explorers.saving_markers import SavingEdgeCounts
 
     world = generate("lattice", rows=3, cols=3)
     assert explore(world, "extension-2").outcome == "correct"
-    run = explore(world, "extension-2", policies=Policies(edge="fifo"))
+    assert explore(world, "extension-2", policies=Policies(edge="fifo")).outcome == "correct"  # ignored
+    monkeypatch.setattr(SavingEdgeCounts, "edge_policy", Policies(edge="fifo"))
+    run = explore(world, "extension-2")
     assert run.violation is not None and "I-1" in str(run.violation)

@@ -56,6 +56,7 @@ from topomark.spec.kit import MarkerOp
 from topomark.spec.mapstate import MapDart
 from topomark.spec.signature import Signature, signature_at
 
+from topomark.reference.explorers.closest_first import NEAREST
 from topomark.reference.explorers.marker_walk import MarkerStep, MarkerWalk
 
 __all__ = ["SavingEdgeCounts", "ListingSavingEdgeCounts", "MarkFirstEdges", "ceil_half"]
@@ -70,6 +71,7 @@ class SavingEdgeCounts(MarkerWalk):
     """Extension-2, Algorithm 6.6: Σ_{k=1}^{⌈(n−1)/2⌉} k directional E-markers, O(m)."""
 
     name = "extension-2"
+    edge_policy = NEAREST  # rule (1) of §6.2.2: closest first, whatever edge policy was given
     come_back = True  # rule (3), lines 19-20; False is the naive extension that fails (§6.2.2, Figure 6.15(b)-(c))
     literal = False  # True: lines 19-20 as listed, back to an unmarked v_k after every loop edge
 
