@@ -38,6 +38,7 @@ from topomark.spec.world import Start, World
 
 from topomark.reference.engine.digest import describe, digest, event_code
 from topomark.reference.engine.runs import EngineRun, run_logged
+from topomark.reference.explorers.lighthouses import LIGHTHOUSES
 from topomark.reference.explorers.policies import EDGE_POLICIES, HYPOTHESIS_POLICIES, PATH_POLICIES, Policies
 from topomark.reference.run.explore import explore
 from topomark.reference.worlds.argument import resolve_world
@@ -100,14 +101,15 @@ class _Actions:
             self.codes.append(code)
 
 
-def reference_run(world: World, start: tuple[str, int], policies: tuple[str, str, str]) -> tuple[dict, list[int]]:
-    """The reference's unchecked run of ``basic`` from ``start`` (the robot at v facing exit i, as the exhaustive
-    search starts it): the compared fields, and the action codes."""
+def reference_run(world: World, start: tuple[str, int], policies: tuple[str, str, str],
+                  lighthouse: str | None = None) -> tuple[dict, list[int]]:
+    """The reference's unchecked run of ``basic`` with ``lighthouse`` (None: ``directional-vertex``) from ``start``
+    (the robot at v facing exit i, as the exhaustive search starts it): the compared fields, and the action codes."""
     v, i = start
     sink = _Actions()
     try:
         out = explore(world.with_start(Start(v, world.neighbour(v, i))), "basic", Policies(*policies), check=False,
-                      record=False, sink=sink, lighthouse="directional-vertex")
+                      record=False, sink=sink, lighthouse=lighthouse or "directional-vertex")
     except TopomarkError as exc:  # a fault of the explorer (Lemma 1 broken): its message is what it claimed
         return {"claimed": f"{type(exc).__name__}: {exc}", "digest": digest(sink.codes)}, sink.codes
     fields = {"claimed": out.claimed, "cost": out.cost, "by_purpose": out.by_purpose,
@@ -121,15 +123,17 @@ def _engine_fields(run: EngineRun) -> dict:
             "marker_operations": run.marker_operations, **run.counts, "digest": run.digest()}
 
 
-def compare_case(case: Case, combos: tuple = COMBOS) -> tuple[int, list[Disagreement]]:
-    """Every start of ``case`` under every policy combination: the number of pairs compared and the disagreements."""
+def compare_case(case: Case, combos: tuple = COMBOS, lighthouse: str | None = None) -> tuple[int, list[Disagreement]]:
+    """Every start of ``case`` the lighthouse can start from (its ``min_degree``) under every policy combination:
+    the number of pairs compared and the disagreements."""
     arrays = to_arrays(case.world)
     number = {v: k for k, v in enumerate(arrays.names)}
+    least = LIGHTHOUSES[lighthouse or "directional-vertex"].min_degree
     found, count = [], 0
-    for start in case.starts:
+    for start in (s for s in case.starts if case.world.degree(s[0]) >= least):
         for policies in combos:
-            want, codes = reference_run(case.world, start, policies)
-            run = run_logged(arrays, (number[start[0]], start[1]), policies)
+            want, codes = reference_run(case.world, start, policies, lighthouse)
+            run = run_logged(arrays, (number[start[0]], start[1]), policies, lighthouse)
             got = _engine_fields(run)
             count += 1
             differ = {k: [got.get(k), want.get(k)] for k in FIELDS if got.get(k) != want.get(k)}
@@ -143,6 +147,11 @@ def _disagreement(case: Case, start, policies, differ: dict, mine: list[int], th
     step = next((k for k, (a, b) in enumerate(zip(mine, theirs)) if a != b), min(len(mine), len(theirs)))
     shown = [describe(c[step]) if step < len(c) else "nothing (the run had ended)" for c in (mine, theirs)]
     return Disagreement(case.name, start, policies, differ, step, *shown)
+
+
+def _lighthouse(job: tuple) -> str | None:
+    """The lighthouse a task names (its last item; None: Algorithm 3.1's own)."""
+    return job[3] if len(job) > 3 else None
 
 
 def census_cases(max_vertices: int, max_degree: int, task_worlds: int = 200) -> list[list[tuple]]:
@@ -175,8 +184,8 @@ def random_cases(count: int, max_vertices: int, seed: int, starts: int = 2) -> l
 
 
 def run_cases(job: tuple) -> dict[str, Any]:
-    """One task: ``("census", units, max_degree)`` or ``("random", text, starts)``; the counts per group and the
-    first disagreements."""
+    """One task: ``("census", units, max_degree[, lighthouse])`` or ``("random", text, starts[, lighthouse])``; the
+    counts per group and the first disagreements."""
     if job[0] == "census":
         cases: Iterator[Case] = _unit_cases(job[1], job[2])
     else:
@@ -186,7 +195,7 @@ def run_cases(job: tuple) -> dict[str, Any]:
     worlds = 0
     for case in cases:
         worlds += 1
-        count, bad = compare_case(case)
+        count, bad = compare_case(case, lighthouse=_lighthouse(job))
         counts[case.group] = counts.get(case.group, 0) + count
         found += bad
     return {"counts": counts, "worlds": worlds, "disagreements": [d.to_json() for d in found[:5]],
