@@ -122,8 +122,8 @@ def test_the_exhaustive_search_gives_the_same_record_with_either_engine():
 def test_seeded_fault_an_engine_fault_code_is_exit_3_when_the_reference_runs_clean(monkeypatch):
     real = exhaustive.run_starts
 
-    def failing(arrays, starts, policies):
-        out = real(arrays, starts, policies)
+    def failing(arrays, starts, policies, lighthouse=None):
+        out = real(arrays, starts, policies, lighthouse)
         out[0].code = 1
         return out
 
@@ -136,8 +136,8 @@ def test_choose_the_engine():
     basic = ("basic", None, ("nearest", "fifo", "shortest"))
     assert choose("reference", *basic) == ("reference", None)
     assert choose("auto", "enh1", None, basic[2]) == ("reference", None)
-    assert choose("auto", "basic", "directional-edge", basic[2]) == ("reference", None)
-    with pytest.raises(InvalidInput, match="--engine compiled runs the basic algorithm"):
+    assert choose("auto", "basic", "undirected-vertex", basic[2]) == ("reference", None)
+    with pytest.raises(InvalidInput, match="--engine compiled runs basic with the"):
         choose("compiled", "enh1", None, basic[2])
     assert choose("auto", *basic) == (("compiled", None) if engine.available() else ("reference", NOTICE))
 
@@ -158,7 +158,7 @@ def test_without_numba_auto_falls_back_to_the_reference_with_a_notice(monkeypatc
 
 @pytest.mark.parametrize("argv, message", [
     (["--engine", "fast"], "invalid choice"),
-    (["--engine", "compiled", "--algorithm", "enh1"], "--engine compiled runs the basic algorithm"),
+    (["--engine", "compiled", "--algorithm", "enh1"], "--engine compiled runs basic with the"),
     (["--engine", "reference", "--search"], "--engine is an option of the exhaustive search"),
 ])
 def test_bad_engine_options_are_exit_2(argv, message, capsys):

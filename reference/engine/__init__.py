@@ -11,14 +11,16 @@ counts and trace digest (:mod:`.digest`), which :mod:`.compare` establishes by
 running both (the command: :mod:`.equality`).  It is not a second definition: where they differ, the
 reference is right.
 
-What it runs (:func:`supports`): ``basic`` with the ``directional-vertex``
-lighthouse and the built-in policies.  :func:`available` says whether numba
+What it runs (:func:`supports`): ``basic`` with the built-in policies and any
+deterministic lighthouse recognised without probing (:mod:`.lighthouses`:
+``directional-vertex``, ``directional-edge``, ``vertex-and-edge``,
+``three-undirected-edge``, ``thread``).  :func:`available` says whether numba
 imports; without it every run goes through the reference, with identical
 results, and :func:`notice` is the one line said on stderr.
 
 Examples
 --------
->>> supports("basic", None, ("nearest", "fifo", "shortest")), supports("enh1", None, ("nearest", "fifo", "shortest"))
+>>> supports("basic", "thread", ("nearest", "fifo", "shortest")), supports("basic", "undirected-vertex", ("nearest", "fifo", "shortest"))
 (True, False)
 """
 
@@ -30,7 +32,13 @@ from topomark.spec.errors import InvalidInput
 
 from topomark.reference.explorers.policies import EDGE_POLICIES, HYPOTHESIS_POLICIES, PATH_POLICIES
 
-__all__ = ["available", "supports", "notice", "choose", "ENGINES"]
+__all__ = ["available", "supports", "notice", "choose", "ENGINES", "ENGINE_ALGORITHMS", "ENGINE_LIGHTHOUSES"]
+
+ENGINE_ALGORITHMS = ("basic", "enh1", "enh2")
+"""The algorithms the engine runs (their registered names)."""
+ENGINE_LIGHTHOUSES = ("directional-vertex", "directional-edge", "vertex-and-edge", "three-undirected-edge", "thread")
+"""The lighthouses the engine runs: the deterministic ones whose v0 is recognised without probing
+(:mod:`.lighthouses`)."""
 
 ENGINES = ("reference", "compiled", "auto")
 """The values of ``--engine``: the reference always; the compiled engine (numba); ``auto``, the compiled one when
@@ -49,8 +57,8 @@ def available() -> bool:
 def supports(algorithm: str, lighthouse: str | None, policies: tuple[str, str, str]) -> bool:
     """Whether the engine runs ``algorithm`` with ``lighthouse`` (None: its default) and ``policies``."""
     edge, hypothesis, path = policies
-    return (algorithm == "basic" and lighthouse in (None, "directional-vertex") and edge in EDGE_POLICIES
-            and hypothesis in HYPOTHESIS_POLICIES and path in PATH_POLICIES)
+    return (algorithm in ENGINE_ALGORITHMS and (lighthouse is None or lighthouse in ENGINE_LIGHTHOUSES)
+            and edge in EDGE_POLICIES and hypothesis in HYPOTHESIS_POLICIES and path in PATH_POLICIES)
 
 
 def notice(uncompiled: bool = False) -> str:
@@ -73,8 +81,9 @@ def choose(engine: str, algorithm: str, lighthouse: str | None, policies: tuple[
         return "reference", None
     if not supports(algorithm, lighthouse, policies):
         if engine == "compiled":
-            raise InvalidInput(f"--engine compiled runs the basic algorithm with the directional-vertex lighthouse "
-                               f"and the built-in policies only, not {algorithm} with "
+            raise InvalidInput(f"--engine compiled runs {', '.join(ENGINE_ALGORITHMS)} with the "
+                               f"{', '.join(ENGINE_LIGHTHOUSES)} lighthouses and the built-in policies only, not "
+                               f"{algorithm} with "
                                f"{lighthouse or 'its default lighthouse'} and policies {'/'.join(policies)}; "
                                "use --engine reference or auto")
         return "reference", None

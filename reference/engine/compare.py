@@ -102,13 +102,13 @@ class _Actions:
 
 
 def reference_run(world: World, start: tuple[str, int], policies: tuple[str, str, str],
-                  lighthouse: str | None = None) -> tuple[dict, list[int]]:
-    """The reference's unchecked run of ``basic`` with ``lighthouse`` (None: ``directional-vertex``) from ``start``
+                  lighthouse: str | None = None, algorithm: str = "basic") -> tuple[dict, list[int]]:
+    """The reference's unchecked run of ``algorithm`` with ``lighthouse`` (None: ``directional-vertex``) from ``start``
     (the robot at v facing exit i, as the exhaustive search starts it): the compared fields, and the action codes."""
     v, i = start
     sink = _Actions()
     try:
-        out = explore(world.with_start(Start(v, world.neighbour(v, i))), "basic", Policies(*policies), check=False,
+        out = explore(world.with_start(Start(v, world.neighbour(v, i))), algorithm, Policies(*policies), check=False,
                       record=False, sink=sink, lighthouse=lighthouse or "directional-vertex")
     except TopomarkError as exc:  # a fault of the explorer (Lemma 1 broken): its message is what it claimed
         return {"claimed": f"{type(exc).__name__}: {exc}", "digest": digest(sink.codes)}, sink.codes
@@ -123,7 +123,8 @@ def _engine_fields(run: EngineRun) -> dict:
             "marker_operations": run.marker_operations, **run.counts, "digest": run.digest()}
 
 
-def compare_case(case: Case, combos: tuple = COMBOS, lighthouse: str | None = None) -> tuple[int, list[Disagreement]]:
+def compare_case(case: Case, combos: tuple = COMBOS, lighthouse: str | None = None,
+                 algorithm: str = "basic") -> tuple[int, list[Disagreement]]:
     """Every start of ``case`` the lighthouse can start from (its ``min_degree``) under every policy combination:
     the number of pairs compared and the disagreements."""
     arrays = to_arrays(case.world)
@@ -132,8 +133,8 @@ def compare_case(case: Case, combos: tuple = COMBOS, lighthouse: str | None = No
     found, count = [], 0
     for start in (s for s in case.starts if case.world.degree(s[0]) >= least):
         for policies in combos:
-            want, codes = reference_run(case.world, start, policies, lighthouse)
-            run = run_logged(arrays, (number[start[0]], start[1]), policies, lighthouse)
+            want, codes = reference_run(case.world, start, policies, lighthouse, algorithm)
+            run = run_logged(arrays, (number[start[0]], start[1]), policies, lighthouse, algorithm)
             got = _engine_fields(run)
             count += 1
             differ = {k: [got.get(k), want.get(k)] for k in FIELDS if got.get(k) != want.get(k)}
@@ -149,9 +150,10 @@ def _disagreement(case: Case, start, policies, differ: dict, mine: list[int], th
     return Disagreement(case.name, start, policies, differ, step, *shown)
 
 
-def _lighthouse(job: tuple) -> str | None:
-    """The lighthouse a task names (its last item; None: Algorithm 3.1's own)."""
-    return job[3] if len(job) > 3 else None
+def _variant(job: tuple) -> tuple[str, str | None]:
+    """The algorithm and lighthouse a task names (its items after the third; default ``basic`` with Algorithm 3.1's
+    own lighthouse)."""
+    return (job[3] if len(job) > 3 else "basic"), (job[4] if len(job) > 4 else None)
 
 
 def census_cases(max_vertices: int, max_degree: int, task_worlds: int = 200) -> list[list[tuple]]:
@@ -184,8 +186,8 @@ def random_cases(count: int, max_vertices: int, seed: int, starts: int = 2) -> l
 
 
 def run_cases(job: tuple) -> dict[str, Any]:
-    """One task: ``("census", units, max_degree[, lighthouse])`` or ``("random", text, starts[, lighthouse])``; the
-    counts per group and the first disagreements."""
+    """One task: ``("census", units, max_degree[, algorithm, lighthouse])`` or ``("random", text, starts[, algorithm,
+    lighthouse])``; the counts per group and the first disagreements."""
     if job[0] == "census":
         cases: Iterator[Case] = _unit_cases(job[1], job[2])
     else:
@@ -195,7 +197,7 @@ def run_cases(job: tuple) -> dict[str, Any]:
     worlds = 0
     for case in cases:
         worlds += 1
-        count, bad = compare_case(case, lighthouse=_lighthouse(job))
+        count, bad = compare_case(case, lighthouse=_variant(job)[1], algorithm=_variant(job)[0])
         counts[case.group] = counts.get(case.group, 0) + count
         found += bad
     return {"counts": counts, "worlds": worlds, "disagreements": [d.to_json() for d in found[:5]],

@@ -1,6 +1,7 @@
 """``python -m topomark.reference.engine.equality``: the engine's cross-check as a command (thesis §3.3).
 
-Runs :mod:`.compare`'s comparison over the census's worlds with n ≤
+Runs :mod:`.compare`'s comparison of ``--algorithm`` with ``--lighthouse``
+(default ``basic`` with ``directional-vertex``) over the census's worlds with n ≤
 ``--max-vertices`` and degrees ≤ ``--max-degree`` and ``--random`` seeded
 random worlds up to ``--random-max-vertices``, in ``--jobs`` processes, and
 reports the number of run pairs compared per size and the time taken.
@@ -23,7 +24,7 @@ from typing import Any, Callable
 
 from topomark.spec.errors import InvalidInput
 
-from topomark.reference.engine import available, notice
+from topomark.reference.engine import ENGINE_ALGORITHMS, ENGINE_LIGHTHOUSES, available, notice
 from topomark.reference.engine.compare import census_cases, random_cases, run_cases
 
 __all__ = ["main", "check", "MAX_VERTICES", "MAX_RANDOM_VERTICES"]
@@ -34,11 +35,14 @@ MAX_RANDOM_VERTICES = 500
 
 
 def check(max_vertices: int, max_degree: int, randoms: int = 0, random_max: int = 60, seed: int = 0, jobs: int = 1,
-          progress: Callable[[str], None] | None = None) -> dict[str, Any]:
+          progress: Callable[[str], None] | None = None, algorithm: str = "basic",
+          lighthouse: str = "directional-vertex") -> dict[str, Any]:
     """Compare the engine with the reference on every case; the report (counts, disagreements, seconds)."""
     t0 = time.perf_counter()
-    jobs_list: list[tuple] = [("census", units, max_degree) for units in census_cases(max_vertices, max_degree)]
-    jobs_list += [("random", text, starts) for text, starts in random_cases(randoms, random_max, seed)]
+    variant = (algorithm, lighthouse)
+    jobs_list: list[tuple] = [("census", units, max_degree, *variant)
+                              for units in census_cases(max_vertices, max_degree)]
+    jobs_list += [("random", text, starts, *variant) for text, starts in random_cases(randoms, random_max, seed)]
     counts: dict[str, int] = {}
     report: dict[str, Any] = {"worlds": 0, "disagreement_count": 0, "disagreements": [], "text": []}
 
@@ -60,7 +64,7 @@ def check(max_vertices: int, max_degree: int, randoms: int = 0, random_max: int 
         with ProcessPoolExecutor(jobs) as pool:  # as each task finishes, so the progress line is current
             for k, future in enumerate(as_completed([pool.submit(run_cases, job) for job in jobs_list])):
                 take(future.result(), k + 1)
-    report.update(compared=sum(counts.values()), by_group=dict(sorted(counts.items())),
+    report.update(algorithm=algorithm, lighthouse=lighthouse, compared=sum(counts.values()), by_group=dict(sorted(counts.items())),
                   seconds=round(time.perf_counter() - t0, 1), disagreements=report["disagreements"][:20],
                   text=report["text"][:20])
     return report
@@ -69,6 +73,10 @@ def check(max_vertices: int, max_degree: int, randoms: int = 0, random_max: int 
 def _parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="python -m topomark.reference.engine.equality",
                                 description="Compare the compiled Algorithm 3.1 with the reference, run by run.")
+    p.add_argument("--algorithm", choices=ENGINE_ALGORITHMS, default="basic",
+                   help="the algorithm compared (default basic)")
+    p.add_argument("--lighthouse", choices=ENGINE_LIGHTHOUSES, default="directional-vertex",
+                   help="its lighthouse (default directional-vertex)")
     p.add_argument("--max-vertices", type=int, default=5, help="census worlds with n <= this (default 5)")
     p.add_argument("--max-degree", type=int, default=4, help="and degrees <= this (default 4)")
     p.add_argument("--random", type=int, default=0, help="this many seeded random worlds too (default 0)")
@@ -103,12 +111,12 @@ def main(argv: list[str] | None = None) -> int:
         print(notice(uncompiled=True), file=sys.stderr)
     progress = None if args.quiet or args.json else (lambda line: print(line, file=sys.stderr, flush=True))
     report = check(args.max_vertices, min(args.max_degree, args.max_vertices - 1), args.random,
-                   args.random_max_vertices, args.seed, args.jobs, progress)
+                   args.random_max_vertices, args.seed, args.jobs, progress, args.algorithm, args.lighthouse)
     if args.json:
         print(json.dumps({k: v for k, v in report.items() if k != "text"}, sort_keys=True))
     else:
         sizes = ", ".join(f"{g}: {c}" for g, c in report["by_group"].items())
-        print(f"{report['compared']} run pairs compared on {report['worlds']} worlds ({sizes}) in "
+        print(f"{args.algorithm} with {args.lighthouse}: {report['compared']} run pairs compared on {report['worlds']} worlds ({sizes}) in "
               f"{report['seconds']} s; {report['disagreement_count']} disagree")
     if report["disagreement_count"]:
         print("topomark failed: its compiled engine and its reference disagree (its own checks disagree):",

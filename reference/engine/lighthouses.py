@@ -45,6 +45,7 @@ import numpy as np
 
 from topomark.spec.kit import MarkerOp
 
+from topomark.reference.engine import ENGINE_LIGHTHOUSES
 from topomark.reference.engine.algorithm31 import OK, ROBOT, iterate
 from topomark.reference.engine.compiled import kernel
 from topomark.reference.engine.digest import op_code
@@ -54,8 +55,6 @@ from topomark.reference.explorers.lighthouses import LIGHTHOUSES
 
 __all__ = ["ENGINE_LIGHTHOUSES", "script", "operations", "establish", "explore_lighthouse"]
 
-ENGINE_LIGHTHOUSES = ("directional-vertex", "directional-edge", "vertex-and-edge", "three-undirected-edge", "thread")
-"""The lighthouses the engine runs: the deterministic ones recognised without probing."""
 
 
 def _row(item) -> list[int]:

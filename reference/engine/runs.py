@@ -35,6 +35,7 @@ from topomark.reference.engine.algorithm31 import (CONFIRMED, HYPOTHESES, ITERAT
                                                    new_scratch)
 from topomark.reference.engine.compiled import kernel
 from topomark.reference.engine.digest import digest
+from topomark.reference.engine.enhanced import TECHNIQUES, explore_enhanced, new_enhanced
 from topomark.reference.engine.lighthouses import explore_lighthouse, script
 from topomark.reference.engine.mapstate import new_map
 from topomark.reference.engine.robot import ACTIONS, COST, COUNTS, DROPS, LEAVES, TIES, log, make_robot, reset
@@ -120,10 +121,34 @@ def _run_all(robot: np.ndarray, starts: np.ndarray, rows: np.ndarray, edge: int,
         counts[s, 16] = robot[COST]
 
 
+@kernel
+def _run_enhanced(robot: np.ndarray, starts: np.ndarray, rows: np.ndarray, techniques: int, edge: int, hypothesis: int,
+                  path: int, vcap: int, dcap: int, ucap: int, codes: np.ndarray, counts: np.ndarray,
+                  tallies: np.ndarray) -> None:
+    S, W = new_map(vcap, dcap, ucap), new_scratch(vcap, ucap)
+    T, X = new_enhanced(vcap, ucap)
+    for s in range(starts.shape[0]):
+        reset(robot, starts[s, 0], starts[s, 1])
+        codes[s] = explore_enhanced(robot, S, W, T, X, rows, techniques, edge, hypothesis, path, tallies[s])
+        counts[s, :16] = robot[robot[COUNTS]:robot[COUNTS] + 16]
+        counts[s, 16] = robot[COST]
+
+
+def _run(robot: np.ndarray, starts: np.ndarray, algorithm: str, lighthouse: str | None, policies: tuple[str, str, str],
+         sizes: tuple[int, int, int], codes: np.ndarray, counts: np.ndarray, tallies: np.ndarray) -> None:
+    """Every start of ``starts`` by ``algorithm``'s kernel (``basic``, or a composition of :mod:`.enhanced`)."""
+    if algorithm == "basic":
+        _run_all(robot, starts, script(lighthouse), *policy_codes(policies), *sizes, codes, counts, tallies)
+    else:
+        _run_enhanced(robot, starts, script(lighthouse), TECHNIQUES[algorithm], *policy_codes(policies), *sizes,
+                      codes, counts, tallies)
+
+
 def run_starts(arrays: WorldArrays, starts: list[tuple[int, int]], policies: tuple[str, str, str],
-               lighthouse: str | None = None) -> list[EngineRun]:
-    """Every start of ``starts`` on the world of ``arrays``, in one compiled call, with ``lighthouse`` (None:
-    Algorithm 3.1's directional vertex marker; :data:`~.lighthouses.ENGINE_LIGHTHOUSES`)."""
+               lighthouse: str | None = None, algorithm: str = "basic") -> list[EngineRun]:
+    """Every start of ``starts`` on the world of ``arrays``, in one compiled call, by ``algorithm``
+    (:data:`~topomark.reference.engine.ENGINE_ALGORITHMS`) with ``lighthouse`` (None: Algorithm 3.1's directional
+    vertex marker; :data:`~topomark.reference.engine.ENGINE_LIGHTHOUSES`)."""
     if not starts:
         return []
     vcap, dcap, ucap = _sizes(arrays)
@@ -131,21 +156,21 @@ def run_starts(arrays: WorldArrays, starts: list[tuple[int, int]], policies: tup
     codes = np.zeros(len(starts), dtype=np.int64)
     counts = np.zeros((len(starts), 17), dtype=np.int64)
     tallies = np.zeros((len(starts), 8), dtype=np.int64)
-    _run_all(robot, np.array(starts, dtype=np.int64).reshape(-1, 2), script(lighthouse), *policy_codes(policies), vcap,
-             dcap, ucap, codes, counts, tallies)
+    _run(robot, np.array(starts, dtype=np.int64).reshape(-1, 2), algorithm, lighthouse, policies, (vcap, dcap, ucap),
+         codes, counts, tallies)
     return [EngineRun(c, k, t) for c, k, t in zip(codes.tolist(), counts.tolist(), tallies.tolist())]
 
 
 def run_logged(arrays: WorldArrays, start: tuple[int, int], policies: tuple[str, str, str],
-               lighthouse: str | None = None, log_size: int = 4096) -> EngineRun:
+               lighthouse: str | None = None, algorithm: str = "basic", log_size: int = 4096) -> EngineRun:
     """One start, its actions kept (the log grows until every action fits)."""
     vcap, dcap, ucap = _sizes(arrays)
     while True:
         robot = make_robot(arrays, start[0], start[1], log_size)
         codes, counts = np.zeros(1, dtype=np.int64), np.zeros((1, 17), dtype=np.int64)
         tallies = np.zeros((1, 8), dtype=np.int64)
-        _run_all(robot, np.array([start], dtype=np.int64), script(lighthouse), *policy_codes(policies), vcap, dcap,
-                 ucap, codes, counts, tallies)
+        _run(robot, np.array([start], dtype=np.int64), algorithm, lighthouse, policies, (vcap, dcap, ucap), codes,
+             counts, tallies)
         kept = log(robot)
         if int(robot[ACTIONS]) <= log_size:
             return EngineRun(int(codes[0]), counts[0].tolist(), tallies[0].tolist(), kept.copy())

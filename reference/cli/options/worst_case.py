@@ -38,7 +38,8 @@ def register(sub) -> None:
     p.add_argument("--seed", type=seed, default=0, help="seed of the checked sample and of --search (default 0)")
     p.add_argument("--engine", choices=fact("engines"), default="auto",
                    help="what runs the exhaustive search's unchecked runs: reference, compiled (numba; basic with the "
-                        "directional-vertex lighthouse and the built-in policies), or auto (default: compiled when "
+                        "built-in policies and a lighthouse recognised without probing: directional-vertex, "
+                        "directional-edge, vertex-and-edge, three-undirected-edge or thread), or auto (default: compiled when "
                         "numba is installed and it runs the algorithm, else reference); every checked re-run is the "
                         "reference's")
     p.add_argument("--cross-check", action="store_true",
