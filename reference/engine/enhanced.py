@@ -41,27 +41,33 @@ from topomark.reference.engine.lighthouses import establish
 from topomark.reference.engine.mapstate import (DCAP, LIMIT, PE, PV, ULEN, add_vertex, bfs, known_signature,
                                                 mark_as_sensed, start_map, u_pop)
 from topomark.reference.engine.robot import PURPOSE_NEW, PURPOSE_RETRACE, PURPOSE_VALIDATION, fault, sense
+from topomark.reference.engine.records import (R_AT, R_CODE, R_DEGREE, R_FULL, R_META, clear_records, graft,
+                                               migrate, new_records, record_child, record_trie)
 from topomark.reference.engine.trie import (AT, CODE, DEGREE, FULL, META, MOTION, OFFSET, PARENT, find_child, forward,
                                             goto, new_trie, path_to, start_trie)
 
 __all__ = ["STAGE1", "STAGE2", "TRACE_S", "TECHNIQUES", "new_enhanced", "motion_sequences", "contradicted", "choose",
            "attempt", "validate_on_trie", "iterate_enhanced", "explore_enhanced"]
 
-STAGE1, STAGE2, TRACE_S = 1, 2, 4
-TECHNIQUES = {"enh1": STAGE1 | STAGE2, "enh2": STAGE2 | TRACE_S}
-"""Each compiled composition's techniques (:mod:`~topomark.reference.explorers.compositions`)."""
-MOT, EDEG, ECODE, H_OFF, H_ARR, REM, SX, SE, HERE = range(9)
+STAGE1, STAGE2, TRACE_S, TRACE_T = 1, 2, 4, 8
+TECHNIQUES = {"enh1": STAGE1 | STAGE2, "enh2": STAGE2 | TRACE_S, "enh3": STAGE2 | TRACE_S | TRACE_T}
+"""Each compiled composition's techniques (:mod:`~topomark.reference.explorers.compositions`); ``TRACE_T``:
+tracing continues into T, which records every executed path after the join (Enhancement-3)."""
+MOT, EDEG, ECODE, H_OFF, H_ARR, REM, SX, SE, HERE, RL, POOL_REC, POOL_NEXT = range(12)
 
 
 @kernel
-def new_enhanced(vcap: int, ucap: int) -> tuple:
-    """The trie and the buffers of M, P^E and the remaining hypotheses, with room for every hypothesis's path."""
+def new_enhanced(vcap: int, dcap: int, ucap: int, records: bool) -> tuple:
+    """The trie, the buffers of M, P^E and the remaining hypotheses, with room for every hypothesis's path, and
+    the store T (:mod:`.records`) when ``records`` (Enhancement-3)."""
     room = ucap * (vcap + 1) + 1
-    return new_trie(room), (np.zeros(room, dtype=np.int64), np.zeros(room, dtype=np.int64),
+    rooms = min(16 * room, 1 << 21) if records else 1
+    return new_trie(room), new_records(rooms, vcap * dcap if records else 1, max(room, rooms)), (np.zeros(room, dtype=np.int64), np.zeros(room, dtype=np.int64),
                             np.zeros(room, dtype=np.int64), np.zeros(ucap + 1, dtype=np.int64),
                             np.zeros(ucap, dtype=np.int64), np.zeros(ucap, dtype=np.int64),
                             np.zeros(room, dtype=np.int64), np.zeros(room, dtype=np.int64),
-                            np.zeros(vcap + 2, dtype=np.int64))
+                            np.zeros(vcap + 2, dtype=np.int64), np.zeros(room, dtype=np.int64),
+                            np.zeros(4 * room, dtype=np.int64), np.zeros(4 * room, dtype=np.int64))
 
 
 @kernel
@@ -87,9 +93,11 @@ def motion_sequences(S: tuple, W: tuple, X: tuple, nh: int) -> None:
 
 
 @kernel
-def contradicted(S: tuple, T: tuple, X: tuple, k: int, techniques: int, vk: int, i: int, hv: int, he: int) -> bool:
+def contradicted(S: tuple, T: tuple, X: tuple, R: tuple, k: int, techniques: int, vk: int, i: int, hv: int,
+                 he: int) -> bool:
     """Whether the trie rejects h' = (hv, he) (index ``k``) without motion: stage 1 (an executed path overlapping
-    M senses other than P^E) or tracing on S (a place an executed path maps onto reads otherwise)."""
+    M senses other than P^E) or tracing on S (a place an executed path maps onto reads otherwise) and T (a
+    record it reaches beyond an unexplored dart reads otherwise)."""
     n, off, length = T[META][0], X[H_OFF][k], X[H_OFF][k + 1] - X[H_OFF][k]
     if techniques & STAGE1:
         node = 0
@@ -100,24 +108,53 @@ def contradicted(S: tuple, T: tuple, X: tuple, k: int, techniques: int, vk: int,
             if T[DEGREE][node] != X[EDEG][off + s] or T[CODE][node] != X[ECODE][off + s]:
                 return True
     if techniques & TRACE_S:
-        dcap, sx, se = S[5][DCAP], X[SX], X[SE]
-        sx[0], se[0] = hv, he
-        for node in range(1, n):
-            p = T[PARENT][node]
-            sx[node] = -1
-            if sx[p] < 0:
-                continue
+        return _traced(S, T, X, R, techniques, vk, i, hv, he)
+    return False
+
+
+@kernel
+def _traced(S: tuple, T: tuple, X: tuple, R: tuple, techniques: int, vk: int, i: int, hv: int, he: int) -> bool:
+    """Algorithm 4.2 lines 16–20 (with ``TRACE_T``, 4.3 lines 16–24): every trie node in the order added, its
+    parent's state carried by its motion — the map dart reached (``X[SX]``, ``X[SE]``; -1 past an unexplored
+    dart) and the records of T reached (a list from ``X[RL]``); True at the first place or record that reads
+    otherwise than the node's perception."""
+    dcap, sx, se, rl, pool, nxt = S[5][DCAP], X[SX], X[SE], X[RL], X[POOL_REC], X[POOL_NEXT]
+    sx[0], se[0], rl[0] = hv, he, -1
+    used = 0
+    for node in range(1, T[META][0]):
+        p, m = T[PARENT][node], T[MOTION][node]
+        sx[node], rl[node] = -1, -1
+        if sx[p] >= 0:
             x = sx[p]
-            t = (se[p] + T[MOTION][node]) % S[0][x]
+            t = (se[p] + m) % S[0][x]
             y, y_entry = S[1][x * dcap + t], S[2][x * dcap + t]
-            if y < 0 and x == hv and t == he:
-                y, y_entry = vk, i
-            elif y < 0 and x == vk and t == i:
-                y, y_entry = hv, he
+            if y < 0:
+                if techniques & TRACE_T and R[R_AT][x * dcap + t] >= 0 and used < pool.shape[0]:
+                    pool[used], nxt[used], rl[node] = R[R_AT][x * dcap + t], -1, used
+                    used += 1
+                if x == hv and t == he:
+                    y, y_entry = vk, i
+                elif x == vk and t == i:
+                    y, y_entry = hv, he
             if y >= 0:
                 if known_signature(S, y, y_entry) != (T[DEGREE][node], T[CODE][node]):
                     return True
                 sx[node], se[node] = y, y_entry
+        r = rl[p]
+        while r >= 0:
+            c = record_child(R, pool[r], m)
+            if c >= 0 and used < pool.shape[0]:
+                pool[used], nxt[used], rl[node] = c, rl[node], used
+                used += 1
+            r = nxt[r]
+        if used >= pool.shape[0]:
+            T[META][FULL] = 1
+            return False
+        r = rl[node]
+        while r >= 0:
+            if R[R_DEGREE][pool[r]] != T[DEGREE][node] or R[R_CODE][pool[r]] != T[CODE][node]:
+                return True
+            r = nxt[r]
     return False
 
 
@@ -159,13 +196,13 @@ def attempt(robot: np.ndarray, T: tuple, X: tuple, k: int, start: int) -> bool:
 
 
 @kernel
-def _reject(S: tuple, T: tuple, W: tuple, X: tuple, remaining: int, techniques: int, vk: int, i: int,
+def _reject(S: tuple, T: tuple, W: tuple, X: tuple, R: tuple, remaining: int, techniques: int, vk: int, i: int,
             counts: np.ndarray) -> int:
     """Reject without motion the remaining hypotheses the trie contradicts, the others keeping their order."""
     kept = 0
     for r in range(remaining):
         k = X[REM][r]
-        if contradicted(S, T, X, k, techniques, vk, i, W[H_V][k], W[H_E][k]):
+        if contradicted(S, T, X, R, k, techniques, vk, i, W[H_V][k], W[H_E][k]):
             counts[REJECTED] += 1
         else:
             X[REM][kept] = k
@@ -174,16 +211,18 @@ def _reject(S: tuple, T: tuple, W: tuple, X: tuple, remaining: int, techniques: 
 
 
 @kernel
-def validate_on_trie(robot: np.ndarray, S: tuple, W: tuple, T: tuple, X: tuple, nh: int, degree: int, marks: int,
-                     vk: int, i: int, techniques: int, counts: np.ndarray) -> int:
-    """Lines 8–20 on the trie: returns the confirmed hypothesis's index (the robot at v0) or -1 (the robot back
-    at v_u, its heading counted from e in the trie's offset)."""
+def validate_on_trie(robot: np.ndarray, S: tuple, W: tuple, T: tuple, X: tuple, R: tuple, nh: int, vk: int, i: int,
+                     techniques: int, counts: np.ndarray) -> int:
+    """Lines 8–20 on the trie (started at v_u; with T, what T records beyond e grafted): returns the confirmed
+    hypothesis's index (the robot at v0) or -1 (the robot back at v_u, its heading counted from e in the trie's
+    offset)."""
     counts[HYPOTHESES] += nh
-    start_trie(T, degree, marks)
     motion_sequences(S, W, X, nh)
     for r in range(nh):
         X[REM][r] = W[ORDER][r]
     remaining = nh
+    if T[META][0] > 1:  # perceptions known before any motion (T's records beyond e)
+        remaining = _reject(S, T, W, X, R, remaining, techniques, vk, i, counts)
     while remaining > 0:
         r, start = choose(T, X, W, remaining, techniques)
         k = X[REM][r]
@@ -196,14 +235,26 @@ def validate_on_trie(robot: np.ndarray, S: tuple, W: tuple, T: tuple, X: tuple, 
         if fault(robot) or T[META][FULL]:
             return -1
         counts[REJECTED] += 1
-        remaining = _reject(S, T, W, X, remaining, techniques, vk, i, counts)
+        remaining = _reject(S, T, W, X, R, remaining, techniques, vk, i, counts)
     goto(robot, T, 0, PURPOSE_RETRACE)
     return -1
 
 
 @kernel
-def iterate_enhanced(robot: np.ndarray, S: tuple, W: tuple, T: tuple, X: tuple, techniques: int, edge_policy: int,
-                     hypothesis_policy: int, path_policy: int, counts: np.ndarray) -> int:
+def _joined(S: tuple, T: tuple, R: tuple, techniques: int, a: int, i: int, b: int, j: int, record: bool) -> None:
+    """After S is augmented by dart (a, i) joined to (b, j): with T, the records under either dart move on, and
+    (``record``) the iteration's trie is recorded from the validated (v_u, e) = (b, j) (Algorithm 4.3
+    lines 36–37)."""
+    if techniques & TRACE_T:
+        migrate(S, R, a, i)
+        migrate(S, R, b, j)
+        if record:
+            record_trie(S, R, T, b, j)
+
+
+@kernel
+def iterate_enhanced(robot: np.ndarray, S: tuple, W: tuple, T: tuple, X: tuple, R: tuple, techniques: int,
+                     edge_policy: int, hypothesis_policy: int, path_policy: int, counts: np.ndarray) -> int:
     """One pass through Algorithm 3.1's lines 5–28 with lines 8–20 on the trie (:func:`validate_on_trie`)."""
     meta = S[5]
     bfs(S, meta[PV], W[DIST], W[TOWARD], W[PARENT_V], W[PARENT_E], W[QUEUE])
@@ -220,38 +271,49 @@ def iterate_enhanced(robot: np.ndarray, S: tuple, W: tuple, T: tuple, X: tuple, 
     entry = lighthouse_entry(S, degree, marks)
     if entry >= 0:  # the marker: place and back-link at once (§3.3)
         counts[LOOP] += 1
-        return loop_augment(S, vk, i, 0, entry)
+        code = loop_augment(S, vk, i, 0, entry)
+        _joined(S, T, R, techniques, vk, i, 0, entry, False)
+        return LIMIT if R[R_META][R_FULL] else code
+    start_trie(T, degree, marks)
+    if techniques & TRACE_T:
+        graft(R, T, vk * S[5][DCAP] + i)
     nh = hypotheses(S, W, vk, degree, marks, path_policy, hypothesis_policy)
-    k = validate_on_trie(robot, S, W, T, X, nh, degree, marks, vk, i, techniques, counts)  # lines 8-20
+    k = validate_on_trie(robot, S, W, T, X, R, nh, vk, i, techniques, counts)  # lines 8-20
     if fault(robot):
         return ROBOT
-    if T[META][FULL]:
+    if T[META][FULL] or R[R_META][R_FULL]:
         return LIMIT
     if k >= 0:  # lines 22-25
         counts[LOOP] += 1
         code = loop_augment(S, vk, i, W[H_V][k], W[H_E][k])
         meta[PV], meta[PE] = 0, X[H_ARR][k]
-        return code
-    counts[NON_LOOP] += 1  # lines 26-28
-    u = add_vertex(S, vk, i, degree)
-    if u < 0:
-        return LIMIT
-    mark_as_sensed(S, u, marks)
-    meta[PV], meta[PE] = u, T[META][OFFSET]
-    return OK
+        _joined(S, T, R, techniques, vk, i, W[H_V][k], W[H_E][k], True)
+    else:
+        counts[NON_LOOP] += 1  # lines 26-28
+        u = add_vertex(S, vk, i, degree)
+        if u < 0:
+            return LIMIT
+        mark_as_sensed(S, u, marks)
+        meta[PV], meta[PE] = u, T[META][OFFSET]
+        code = OK
+        _joined(S, T, R, techniques, vk, i, u, 0, True)
+    return LIMIT if R[R_META][R_FULL] else code
 
 
 @kernel
-def explore_enhanced(robot: np.ndarray, S: tuple, W: tuple, T: tuple, X: tuple, rows: np.ndarray, techniques: int,
-                     edge_policy: int, hypothesis_policy: int, path_policy: int, counts: np.ndarray) -> int:
+def explore_enhanced(robot: np.ndarray, S: tuple, W: tuple, T: tuple, X: tuple, R: tuple, rows: np.ndarray,
+                     techniques: int, edge_policy: int, hypothesis_policy: int, path_policy: int,
+                     counts: np.ndarray) -> int:
     """The composition ``techniques`` from the robot's start with the lighthouse of ``rows`` (lines 1–3 as
-    :func:`~.lighthouses.explore_lighthouse`), iterating until U is empty; an outcome code."""
+    :func:`~.lighthouses.explore_lighthouse`; T = ∅), iterating until U is empty; an outcome code."""
     counts[:] = 0
+    clear_records(R)
     degree = sense(robot)[0]
     establish(robot, rows)
     if fault(robot):
         return ROBOT
     code = start_map(S, degree, sense(robot)[1])
     while code == OK and S[5][ULEN] > 0:
-        code = iterate_enhanced(robot, S, W, T, X, techniques, edge_policy, hypothesis_policy, path_policy, counts)
+        code = iterate_enhanced(robot, S, W, T, X, R, techniques, edge_policy, hypothesis_policy, path_policy,
+                                counts)
     return code

@@ -35,7 +35,7 @@ from topomark.reference.engine.algorithm31 import (CONFIRMED, HYPOTHESES, ITERAT
                                                    new_scratch)
 from topomark.reference.engine.compiled import kernel
 from topomark.reference.engine.digest import digest
-from topomark.reference.engine.enhanced import TECHNIQUES, explore_enhanced, new_enhanced
+from topomark.reference.engine.enhanced import TECHNIQUES, TRACE_T, explore_enhanced, new_enhanced
 from topomark.reference.engine.lighthouses import explore_lighthouse, script
 from topomark.reference.engine.mapstate import new_map
 from topomark.reference.engine.robot import ACTIONS, COST, COUNTS, DROPS, LEAVES, TIES, log, make_robot, reset
@@ -126,10 +126,10 @@ def _run_enhanced(robot: np.ndarray, starts: np.ndarray, rows: np.ndarray, techn
                   path: int, vcap: int, dcap: int, ucap: int, codes: np.ndarray, counts: np.ndarray,
                   tallies: np.ndarray) -> None:
     S, W = new_map(vcap, dcap, ucap), new_scratch(vcap, ucap)
-    T, X = new_enhanced(vcap, ucap)
+    T, R, X = new_enhanced(vcap, dcap, ucap, techniques & TRACE_T != 0)
     for s in range(starts.shape[0]):
         reset(robot, starts[s, 0], starts[s, 1])
-        codes[s] = explore_enhanced(robot, S, W, T, X, rows, techniques, edge, hypothesis, path, tallies[s])
+        codes[s] = explore_enhanced(robot, S, W, T, X, R, rows, techniques, edge, hypothesis, path, tallies[s])
         counts[s, :16] = robot[robot[COUNTS]:robot[COUNTS] + 16]
         counts[s, 16] = robot[COST]
 
