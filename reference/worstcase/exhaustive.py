@@ -126,7 +126,7 @@ def unchecked_runs(setup: Setup, world: World, darts: list[tuple[str, int]]) -> 
     number = {v: k for k, v in enumerate(world.vertices)}
     usable = [d for d in darts if world.degree(d[0]) >= light.min_degree]
     runs = iter(run_starts(to_arrays(world), [(number[v], i) for v, i in usable], setup.policies,
-                           setup.lighthouse))
+                           setup.lighthouse, setup.algorithm))
     out = [next(runs) if world.degree(d[0]) >= light.min_degree else None for d in darts]
     for dart, run in zip(darts, out):
         if run is not None and run.claimed != "correct":
