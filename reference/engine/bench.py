@@ -44,9 +44,7 @@ from topomark.reference.run.explore import explore
 __all__ = ["bench", "first_call", "main"]
 
 _FIRST_CALL = ("import time; t = time.perf_counter()\n"
-               "from topomark.reference.engine import ENGINE_ALGORITHMS, ENGINE_LIGHTHOUSES
-from topomark.reference.engine.runs import run_starts
-from topomark.reference.explorers.lighthouses import LIGHTHOUSES\n"
+               "from topomark.reference.engine.runs import run_starts\n"
                "from topomark.proofs.world_arrays import to_arrays\n"
                "from topomark.reference.worlds.generators import cycle\n"
                "run_starts(to_arrays(cycle(3)), [(0, 0)], ('nearest', 'fifo', 'shortest'))\n"
