@@ -1,8 +1,10 @@
 """The compiled Algorithm 3.1: the loop of lines 5–28, for unchecked runs (thesis §3.3, §3.4).
 
 The engine's counterpart of
-:class:`~topomark.reference.explorers.algorithm31.LighthouseExplorer` with the
-``directional-vertex`` lighthouse and every built-in policy
+:class:`~topomark.reference.explorers.algorithm31.LighthouseExplorer` with
+every built-in policy and the ``directional-vertex`` lighthouse (:func:`explore`;
+:mod:`.lighthouses` establishes the others, whose marks the map records as
+codes, :mod:`.signature`)
 (:mod:`~topomark.reference.explorers.policies`: edge ``nearest|fifo|lifo``,
 hypothesis ``fifo|lifo|shortest``, path ``shortest|dfs``), making the same
 choices in the same order, so that a run does the very same actions
