@@ -88,7 +88,8 @@ def test_seeded_fault_a_swapped_tie_break_is_caught_with_the_first_differing_act
 def test_the_wall_the_explorer_kernel_takes_no_world():
     """The compiled explorer sees only its robot: it never indexes it, takes no world arrays, imports no world."""
     import ast
-    for name in ("algorithm31.py", "mapstate.py"):
+    for name in ("algorithm31.py", "mapstate.py", "signature.py", "lighthouses.py", "trie.py", "records.py",
+                 "enhanced.py"):
         tree = ast.parse((ROOT / "reference" / "engine" / name).read_text())
         assert not _world_reads(tree), f"{name}: {_world_reads(tree)}"
     sneaky = ast.parse("def f(robot, offsets):\n    return robot[1][offsets[0]]\n")
@@ -105,8 +106,8 @@ def _world_reads(tree) -> list[str]:
             found.append("robot[...]")
         elif isinstance(node, ast.ImportFrom) and node.module and (
                 "world" in node.module or node.module.endswith("engine.robot") and {a.name for a in node.names}
-                - {"move", "sense", "drop_vertex", "fault", "PURPOSE_NEW", "PURPOSE_RETRACE", "PURPOSE_TRAVEL",
-                   "PURPOSE_VALIDATION"}):
+                - {"move", "sense", "drop_vertex", "operate", "fault", "PURPOSE_NEW", "PURPOSE_RETRACE",
+                   "PURPOSE_TRAVEL", "PURPOSE_VALIDATION", "OP_MOVE", "OP_VERTEX", "OP_EDGE", "OP_TIE", "OP_LEAVE"}):
             found.append(f"import from {node.module}")
     return found
 
@@ -122,8 +123,8 @@ def test_the_exhaustive_search_gives_the_same_record_with_either_engine():
 def test_seeded_fault_an_engine_fault_code_is_exit_3_when_the_reference_runs_clean(monkeypatch):
     real = exhaustive.run_starts
 
-    def failing(arrays, starts, policies, algorithm="basic"):
-        out = real(arrays, starts, policies, algorithm)
+    def failing(arrays, starts, policies, lighthouse=None, algorithm="basic"):
+        out = real(arrays, starts, policies, lighthouse, algorithm)
         out[0].code = 1
         return out
 
@@ -135,10 +136,10 @@ def test_seeded_fault_an_engine_fault_code_is_exit_3_when_the_reference_runs_cle
 def test_choose_the_engine():
     basic = ("basic", None, ("nearest", "fifo", "shortest"))
     assert choose("reference", *basic) == ("reference", None)
-    assert choose("auto", "enh1", None, basic[2]) == ("reference", None)
-    assert choose("auto", "basic", "directional-edge", basic[2]) == ("reference", None)
-    with pytest.raises(InvalidInput, match="--engine compiled runs the basic algorithm"):
-        choose("compiled", "enh1", None, basic[2])
+    assert choose("auto", "enh4", None, basic[2]) == ("reference", None)
+    assert choose("auto", "basic", "undirected-vertex", basic[2]) == ("reference", None)
+    with pytest.raises(InvalidInput, match="--engine compiled runs basic, enh1, enh2, enh3 with the"):
+        choose("compiled", "enh4", None, basic[2])
     assert choose("auto", *basic) == (("compiled", None) if engine.available() else ("reference", NOTICE))
 
 
@@ -158,9 +159,9 @@ def test_without_numba_auto_falls_back_to_the_reference_with_a_notice(monkeypatc
 
 @pytest.mark.parametrize("argv, message", [
     (["--engine", "fast"], "invalid choice"),
-    (["--engine", "compiled", "--algorithm", "enh1"], "--engine compiled runs the basic algorithm"),
-    (["--engine", "compiled", "--search", "--algorithm", "enh1", "--evaluations", "1"],
-     "--engine compiled runs the basic algorithm"),  # the search takes --engine too, and refuses it alike
+    (["--engine", "compiled", "--algorithm", "enh4"], "--engine compiled runs basic, enh1, enh2, enh3 with the"),
+    (["--engine", "compiled", "--search", "--algorithm", "enh4", "--evaluations", "1"],
+     "--engine compiled runs basic, enh1, enh2, enh3 with the"),  # the search takes --engine too, and refuses it alike
 ])
 def test_bad_engine_options_are_exit_2(argv, message, capsys):
     size = [] if "--search" in argv else ["--max-vertices", "3", "--max-degree", "2"]

@@ -11,17 +11,20 @@ counts and trace digest (:mod:`.digest`), which :mod:`.compare` establishes by
 running both (the command: :mod:`.equality`).  It is not a second definition: where they differ, the
 reference is right.
 
-What it runs (:func:`supports`): ``basic`` with the ``directional-vertex``
-lighthouse and the built-in policies; the footprint searches of §6.2.1
-(:data:`FOOTPRINT_CASES`: Cases 1a, 1b, 2 and the two of Case 4, one compiled
-search with the case as a parameter, :mod:`.footprints`) with the kits their
-registrations give and the built-in edge policies.  :func:`available` says whether numba
+What it runs (:func:`supports`): ``basic`` and Enhancements 1–3 (``enh1``,
+``enh2``, ``enh3``) with the built-in policies and any deterministic lighthouse
+recognised without probing (:mod:`.lighthouses`: ``directional-vertex``,
+``directional-edge``, ``vertex-and-edge``, ``three-undirected-edge``,
+``thread``); the footprint searches of §6.2.1 (:data:`FOOTPRINT_CASES`: Cases
+1a, 1b, 2 and the two of Case 4, one compiled search with the case as a
+parameter, :mod:`.footprints`) with the kits their registrations give and the
+built-in edge policies.  :func:`available` says whether numba
 imports; without it every run goes through the reference, with identical
 results, and :func:`notice` is the one line said on stderr.
 
 Examples
 --------
->>> supports("basic", None, ("nearest", "fifo", "shortest")), supports("enh1", None, ("nearest", "fifo", "shortest"))
+>>> supports("basic", "thread", ("nearest", "fifo", "shortest")), supports("basic", "undirected-vertex", ("nearest", "fifo", "shortest"))
 (True, False)
 >>> supports("case-2", None, ("lifo", "fifo", "shortest")), supports("case-2-edgeinfo", None, ("nearest", "fifo", "shortest"))
 (True, False)
@@ -35,7 +38,14 @@ from topomark.spec.errors import InvalidInput
 
 from topomark.reference.explorers.policies import EDGE_POLICIES, HYPOTHESIS_POLICIES, PATH_POLICIES
 
-__all__ = ["available", "supports", "notice", "choose", "ENGINES", "FOOTPRINT_CASES"]
+__all__ = ["available", "supports", "notice", "choose", "ENGINES", "ENGINE_ALGORITHMS", "ENGINE_LIGHTHOUSES",
+           "FOOTPRINT_CASES"]
+
+ENGINE_ALGORITHMS = ("basic", "enh1", "enh2", "enh3")
+"""The lighthouse algorithms the engine runs (their registered names)."""
+ENGINE_LIGHTHOUSES = ("directional-vertex", "directional-edge", "vertex-and-edge", "three-undirected-edge", "thread")
+"""The lighthouses the engine runs: the deterministic ones whose v0 is recognised without probing
+(:mod:`.lighthouses`)."""
 
 ENGINES = ("reference", "compiled", "auto")
 """The values of ``--engine``: the reference always; the compiled engine (numba); ``auto``, the compiled one when
@@ -61,8 +71,8 @@ def supports(algorithm: str, lighthouse: str | None, policies: tuple[str, str, s
     edge, hypothesis, path = policies
     if algorithm in FOOTPRINT_CASES:  # kit algorithms: no lighthouse; only the edge policy applies
         return lighthouse is None and edge in EDGE_POLICIES
-    return (algorithm == "basic" and lighthouse in (None, "directional-vertex") and edge in EDGE_POLICIES
-            and hypothesis in HYPOTHESIS_POLICIES and path in PATH_POLICIES)
+    return (algorithm in ENGINE_ALGORITHMS and (lighthouse is None or lighthouse in ENGINE_LIGHTHOUSES)
+            and edge in EDGE_POLICIES and hypothesis in HYPOTHESIS_POLICIES and path in PATH_POLICIES)
 
 
 def notice(uncompiled: bool = False) -> str:
@@ -85,9 +95,9 @@ def choose(engine: str, algorithm: str, lighthouse: str | None, policies: tuple[
         return "reference", None
     if not supports(algorithm, lighthouse, policies):
         if engine == "compiled":
-            raise InvalidInput(f"--engine compiled runs the basic algorithm with the directional-vertex lighthouse "
-                               f"and the built-in policies, and {', '.join(FOOTPRINT_CASES)} with their edge "
-                               f"policies, only, not {algorithm} with "
+            raise InvalidInput(f"--engine compiled runs {', '.join(ENGINE_ALGORITHMS)} with the "
+                               f"{', '.join(ENGINE_LIGHTHOUSES)} lighthouses and the built-in policies, and "
+                               f"{', '.join(FOOTPRINT_CASES)} with their edge policies, only, not {algorithm} with "
                                f"{lighthouse or 'its default lighthouse'} and policies {'/'.join(policies)}; "
                                "use --engine reference or auto")
         return "reference", None

@@ -1,8 +1,10 @@
 """The compiled Algorithm 3.1: the loop of lines 5–28, for unchecked runs (thesis §3.3, §3.4).
 
 The engine's counterpart of
-:class:`~topomark.reference.explorers.algorithm31.LighthouseExplorer` with the
-``directional-vertex`` lighthouse and every built-in policy
+:class:`~topomark.reference.explorers.algorithm31.LighthouseExplorer` with
+every built-in policy and the ``directional-vertex`` lighthouse (:func:`explore`;
+:mod:`.lighthouses` establishes the others, whose marks the map records as
+codes, :mod:`.signature`)
 (:mod:`~topomark.reference.explorers.policies`: edge ``nearest|fifo|lifo``,
 hypothesis ``fifo|lifo|shortest``, path ``shortest|dfs``), making the same
 choices in the same order, so that a run does the very same actions
@@ -36,7 +38,9 @@ import numpy as np
 
 from topomark.reference.engine.compiled import kernel, step
 from topomark.reference.engine.mapstate import (DCAP, LIMIT, NS, PE, PV, ULEN, HEAD, add_vertex, bfs, dfs_toward,
-                                                join, known_signature, neighbours, start_map, u_index, u_pop)
+                                                join, known_signature, mark_as_sensed, neighbours, start_map, u_index,
+                                                u_pop)
+from topomark.reference.engine.signature import rotate
 from topomark.reference.engine.robot import (PURPOSE_NEW, PURPOSE_RETRACE, PURPOSE_TRAVEL, PURPOSE_VALIDATION,
                                              drop_vertex, fault, move, sense)
 
@@ -100,16 +104,19 @@ def travel(robot: np.ndarray, S: tuple, W: tuple, target: int) -> None:
 
 
 @step
-def lighthouse_entry(S: tuple, degree: int, direction: int) -> int:
-    """The exit of v0 the robot entered by, if what it sensed is v0's (§3.3: the marker gives place and
-    back-link at once), else -1."""
-    if direction < 0 or degree != S[0][0]:
+def lighthouse_entry(S: tuple, degree: int, code: int) -> int:
+    """The exit of v0 the robot entered by, if what it sensed (``degree``, the marks' ``code``) is v0's from that
+    entry (§3.3: the marker gives place and back-link at once; v0's signatures from its entries differ), else -1."""
+    if code == 0 or degree != S[0][0]:
         return -1
-    return (S[5][HEAD] - direction) % degree
+    for entry in range(degree):
+        if rotate(S[5][HEAD], degree, entry) == code:
+            return entry
+    return -1
 
 
 @kernel
-def hypotheses(S: tuple, W: tuple, vk: int, degree: int, direction: int, path_policy: int, order_policy: int) -> int:
+def hypotheses(S: tuple, W: tuple, vk: int, degree: int, marks: int, path_policy: int, order_policy: int) -> int:
     """Lines 8, 10–11: H — the darts of U, in U's order, whose end is not v_k and reads what was sensed — in
     ``W[H_V]``, ``W[H_E]``, their validation lengths in ``W[H_LEN]`` and the order to test them in ``W[ORDER]``
     (``fifo`` 0, ``lifo`` 1, ``shortest`` 2: by length, ties by U's order); the tree to v0 of the path policy
@@ -118,7 +125,7 @@ def hypotheses(S: tuple, W: tuple, vk: int, degree: int, direction: int, path_po
     nh = 0
     for k in range(S[5][ULEN]):
         v = uv[k]
-        if v != vk and S[0][v] == degree and known_signature(S, v, ue[k]) == (degree, direction):
+        if v != vk and S[0][v] == degree and known_signature(S, v, ue[k]) == (degree, marks):
             h_v[nh], h_e[nh] = v, ue[k]
             nh += 1
     if nh == 0:
@@ -226,14 +233,14 @@ def iterate(robot: np.ndarray, S: tuple, W: tuple, edge_policy: int, hypothesis_
     travel(robot, S, W, vk)  # line 6
     if fault(robot):
         return ROBOT
-    degree, direction = take_exit(robot, S, vk, i, PURPOSE_NEW)  # line 7
+    degree, marks = take_exit(robot, S, vk, i, PURPOSE_NEW)  # line 7
     if fault(robot):
         return ROBOT
-    entry = lighthouse_entry(S, degree, direction)
+    entry = lighthouse_entry(S, degree, marks)
     if entry >= 0:  # the marker: place and back-link at once (§3.3)
         counts[LOOP] += 1
         return loop_augment(S, vk, i, 0, entry)
-    nh = hypotheses(S, W, vk, degree, direction, path_policy, hypothesis_policy)
+    nh = hypotheses(S, W, vk, degree, marks, path_policy, hypothesis_policy)
     k, heading, arrival = validate(robot, S, W, nh, degree, counts)  # lines 8-20
     if fault(robot):
         return ROBOT
@@ -246,6 +253,7 @@ def iterate(robot: np.ndarray, S: tuple, W: tuple, edge_policy: int, hypothesis_
     u = add_vertex(S, vk, i, degree)
     if u < 0:
         return LIMIT
+    mark_as_sensed(S, u, marks)  # the far end of a marked edge shows it (§6.1)
     meta[PV], meta[PE] = u, heading
     return OK
 

@@ -1,7 +1,7 @@
 """Runs per second of the reference and of the compiled engine on the exhaustive set (thesis §7.2).
 
 ``python -m topomark.reference.engine.bench --max-vertices 7 --max-degree 3
-[--algorithm NAME] [--reference-every K] [--json]`` enumerates every world with n = N vertices
+[--algorithm A] [--lighthouse L] [--reference-every K] [--json]`` enumerates every world with n = N vertices
 and degrees ≤ D and every start orbit (as ``topomark worst-case`` does; the
 enumeration is not timed), then times
 
@@ -38,8 +38,10 @@ from topomark.proofs.start_orbits import start_darts
 from topomark.proofs.world_arrays import to_arrays
 from topomark.spec.world import Start
 
+from topomark.reference.engine import ENGINE_LIGHTHOUSES, FOOTPRINT_CASES
 from topomark.reference.engine.equality import ALGORITHMS
 from topomark.reference.engine.runs import run_starts
+from topomark.reference.explorers.lighthouses import LIGHTHOUSES
 from topomark.reference.run.explore import explore
 
 __all__ = ["bench", "first_call", "main"]
@@ -81,31 +83,34 @@ def _best(fn, repeat: int) -> tuple[Any, float, float]:
 
 
 def bench(n: int, max_degree: int, every: int = 1, policies: tuple[str, str, str] = ("nearest", "fifo", "shortest"),
-          repeat: int = 1, algorithm: str = "basic") -> dict[str, Any]:
-    """The figures of one benchmark (module docstring)."""
-    worlds = _worlds(n, max_degree)
+          repeat: int = 1, algorithm: str = "basic", lighthouse: str | None = None) -> dict[str, Any]:
+    """The figures of one benchmark (module docstring) of ``algorithm`` with ``lighthouse`` (None: its default),
+    from the starts the lighthouse can start from."""
+    least = 0 if algorithm in FOOTPRINT_CASES else LIGHTHOUSES[lighthouse or "directional-vertex"].min_degree
+    worlds = [(w, [d for d in ds if w.degree(d[0]) >= least]) for w, ds in _worlds(n, max_degree)]
     starts = sum(len(d) for _, d in worlds)
     sample = [(w, d) for k, (w, d) in enumerate((w, d) for w, ds in worlds for d in ds) if k % every == 0]
 
     def reference() -> list[int]:
         from topomark.reference.explorers.policies import Policies
         return [explore(w.with_start(Start(d[0], w.neighbour(*d))), algorithm, Policies(*policies), check=False,
-                        record=False).cost for w, d in sample]
+                        record=False, lighthouse=lighthouse).cost for w, d in sample]
 
     def engine() -> list[int]:
         costs = []
         for world, darts in worlds:
             number = {v: k for k, v in enumerate(world.vertices)}
             costs += [r.cost for r in run_starts(to_arrays(world), [(number[v], i) for v, i in darts], policies,
-                                                 algorithm)]
+                                                 lighthouse, algorithm)]
         return costs
 
-    run_starts(to_arrays(worlds[0][0]), [(0, 0)], policies, algorithm)  # warm: load the compiled code
+    run_starts(to_arrays(worlds[0][0]), [(0, 0)], policies, lighthouse, algorithm)  # warm: load the compiled code
     ref_costs, ref_cpu, ref_wall = _best(reference, repeat)
     eng_costs, eng_cpu, eng_wall = _best(engine, repeat)
     agree = ref_costs == [eng_costs[k] for k in range(0, starts, every)]
     ref_rate, eng_rate = len(sample) / ref_cpu, starts / eng_cpu
-    return {"algorithm": algorithm, "n": n, "max_degree": max_degree, "worlds": len(worlds), "starts": starts, "reference_runs": len(sample),
+    return {"algorithm": algorithm, "lighthouse": lighthouse or "directional-vertex", "n": n,
+            "max_degree": max_degree, "worlds": len(worlds), "starts": starts, "reference_runs": len(sample),
             "reference_cpu_s": round(ref_cpu, 3), "reference_wall_s": round(ref_wall, 3),
             "reference_runs_per_cpu_s": round(ref_rate, 1), "engine_runs": starts, "engine_cpu_s": round(eng_cpu, 3),
             "engine_wall_s": round(eng_wall, 3), "engine_runs_per_cpu_s": round(eng_rate, 1),
@@ -114,9 +119,10 @@ def bench(n: int, max_degree: int, every: int = 1, policies: tuple[str, str, str
 
 def main(argv: list[str] | None = None) -> int:
     p = argparse.ArgumentParser(prog="python -m topomark.reference.engine.bench", description=__doc__.split("\n")[0])
+    p.add_argument("--algorithm", choices=ALGORITHMS, default="basic", help="what to run (default basic)")
+    p.add_argument("--lighthouse", choices=ENGINE_LIGHTHOUSES, default=None)
     p.add_argument("--max-vertices", type=int, default=7)
     p.add_argument("--max-degree", type=int, default=3)
-    p.add_argument("--algorithm", choices=ALGORITHMS, default="basic", help="what to run (default basic)")
     p.add_argument("--reference-every", type=int, default=1, help="time the reference on every K-th start")
     p.add_argument("--repeat", type=int, default=3, help="time each side this many times, keep the least")
     p.add_argument("--no-compile", action="store_true", help="skip timing the first call in fresh processes")
@@ -126,7 +132,7 @@ def main(argv: list[str] | None = None) -> int:
         print("error: --max-vertices 2..8, --max-degree >= 2, --reference-every >= 1, --repeat >= 1", file=sys.stderr)
         return 2
     report = bench(args.max_vertices, args.max_degree, args.reference_every, repeat=args.repeat,
-                   algorithm=args.algorithm)
+                   algorithm=args.algorithm, lighthouse=args.lighthouse)
     if not args.no_compile:
         report.update(compile_s=round(first_call(True), 2), cache_load_s=round(first_call(False), 2))
     print(json.dumps(report, sort_keys=True) if args.json else "\n".join(f"{k}: {v}" for k, v in report.items()))

@@ -40,8 +40,10 @@ from topomark.proofs.world_arrays import to_arrays
 from topomark.spec.errors import TopomarkError
 from topomark.spec.world import Start, World
 
+from topomark.reference.engine import FOOTPRINT_CASES
 from topomark.reference.engine.digest import describe, digest, event_code
 from topomark.reference.engine.runs import EngineRun, run_logged
+from topomark.reference.explorers.lighthouses import LIGHTHOUSES
 from topomark.reference.explorers.policies import EDGE_POLICIES, HYPOTHESIS_POLICIES, PATH_POLICIES, Policies
 from topomark.reference.run.explore import explore
 from topomark.reference.worlds.argument import resolve_world
@@ -105,13 +107,13 @@ class _Actions:
 
 
 def reference_run(world: World, start: tuple[str, int], policies: tuple[str, str, str],
-                  algorithm: str = "basic") -> tuple[dict, list[int]]:
-    """The reference's unchecked run of ``algorithm`` from ``start`` (the robot at v facing exit i, as the
-    exhaustive search starts it; a footprint search with its registration's kit): the compared fields, and the
-    action codes."""
+                  lighthouse: str | None = None, algorithm: str = "basic") -> tuple[dict, list[int]]:
+    """The reference's unchecked run of ``algorithm`` with ``lighthouse`` (None: ``directional-vertex``; a footprint
+    search uses none, and runs with its registration's kit) from ``start`` (the robot at v facing exit i, as the
+    exhaustive search starts it): the compared fields, and the action codes."""
     v, i = start
     sink = _Actions()
-    light = "directional-vertex" if algorithm == "basic" else None
+    light = None if algorithm in FOOTPRINT_CASES else lighthouse or "directional-vertex"
     try:
         out = explore(world.with_start(Start(v, world.neighbour(v, i))), algorithm, Policies(*policies), check=False,
                       record=False, sink=sink, lighthouse=light)
@@ -129,23 +131,26 @@ def _engine_fields(run: EngineRun) -> dict:
 
 
 def combos_for(algorithm: str) -> tuple:
-    """The policy combinations compared for ``algorithm``: all of :data:`COMBOS` for ``basic``; a footprint search
-    takes the edge policy only (Case 4 none: it chooses the nearest edge whatever it is given)."""
-    if algorithm == "basic":
+    """The policy combinations compared for ``algorithm``: all of :data:`COMBOS` for a lighthouse algorithm; a
+    footprint search takes the edge policy only (Case 4 none: it chooses the nearest edge whatever it is given)."""
+    if algorithm not in FOOTPRINT_CASES:
         return COMBOS
     edges = ("nearest",) if algorithm in ("case-4", "case-4-mn") else EDGE_POLICIES
     return tuple((edge, "fifo", "shortest") for edge in edges)
 
 
-def compare_case(case: Case, combos: tuple = COMBOS, algorithm: str = "basic") -> tuple[int, list[Disagreement]]:
-    """Every start of ``case`` under every policy combination: the number of pairs compared and the disagreements."""
+def compare_case(case: Case, combos: tuple = COMBOS, lighthouse: str | None = None,
+                 algorithm: str = "basic") -> tuple[int, list[Disagreement]]:
+    """Every start of ``case`` the lighthouse can start from (its ``min_degree``; a footprint search: every start)
+    under every policy combination: the number of pairs compared and the disagreements."""
     arrays = to_arrays(case.world)
     number = {v: k for k, v in enumerate(arrays.names)}
+    least = 0 if algorithm in FOOTPRINT_CASES else LIGHTHOUSES[lighthouse or "directional-vertex"].min_degree
     found, count = [], 0
-    for start in case.starts:
+    for start in (s for s in case.starts if case.world.degree(s[0]) >= least):
         for policies in combos:
-            want, codes = reference_run(case.world, start, policies, algorithm)
-            run = run_logged(arrays, (number[start[0]], start[1]), policies, algorithm=algorithm)
+            want, codes = reference_run(case.world, start, policies, lighthouse, algorithm)
+            run = run_logged(arrays, (number[start[0]], start[1]), policies, lighthouse, algorithm)
             got = _engine_fields(run)
             count += 1
             differ = {k: [got.get(k), want.get(k)] for k in FIELDS if got.get(k) != want.get(k)}
@@ -159,8 +164,14 @@ def _disagreement(case: Case, start, policies, differ: dict, mine: list[int], th
                   algorithm: str = "basic") -> Disagreement:
     step = next((k for k, (a, b) in enumerate(zip(mine, theirs)) if a != b), min(len(mine), len(theirs)))
     shown = [describe(c[step]) if step < len(c) else "nothing (the run had ended)" for c in (mine, theirs)]
-    name = case.name if algorithm == "basic" else f"{case.name} ({algorithm})"
+    name = case.name if algorithm == "basic" else f"{case.name} ({algorithm})"  # which algorithm disagreed
     return Disagreement(name, start, policies, differ, step, *shown)
+
+
+def _variant(job: tuple) -> tuple[str, str | None]:
+    """The algorithm and lighthouse a task names (its items after the third; default ``basic`` with Algorithm 3.1's
+    own lighthouse)."""
+    return (job[3] if len(job) > 3 else "basic"), (job[4] if len(job) > 4 else None)
 
 
 def census_cases(max_vertices: int, max_degree: int, task_worlds: int = 200) -> list[list[tuple]]:
@@ -192,9 +203,9 @@ def random_cases(count: int, max_vertices: int, seed: int, starts: int = 2) -> l
     return out
 
 
-def run_cases(job: tuple, algorithm: str = "basic") -> dict[str, Any]:
-    """One task: ``("census", units, max_degree)`` or ``("random", text, starts)``, run by ``algorithm``; the
-    counts per group and the first disagreements."""
+def run_cases(job: tuple) -> dict[str, Any]:
+    """One task: ``("census", units, max_degree[, algorithm, lighthouse])`` or ``("random", text, starts[, algorithm,
+    lighthouse])``; the counts per group and the first disagreements."""
     if job[0] == "census":
         cases: Iterator[Case] = _unit_cases(job[1], job[2])
     else:
@@ -204,7 +215,8 @@ def run_cases(job: tuple, algorithm: str = "basic") -> dict[str, Any]:
     worlds = 0
     for case in cases:
         worlds += 1
-        count, bad = compare_case(case, combos_for(algorithm), algorithm)
+        algorithm, lighthouse = _variant(job)
+        count, bad = compare_case(case, combos_for(algorithm), lighthouse, algorithm)
         counts[case.group] = counts.get(case.group, 0) + count
         found += bad
     return {"counts": counts, "worlds": worlds, "disagreements": [d.to_json() for d in found[:5]],

@@ -1,8 +1,9 @@
 """``python -m topomark.reference.engine.equality``: the engine's cross-check as a command (thesis §3.3).
 
 Runs :mod:`.compare`'s comparison, for each ``--algorithm`` (repeatable;
-default every algorithm the engine runs: ``basic`` and the footprint searches
-of §6.2.1), over the census's worlds with n ≤
+default ``basic``; every algorithm the engine runs: :data:`ALGORITHMS`) with
+``--lighthouse`` (default ``directional-vertex``; the footprint searches of
+§6.2.1 use none), over the census's worlds with n ≤
 ``--max-vertices`` and degrees ≤ ``--max-degree`` and ``--random`` seeded
 random worlds up to ``--random-max-vertices``, in ``--jobs`` processes, and
 reports the number of run pairs compared per size and the time taken.
@@ -25,12 +26,12 @@ from typing import Any, Callable
 
 from topomark.spec.errors import InvalidInput
 
-from topomark.reference.engine import FOOTPRINT_CASES, available, notice
+from topomark.reference.engine import ENGINE_ALGORITHMS, ENGINE_LIGHTHOUSES, FOOTPRINT_CASES, available, notice
 from topomark.reference.engine.compare import census_cases, random_cases, run_cases
 
 __all__ = ["main", "check", "ALGORITHMS", "MAX_VERTICES", "MAX_RANDOM_VERTICES"]
 
-ALGORITHMS = ("basic",) + FOOTPRINT_CASES
+ALGORITHMS = ENGINE_ALGORITHMS + FOOTPRINT_CASES
 """What ``--algorithm`` takes: every algorithm the engine runs (:func:`topomark.reference.engine.supports`)."""
 
 MAX_VERTICES = 7
@@ -39,13 +40,14 @@ MAX_RANDOM_VERTICES = 500
 
 
 def check(max_vertices: int, max_degree: int, randoms: int = 0, random_max: int = 60, seed: int = 0, jobs: int = 1,
-          progress: Callable[[str], None] | None = None, algorithms: tuple[str, ...] = ("basic",)) -> dict[str, Any]:
-    """Compare the engine with the reference on every case, for each of ``algorithms``; the report (counts per
-    size and per algorithm, disagreements, seconds)."""
+          progress: Callable[[str], None] | None = None, algorithms: tuple[str, ...] = ("basic",),
+          lighthouse: str = "directional-vertex") -> dict[str, Any]:
+    """Compare the engine with the reference on every case, for each of ``algorithms`` (with ``lighthouse`` where
+    the algorithm uses one); the report (counts per size and per algorithm, disagreements, seconds)."""
     t0 = time.perf_counter()
     cases: list[tuple] = [("census", units, max_degree) for units in census_cases(max_vertices, max_degree)]
     cases += [("random", text, starts) for text, starts in random_cases(randoms, random_max, seed)]
-    jobs_list = [(job, algorithm) for algorithm in algorithms for job in cases]
+    jobs_list = [((*job, algorithm, lighthouse), algorithm) for algorithm in algorithms for job in cases]
     counts: dict[str, int] = {}
     per_algorithm: dict[str, int] = {}
     report: dict[str, Any] = {"worlds": 0, "disagreement_count": 0, "disagreements": [], "text": []}
@@ -65,14 +67,14 @@ def check(max_vertices: int, max_degree: int, randoms: int = 0, random_max: int 
 
     if jobs == 1:
         for k, (job, algorithm) in enumerate(jobs_list):
-            take(run_cases(job, algorithm), algorithm, k + 1)
+            take(run_cases(job), algorithm, k + 1)
     else:
         with ProcessPoolExecutor(jobs) as pool:  # as each task finishes, so the progress line is current
-            futures = {pool.submit(run_cases, job, algorithm): algorithm for job, algorithm in jobs_list}
+            futures = {pool.submit(run_cases, job): algorithm for job, algorithm in jobs_list}
             for k, future in enumerate(as_completed(futures)):
                 take(future.result(), futures[future], k + 1)
-    report.update(compared=sum(counts.values()), by_group=dict(sorted(counts.items())),
-                  by_algorithm={a: per_algorithm.get(a, 0) for a in algorithms},
+    report.update(algorithms=list(algorithms), lighthouse=lighthouse, compared=sum(counts.values()),
+                  by_group=dict(sorted(counts.items())), by_algorithm={a: per_algorithm.get(a, 0) for a in algorithms},
                   seconds=round(time.perf_counter() - t0, 1), disagreements=report["disagreements"][:20],
                   text=report["text"][:20])
     return report
@@ -82,7 +84,10 @@ def _parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="python -m topomark.reference.engine.equality",
                                 description="Compare the compiled Algorithm 3.1 with the reference, run by run.")
     p.add_argument("--algorithm", action="append", choices=ALGORITHMS, metavar="NAME",
-                   help=f"compare this algorithm (repeatable; default all: {', '.join(ALGORITHMS)})")
+                   help=f"compare this algorithm (repeatable; default basic; one of {', '.join(ALGORITHMS)})")
+    p.add_argument("--lighthouse", choices=ENGINE_LIGHTHOUSES, default="directional-vertex",
+                   help="the lighthouse of the lighthouse algorithms (default directional-vertex; the footprint "
+                        "searches use none)")
     p.add_argument("--max-vertices", type=int, default=5, help="census worlds with n <= this (default 5)")
     p.add_argument("--max-degree", type=int, default=4, help="and degrees <= this (default 4)")
     p.add_argument("--random", type=int, default=0, help="this many seeded random worlds too (default 0)")
@@ -118,13 +123,14 @@ def main(argv: list[str] | None = None) -> int:
     progress = None if args.quiet or args.json else (lambda line: print(line, file=sys.stderr, flush=True))
     report = check(args.max_vertices, min(args.max_degree, args.max_vertices - 1), args.random,
                    args.random_max_vertices, args.seed, args.jobs, progress,
-                   tuple(dict.fromkeys(args.algorithm or ALGORITHMS)))
+                   tuple(dict.fromkeys(args.algorithm or ["basic"])), args.lighthouse)
     if args.json:
         print(json.dumps({k: v for k, v in report.items() if k != "text"}, sort_keys=True))
     else:
         sizes = ", ".join(f"{g}: {c}" for g, c in report["by_group"].items())
         algorithms = ", ".join(f"{a}: {c}" for a, c in report["by_algorithm"].items())
-        print(f"{report['compared']} run pairs compared on {report['worlds']} worlds ({sizes}; {algorithms}) in "
+        print(f"{', '.join(report['algorithms'])} with {args.lighthouse}: {report['compared']} run pairs compared on "
+              f"{report['worlds']} worlds ({sizes}; {algorithms}) in "
               f"{report['seconds']} s; {report['disagreement_count']} disagree")
     if report["disagreement_count"]:
         print("topomark failed: its compiled engine and its reference disagree (its own checks disagree):",

@@ -2,7 +2,7 @@
 
 The engine's counterpart of :class:`~topomark.spec.mapstate.PartialMap` and
 :class:`~topomark.spec.unexplored.Unexplored`, holding exactly what the
-explorer knows: a map is a tuple ``(degree, link_v, link_e, u_v, u_e, meta)``:
+explorer knows: a map is a tuple ``(degree, link_v, link_e, u_v, u_e, meta, marks)``:
 
 * ``degree[v]`` for the ``meta[NS]`` map vertices ``0 .. NS-1`` (v0 is 0);
 * ``link_v[v * D + i]``, ``link_e[v * D + i]``: the reverse dart exit ``i`` of
@@ -12,8 +12,10 @@ explorer knows: a map is a tuple ``(degree, link_v, link_e, u_v, u_e, meta)``:
   (line 5's choice, line 25's e') so the rest keep their order, as
   :class:`~topomark.spec.unexplored.Unexplored` does;
 * ``meta``: the sizes, the believed pose (``PV``, ``PE``: map vertex and
-  entry exit) and ``HEAD``, the relative direction v0's marker showed from
-  map exit 0 when it was dropped (the lighthouse's mark, §3.3).
+  entry exit) and ``HEAD``, v0's ``marks`` (the lighthouse's, §3.3);
+* ``marks[v]``: the code (:mod:`.signature`) of the marks the robot sensed at
+  ``v`` when it joined S, counted from map exit 0 — v0's lighthouse (§3.3),
+  and the far end of a marked edge (§6.1); 0 for a place without marks.
 
 The capacities (vertices, degree, U) are buffer sizes the caller chooses; a
 map that would outgrow them stops the run with :data:`LIMIT`.  The searches
@@ -24,8 +26,8 @@ build the same trees.
 Examples
 --------
 >>> S = new_map(4, 3, 8)
->>> start_map(S, 2, 0), int(S[5][ULEN]), S[3][:2].tolist()
-(0, 2, [0, 0])
+>>> start_map(S, 2, encode(1, 0, 0)), int(S[5][ULEN]), S[3][:2].tolist(), known_signature(S, 0, 1) == (2, encode(1, 1, 0))
+(0, 2, [0, 0], True)
 >>> u_pop(S, 1); add_vertex(S, 0, 1, 3), int(S[5][ULEN]), u_index(S, 1, 2)
 (1, 3, 2)
 """
@@ -35,8 +37,9 @@ from __future__ import annotations
 import numpy as np
 
 from topomark.reference.engine.compiled import kernel, step
+from topomark.reference.engine.signature import encode, rotate
 
-__all__ = ["new_map", "start_map", "add_vertex", "join", "u_pop", "u_index", "neighbours", "known_signature",
+__all__ = ["new_map", "start_map", "add_vertex", "mark_as_sensed", "join", "u_pop", "u_index", "neighbours", "known_signature",
            "bfs", "dfs_toward", "NS", "ULEN", "PV", "PE", "DCAP", "HEAD", "VCAP", "LIMIT"]
 
 NS, ULEN, PV, PE, DCAP, HEAD, VCAP = range(7)
@@ -51,20 +54,21 @@ def new_map(vcap: int, dcap: int, ucap: int) -> tuple:
     meta[DCAP], meta[VCAP] = dcap, vcap
     return (np.zeros(vcap, dtype=np.int64), np.full(vcap * dcap, -1, dtype=np.int64),
             np.full(vcap * dcap, -1, dtype=np.int64), np.zeros(ucap, dtype=np.int64),
-            np.zeros(ucap, dtype=np.int64), meta)
+            np.zeros(ucap, dtype=np.int64), meta, np.zeros(vcap, dtype=np.int64))
 
 
 @kernel
-def start_map(S: tuple, degree: int, head: int) -> int:
-    """S = {v0} of ``degree`` with its marker's ``head``; U = its exits; believed pose (v0, 0) (lines 1–3).
-    Returns 0, or :data:`LIMIT`."""
-    deg, lv, le, uv, ue, meta = S
+def start_map(S: tuple, degree: int, code: int) -> int:
+    """S = {v0} of ``degree`` with the marks sensed there from exit 0 (``code``, the lighthouse's); U = its exits;
+    believed pose (v0, 0) (lines 1–3).  Returns 0, or :data:`LIMIT`."""
+    deg, lv, le, uv, ue, meta, marks = S
     if degree > meta[DCAP] or degree > uv.shape[0] or meta[VCAP] < 1:
         return LIMIT
     lv[:] = -1
     le[:] = -1
-    meta[NS], meta[ULEN], meta[PV], meta[PE], meta[HEAD] = 1, degree, 0, 0, head
-    deg[0] = degree
+    meta[NS], meta[ULEN], meta[PV], meta[PE], meta[HEAD] = 1, degree, 0, 0, code
+    marks[:] = 0
+    deg[0], marks[0] = degree, code
     for i in range(degree):
         uv[i], ue[i] = 0, i
     return 0
@@ -94,6 +98,12 @@ def add_vertex(S: tuple, a: int, i: int, degree: int) -> int:
         n += 1
     meta[ULEN] = n
     return u
+
+
+@step
+def mark_as_sensed(S: tuple, v: int, code: int) -> None:
+    """Record at map vertex ``v`` the marks sensed there entered by its exit 0 (a new vertex's, lines 27–28)."""
+    S[6][v] = code
 
 
 @step
@@ -128,12 +138,10 @@ def neighbours(S: tuple, v: int, w: int) -> bool:
 
 @step
 def known_signature(S: tuple, v: int, entry: int) -> tuple:
-    """What S says the robot senses at ``v`` entered by ``entry``: (degree, the marker's relative direction or
-    -1) — v0 shows its marker (recorded from exit 0 as ``HEAD``, §3.3), every other place none."""
+    """What S says the robot senses at ``v`` entered by ``entry``: (degree, the code of the marks recorded there,
+    counted from ``entry``)."""
     degree = S[0][v]
-    if v != 0:
-        return degree, -1
-    return degree, (S[5][HEAD] - entry) % degree
+    return degree, rotate(S[6][v], degree, entry)
 
 
 @kernel

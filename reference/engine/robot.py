@@ -13,10 +13,10 @@ function pays for every array it takes out of a tuple, and the robot is
 asked something at every step.  An explorer kernel is handed the array and
 passes it only to :func:`move`, :func:`sense` and :func:`drop_vertex`,
 which return what the reference robot returns, as two integers: the degree
-sensed and the relative direction of the directional marker there (§3.1.1,
-Figure 3.2: ``(head - entry) mod deg``), or -1 where there is none — the
-signature ``[deg,A,A]`` or ``[deg,V-dir,A]``, all a world with one directional
-vertex marker can show.
+sensed and the code of the marks there (:mod:`.signature`: 0 where there
+are none), counted from the entry edge (§3.1.1, Figure 3.2).  A lighthouse's
+kit is put down by :func:`operate` (vertex and edge markers, the ε thread),
+one operation at a time, as the reference robot's ``operate``.
 
 Accounting as the simulator's (§3.1.2): every traversal costs one, counted
 under its purpose; a drop costs nothing and is counted apart.  A motion that
@@ -31,10 +31,10 @@ Examples
 >>> from topomark.spec.world import World
 >>> from topomark.proofs.world_arrays import to_arrays
 >>> r = make_robot(to_arrays(World({"a": ["b", "c"], "b": ["c", "a"], "c": ["a", "b"]})), 0, 0, 8)
->>> drop_vertex(r, 0); sense(r)
-(2, 0)
->>> move(r, 1, PURPOSE_NEW), move(r, 1, PURPOSE_NEW), move(r, 1, PURPOSE_NEW)
-((2, -1), (2, -1), (2, 0))
+>>> drop_vertex(r, 0); sense(r) == (2, encode(1, 0, 0))
+True
+>>> move(r, 1, PURPOSE_NEW), move(r, 1, PURPOSE_NEW), move(r, 1, PURPOSE_NEW) == (2, encode(1, 0, 0))
+((2, 0), (2, 0), True)
 >>> int(r[COST]), [describe(int(c)) for c in log(r)[:2]]
 (3, ['drop 1 vertex marker(s) pointing at relative exit 0', 'move 1 (new)'])
 """
@@ -47,20 +47,26 @@ from topomark.proofs.world_arrays import WorldArrays
 
 from topomark.reference.engine.compiled import kernel, step
 from topomark.reference.engine.digest import PURPOSE, describe, move_code, pack_op
+from topomark.reference.engine.signature import add_edge_mark, edge_mark, encode, rotate, thread_of, with_thread
 
-__all__ = ["make_robot", "reset", "move", "sense", "drop_vertex", "fault", "counts", "log", "CUR", "ENTRY",
+__all__ = ["make_robot", "reset", "move", "sense", "drop_vertex", "operate", "fault", "counts", "log", "CUR", "ENTRY",
            "MARKER_AT", "MARKER_HEAD", "COST", "ACTIONS", "FAULT", "FAULT_MOTION", "FAULT_KIT", "DROPS",
+           "TIES", "LEAVES", "OP_MOVE", "OP_VERTEX", "OP_EDGE", "OP_TIE", "OP_LEAVE", "PURPOSE_DROP",
            "PURPOSE_TRAVEL", "PURPOSE_NEW", "PURPOSE_VALIDATION", "PURPOSE_RETRACE", "describe", "log_action"]
 
-CUR, ENTRY, MARKER_AT, MARKER_HEAD, COST, ACTIONS, FAULT, OFFSETS, NBR, BACK, COUNTS, LOG, LOG_SIZE = range(13)
-"""Header entries: the true vertex and entry, the marker's vertex (-1: not dropped) and world exit, the cost, the
-number of actions, the fault (0: none); where ``offsets``, ``nbr``, ``back``, ``counts`` and ``log`` begin, and the
-log's size."""
+CUR, ENTRY, MARKER_AT, MARKER_HEAD, COST, ACTIONS, FAULT, OFFSETS, NBR, BACK, COUNTS, LOG, LOG_SIZE, MARKS = range(14)
+"""Header entries: the true vertex and entry, the directional vertex marker's vertex (-1: not dropped) and world
+exit, the cost, the number of actions, the fault (0: none); where ``offsets``, ``nbr``, ``back``, ``counts``,
+``log`` and ``marks`` (each place's code from world exit 0, :mod:`.signature`) begin, and the log's size."""
 HEADER = 16
 FAULT_MOTION, FAULT_KIT = 1, 2
-DROPS = 15
-"""Index in ``counts`` of the marker drops (0..14: the traversals per purpose index)."""
-PURPOSE_TRAVEL, PURPOSE_NEW = PURPOSE["travel"], PURPOSE["new"]
+LEAVES, TIES, DROPS = 13, 14, 15
+"""Indices in ``counts`` of the thread's leave and tie operations and the marker drops (0..12: the traversals per
+purpose index)."""
+OP_MOVE, OP_VERTEX, OP_EDGE, OP_TIE, OP_LEAVE = range(5)
+"""The kinds of a lighthouse's script items (:func:`operate`): a drop trip's motion, a vertex marker drop, an edge
+marker drop, tying the thread, leaving its free end."""
+PURPOSE_TRAVEL, PURPOSE_NEW, PURPOSE_DROP = PURPOSE["travel"], PURPOSE["new"], PURPOSE["drop"]
 PURPOSE_VALIDATION, PURPOSE_RETRACE = PURPOSE["validation"], PURPOSE["retrace"]
 
 _move_code = step(move_code)
@@ -70,10 +76,11 @@ _pack_op = step(pack_op)
 def make_robot(arrays: WorldArrays, vertex: int, facing: int, log_size: int = 0) -> np.ndarray:
     """A robot on ``arrays`` at vertex index ``vertex``, its faced exit ``facing`` playing the entry edge
     (:meth:`~topomark.spec.world.World.start_state`), keeping the first ``log_size`` action codes."""
-    parts = (arrays.offsets, arrays.nbr, arrays.back, np.zeros(16, dtype=np.int64), np.zeros(log_size, dtype=np.int64))
+    parts = (arrays.offsets, arrays.nbr, arrays.back, np.zeros(16, dtype=np.int64), np.zeros(log_size, dtype=np.int64),
+             np.zeros(arrays.n, dtype=np.int64))
     robot = np.zeros(HEADER + sum(len(p) for p in parts), dtype=np.int64)
     at = HEADER
-    for field, part in zip((OFFSETS, NBR, BACK, COUNTS, LOG), parts):
+    for field, part in zip((OFFSETS, NBR, BACK, COUNTS, LOG, MARKS), parts):
         robot[field], robot[at:at + len(part)] = at, part
         at += len(part)
     robot[LOG_SIZE] = log_size
@@ -97,6 +104,7 @@ def reset(robot: np.ndarray, vertex: int, facing: int) -> None:
     robot[CUR], robot[ENTRY], robot[MARKER_AT], robot[MARKER_HEAD] = vertex, facing, -1, 0
     robot[COST], robot[ACTIONS], robot[FAULT] = 0, 0, 0
     robot[robot[COUNTS]:robot[COUNTS] + 16] = 0
+    robot[robot[MARKS]:robot[MARKS] + robot[NBR] - robot[OFFSETS] - 1] = 0  # n places: none marked
 
 
 @step
@@ -112,12 +120,10 @@ log_action = _log
 
 @step
 def sense(robot: np.ndarray) -> tuple:
-    """What the robot senses where it stands: (degree, the marker's relative direction or -1)."""
+    """What the robot senses where it stands: (degree, the code of the marks there from the entry edge)."""
     v = robot[CUR]
     degree = robot[robot[OFFSETS] + v + 1] - robot[robot[OFFSETS] + v]
-    if v != robot[MARKER_AT]:
-        return degree, -1
-    return degree, (robot[MARKER_HEAD] - robot[ENTRY]) % degree
+    return degree, rotate(robot[robot[MARKS] + v], degree, robot[ENTRY])
 
 
 @step
@@ -129,7 +135,7 @@ def move(robot: np.ndarray, motion: int, purpose: int) -> tuple:
     degree = robot[robot[OFFSETS] + v + 1] - first
     if motion < 0 or motion >= degree:
         robot[FAULT] = FAULT_MOTION
-        return 0, -1
+        return 0, 0
     dart = first + (robot[ENTRY] + motion) % degree
     robot[CUR], robot[ENTRY] = robot[robot[NBR] + dart], robot[robot[BACK] + dart]
     robot[COST] += 1
@@ -145,11 +151,46 @@ def drop_vertex(robot: np.ndarray, direction: int) -> None:
     if robot[MARKER_AT] >= 0:
         robot[FAULT] = FAULT_KIT
         return
-    v = robot[CUR]
+    operate(robot, OP_VERTEX, 1, direction, 0, _pack_op(0, 0, 1, 0, direction + 3))
+
+
+@kernel
+def operate(robot: np.ndarray, kind: int, a: int, b: int, c: int, code: int) -> None:
+    """One item of a lighthouse's script, relative to the entry edge, logged as ``code`` (:mod:`.digest`):
+    :data:`OP_MOVE` (motion ``a``, a drop trip's), :data:`OP_VERTEX` (``a`` vertex markers, pointing at exit
+    ``b`` or undirected: -1), :data:`OP_EDGE` (``b`` edge markers on exit ``a``, ``c`` 1: directional, its head
+    here and its tail at the far end; 0: undirected), :data:`OP_TIE` (the thread tied here toward exit ``a``),
+    :data:`OP_LEAVE` (its free end left here).  More marks than a code holds set :data:`FAULT_KIT`."""
+    if kind == OP_MOVE:
+        move(robot, a, PURPOSE_DROP)
+        return
+    v, entry, marks = robot[CUR], robot[ENTRY], robot[MARKS]
     degree = robot[robot[OFFSETS] + v + 1] - robot[robot[OFFSETS] + v]
-    robot[MARKER_AT], robot[MARKER_HEAD] = v, (robot[ENTRY] + direction) % degree
-    robot[robot[COUNTS] + DROPS] += 1
-    _log(robot, _pack_op(0, 0, 1, 0, direction + 3))
+    here = robot[marks + v]
+    if kind == OP_VERTEX:
+        head = -1 if b < 0 else (entry + b) % degree
+        if here % 4 + a > 3:
+            robot[FAULT] = FAULT_KIT
+            return
+        here = here - here % 4 - 4 * (here // 4 % 4096) + encode(here % 4 + a, head, 0)
+        if head >= 0:
+            robot[MARKER_AT], robot[MARKER_HEAD] = v, head
+    elif kind == OP_EDGE:
+        dart = robot[robot[OFFSETS] + v] + (entry + a) % degree
+        far, far_exit = robot[robot[NBR] + dart], robot[robot[BACK] + dart]
+        there = add_edge_mark(robot[marks + far], far_exit, edge_mark(b, 2 if c == 1 else 0))
+        here = add_edge_mark(here, (entry + a) % degree, edge_mark(b, c))
+        if here < 0 or there < 0:
+            robot[FAULT] = FAULT_KIT
+            return
+        robot[marks + far] = there
+    elif kind == OP_TIE:
+        here = with_thread(here, (entry + a) % degree, 0)
+    else:
+        here = with_thread(here, thread_of(here)[0], 1)
+    robot[marks + v] = here
+    robot[robot[COUNTS] + (DROPS if kind <= OP_EDGE else TIES if kind == OP_TIE else LEAVES)] += 1
+    _log(robot, code)
 
 
 @step

@@ -32,12 +32,15 @@ import numpy as np
 from topomark.proofs.world_arrays import WorldArrays
 
 from topomark.reference.engine.algorithm31 import (CONFIRMED, HYPOTHESES, ITERATIONS, LOOP, NON_LOOP, OK, REJECTED,
-                                                   explore, new_scratch)
+                                                   new_scratch)
 from topomark.reference.engine import footprint_runs
 from topomark.reference.engine.compiled import kernel
 from topomark.reference.engine.digest import digest
+from topomark.reference.engine.enhanced import TECHNIQUES, TRACE_T, explore_enhanced, new_enhanced
+from topomark.reference.engine.lighthouses import explore_lighthouse, script
 from topomark.reference.engine.mapstate import new_map
-from topomark.reference.engine.robot import ACTIONS, COST, COUNTS, DROPS, log, make_robot, reset
+from topomark.reference.engine.robot import ACTIONS, COST, COUNTS, DROPS, LEAVES, TIES, log, make_robot, reset
+from topomark.reference.engine.signature import EXITS
 from topomark.reference.explorers.policies import EDGE_POLICIES, HYPOTHESIS_POLICIES, PATH_POLICIES
 from topomark.reference.explorers.robot import PURPOSES
 
@@ -74,7 +77,9 @@ class EngineRun:
 
     @property
     def marker_operations(self) -> dict[str, int]:
-        return {"drop": self._counts[DROPS]} if self._counts[DROPS] else {}
+        """The marker and thread operations made, sorted by name (as the reference's)."""
+        made = (("drop", self._counts[DROPS]), ("leave", self._counts[LEAVES]), ("tie", self._counts[TIES]))
+        return {op: k for op, k in made if k}
 
     @property
     def counts(self) -> dict[str, int]:
@@ -100,25 +105,53 @@ def policy_codes(policies: tuple[str, str, str]) -> tuple[int, int, int]:
 def _sizes(arrays: WorldArrays) -> tuple[int, int, int]:
     """Buffer sizes: the explorer's map can need no more vertices, degree or entries of U than the world has."""
     degrees = np.diff(arrays.offsets)
-    return max(arrays.n, 1), max(int(degrees.max(initial=1)), 1), max(2 * arrays.m, 1)
+    dcap = max(int(degrees.max(initial=1)), 1)
+    if dcap >= EXITS - 1:
+        raise ValueError(f"the engine senses places of degree < {EXITS - 1}, not {dcap} (engine.signature.EXITS)")
+    return max(arrays.n, 1), dcap, max(2 * arrays.m, 1)
 
 
 @kernel
-def _run_all(robot: np.ndarray, starts: np.ndarray, edge: int, hypothesis: int, path: int, vcap: int, dcap: int, ucap: int,
-             codes: np.ndarray, counts: np.ndarray, tallies: np.ndarray) -> None:
+def _run_all(robot: np.ndarray, starts: np.ndarray, rows: np.ndarray, edge: int, hypothesis: int, path: int, vcap: int,
+             dcap: int, ucap: int, codes: np.ndarray, counts: np.ndarray, tallies: np.ndarray) -> None:
     S, W = new_map(vcap, dcap, ucap), new_scratch(vcap, ucap)
     for s in range(starts.shape[0]):
         reset(robot, starts[s, 0], starts[s, 1])
-        codes[s] = explore(robot, S, W, edge, hypothesis, path, tallies[s])
+        codes[s] = explore_lighthouse(robot, S, W, rows, edge, hypothesis, path, tallies[s])
         counts[s, :16] = robot[robot[COUNTS]:robot[COUNTS] + 16]
         counts[s, 16] = robot[COST]
 
 
+@kernel
+def _run_enhanced(robot: np.ndarray, starts: np.ndarray, rows: np.ndarray, techniques: int, edge: int, hypothesis: int,
+                  path: int, vcap: int, dcap: int, ucap: int, codes: np.ndarray, counts: np.ndarray,
+                  tallies: np.ndarray) -> None:
+    S, W = new_map(vcap, dcap, ucap), new_scratch(vcap, ucap)
+    T, R, X = new_enhanced(vcap, dcap, ucap, techniques & TRACE_T != 0)
+    for s in range(starts.shape[0]):
+        reset(robot, starts[s, 0], starts[s, 1])
+        codes[s] = explore_enhanced(robot, S, W, T, X, R, rows, techniques, edge, hypothesis, path, tallies[s])
+        counts[s, :16] = robot[robot[COUNTS]:robot[COUNTS] + 16]
+        counts[s, 16] = robot[COST]
+
+
+def _run(robot: np.ndarray, starts: np.ndarray, algorithm: str, lighthouse: str | None, policies: tuple[str, str, str],
+         sizes: tuple[int, int, int], codes: np.ndarray, counts: np.ndarray, tallies: np.ndarray) -> None:
+    """Every start of ``starts`` by ``algorithm``'s kernel (``basic``, or a composition of :mod:`.enhanced`)."""
+    if algorithm == "basic":
+        _run_all(robot, starts, script(lighthouse), *policy_codes(policies), *sizes, codes, counts, tallies)
+    else:
+        _run_enhanced(robot, starts, script(lighthouse), TECHNIQUES[algorithm], *policy_codes(policies), *sizes,
+                      codes, counts, tallies)
+
+
 def run_starts(arrays: WorldArrays, starts: list[tuple[int, int]], policies: tuple[str, str, str],
-               algorithm: str = "basic") -> list[EngineRun]:
-    """Every start of ``starts`` on the world of ``arrays``, in one compiled call (``algorithm``: ``basic``, or a
-    footprint search of §6.2.1, :mod:`.footprint_runs`)."""
-    if algorithm != "basic":
+               lighthouse: str | None = None, algorithm: str = "basic") -> list[EngineRun]:
+    """Every start of ``starts`` on the world of ``arrays``, in one compiled call, by ``algorithm``
+    (:data:`~topomark.reference.engine.ENGINE_ALGORITHMS`) with ``lighthouse`` (None: Algorithm 3.1's directional
+    vertex marker; :data:`~topomark.reference.engine.ENGINE_LIGHTHOUSES`), or a footprint search of §6.2.1
+    (:mod:`.footprint_runs`, which uses no lighthouse)."""
+    if algorithm in footprint_runs.CASES:
         return [EngineRun(*row) for row in footprint_runs.rows(algorithm, arrays, starts, policies)]
     if not starts:
         return []
@@ -127,23 +160,23 @@ def run_starts(arrays: WorldArrays, starts: list[tuple[int, int]], policies: tup
     codes = np.zeros(len(starts), dtype=np.int64)
     counts = np.zeros((len(starts), 17), dtype=np.int64)
     tallies = np.zeros((len(starts), 8), dtype=np.int64)
-    _run_all(robot, np.array(starts, dtype=np.int64).reshape(-1, 2), *policy_codes(policies), vcap, dcap, ucap,
-             codes, counts, tallies)
+    _run(robot, np.array(starts, dtype=np.int64).reshape(-1, 2), algorithm, lighthouse, policies, (vcap, dcap, ucap),
+         codes, counts, tallies)
     return [EngineRun(c, k, t) for c, k, t in zip(codes.tolist(), counts.tolist(), tallies.tolist())]
 
 
 def run_logged(arrays: WorldArrays, start: tuple[int, int], policies: tuple[str, str, str],
-               log_size: int = 4096, algorithm: str = "basic") -> EngineRun:
+               lighthouse: str | None = None, algorithm: str = "basic", log_size: int = 4096) -> EngineRun:
     """One start, its actions kept (the log grows until every action fits)."""
-    if algorithm != "basic":
+    if algorithm in footprint_runs.CASES:
         return EngineRun(*footprint_runs.logged(algorithm, arrays, start, policies, log_size))
     vcap, dcap, ucap = _sizes(arrays)
     while True:
         robot = make_robot(arrays, start[0], start[1], log_size)
         codes, counts = np.zeros(1, dtype=np.int64), np.zeros((1, 17), dtype=np.int64)
         tallies = np.zeros((1, 8), dtype=np.int64)
-        _run_all(robot, np.array([start], dtype=np.int64), *policy_codes(policies), vcap, dcap, ucap, codes, counts,
-                 tallies)
+        _run(robot, np.array([start], dtype=np.int64), algorithm, lighthouse, policies, (vcap, dcap, ucap), codes,
+             counts, tallies)
         kept = log(robot)
         if int(robot[ACTIONS]) <= log_size:
             return EngineRun(int(codes[0]), counts[0].tolist(), tallies[0].tolist(), kept.copy())

@@ -125,7 +125,8 @@ def unchecked_runs(setup: Setup, world: World, darts: list[tuple[str, int]]) -> 
     least = LIGHTHOUSES[setup.lighthouse or "directional-vertex"].min_degree if setup.spec.uses_lighthouse else 0
     number = {v: k for k, v in enumerate(world.vertices)}
     usable = [d for d in darts if world.degree(d[0]) >= least]
-    runs = iter(run_starts(to_arrays(world), [(number[v], i) for v, i in usable], setup.policies, setup.algorithm))
+    runs = iter(run_starts(to_arrays(world), [(number[v], i) for v, i in usable], setup.policies,
+                           setup.lighthouse, setup.algorithm))
     out = [next(runs) if world.degree(d[0]) >= least else None for d in darts]
     for dart, run in zip(darts, out):
         if run is not None and run.claimed != "correct":

@@ -185,7 +185,8 @@ class _Problem:
             at, entry = world.start_state()
             policies = self.policies or Policies()
             run = run_starts(to_arrays(world), [(world.vertices.index(at), entry)],
-                             (policies.edge, policies.hypothesis, policies.path), self.spec.name)[0]
+                             (policies.edge, policies.hypothesis, policies.path), lighthouse=self.lighthouse,
+                             algorithm=self.spec.name)[0]
             return run.claimed, run.cost, run.by_purpose
         out = explore(world, self.spec, lighthouse=self.lighthouse, policies=self.policies, check=False, record=False)
         return out.claimed, out.cost, out.by_purpose

@@ -37,9 +37,11 @@ def register(sub) -> None:
                    help="fraction of the runs re-run checked (default 0.001; every argmax is always re-checked)")
     p.add_argument("--seed", type=seed, default=0, help="seed of the checked sample and of --search (default 0)")
     p.add_argument("--engine", choices=fact("engines"), default="auto",
-                   help="what runs the unchecked runs of the exhaustive search and of --search: reference, compiled (numba; "
-                        "basic with the directional-vertex lighthouse and the built-in policies, and the footprint "
-                        "searches case-1a, case-1b, case-2, case-4 and case-4-mn), or auto (default: compiled when "
+                   help="what runs the unchecked runs of the exhaustive search and of --search: reference, compiled "
+                        "(numba; basic, enh1, enh2 and enh3 with the built-in policies and a lighthouse recognised "
+                        "without probing: directional-vertex, directional-edge, vertex-and-edge, three-undirected-edge "
+                        "or thread; and the footprint searches case-1a, case-1b, case-2, case-4 and case-4-mn), or "
+                        "auto (default: compiled when "
                         "numba is installed and it runs the algorithm, else reference); every checked re-run is the "
                         "reference's")
     p.add_argument("--cross-check", action="store_true",

@@ -1,0 +1,319 @@
+"""The compiled Enhancements 1 and 2: validation on the execution trie (thesis §4.1, Algorithms 4.1–4.2).
+
+The engine's counterpart of :class:`~topomark.reference.explorers.enhanced.EnhancedExplorer`
+with the compositions ``enh1`` (overlap stages 1 and 2, Algorithm 4.1) and
+``enh2`` (overlap stage 2 and the executed paths traced on S, Algorithm 4.2),
+as :mod:`~topomark.reference.explorers.compositions` registers them.  The loop
+is Algorithm 3.1's (:mod:`.algorithm31`: lines 5–7, H and its order, the two
+augmentations); lines 8–20 run on the execution trie (:mod:`.trie`):
+
+* each hypothesis h' has its motion sequence M and expected perceptions P^E
+  (:func:`motion_sequences`, the same path to v0 as Algorithm 3.1's);
+* :func:`attempt` executes M from the overlapped node the robot retraced to,
+  stopping at the first mismatch (Algorithm 4.1 lines 8–13);
+* after each mismatch, the remaining hypotheses the trie contradicts are
+  rejected without motion (:func:`contradicted`): stage 1 compares the
+  executed paths overlapping M with P^E (Algorithm 4.1 lines 16–20); tracing
+  maps every executed path onto S from h's dart, the hypothesized edge e''/e
+  included, and compares each place it maps onto (Algorithm 4.2 lines 16–20);
+* stage 2: the robot stays where the mismatch stopped it and takes next the
+  remaining hypothesis overlapping its path longest, ties in the hypothesis
+  policy's order (Algorithm 4.1 lines 15, 23–26), retracing only to the last
+  overlapped node (:func:`choose`).
+
+A technique set is an integer of :data:`STAGE1`, :data:`STAGE2` and
+:data:`TRACE_S` (:data:`TECHNIQUES` by registered name).  The reference
+rejects incrementally, tracing only the nodes added since its last check;
+:func:`contradicted` traces the whole trie each time, which rejects the same
+hypotheses: within an iteration S and the trie's old nodes do not change.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from topomark.reference.engine.algorithm31 import (CONFIRMED, DIST, H_E, H_V, HYPOTHESES, ITERATIONS, LOOP,
+                                                   NON_LOOP, OK, ORDER, PARENT_E, PARENT_V, QUEUE, REJECTED, ROBOT,
+                                                   TO_V0, TOWARD, choose_edge, hypotheses, lighthouse_entry,
+                                                   loop_augment, take_exit, travel)
+from topomark.reference.engine.compiled import kernel
+from topomark.reference.engine.lighthouses import establish
+from topomark.reference.engine.mapstate import (DCAP, LIMIT, PE, PV, ULEN, add_vertex, bfs, known_signature,
+                                                mark_as_sensed, start_map, u_pop)
+from topomark.reference.engine.robot import PURPOSE_NEW, PURPOSE_RETRACE, PURPOSE_VALIDATION, fault, sense
+from topomark.reference.engine.records import (R_AT, R_CODE, R_DEGREE, R_FULL, R_META, clear_records, graft,
+                                               migrate, new_records, record_child, record_trie)
+from topomark.reference.engine.trie import (AT, CODE, DEGREE, FULL, META, MOTION, OFFSET, PARENT, find_child, forward,
+                                            goto, new_trie, path_to, start_trie)
+
+__all__ = ["STAGE1", "STAGE2", "TRACE_S", "TECHNIQUES", "new_enhanced", "motion_sequences", "contradicted", "choose",
+           "attempt", "validate_on_trie", "iterate_enhanced", "explore_enhanced"]
+
+STAGE1, STAGE2, TRACE_S, TRACE_T = 1, 2, 4, 8
+TECHNIQUES = {"enh1": STAGE1 | STAGE2, "enh2": STAGE2 | TRACE_S, "enh3": STAGE2 | TRACE_S | TRACE_T}
+"""Each compiled composition's techniques (:mod:`~topomark.reference.explorers.compositions`); ``TRACE_T``:
+tracing continues into T, which records every executed path after the join (Enhancement-3)."""
+MOT, EDEG, ECODE, H_OFF, H_ARR, REM, SX, SE, HERE, RL, POOL_REC, POOL_NEXT = range(12)
+
+
+@kernel
+def new_enhanced(vcap: int, dcap: int, ucap: int, records: bool) -> tuple:
+    """The trie, the buffers of M, P^E and the remaining hypotheses, with room for every hypothesis's path, and
+    the store T (:mod:`.records`) when ``records`` (Enhancement-3)."""
+    room = ucap * (vcap + 1) + 1
+    rooms = min(16 * room, 1 << 21) if records else 1
+    return new_trie(room), new_records(rooms, vcap * dcap if records else 1, max(room, rooms)), (np.zeros(room, dtype=np.int64), np.zeros(room, dtype=np.int64),
+                            np.zeros(room, dtype=np.int64), np.zeros(ucap + 1, dtype=np.int64),
+                            np.zeros(ucap, dtype=np.int64), np.zeros(ucap, dtype=np.int64),
+                            np.zeros(room, dtype=np.int64), np.zeros(room, dtype=np.int64),
+                            np.zeros(vcap + 2, dtype=np.int64), np.zeros(room, dtype=np.int64),
+                            np.zeros(4 * room, dtype=np.int64), np.zeros(4 * room, dtype=np.int64))
+
+
+@kernel
+def motion_sequences(S: tuple, W: tuple, X: tuple, nh: int) -> None:
+    """Lines 11–12: each h' = (v, e)'s M and P^E along the tree to v0 (as Algorithm 3.1's walk), from
+    ``X[H_OFF][k]``, and the entry of v0 where it ends (``X[H_ARR]``)."""
+    dcap, toward = S[5][DCAP], W[TO_V0]
+    at = 0
+    for k in range(nh):
+        X[H_OFF][k] = at
+        x, entry = W[H_V][k], W[H_E][k]
+        while True:
+            exit_ = toward[x]
+            y, y_entry = S[1][x * dcap + exit_], S[2][x * dcap + exit_]
+            X[MOT][at] = (exit_ - entry) % S[0][x]
+            X[EDEG][at], X[ECODE][at] = known_signature(S, y, y_entry)
+            at += 1
+            if y == 0:
+                break
+            x, entry = y, y_entry
+        X[H_ARR][k] = y_entry
+    X[H_OFF][nh] = at
+
+
+@kernel
+def contradicted(S: tuple, T: tuple, X: tuple, R: tuple, k: int, techniques: int, vk: int, i: int, hv: int,
+                 he: int) -> bool:
+    """Whether the trie rejects h' = (hv, he) (index ``k``) without motion: stage 1 (an executed path overlapping
+    M senses other than P^E) or tracing on S (a place an executed path maps onto reads otherwise) and T (a
+    record it reaches beyond an unexplored dart reads otherwise)."""
+    n, off, length = T[META][0], X[H_OFF][k], X[H_OFF][k + 1] - X[H_OFF][k]
+    if techniques & STAGE1:
+        node = 0
+        for s in range(length):
+            node = find_child(T, node, X[MOT][off + s])
+            if node < 0:
+                break
+            if T[DEGREE][node] != X[EDEG][off + s] or T[CODE][node] != X[ECODE][off + s]:
+                return True
+    if techniques & TRACE_S:
+        return _traced(S, T, X, R, techniques, vk, i, hv, he)
+    return False
+
+
+@kernel
+def _traced(S: tuple, T: tuple, X: tuple, R: tuple, techniques: int, vk: int, i: int, hv: int, he: int) -> bool:
+    """Algorithm 4.2 lines 16–20 (with ``TRACE_T``, 4.3 lines 16–24): every trie node in the order added, its
+    parent's state carried by its motion — the map dart reached (``X[SX]``, ``X[SE]``; -1 past an unexplored
+    dart) and the records of T reached (a list from ``X[RL]``); True at the first place or record that reads
+    otherwise than the node's perception."""
+    dcap, sx, se, rl, pool, nxt = S[5][DCAP], X[SX], X[SE], X[RL], X[POOL_REC], X[POOL_NEXT]
+    sx[0], se[0], rl[0] = hv, he, -1
+    used = 0
+    for node in range(1, T[META][0]):
+        p, m = T[PARENT][node], T[MOTION][node]
+        sx[node], rl[node] = -1, -1
+        if sx[p] >= 0:
+            x = sx[p]
+            t = (se[p] + m) % S[0][x]
+            y, y_entry = S[1][x * dcap + t], S[2][x * dcap + t]
+            if y < 0:
+                if techniques & TRACE_T and R[R_AT][x * dcap + t] >= 0 and used < pool.shape[0]:
+                    pool[used], nxt[used], rl[node] = R[R_AT][x * dcap + t], -1, used
+                    used += 1
+                if x == hv and t == he:
+                    y, y_entry = vk, i
+                elif x == vk and t == i:
+                    y, y_entry = hv, he
+            if y >= 0:
+                if known_signature(S, y, y_entry) != (T[DEGREE][node], T[CODE][node]):
+                    return True
+                sx[node], se[node] = y, y_entry
+        r = rl[p]
+        while r >= 0:
+            c = record_child(R, pool[r], m)
+            if c >= 0 and used < pool.shape[0]:
+                pool[used], nxt[used], rl[node] = c, rl[node], used
+                used += 1
+            r = nxt[r]
+        if used >= pool.shape[0]:
+            T[META][FULL] = 1
+            return False
+        r = rl[node]
+        while r >= 0:
+            if R[R_DEGREE][pool[r]] != T[DEGREE][node] or R[R_CODE][pool[r]] != T[CODE][node]:
+                return True
+            r = nxt[r]
+    return False
+
+
+@kernel
+def choose(T: tuple, X: tuple, W: tuple, remaining: int, techniques: int) -> tuple:
+    """Line 10, or with stage 2 lines 23–26: the position in the remaining list of the hypothesis to execute next
+    and the depth of the overlapped node to start from."""
+    if not techniques & STAGE2:
+        return 0, 0
+    here = path_to(T, T[META][AT], X[HERE])
+    best, best_len = 0, 0
+    if here == 0:
+        return 0, 0
+    for r in range(remaining):
+        k = X[REM][r]
+        off, length = X[H_OFF][k], X[H_OFF][k + 1] - X[H_OFF][k]
+        if X[MOT][off] != X[HERE][0]:
+            continue
+        common = 0
+        while common < here and common < length and X[MOT][off + common] == X[HERE][common]:
+            common += 1
+        if common > best_len:
+            best, best_len = r, common
+    return best, best_len
+
+
+@kernel
+def attempt(robot: np.ndarray, T: tuple, X: tuple, k: int, start: int) -> bool:
+    """Lines 13–20 from the overlapped node at depth ``start`` (retracing there first): True on case (3)."""
+    goto(robot, T, start, PURPOSE_RETRACE)
+    off, length = X[H_OFF][k], X[H_OFF][k + 1] - X[H_OFF][k]
+    for s in range(start, length):
+        got = forward(robot, T, X[MOT][off + s], PURPOSE_VALIDATION)
+        if fault(robot) or T[META][FULL]:
+            return False
+        if got[0] != X[EDEG][off + s] or got[1] != X[ECODE][off + s]:
+            return False
+    return True
+
+
+@kernel
+def _reject(S: tuple, T: tuple, W: tuple, X: tuple, R: tuple, remaining: int, techniques: int, vk: int, i: int,
+            counts: np.ndarray) -> int:
+    """Reject without motion the remaining hypotheses the trie contradicts, the others keeping their order."""
+    kept = 0
+    for r in range(remaining):
+        k = X[REM][r]
+        if contradicted(S, T, X, R, k, techniques, vk, i, W[H_V][k], W[H_E][k]):
+            counts[REJECTED] += 1
+        else:
+            X[REM][kept] = k
+            kept += 1
+    return kept
+
+
+@kernel
+def validate_on_trie(robot: np.ndarray, S: tuple, W: tuple, T: tuple, X: tuple, R: tuple, nh: int, vk: int, i: int,
+                     techniques: int, counts: np.ndarray) -> int:
+    """Lines 8–20 on the trie (started at v_u; with T, what T records beyond e grafted): returns the confirmed
+    hypothesis's index (the robot at v0) or -1 (the robot back at v_u, its heading counted from e in the trie's
+    offset)."""
+    counts[HYPOTHESES] += nh
+    motion_sequences(S, W, X, nh)
+    for r in range(nh):
+        X[REM][r] = W[ORDER][r]
+    remaining = nh
+    if T[META][0] > 1:  # perceptions known before any motion (T's records beyond e)
+        remaining = _reject(S, T, W, X, R, remaining, techniques, vk, i, counts)
+    while remaining > 0:
+        r, start = choose(T, X, W, remaining, techniques)
+        k = X[REM][r]
+        for t in range(r, remaining - 1):
+            X[REM][t] = X[REM][t + 1]
+        remaining -= 1
+        if attempt(robot, T, X, k, start):
+            counts[CONFIRMED] += 1
+            return k
+        if fault(robot) or T[META][FULL]:
+            return -1
+        counts[REJECTED] += 1
+        remaining = _reject(S, T, W, X, R, remaining, techniques, vk, i, counts)
+    goto(robot, T, 0, PURPOSE_RETRACE)
+    return -1
+
+
+@kernel
+def _joined(S: tuple, T: tuple, R: tuple, techniques: int, a: int, i: int, b: int, j: int, record: bool) -> None:
+    """After S is augmented by dart (a, i) joined to (b, j): with T, the records under either dart move on, and
+    (``record``) the iteration's trie is recorded from the validated (v_u, e) = (b, j) (Algorithm 4.3
+    lines 36–37)."""
+    if techniques & TRACE_T:
+        migrate(S, R, a, i)
+        migrate(S, R, b, j)
+        if record:
+            record_trie(S, R, T, b, j)
+
+
+@kernel
+def iterate_enhanced(robot: np.ndarray, S: tuple, W: tuple, T: tuple, X: tuple, R: tuple, techniques: int,
+                     edge_policy: int, hypothesis_policy: int, path_policy: int, counts: np.ndarray) -> int:
+    """One pass through Algorithm 3.1's lines 5–28 with lines 8–20 on the trie (:func:`validate_on_trie`)."""
+    meta = S[5]
+    bfs(S, meta[PV], W[DIST], W[TOWARD], W[PARENT_V], W[PARENT_E], W[QUEUE])
+    k = choose_edge(S, edge_policy, W[DIST])  # line 5
+    vk, i = S[3][k], S[4][k]
+    u_pop(S, k)
+    counts[ITERATIONS] += 1
+    travel(robot, S, W, vk)  # line 6
+    if fault(robot):
+        return ROBOT
+    degree, marks = take_exit(robot, S, vk, i, PURPOSE_NEW)  # line 7
+    if fault(robot):
+        return ROBOT
+    entry = lighthouse_entry(S, degree, marks)
+    if entry >= 0:  # the marker: place and back-link at once (§3.3)
+        counts[LOOP] += 1
+        code = loop_augment(S, vk, i, 0, entry)
+        _joined(S, T, R, techniques, vk, i, 0, entry, False)
+        return LIMIT if R[R_META][R_FULL] else code
+    start_trie(T, degree, marks)
+    if techniques & TRACE_T:
+        graft(R, T, vk * S[5][DCAP] + i)
+    nh = hypotheses(S, W, vk, degree, marks, path_policy, hypothesis_policy)
+    k = validate_on_trie(robot, S, W, T, X, R, nh, vk, i, techniques, counts)  # lines 8-20
+    if fault(robot):
+        return ROBOT
+    if T[META][FULL] or R[R_META][R_FULL]:
+        return LIMIT
+    if k >= 0:  # lines 22-25
+        counts[LOOP] += 1
+        code = loop_augment(S, vk, i, W[H_V][k], W[H_E][k])
+        meta[PV], meta[PE] = 0, X[H_ARR][k]
+        _joined(S, T, R, techniques, vk, i, W[H_V][k], W[H_E][k], True)
+    else:
+        counts[NON_LOOP] += 1  # lines 26-28
+        u = add_vertex(S, vk, i, degree)
+        if u < 0:
+            return LIMIT
+        mark_as_sensed(S, u, marks)
+        meta[PV], meta[PE] = u, T[META][OFFSET]
+        code = OK
+        _joined(S, T, R, techniques, vk, i, u, 0, True)
+    return LIMIT if R[R_META][R_FULL] else code
+
+
+@kernel
+def explore_enhanced(robot: np.ndarray, S: tuple, W: tuple, T: tuple, X: tuple, R: tuple, rows: np.ndarray,
+                     techniques: int, edge_policy: int, hypothesis_policy: int, path_policy: int,
+                     counts: np.ndarray) -> int:
+    """The composition ``techniques`` from the robot's start with the lighthouse of ``rows`` (lines 1–3 as
+    :func:`~.lighthouses.explore_lighthouse`; T = ∅), iterating until U is empty; an outcome code."""
+    counts[:] = 0
+    clear_records(R)
+    degree = sense(robot)[0]
+    establish(robot, rows)
+    if fault(robot):
+        return ROBOT
+    code = start_map(S, degree, sense(robot)[1])
+    while code == OK and S[5][ULEN] > 0:
+        code = iterate_enhanced(robot, S, W, T, X, R, techniques, edge_policy, hypothesis_policy, path_policy,
+                                counts)
+    return code
