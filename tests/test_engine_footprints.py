@@ -29,7 +29,7 @@ def test_every_start_agrees_on_the_small_census(algorithm):
     count = 0
     for task in plan(4, 3, 2):
         for unit, _ in task:
-            result = compare.run_cases(("census", [unit], 3), algorithm)
+            result = compare.run_cases(("census", [unit], 3, algorithm, None))
             assert result["disagreement_count"] == 0, result["disagreement_text"]
             count += sum(result["counts"].values())
     assert count == len(compare.combos_for(algorithm)) * STARTS_N4_D3
@@ -38,7 +38,7 @@ def test_every_start_agrees_on_the_small_census(algorithm):
 
 def test_one_run_agrees_field_by_field_with_its_searches_and_markers():
     world = lattice(3, 3)
-    want, codes = reference_run(world, ("0,0", 0), ("lifo", "fifo", "shortest"), "case-2")
+    want, codes = reference_run(world, ("0,0", 0), ("lifo", "fifo", "shortest"), algorithm="case-2")
     run = runs.run_logged(to_arrays(world), (0, 0), ("lifo", "fifo", "shortest"), algorithm="case-2")
     assert run.actions.tolist() == codes and run.digest() == want["digest"]
     assert (run.claimed, run.cost, run.by_purpose, run.marker_operations) == (
