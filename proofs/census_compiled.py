@@ -19,7 +19,9 @@ head and every start's digest as
 ``census_map._iso_key`` does; :mod:`topomark.proofs.blake2b_compiled`); this
 module turns its digests into records.  :func:`arrays_records` takes a world
 as arrays, so an enumerator that yields arrays plugs in without building a
-:class:`~topomark.spec.world.World`.
+:class:`~topomark.spec.world.World`; :func:`batch_records`, which the census
+map runs, takes the enumeration's batches (:mod:`topomark.proofs.world_batches`)
+as they come, one compiled call per batch.
 
 Examples
 --------
