@@ -1,18 +1,20 @@
-"""A measured slice of the census at n = 8, max degree 4, on a local Dask cluster (§3.7's census).
+"""A measured slice of the census at n = 8 (or 9), max degree 4, on a local Dask cluster (§3.7's census).
 
 Speed is measured here and reported in docs/census.md ("Results past n = 7"), never asserted by a test.
 
-Plans the n = 8 map tasks exactly as ``topomark census`` does (census_map.plan, task_worlds=2000,
-min_vertices=8, default shard count for the whole n <= 8 plan), picks K tasks at random (seeded: a
+Plans the n = 8 map tasks (``--vertices 9``: n = 9) exactly as ``topomark census`` does (census_map.plan,
+task_worlds=2000, min_vertices=n, default shard count for the whole n <= N plan, at most 4,096), picks K tasks at random (seeded: a
 uniform sample of tasks ~ a uniform sample of worlds), runs them with census_map.run_map on a
 distributed.LocalCluster of 2 single-thread workers, then reduces every shard of the slice with
-census_run.reduce_shard; per task it records CPU seconds, wall, worlds, placements, records and the
+census_run.reduce_shard; each worker's start-up (the graph list, numba's kernel) is
+timed first and apart; per task it records CPU seconds, wall, worlds, placements, records and the
 worker's peak RSS, as JSON lines on standard output.
 
 Example (the figures of docs/census.md)::
 
     python -m topomark.proofs.bench_census directional-vertex 4 14 /tmp/slice-dv --engine reference
     python -m topomark.proofs.bench_census directional-vertex 4 14 /tmp/slice-dv-c --engine compiled
+    python -m topomark.proofs.bench_census directional-vertex 4 14 /tmp/slice-dv9 --vertices 9
 """
 import argparse
 import json
@@ -27,8 +29,18 @@ from topomark.proofs.census_compiled import resolve_engine, warm_up
 from topomark.proofs.census_map import plan, run_map
 from topomark.proofs.census_run import default_shards, reduce_shard
 from topomark.proofs.census_shards import RECORD, map_path
+from topomark.proofs.world_batches import graphs_of
 
-__all__ = ["timed_map", "timed_reduce", "main"]
+__all__ = ["start_up", "timed_map", "timed_reduce", "main"]
+
+
+def start_up(n, engine):
+    """A worker's start-up, timed apart from its tasks: the graph list of size n (and numba's kernel)."""
+    c0 = time.process_time()
+    graphs_of(n, 4)
+    if engine == "compiled":
+        warm_up()
+    return time.process_time() - c0
 
 
 def timed_map(root, t, cls, units, shards, engine="reference"):
@@ -42,10 +54,10 @@ def timed_map(root, t, cls, units, shards, engine="reference"):
             "rss_gb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1e6, "offsets": res["offsets"]}
 
 
-def timed_reduce(root, s, slices):
-    """census_run.reduce_shard of one shard of the slice, with its CPU time."""
+def timed_reduce(root, s, slices, n=8):
+    """census_run.reduce_shard of one shard of the slice (worlds of size n), with its CPU time."""
     c0 = time.process_time()
-    res = reduce_shard(root, s, slices, 8, 8, False)
+    res = reduce_shard(root, s, slices, n, n, False)
     return {"shard": s, "cpu": time.process_time() - c0, "ambiguous": res["ambiguous_upto"][-1],
             "rss_gb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1e6}
 
@@ -54,26 +66,28 @@ def main(argv: list[str] | None = None) -> int:
     """Plan, sample K map tasks (seeded), map them and reduce every shard on a 2-worker local Dask cluster."""
     ap = argparse.ArgumentParser(prog="python -m topomark.proofs.bench_census", description=__doc__.split("\n\n")[0])
     ap.add_argument("cls", metavar="CLASS", help="the marker class, e.g. directional-vertex")
-    ap.add_argument("k", metavar="K", type=int, help="how many n = 8 map tasks to sample")
+    ap.add_argument("k", metavar="K", type=int, help="how many map tasks of size n to sample")
     ap.add_argument("seed", metavar="SEED", type=int, help="seed of the sample")
     ap.add_argument("root", metavar="DIR", help="where the slice's shard files are written")
     ap.add_argument("--engine", default="auto", help="reference, compiled or auto (census_compiled.resolve_engine)")
+    ap.add_argument("--vertices", metavar="N", type=int, choices=(8, 9), default=8,
+                    help="the world size of the sampled tasks: 8 (default) or 9")
     args = ap.parse_args(argv)
-    cls, k, seed, root = args.cls, args.k, args.seed, args.root
+    cls, k, seed, root, n = args.cls, args.k, args.seed, args.root, args.vertices
     engine = resolve_engine(args.engine, cls, lambda line: print(line, file=sys.stderr))
     os.makedirs(root, exist_ok=True)
     t0 = time.perf_counter()
-    tasks = plan(8, 4, 8, 2000)
-    shards = default_shards(sum(e for t in plan(8, 4, 2, 2000) for _, e in t))
+    tasks = plan(n, 4, n, 2000)
+    shards = default_shards(sum(e for t in plan(n, 4, 2, 2000) for _, e in t))
     pick = sorted(random.Random(seed).sample(range(len(tasks)), k))
-    print(json.dumps({"class": cls, "engine": engine, "tasks_n8": len(tasks), "shards": shards, "picked": pick,
-                      "est_worlds_n8": sum(e for t in tasks for _, e in t),
+    print(json.dumps({"class": cls, "engine": engine, "n": n, "tasks_n": len(tasks), "shards": shards, "picked": pick,
+                      "est_worlds_n": sum(e for t in tasks for _, e in t),
                       "plan_s": round(time.perf_counter() - t0, 1)}), flush=True)
     import distributed
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, dashboard_address=None) as cluster, \
             distributed.Client(cluster) as client:
-        if engine == "compiled":
-            client.run(warm_up)
+        startup = client.run(start_up, n, engine)
+        print(json.dumps({"start_up_cpu": sorted(round(c, 2) for c in startup.values())}), flush=True)
         futs = [client.submit(timed_map, root, i, cls, [tuple(u) for u, _ in tasks[t]], shards, engine, pure=False)
                 for i, t in enumerate(pick)]
         done = [f.result() for f in futs]
@@ -81,7 +95,7 @@ def main(argv: list[str] | None = None) -> int:
             print(json.dumps({"map": {**{k_: v for k_, v in d.items() if k_ != "offsets"}, "plan_task": t}}), flush=True)
         rfuts = [client.submit(timed_reduce, root, s,
                                [(i, d["offsets"][s], d["offsets"][s + 1] - d["offsets"][s]) for i, d in enumerate(done)],
-                               pure=False) for s in range(shards)]
+                               n, pure=False) for s in range(shards)]
         red = [f.result() for f in rfuts]
     print(json.dumps({"reduce": {"shards": shards, "cpu": round(sum(r["cpu"] for r in red), 2),
                                  "ambiguous": sum(r["ambiguous"] for r in red),

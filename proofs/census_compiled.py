@@ -19,7 +19,9 @@ head and every start's digest as
 ``census_map._iso_key`` does; :mod:`topomark.proofs.blake2b_compiled`); this
 module turns its digests into records.  :func:`arrays_records` takes a world
 as arrays, so an enumerator that yields arrays plugs in without building a
-:class:`~topomark.spec.world.World`.
+:class:`~topomark.spec.world.World`; :func:`batch_records`, which the census
+map runs, takes the enumeration's batches (:mod:`topomark.proofs.world_batches`)
+as they come, one compiled call per batch.
 
 Examples
 --------
@@ -31,16 +33,18 @@ Examples
 
 from __future__ import annotations
 
-from typing import Callable, Iterable
+from typing import Any, Callable, Iterable
 
 import numpy as np
 
 from topomark.proofs import census_kernel as _kernel
 from topomark.proofs import census_moore as _moore
 from topomark.proofs.census_shards import RECORD
+from topomark.proofs.world_batches import WorldBatch, graph_batches
 from topomark.spec.errors import InvalidInput
 
-__all__ = ["ENGINES", "available", "resolve_engine", "arrays_records", "rotation_records", "warm_up"]
+__all__ = ["ENGINES", "available", "resolve_engine", "arrays_records", "batch_records", "rotation_records",
+           "warm_up"]
 
 ENGINES = ("reference", "compiled", "auto")
 
@@ -97,15 +101,38 @@ def _records(parts: list[tuple[np.ndarray, int, int, int, int]]) -> np.ndarray:
     """One record array of ``(digests (R, 5), n, m, gi, ri)`` per world: (d0, d1, k, i0, i1) and the world."""
     if not parts:
         return np.zeros(0, RECORD)
-    digests = np.concatenate([p[0] for p in parts])
     counts = [len(p[0]) for p in parts]
+    n, m, gi, ri = (np.repeat([p[j] for p in parts], counts) for j in range(1, 5))
+    return _fill(np.concatenate([p[0] for p in parts]), n, m, gi, ri)
+
+
+def _fill(digests: np.ndarray, n: Any, m: Any, gi: Any, ri: Any) -> np.ndarray:
+    """Records of kernel rows ``digests`` ((R, 5): d0, d1, k, i0, i1) on worlds ``(n, m, gi, ri)`` (each one
+    value, or one per row)."""
     out = np.zeros(len(digests), RECORD)
     for j, name in enumerate(("d0", "d1", "k", "i0", "i1")):
         out[name] = digests[:, j]
-    for j, name in ((1, "n"), (2, "m"), (3, "gi"), (4, "ri")):
-        out[name] = np.repeat([p[j] for p in parts], counts)
+    out["n"], out["m"], out["gi"], out["ri"] = n, m, gi, ri
     out["mask"] = np.uint32(1) << out["n"].astype(np.uint32)
     return out
+
+
+def batch_records(class_name: str, max_degree: int, batches: Iterable[WorldBatch], images: np.ndarray
+                  ) -> tuple[np.ndarray, int, int]:
+    """:func:`arrays_records` for every world of ``batches`` (one graph's, ``census_map.unit_arrays``), read
+    from the batch arrays as they are; ``images[a]`` is automorphism ``a`` of the graph as vertex images (the
+    stabiliser's indices point into it, the identity first).  Returns ``(records, worlds, placements)``."""
+    texts, rank = _moore.signature_table(max_degree)
+    code = _kernel.CLASS_CODES[class_name]
+    out = []
+    worlds = placements = 0
+    for b in batches:
+        digests, counts, placed = _kernel.batch_digests(b.offsets, b.nbr, b.back, code, images, b.stab_offsets,
+                                                        b.stab, max_degree, texts, rank, b.n, b.gi, b.ranks)
+        out.append(_fill(digests, b.n, b.nbr.shape[1] // 2, b.gi, np.repeat(b.ranks, counts)))
+        worlds += len(b)
+        placements += int(placed)
+    return (np.concatenate(out) if out else np.zeros(0, RECORD)), worlds, placements
 
 
 def rotation_records(class_name: str, n: int, gi: int, max_degree: int,
@@ -130,3 +157,4 @@ def rotation_records(class_name: str, n: int, gi: int, max_degree: int,
 def warm_up() -> None:
     """Compile the kernel (or load it from numba's cache) by running it on the one-edge world."""
     rotation_records("directional-vertex", 2, 0, 1, [(0, ((1,), (0,)), ({0: 0, 1: 1},))])
+    batch_records("directional-vertex", 1, graph_batches(2, 1, 0), np.arange(2, dtype=np.int32).reshape(1, 2))

@@ -52,7 +52,7 @@ import numpy as np
 from topomark.proofs.blake2b_compiled import blake2b16
 from topomark.proofs.census_moore import COMPILED, machine_arrays, njit, outputs, refine
 
-__all__ = ["CLASS_CODES", "COMPILED", "world_codes", "world_digests"]
+__all__ = ["CLASS_CODES", "COMPILED", "world_codes", "world_digests", "batch_digests"]
 
 CLASS_CODES = {"none": 0, "undirected-vertex": 1, "directional-vertex": 2, "two-undirected-vertex": 3,
                "three-undirected-vertex": 4}
@@ -361,3 +361,32 @@ def world_digests(offsets, nbr, back, cls, autos, max_degree, texts, rank, world
         out[r, 2] = rows[r, 1]
         out[r, 3], out[r, 4] = isos[j, 0], isos[j, 1]
     return out, placements
+
+
+@njit(cache=True)
+def batch_digests(offsets, nbr, back, cls, images, stab_offsets, stab, max_degree, texts, rank, n, gi,
+                  ranks):  # pragma: no cover - compiled
+    """:func:`world_digests` of every row of a batch of one graph's worlds (``world_batches.WorldBatch``: row
+    ``i`` is ``nbr[i]``, ``back[i]``, named ``(n, gi, ranks[i])``, its automorphisms
+    ``images[stab[stab_offsets[i]:stab_offsets[i + 1]]]``): the records of all rows in row order, each
+    row's number of records, and the placements."""
+    k = ranks.size
+    parts = []
+    counts = np.empty(k, np.int64)
+    placements, total = 0, 0
+    world_id = np.empty(3, np.int64)
+    world_id[0], world_id[1] = n, gi
+    for i in range(k):
+        world_id[2] = ranks[i]
+        autos = images[stab[stab_offsets[i]:stab_offsets[i + 1]]]
+        out, count = world_digests(offsets, nbr[i], back[i], cls, autos, max_degree, texts, rank, world_id)
+        parts.append(out)
+        counts[i] = out.shape[0]
+        placements += count
+        total += out.shape[0]
+    flat = np.empty((total, 5), np.uint64)
+    at = 0
+    for out in parts:
+        flat[at:at + out.shape[0]] = out
+        at += out.shape[0]
+    return flat, counts, placements

@@ -40,6 +40,7 @@ from __future__ import annotations
 
 import hashlib
 import math
+from functools import lru_cache
 from pathlib import Path
 from typing import Any, Iterator
 
@@ -47,7 +48,7 @@ import networkx as nx
 import numpy as np
 
 from topomark.proofs.census import machine, marker_key, marker_layouts, minimise
-from topomark.proofs.census_compiled import rotation_records
+from topomark.proofs.census_compiled import batch_records
 from topomark.proofs.census_language import start_digests
 from topomark.proofs.census_integrity import code_version
 from topomark.proofs.census_shards import (combine, digest, done_path, map_path, records, seal, shard_of, write_atomic,
@@ -60,7 +61,7 @@ from topomark.proofs.world_batches import graphs_of as _graphs
 from topomark.spec.world import DartMark, World
 
 __all__ = ["Unit", "plan", "estimate", "rotation_count", "map_task", "run_map", "unit_arrays", "unit_worlds",
-           "unit_rotations", "world_at", "world_records", "marked"]
+           "unit_rotations", "automorphism_images", "world_at", "world_records", "marked"]
 
 Unit = tuple[int, int, int, int]  # (n, graph index, c, C): the ranks c, c + C, c + 2C, ...
 
@@ -140,6 +141,15 @@ def unit_rotations(unit: Unit, max_degree: int) -> Iterator[tuple[int, tuple[tup
         for i, digits in enumerate(batch.digits.tolist()):
             yield (int(batch.ranks[i]), tuple(choices[v][d] for v, d in enumerate(digits)),
                    tuple(actions[a][0] for a in batch.stabiliser(i).tolist()))
+
+
+@lru_cache(maxsize=64)
+def automorphism_images(n: int, max_degree: int, gi: int) -> np.ndarray:
+    """Graph ``gi``'s automorphisms as rows of vertex images, in :func:`~topomark.proofs.world_batches.graph_data`'s
+    order (the identity first): a batch's stabiliser indices select the world's automorphisms from it."""
+    images = np.array([[sigma[k] for k in range(n)] for sigma, _ in _graph_data(n, max_degree, gi)[2]], np.int32)
+    assert (images[0] == np.arange(n)).all(), "graph_data lists the identity first"
+    return images
 
 
 def world_at(n: int, max_degree: int, gi: int, rank: int) -> World:
@@ -228,8 +238,8 @@ def map_task(task: int, class_name: str, max_degree: int, units: list[Unit], sha
         n, gi = unit[0], unit[1]
         tally = sizes.setdefault(n, [0, 0])
         if engine == "compiled":
-            recs, worlds, placements = rotation_records(class_name, n, gi, max_degree,
-                                                        unit_rotations(unit, max_degree))
+            recs, worlds, placements = batch_records(class_name, max_degree, unit_arrays(unit, max_degree),
+                                                     automorphism_images(n, max_degree, gi))
             compiled.append(recs)
             tally[0] += worlds
             tally[1] += placements

@@ -21,8 +21,9 @@ import topomark.proofs.census_map as census_map
 import topomark.proofs.census_kernel as census_kernel
 import topomark.proofs.census_moore as census_moore
 from topomark.proofs.blake2b_compiled import blake2b16
-from topomark.proofs.census_compiled import resolve_engine, rotation_records
-from topomark.proofs.census_map import plan, unit_rotations, unit_worlds, world_records
+from topomark.proofs.census_compiled import batch_records, resolve_engine, rotation_records
+from topomark.proofs.census_map import (automorphism_images, plan, unit_arrays, unit_rotations, unit_worlds,
+                                       world_records)
 from topomark.proofs.census_run import sharded_census
 from topomark.proofs.census_shards import records
 from topomark.proofs.world_arrays import back_links
@@ -45,6 +46,10 @@ def _rows_agree(class_name: str, units: list, max_degree: int) -> int:
                                                          unit_rotations(unit, max_degree))
         assert fast.tobytes() == records(ref).tobytes(), f"{class_name}: the engines disagree on unit {unit}"
         assert fast_placements == placements and worlds == len(list(unit_worlds(unit, max_degree)))
+        batch = batch_records(class_name, max_degree, unit_arrays(unit, max_degree),
+                              automorphism_images(n, max_degree, gi))
+        assert batch[0].tobytes() == fast.tobytes(), f"{class_name}: the batch path disagrees on unit {unit}"
+        assert batch[1:] == (worlds, placements)
         compared += len(ref)
     return compared
 
@@ -131,8 +136,8 @@ def test_without_numba_auto_runs_the_reference_and_says_so(tmp_path, monkeypatch
     with_numba = sharded_census("directional-vertex", 4, 3, tmp_path / "a", engine="auto")
     monkeypatch.setattr(census_moore, "COMPILED", False)
     ran: list[str] = []
-    real = census_map.rotation_records
-    monkeypatch.setattr(census_map, "rotation_records", lambda *a: ran.append("compiled") or real(*a))
+    real = census_map.batch_records
+    monkeypatch.setattr(census_map, "batch_records", lambda *a: ran.append("compiled") or real(*a))
     without = sharded_census("directional-vertex", 4, 3, tmp_path / "b", engine="auto", note=notes.append)
     assert without == with_numba and ran == []
     assert len(notes) == 1 and "numba is not installed" in notes[0]
@@ -168,3 +173,18 @@ def test_kernel_modules_are_hashed_into_the_code_version():
     from topomark.proofs.census_integrity import CODE_MODULES
     assert {"topomark.proofs.census_kernel", "topomark.proofs.census_moore",
             "topomark.proofs.census_compiled"} <= set(CODE_MODULES)
+
+
+def test_the_batch_path_takes_each_worlds_own_automorphisms():
+    """Seeded fault: the automorphism table misordered, so a stabiliser's indices name other automorphisms;
+    the iso keys change and the comparison with the reference catches it (K4: 24 automorphisms)."""
+    unit = (4, 5, 0, 1)
+    images = automorphism_images(4, 4, 5)
+    good = batch_records("undirected-vertex", 4, unit_arrays(unit, 4), images)[0]
+    ref: list = []
+    for ri, w, autos in unit_worlds(unit, 4):
+        world_records("undirected-vertex", (4, 5, ri), w, autos, ref)
+    assert good.tobytes() == records(ref).tobytes()
+    wrong = np.ascontiguousarray(images[::-1])
+    bad = batch_records("undirected-vertex", 4, unit_arrays(unit, 4), wrong)[0]
+    assert bad.tobytes() != records(ref).tobytes()
