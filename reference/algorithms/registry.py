@@ -37,7 +37,7 @@ Examples
 >>> algorithm_spec("nope")  # doctest: +ELLIPSIS
 Traceback (most recent call last):
 ...
-topomark.spec.errors.InvalidInput: unknown algorithm 'nope' (choose from basic, enh1, enh2, enh3, enh4, enh5-d1, ...)
+topomark.spec.errors.InvalidInput: unknown algorithm 'nope' (choose from basic, enh1, enh2, enh3, enh3-listing, enh4, ...)
 """
 
 from __future__ import annotations

@@ -27,7 +27,7 @@ Examples
 >>> arrays = to_arrays(World({"a": ["b", "c"], "b": ["c", "a"], "c": ["a", "b"]}))
 >>> r, k = make_robot(arrays, 0, 0), new_marks(arrays, 0, 2, 0)
 >>> move(r, 0, 1), drop_edge(r, k, 0, 2), drop_edge(r, k, 1, 1), drop_place(r, k)
-((2, -1), True, False, False)
+((2, 0), True, False, False)
 >>> out = np.zeros(2, dtype=np.int64); sensed_edges(r, k, out); out.tolist(), place_marks(r, k)
 ([2, 0], 0)
 """
