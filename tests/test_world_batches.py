@@ -178,7 +178,12 @@ def test_eight_vertices_degree_four_counts_are_burnsides():
 
 
 def test_without_a_place_for_numbas_cache_the_kernel_still_compiles(monkeypatch):
-    numba = pytest.importorskip("numba", reason="numba is not installed: nothing to compile")
+    try:
+        import numba
+    except ImportError:  # numba is a dependency where it has wheels; CI (CI=true) must compile
+        if os.environ.get("CI"):
+            pytest.fail("numba is not installed under CI: the kernel's cache fallback cannot be tested")
+        pytest.skip("numba is not installed: nothing to compile")
     monkeypatch.setattr(numba.core.config, "CACHE_LOCATOR_CLASSES", "NoSuchLocator", raising=False)
     fresh = orbit_kernel.compiled.__wrapped__()
     assert fresh is not None
