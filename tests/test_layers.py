@@ -24,8 +24,8 @@ FACE = "topomark"
 LAYERS = (
     (FACE,),
     ("reference.cli",),
-    ("reference.worstcase",),
-    ("reference.oracle", "reference.bench", "reference.claims", "reference.engine"),
+    ("reference.worstcase", "reference.contest"),
+    ("reference.oracle", "reference.bench", "reference.claims", "reference.engine", "reference.port"),
     ("reference.viewer",),
     ("reference.replay",),
     ("reference.run",),

@@ -76,6 +76,7 @@ COMMANDS = {  # name: (module of .options that registers it, summary for topomar
     "claims": ("claims", "every claim of the thesis and how topomark backs it (the claims ledger)"),
     "worst-case": ("worst_case", "the worst cost of an algorithm over every small world, or found by search "
                                      "past them (§7.2)"),
+    "port": ("port", "the port-labelled robot of the ICFP Contest 2025: import, run and judge port worlds"),
     "completion": ("completion", "print a shell completion script (bash, zsh or tcsh)"),
 }
 
