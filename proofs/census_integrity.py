@@ -65,7 +65,8 @@ MAX_RECORD_BYTES = 64 << 20
 CODE_MODULES = ("topomark.proofs.census", "topomark.proofs.census_map", "topomark.proofs.census_language",
                 "topomark.proofs.census_kernel", "topomark.proofs.census_moore", "topomark.proofs.census_compiled",
                 "topomark.proofs.blake2b_compiled",
-                "topomark.proofs.census_shards", "topomark.proofs.enumerate", "topomark.spec.world",
+                "topomark.proofs.census_shards", "topomark.proofs.enumerate", "topomark.proofs.world_batches",
+                "topomark.proofs.orbit_kernel", "topomark.proofs.census_integrity", "topomark.spec.world",
                 "topomark.spec.markerclass", "topomark.spec.robot")
 """The modules whose code decides what a map task writes: a change to any makes earlier shards another code's."""
 

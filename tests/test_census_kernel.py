@@ -169,10 +169,20 @@ def test_cli_engine_option(capsys):
 
 
 def test_kernel_modules_are_hashed_into_the_code_version():
-    """Shards of an earlier kernel are another code's: a resume refuses them."""
+    """Shards of an earlier kernel are another code's: a resume refuses them.  Every module the census's map
+    imports from proofs/ decides what a map task writes (the batches of worlds it reads, the orbits that choose
+    each world's representative), so each is hashed."""
+    import ast
+    from pathlib import Path
+
+    import topomark.proofs.census_map as census_map
     from topomark.proofs.census_integrity import CODE_MODULES
     assert {"topomark.proofs.census_kernel", "topomark.proofs.census_moore",
             "topomark.proofs.census_compiled"} <= set(CODE_MODULES)
+    tree = ast.parse(Path(census_map.__file__).read_text())
+    imported = {node.module for node in ast.walk(tree) if isinstance(node, ast.ImportFrom) and node.module
+                and node.module.startswith("topomark.proofs.")}
+    assert imported <= set(CODE_MODULES), imported - set(CODE_MODULES)
 
 
 def test_the_batch_path_takes_each_worlds_own_automorphisms():

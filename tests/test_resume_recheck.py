@@ -288,3 +288,21 @@ def test_a_resealed_task_file_with_other_counts_is_refused_when_drawn(worst_dir,
 
 def test_an_untouched_worst_case_resume_answers_the_same(worst_dir, worst_copy):
     assert _worst(worst_copy) == worst_dir[1]
+
+
+def test_worst_case_code_version_hashes_every_module_that_decides_a_cost():
+    """A resumed worst-case run refuses tasks of other code; every module of proofs/ that the exhaustive runs
+    import either is hashed (it decides which worlds and starts run) or is named as infrastructure (scheduling,
+    sealing).  Seeded fault: a new proofs/ import in exhaustive.py that is in neither list fails here."""
+    import ast
+    from pathlib import Path
+
+    from topomark.reference.worstcase import exhaustive, resumable
+    imported = set()
+    for module in (exhaustive, resumable):
+        tree = ast.parse(Path(module.__file__).read_text())
+        imported |= {node.module for node in ast.walk(tree) if isinstance(node, ast.ImportFrom) and node.module
+                     and node.module.startswith("topomark.proofs.")}
+    assert imported, "the exhaustive runs import proofs/"
+    assert imported <= set(resumable.CODE_MODULES) | set(resumable.INFRASTRUCTURE), \
+        imported - set(resumable.CODE_MODULES) - set(resumable.INFRASTRUCTURE)

@@ -57,12 +57,17 @@ from topomark.reference.worstcase.readback import read_regular
 from topomark.reference.worstcase.tally import SizeTally, Witness, merge_tallies
 from topomark.reference.worstcase.task_record import check_record
 
-__all__ = ["FORMAT", "Search", "worst_case", "code_version", "task_path"]
+__all__ = ["FORMAT", "Search", "worst_case", "code_version", "task_path", "CODE_MODULES", "INFRASTRUCTURE"]
 
 FORMAT = "topomark/worst-case@1"
 CODE_PACKAGES = ("topomark.spec", "topomark.reference.explorers", "topomark.reference.algorithms",
                  "topomark.reference.run", "topomark.reference.worstcase")
-CODE_MODULES = ("topomark.proofs.census_map", "topomark.proofs.enumerate")
+CODE_MODULES = ("topomark.proofs.census_map", "topomark.proofs.enumerate", "topomark.proofs.world_batches",
+                "topomark.proofs.orbit_kernel", "topomark.proofs.start_orbits", "topomark.proofs.world_arrays")
+"""The modules of proofs/ that decide which worlds and starts a task runs and what it hands the explorer."""
+INFRASTRUCTURE = ("topomark.proofs.census_exec", "topomark.proofs.census_integrity", "topomark.proofs.census_recheck",
+                  "topomark.proofs.census_shards")
+"""The modules of proofs/ a run uses to schedule, seal and re-check tasks: they decide no cost."""
 
 
 def code_version() -> str:
