@@ -35,9 +35,9 @@ Decisions:
   entry probed where it shows one, on every path that reaches it); the path's start being v_k', the robot walks
   back to it by the edges it came down (moves tagged ``validation``; retracing its own edges it senses
   nothing new, so nothing is compared) before the next path.
-* A hypothesis that would make a self-loop or a multi-edge is never formed:
-  §3.1.1 forbids both in a world; Algorithm 5.1 line 17 does
-  not exclude them.
+* ``model-tree`` forms no hypothesis that would make a self-loop or a multi-edge: §3.1.1 forbids both in a
+  world; Algorithm 5.1 line 17 does not exclude them, and ``model-tree-listing`` forms the multi-edge ones
+  (:mod:`.model_tree`), so a model validated here may have a multi-edge.
 
 :class:`Walker` keeps the robot's frame: after an excursion the robot is back
 at v_u but has entered it by another edge; ``turn`` is that offset, applied
