@@ -46,7 +46,7 @@ def test_a_kept_world_is_unchanged_by_every_algorithm_run_on_it():
     w = bench.world_for("complete-hole", 24, 1)
     before = (copy.deepcopy(w.rotation), w.markers, w.start, w.n, w.m)
     for name in names:
-        options = {"cue-n": w.n} if name == "model-tree" else None
+        options = {"cue-n": w.n} if name in ("model-tree", "model-tree-listing") else None
         try:
             check_run(w, algorithm_spec(name), options=options)
         except InvalidInput:  # an algorithm for a class of worlds (docs/adding-an-algorithm.md) refuses the rest

@@ -260,7 +260,7 @@ def test_a_declared_policy_is_accepted_and_recorded(capsys, algorithm, policy):
 
 def test_the_declared_policy_kinds_are_the_ones_each_explorer_consults():
     """Every registered algorithm declares exactly the policy kinds its explorer asks for on a small world
-    (model-tree, whose model search grows fast with cycles, on a 4-vertex chain; an algorithm for a class of worlds
+    (model-tree and its listing, whose model search grows fast with cycles, on a 4-vertex chain; an algorithm for a class of worlds
     on the first of the lattice, a chain and a world with one leaf that it accepts)."""
     from topomark.reference.algorithms.registry import REGISTRY
     from topomark.reference.explorers.policies import Policies
@@ -285,7 +285,7 @@ def test_the_declared_policy_kinds_are_the_ones_each_explorer_consults():
     from topomark.spec.errors import InvalidInput
 
     def world_for(spec):  # the lattice, unless the algorithm is for a class of worlds it is not in (a tree walk)
-        if spec.name == "model-tree":
+        if spec.name in ("model-tree", "model-tree-listing"):
             return resolve_world("chain:n=4")
         for text in ("lattice:rows=3,cols=3", "chain:n=6"):  # then a world with one leaf (single-leaf, §5.3)
             try:

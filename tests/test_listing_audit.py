@@ -151,42 +151,47 @@ def test_entries_changing_their_listing_are_those_the_audit_found():
 PAW = {"v0": ["v3"], "v1": ["v2", "v3"], "v2": ["v1", "v3"], "v3": ["v0", "v1", "v2"]}  # a triangle, a pendant
 
 
-def _multi_edge_hypotheses_too(monkeypatch):
-    """Algorithm 5.1 line 17: every unexplored edge whose known end shows v_u's degree is a loop closing, one
-    that would make a multi-edge too (a self-loop is left out: e' is another edge than e)."""
-    from topomark.reference.explorers import model_tree
-    from topomark.reference.explorers.model_tree import Closing, Model, validate
+def _model_tree_with(switch: str):
+    """model-tree with one of Algorithm 5.1's listed ways switched on (:class:`ModelTreeExplorer`'s switches:
+    the listing's step put back in its place by a subclass, as ``model-tree-listing`` puts back all three)."""
+    from dataclasses import replace
 
-    def augment(self, record, index, shape, dart, degree, children):
-        for hyp in shape.open_darts():
-            if hyp[0] == dart[0] or shape.degree(hyp[0]) != degree:
-                continue
-            closing = Closing(index, hyp)
-            record.hypotheses.append(closing)
-            child = shape.join(dart, hyp)
-            if not self._admissible(child):
-                closing.outcome = "cue"
-                continue
-            ok, closing.moves = validate(self._walker, child, hyp[0], hyp[1], self.options["entry-check"] == "yes")
-            closing.outcome = "case 3" if ok else "case 2"
-            if ok:
-                self._add(children, Model(child, hyp))
-        child = shape.add_vertex(degree, dart)
-        if self._admissible(child):
-            self._add(children, Model(child, (child.n - 1, 0)))
-    monkeypatch.setattr(model_tree.ModelTreeExplorer, "_augment", augment)
+    from topomark.reference.explorers.model_tree import ModelTreeExplorer
+
+    return replace(algorithm_spec("model-tree"), explorer=type(f"With_{switch}", (ModelTreeExplorer,), {switch: True}))
 
 
-def test_model_tree_s_listing_moves_more_on_the_smallest_world_found(monkeypatch):
-    """The paw from its hub, told n (``--cue-n 4``: without a cue no run on a world with a cycle ends within the
-    default window soon enough to search): the smallest world an enumeration of every embedded world of up to
-    four vertices from every start found where line 17's multi-edge hypotheses cost validation walks (30
-    against 32).  model-tree is not deterministic in the thesis's sense (it may fail, §5.2.2), but its runs
-    draw nothing at random: the same world and options make the same run, so no seed is needed."""
-    world, spec = _world(PAW, "v3", "v1"), algorithm_spec("model-tree")
+MODEL_TREE = [  # the listing's way, world, start, facing, options, our (outcome, cost, hypotheses), the listing's
+    ("listing_hypotheses", TRIANGLE, "v0", "v1", {"cue-n": 3}, ("correct", 10, 1), ("correct", 10, 2)),
+    ("listing_hypotheses", PAW, "v3", "v1", {"cue-n": 4}, ("correct", 30, 1), ("correct", 32, 2)),
+    ("listing_paths", PAW, "v0", "v3", {"cue-n": 4}, ("correct", 29, 1), ("correct", 37, 1)),
+    ("listing_stops", K4, "v0", "v1", {"cue-n": 4, "max-steps": 20}, ("failed", 136, 20), ("limit", 181, 20)),
+]
+
+
+@pytest.mark.parametrize("switch, rotation, at, facing, options, ours, listing", MODEL_TREE,
+                         ids=[f"{c[0]}-{len(c[1])}-places-{c[6][1] - c[5][1]}-moves" for c in MODEL_TREE])
+def test_each_way_model_tree_changes_its_listing_shows_on_the_smallest_world_found(switch, rotation, at, facing,
+                                                                                    options, ours, listing):
+    """An enumeration of every embedded world of up to five vertices (max degree 4) from every start, told n
+    (``--cue-n``: with no cue no run on a world with a cycle ends but at a cap, §5.2.2), found these, the
+    smallest first, for each of the three changes (``model-tree``'s ``changes``):
+
+    * line 17's multi-edge hypotheses: the triangle is the smallest world where one more hypothesis is formed
+      (validated at no cost), the paw from its hub the smallest where it costs validation walks (30 against 32);
+    * lines 18–23's paths one by one, out and back, instead of one breadth-first tree: the paw from its pendant
+      (29 against 37);
+    * the stopping rules: K4 is the smallest, where every live model is completed and no walk tells them apart
+      — model-tree fails at once, the listing's window never closes and the run ends at ``--max-steps``.  Without
+      a cue no world with a cycle shows this change: the model whose every edge is new (the traversal map)
+      is never voided nor completed, so model-tree's extra rules never fire there either.
+
+    model-tree is not deterministic in the thesis's sense (it may fail, §5.2.2), but its runs draw nothing at
+    random: the same world and options make the same run, so no seed is needed."""
+    world, spec = _world(rotation, at, facing), algorithm_spec("model-tree")
     assert spec.changes is not None and not spec.follows_listing and not spec.deterministic
-    runs = [explore(world, spec, options={"cue-n": 4}) for _ in range(2)]
-    assert [(r.outcome, r.cost) for r in runs] == [("correct", 30)] * 2
-    _multi_edge_hypotheses_too(monkeypatch)
-    literal = explore(world, spec, check=False, options={"cue-n": 4})
-    assert literal.cost == 32 and literal.hypotheses > runs[0].hypotheses
+    runs = [explore(world, spec, options=options) for _ in range(2)]
+    assert [(r.outcome, r.cost, r.hypotheses) for r in runs] == [ours] * 2 and runs[0].violation is None
+    literal = explore(world, _model_tree_with(switch), options=options)
+    assert (literal.outcome, literal.cost, literal.hypotheses) == listing and literal.violation is None
+    assert listing != ours

@@ -29,9 +29,15 @@ Decisions:
   (§5.2.2 names the information only); here the robot visits every neighbour
   out and back (moves tagged ``probe``, as §5.1's probing) and compares each
   degree with M''s at that exit counted from the expected entry.
-* A hypothesis that would make a self-loop or a multi-edge is never formed:
-  §3.1.1 forbids both in a world; Algorithm 5.1 line 17 does
-  not exclude them.
+* **As listed** (:func:`validate_paths`, ``model-tree-listing``): lines 18–23 walk "a path from v_k' to v_l"
+  for each known vertex v_l other than v_k' in turn.  Decisions: v_l in the model's vertex order; the path is
+  v_l's branch of the same breadth-first tree (a shortest path); each vertex on it is sensed as above (its
+  entry probed where it shows one, on every path that reaches it); the path's start being v_k', the robot walks
+  back to it by the edges it came down (moves tagged ``validation``; retracing its own edges it senses
+  nothing new, so nothing is compared) before the next path.
+* ``model-tree`` forms no hypothesis that would make a self-loop or a multi-edge: §3.1.1 forbids both in a
+  world; Algorithm 5.1 line 17 does not exclude them, and ``model-tree-listing`` forms the multi-edge ones
+  (:mod:`.model_tree`), so a model validated here may have a multi-edge.
 
 :class:`Walker` keeps the robot's frame: after an excursion the robot is back
 at v_u but has entered it by another edge; ``turn`` is that offset, applied
@@ -46,7 +52,7 @@ from __future__ import annotations
 from topomark.reference.explorers.robot import Robot
 from topomark.reference.explorers.model_shapes import Shape
 
-__all__ = ["Walker", "validate", "shows_entry"]
+__all__ = ["Walker", "validate", "validate_paths", "shows_entry"]
 
 
 class Walker:
@@ -103,6 +109,51 @@ def validate(walker: Walker, shape: Shape, root: int, entry: int, entry_check: b
         for u, _ in reversed(stack[1:]):
             robot.move((back[u] - ent) % shape.degree(u), "retrace")
             ent = shape.target((u, back[u]))[1]
+            moves += 1
+    walker.turn = (ent - entry) % shape.degree(root)
+    return ok, moves
+
+
+def validate_paths(walker: Walker, shape: Shape, root: int, entry: int, entry_check: bool = False
+                   ) -> tuple[bool, int]:
+    """:func:`validate` as Algorithm 5.1 lines 18–23 list it: a path from ``root`` to each other vertex in turn,
+    out and back (module docstring); the first mismatch rejects.  The robot ends where it started."""
+    children = _bfs_children(shape, root)
+    up: dict[int, tuple[int, int]] = {}  # vertex -> (its tree parent, the parent's exit to it)
+    for v, exits in children.items():
+        for y in exits:
+            up[shape.target((v, y))[0]] = (v, y)
+    ent = (entry + walker.turn) % shape.degree(root)
+    robot, moves, ok = walker.robot, 0, True
+    if entry_check and shows_entry(shape, root):
+        ok, ent, moves = _probe(robot, shape, root, ent)
+    for target in range(shape.n):
+        if not ok:
+            break
+        path: list[tuple[int, int]] = []
+        v = target
+        while v != root:
+            path.append(up[v])
+            v = up[v][0]
+        walked: list[tuple[int, int]] = []  # (vertex entered, its exit back toward the root)
+        for v, y in reversed(path):
+            w, j = shape.target((v, y))
+            sig = robot.move((y - ent) % shape.degree(v), "validation")
+            moves += 1
+            if sig.degree != shape.degree(w):  # mismatch: back through the entry edge
+                robot.move(0, "retrace")
+                ent, moves, ok = y, moves + 1, False
+                break
+            ent = j
+            walked.append((w, j))
+            if entry_check and shows_entry(shape, w):
+                ok, ent, probed = _probe(robot, shape, w, ent)
+                moves += probed
+                if not ok:
+                    break
+        for w, j in reversed(walked):  # back to the root by the edges the robot came down
+            robot.move((j - ent) % shape.degree(w), "validation" if ok else "retrace")
+            ent = shape.target((w, j))[1]
             moves += 1
     walker.turn = (ent - entry) % shape.degree(root)
     return ok, moves

@@ -38,6 +38,24 @@ Termination, all decided here since the thesis gives one heuristic only (§5.2.2
   counts; every model voided: :class:`AlgorithmFailed` (cannot happen
   unless a cue is false).
 
+As listed (``model-tree-listing``): three switches, class attributes each off here, undo the three ways this
+explorer changes Algorithm 5.1; :class:`ListingModelTreeExplorer` turns all three on.
+
+* ``listing_hypotheses`` (line 17): a hypothesis that would make a multi-edge is formed too, as line 17 takes
+  every unexplored edge whose known end shows v_u's degree.  Decision: one that would make a self-loop (e' at
+  v_k itself) is still not formed, as §3.3's text has it for the same loop closing ("Every vertex (except v_k)
+  in S could potentially correspond to v_u"; Algorithm 3.1's ``basic`` follows it), and a map edge may not be
+  one (:class:`~topomark.spec.mapstate.PartialMap`).
+* ``listing_paths`` (lines 18–23): one path from v_k' to each known vertex v_l in turn, out and back
+  (:func:`.global_signatures.validate_paths`), not one breadth-first tree.
+* ``listing_stops`` (§5.2.2's heuristic): a run ends only by the window rule, the caps, every model voided,
+  the traversal map completed (decision: no step is left to walk, so no model can change and the sole
+  completed one would stay so for any window; as here) and the §5.3 cues (with ``cue-n`` or ``cue-m``, "the
+  exploration process can terminate as soon as all the current models have n vertices": a sole live
+  completed model ends it, as here).  Without a cue a live model may stay completed beside another forever
+  (walk-equivalent ones, Figure 3.4): the listing never terminates, so the run ends at ``--max-steps``
+  (:class:`LimitReached`, §5.2.1's "never terminates").
+
 Cues of §5.3 (none was run in the thesis).  The registry's
 options are single-valued, so each cue is its own option: ``cue-n``, ``cue-m``, ``cue-diameter`` (integers)
 and ``cue-planar`` (yes/no).  A cue is prior knowledge, true of the world:
@@ -89,12 +107,12 @@ from topomark.spec.errors import AlgorithmFailed, LimitReached, TopomarkFault
 from topomark.spec.mapstate import MapDart, PartialMap
 
 from topomark.reference.explorers.robot import Robot
-from topomark.reference.explorers.global_signatures import Walker, validate
+from topomark.reference.explorers.global_signatures import Walker, validate, validate_paths
 from topomark.reference.explorers.model_shapes import Model, Shape, walk_equivalent
 from topomark.reference.explorers.traversal_map import TraversalMap
 from topomark.reference.explorers.walker import ExplorerState
 
-__all__ = ["ModelTreeExplorer", "Step", "Closing", "DEFAULTS"]
+__all__ = ["ModelTreeExplorer", "ListingModelTreeExplorer", "Step", "Closing", "DEFAULTS"]
 
 DEFAULTS = {"signatures": "global", "entry-check": "yes", "window": 100, "max-models": 10000, "max-steps": 2000,
             "cue-n": None, "cue-m": None, "cue-diameter": None, "cue-planar": "no", "prior": "none", "rank": "no"}
@@ -142,6 +160,8 @@ class ModelTreeExplorer(ExplorerState):
     every explorer records one, :class:`~.walker.ExplorerState`; its map is the model tree's, not one S)."""
 
     name = "model-tree"
+    listing_hypotheses = listing_paths = listing_stops = False  # the listing's ways (module docstring)
+    literal = False  # all three: Algorithm 5.1 as listed
 
     def __init__(self, robot: Robot, policies=None, observer: Callable | None = None, options: dict | None = None):
         super().__init__(robot, observer)  # S (the returned model's at the end), position, iterations
@@ -259,7 +279,7 @@ class ModelTreeExplorer(ExplorerState):
         vk = dart[0]
         for hyp in shape.open_darts():
             w = hyp[0]
-            if w == vk or shape.degree(w) != degree or shape.adjacent(vk, w):
+            if w == vk or shape.degree(w) != degree or not self.listing_hypotheses and shape.adjacent(vk, w):
                 continue  # degree mismatch, or a self-loop / multi-edge, which no world has (§3.1.1)
             closing = Closing(index, hyp)
             record.hypotheses.append(closing)
@@ -270,7 +290,8 @@ class ModelTreeExplorer(ExplorerState):
             if self.options["signatures"] == "local":
                 closing.outcome = "local"
             else:
-                ok, closing.moves = validate(self._walker, child, w, hyp[1], self.options["entry-check"] == "yes")
+                walk = validate_paths if self.listing_paths else validate
+                ok, closing.moves = walk(self._walker, child, w, hyp[1], self.options["entry-check"] == "yes")
                 closing.outcome = "case 3" if ok else "case 2"
                 if not ok:
                     continue
@@ -324,7 +345,8 @@ class ModelTreeExplorer(ExplorerState):
         if not self.live:
             raise AlgorithmFailed(f"every world model was voided at step {number} (a cue is false for this world)")
         o = self.options
-        if len(self.live) == 1 and self.live[0].shape.complete():  # the truth is never voided: this is it
+        told = not self.listing_stops or o["cue-n"] is not None or o["cue-m"] is not None
+        if told and len(self.live) == 1 and self.live[0].shape.complete():  # the truth is never voided: it is this
             return self._finish(self.live[0])
         if o["cue-diameter"] is not None and self._tm.explored_depth() >= o["cue-diameter"]:
             shapes = {id(m.shape) for m in self.live}
@@ -332,7 +354,7 @@ class ModelTreeExplorer(ExplorerState):
                 return self._finish(self.live[0])
             raise AlgorithmFailed(f"TM explored to depth {o['cue-diameter']} (the diameter cue) with "
                                   f"{len(shapes)} completed models left, which it cannot tell apart")
-        if all(m.shape.complete() for m in self.live) and self._indistinguishable():
+        if not self.listing_stops and all(m.shape.complete() for m in self.live) and self._indistinguishable():
             raise AlgorithmFailed(f"{len(self.live)} completed models are left at step {number} and no walk "
                                   f"can tell them apart: the world cannot be mapped without a marker or a cue")
         completed = self._completed()
@@ -367,3 +389,10 @@ class ModelTreeExplorer(ExplorerState):
         self.S = model.shape.partial_map().copy()
         self.position = self._physical(model)
         self.finished = True
+
+
+class ListingModelTreeExplorer(ModelTreeExplorer):
+    """Algorithm 5.1 as listed (``model-tree-listing``): the three switches of the module docstring on."""
+
+    name = "model-tree-listing"
+    listing_hypotheses = listing_paths = listing_stops = literal = True

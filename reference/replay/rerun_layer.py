@@ -27,7 +27,8 @@ and the trace must be that run, record for record:
 
 **The listing and topomark's variant.**  Where topomark registers both its variant of a listing and the
 listing as written (Algorithm 6.7: ``thread-circumference``, which skips a search its record makes needless,
-and ``thread-circumference-listing``, §6.3.2), a trace naming either is compared with both re-runs at
+and ``thread-circumference-listing``, §6.3.2; the tree of models, ``model-tree`` and ``model-tree-listing``,
+Algorithm 5.1), a trace naming either is compared with both re-runs at
 once: a re-run the trace leaves is dropped, the trace is accepted when it follows either to the end, and the
 result says which (:attr:`RerunLayer.followed`; ``replay --json``'s ``rerun``).  When it follows neither,
 the divergence reported is that of the re-run it followed longest (the named one on a tie).

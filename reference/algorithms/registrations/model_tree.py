@@ -1,6 +1,9 @@
 """Registration of Algorithm 5.1, marker-less mapping with a tree of world models (thesis §5.2.2, §5.3).
 
-One algorithm, ``model-tree``: an empty kit (no marker), no cost bound and no
+Two entries: ``model-tree``, topomark's explorer, which changes Algorithm 5.1 as its ``changes`` says, and
+beside it ``model-tree-listing`` (its ``listing_entry``), Algorithm 5.1 as listed: the same explorer with the
+listing's three switches on (:class:`~topomark.reference.explorers.model_tree.ListingModelTreeExplorer`), the same
+options, checks and ways.  Each is ``model-tree`` below: an empty kit (no marker), no cost bound and no
 marker bound stated by the thesis (the marker budget is 0), not
 deterministic (§5.2.2: "the algorithm is still not deterministic … we cannot
 determine which world model is the correct one").  The explorer is
@@ -28,10 +31,13 @@ Examples
 ('model-tree', '§5.2.2, Algorithm 5.1', 'no marker', False)
 >>> spec.parse_options({"signatures": "local"})["window"]
 100
+>>> spec.listing_entry, SPECS[1].name, SPECS[1].thesis, SPECS[1].follows_listing
+('model-tree-listing', 'model-tree-listing', '§5.2.2, Algorithm 5.1, as listed', True)
 """
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 
 from topomark.spec.errors import InvalidInput
@@ -42,9 +48,9 @@ from topomark.spec.spelling import option
 
 from topomark.reference.algorithms.algorithm_spec import AlgorithmSpec, Parameter
 from topomark.reference.explorers.model_prior import posteriors
-from topomark.reference.explorers.model_tree import DEFAULTS, ModelTreeExplorer
+from topomark.reference.explorers.model_tree import DEFAULTS, ListingModelTreeExplorer, ModelTreeExplorer
 
-__all__ = ["SPECS", "PARAMETERS", "MAX_MODELS", "MAX_STEPS", "check_cues", "summary", "ranked_models", "write_models"]
+__all__ = ["SPECS", "PARAMETERS", "MAX_MODELS", "MAX_STEPS", "check_cues", "summary", "ranked_models", "write_models", "simple"]
 
 MAX_MODELS = 100_000
 """The largest ``--max-models``: 10 times the default of 10,000.  Every live model is a partial map kept in
@@ -139,40 +145,70 @@ def ranked_models(completed, world, truth: list[bool]) -> list[dict]:
     """The completed models, the most probable first (:mod:`~topomark.reference.explorers.model_prior`): each
     its number in completion order (``--models``' file), n, m, genus, posterior, and whether it is the world
     (``truth``, in completion order)."""
-    shapes = [(W.n, W.m, W.genus()) for W in (S.to_world(start=(0, 0)) for S in completed)]
+    shapes = [_nmg(S) for S in completed]
     return [{"model": k + 1, "n": shapes[k][0], "m": shapes[k][1], "genus": shapes[k][2], "posterior": round(p, 4),
              "true": truth[k]} for k, p in posteriors(shapes)]
 
 
+def _nmg(S) -> tuple[int, int, int]:
+    """A completed model's n, m and genus, read from the map itself (a multi-edge model is no world, §3.1.1):
+    its faces traced as :meth:`World.faces` does, (v, i) → (w, j + 1)."""
+    seen: set = set()
+    faces = 0
+    for dart in S.darts():
+        if dart in seen:
+            continue
+        faces += 1
+        while dart not in seen:
+            seen.add(dart)
+            w, j = S.target(dart)
+            dart = (w, (j + 1) % S.degree(w))
+    m = len(seen) // 2
+    return S.n, m, (2 - S.n + m - faces) // 2
+
+
+def simple(S) -> bool:
+    """No two exits of one vertex of ``S`` lead to the same vertex: the model is a world (§3.1.1).  Only
+    ``model-tree-listing`` forms a model with a multi-edge (Algorithm 5.1 line 17 as listed)."""
+    return all(len({x[0] for x in S.links(v)}) == S.degree(v) for v in S.vertices)
+
+
 def write_models(explorer, directory: str | Path) -> list[Path]:
-    """Every completed model, in completion order, as ``model-0001.json`` … in ``directory`` (created)."""
+    """Every completed model, in completion order, as ``model-0001.json`` … in ``directory`` (created); a model
+    with a multi-edge is no world (§3.1.1), so no world file holds it: its number is left out."""
     out = Path(directory)
     out.mkdir(parents=True, exist_ok=True)
     paths = []
     for k, S in enumerate(explorer.completed_models, 1):
+        if not simple(S):
+            continue
         path = out / f"model-{k:04d}.json"
         path.write_text(dumps_world(S.to_world(start=(0, 0))), encoding="utf-8")
         paths.append(path)
     return paths
 
 
+_MODEL_TREE = AlgorithmSpec(
+    name="model-tree", thesis="§5.2.2, Algorithm 5.1", kit=Kit(), bound=None, markers="0", deterministic=False,
+    options=("signatures global|local", "entry-check yes|no", "window=N", "max-models=N", "max-steps=N",
+             "cue-n=N", "cue-m=M", "cue-diameter=D", "cue-planar=yes|no",
+             "prior none|single-leaf", "rank yes|no"),
+    checks=("models", "marker-budget", "isomorphism"),
+    explorer=ModelTreeExplorer, uses_lighthouse=False, parameters=PARAMETERS, kit_fn=_kit,
+    marker_bound_fn=lambda n, m: 0, family="robot", check_world=check_cues, summary_fn=summary,
+    write_models=write_models, expected="may-fail", ways=("correct", "limit", "failed-models-undecided", "wrong-map"),
+    changes="Algorithm 5.1 line 17 takes every unexplored edge whose known end shows v_u's degree: this explorer "
+            "forms no hypothesis that would make a multi-edge (§3.1.1; a self-loop neither entry forms, as §3.3's "
+            "text excludes v_k), and walks lines 18–23's paths to every known vertex as one breadth-first tree "
+            "(§5.2.2's captured path overlap); and besides §5.2.2's stopping rule (one completed model for the "
+            "window) it stops as soon as the sole live model is completed, with no cue given too, and, failed, "
+            "when every live model is completed and no walk tells them apart",
+    expected_reason="\"Without a marker, the robot cannot map a world deterministically\" (§5.2): the "
+                    "models may never meet the termination window (§5.2.2) and end at a cap, or the sole "
+                    "completed model may be wrong (Figure 3.4, §5.2.2)")
+
 SPECS = (
-    AlgorithmSpec(
-        name="model-tree", thesis="§5.2.2, Algorithm 5.1", kit=Kit(), bound=None, markers="0", deterministic=False,
-        options=("signatures global|local", "entry-check yes|no", "window=N", "max-models=N", "max-steps=N",
-                 "cue-n=N", "cue-m=M", "cue-diameter=D", "cue-planar=yes|no",
-                 "prior none|single-leaf", "rank yes|no"),
-        checks=("models", "marker-budget", "isomorphism"),
-        explorer=ModelTreeExplorer, uses_lighthouse=False, parameters=PARAMETERS, kit_fn=_kit,
-        marker_bound_fn=lambda n, m: 0, family="robot", check_world=check_cues, summary_fn=summary,
-        write_models=write_models, expected="may-fail", ways=("correct", "limit", "failed-models-undecided", "wrong-map"),
-        changes="Algorithm 5.1 line 17 takes every unexplored edge whose known end shows v_u's degree: this explorer "
-                "forms no hypothesis that would make a self-loop or a multi-edge (§3.1.1), and walks lines 18–23's "
-                "paths to every known vertex as one breadth-first tree (§5.2.2's captured path overlap); and besides "
-                "§5.2.2's stopping rule (one completed model for the window) it stops as soon as the sole live model "
-                "is completed, when the traversal map is completed (a tree world), and, failed, when every live "
-                "model is completed and no walk tells them apart",
-        expected_reason="\"Without a marker, the robot cannot map a world deterministically\" (§5.2): the "
-                        "models may never meet the termination window (§5.2.2) and end at a cap, or the sole "
-                        "completed model may be wrong (Figure 3.4, §5.2.2)"),
+    replace(_MODEL_TREE, listing_entry="model-tree-listing"),
+    replace(_MODEL_TREE, name="model-tree-listing", thesis="§5.2.2, Algorithm 5.1, as listed",
+            explorer=ListingModelTreeExplorer, changes=None, listing_entry=None),
 )
