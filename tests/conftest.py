@@ -24,16 +24,20 @@ family are in ``tests/families.py``.  The docstring examples of every module run
 
 from __future__ import annotations
 
+import fcntl
+import hashlib
 import json
 import os
 import sys
+from pathlib import Path
+from typing import Iterator
 
 import pytest
 
 from topomark.reference.worlds.argument import resolve_world
 from topomark.spec.world import World
 
-__all__ = ["SMALL_WORLDS", "FIGURE_3_4", "make_world", "bare"]
+__all__ = ["SMALL_WORLDS", "FIGURE_3_4", "make_world", "bare", "default_suite", "tree_digest"]
 
 
 def pytest_addoption(parser):
@@ -136,6 +140,36 @@ def fault_reports(tmp_path_factory):
         os.environ.pop("TOPOMARK_FAULT_DIR", None)
     else:
         os.environ["TOPOMARK_FAULT_DIR"] = saved
+
+
+@pytest.fixture(scope="session")
+def default_suite(tmp_path_factory, worker_id) -> Iterator[Path]:
+    """The conformance suite ``topomark conformance export DIR`` writes with no options (every case, every
+    algorithm suite), exported once for the whole run and shared by the tests that only read it: under
+    pytest-xdist its workers share one copy (the first to ask exports it, under a lock; the others wait for it).
+    A test that damages a suite copies it first; one that writes into the shared copy fails the run at teardown."""
+    from topomark.reference.cli.main import main
+    # under xdist each worker's base folder is pytest-N/popen-gwK: their parent is this run's alone
+    shared = tmp_path_factory.getbasetemp() if worker_id == "master" else tmp_path_factory.getbasetemp().parent
+    suite = shared / "default-suite"
+    with open(shared / "default-suite.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        if not suite.is_dir():
+            partial = shared / f"default-suite.{os.getpid()}"  # renamed only once whole: never half a suite
+            assert main(["conformance", "export", str(partial)]) == 0, "conformance export failed"
+            (shared / "default-suite.sha256").write_text(tree_digest(partial))
+            partial.rename(suite)
+    yield suite
+    exported = (shared / "default-suite.sha256").read_text()
+    assert tree_digest(suite) == exported, f"a test changed the shared conformance suite {suite}: copy it first"
+
+
+def tree_digest(folder: Path) -> str:
+    """One digest of every file under ``folder``: its relative path and bytes."""
+    digest = hashlib.sha256()
+    for path in sorted(p for p in folder.rglob("*") if p.is_file()):
+        digest.update(str(path.relative_to(folder)).encode() + b"\0" + path.read_bytes())
+    return digest.hexdigest()
 
 
 @pytest.fixture

@@ -57,11 +57,10 @@ def test_head_sees_the_verdict_in_a_real_pipe(argv, code):
 
 
 @pytest.mark.slow
-def test_conformance_run_piped_to_head_exits_1_for_a_failing_client(tmp_path):
+def test_conformance_run_piped_to_head_exits_1_for_a_failing_client(default_suite):
     """``conformance run … | head -1; echo ${PIPESTATUS[0]}`` prints 1 for a failing client; so does a reader that
     has gone before the first line."""
-    suite = tmp_path / "suite"
-    assert main(["conformance", "export", str(suite)]) == 0
+    suite = default_suite
     for reader in ("head -1 > /dev/null", "true"):
         shell = (f"{sys.executable} -m topomark.reference.cli.main conformance run {suite} -k cycle -- "
                  f"{sys.executable} {WRONG} bad-exit | {reader}; echo ${{PIPESTATUS[0]}}")

@@ -28,10 +28,12 @@ PROMPT = re.compile(r"^\s*>>>", re.M)
 
 
 def _module_names() -> list[str]:
-    names = []
+    """Every module once: walking ``topomark`` already reaches the modules of its subpackages, which are walked
+    again from :data:`PACKAGES`' own entries."""
+    names = set()
     for package in PACKAGES:
-        names.append(package.__name__)
-        names += [info.name for info in pkgutil.walk_packages(package.__path__, package.__name__ + ".")]
+        names.add(package.__name__)
+        names |= {info.name for info in pkgutil.walk_packages(package.__path__, package.__name__ + ".")}
     return sorted(names)
 
 

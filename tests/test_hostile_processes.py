@@ -159,19 +159,11 @@ def test_drive_kills_everything_the_provider_started(tmp_path):
     assert_all_gone(recorded(pids, 2))
 
 
-@pytest.fixture(scope="module")
-def suite(tmp_path_factory):
-    directory = tmp_path_factory.mktemp("suite") / "suite"
-    proc, _ = topomark("conformance", "export", str(directory), timeout=120)
-    assert proc.returncode == 0, proc.stderr
-    return directory
-
-
 @pytest.mark.slow
 @pytest.mark.parametrize("kind, reason", [("fork-exit", ("timeout", "crash")), ("deep", ("garbage",))])
-def test_conformance_run_fails_the_case_and_kills_everything(suite, tmp_path, kind, reason):
+def test_conformance_run_fails_the_case_and_kills_everything(default_suite, tmp_path, kind, reason):
     cmd, pids = hostile(tmp_path, kind)
-    proc, took = topomark("conformance", "run", str(suite), "-k", "triangle", "--message-timeout", "2",
+    proc, took = topomark("conformance", "run", str(default_suite), "-k", "triangle", "--message-timeout", "2",
                           "--timeout", "3", "--", *cmd, timeout=3)
     assert proc.returncode == 1, (proc.stdout, proc.stderr)
     assert "0/" in proc.stdout and any(r in proc.stdout for r in reason), proc.stdout

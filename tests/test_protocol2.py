@@ -132,15 +132,13 @@ def test_the_algorithm_3_1_client_passes_at_1_and_at_2_with_its_kit_and_refuses_
 
 
 @pytest.mark.slow
-def test_cli_client2_and_the_conformance_suite_at_2(tmp_path, capsys):
+def test_cli_client2_and_the_conformance_suite_at_2(tmp_path, capsys, default_suite):
     path = tmp_path / "w.json"
     path.write_text(dumps_world(g.lattice_hole(4, 4, 0.1, seed=2)))
     kit = '{"directional-edge": 1}'
     assert main(["run-external", str(path), "--protocol", "2", "--kit", kit, "--", sys.executable, CLIENT2]) == 0
     assert "PASS [ok]" in capsys.readouterr().out
-    suite = tmp_path / "suite"
-    assert main(["conformance", "export", str(suite)]) == 0
-    capsys.readouterr()
+    suite = default_suite
     assert main(["conformance", "run", str(suite), "-k", "lattice", "--kit", kit, "--json", "--",
                  sys.executable, CLIENT2]) == 0
     report = json.loads(capsys.readouterr().out)
