@@ -56,6 +56,7 @@ def test_from_joins_names_each_fault(change, words):
     ((((1, 0), (0, 1)), ((0, 0), (0, 1))), "(1, 1) is joined to (0, 1), but (0, 1) is joined to (0, 1)"),
     ((((1, 0), (0, 1)), ((0, 0),)), "room 1 has 1 doors, not 2"),
     ((((1, 0), (0, 1)),), "2 rooms have colours but 1 have doors"),
+    ((((1, 1), (0, 1)), ((0, 0),)), "room 1 has 1 doors, not 2"),  # a later room's missing door, looked up early
     ((((1, 0), (0, 5)), ((0, 0), (1, 1))), "(0, 5), which is not a door-end"),
 ])
 def test_port_world_names_each_fault_of_its_joins(joins, words):
@@ -167,6 +168,7 @@ def test_a_later_mark_overwrites_an_earlier_one():
     ("[]", "plan character 1 starts a mark"),
     ("a", "plan character 1 ('a')"),
     ("٣", "plan character 1"),
+    ("0[" + "1" * 5000 + "]", "plan character 2 starts a mark"),  # a colour too long to read as an integer
 ])
 def test_parse_plan_names_the_character(text, words):
     with pytest.raises(InvalidPlan) as e:
