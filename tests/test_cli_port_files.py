@@ -163,3 +163,12 @@ def test_show_counts_passages_by_kind(capsys):
     assert sum(data["colour_counts"]) == 3
     code, out, _ = run(capsys, "port", "show", PROBATIO)
     assert code == 0 and out.splitlines()[1] == "rooms 3, doors 6 a room, start room 0"
+
+
+def test_import_thesis_takes_a_start_vertex(capsys, tmp_path):
+    code, _, _ = run(capsys, "port", "import", "thesis", "cycle:n=5", "-o", tmp_path / "c.json", "--start", "3")
+    doc = load_port_document_file(tmp_path / "c.json")
+    assert code == 0 and doc.names is not None and doc.names[doc.world.start] == "3"
+    code, _, err = run(capsys, "port", "import", "thesis", "cycle:n=5", "-o", tmp_path / "d.json", "--start", "9")
+    assert code == 2 and not (tmp_path / "d.json").exists()
+    clean_error(err, "--start '9' is not a vertex")
