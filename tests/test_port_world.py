@@ -226,3 +226,36 @@ def test_conversion_refuses_an_unknown_start():
 def test_worlds_are_values():
     w = small()
     assert copy.deepcopy(w) == w and hash(w) == hash(small())
+
+
+# -- a second reading of the semantics, from the contest's map object alone -----------------------------------
+
+def record_from_map(obj: dict, plan: str, echo: bool) -> list[int]:
+    """The record of ``plan`` computed from a contest map object's connections, by string rewriting of the
+    plan, without PortWorld or parse_plan."""
+    where = {}
+    for c in obj["connections"]:
+        a, b = (c["from"]["room"], c["from"]["door"]), (c["to"]["room"], c["to"]["door"])
+        where[a], where[b] = b[0], a[0]
+    labels = list(obj["rooms"])
+    room, out, k = obj["startingRoom"], [labels[obj["startingRoom"]]], 0
+    while k < len(plan):
+        if plan[k] == "[":
+            labels[room] = int(plan[k + 1])
+            out += [labels[room]] if echo else []
+            k += 3
+        else:
+            room = where[(room, int(plan[k]))]
+            out.append(labels[room])
+            k += 1
+    return out
+
+
+plans = st.lists(st.one_of(st.sampled_from("012345"), st.sampled_from(["[0]", "[1]", "[2]", "[3]"])),
+                 max_size=30).map("".join)
+
+
+@settings(max_examples=60, deadline=None)
+@given(worlds, plans, st.booleans())
+def test_run_plan_agrees_with_a_second_reading_from_the_map(w, plan, echo):
+    assert list(run_plan(w, parse_plan(plan), echo_marks=echo)) == record_from_map(map_to_json(w), plan, echo)
