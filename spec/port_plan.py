@@ -80,7 +80,8 @@ def parse_plan(text: str, *, doors: int = CONTEST_DOORS, alphabet: int = CONTEST
         if ch == "[":
             close = text.find("]", k)
             inner = text[k + 1:close] if close > 0 else ""
-            require_input(close > 0 and inner.isascii() and inner.isdigit() and int(inner) < alphabet,
+            require_input(close > 0 and inner.isascii() and inner.isdigit() and len(inner) <= 18
+                          and int(inner) < alphabet,
                           f"plan character {k + 1} starts a mark that is not [c] with a colour c in 0..{alphabet - 1}",
                           InvalidPlan)
             actions.append(Action("mark", int(inner)))

@@ -84,8 +84,9 @@ class PortWorld:
         for room, colour in enumerate(self.colours):
             require_input(0 <= colour < self.alphabet,
                           f"room {room}'s colour {colour} is outside the alphabet 0..{self.alphabet - 1}", InvalidWorld)
-        for room, ends in enumerate(self.joins):
+        for room, ends in enumerate(self.joins):  # every room's doors first: a join's other end is looked up below
             require_input(len(ends) == self.doors, f"room {room} has {len(ends)} doors, not {self.doors}", InvalidWorld)
+        for room, ends in enumerate(self.joins):
             for door, (r, d) in enumerate(ends):
                 require_input(0 <= r < n and 0 <= d < self.doors,
                               f"door-end ({room}, {door}) is joined to ({r}, {d}), which is not a door-end",
