@@ -86,15 +86,19 @@ def marked_witness(a: PortWorld, b: PortWorld) -> MarkedWitness | None:
         if best is not None and len(u) >= best[0]:
             break  # pairs come in breadth-first order: no later prefix can beat the best
         for c in range(colours):
-            x = _after_mark(a, b, p, q, c, doors)
+            if c == a.colours[p] == b.colours[q]:
+                continue  # a mark a room already shows changes no record
+            limit = None if best is None else best[0] - len(u) - 1
+            x = _after_mark(a, b, p, q, c, doors, limit)
             if x is not None and (best is None or len(u) + len(x) < best[0]):
                 best = (len(u) + len(x), u, c, x)
     return None if best is None else (best[1], best[2], best[3])
 
 
-def _after_mark(a: PortWorld, b: PortWorld, p: int, q: int, c: int, doors: int) -> tuple[int, ...] | None:
+def _after_mark(a: PortWorld, b: PortWorld, p: int, q: int, c: int, doors: int, limit: int | None
+                ) -> tuple[int, ...] | None:
     """The shortest door sequence from ``(p, q)``, with ``p`` and ``q`` marked ``c``, after which the robots see
-    different colours."""
+    different colours (``None`` if there is none of at most ``limit`` doors)."""
     def shown(w: PortWorld, room: int, marked: int) -> int:
         return c if room == marked else w.colours[room]
 
@@ -103,6 +107,8 @@ def _after_mark(a: PortWorld, b: PortWorld, p: int, q: int, c: int, doors: int) 
     queue = deque([first])
     while queue:
         pair = queue.popleft()
+        if limit is not None and len(words[pair]) >= limit:
+            return None  # breadth-first: every later sequence is as long
         for d in range(doors):
             nxt = (a.target(pair[0], d), b.target(pair[1], d))
             if nxt in words:
