@@ -1,4 +1,5 @@
-"""The exact judge of two port worlds: equivalent, or different with a plan that tells them apart.
+"""The exact judge of two port worlds: equivalent, or different with a plan that tells them apart (the port-labelled
+model, Table 2.3's labelled-graph model with rewritable colours as markers).
 
 Two maps are *equivalent* when no plan — charcoal marks included — gives different records on them, and they have
 the same number of rooms (the contest's rule: a guess with another room count is wrong).  :func:`judge` decides it

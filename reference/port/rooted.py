@@ -1,5 +1,6 @@
 """Equivalence of two port worlds under plans with charcoal marks: rooted isomorphism, two independent deciders,
-and the shortest one-mark witness.
+and the shortest one-mark witness (the port-labelled model: Table 2.3's labelled-graph model with rewritable colours
+as markers).
 
 Two worlds (of one alphabet of at least two colours) give the same record for every plan, marks included, exactly
 when there is a bijection of rooms that maps start to start, keeps colours, and sends door ``d``'s target to door
