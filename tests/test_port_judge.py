@@ -152,3 +152,10 @@ def test_cli_judge_and_minimise(tmp_path, capsys):
     bad.write_text('{"problemName": "x", "map": {"rooms": [0], "startingRoom": 0, "connections": []}, "id": "t"}')
     assert main(["port", "judge", str(bad), aleph]) == 2
     assert "'id'" in capsys.readouterr().err
+
+
+def test_cli_fault_is_exit_3(monkeypatch, capsys):
+    aleph = str(DATA / "aleph" / "000.json")
+    monkeypatch.setattr(judge_module, "isomorphism", lambda a, b: None)  # a broken decider: forms still agree
+    assert main(["port", "judge", aleph, aleph]) == 3
+    assert "000.json" in capsys.readouterr().err

@@ -55,6 +55,9 @@ def minimise_command(args) -> int:
         lines.append(f"a {m.copies}-copy map of its {m.quotient.rooms}-room quotient (checked with the judge)")
         if m.copies and m.copies > 1:
             lines += [f"  block {b}: rooms {' '.join(map(str, f))}" for b, f in enumerate(m.fibres)]
+            lines.append("per passage B.d-C.e of the quotient, the layer of C that layer 0, 1, ... of B leads to:")
+            lines += [f"  {x[0]}.{x[1]}-{y[0]}.{y[1]}: {' '.join(map(str, m.layers[x[0] * world.doors + x[1]]))}"
+                      for x, y in m.quotient.passages()]
         if args.output is not None:
             doc = submission_to_json(problem or "minimised", m.quotient)
             write_output(args.output, json.dumps(doc, indent=1) + "\n")
