@@ -159,3 +159,11 @@ def test_cli_fault_is_exit_3(monkeypatch, capsys):
     monkeypatch.setattr(judge_module, "isomorphism", lambda a, b: None)  # a broken decider: forms still agree
     assert main(["port", "judge", aleph, aleph]) == 3
     assert "000.json" in capsys.readouterr().err
+
+
+def test_cli_suite_bad_manifest_is_exit_2(tmp_path, capsys):
+    assert main(["port", "suite", str(DATA), "--manifest", str(tmp_path / "missing.tsv")]) == 2
+    bad = tmp_path / "bad.tsv"
+    bad.write_text("file\tminimal_rooms\naleph/000.json\tsix\n")
+    assert main(["port", "suite", str(DATA), "--manifest", str(bad)]) == 2
+    assert "line 2" in capsys.readouterr().err

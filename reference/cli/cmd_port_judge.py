@@ -72,7 +72,7 @@ def suite_command(args) -> int:
     failed = [r for r in results if not r.ok]
     data = {"summary": s, "maps": [{"file": r.file, "ok": r.ok, "rooms": r.rooms, "minimal_rooms": r.minimal,
                                     "manifest_minimal_rooms": r.expected_minimal, "copies": r.copies,
-                                    "error": r.error,
+                                    "error": r.error, "problem": r.problem,
                                     "verdicts": [{"kind": t.kind, "equivalent": t.equivalent, "witness": t.witness,
                                                   "ms": round(1000 * t.seconds, 3)} for t in r.trials]}
                                    for r in results]}
@@ -83,6 +83,6 @@ def suite_command(args) -> int:
     assert isinstance(kinds, dict)
     lines += [f"  {k}: {v['equivalent']} equivalent, {v['different']} different ({v['with-mark']} need a mark)"
               for k, v in kinds.items()]
-    lines += [f"FAILED {r.file}: {r.error or f'minimal {r.minimal}, manifest {r.expected_minimal}'}" for r in failed]
+    lines += [f"FAILED {r.file}: {r.problem}" for r in failed]
     emit(args, data, "\n".join(lines))
     return 0 if not failed else 1

@@ -23,9 +23,13 @@ from topomark.reference.port.judge import Verdict, judge
 from topomark.reference.port.minimise import Minimised, minimise
 from topomark.reference.port.variants import door_permuted, passage_swapped, relabelled, world_passages
 from topomark.spec.errors import InvalidInput, InvalidWorld
+from topomark.spec.jsontext import read_text_file
 from topomark.spec.port_world import DoorEnd, PortWorld
 
-__all__ = ["Trial", "MapResult", "run_suite", "read_manifest", "summary", "SWAPS"]
+__all__ = ["Trial", "MapResult", "run_suite", "read_manifest", "summary", "SWAPS", "MAX_MANIFEST_BYTES"]
+
+MAX_MANIFEST_BYTES = 16 << 20
+"""The largest manifest read."""
 
 SWAPS = 2
 """Passage swaps and layer swaps tried per map."""
@@ -57,19 +61,37 @@ class MapResult:
     @property
     def ok(self) -> bool:
         """Imported, minimal size as the manifest says, and the relabelled copy judged equivalent."""
-        return (self.error is None and (self.expected_minimal is None or self.minimal == self.expected_minimal)
-                and all(t.equivalent for t in self.trials if t.kind == "relabelled"))
+        return self.problem is None
+
+    @property
+    def problem(self) -> str | None:
+        """What is wrong with the map's results, ``None`` when nothing is."""
+        if self.error is not None:
+            return self.error
+        if self.expected_minimal is not None and self.minimal != self.expected_minimal:
+            return f"minimal size {self.minimal}, the manifest says {self.expected_minimal}"
+        if not all(t.equivalent for t in self.trials if t.kind == "relabelled"):
+            return "the judge calls a relabelled copy different"
+        return None
 
 
 def read_manifest(path: Path) -> dict[str, int]:
     """``file`` → ``minimal_rooms`` from a tab-separated manifest with a header line."""
-    lines = path.read_text(encoding="utf-8").splitlines()
+    lines = read_text_file(path, InvalidInput, MAX_MANIFEST_BYTES).splitlines()
     header = lines[0].split("\t") if lines else []
     if "file" not in header or "minimal_rooms" not in header:
         raise InvalidInput(f"{path}: a manifest needs the columns file and minimal_rooms")
     f, m = header.index("file"), header.index("minimal_rooms")
-    rows = [line.split("\t") for line in lines[1:] if line.strip()]
-    return {row[f]: int(row[m]) for row in rows}
+    sizes = {}
+    for k, line in enumerate(lines[1:], start=2):
+        row = line.split("\t")
+        if not line.strip():
+            continue
+        if len(row) != len(header) or not row[m].isascii() or not row[m].isdigit():
+            raise InvalidInput(f"{path}: line {k} does not have {len(header)} columns with a number of rooms in "
+                               "minimal_rooms")
+        sizes[row[f]] = int(row[m])
+    return sizes
 
 
 def run_suite(directory: Path, manifest: Path | None = None) -> list[MapResult]:
