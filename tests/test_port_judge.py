@@ -67,9 +67,13 @@ def test_cover_differs_from_base_only_with_a_mark(seed, rooms, copies):
     v = judge(base, c)
     assert not v.equivalent and v.witness is not None and "[" in v.witness
     assert v.witness.count("[") == 1 and doors_in(parse_plan(v.witness)) <= 3 * c.rooms
-    m = minimise(c)
-    assert m.quotient is not None and m.quotient.rooms <= base.rooms and m.copies is not None
-    assert separating_word(m.quotient, c) is None
+    m, mb = minimise(c), minimise(base)
+    assert [len(f) for f in m.fibres] == [copies * len(f) for f in mb.fibres]  # a cover's blocks lie over the base's
+    if mb.quotient is None:  # the base's blocks differ in size: so do the cover's, and neither has a port quotient
+        assert m.quotient is None and m.copies is None
+    else:
+        assert m.quotient is not None and m.copies == copies * (mb.copies or 0)
+        assert separating_word(m.quotient, c) is None and judge(m.quotient, mb.quotient).equivalent
 
 
 def test_exhaustive_small_worlds_agree_with_brute_force():
