@@ -19,8 +19,9 @@ plans go in one /explore call.
 The map guessed: a room per access string, its label, and for the doors, any pairing of door-ends that agrees
 with the learned targets (a door of room q to room r is joined to a door of r that leads to q; doors leading
 back into their own room are joined to themselves).  The single problems' maps are minimal, so without marks
-no plan tells this map from the hidden one.  It prints one JSON object (problem, rooms, queryCount, correct)
-and exits 0 when the guess was correct, 1 when not, 2 when the server refused a request, 3 when it gave up.
+no plan tells this map from the hidden one.  It prints one JSON object (problem, rooms, queryCount, correct, and
+the witness and reason a server such as topomark's adds to a wrong guess's answer) and exits 0 when the guess
+was correct, 1 when not, 2 when the server refused a request, 3 when it gave up.
 """
 
 from __future__ import annotations
@@ -141,8 +142,10 @@ def main(argv: list[str] | None = None) -> int:
     except (RuntimeError, OSError) as e:
         print(json.dumps({"problem": args.problem, "error": f"gave up: {e}"}))
         return 3
-    print(json.dumps({"problem": args.problem, "rooms": rooms, "queryCount": count[0],
-                      "explore_calls": server.calls - 3 + (1 if args.id else 0), "correct": verdict["correct"]}))
+    out = {"problem": args.problem, "rooms": rooms, "queryCount": count[0],
+           "explore_calls": server.calls - 3 + (1 if args.id else 0), "correct": verdict["correct"]}
+    out.update({k: v for k, v in verdict.items() if k in ("witness", "reason")})  # what a server may add
+    print(json.dumps(out))
     return 0 if verdict["correct"] is True else 1
 
 
