@@ -279,3 +279,17 @@ def test_the_explorer_imports_the_standard_library_only():
     names = {a.name for node in ast.walk(tree) if isinstance(node, ast.Import) for a in node.names}
     names |= {node.module for node in ast.walk(tree) if isinstance(node, ast.ImportFrom) and node.module}
     assert names and {n.partition(".")[0] for n in names} <= set(sys.stdlib_module_names) - {"topomark"}
+
+
+def test_distinct_rooms_agrees_with_the_judges_partition_refinement():
+    """Two implementations of "how many rooms does a plan without marks tell apart" (the generator keeps a map only
+    when it is its room count): this module's and the judge's refinement on the map beside itself."""
+    from topomark.reference.port.generate import cover, random_port_world
+    from topomark.reference.port.plain import refine
+
+    worlds = [random_port_world(seed, rooms, doors=doors, alphabet=alphabet)
+              for seed in range(40) for rooms, doors, alphabet in ((5, 3, 2), (7, 2, 1), (6, 6, 4), (4, 2, 2))]
+    worlds += [cover(w, 2, seed=1) for w in worlds[:10]]
+    counts = [distinct_rooms(w) for w in worlds]
+    assert counts == [len(set(refine(w, w)[1][:w.rooms])) for w in worlds]
+    assert min(counts) < max(counts) and any(c < w.rooms for c, w in zip(counts, worlds))
