@@ -138,7 +138,8 @@ def test_every_flag_and_positional_of_every_command_has_help():
 
 
 # 6 one spelling per concept ----------------------------------------------------------------------------------
-JUSTIFIED = {"-o/--out": "a FILE for world, a DIR for bench and search"}
+JUSTIFIED = {"-o/--out": "a FILE for world, a DIR for bench and search",
+             "--world": "a world FILE elsewhere; contest serve's serves one as a problem: NAME=FILE, repeatable"}
 
 
 def test_an_option_has_one_type_and_metavar_wherever_it_appears():

@@ -57,13 +57,15 @@ def test_docstring_examples(name):
 
 SCRIPTS = Path(topomark.reference.__path__[0]) / "oracle" / "examples"
 """Programs shipped as package data and run as subprocesses (the protocol's example clients), not modules."""
+SCRIPT_FOLDERS = (SCRIPTS, Path(topomark.reference.__path__[0]) / "contest" / "examples")
+"""Every such folder: the protocol's example clients and the contest server's example explorer."""
 
 
 def test_every_source_file_is_a_walked_module():
     """A file the walk misses (a folder without ``__init__.py``) would have its examples pass unseen."""
     walked = {Path(importlib.import_module(name).__file__).resolve() for name in MODULES}
     on_disk = {path.resolve() for package in PACKAGES for folder in package.__path__
-               for path in Path(folder).rglob("*.py") if path.parent != SCRIPTS}
+               for path in Path(folder).rglob("*.py") if path.parent not in SCRIPT_FOLDERS}
     assert sorted(map(str, on_disk - walked)) == []
     assert "topomark.proofs.census" in MODULES and "topomark.reference.worlds.generators" in MODULES
     assert "topomark" in MODULES and "topomark.exploration" in MODULES
@@ -71,6 +73,6 @@ def test_every_source_file_is_a_walked_module():
 
 def test_the_scripts_shipped_as_package_data_hold_no_examples():
     """An example in reference/oracle/examples/*.py would never run: show it in a module instead."""
-    scripts = sorted(SCRIPTS.glob("*.py"))
+    scripts = sorted(script for folder in SCRIPT_FOLDERS for script in folder.glob("*.py"))
     assert scripts
     assert [s.name for s in scripts if PROMPT.search(s.read_text(encoding="utf-8"))] == []

@@ -77,6 +77,8 @@ COMMANDS = {  # name: (module of .options that registers it, summary for topomar
     "worst-case": ("worst_case", "the worst cost of an algorithm over every small world, or found by search "
                                      "past them (§7.2)"),
     "port": ("port", "the port-labelled robot of the ICFP Contest 2025: import, run and judge port worlds"),
+    "contest": ("contest", "a local server for ICFP Contest 2025 explorers: /select, /explore, /guess, judged "
+                           "exactly"),
     "completion": ("completion", "print a shell completion script (bash, zsh or tcsh)"),
 }
 
