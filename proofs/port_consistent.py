@@ -175,7 +175,7 @@ class ConsistentSearch:
 
     def _observe(self, k: int, at: list[dict[int, object]], t: int, colour: int, marks: list[tuple[int, int]]) -> None:
         b, n = self.b, self.rooms
-        same = []
+        same: list[object] = []
         for p, _ in marks:
             s = b.var(f"same{k}_{t}_{p}_{len(same)}")
             for r in range(n):
