@@ -31,7 +31,7 @@ def register(actions) -> None:
                    help="write the map found (the first, when the records do not pin it down) as a contest map "
                         "object")
     add_force(p)
-    p.add_argument("--timeout", type=float, default=None, metavar="S",
+    p.add_argument("--timeout", type=float, default=None, metavar="SECONDS",
                    help="seconds Z3 may spend in all (default: no limit)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(handler=Later("cmd_port_solve", "solve_command"))
