@@ -16,6 +16,8 @@ from pathlib import Path
 
 import pytest
 
+from topomark.reference.cli.options.port import action_modules
+
 from topomark.reference.cli import facts
 from topomark.reference.cli.facts_table import TABLE
 from topomark.reference.cli.main import COMMANDS, build_parser, main
@@ -73,7 +75,8 @@ def implementations(modules: set[str]) -> set[str]:
 def test_every_command_is_probed():
     lines = command_lines()
     assert [line[0] for line in lines if len(line) == 1] == list(COMMANDS)
-    assert ["conformance", "run"] in lines and len(lines) == len(COMMANDS) + 3
+    port_actions = len(action_modules())  # each port action registers from its own options/port_*.py
+    assert ["conformance", "run"] in lines and len(lines) == len(COMMANDS) + 3 + port_actions
 
 
 @pytest.mark.parametrize("line", command_lines(), ids=" ".join)

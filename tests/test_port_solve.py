@@ -265,3 +265,6 @@ def test_the_command(tmp_path, capsys):
     data = json.loads(capsys.readouterr().out)
     assert data["status"] == "ambiguous" and data["records"][0] != data["records"][1]
     assert main(["port", "solve", str(exchange), "--rooms", "3", "--doors", "11"]) == 2
+    assert main(["port", "solve", str(exchange), "--rooms", "0"]) == 2
+    assert main(["port", "solve", str(exchange), "--rooms", "3", "--doors", "3", "-o", str(tmp_path / "m")]) == 2
+    assert "-o writes a contest map" in capsys.readouterr().err

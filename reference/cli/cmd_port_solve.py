@@ -9,7 +9,9 @@ import json
 
 from topomark.spec.errors import require_input
 from topomark.spec.port_plan import plan_text
-from topomark.spec.port_world import MAX_DOORS
+from topomark.spec.port_world import CONTEST_ALPHABET, CONTEST_DOORS, MAX_DOORS
+
+from topomark.proofs.port_consistent import MAX_SOLVE_ROOMS
 
 from topomark.reference.cli.parser import emit
 from topomark.reference.files.outputs import write_output
@@ -25,6 +27,10 @@ def solve_command(args) -> int:
     require_input(1 <= args.alphabet, f"--alphabet: 1 or more colours, not {args.alphabet}")
     require_input(args.timeout is None or args.timeout > 0, f"--timeout: a positive number of seconds, "
                   f"not {args.timeout}")
+    require_input(1 <= args.rooms <= MAX_SOLVE_ROOMS, f"--rooms: 1 to {MAX_SOLVE_ROOMS}, not {args.rooms}")
+    require_input(args.output is None or (args.doors == CONTEST_DOORS and args.alphabet <= CONTEST_ALPHABET),
+                  f"-o writes a contest map, which has {CONTEST_DOORS} doors a room and at most "
+                  f"{CONTEST_ALPHABET} colours; without -o the maps are printed (--json) whatever their shape")
     claim_file(args.output, "-o", args.force)
     plans, records = read_exchange(args.exchange, doors=args.doors, alphabet=args.alphabet)
     solution = solve_records(plans, records, args.rooms, doors=args.doors, alphabet=args.alphabet,
