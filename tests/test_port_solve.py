@@ -12,6 +12,7 @@ from hypothesis import given, settings, strategies as st
 
 from topomark.proofs.port_consistent import ConsistentSearch
 from topomark.reference.port import solve as solve_module
+from topomark.reference.port.judge import Verdict, judge
 from topomark.reference.port.generate import cover, random_port_world
 from topomark.reference.port.solve import exchange_from_json, solve_records
 from topomark.reference.port.solve_separate import canonical_form, separating_plan
@@ -42,10 +43,13 @@ def check_solution(truth: PortWorld, plans, records, echo: bool = True) -> str:
     if sol.status == "pinned":
         assert canonical_form(sol.first) == canonical_form(truth)
         assert separating_plan(sol.first, truth) is None
+        assert judge(sol.first, truth, echo_marks=echo).equivalent
     else:
         assert sol.witness is not None and sol.first is not None and sol.second is not None
         assert run_plan(sol.first, sol.witness, echo_marks=echo) != run_plan(sol.second, sol.witness, echo_marks=echo)
         assert canonical_form(sol.first) != canonical_form(sol.second)
+        verdict = judge(sol.first, sol.second, echo_marks=echo)
+        assert not verdict.equivalent and verdict.witness == plan_text(sol.witness)
     return sol.status
 
 
@@ -168,7 +172,7 @@ def test_two_deciders_of_equivalence_agree(seed, n1, n2, doors, copy):
     a = random_port_world(seed, n1, doors=doors, alphabet=2)
     b = cover(a, 2, seed) if copy else random_port_world(seed + 1, n2, doors=doors, alphabet=2)
     plan = separating_plan(a, b)
-    assert (plan is None) == (canonical_form(a) == canonical_form(b))
+    assert (plan is None) == (canonical_form(a) == canonical_form(b)) == judge(a, b).equivalent
     if plan is not None:
         assert run_plan(a, plan) != run_plan(b, plan)
 
@@ -201,6 +205,14 @@ def test_a_fault_in_the_separator_is_caught(monkeypatch):
     truth = random_port_world(11, 3)
     monkeypatch.setattr(solve_module, "separating_plan", lambda a, b, echo_marks=True: None)
     with pytest.raises(TopomarkFault, match="no plan separates"):
+        solve_records([parse_plan("0")], [run_plan(truth, parse_plan("0"))], 3)
+
+
+def test_the_judge_disagreeing_with_z3_is_caught(monkeypatch):
+    """Seeded fault: the judge calls Z3's two different maps equivalent; the cross-check refuses (exit 3)."""
+    truth = random_port_world(11, 3)
+    monkeypatch.setattr(solve_module, "judge", lambda a, b, **kw: Verdict(True, None, None, "seeded"))
+    with pytest.raises(TopomarkFault, match="the judge finds them equivalent"):
         solve_records([parse_plan("0")], [run_plan(truth, parse_plan("0"))], 3)
 
 

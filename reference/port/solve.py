@@ -14,8 +14,9 @@ colours, whatever the door-end pairings).  Its verdict:
 * ``unknown``: Z3 gave up (the timeout); this is not a verdict.
 
 Nothing Z3 says is taken on trust: every record is replayed on ``A`` and ``B``
-(:func:`~topomark.spec.port_plan.run_plan`); that ``B`` is not equivalent to ``A`` is decided twice, by canonical
-forms and by the product search of :mod:`.solve_separate`, whose plan is replayed; any disagreement is
+(:func:`~topomark.spec.port_plan.run_plan`); that ``B`` is not equivalent to ``A`` is decided three times, by canonical
+forms, by the product search of :mod:`.solve_separate` and by the exact judge (:mod:`.judge`), whose plan (the
+shortest without marks, else the shortest with one mark) is the one given, replayed on both; any disagreement is
 topomark's own fault (:class:`~topomark.spec.errors.TopomarkFault`, exit 3).
 """
 
@@ -32,6 +33,7 @@ from topomark.spec.port_world import DoorEnd, PortWorld
 
 from topomark.proofs.port_consistent import ConsistentSearch
 
+from topomark.reference.port.judge import judge
 from topomark.reference.port.solve_separate import canonical_form, separating_plan
 
 __all__ = ["Solution", "read_exchange", "solve_records", "world_json", "EXCHANGE_KEYS", "MAX_EXCHANGE_BYTES"]
@@ -147,11 +149,15 @@ def solve_records(plans: Sequence[Sequence[Action]], records: Sequence[Sequence[
 
 
 def _witness(a: PortWorld, b: PortWorld, echo_marks: bool) -> tuple[Action, ...]:
-    """A plan separating ``a`` from ``b``, after two deciders agree that one exists."""
+    """The judge's plan separating ``a`` from ``b``, after three deciders agree that one exists: canonical forms,
+    the product search of :mod:`.solve_separate` and the judge (:mod:`.judge`)."""
     if canonical_form(a) == canonical_form(b):
         raise TopomarkFault("Z3's second map has the first map's canonical form", "solve: second map differs")
-    plan = separating_plan(a, b, echo_marks=echo_marks)
-    if plan is None:
+    if separating_plan(a, b, echo_marks=echo_marks) is None:
         raise TopomarkFault("Z3's second map differs from the first, but no plan separates them",
                             "solve: deciders agree")
-    return plan
+    verdict = judge(a, b, echo_marks=echo_marks, names=("map A", "map B"))
+    if verdict.equivalent or verdict.witness is None:
+        raise TopomarkFault("Z3's second map is not equivalent to the first, but the judge finds them equivalent",
+                            "solve: Z3 and the judge agree")
+    return parse_plan(verdict.witness, doors=a.doors, alphabet=a.alphabet)
