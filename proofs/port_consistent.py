@@ -116,8 +116,13 @@ class ConsistentSearch:
         b, n, D = self.b, self.rooms, self.doors
         ends = [(r, d) for r in range(n) for d in range(D)]
         self.pair = {(e, f): b.var(f"j{e[0]}_{e[1]}_{f[0]}_{f[1]}") for i, e in enumerate(ends) for f in ends[i:]}
+        touching: dict[DoorEnd, list[str]] = {e: [] for e in ends}
+        for (x, y), v in self.pair.items():
+            touching[x].append(v)
+            if y != x:
+                touching[y].append(v)
         for e in ends:
-            lits = [v for (x, y), v in self.pair.items() if e in (x, y)]
+            lits = touching[e]
             b.add(or_(lits))
             b.asserts.append(f"(assert ((_ at-most 1) {' '.join(lits)}))")
         self.go: dict[DoorEnd, dict[int, object]] = {}
