@@ -92,12 +92,12 @@ def exchange_from_json(obj: Any, *, doors: int = 6, alphabet: int = 4
     >>> exchange_from_json({"plans": [], "results": [], "id": "secret"})
     Traceback (most recent call last):
     ...
-    topomark.spec.errors.InvalidInput: unknown key 'id' (an exchange has the keys plans, results and optionally queryCount)
+    topomark.spec.errors.InvalidInput: unknown key 'id' (an exchange has the keys plans, results, queryCount)
     """
     require_input(isinstance(obj, dict), f"an exchange is a JSON object, not {type(obj).__name__}")
     for key in obj:
         require_input(key in EXCHANGE_KEYS, f"unknown key {clip(str(key), 40, quote=True)} (an exchange has the keys "
-                      "plans, results and optionally queryCount)")
+                      "plans, results, queryCount)")
     for key in EXCHANGE_KEYS[:2]:
         require_input(key in obj, f"the key {key!r} is missing")
     plans, results = obj["plans"], obj["results"]
