@@ -35,7 +35,7 @@ def clean_error(err: str, *words: str) -> None:
 
 def test_import_a_directory_mirrors_it_and_keeps_door_numbers(capsys, tmp_path):
     code, out, _ = run(capsys, "port", "import", "icfpc2025", DATA, "-o", tmp_path / "out")
-    assert code == 0 and out.strip() == f"imported 5 maps into {tmp_path / 'out'} (3 to 90 rooms)"
+    assert code == 0 and out.strip() == f"imported 6 maps into {tmp_path / 'out'} (3 to 90 rooms)"
     for src in DATA.rglob("*/*.json"):
         dst = tmp_path / "out" / src.relative_to(DATA)
         assert json.loads(dst.read_text())["format"] == "topomark/port-world@1"
