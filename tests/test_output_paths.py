@@ -39,6 +39,26 @@ def _summarised_run(tmp: Path) -> str:
     return str(run)
 
 
+PORT_MAPS = ROOT / "tests" / "data" / "icfpc2025"
+PROBATIO, ALEPH = str(PORT_MAPS / "probatio" / "000.json"), str(PORT_MAPS / "aleph" / "000.json")
+
+
+def _exchange(tmp: Path) -> str:
+    """An /explore exchange on the 3-room shared map whose records pin the map down (``port solve`` exit 0)."""
+    import json
+    import random
+
+    from topomark.reference.port.files import load_port_file
+    from topomark.spec.port_plan import parse_plan, run_plan
+    world = load_port_file(PROBATIO)[1]
+    rng = random.Random(5)
+    plans = ["".join(rng.choice("012345") for _ in range(18)) for _ in range(8)]
+    path = tmp / "in" / "exchange.json"
+    path.parent.mkdir(exist_ok=True)
+    path.write_text(json.dumps({"plans": plans, "results": [list(run_plan(world, parse_plan(q))) for q in plans]}))
+    return str(path)
+
+
 def _trace(tmp: Path) -> str:
     """A trace of Algorithm 3.1 on :func:`_world`'s world."""
     path = tmp / "in" / "t.jsonl"
@@ -97,6 +117,11 @@ CASES = {
         "-o", p, *x]),
     ("worst-case --summarise", "-o"): ("dir", "worst-case.md", lambda t, p, x: [
         "worst-case", "--summarise", _summarised_run(t), "-o", p, *x]),
+    ("port import", "-o"): ("file", None, lambda t, p, x: ["port", "import", "icfpc2025", PROBATIO, "-o", p, *x]),
+    ("port export", "-o"): ("file", None, lambda t, p, x: ["port", "export", "icfpc2025", PROBATIO, "-o", p, *x]),
+    ("port minimise", "-o"): ("file", None, lambda t, p, x: ["port", "minimise", ALEPH, "-o", p, *x]),
+    ("port solve", "-o"): ("file", None, lambda t, p, x: ["port", "solve", _exchange(t), "--rooms", "3", "-o", p,
+                                                          *x]),
 }
 
 

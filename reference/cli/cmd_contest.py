@@ -1,4 +1,4 @@
-"""``topomark contest serve``: the contest's HTTP interface on this machine (:mod:`topomark.reference.contest`).
+"""``topomark contest serve``: the contest's HTTP interface on the local host (:mod:`topomark.reference.contest`).
 
 Its options are :mod:`topomark.reference.cli.options.contest`'s; this module is imported when it runs."""
 

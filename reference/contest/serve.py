@@ -1,7 +1,7 @@
 """Serving the contest application on an address: in the foreground (``topomark contest serve``) or in a thread.
 
 The listening socket is opened here, before the server starts, so a port already in use or a host that is not an
-address of this machine is one :class:`~topomark.spec.errors.InvalidInput` (exit 2), and port 0 takes a free port
+address of the local host is one :class:`~topomark.spec.errors.InvalidInput` (exit 2), and port 0 takes a free port
 whose number the caller prints.  The server is uvicorn's: in the foreground it handles Ctrl-C itself (it stops
 taking requests, finishes those it has, closes) and then hands the interrupt on, so the command ends as every
 topomark command does after Ctrl-C.
@@ -52,7 +52,7 @@ def listen(host: str, port: int) -> socket.socket:
     try:
         infos = socket.getaddrinfo(host, port, type=socket.SOCK_STREAM, flags=socket.AI_PASSIVE)
     except OSError as e:
-        raise InvalidInput(f"--host {clip(host, 80)}: not an address of this machine ({e.strerror or e})") from None
+        raise InvalidInput(f"--host {clip(host, 80)}: not an address of the local host ({e.strerror or e})") from None
     family, kind, proto, _, address = infos[0]
     sock = socket.socket(family, kind, proto)
     try:

@@ -11,7 +11,7 @@ __all__ = ["register"]
 
 
 def register(sub) -> None:
-    p = sub.add_parser("contest", description="The ICFP Contest 2025 (\"Aedificium\") on this machine: a server "
+    p = sub.add_parser("contest", description="The ICFP Contest 2025 (\"Aedificium\") on the local host: a server "
                                               "speaking the contest's HTTP interface, for explorers written for it.")
     actions = p.add_subparsers(dest="action", metavar="ACTION", parser_class=Parser)
     s = actions.add_parser(
