@@ -21,11 +21,13 @@ the verdict is ``fail`` with reason ``guess``.  The worlds tried:
 
 Decision (the thesis is silent on how an oracle should tell knowledge from luck): the check is **sound** — a guess
 is failed only with a witness world, replayed step by step by the simulator that played the run and seen to give
-every signature, which is not isomorphic to the map (it has more vertices) — and not complete: a map can be
-undetermined in ways no subdivision or two-fold cover shows (a program that knows the vertex count, which no
-protocol kit gives, would need others).  The covers' replays are bounded by :data:`MAX_REPLAY_STEPS` actions in
-all; a run past that bound is judged on the subdivisions alone, and :class:`Determination` says so
-(``complete=False``).
+every signature, which is not isomorphic to the map.  Where the program keeps at most one vertex marker in the world
+at a time (no edge markers, no thread) it is also **complete**: :mod:`~topomark.reference.oracle.walk_folding`
+decides it exactly, and the subdivisions and covers run beside it as an independent check (a cover witness where the
+folding found the map determined is :class:`~topomark.spec.errors.TopomarkFault`).  Elsewhere a map can be
+undetermined in ways no subdivision or two-fold cover shows.  The covers' replays are bounded by
+:data:`MAX_REPLAY_STEPS` actions in all; a run past that bound is judged on the subdivisions (and the exact decision,
+when it applies) alone, and :class:`Determination` says so (``complete=False``; ``exact`` when decided exactly).
 
 Examples
 --------
@@ -34,31 +36,29 @@ Examples
 >>> found = determination(two, two.start_state(), LIGHTHOUSE, [], two)
 >>> found.witness.n, found.how
 (3, 'subdivided')
->>> three = cycle(3)  # once round a triangle, never dropping the marker: a hexagon looks the same
+>>> three = cycle(3)  # once round a triangle, never dropping the marker: a longer cycle looks the same
 >>> found = determination(three, three.start_state(), LIGHTHOUSE, [1, 1, 1], three)
->>> found.witness.n, found.how
-(6, 'two-fold cover')
+>>> found.witness.n, found.how, found.exact
+(6, 'two-fold cover', True)
 """
 
 from __future__ import annotations
 
 from array import array
 from dataclasses import dataclass
-from typing import Sequence, Union
+from typing import Sequence
 
-from topomark.spec.errors import CheckFailure, InvalidInput, InvalidWorld
-from topomark.spec.kit import Kit, MarkerOp, ThreadOp
-from topomark.spec.signature import Signature
+from topomark.spec.errors import CheckFailure, InvalidInput, InvalidWorld, TopomarkFault
+from topomark.spec.kit import Kit
 from topomark.spec.world import Start, World
 
 from topomark.reference.run.simulator import Simulator
+from topomark.reference.oracle.agreement import REWIND, Action, _act, agrees
+from topomark.reference.oracle.walk_folding import decide
 
 __all__ = ["Action", "Determination", "determination", "agrees", "subdivided", "two_fold_cover",
            "MAX_REPLAY_STEPS", "LIGHTHOUSE", "REWIND"]
 
-REWIND = "rewind"  # the @2 thread operation that moves back along the thread
-Action = Union[int, MarkerOp, ThreadOp, str]
-"""One thing the program did: a motion (int), a marker or thread operation, or :data:`REWIND`."""
 LIGHTHOUSE = Kit(vertex=1, directional=True)  # Algorithm 3.1's kit, for the example
 MAX_REPLAY_STEPS = 2_000_000  # actions replayed on two-fold covers, over all of them, per judged run
 
@@ -72,57 +72,36 @@ class Determination:
     edge: tuple[str, str] | None  # the edge subdivided, or crossed between the copies
     candidates: int  # worlds replayed
     complete: bool  # False: the covers' replay bound was reached before every edge was tried
+    exact: bool = False  # True: decided exactly (the walk's folding): no witness means no world shows it
 
     def words(self, map_n: int) -> str:
         """Why the map was a guess; without a witness, that what the robot sensed determined the map."""
         if self.witness is None:
+            if self.exact:
+                return ("determined by what the program sensed (decided exactly: every world that gives those "
+                        "observations is isomorphic to the map)")
             return (f"determined by what the program sensed (no witness of a guess among {self.candidates} worlds "
-                    f"replayed{'' if self.complete else ', the replay bound reached'})")
+                    f"replayed{'' if self.complete else ', the replay bound reached'}; not decided exactly)")
         u, w = self.edge or ("?", "?")
-        why = (f"the robot never crossed the edge {u}–{w}; with a vertex added on it" if self.how == "subdivided"
-               else f"the robot never told apart the two copies of a two-fold cover of the world (the edge {u}–{w} "
-                    "crossed between them); on it")
+        why = {"subdivided": f"the robot never crossed the edge {u}–{w}; with a vertex added on it",
+               "two-fold cover": f"the robot never told apart the two copies of a two-fold cover of the world (the "
+                                 f"edge {u}–{w} crossed between them); on it",
+               "unvisited exit": "an exit of a vertex the robot stood on was never used by any visit it can tell "
+                                 "apart; with a new vertex beyond it",
+               "finer world": "nothing it sensed forced two of its visits to be one vertex; on a world that keeps "
+                              "them apart",
+               "quotient": "nothing it sensed kept two vertices apart; on a world where they are one"}[self.how or ""]
+        other = (f"has {self.witness.n} vertices, not {map_n}" if self.witness.n != map_n
+                 else "is not isomorphic to the map")
         return (f"the map is right, but the program's observations do not determine it: {why}, every signature the "
-                f"robot sensed is the same, and that world has {self.witness.n} vertices, not {map_n} (the witness)")
+                f"robot sensed is the same, and that world {other} (the witness)")
 
     def to_json(self) -> dict:
         from topomark.spec.worldfile import world_to_json
 
         return {"witness": None if self.witness is None else world_to_json(self.witness), "how": self.how,
                 "edge": None if self.edge is None else list(self.edge), "candidates": self.candidates,
-                "complete": self.complete}
-
-
-def _act(sim: Simulator, action: Action) -> Signature:
-    """Do ``action`` in ``sim``; the signature sensed after it."""
-    robot = sim.robot()
-    if isinstance(action, int):
-        return robot.move(action, "other")
-    if isinstance(action, str):
-        assert action == REWIND, f"an action is a motion, an operation or {REWIND!r}"
-        return robot.rewind("other")
-    robot.operate(action)
-    return robot.sense()
-
-
-def agrees(candidate: World, at: tuple[str, int], truth: World, start: tuple[str, int], kit: Kit,
-           actions: Sequence[Action], budget: int | None = None) -> tuple[bool | None, int]:
-    """Whether ``actions`` sense the same signatures on ``candidate`` from ``at`` as on ``truth`` from ``start``
-    (both without markers), and how many actions were replayed; None when ``budget`` actions were replayed without
-    a difference and more remain."""
-    real, other = Simulator(truth, start, kit), Simulator(candidate, at, kit)
-    if str(real.robot().sense()) != str(other.robot().sense()):
-        return False, 0
-    for done, action in enumerate(actions):
-        if budget is not None and done >= budget:
-            return None, done
-        seen = _act(real, action)
-        try:
-            if str(_act(other, action)) != str(seen):
-                return False, done + 1
-        except (CheckFailure, InvalidInput):  # the candidate refuses what the world allowed: a difference
-            return False, done + 1
-    return True, len(actions)
+                "complete": self.complete, "exact": self.exact}
 
 
 def _walk(truth: World, start: tuple[str, int], kit: Kit, actions: Sequence[Action]) -> tuple[set[frozenset], array]:
@@ -214,6 +193,34 @@ def determination(truth: World, start: tuple[str, int], kit: Kit, actions: Seque
                                                                           actions)[0]:
             assert candidate.n != map_.n, "a witness has more vertices than the map"
             return Determination(candidate, "subdivided", (u, w), tried, True)
+    exact = _decided(truth, start, kit, actions, max_steps)
+    covered = _covers(truth, start, kit, actions, seen, map_, max_steps, tried)
+    if exact is None:
+        return covered
+    if exact is False and covered.witness is not None:
+        raise TopomarkFault(f"the guess check disagrees with itself: the walk's folding found the map determined, "
+                            f"but a two-fold cover (the edge {covered.edge}) gives every observation")
+    if covered.witness is not None or exact is False:  # a cover is the plainer witness: it is shown when found
+        return Determination(covered.witness, covered.how, covered.edge, covered.candidates, covered.complete,
+                             exact=True)
+    return Determination(exact.world, exact.how, None, covered.candidates, covered.complete, exact=True)
+
+
+def _decided(truth: World, start: tuple[str, int], kit: Kit, actions: Sequence[Action], max_steps: int):
+    """The exact decision (:mod:`~topomark.reference.oracle.walk_folding`): its witness, False for none (the map is
+    determined), None when the run is outside its scope or too long for it."""
+    if len(actions) > max_steps:
+        return None
+    try:
+        found = decide(truth, start, kit, actions)
+    except (ValueError, OverflowError):
+        return None
+    return False if found is None else found
+
+
+def _covers(truth: World, start: tuple[str, int], kit: Kit, actions: Sequence[Action], seen: array, map_: World,
+            max_steps: int, tried: int) -> Determination:
+    """The two-fold covers (module docstring), within ``max_steps`` replayed actions."""
     budget = max_steps
     for u, i, w, j in _edges(truth):
         cover = two_fold_cover(truth, start, u, i)

@@ -1,0 +1,242 @@
+"""The identifications a program's observations force: whether they determine its map, decided exactly (§3.1, §3.3).
+
+A program's walk visits *occurrences* — the vertex it stands on after each motion — and all it knows of them is what
+it sensed (§3.1.1: the degree, the markers, relative to the entry edge).  Which occurrences are one vertex is what a
+map decides; a map is *determined* when every world that shows the same observations to the same actions identifies
+them alike, up to isomorphism.  This module decides it by folding the walk (the identifications a rotation system
+forces, as in Stallings' folding of graphs):
+
+1. **the walk's own identifications.**  A motion through the same exit of the same vertex arrives at the same vertex
+   by the same edge; so occurrences are joined by their edges, and two edges leaving one vertex by one exit are one
+   edge (congruence, with the exits' rotation offsets);
+2. **what the marker forces.**  While one vertex marker lies in the world, sensing it at an occurrence makes that
+   occurrence the vertex where it was dropped (and a pick-up, too) — for a directional marker with the rotation its
+   reading gives (§3.1.1: ``V-k``), for an undirected one with a rotation left open: each possible one is a branch;
+3. **the leaves.**  Each branch closed under (1) is the *finest* world the observations allow along it: a world with
+   an exit no occurrence used (completed with new leaves), or one not isomorphic to the map, that gives every
+   observation is a witness of a guess.  When the finest world is the map, every other world that gives the
+   observations is a *quotient* of it by a covering (every consistent identification contains the finest; a
+   covering of connected graphs has fibres of one size, so the start's fibre holds another vertex): each is tried
+   by identifying the start with each vertex of its degree, at each rotation, and closing.
+
+Why the single marker (the decision, where the thesis is silent on how an oracle tells knowledge from luck): with at
+most one vertex marker lying in the world at a time, sensing *no* marker only forbids identifications, so a world
+finer than a consistent one is consistent too, and the search above is complete.  With two markers lying at once,
+edge markers or a thread, a sighting could be any of several marks; those runs are judged by the sound tests of
+:mod:`topomark.reference.oracle.determination` alone (:func:`folding_scope` says why).
+
+Every witness found here is replayed by the simulator and compared signature by signature
+(:func:`~topomark.reference.oracle.agreement.agrees`) before it is reported.
+
+Examples
+--------
+>>> from topomark.spec.kit import Kit, MarkerOp
+>>> from topomark.reference.worlds.deterministic import cycle
+>>> three, kit = cycle(3), Kit(vertex=1, directional=True)
+>>> drop = MarkerOp("vertex", direction=1)
+>>> print(decide(three, three.start_state(), kit, [drop, 1, 1, 1]))  # the marker seen again: a triangle
+None
+>>> decide(three, three.start_state(), kit, [drop, 1, 1]).how  # it never comes back: an exit unused
+'unvisited exit'
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Iterator, Sequence
+
+from topomark.spec.errors import InvalidWorld
+from topomark.spec.isomorphism import find_isomorphism
+from topomark.spec.kit import Kit, MarkerOp
+from topomark.spec.world import Start, World
+
+from topomark.reference.oracle.agreement import _act, agrees as replayed
+from topomark.reference.oracle.folding import Folding
+from topomark.reference.run.simulator import Simulator
+
+__all__ = ["Walk", "Found", "walk", "folding_scope", "decide", "MAX_BRANCHES"]
+
+MAX_BRANCHES = 256
+"""The most branches (rotations left open by undirected sightings) searched before the decision gives up as inexact."""
+
+
+@dataclass
+class Walk:
+    """A run as occurrences: each node's degree, the walk's edges ``(i, exit, j, exit)`` in each node's own frame
+    (relative to its entry, §3.1.1), and what the marker forces: ``(j, p, shift)`` — occurrence ``j`` is ``p``'s
+    vertex, its exit 0 being ``p``'s exit ``shift`` (``None``: undirected, any rotation)."""
+
+    degree: list[int] = field(default_factory=list)
+    edges: list[tuple[int, int, int, int]] = field(default_factory=list)
+    sightings: list[tuple[int, int, int | None]] = field(default_factory=list)
+    absent: set[tuple[int, int]] = field(default_factory=set)  # (j, p): the marker lay at p's vertex, not seen at j
+    scope: str | None = None  # why the run is outside the exact decision, or None
+
+
+def folding_scope(kit: Kit) -> str | None:
+    """Why a run with ``kit`` cannot be decided exactly here before it is even looked at, or None."""
+    if kit.thread is not None:
+        return "the kit has a thread"
+    if kit.edge or kit.either:
+        return "the kit has edge markers"
+    return None
+
+
+def walk(truth: World, start: tuple[str, int], kit: Kit, actions: Sequence) -> Walk:
+    """Replay ``actions`` on ``truth`` once and record the walk (:class:`Walk`); a run that leaves the scope (two
+    markers lying at once, an edge marker, a thread operation) is recorded with ``scope`` saying why."""
+    out = Walk(scope=folding_scope(kit))
+    if out.scope:
+        return out
+    sim = Simulator(truth, start, kit)
+    states = [sim.state]
+    out.degree.append(truth.degree(start[0]))
+    ground: int | None = None
+    now = 0
+
+    def sighted() -> None:
+        if ground is None or ground == now:
+            return
+        if states[now][0] != states[ground][0]:
+            out.absent.add((now, ground))
+            return
+        shift = (states[now][1] - states[ground][1]) % out.degree[now] if kit.directional else None
+        out.sightings.append((now, ground, shift))
+
+    for action in actions:
+        if isinstance(action, int):
+            sim.robot().move(action, "other")
+            out.degree.append(truth.degree(sim.state[0]))
+            states.append(sim.state)
+            out.edges.append((now, action % out.degree[now], len(states) - 1, 0))
+            now = len(states) - 1
+        elif isinstance(action, MarkerOp) and action.kind == "vertex" and action.count == 1:
+            sim.robot().operate(action)
+            if action.pick_up:
+                sighted()
+                ground = None
+            elif ground is not None:
+                out.scope = "two vertex markers lay in the world at once"
+                return out
+            else:
+                ground = now
+        else:
+            out.scope = f"the program used {action!r}, which the exact decision does not model"
+            return out
+        sighted()
+    return out
+
+
+@dataclass(frozen=True)
+class Found:
+    """A world that gives every observation and is not isomorphic to the map, and how it was found."""
+
+    world: World
+    how: str  # "unvisited exit", "finer world" or "quotient"
+
+
+def _leaves(w: Walk) -> Iterator[Folding]:
+    """The finest foldings of the walk, one per choice of the rotations undirected sightings leave open; raises
+    OverflowError past :data:`MAX_BRANCHES`.  A branch that makes a visit where the marker was not seen its
+    vertex is cut at once (a coarser folding keeps the identification, docstring)."""
+    base = Folding(w.degree)
+    for i, ri, j, rj in w.edges:
+        if not base.join(i, ri, j, rj):
+            return  # the walk itself is no rotation system: cannot happen for a replayed run
+    stack, branches = [(base, 0)], 0
+    while stack:
+        f, k = stack.pop()
+        while k < len(w.sightings) and f.holds(*w.sightings[k]):
+            k += 1
+        if k == len(w.sightings):
+            yield f
+            continue
+        j, p, shift = w.sightings[k]
+        if shift is not None and f.same(j, p):
+            continue  # one vertex, but the marker read at another rotation: no world along this branch
+        children = []
+        for r in [shift] if shift is not None else range(w.degree[p]):
+            g = f.copy()
+            if g.union(j, 0, p, r) and (shift is not None or not any(g.same(a, b) for a, b in w.absent)):
+                children.append((g, k + 1))
+        branches += max(0, len(children) - 1)
+        if branches > MAX_BRANCHES:
+            raise OverflowError(f"more than {MAX_BRANCHES} branches")
+        stack.extend(children)
+
+
+def _left(world: World, at: tuple[str, int], kit: Kit, actions: Sequence) -> World:
+    """``world`` with the markers ``actions`` leave in it, from ``at``."""
+    sim = Simulator(world, at, kit)
+    for action in actions:
+        _act(sim, action)
+    return sim.world.with_start(world.start)
+
+
+def _differs(candidate: World, at: tuple[str, int], kit: Kit, actions: Sequence, map_: World) -> bool:
+    """Whether ``candidate``, with the markers the actions leave in it, is not extended-isomorphic to ``map_``."""
+    if candidate.n != map_.n:
+        return True
+    return not find_isomorphism(_left(candidate, at, kit, actions), map_, markers=True).isomorphic
+
+
+def decide(truth: World, start: tuple[str, int], kit: Kit, actions: Sequence, agrees=None) -> Found | None:
+    """A witness that the observations of ``actions`` on ``truth`` from ``start`` do not determine the map (``truth``
+    with the markers the actions leave, which a map judged right is isomorphic to), or None when they do.  ``agrees(candidate, at)`` confirms a candidate gives every observation
+    (default: :func:`~topomark.reference.oracle.agreement.agrees` against ``truth``).
+
+    Raises ValueError when the run is outside the exact decision (:func:`walk`'s scope) and OverflowError past
+    :data:`MAX_BRANCHES`.
+    """
+    w = walk(truth, start, kit, actions)
+    if w.scope:
+        raise ValueError(w.scope)
+    map_ = _left(truth, start, kit, actions)
+    if agrees is None:
+        def agrees(candidate: World, at: tuple[str, int]) -> bool:
+            return bool(replayed(candidate, at, truth, start, kit, actions)[0])
+    for leaf in _leaves(w):
+        for fill in (1, 2):  # a dangling exit completed by a new leaf, or by a path of two
+            built = leaf.world(fill)
+            if built is None:
+                break  # a loop or a multiple edge: no simple world along this branch, nor any coarser one
+            candidate, at, dangling = built
+            if not agrees(candidate, at):
+                break  # the marker seen where it is not, or not seen where it is: coarser worlds too (docstring)
+            if _differs(candidate, at, kit, actions, map_):
+                return Found(candidate, "unvisited exit" if dangling else "finer world")
+            if not dangling:
+                found = _quotient(candidate, at, kit, actions, map_, agrees)
+                if found is not None:
+                    return found
+                break
+    return None
+
+
+def _quotient(world: World, at: tuple[str, int], kit: Kit, actions: Sequence, map_: World,
+              agrees) -> Found | None:
+    """A quotient of the complete finest ``world`` by a covering that gives every observation (docstring, 3)."""
+    names = list(world.rotation)
+    index = {v: k for k, v in enumerate(names)}
+    base = Folding([world.degree(v) for v in names])
+    for v in names:
+        for i, x in enumerate(world.rotation[v]):
+            base.join(index[v], i, index[x], world.index(x, v))
+    s, facing = index[at[0]], at[1]
+    for other in range(len(names)):
+        if other == s or base.degree[other] != base.degree[s]:
+            continue
+        for r in range(base.degree[s]):
+            g = base.copy()
+            if not g.union(s, facing, other, r):
+                continue
+            built = g.world(1, (s, facing))
+            if built is None or built[2]:
+                continue
+            candidate, cat, _ = built
+            try:
+                if agrees(candidate, cat) and _differs(candidate, cat, kit, actions, map_):
+                    return Found(candidate, "quotient")
+            except InvalidWorld:
+                continue
+    return None
