@@ -29,52 +29,8 @@ vertex, entry exit).  Each step is one pass of the listing:
    has v_u's degree;
 18-23. for each known vertex v_l of M' (M with e joined to e') the robot computes a path from v_k' to v_l and
    executes it; a degree it senses that M' does not predict rejects the hypothesis;
-24-29. accepted: M' (loop augmentation) is a child, the robot believed at v_k' entered by e';
-31-33. always last, the non-loop child: v_u a new vertex whose exit 0 is e.
 
-Decisions where the listing is silent (each is the choice topomark's ``model-tree-listing`` makes, so that the
-two cost the same move for move):
-
-* **BFS order on TM (line 1).**  TM vertices are expanded in the order they were added; the start's exits
-  0, 1, ... (exit 0 is the exit the robot faces at the start), every other vertex's exits 1, ..., d-1 (its
-  exit 0 is the edge it was reached by).  The robot walks TM's tree path from where it stands: up by exit 0
-  to the common ancestor, then down.
-* **Numbering.**  Map vertex 0 is the start, its exit 0 the faced exit (the protocol's anchor); a new vertex
-  is numbered next and its exits clockwise from the edge it was entered by.  Models are processed in the order
-  they were made; a model's unexplored exits are taken in vertex order, then exit order (line 17).
-* **Line 17's hypotheses.**  As listed, every unexplored exit whose vertex shows v_u's degree, so one that
-  would join e to a vertex it already reaches (a multi-edge) is formed too; one at v_k itself (a self-loop) is
-  not, as §3.3's text has it for the same loop closing ("every vertex (except v_k) in S could potentially
-  correspond to v_u").
-* **Lines 18-23's paths.**  v_l runs over M''s vertices in number order (v_k' itself gives the empty path);
-  the path to v_l is its branch of one breadth-first tree of M' from v_k' (exits in order), a shortest path.
-  After each path the robot walks back to v_k' by the edges it came down (retracing its own edges it senses
-  nothing new); on a mismatch it steps back through the edge it entered by and climbs back the same way.  So
-  the robot ends at v_u, though entered by another edge than e: its later motions are counted from e all the
-  same (a ``turn`` kept between the logical and the physical entry, as Algorithm 3.1's "re-align to e").
-* **Expected perceptions (§5.2.2).**  The degree of each vertex reached and, at each vertex of M' whose
-  neighbours are all known and whose list D of neighbour degrees has no proper rotation onto itself (§5.1's
-  test: the neighbourhood shows the entry edge), the entry edge: the robot visits each neighbour in turn out
-  and back (exit 0, 1, ... of M', counted from the entry it believes), comparing degrees; the first mismatch
-  rejects.  This probe is made at v_k' before the first path and at each vertex entered on every path (also
-  on later paths through it).  ``--entry-check no`` compares degrees only.
-* **Cues (§5.3), none of which the listing has.**  A cue voids a model made this step (a loop child before
-  its validation walk, so at no cost; the non-loop child) that it rules out: ``--cue-n N`` more than N places,
-  or completed with other than N; ``--cue-m M`` likewise for edges; ``--cue-planar yes`` a rotation system of
-  genus > 0 (an unexplored exit counted as an edge to a leaf of its own); ``--cue-diameter D`` a completed
-  model of diameter > D (once TM is explored to depth D every model not completed is voided too).
-* **Termination.**  §5.2.2's rule: a model that has been the only completed one for ``--window`` steps
-  (default 100) is returned.  Besides: with ``--cue-n`` or ``--cue-m`` a sole live model that is completed is
-  returned at once (§5.3: "the exploration process can terminate as soon as all the current models have n
-  vertices"); once TM is explored to the diameter cue, the sole model left; TM complete (a tree world),
-  the sole completed model.  The run stops with an ``error`` message, no map, when every model is voided,
-  when ``--max-steps`` steps (default 2,000) have been made, or when a level would hold more than
-  ``--max-models`` models (default 10,000).  A step's cost is every move: TM's walk, the validation
-  paths, the probes and the steps back.
-
-``--signatures local`` accepts every hypothesis without moving (§5.2.2's "simplest approach").  It sends no
-snapshot: a model is a hypothesis, not the explored subgraph.  With ``--stats`` it writes one JSON line of its
-counts (steps, hypotheses formed, moves, completed models) to stderr at the end.
+The listing line by line and every decision where it is silent: client_model_tree_listing.md, beside this file.
 """
 import json
 import sys
