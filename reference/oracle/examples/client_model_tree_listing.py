@@ -30,7 +30,7 @@ vertex, entry exit).  Each step is one pass of the listing:
 18-23. for each known vertex v_l of M' (M with e joined to e') the robot computes a path from v_k' to v_l and
    executes it; a degree it senses that M' does not predict rejects the hypothesis;
 
-The listing line by line and every decision where it is silent: client_model_tree_listing.md, beside this file.
+Lines 24–33 of the listing and every decision where it is silent: client_model_tree_listing.md, beside this file.
 """
 import json
 import sys
