@@ -13,25 +13,22 @@ against the conformance oracle (§4.1, Enhancement-3).
 
 from __future__ import annotations
 
-import ast
-import sys
 from pathlib import Path
 
 import pytest
+
+from listing_clients import EXAMPLES, imported_modules, patched
 
 from topomark.spec.worldfile import load_world
 from topomark.reference.oracle.conformance import export, run_algorithms, suite_algorithms
 from topomark.reference.run.explore import explore
 
-CLIENT = Path(__file__).resolve().parents[1] / "reference" / "oracle" / "examples" / "client_enh3_listing.py"
+CLIENT = EXAMPLES / "client_enh3_listing.py"
 PAIR = ["enh3", "enh3-listing"]
 
 
 def test_the_client_is_standalone():
-    tree = ast.parse(CLIENT.read_text())
-    imported = {alias.name for node in ast.walk(tree) if isinstance(node, ast.Import) for alias in node.names}
-    imported |= {node.module for node in ast.walk(tree) if isinstance(node, ast.ImportFrom)}
-    assert imported == {"json", "re", "sys", "collections"}  # the standard library only: nothing of topomark
+    assert imported_modules(CLIENT) == {"json", "re", "sys", "collections"}  # the standard library only: nothing of topomark
 
 
 @pytest.fixture(scope="module")
@@ -42,13 +39,7 @@ def suite(tmp_path_factory) -> Path:
 
 
 def _client(tmp_path: Path, old: str = "", new: str = "") -> list[str]:
-    text = CLIENT.read_text()
-    if old:
-        assert text.count(old) == 1
-        text = text.replace(old, new)
-    copied = tmp_path / CLIENT.name
-    copied.write_text(text)
-    return [sys.executable, str(copied)]
+    return patched(CLIENT, tmp_path, old, new)
 
 
 @pytest.mark.slow

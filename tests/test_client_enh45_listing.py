@@ -15,12 +15,12 @@ oracle (§4.2, Enhancements 4 and 5).
 
 from __future__ import annotations
 
-import ast
 import random
-import sys
 from pathlib import Path
 
 import pytest
+
+from listing_clients import EXAMPLES, imported_modules, patched
 
 from topomark.spec.worldfile import load_world
 from topomark.reference.oracle.conformance import export, run_algorithms, suite_algorithms
@@ -28,16 +28,13 @@ from topomark.reference.oracle.run_external import run_external
 from topomark.reference.run.explore import explore
 from topomark.reference.worstcase.moves import random_world
 
-CLIENT = Path(__file__).resolve().parents[1] / "reference" / "oracle" / "examples" / "client_enh45_listing.py"
+CLIENT = EXAMPLES / "client_enh45_listing.py"
 PAIRS = {"enh4": ["enh4", "enh4-listing"], "enh5-d2": ["enh5-d2", "enh5-d2-listing"]}
 FLAGS = {"enh4": [], "enh5-d2": ["--enh5"]}
 
 
 def test_the_client_is_standalone():
-    tree = ast.parse(CLIENT.read_text())
-    imported = {alias.name for node in ast.walk(tree) if isinstance(node, ast.Import) for alias in node.names}
-    imported |= {node.module for node in ast.walk(tree) if isinstance(node, ast.ImportFrom)}
-    assert imported == {"json", "re", "sys", "collections"}  # the standard library only: nothing of topomark
+    assert imported_modules(CLIENT) == {"json", "re", "sys", "collections"}  # the standard library only: nothing of topomark
 
 
 @pytest.fixture(scope="module")
@@ -48,13 +45,7 @@ def suite(tmp_path_factory) -> Path:
 
 
 def _client(tmp_path: Path, variant: str, old: str = "", new: str = "") -> list[str]:
-    text = CLIENT.read_text()
-    if old:
-        assert text.count(old) == 1
-        text = text.replace(old, new)
-    copied = tmp_path / CLIENT.name
-    copied.write_text(text)
-    return [sys.executable, str(copied)] + FLAGS[variant]
+    return patched(CLIENT, tmp_path, old, new) + FLAGS[variant]
 
 
 def _listing_cost(suite: Path, row, listing: str) -> int:

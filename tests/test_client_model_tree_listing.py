@@ -21,11 +21,11 @@ topomark's literal explorer on the same world with the same options:
 
 from __future__ import annotations
 
-import ast
-import sys
 from pathlib import Path
 
 import pytest
+
+from listing_clients import EXAMPLES, imported_modules, patched
 
 from topomark.spec.kit import Kit
 from topomark.spec.world import Start, World
@@ -34,7 +34,7 @@ from topomark.reference.oracle.run_external import Limits, run_external
 from topomark.reference.run.explore import explore
 from topomark.spec.errors import InvalidInput
 
-CLIENT = Path(__file__).resolve().parents[1] / "reference" / "oracle" / "examples" / "client_model_tree_listing.py"
+CLIENT = EXAMPLES / "client_model_tree_listing.py"
 PAIR = ["model-tree", "model-tree-listing"]
 
 TRIANGLE = {"v0": ["v1", "v2"], "v1": ["v0", "v2"], "v2": ["v0", "v1"]}
@@ -50,13 +50,7 @@ def _world(rotation: dict, at: str, facing: str) -> World:
 
 
 def _client(tmp_path: Path, old: str = "", new: str = "") -> list[str]:
-    text = CLIENT.read_text()
-    if old:
-        assert text.count(old) == 1
-        text = text.replace(old, new)
-    copied = tmp_path / CLIENT.name
-    copied.write_text(text)
-    return [sys.executable, str(copied)]
+    return patched(CLIENT, tmp_path, old, new)
 
 
 def _both(world: World, cmd: list[str], options: dict, name: str = "model-tree-listing"):
@@ -68,10 +62,7 @@ def _both(world: World, cmd: list[str], options: dict, name: str = "model-tree-l
 
 
 def test_the_client_is_standalone():
-    tree = ast.parse(CLIENT.read_text())
-    imported = {alias.name for node in ast.walk(tree) if isinstance(node, ast.Import) for alias in node.names}
-    imported |= {node.module for node in ast.walk(tree) if isinstance(node, ast.ImportFrom)}
-    assert imported == {"json", "sys", "collections"}  # the standard library only: nothing of topomark
+    assert imported_modules(CLIENT) == {"json", "sys", "collections"}  # the standard library only: nothing of topomark
 
 
 def test_neither_entry_has_a_conformance_suite():

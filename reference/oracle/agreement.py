@@ -16,6 +16,7 @@ Examples
 
 from __future__ import annotations
 
+from array import array
 from typing import Sequence, Union
 
 from topomark.spec.errors import CheckFailure, InvalidInput
@@ -25,14 +26,14 @@ from topomark.spec.world import World
 
 from topomark.reference.run.simulator import Simulator
 
-__all__ = ["Action", "REWIND", "agrees"]
+__all__ = ["Action", "REWIND", "act", "agrees", "matches"]
 
 REWIND = "rewind"  # the @2 thread operation that moves back along the thread
 Action = Union[int, MarkerOp, ThreadOp, str]
 """One thing the program did: a motion (int), a marker or thread operation, or :data:`REWIND`."""
 
 
-def _act(sim: Simulator, action: Action) -> Signature:
+def act(sim: Simulator, action: Action) -> Signature:
     """Do ``action`` in ``sim``; the signature sensed after it."""
     robot = sim.robot()
     if isinstance(action, int):
@@ -55,9 +56,27 @@ def agrees(candidate: World, at: tuple[str, int], truth: World, start: tuple[str
     for done, action in enumerate(actions):
         if budget is not None and done >= budget:
             return None, done
-        seen = _act(real, action)
+        seen = act(real, action)
         try:
-            if str(_act(other, action)) != str(seen):
+            if str(act(other, action)) != str(seen):
+                return False, done + 1
+        except (CheckFailure, InvalidInput):  # the candidate refuses what the world allowed: a difference
+            return False, done + 1
+    return True, len(actions)
+
+
+def matches(candidate: World, at: tuple[str, int], kit: Kit, actions: Sequence[Action], seen: array,
+            budget: int | None = None) -> tuple[bool | None, int]:
+    """:func:`agrees` against ``seen``, the hashes of the signatures a replay on the world sensed (the start's
+    first), replaying the candidate only; a full match of hashes is then confirmed by :func:`agrees`."""
+    other = Simulator(candidate, at, kit)
+    if hash(str(other.robot().sense())) != seen[0]:
+        return False, 0
+    for done, action in enumerate(actions):
+        if budget is not None and done >= budget:
+            return None, done
+        try:
+            if hash(str(act(other, action))) != seen[done + 1]:
                 return False, done + 1
         except (CheckFailure, InvalidInput):  # the candidate refuses what the world allowed: a difference
             return False, done + 1

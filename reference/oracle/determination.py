@@ -48,12 +48,12 @@ from array import array
 from dataclasses import dataclass
 from typing import Sequence
 
-from topomark.spec.errors import CheckFailure, InvalidInput, InvalidWorld, TopomarkFault
+from topomark.spec.errors import InvalidWorld, TopomarkFault
 from topomark.spec.kit import Kit
 from topomark.spec.world import Start, World
 
 from topomark.reference.run.simulator import Simulator
-from topomark.reference.oracle.agreement import REWIND, Action, _act, agrees
+from topomark.reference.oracle.agreement import REWIND, Action, act as _act, agrees, matches as _matches
 from topomark.reference.oracle.walk_folding import decide
 
 __all__ = ["Action", "Determination", "determination", "agrees", "subdivided", "two_fold_cover",
@@ -106,7 +106,8 @@ class Determination:
 
 def _walk(truth: World, start: tuple[str, int], kit: Kit, actions: Sequence[Action]) -> tuple[set[frozenset], array]:
     """Replay ``actions`` on ``truth`` once: the edges the robot crossed (each as the set of its two darts (vertex,
-    exit)) and a hash of each signature it sensed, the start's first, for candidates to be compared against."""
+    exit)) and a hash of each signature it sensed, the start's first, for candidates to be compared against
+    (:func:`~topomark.reference.oracle.agreement.matches`)."""
     sim, crossed = Simulator(truth, start, kit), set()
     seen = array("q", [hash(str(sim.robot().sense()))])
     for action in actions:
@@ -117,24 +118,6 @@ def _walk(truth: World, start: tuple[str, int], kit: Kit, actions: Sequence[Acti
             u = truth.rotation[w][j]
             crossed.add(frozenset({(w, j), (u, truth.index(u, w))}))
     return crossed, seen
-
-
-def _matches(candidate: World, at: tuple[str, int], kit: Kit, actions: Sequence[Action], seen: array,
-             budget: int | None = None) -> tuple[bool | None, int]:
-    """:func:`agrees` against the signatures' hashes of the world's replay (:func:`_walk`), replaying the candidate
-    only; a full match of hashes is then confirmed by :func:`agrees`, signature by signature."""
-    other = Simulator(candidate, at, kit)
-    if hash(str(other.robot().sense())) != seen[0]:
-        return False, 0
-    for done, action in enumerate(actions):
-        if budget is not None and done >= budget:
-            return None, done
-        try:
-            if hash(str(_act(other, action))) != seen[done + 1]:
-                return False, done + 1
-        except (CheckFailure, InvalidInput):  # the candidate refuses what the world allowed: a difference
-            return False, done + 1
-    return True, len(actions)
 
 
 def _edges(world: World) -> list[tuple[str, int, str, int]]:

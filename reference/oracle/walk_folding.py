@@ -42,15 +42,15 @@ None
 
 from __future__ import annotations
 
+from array import array
 from dataclasses import dataclass, field
 from typing import Iterator, Sequence
 
-from topomark.spec.errors import InvalidWorld
 from topomark.spec.isomorphism import find_isomorphism
 from topomark.spec.kit import Kit, MarkerOp
-from topomark.spec.world import Start, World
+from topomark.spec.world import World
 
-from topomark.reference.oracle.agreement import _act, agrees as replayed
+from topomark.reference.oracle.agreement import act, agrees as replayed, matches
 from topomark.reference.oracle.folding import Folding
 from topomark.reference.run.simulator import Simulator
 
@@ -70,6 +70,8 @@ class Walk:
     edges: list[tuple[int, int, int, int]] = field(default_factory=list)
     sightings: list[tuple[int, int, int | None]] = field(default_factory=list)
     absent: set[tuple[int, int]] = field(default_factory=set)  # (j, p): the marker lay at p's vertex, not seen at j
+    seen: array = field(default_factory=lambda: array("q"))  # a hash of each signature sensed, the start's first
+    left: World | None = None  # the world with the markers the actions leave in it
     scope: str | None = None  # why the run is outside the exact decision, or None
 
 
@@ -89,6 +91,7 @@ def walk(truth: World, start: tuple[str, int], kit: Kit, actions: Sequence) -> W
     if out.scope:
         return out
     sim = Simulator(truth, start, kit)
+    out.seen.append(hash(str(sim.robot().sense())))
     states = [sim.state]
     out.degree.append(truth.degree(start[0]))
     ground: int | None = None
@@ -105,13 +108,13 @@ def walk(truth: World, start: tuple[str, int], kit: Kit, actions: Sequence) -> W
 
     for action in actions:
         if isinstance(action, int):
-            sim.robot().move(action, "other")
+            out.seen.append(hash(str(act(sim, action))))
             out.degree.append(truth.degree(sim.state[0]))
             states.append(sim.state)
             out.edges.append((now, action % out.degree[now], len(states) - 1, 0))
             now = len(states) - 1
         elif isinstance(action, MarkerOp) and action.kind == "vertex" and action.count == 1:
-            sim.robot().operate(action)
+            out.seen.append(hash(str(act(sim, action))))
             if action.pick_up:
                 sighted()
                 ground = None
@@ -124,6 +127,7 @@ def walk(truth: World, start: tuple[str, int], kit: Kit, actions: Sequence) -> W
             out.scope = f"the program used {action!r}, which the exact decision does not model"
             return out
         sighted()
+    out.left = sim.world.with_start(truth.start)
     return out
 
 
@@ -169,7 +173,7 @@ def _left(world: World, at: tuple[str, int], kit: Kit, actions: Sequence) -> Wor
     """``world`` with the markers ``actions`` leave in it, from ``at``."""
     sim = Simulator(world, at, kit)
     for action in actions:
-        _act(sim, action)
+        act(sim, action)
     return sim.world.with_start(world.start)
 
 
@@ -182,8 +186,8 @@ def _differs(candidate: World, at: tuple[str, int], kit: Kit, actions: Sequence,
 
 def decide(truth: World, start: tuple[str, int], kit: Kit, actions: Sequence, agrees=None) -> Found | None:
     """A witness that the observations of ``actions`` on ``truth`` from ``start`` do not determine the map (``truth``
-    with the markers the actions leave, which a map judged right is isomorphic to), or None when they do.  ``agrees(candidate, at)`` confirms a candidate gives every observation
-    (default: :func:`~topomark.reference.oracle.agreement.agrees` against ``truth``).
+    with the markers the actions leave, which a map judged right is isomorphic to), or None when they do.
+    ``agrees(candidate, at)`` confirms a candidate gives every observation (default: :func:`~topomark.reference.oracle.agreement.agrees` against ``truth``).
 
     Raises ValueError when the run is outside the exact decision (:func:`walk`'s scope) and OverflowError past
     :data:`MAX_BRANCHES`.
@@ -191,10 +195,12 @@ def decide(truth: World, start: tuple[str, int], kit: Kit, actions: Sequence, ag
     w = walk(truth, start, kit, actions)
     if w.scope:
         raise ValueError(w.scope)
-    map_ = _left(truth, start, kit, actions)
+    map_ = w.left
+    assert map_ is not None, "a walk in scope is replayed to its end"
     if agrees is None:
-        def agrees(candidate: World, at: tuple[str, int]) -> bool:
-            return bool(replayed(candidate, at, truth, start, kit, actions)[0])
+        def agrees(candidate: World, at: tuple[str, int]) -> bool:  # the hashes first, each signature to confirm
+            return matches(candidate, at, kit, actions, w.seen)[0] is True and bool(
+                replayed(candidate, at, truth, start, kit, actions)[0])
     for leaf in _leaves(w):
         for fill in (1, 2):  # a dangling exit completed by a new leaf, or by a path of two
             built = leaf.world(fill)
@@ -234,9 +240,6 @@ def _quotient(world: World, at: tuple[str, int], kit: Kit, actions: Sequence, ma
             if built is None or built[2]:
                 continue
             candidate, cat, _ = built
-            try:
-                if agrees(candidate, cat) and _differs(candidate, cat, kit, actions, map_):
-                    return Found(candidate, "quotient")
-            except InvalidWorld:
-                continue
+            if agrees(candidate, cat) and _differs(candidate, cat, kit, actions, map_):
+                return Found(candidate, "quotient")
     return None
