@@ -37,12 +37,21 @@ class Folding:
         self.parent = list(range(len(degree)))
         self.shift = [0] * len(degree)  # exit r of a node is exit (r + shift) of its parent
         self.edges: list[dict[int, tuple[int, int]]] = [{} for _ in degree]  # at a root: exit -> (node, its exit)
+        self.owned: set[int] | None = None  # after a copy, the nodes whose edges this folding may change in place
 
     def copy(self) -> "Folding":
+        """A folding that starts as this one; its edges are shared until either changes them (copy on write)."""
         other = Folding.__new__(Folding)
         other.degree, other.parent, other.shift = self.degree, list(self.parent), list(self.shift)
-        other.edges = [dict(e) if e else {} for e in self.edges]
+        other.edges, other.owned, self.owned = list(self.edges), set(), set()
         return other
+
+    def _mine(self, node: int) -> dict[int, tuple[int, int]]:
+        """``node``'s edges, copied first if another folding shares them."""
+        if self.owned is not None and node not in self.owned:
+            self.edges[node] = dict(self.edges[node])
+            self.owned.add(node)
+        return self.edges[node]
 
     def find(self, a: int) -> tuple[int, int]:
         """The root of ``a`` and the offset from ``a``'s exits to the root's."""
@@ -80,7 +89,7 @@ class Folding:
                 x = (ra + s) % self.degree[root]
                 there = self.edges[root].get(x)
                 if there is None:
-                    self.edges[root][x] = (b, rb)
+                    self._mine(root)[x] = (b, rb)
                 else:
                     unions.append((there[0], there[1], b, rb))
                 continue
@@ -95,7 +104,10 @@ class Folding:
                 return False
             offset = (ra + sa - rb - sb) % d  # exit x of B is exit x + offset of A
             self.parent[B], self.shift[B] = A, offset
-            moved, self.edges[B] = self.edges[B], {}
+            moved = self.edges[B]
+            self.edges[B] = {}
+            if self.owned is not None:
+                self.owned.add(B)
             half.extend((A, (x + offset) % d, k, rk) for x, (k, rk) in moved.items())
         return True
 

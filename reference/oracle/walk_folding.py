@@ -9,21 +9,27 @@ forces, as in Stallings' folding of graphs):
 1. **the walk's own identifications.**  A motion through the same exit of the same vertex arrives at the same vertex
    by the same edge; so occurrences are joined by their edges, and two edges leaving one vertex by one exit are one
    edge (congruence, with the exits' rotation offsets);
-2. **what the marker forces.**  While one vertex marker lies in the world, sensing it at an occurrence makes that
-   occurrence the vertex where it was dropped (and a pick-up, too) — for a directional marker with the rotation its
-   reading gives (§3.1.1: ``V-k``), for an undirected one with a rotation left open: each possible one is a branch;
-3. **the leaves.**  Each branch closed under (1) is the *finest* world the observations allow along it: a world with
-   an exit no occurrence used (completed with new leaves), or one not isomorphic to the map, that gives every
-   observation is a witness of a guess.  When the finest world is the map, every other world that gives the
+2. **what the markers force.**  A visit that senses markers (§3.1.1 ``V-k``, ``V#``; §6.1 ``E-p``, ``E-p-H``)
+   stands where markers were dropped and still lie: :mod:`~topomark.reference.oracle.folded_marks` sums the marker
+   operations over the folding's places and finds the first visit that would sense fewer than it did; each place
+   that then holds markers is a way to mend it (a directional reading fixes the rotation, an undirected one leaves
+   each open; an edge marker is the same dart or, on an edge no visit crossed, its far end) — a branch each — and a
+   lack only one way can mend is taken without branching;
+3. **the leaves.**  Each branch closed under (1) and (2) is the *finest* world the observations allow along it: a
+   world with an exit no occurrence used (completed with new leaves), or one not isomorphic to the map, that gives
+   every observation is a witness of a guess.  When the finest world is the map, every other world that gives the
    observations is a *quotient* of it by a covering (every consistent identification contains the finest; a
    covering of connected graphs has fibres of one size, so the start's fibre holds another vertex): each is tried
    by identifying the start with each vertex of its degree, at each rotation, and closing.
 
-Why the single marker (the decision, where the thesis is silent on how an oracle tells knowledge from luck): with at
-most one vertex marker lying in the world at a time, sensing *no* marker only forbids identifications, so a world
-finer than a consistent one is consistent too, and the search above is complete.  With two markers lying at once,
-edge markers or a thread, a sighting could be any of several marks; those runs are judged by the sound tests of
-:mod:`topomark.reference.oracle.determination` alone (:func:`folding_scope` says why).
+Why this is complete (the decision, where the thesis is silent on how an oracle tells knowledge from luck): while
+the visits so far sense exactly what the robot did, no place holds fewer than zero markers, so identifying more
+only adds markers — a visit that would sense *more* rules out every coarser world, and a world that gives the
+observations, followed branch by branch, passes through one of the ways each lack lists; so it is a quotient of a
+leaf, and the leaf gives the observations too.  A thread (§6.3) is outside the decision — its marks depend on the
+path it was laid along, not on a place — and runs with one are judged by the sound tests of
+:mod:`topomark.reference.oracle.determination` alone (:func:`folding_scope` says why); so are runs past
+:data:`MAX_BRANCHES` branches.
 
 Every witness found here is replayed by the simulator and compared signature by signature
 (:func:`~topomark.reference.oracle.agreement.agrees`) before it is reported.
@@ -51,25 +57,26 @@ from topomark.spec.kit import Kit, MarkerOp
 from topomark.spec.world import World
 
 from topomark.reference.oracle.agreement import act, agrees as replayed, matches
+from topomark.reference.oracle.folded_marks import PRUNED, Deficit, Event, Observed, Op, scan, take
 from topomark.reference.oracle.folding import Folding
 from topomark.reference.run.simulator import Simulator
 
 __all__ = ["Walk", "Found", "walk", "folding_scope", "decide", "MAX_BRANCHES"]
 
-MAX_BRANCHES = 256
+MAX_BRANCHES = 4096
 """The most branches (rotations left open by undirected sightings) searched before the decision gives up as inexact."""
 
 
 @dataclass
 class Walk:
-    """A run as occurrences: each node's degree, the walk's edges ``(i, exit, j, exit)`` in each node's own frame
-    (relative to its entry, §3.1.1), and what the marker forces: ``(j, p, shift)`` — occurrence ``j`` is ``p``'s
-    vertex, its exit 0 being ``p``'s exit ``shift`` (``None``: undirected, any rotation)."""
+    """A run as visits: each visit's degree, the walk's edges ``(i, exit, j, exit)`` in each visit's own frame
+    (relative to its entry, §3.1.1), the marker operations and what each sensing showed
+    (:mod:`~topomark.reference.oracle.folded_marks`)."""
 
     degree: list[int] = field(default_factory=list)
     edges: list[tuple[int, int, int, int]] = field(default_factory=list)
-    sightings: list[tuple[int, int, int | None]] = field(default_factory=list)
-    absent: set[tuple[int, int]] = field(default_factory=set)  # (j, p): the marker lay at p's vertex, not seen at j
+    ops: list[Op] = field(default_factory=list)
+    events: list[Event] = field(default_factory=list)
     seen: array = field(default_factory=lambda: array("q"))  # a hash of each signature sensed, the start's first
     left: World | None = None  # the world with the markers the actions leave in it
     scope: str | None = None  # why the run is outside the exact decision, or None
@@ -79,54 +86,44 @@ def folding_scope(kit: Kit) -> str | None:
     """Why a run with ``kit`` cannot be decided exactly here before it is even looked at, or None."""
     if kit.thread is not None:
         return "the kit has a thread"
-    if kit.edge or kit.either:
-        return "the kit has edge markers"
     return None
 
 
+def _observed(sim: Simulator) -> Observed:
+    """What the robot in ``sim`` senses of the markers, relative to its entry (§3.1.1)."""
+    v, entry = sim.state
+    layer, deg = sim.layer, sim.layer.degree(v)
+    mark = layer.vertex_mark(v)
+    head = None if mark is None or mark.head is None else (mark.head - entry) % deg
+    darts = {(m.exit - entry) % deg: (m.count, m.end) for m in layer.dart_marks(v)}
+    return (0 if mark is None else mark.count, head, darts)
+
+
 def walk(truth: World, start: tuple[str, int], kit: Kit, actions: Sequence) -> Walk:
-    """Replay ``actions`` on ``truth`` once and record the walk (:class:`Walk`); a run that leaves the scope (two
-    markers lying at once, an edge marker, a thread operation) is recorded with ``scope`` saying why."""
+    """Replay ``actions`` on ``truth`` once and record the walk (:class:`Walk`); a run that leaves the scope (a
+    thread) is recorded with ``scope`` saying why."""
     out = Walk(scope=folding_scope(kit))
     if out.scope:
         return out
     sim = Simulator(truth, start, kit)
     out.seen.append(hash(str(sim.robot().sense())))
-    states = [sim.state]
     out.degree.append(truth.degree(start[0]))
-    ground: int | None = None
+    out.events.append((0, 0, _observed(sim)))
     now = 0
-
-    def sighted() -> None:
-        if ground is None or ground == now:
-            return
-        if states[now][0] != states[ground][0]:
-            out.absent.add((now, ground))
-            return
-        shift = (states[now][1] - states[ground][1]) % out.degree[now] if kit.directional else None
-        out.sightings.append((now, ground, shift))
-
     for action in actions:
         if isinstance(action, int):
             out.seen.append(hash(str(act(sim, action))))
             out.degree.append(truth.degree(sim.state[0]))
-            states.append(sim.state)
-            out.edges.append((now, action % out.degree[now], len(states) - 1, 0))
-            now = len(states) - 1
-        elif isinstance(action, MarkerOp) and action.kind == "vertex" and action.count == 1:
+            out.edges.append((now, action % out.degree[now], len(out.degree) - 1, 0))
+            now = len(out.degree) - 1
+        elif isinstance(action, MarkerOp):
             out.seen.append(hash(str(act(sim, action))))
-            if action.pick_up:
-                sighted()
-                ground = None
-            elif ground is not None:
-                out.scope = "two vertex markers lay in the world at once"
-                return out
-            else:
-                ground = now
+            out.ops.append((now, action.kind, action.exit, action.direction,
+                            -action.count if action.pick_up else action.count))
         else:
             out.scope = f"the program used {action!r}, which the exact decision does not model"
             return out
-        sighted()
+        out.events.append((len(out.ops), now, _observed(sim)))
     out.left = sim.world.with_start(truth.start)
     return out
 
@@ -140,29 +137,32 @@ class Found:
 
 
 def _leaves(w: Walk) -> Iterator[Folding]:
-    """The finest foldings of the walk, one per choice of the rotations undirected sightings leave open; raises
-    OverflowError past :data:`MAX_BRANCHES`.  A branch that makes a visit where the marker was not seen its
-    vertex is cut at once (a coarser folding keeps the identification, docstring)."""
+    """The finest foldings of the walk that show every sensing, one per way of placing the markers the robot saw
+    (:func:`~topomark.reference.oracle.folded_marks.scan`'s deficits); raises OverflowError past
+    :data:`MAX_BRANCHES` branches."""
     base = Folding(w.degree)
     for i, ri, j, rj in w.edges:
         if not base.join(i, ri, j, rj):
             return  # the walk itself is no rotation system: cannot happen for a replayed run
-    stack, branches = [(base, 0)], 0
+    first = scan(base, w.ops, w.events)
+    stack: list[tuple[Folding, object]] = [] if first is PRUNED else [(base, first)]
+    branches = 0
     while stack:
-        f, k = stack.pop()
-        while k < len(w.sightings) and f.holds(*w.sightings[k]):
-            k += 1
-        if k == len(w.sightings):
+        f, status = stack.pop()
+        if status is None:
             yield f
             continue
-        j, p, shift = w.sightings[k]
-        if shift is not None and f.same(j, p):
-            continue  # one vertex, but the marker read at another rotation: no world along this branch
-        children = []
-        for r in [shift] if shift is not None else range(w.degree[p]):
+        assert isinstance(status, Deficit)
+        if status.forced:  # every world giving the observations takes these: no branch
             g = f.copy()
-            if g.union(j, 0, p, r) and (shift is not None or not any(g.same(a, b) for a, b in w.absent)):
-                children.append((g, k + 1))
+            if all(take(g, option) for option in status.forced) and (found := scan(g, w.ops, w.events)) is not PRUNED:
+                stack.append((g, found))
+            continue
+        children = []
+        for option in status.options:
+            g = f.copy()
+            if take(g, option) and (found := scan(g, w.ops, w.events)) is not PRUNED:
+                children.append((g, found))
         branches += max(0, len(children) - 1)
         if branches > MAX_BRANCHES:
             raise OverflowError(f"more than {MAX_BRANCHES} branches")
