@@ -207,9 +207,12 @@ class VertexCounts(MarkerWalk):
             self.probe(it, place, sig.degree)
 
     def degenerate(self, it: MarkerStep, far: MapDart) -> Exception:
-        """A join that would make a self-loop or a second edge: with fewer markers than assured a second unmarked
-        place is taken for the blank (the robot cannot tell, §6.2.1 Case 3a), so this is running out of markers,
-        like any neighbour that contradicts the map (:meth:`explored_exit`), not a bug."""
+        """A join that would make a self-loop or a second edge.  Once a place is left blank, with fewer markers
+        than assured a second unmarked place is taken for the blank (the robot cannot tell, §6.2.1 Case 3a): that
+        is running out of markers, like any neighbour that contradicts the map (:meth:`explored_exit`).  Before
+        (every place uniquely marked), and in the explorers that never leave a place blank, it is a bug."""
+        if self.blank is None:
+            return super().degenerate(it, far)
         return AlgorithmFailed(f"out of markers (fewer than the assured Σ k): iteration {it.number}: joining e = "
                                f"{it.edge} to e' = {far} would make a self-loop or a second edge")
 
