@@ -16,6 +16,7 @@ from topomark.reference.explorers.counted_markers import DirectionalVertexCounts
 from topomark.reference.worlds.generators import generate
 from topomark.reference.algorithms.registry import REGISTRY, variant
 from topomark.spec.world import Start, World
+from topomark.spec.worldfile import world_from_json
 
 from conftest import SMALL_WORLDS, bare, make_world
 
@@ -90,6 +91,21 @@ def test_fewer_markers_than_assured_is_the_failed_outcome(name, text):
     out = explore(make_world(text), name, options={"markers": 6})
     assert (out.outcome, out.verified) == ("failed", False)
     assert "out of markers" in out.reason
+
+
+K4_BLANK_TWICE = {"format": "topomark/world@1", "start": {"at": "1", "facing": "2"}, "rotation": {
+    "0": ["2", "1", "3"], "1": ["0", "2", "3"], "2": ["0", "3", "1"], "3": ["1", "2", "0"]}}
+"""K4 where Case 3a with one marker takes the second unmarked place for the blank and its probe finds the place
+it came from: the join would be a self-loop."""
+
+
+@pytest.mark.parametrize("markers", [1, 6])
+def test_a_join_that_would_make_a_self_loop_with_too_few_markers_is_running_out_of_them(markers):
+    out = explore(world_from_json(K4_BLANK_TWICE), "case-3a", options={"markers": markers})
+    if markers == 6:  # the assured Σ_{k=1}^{3} k: mapped
+        assert out.outcome == "correct"
+    else:
+        assert out.outcome == "failed" and "out of markers" in out.reason and "self-loop" in out.reason
 
 
 def test_a_misidentified_loop_edge_is_caught_by_the_checker():

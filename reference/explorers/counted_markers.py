@@ -68,8 +68,9 @@ Decisions, with the thesis references:
 * **Fewer markers than assured.**  Case 3b: the refused drop is the ``failed``
   outcome.  The vertex algorithms cannot tell the first shortage from the last
   vertex (the thesis's own rule), so a *second* unmarked place found, or a blank
-  whose degree or neighbours contradict the map, is reported as "out of markers"
-  (AlgorithmFailed) when the robot notices it.
+  whose degree or neighbours contradict the map (a probe that would join it to
+  itself or to a neighbour a second time included), is reported as "out of
+  markers" (AlgorithmFailed) when the robot notices it.
 * Algorithm 6.2 line 21 "for each other edge incident in v_k'": the probes leave
   by the relative exits 1, 2, ..., deg−1 in turn (clockwise from the entry edge),
   each failed probe returning at once (line 33, purpose ``retrace``).
@@ -204,6 +205,16 @@ class VertexCounts(MarkerWalk):
             self.loop(it, (place, (0 - sig.vertex_direction) % sig.degree))
         else:
             self.probe(it, place, sig.degree)
+
+    def degenerate(self, it: MarkerStep, far: MapDart) -> Exception:
+        """A join that would make a self-loop or a second edge.  Once a place is left blank, with fewer markers
+        than assured a second unmarked place is taken for the blank (the robot cannot tell, §6.2.1 Case 3a): that
+        is running out of markers, like any neighbour that contradicts the map (:meth:`explored_exit`).  Before
+        (every place uniquely marked), and in the explorers that never leave a place blank, it is a bug."""
+        if self.blank is None:
+            return super().degenerate(it, far)
+        return AlgorithmFailed(f"out of markers (fewer than the assured Σ k): iteration {it.number}: joining e = "
+                               f"{it.edge} to e' = {far} would make a self-loop or a second edge")
 
     def probe(self, it: MarkerStep, x: int, degree: int) -> None:
         """Lines 19–35: traverse the other edges of v_k' = ``x`` until a known neighbour over an explored edge."""
