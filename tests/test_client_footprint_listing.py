@@ -14,7 +14,7 @@ the conformance oracle.
   degree, the search's "exit for loop" (Algorithm 6.1 line 19, Algorithm 6.3 line 24) — map correctly at
   other costs than the listing's;
 * Case 1b's extension to m markers maps where topomark's listing entry does, at its cost, and gives up with one
-  marker fewer where that entry does.
+  marker fewer where that entry does; the thesis's "without further motion" for the last edge would be a guess.
 """
 
 from __future__ import annotations
@@ -136,3 +136,20 @@ def test_case_1b_maps_with_m_markers_and_gives_up_with_fewer_where_the_listing_e
         listed = explore(world, spec.name, check=False, options={"markers": markers})
         assert result.verdict == outcome and result.gave_up == (outcome == "fail"), result.message
         assert result.cost == listed.cost and (listed.outcome == "failed") == (outcome == "fail")
+
+
+NO_MOTION = """        if self.case == "1b" and not self.kit.get("undirected-either", 0):  # the last edge, with no motion
+            vk, i = self.U.pop()
+            self.exits.append([[vk, i]])
+            self.exits[vk][i] = [len(self.exits) - 1, 0]
+            return
+"""
+
+
+def test_case_1b_s_last_edge_without_further_motion_is_judged_a_guess(tmp_path):
+    """The client's decision: out of markers it still follows e.  Adding the chain's last leaf "without further
+    motion" (§6.2.1 Case 1b) leaves an edge never crossed, so the right map is a guess to the oracle."""
+    world, spec = started(g.chain(5)), algorithm_spec("case-1b-listing")
+    command = _client(tmp_path, "1b", "    def iterate(self):\n", "    def iterate(self):\n" + NO_MOTION)
+    result = run_external(world, command, version=2, kit=spec.kit_for(world.n, world.m, {"markers": world.m}))
+    assert result.verdict == "fail" and result.reason == "guess", result.message

@@ -41,11 +41,13 @@ Decisions where the listings are silent (each the one topomark's ``-listing`` en
 * the candidates are visited in the preorder of a breadth-first tree of S rooted at v_k (children by the exit
   their parent reaches them by), v_k's known neighbours included (the listing excludes v_k only); a vertex
   the robot passes on its way to a candidate is not looked at;
-* Case 1b's markers are one pool: the robot counts what it holds; when it cannot drop (the thesis's extension
-  to m markers) on a new v_u, v_u must be a leaf and U empty (it stays unmarked); on a known v_u, the one
-  entry left in U must be e' (S predicts what v_u showed there), joined with no search and no motion.  Any
-  other drop it cannot make ends the run: it sends ``error`` (it gave up: the ``failed`` outcome), after
-  following e, where the drop would be.
+* Case 1b's markers are one pool and the robot counts what it holds.  Out of markers (the thesis's extension
+  to m markers) it still walks to v_k and follows e, and only then does without the drop: a new v_u must be a
+  leaf with U empty (it stays unmarked); a known v_u must be the far end of the one entry left in U (S predicts
+  what v_u showed there), joined with no search.  The thesis processes the last edge(s) "without further
+  motion", but then the robot never crosses that edge, and nothing it sensed tells the world from one with a
+  vertex added on that edge: the oracle fails such a map as a guess.  Any other drop it cannot make ends the
+  run: it sends ``error`` (it gave up: the ``failed`` outcome), after following e, where the drop would be.
 
 Map vertices are numbered 0, 1, ... and each vertex's exits clockwise from the edge it was first entered by
 (v0: the exit it faced, the anchor @2's snapshots check).  After each iteration it sends a snapshot of (S, U).
