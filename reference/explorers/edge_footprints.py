@@ -59,10 +59,12 @@ Decisions, with the thesis references (each shown in ``tests/test_markers_621.py
   with an unexplored edge, v_u's degree and its marks, in the same order by the same paths, each checked
   where the robot goes and nowhere on the way.
 * **Case 1b with m markers**: the robot learns that it is out
-  of markers when a drop is refused (:meth:`MarkerWalk.try_drop`; the
-  kernel's robot does not count what it carries), that is *after* following
-  e in the last iteration, one traversal more than the thesis's "without
-  further motion".  Then v_u new must have degree 1 (left unmarked), or v_u
+  of markers when a drop is refused (:meth:`MarkerWalk.try_drop`), that is
+  *after* walking to v_k and following e in the last iteration, where the
+  thesis says "without further motion" (K4: 14 traversals against 12).  The
+  walk is needed: an edge never crossed leaves the map undetermined by what
+  the robot sensed (a vertex could sit on it; the oracle fails such a map
+  with reason ``guess``).  Then v_u new must have degree 1 (left unmarked), or v_u
   marked must be the far end of the one edge e' left in U (S gets e/e'
   unmarked, no search); anything else is the ``failed`` outcome.
 * **Case 1b's kit** (a gap in the kernel, reported): the thesis's markers
