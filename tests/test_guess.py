@@ -15,6 +15,7 @@ import pytest
 
 from topomark.reference.cli.main import main
 from topomark.reference.oracle import determination as d
+from topomark.reference.oracle import walk_folding as wf
 from topomark.reference.oracle.run_external import Limits, run_external
 from topomark.reference.run.simulator import Simulator
 from topomark.reference.worlds.deterministic import chain, cycle
@@ -100,3 +101,4 @@ def test_the_protocol_specification_states_the_rule_and_its_bound():
     text = (Path(__file__).resolve().parents[1] / "spec" / "protocol.md").read_text(encoding="utf-8")
     assert "### No credit for a guess" in text and "| `guess` |" in text
     assert f"{d.MAX_REPLAY_STEPS:,} actions in all per run" in text
+    assert f"{wf.MAX_BRANCHES:,} branches" in text

@@ -21,8 +21,8 @@ the verdict is ``fail`` with reason ``guess``.  The worlds tried:
 
 Decision (the thesis is silent on how an oracle should tell knowledge from luck): the check is **sound** — a guess
 is failed only with a witness world, replayed step by step by the simulator that played the run and seen to give
-every signature, which is not isomorphic to the map.  Where the program uses markers only (vertex and edge markers,
-any number, directional or not, movable or not; no thread) it is also **complete**: :mod:`~topomark.reference.oracle.walk_folding`
+every signature, which is not isomorphic to the map.  Where the program uses markers or a thread (vertex and edge
+markers, any number, directional or not, movable or not; a thread moved back only by ``rewind``) it is also **complete**: :mod:`~topomark.reference.oracle.walk_folding`
 decides it exactly, and the subdivisions and covers run beside it as an independent check (a cover witness where the
 folding found the map determined is :class:`~topomark.spec.errors.TopomarkFault`).  Elsewhere a map can be
 undetermined in ways no subdivision or two-fold cover shows.  The covers' replays are bounded by

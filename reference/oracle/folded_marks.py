@@ -32,8 +32,8 @@ Examples
 >>> all(f.join(i, 1, i + 1, 0) for i in range(3))
 True
 >>> ops = [(0, "vertex", None, None, 1)]  # an undirected marker dropped at the start
->>> events = [(0, 0, (0, None, {})), (1, 0, (1, None, {})), (1, 1, (0, None, {})), (1, 2, (0, None, {})),
-...           (1, 3, (1, None, {}))]  # seen again at the fourth visit
+>>> seen, unseen = ({"vertex": (1, None)}, {}), ({}, {})
+>>> events = [(0, 0, unseen), (1, 0, seen), (1, 1, unseen), (1, 2, unseen), (1, 3, seen)]  # seen again
 >>> found = scan(f, ops, events)
 >>> found.event, found.exit, found.options  # the fourth visit is the start's vertex, at some rotation
 (4, None, [('union', 3, 0, 0, 0), ('union', 3, 0, 0, 1)])
@@ -48,14 +48,22 @@ from typing import Sequence
 
 from topomark.reference.oracle.folding import Folding
 
-__all__ = ["Op", "Observed", "Event", "Option", "Deficit", "PRUNED", "scan", "take"]
+__all__ = ["VERTEX_KINDS", "EDGE_KINDS", "Op", "Observed", "Event", "Option", "Deficit", "PRUNED", "scan", "take"]
 
 FLIP = {"H": "T", "T": "H", None: None}
 
+VERTEX_KINDS = ("vertex", "tied", "end", "knot")
+"""Marks of a place: vertex markers (§3.1.1), and of the thread (§6.3) where it is tied (with the exit it is laid
+out toward), its free end lying there, the knots tied there."""
+EDGE_KINDS = ("edge", "thread")
+"""Marks of an edge: edge markers (§6.1) and the thread laid along it (§6.3.2: a "stringed" edge, with how often)."""
+
 Op = tuple[int, str, int | None, int | str | None, int]
-"""A marker operation at a visit: (visit, ``"vertex"`` or ``"edge"``, exit or None, direction, signed count)."""
-Observed = tuple[int, int | None, dict[int, tuple[int, str | None]]]
-"""What a visit sensed: its vertex marks' count and head, each marked exit's (count, end) — relative to its entry."""
+"""An operation at a visit: (visit, kind — one of :data:`VERTEX_KINDS` or :data:`EDGE_KINDS` —, exit or None,
+direction, signed count)."""
+Observed = tuple[dict[str, tuple[int, int | None]], dict[tuple[str, int], tuple[int, str | None]]]
+"""What a visit sensed, relative to its entry: each vertex kind's (count, head) and each marked exit's (count, end)
+by kind."""
 Event = tuple[int, int, Observed]
 """A sensing: (operations done before it, visit, what was sensed)."""
 
@@ -84,46 +92,51 @@ class Deficit:
 
 def scan(f: Folding, ops: Sequence[Op], events: Sequence[Event]) -> Deficit | bool | None:
     """Compare what ``f``'s places would show at each sensing with what was sensed (module docstring): None when
-    every sensing agrees, :data:`PRUNED` when a sensing would show more (or another direction) or lacks markers no
+    every sensing agrees, :data:`PRUNED` when a sensing would show more (or another direction) or lacks marks no
     place can give, else the first :class:`Deficit`."""
     deg = f.degree
     roots = [f.find(a) for a in range(len(deg))]
-    vmarks: dict[int, tuple[int, int | None]] = {}  # root -> (count, head in the root's exits)
-    dmarks: dict[int, dict[int, tuple[int, str | None]]] = {}  # root -> its exit -> (count, end seen from there)
+    vmarks: dict[int, dict[str, tuple[int, int | None]]] = {}  # root -> kind -> (count, head in the root's exits)
+    dmarks: dict[int, dict[tuple[str, int], tuple[int, str | None]]] = {}  # root -> (kind, its exit) -> (count, end)
     done, first = 0, None
     forced: list[Option] = []
-    for number, (before, j, (vc, vh, darts)) in enumerate(events):
+    for number, (before, j, (vertex, darts)) in enumerate(events):
         while done < before:
             if not _apply(ops[done], f, roots, vmarks, dmarks):
                 return PRUNED if first is None else first
             if ops[done][4] < 0 and first is not None:
-                return first  # a pick-up past a deficit: counts may be short there, an excess proves nothing
+                return first  # a removal past a deficit: counts may be short there, an excess proves nothing
             done += 1
         root, s = roots[j]
         d = deg[root]
-        c, h = vmarks.get(root, (0, None))
-        if (c > 0 and h is not None and vh is not None and (h - s) % d != vh) or c > vc:
-            return PRUNED
         lacks: list[tuple[int | None, list[Option]]] = []
-        if c < vc and (first is None or len(vmarks) <= 2):
-            lacks.append((None, [o for r, (k, head) in vmarks.items() if k > 0 and r != root
-                                 for o in _vertex_options(f, j, vh, r, head)]))
-        here = dmarks.get(root)
-        if here or darts:
-            here = here or {}
-            sensed = {(p + s) % d: mark for p, mark in darts.items()}
-            for x, (c, e) in here.items():
-                if c > 0 and (c > sensed.get(x, (0, None))[0] or e != sensed[x][1]):
+        here = vmarks.get(root, {})
+        for kind, (c, h) in here.items():
+            oc, oh = vertex.get(kind, (0, None))
+            if c > oc or (c > 0 and h is not None and oh is not None and (h - s) % d != oh):
+                return PRUNED
+        for kind, (oc, oh) in vertex.items():
+            if here.get(kind, (0, None))[0] < oc and (first is None or len(vmarks) <= 2):
+                lacks.append((None, [o for r, marks in vmarks.items() if r != root and marks.get(kind, (0,))[0] > 0
+                                     for o in _vertex_options(f, j, oh, r, marks[kind][1])]))
+        ends = dmarks.get(root)
+        if ends or darts:
+            ends = ends or {}
+            sensed = {(kind, (p + s) % d): mark for (kind, p), mark in darts.items()}
+            for key, (c, e) in ends.items():
+                if c > 0 and (c > sensed.get(key, (0, None))[0] or e != sensed[key][1]):
                     return PRUNED
             if first is None or len(dmarks) <= 2:
-                for x, (oc, oe) in sensed.items():
-                    if here.get(x, (0, None))[0] < oc:
-                        mine, p = {(root, x), _far(f, roots, root, x)}, (x - s) % d
-                        lacks.append((p, [o for r, marks in dmarks.items() for y, (k, end) in marks.items()
-                                          if k > 0 and (r, y) not in mine for o in _edge_options(f, j, p, oe, r, y, end)]))
+                for (kind, x), (oc, oe) in sensed.items():
+                    if ends.get((kind, x), (0, None))[0] < oc:
+                        far = _far(f, roots, root, x)
+                        mine, p = {(root, x), far}, (x - s) % d
+                        lacks.append((p, [o for r, marks in dmarks.items() for (k, y), (n, end) in marks.items()
+                                          if k == kind and n > 0 and (r, y) not in mine
+                                          for o in _edge_options(f, j, p, oe, r, y, end)]))
         for exit_, options in lacks:
             if not options:
-                return PRUNED  # no place holds the markers the visit lacks, in any coarser folding
+                return PRUNED  # no place holds the marks the visit lacks, in any coarser folding
             if first is None:
                 first = Deficit(number, exit_, options, forced)
             if len(options) == 1:
@@ -167,30 +180,31 @@ def _far(f: Folding, roots: list[tuple[int, int]], root: int, x: int) -> tuple[i
 
 
 def _apply(op: Op, f: Folding, roots: list[tuple[int, int]], vmarks: dict, dmarks: dict) -> bool:
-    """Add ``op`` to its place; False when it would make the place point two ways while markers lie there."""
+    """Add ``op`` to its place; False when it would make the place point two ways while marks lie there."""
     visit, kind, exit_, direction, count = op
     root, s = roots[visit]
     d = f.degree[root]
-    if kind == "vertex":
-        c, h = vmarks.get(root, (0, None))
+    if kind in VERTEX_KINDS:
+        at = vmarks.setdefault(root, {})
+        c, h = at.get(kind, (0, None))
         if count > 0 and isinstance(direction, int):
             head = (direction + s) % d
             if c > 0 and h is not None and h != head:
                 return False
             h = head
         c += count
-        vmarks[root] = (c, h if c > 0 else None)
+        at[kind] = (c, h if c > 0 else None)
         return True
-    assert exit_ is not None, "an edge marker is at an exit (§6.1)"
+    assert exit_ is not None and kind in EDGE_KINDS, "an edge mark is at an exit (§6.1, §6.3.2)"
     x = (exit_ + s) % d
-    c, e = dmarks.get(root, {}).get(x, (0, None))
+    c, e = dmarks.get(root, {}).get((kind, x), (0, None))
     if count > 0:
         if c > 0 and e != direction:
             return False
         e = direction
     c += count
-    dmarks.setdefault(root, {})[x] = (c, e if c > 0 else None)
+    dmarks.setdefault(root, {})[kind, x] = (c, e if c > 0 else None)
     far = _far(f, roots, root, x)
     if far is not None:
-        dmarks.setdefault(far[0], {})[far[1]] = (c, FLIP[e] if c > 0 else None)
+        dmarks.setdefault(far[0], {})[kind, far[1]] = (c, FLIP[e] if c > 0 else None)
     return True

@@ -9,12 +9,14 @@ forces, as in Stallings' folding of graphs):
 1. **the walk's own identifications.**  A motion through the same exit of the same vertex arrives at the same vertex
    by the same edge; so occurrences are joined by their edges, and two edges leaving one vertex by one exit are one
    edge (congruence, with the exits' rotation offsets);
-2. **what the markers force.**  A visit that senses markers (§3.1.1 ``V-k``, ``V#``; §6.1 ``E-p``, ``E-p-H``)
-   stands where markers were dropped and still lie: :mod:`~topomark.reference.oracle.folded_marks` sums the marker
-   operations over the folding's places and finds the first visit that would sense fewer than it did; each place
-   that then holds markers is a way to mend it (a directional reading fixes the rotation, an undirected one leaves
-   each open; an edge marker is the same dart or, on an edge no visit crossed, its far end) — a branch each — and a
-   lack only one way can mend is taken without branching;
+2. **what the marks force.**  A visit that senses marks (§3.1.1 ``V-k``, ``V#``; §6.1 ``E-p``, ``E-p-H``; §6.3 the
+   thread tied, laid along an edge, its free end, knots) stands where they were put and still lie:
+   :mod:`~topomark.reference.oracle.folded_marks` sums the operations over the folding's places — a thread laid
+   along the edge the robot crossed, picked up by a rewind, which arrives where that edge was laid from — and finds
+   the first visit that would sense fewer than it did; each place that then holds such marks is a way to mend it
+   (a directional reading fixes the rotation, an undirected one leaves each open; an edge mark is the same dart
+   or, on an edge no visit crossed, its far end) — a branch each — and a lack only one way can mend is taken
+   without branching;
 3. **the leaves.**  Each branch closed under (1) and (2) is the *finest* world the observations allow along it: a
    world with an exit no occurrence used (completed with new leaves), or one not isomorphic to the map, that gives
    every observation is a witness of a guess.  When the finest world is the map, every other world that gives the
@@ -26,10 +28,10 @@ Why this is complete (the decision, where the thesis is silent on how an oracle 
 the visits so far sense exactly what the robot did, no place holds fewer than zero markers, so identifying more
 only adds markers — a visit that would sense *more* rules out every coarser world, and a world that gives the
 observations, followed branch by branch, passes through one of the ways each lack lists; so it is a quotient of a
-leaf, and the leaf gives the observations too.  A thread (§6.3) is outside the decision — its marks depend on the
-path it was laid along, not on a place — and runs with one are judged by the sound tests of
-:mod:`topomark.reference.oracle.determination` alone (:func:`folding_scope` says why); so are runs past
-:data:`MAX_BRANCHES` branches.
+leaf, and the leaf gives the observations too.  A move back along the thread by a motion rather than a ``rewind``
+operation picks the thread up in the world played, but would lay it in another world: such a run is outside the
+decision and judged by the sound tests of :mod:`topomark.reference.oracle.determination` alone (:func:`walk`'s
+``scope`` says why); so are runs past :data:`MAX_BRANCHES` branches.
 
 Every witness found here is replayed by the simulator and compared signature by signature
 (:func:`~topomark.reference.oracle.agreement.agrees`) before it is reported.
@@ -53,10 +55,11 @@ from dataclasses import dataclass, field
 from typing import Iterator, Sequence
 
 from topomark.spec.isomorphism import find_isomorphism
-from topomark.spec.kit import Kit, MarkerOp
+from topomark.spec.kit import THREAD_OPS, Kit, MarkerOp, ThreadOp
+from topomark.spec.thread import shifted
 from topomark.spec.world import World
 
-from topomark.reference.oracle.agreement import act, agrees as replayed, matches
+from topomark.reference.oracle.agreement import REWIND, act, agrees as replayed, matches
 from topomark.reference.oracle.folded_marks import PRUNED, Deficit, Event, Observed, Op, scan, take
 from topomark.reference.oracle.folding import Folding
 from topomark.reference.run.simulator import Simulator
@@ -75,6 +78,7 @@ class Walk:
 
     degree: list[int] = field(default_factory=list)
     edges: list[tuple[int, int, int, int]] = field(default_factory=list)
+    unions: list[tuple[int, int, int, int]] = field(default_factory=list)  # (i, exit, j, exit): a rewind's arrival
     ops: list[Op] = field(default_factory=list)
     events: list[Event] = field(default_factory=list)
     seen: array = field(default_factory=lambda: array("q"))  # a hash of each signature sensed, the start's first
@@ -83,46 +87,97 @@ class Walk:
 
 
 def folding_scope(kit: Kit) -> str | None:
-    """Why a run with ``kit`` cannot be decided exactly here before it is even looked at, or None."""
-    if kit.thread is not None:
-        return "the kit has a thread"
+    """Why a run with ``kit`` cannot be decided exactly here before it is even looked at, or None (every kit can)."""
     return None
 
 
 def _observed(sim: Simulator) -> Observed:
-    """What the robot in ``sim`` senses of the markers, relative to its entry (§3.1.1)."""
+    """What the robot in ``sim`` senses of the markers and the thread, relative to its entry (§3.1.1, §6.3)."""
     v, entry = sim.state
     layer, deg = sim.layer, sim.layer.degree(v)
+    vertex: dict[str, tuple[int, int | None]] = {}
     mark = layer.vertex_mark(v)
-    head = None if mark is None or mark.head is None else (mark.head - entry) % deg
-    darts = {(m.exit - entry) % deg: (m.count, m.end) for m in layer.dart_marks(v)}
-    return (0 if mark is None else mark.count, head, darts)
+    if mark is not None:
+        vertex["vertex"] = (mark.count, None if mark.head is None else (mark.head - entry) % deg)
+    darts = {("edge", (m.exit - entry) % deg): (m.count, m.end) for m in layer.dart_marks(v)}
+    thread = layer.thread_mark(v)
+    if thread is not None:
+        thread = shifted(thread, entry, deg)
+        for kind, count, head in (("tied", int(thread.tied), thread.head), ("end", int(thread.end), None),
+                                  ("knot", thread.knots, None)):
+            if count:
+                vertex[kind] = (count, head)
+        darts.update((("thread", x), (times, None)) for x, times in thread.edges)
+    return vertex, darts
+
+
+class _Thread:
+    """The thread as the walk laid it: its laid edges ``(visit, exit, visit)`` and the knots at each length."""
+
+    def __init__(self) -> None:
+        self.laid: list[tuple[int, int, int]] = []
+        self.knots: dict[int, list[tuple[int, int]]] = {}
+        self.left = False  # the free end lies where it was left
+
+    def op(self, out: Walk, now: int, op: ThreadOp) -> None:
+        """Record ``op`` at visit ``now`` as the marks it adds or removes."""
+        if op.op == "tie":
+            out.ops.append((now, "tied", None, op.direction, 1))
+        elif op.op == "untie":  # the thread goes, with its knots and its free end
+            out.ops.append((now, "tied", None, None, -1))
+            out.ops.extend((at, "knot", None, None, -k) for at, k in self.knots.pop(0, []))
+            if self.left:
+                out.ops.append((now, "end", None, None, -1))
+            self.left = False
+        elif op.op in ("leave", "take"):
+            self.left = op.op == "leave"
+            out.ops.append((now, "end", None, None, 1 if self.left else -1))
+        else:
+            assert op.op == "knot", f"a thread operation is one of {THREAD_OPS}"
+            out.ops.append((now, "knot", None, None, op.count))
+            self.knots.setdefault(len(self.laid), []).append((now, op.count))
+
+    def rewound(self, out: Walk) -> tuple[int, int]:
+        """The last laid edge picked up (its knots beyond with it): the visit and exit it was laid from."""
+        out.ops.extend((at, "knot", None, None, -k) for at, k in self.knots.pop(len(self.laid), []))
+        i, p, _ = self.laid.pop()
+        out.ops.append((i, "thread", p, None, -1))
+        return i, p
 
 
 def walk(truth: World, start: tuple[str, int], kit: Kit, actions: Sequence) -> Walk:
-    """Replay ``actions`` on ``truth`` once and record the walk (:class:`Walk`); a run that leaves the scope (a
-    thread) is recorded with ``scope`` saying why."""
+    """Replay ``actions`` on ``truth`` once and record the walk (:class:`Walk`); a run that leaves the scope is
+    recorded with ``scope`` saying why."""
     out = Walk(scope=folding_scope(kit))
-    if out.scope:
-        return out
-    sim = Simulator(truth, start, kit)
+    sim, thread = Simulator(truth, start, kit), _Thread()
     out.seen.append(hash(str(sim.robot().sense())))
     out.degree.append(truth.degree(start[0]))
     out.events.append((0, 0, _observed(sim)))
     now = 0
     for action in actions:
-        if isinstance(action, int):
-            out.seen.append(hash(str(act(sim, action))))
+        laid = len(sim.layer.thread.laid)
+        out.seen.append(hash(str(act(sim, action))))
+        if isinstance(action, int) or action == REWIND:
             out.degree.append(truth.degree(sim.state[0]))
-            out.edges.append((now, action % out.degree[now], len(out.degree) - 1, 0))
-            now = len(out.degree) - 1
+            new = len(out.degree) - 1
+            if len(sim.layer.thread.laid) < laid and action != REWIND:
+                out.scope = "a move went back along the thread without a rewind operation"
+                return out
+            if action == REWIND:
+                i, p = thread.rewound(out)
+                out.unions.append((new, 0, i, p))  # back along the laid edge: to the visit it was laid from
+            else:
+                out.edges.append((now, action % out.degree[now], new, 0))
+                if len(sim.layer.thread.laid) > laid:
+                    thread.laid.append((now, action % out.degree[now], new))
+                    out.ops.append((now, "thread", action % out.degree[now], None, 1))
+            now = new
         elif isinstance(action, MarkerOp):
-            out.seen.append(hash(str(act(sim, action))))
             out.ops.append((now, action.kind, action.exit, action.direction,
                             -action.count if action.pick_up else action.count))
         else:
-            out.scope = f"the program used {action!r}, which the exact decision does not model"
-            return out
+            assert isinstance(action, ThreadOp), "an action is a motion, an operation or a rewind"
+            thread.op(out, now, action)
         out.events.append((len(out.ops), now, _observed(sim)))
     out.left = sim.world.with_start(truth.start)
     return out
@@ -144,6 +199,9 @@ def _leaves(w: Walk) -> Iterator[Folding]:
     for i, ri, j, rj in w.edges:
         if not base.join(i, ri, j, rj):
             return  # the walk itself is no rotation system: cannot happen for a replayed run
+    for i, ri, j, rj in w.unions:
+        if not base.union(i, ri, j, rj):
+            return
     first = scan(base, w.ops, w.events)
     stack: list[tuple[Folding, object]] = [] if first is PRUNED else [(base, first)]
     branches = 0
