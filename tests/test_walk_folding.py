@@ -158,7 +158,7 @@ def _cross_check(kit: Kit, walks: int = 60) -> dict[str, int]:
         actions = _random_walk(rng, truth, kit, rng.randint(0, 20))
         try:
             found = wf.decide(truth, truth.start_state(), kit, actions)
-        except ValueError:  # a move back along the thread without a rewind: outside the decision
+        except ValueError:  # back along an edge the thread lay on twice, without a rewind: outside the decision
             tally["outside"] = tally.get("outside", 0) + 1
             continue
         small = _brute(truth, kit, actions, worlds)
@@ -228,15 +228,20 @@ def test_a_folding_that_puts_a_mark_where_none_was_sensed_is_cut_and_one_short_o
     assert right.union(3, 0, 0, 0) and fm.scan(right, walk.ops, walk.events) is None
 
 
-def test_a_move_back_along_the_thread_without_a_rewind_is_outside_the_exact_decision():
+def test_a_move_back_along_the_thread_is_decided_unless_the_edge_held_it_twice():
     three = cycle(3)
-    kit = Kit(thread=3)
+    kit = Kit(thread=6)
     tie = ThreadOp("tie")
     assert wf.walk(three, three.start_state(), kit, [tie, 1, d.REWIND]).scope is None
-    assert wf.walk(three, three.start_state(), kit, [tie, 1, 0]).scope == \
-        "a move went back along the thread without a rewind operation"
-    found = d.determination(three, three.start_state(), kit, [tie, 1, 0], three)
-    assert not found.exact and found.witness is not None  # the sound tests still judge it
+    back = [tie, 1, 0]  # a motion back along the one laid edge: the robot senses it empty, so in every world
+    assert wf.walk(three, three.start_state(), kit, back).scope is None
+    assert wf.decide(three, three.start_state(), kit, back) is not None  # one edge seen: a guess, decided exactly
+    twice = [tie, 1, 1, 1, 1, 0]  # a lap and one more edge: the thread lies twice on the first edge
+    assert wf.walk(three, three.start_state(), kit, twice).scope == \
+        "a move went back along an edge the thread lay on twice, without a rewind operation"
+    with pytest.raises(ValueError):
+        wf.decide(three, three.start_state(), kit, twice)
+    assert not d.determination(three, three.start_state(), kit, twice, three).exact  # the sound tests alone
 
 
 def test_untying_takes_the_free_end_left_lying_with_it(monkeypatch):

@@ -28,10 +28,12 @@ Why this is complete (the decision, where the thesis is silent on how an oracle 
 the visits so far sense exactly what the robot did, no place holds fewer than zero markers, so identifying more
 only adds markers — a visit that would sense *more* rules out every coarser world, and a world that gives the
 observations, followed branch by branch, passes through one of the ways each lack lists; so it is a quotient of a
-leaf, and the leaf gives the observations too.  A move back along the thread by a motion rather than a ``rewind``
-operation picks the thread up in the world played, but would lay it in another world: such a run is outside the
-decision and judged by the sound tests of :mod:`topomark.reference.oracle.determination` alone (:func:`walk`'s
-``scope`` says why); so are runs past :data:`MAX_BRANCHES` branches.
+leaf, and the leaf gives the observations too.  A move back along the last laid edge by a motion rather than a
+``rewind`` picks the thread up; where that leaves no thread on the edge the robot senses so, and in any world
+that gives the observations the move picked it up too; where the thread lay on that edge twice, another world
+could have laid it a third time instead: such a run is outside the decision and judged by the sound tests of
+:mod:`topomark.reference.oracle.determination` alone (:func:`walk`'s ``scope`` says why); so are runs past
+:data:`MAX_BRANCHES` branches.
 
 Every witness found here is replayed by the simulator and compared signature by signature
 (:func:`~topomark.reference.oracle.agreement.agrees`) before it is reported.
@@ -160,15 +162,16 @@ def walk(truth: World, start: tuple[str, int], kit: Kit, actions: Sequence) -> W
         if isinstance(action, int) or action == REWIND:
             out.degree.append(truth.degree(sim.state[0]))
             new = len(out.degree) - 1
-            if len(sim.layer.thread.laid) < laid and action != REWIND:
-                out.scope = "a move went back along the thread without a rewind operation"
+            back = len(sim.layer.thread.laid) < laid
+            if back and action != REWIND and ("thread", 0) in _observed(sim)[1]:
+                out.scope = "a move went back along an edge the thread lay on twice, without a rewind operation"
                 return out
-            if action == REWIND:
+            if back:  # a rewind, or a move along the last laid edge that leaves no thread there: one in any world
                 i, p = thread.rewound(out)
                 out.unions.append((new, 0, i, p))  # back along the laid edge: to the visit it was laid from
-            else:
+            if action != REWIND:
                 out.edges.append((now, action % out.degree[now], new, 0))
-                if len(sim.layer.thread.laid) > laid:
+                if len(sim.layer.thread.laid) > laid:  # laid along the edge crossed
                     thread.laid.append((now, action % out.degree[now], new))
                     out.ops.append((now, "thread", action % out.degree[now], None, 1))
             now = new
