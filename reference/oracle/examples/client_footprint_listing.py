@@ -58,7 +58,8 @@ import re
 import sys
 from collections import deque
 
-NON_LOOP = {"1a": 1, "1b": 0, "2": 2, "4": 1, "4-mn": 2}  # markers on a non-loop edge (Case 4: from unmarked v_k)
+NON_LOOP = {"1a": 1, "1b": 0, "2": 2, "4": 1, "4-mn": 2, "footprints": 1}  # on a non-loop edge (4: unmarked v_k)
+FOOTPRINTED = {"1b", "footprints"}  # the cases that drop a marker at every vertex (v0 first)
 
 
 def send(msg):
@@ -111,7 +112,7 @@ class Explorer:
         self.marks = {}  # S's edge marks: (v, i) -> count, at both darts of an explored edge
         self.vmarks = []  # Case 1b: the vertices of S carrying a V-marker
         self.pos = (0, 0)  # (map vertex, the exit it was entered by)
-        if case == "1b":
+        if case in FOOTPRINTED:
             if not self.drop("vertex", 1, 0):  # "Initially the robot drops a marker at its starting vertex v0"
                 give_up("no marker for v0")
             self.vmarks.append(0)
@@ -201,7 +202,7 @@ class Explorer:
         for _, x in self.path(parent, self.pos[0], vk):  # line 4 [4]
             self.move(x)
         sig = self.step((i - self.pos[1]) % len(self.exits[vk]))
-        if (sig[1] == 0) if self.case == "1b" else not sig[2]:
+        if (sig[1] == 0) if self.case in FOOTPRINTED else not sig[2]:
             self.new_place(e, sig[0], vk_marked)  # lines 5-8 [8-13]
         else:
             self.known_place(e, sig)  # lines 9-19 [14-24]
@@ -222,10 +223,10 @@ class Explorer:
         self.exits[e[0]][e[1]] = [u, 0]
         self.U += [(u, j) for j in range(1, degree)]
         self.pos = (u, 0)
-        if self.case == "1b":
+        if self.case in FOOTPRINTED:
             if self.drop("vertex", 1, 0):
                 self.vmarks.append(u)
-            elif degree != 1 or self.U:  # Case 1b's extension: only the last vertex, a leaf, may stay blank
+            elif self.case == "footprints" or degree != 1 or self.U:  # Case 1b's extension: only the last vertex, a leaf, may stay blank
                 give_up("out of markers with exploration not over")
 
     def known_place(self, e, sig):
@@ -267,6 +268,8 @@ class Explorer:
         shows them, in the preorder of a breadth-first tree of S rooted at v_k.  --edgeinfo (§6.2.2): only those
         with an unexplored entry j from which S reads what was sensed at v_u (edgeINFO)."""
         chosen = {v for v, _ in self.U if v != vk and len(self.exits[v]) == degree and self.shown(v) == key}
+        if self.case == "footprints":  # §2.3.1: "each (other) known vertex in S which has the same degree as v_u"
+            chosen = {v for v in range(len(self.exits)) if v != vk and len(self.exits[v]) == degree}
         if self.edgeinfo:
             chosen = {v for v, j in self.U if v in chosen and self.predicted(v, j)[3] == sig[3]}
         _, parent = self.bfs(vk)
