@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """The footprint searches of §6.2.1 as listed: Algorithm 6.1 (Case 2, m + n E-markers), Algorithm 6.3 (Case 4,
-closest-first) and the text of Cases 1a and 1b, speaking topomark/protocol@2.
+closest-first) and the text of Cases 1a and 1b; with ``--edgeinfo`` their §6.2.2 directional versions; with
+``--case footprints`` §2.3.1's footprints model as written; speaking topomark/protocol@2.
 
 Standalone on purpose (standard library only, no topomark import), written from the listings and the text of
 §6.2.1 alone.  Run it under topomark, which plays the world and judges the map:
@@ -10,7 +11,8 @@ Standalone on purpose (standard library only, no topomark import), written from 
 ``--case`` picks the algorithm (and the entry whose suite it plays): ``2`` Algorithm 6.1 (``case-2-listing``),
 ``4`` Algorithm 6.3 (``case-4-listing``), ``4-mn`` Case 4's closest-first extension of Case 2
 (``case-4-mn-listing``), ``1a`` Case 1a's m E-markers (``case-1a-listing``), ``1b`` Case 1b's V-E-markers
-(``case-1b-listing``).  The markers are undirected; the kit is read from ``hello``.  Line by line (Algorithm 6.1;
+(``case-1b-listing``), ``footprints`` (``footprints-listing``).  The markers are undirected (``--edgeinfo``:
+directional); the kit is read from ``hello``.  Line by line (Algorithm 6.1;
 Algorithm 6.3's numbers in brackets):
 
 * line 1 [1]: S = {v0}, U = v0's exits in order (exit 0 the one faced).  Case 1b: "Initially the robot drops a
@@ -48,6 +50,24 @@ Decisions where the listings are silent (each the one topomark's ``-listing`` en
   motion", but then the robot never crosses that edge, and nothing it sensed tells the world from one with a
   vertex added on that edge: the oracle fails such a map as a guess.  Any other drop it cannot make ends the
   run: it sends ``error`` (it gave up: the ``failed`` outcome), after following e, where the drop would be.
+
+``--case footprints`` is §2.3.1's footprints model (Deng and Mirzaian, m + n homogeneous markers, Figure 2.4;
+entry ``footprints-listing``), written from its text: a footprint at v0 and at each new vertex, one on every
+edge; v_u "contains no marker" is a new place; otherwise one footprint on e, back to v_k, and "each (other)
+known vertex in S which has the same degree as v_u" is a candidate, visited and checked as above (not filtered
+by marks or an unexplored edge: the text names the degree only).  Its kit is one pool of m + n, never short.
+
+``--edgeinfo`` is §6.2.2's improvement with directional markers (Figure 6.14; entries
+``case-*-edgeinfo-listing``, every case but footprints): the same drops, each with a direction, and one more
+filter on the candidates.  Decisions where §6.2.2 is silent (topomark's edgeINFO entries make the same):
+
+* a V-marker points at the edge the robot entered by (v0: the exit it faces), so at map exit 0 everywhere;
+* every E-marker's head is at v_u, where it is dropped: a non-loop e reads ``-H`` at the new vertex, ``-T``
+  at v_k; a loop e reads ``-H`` at v_k' and ``-T`` at v_k;
+* edgeINFO made exact: a candidate stays only if, from one of its unexplored exits j, S's marks read (heads,
+  counts, ends, relative to j) exactly what the robot sensed on arriving at v_u, before the drop on e.  For
+  Cases 2, 1a and 4, which drop no V-marker, the reading is anchored at the entry; the filter never excludes
+  the true v_k' (S holds every marker in the world), and a single candidate left is still visited.
 
 Map vertices are numbered 0, 1, ... and each vertex's exits clockwise from the edge it was first entered by
 (v0: the exit it faced, the anchor @2's snapshots check).  After each iteration it sends a snapshot of (S, U).
