@@ -22,6 +22,14 @@ follows the listing to the letter and gives up there, exactly as it judges topom
   sensed again) with K = 4 and 5 markers: the client's cost is the literal entry's;
 * the seeded faults: a copy that joins e to the wrong exit of v_k' fails (a wrong map), and a copy that leaves out
   line 22 (no marked neighbour v_n after the lighthouse v_l) costs other than the listing.
+
+``--version 2`` is Algorithm 6.5 as listed (``case-5-v2-listing``), whose line 23 as printed confirms no
+hypothesis: it plays that listing's suite with its rows case for case; against ``case-5-v2``'s suite its one FAIL
+is the wrong map of ``lattice-2x3-markers-4`` (K = 4, phase II must close a loop), where topomark's literal run
+ends ``wrong-map`` too, and a copy with line 23 read "match throughout" (the variant's reading) passes that suite
+with its costs.  The paw entered from its pendant with K = 4 is mapped wrongly, as the registration says.  Seeded
+faults: a wrong join fails; a search that leaves out line 12's marks condition costs other than the listing
+(complete:n=5, 27 against 22).
 """
 
 from __future__ import annotations

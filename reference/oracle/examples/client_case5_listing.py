@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""Algorithm 6.4 of the thesis as listed (§6.2.1 Case 5, k > 3 undirected markers, Version-1), and with
-``--directional`` Table 6.2's "unknown k > 3" row (§6.2.2: Version-1 with directional V-markers), speaking
-topomark/protocol@2.
+"""Algorithm 6.4 of the thesis as listed (§6.2.1 Case 5, k > 3 undirected markers, Version-1), with
+``--version 2`` Algorithm 6.5 as listed (Version-2), and with ``--directional`` Table 6.2's "unknown k > 3" row
+(§6.2.2: Version-1 with directional V-markers), speaking topomark/protocol@2.
 
 Standalone on purpose (standard library only, no topomark import), written from the listing of Algorithm 6.4
 and the text of §6.2.1 Case 5 and §6.2.2 alone.  Run it under topomark, which plays the world and judges the map:
@@ -9,6 +9,7 @@ and the text of §6.2.1 Case 5 and §6.2.2 alone.  Run it under topomark, which 
     topomark conformance run SUITE --algorithm case-5-v1-listing -- python3 client_case5_listing.py
     topomark conformance run SUITE --algorithm case-5-directional-listing -- python3 client_case5_listing.py \
         --directional
+    topomark conformance run SUITE --algorithm case-5-v2-listing -- python3 client_case5_listing.py --version 2
 
 The listing is followed *to the letter, where it fails too*: its counter (lines 1, 3, 13, 15) gives v0 one
 marker and, since i starts at 1 and grows only after a drop, the first new place one marker as well — two
@@ -50,6 +51,35 @@ Where the listing is silent (topomark's literal entries, ``case-5-v1-listing`` a
 line 8's probes (clockwise from e), line 12 as the count of markers left, the lighthouse's tie-break and v_n's
 choice, and the retrace of a rejected hypothesis.  Anything the map contradicts (a count no place shows, a degree
 that differs, no probe finding a known neighbour, an e' not in U) makes the robot give up.
+
+``--version 2`` follows Algorithm 6.5 (Version-2, undirected V-E-markers, ``case-5-v2-listing``), line by line:
+
+* line 1: two markers at v0 and two on the edge it faces, e0 (v0's exit 0);
+* lines 2-4: S, U and e as above (the nearest edge, a shortest path of S to v_k);
+* lines 5-7: v_u shows two V-markers: v0, entered p exits clockwise of e0 where the robot senses e0's two
+  markers at relative exit p; loop augmentation with no motion.  (e0 taken again from v0 once its far end is
+  known joins that far end, the other place showing e0's two markers; under the nearest policy e0 is the first
+  edge taken, so this never happens);
+* lines 8-13: one V-marker and markers left: one marker on e (from v_u, on its entry edge), back to v_k over e,
+  and the search of Case 1 (Algorithm 6.1 lines 11-19 as listed): every vertex of S but v_k with an unexplored
+  edge, v_u's degree and v_u's edge marks as S shows them, in the preorder of a breadth-first tree of S rooted at
+  v_k, each reached by a shortest path from where the robot stands and sensed on arrival only; the one showing
+  a marked edge S does not show is v_k' and that edge e'.  Loop augmentation, e/e' carrying one marker;
+* lines 29-33: no V-marker and markers left: a new place, e its exit 0, one marker there;
+* lines 14-28, 34-37 (phase II, the markers spent): H is every unexplored edge e' = (v_k', i'), v_k' ≠ v_k, whose
+  known end, entered by e', shows v_u's whole signature (degree, V-markers, edge marks); M_h' follows a shortest
+  path of S from v_k' to v0 (the breadth-first search from v_k'), P^E what S predicts along it, v0's two markers
+  on e0 fixing the entry.  Each is executed and retraced as in Version-1.  **Line 23 as printed** ("case P and
+  P^E do not match throughout → confirm hypothesis") repeats line 21's condition, so a hypothesis that matched
+  throughout is not confirmed: the client follows the line (``LINE_23_AS_PRINTED``), retraces every hypothesis,
+  and v_u always joins S as a new place with the marks it showed (line 28).  Where phase II must close a loop
+  this adds a known place again, a wrong map the oracle fails — as topomark's ``case-5-v2-listing`` ends
+  ``wrong-map`` (the paw entered from its pendant with K = 4).
+
+Version-2's decisions where the listing is silent (topomark's ``case-5-v2-listing`` makes the same): with one
+pool of K markers (``{"undirected-either": K}``) the robot counts what it dropped, and "has one or more markers"
+(lines 9, 31) is K minus that; with a split kit (vertex and edge markers apart) the pool is not counted, the kit
+being enough for phase I; the marker on e is dropped from v_u right after sensing it, no traversal.
 
 Map vertices are numbered 0, 1, ... and each vertex's exits clockwise from the edge it was first entered by (v0:
 the exit it faced).  After each iteration it sends a snapshot of (S, U).
@@ -495,7 +525,8 @@ class Version2(Explorer):
         names = ["s%d" % v for v in range(len(self.exits))]
         markers = [{"kind": "vertex", "at": names[v], "count": c} for v, c in sorted(self.count_of.items())]
         markers += [{"kind": "edge", "between": [names[v], names[self.exits[v][i][0]]], "count": c}
-                    for (v, i), c in sorted(self.emarks.items()) if self.exits[v][i] and (v, i) < tuple(self.exits[v][i])]
+                    for (v, i), c in sorted(self.emarks.items())
+                    if self.exits[v][i] and (v, i) < tuple(self.exits[v][i])]
         send({"type": "map", "world": {
             "format": "topomark/world@1",
             "rotation": {names[v]: [names[w] for w, _ in row] for v, row in enumerate(self.exits)},
