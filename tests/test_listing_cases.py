@@ -181,6 +181,31 @@ def test_algorithm_6_5_line_23_as_printed_maps_the_paw_wrongly_and_the_suite_hol
     assert any("markers" in case[0] for case, _, _ in reference_runs(algorithm_spec("case-5-v2")))
 
 
+def test_an_unchecked_run_whose_map_outgrows_the_world_stops(monkeypatch):
+    """Algorithm 6.5's line 23 as printed adds known places again as new ones for ever on the 2×3 lattice with
+    K = 4: the checked run ends ``wrong-map`` at its first wrong snapshot, and the unchecked one, which nothing
+    else would stop, ends ``limit`` once its map has more places or edges than the world — at the same cost."""
+    from topomark.reference.run import explore as run_core
+    from topomark.reference.worlds.generators import generate
+
+    lattice = generate("lattice", rows=2, cols=3)
+    checked = explore(lattice, "case-5-v2-listing", options={"markers": 4})
+    unchecked = explore(lattice, "case-5-v2-listing", options={"markers": 4}, check=False, record=False)
+    assert checked.outcome == "wrong-map" and unchecked.outcome == "limit" and unchecked.cost == checked.cost
+    assert "outgrown the world" in unchecked.reason and "unchecked run stops" in unchecked.reason
+    monkeypatch.setattr(run_core._WrongJoins, "after_iteration",  # the seeded fault: the guard left out; the cap
+                        lambda self, checker, explorer, it: None)  # of 50 iterations stands in for the endless run
+    iterations = []
+
+    def cap(explored: int, m: int, cost: int) -> None:
+        iterations.append(cost)
+        if len(iterations) > 50:
+            raise RuntimeError("still running after 50 iterations")
+
+    with pytest.raises(RuntimeError):
+        explore(lattice, "case-5-v2-listing", options={"markers": 4}, check=False, record=False, progress=cap)
+
+
 @pytest.fixture(scope="module")
 def suite(tmp_path_factory) -> Path:
     root = tmp_path_factory.mktemp("listing-cases") / "suite"

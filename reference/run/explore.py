@@ -221,7 +221,11 @@ class _WrongJoins:
     ``failed`` (the reason names the iteration where the map went wrong), ``wrong-map`` (the first violation),
     or, once the believed map has more places or edges than the world (it can then never become the world, and
     every new place is being taken for a new one), ``limit``.  A checked run and an unchecked one end alike.
-    Under an explicit lighthouse the first violation stops the run: Lemma 1 says it cannot happen."""
+    Under an explicit lighthouse the first violation stops the run: Lemma 1 says it cannot happen.
+
+    An unchecked run (no checker) whose believed map outgrows the world ends ``limit`` too, under any
+    lighthouse or none: nothing else would stop a listing that keeps adding known places as new ones (Algorithm
+    6.5 line 23 as printed), and the run core, which sees the world, knows that map can never be right."""
 
     def __init__(self, world: World, light: Lighthouse | None):
         self.world, self.deferred = world, light is not None and not light.certain
@@ -237,10 +241,12 @@ class _WrongJoins:
                 raise
             self.first = exc.violation
         S = getattr(explorer, "S", None)
-        if self.deferred and S is not None and (S.n > self.world.n or S.edge_count > self.world.m):
+        if (self.deferred or checker is None) and S is not None and (S.n > self.world.n
+                                                                      or S.edge_count > self.world.m):
+            why = ("every new place is taken for a new one, and the algorithm would never terminate (§5.2.1)"
+                   if self.deferred else "it can never become the world's; an unchecked run stops here")
             raise LimitReached(f"the believed map has outgrown the world ({S.n} places, {S.edge_count} edges; the "
-                               f"world has {self.world.n} and {self.world.m}): every new place is taken for a new "
-                               "one, and the algorithm would never terminate (§5.2.1)")
+                               f"world has {self.world.n} and {self.world.m}): {why}")
 
     def verdict(self, violation, stopped):
         """The run's violation and stop, the first deferred violation named."""
