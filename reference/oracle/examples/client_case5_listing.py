@@ -272,24 +272,33 @@ class Explorer:
     def phase_two(self, e, degree):
         heading = 0  # where the robot stands at v_u: its entry edge counted clockwise from e
         for h in self.hypotheses(e[0], degree):  # lines 19-20
-            done, degrees, matched = [], [degree], True
-            for k, (motion, want) in enumerate(zip(h["motions"], h["expected"])):  # line 25
-                physical = (motion - heading) % degree if k == 0 else motion
-                got = self.step(physical)
-                done.append(physical)
-                degrees.append(got[0])
-                if got != want:
-                    matched = False
-                    break
+            matched, done, degrees = self.execute(h, degree, heading)
             if matched:  # lines 29-33
                 self.join(e, h["dart"])
                 self.pos = h["end"]
                 return
-            self.step(0)  # line 28: back to v_u, the last motion first
-            for t in range(len(done) - 1, 0, -1):
-                self.step(-done[t] % degrees[t])
-            heading = (heading + done[0]) % degree
+            heading = self.retrace(done, degrees, heading, degree)
         self.new_place(e, degree, heading)  # line 35: v_u unmarked
+
+    def execute(self, h, degree, heading):
+        """Line 25: M_h' from v_u, its first motion turned by where the robot stands there, up to the first
+        perception that differs from P^E; whether all matched, the motions made and the degrees met."""
+        done, degrees = [], [degree]
+        for k, (motion, want) in enumerate(zip(h["motions"], h["expected"])):
+            physical = (motion - heading) % degree if k == 0 else motion
+            got = self.step(physical)
+            done.append(physical)
+            degrees.append(got[0])
+            if got != want:
+                return False, done, degrees
+        return True, done, degrees
+
+    def retrace(self, done, degrees, heading, degree):
+        """Line 28: back to v_u, the last motion first; where the robot then stands at v_u."""
+        self.step(0)
+        for t in range(len(done) - 1, 0, -1):
+            self.step(-done[t] % degrees[t])
+        return (heading + done[0]) % degree
 
     def marks(self):
         return [{"vertex": v, "count": c, "head": 0 if DIRECTIONAL else None} for v, c in sorted(self.count_of.items())]

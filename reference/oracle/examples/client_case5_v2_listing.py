@@ -201,23 +201,12 @@ class Version2(Explorer):
         degree = sig[0]
         heading = 0
         for h in self.hypotheses2(e[0], sig):
-            done, degrees, matched = [], [degree], True
-            for k, (motion, want) in enumerate(zip(h["motions"], h["expected"])):  # line 19
-                physical = (motion - heading) % degree if k == 0 else motion
-                got = self.step(physical)
-                done.append(physical)
-                degrees.append(got[0])
-                if got != want:
-                    matched = False
-                    break  # lines 21-22: reject, continue
+            matched, done, degrees = self.execute(h, degree, heading)  # lines 19-22: a mismatch rejects
             if matched != LINE_23_AS_PRINTED:  # line 23: "case P and P^E do not match throughout -> confirm"
                 self.join(e, h["dart"])
                 self.pos = h["end"]
                 return
-            self.step(0)  # back to v_u
-            for t in range(len(done) - 1, 0, -1):
-                self.step(-done[t] % degrees[t])
-            heading = (heading + done[0]) % degree
+            heading = self.retrace(done, degrees, heading, degree)
         self.arrived(self.new_place(e, degree, heading), sig)  # line 28 (line 23 confirmed nothing)
 
     def run(self):
