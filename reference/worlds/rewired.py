@@ -77,7 +77,7 @@ def rewired_strip(n: int) -> World:
     at place 0 facing place 1; 4-regular, m = 2n.  At n = 100 only those places differ from the closed strip."""
     n = integer_param("n", n, REWIRED_FROM)
     if n % 2:
-        raise InvalidInput(f"rewired-strip: n must be even (the closed strip it rewires is), not {n}")
+        raise InvalidInput(f"n must be even (the closed strip it rewires is), got {n}")
     check_size(n, 2 * n, f"rewired-strip:n={n}")
     rotation = dict(strip(n, 1).rotation)
     for x, listed in REWIRING.items():
