@@ -30,7 +30,9 @@ here:
   worlds ``topomark worst-case`` found, with their starts (§7.2);
 * :mod:`~topomark.reference.worlds.expensive` -- :func:`strip`, :func:`circulant`,
   :func:`k5e_chain` and :func:`cylinder`: families of maximum degree 4 that make
-  Algorithm 3.1 expensive, with their starts (§3.5.2, §7.2).
+  Algorithm 3.1 expensive, with their starts (§3.5.2, §7.2);
+* :mod:`~topomark.reference.worlds.rewired` -- :func:`rewired_strip`: the closed strip
+  rewired as a search found at n = 100, moved to any even size (§7.2).
 
 This module holds the registry the CLI uses: :data:`GENERATORS`,
 :data:`PARAMETERS`, :func:`generate` and :func:`DEFAULT_WORLD`.
@@ -78,6 +80,7 @@ from topomark.reference.worlds.deterministic import chain, complete, cycle, latt
 from topomark.reference.worlds.figures import figure_6_10, figure_6_15
 from topomark.reference.worlds.worst_cases import worst_case_world
 from topomark.reference.worlds.expensive import circulant, cylinder, k5e_chain, strip
+from topomark.reference.worlds.rewired import rewired_strip
 from topomark.reference.worlds.holes import complete_hole, lattice_hole
 from topomark.reference.worlds.random_worlds import OtherPairs, random_graph, small_world  # noqa: F401 - OtherPairs: for tests
 from topomark.proofs.wheels import (WHEEL_A_ROTATION, WHEEL_B_ROTATION, wheel_a, wheel_b, wheel_pair,
@@ -110,6 +113,7 @@ __all__ = [
     "circulant",
     "k5e_chain",
     "cylinder",
+    "rewired_strip",
     "GENERATORS",
     "PARAMETERS",
     "generate",
@@ -137,6 +141,7 @@ GENERATORS: dict[str, Callable[..., World]] = {
     "circulant": circulant,
     "k5e-chain": k5e_chain,
     "cylinder": cylinder,
+    "rewired-strip": rewired_strip,
 }
 """CLI name -> generator function."""
 
@@ -164,6 +169,8 @@ PARAMETERS: dict[str, dict[str, Any]] = {
     "circulant": {"n": 12, "k": 2},
     "k5e-chain": {"gadgets": 3},
     "cylinder": {"rings": 4, "size": 4},
+    # The closed strip rewired as the search found at n = 100, moved to n places (worlds/rewired.py).
+    "rewired-strip": {"n": 100},
 }
 """CLI name -> {parameter name: default}.  The default's type is the parameter's type
 (int, float or str); ``generate`` fills in missing parameters from here."""
