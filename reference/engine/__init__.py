@@ -41,7 +41,7 @@ from topomark.reference.explorers.policies import EDGE_POLICIES, HYPOTHESIS_POLI
 __all__ = ["available", "supports", "notice", "choose", "ENGINES", "ENGINE_ALGORITHMS", "ENGINE_LIGHTHOUSES",
            "FOOTPRINT_CASES"]
 
-ENGINE_ALGORITHMS = ("basic", "enh1", "enh2", "enh3")
+ENGINE_ALGORITHMS = ("basic", "enh1", "enh2", "enh3", "enh4", "enh5-d1", "enh5-d2", "enh3+4", "enh3+5")
 """The lighthouse algorithms the engine runs (their registered names)."""
 ENGINE_LIGHTHOUSES = ("directional-vertex", "directional-edge", "vertex-and-edge", "three-undirected-edge", "thread")
 """The lighthouses the engine runs: the deterministic ones whose v0 is recognised without probing
