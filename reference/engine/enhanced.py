@@ -1,9 +1,12 @@
-"""The compiled Enhancements 1 and 2: validation on the execution trie (thesis §4.1, Algorithms 4.1–4.2).
+"""The compiled Chapter 4 compositions: validation on the execution trie (thesis §4.1–4.3, Algorithms 4.1–4.5).
 
 The engine's counterpart of :class:`~topomark.reference.explorers.enhanced.EnhancedExplorer`
-with the compositions ``enh1`` (overlap stages 1 and 2, Algorithm 4.1) and
+with the compositions ``enh1`` (overlap stages 1 and 2, Algorithm 4.1),
 ``enh2`` (overlap stage 2 and the executed paths traced on S, Algorithm 4.2),
-as :mod:`~topomark.reference.explorers.compositions` registers them.  The loop
+``enh3`` (… and on T, Algorithm 4.3), ``enh4``, ``enh5-d1``, ``enh5-d2``
+(expanded signatures, Algorithms 4.4–4.5, :mod:`.expansion`) and ``enh3+4``,
+``enh3+5`` (§4.3), as :mod:`~topomark.reference.explorers.compositions`
+registers them.  The loop
 is Algorithm 3.1's (:mod:`.algorithm31`: lines 5–7, H and its order, the two
 augmentations); lines 8–20 run on the execution trie (:mod:`.trie`):
 
@@ -21,8 +24,16 @@ augmentations); lines 8–20 run on the execution trie (:mod:`.trie`):
   policy's order (Algorithm 4.1 lines 15, 23–26), retracing only to the last
   overlapped node (:func:`choose`).
 
-A technique set is an integer of :data:`STAGE1`, :data:`STAGE2` and
-:data:`TRACE_S` (:data:`TECHNIQUES` by registered name).  The reference
+Enhancements 4 and 5 (:mod:`.expansion`) add, on entering v_u, the ``virtual``
+node for v_k behind e, T's records beyond e and (Enhancement-5) the expansion,
+then prune H before validation by tracing the whole trie on S and T
+(:func:`_prune`); Enhancement-4 expands a new vertex after the non-loop
+augmentation; what is recorded into T after the join goes to depth d, for a
+new v_u only (:func:`~.expansion.recorded_depth`).
+
+A technique set is an integer of :data:`STAGE1`, :data:`STAGE2`,
+:data:`TRACE_S`, :data:`TRACE_T` and :mod:`.expansion`'s bits (:data:`TECHNIQUES`
+by registered name).  The reference
 rejects incrementally, tracing only the nodes added since its last check;
 :func:`contradicted` traces the whole trie each time, which rejects the same
 hypotheses: within an iteration S and the trie's old nodes do not change.
