@@ -48,8 +48,8 @@ from topomark.reference.engine.algorithm31 import (CONFIRMED, DIST, H_E, H_V, HY
                                                    TO_V0, TOWARD, choose_edge, hypotheses, lighthouse_entry,
                                                    loop_augment, take_exit, travel)
 from topomark.reference.engine.compiled import kernel
-from topomark.reference.engine.expansion import (DEPTH2, EXPAND_NEW, EXPAND_PLACE, PRUNE, add_virtual, expand,
-                                                 expansion_depth, recorded_depth)
+from topomark.reference.engine.expansion import (DEPTH2, EVERY_DEPTH, EXPAND_NEW, EXPAND_PLACE, PRUNE, add_virtual,
+                                                 expand, expansion_depth, recorded_depth)
 from topomark.reference.engine.lighthouses import establish
 from topomark.reference.engine.mapstate import (DCAP, LIMIT, PE, PV, ULEN, add_vertex, bfs, known_signature,
                                                 mark_as_sensed, start_map, u_pop)
@@ -59,8 +59,8 @@ from topomark.reference.engine.records import (R_AT, R_CODE, R_DEGREE, R_FULL, R
 from topomark.reference.engine.trie import (AT, CODE, DEGREE, FULL, META, MOTION, OFFSET, PARENT, find_child, forward,
                                             goto, new_trie, path_to, start_trie)
 
-__all__ = ["STAGE1", "STAGE2", "TRACE_S", "TRACE_T", "TECHNIQUES", "RECORDS", "new_enhanced", "motion_sequences", "contradicted", "choose",
-           "attempt", "validate_on_trie", "iterate_enhanced", "explore_enhanced"]
+__all__ = ["STAGE1", "STAGE2", "TRACE_S", "TRACE_T", "TECHNIQUES", "RECORDS", "new_enhanced", "motion_sequences",
+           "contradicted", "choose", "attempt", "validate_on_trie", "iterate_enhanced", "explore_enhanced"]
 
 STAGE1, STAGE2, TRACE_S, TRACE_T = 1, 2, 4, 8
 _ENH3 = STAGE2 | TRACE_S | TRACE_T
@@ -79,7 +79,7 @@ MOT, EDEG, ECODE, H_OFF, H_ARR, REM, SX, SE, HERE, RL, POOL_REC, POOL_NEXT = ran
 @kernel
 def new_enhanced(vcap: int, dcap: int, ucap: int, records: bool) -> tuple:
     """The trie, the buffers of M, P^E and the remaining hypotheses, with room for every hypothesis's path, and
-    the store T (:mod:`.records`) when ``records`` (Enhancement-3)."""
+    the store T (:mod:`.records`) when ``records`` (Enhancement-3's T, D of Enhancements 4/5)."""
     room = ucap * (vcap + 1) + dcap * (dcap + 1) + 2  # every hypothesis's path, the expansion, v_u and v_k
     rooms = min(16 * room, 1 << 21) if records else 1
     return new_trie(room), new_records(rooms, vcap * dcap if records else 1, max(room, rooms)), (np.zeros(room, dtype=np.int64), np.zeros(room, dtype=np.int64),
@@ -285,7 +285,7 @@ def _joined(S: tuple, T: tuple, R: tuple, techniques: int, a: int, i: int, b: in
     if techniques & RECORDS:
         migrate(S, R, a, i)
         migrate(S, R, b, j)
-        depth = recorded_depth(techniques, new)
+        depth = EVERY_DEPTH if techniques & TRACE_T else recorded_depth(techniques, new)
         if record and depth > 0:
             record_trie(S, R, T, b, j, depth, techniques & EXPANDS != 0)
 

@@ -45,10 +45,9 @@ __all__ = ["PRUNE", "EXPAND_NEW", "EXPAND_PLACE", "DEPTH2", "EVERY_DEPTH", "PURP
 PRUNE, EXPAND_NEW, EXPAND_PLACE, DEPTH2 = 16, 32, 64, 128
 """The bits of Enhancements 4 and 5 in a technique set (:data:`~.enhanced.TECHNIQUES`)."""
 EVERY_DEPTH = 1 << 30
-"""The depth to record to when every node is recorded (Enhancement-3's T)."""
+"""The depth to record to when every node is recorded (Enhancement-3's T, which the combinations of §4.3 keep)."""
 PURPOSE_EXPANSION = PURPOSE["expansion"]
 """The purpose of the expansion's traversals: the investment of Enhancements 4 and 5."""
-_TRACE_T = 8  # enhanced.TRACE_T: Enhancement-3 records every executed path
 
 
 @step
@@ -59,10 +58,8 @@ def expansion_depth(techniques: int) -> int:
 
 @step
 def recorded_depth(techniques: int, new: bool) -> int:
-    """How deep into the trie to record into T after the join (0: nothing): every node with Enhancement-3; d
-    with Enhancements 4/5 when v_u is new (Algorithm 4.4 line 22, 4.5 line 23)."""
-    if techniques & _TRACE_T:
-        return EVERY_DEPTH
+    """How deep into the trie Enhancements 4/5 record into D after the join (0: nothing): d when v_u is new
+    (Algorithm 4.4 line 22, 4.5 line 23).  With Enhancement-3 every node is recorded (:data:`EVERY_DEPTH`)."""
     if new and techniques & (EXPAND_NEW | EXPAND_PLACE):
         return expansion_depth(techniques)
     return 0
