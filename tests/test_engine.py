@@ -89,7 +89,7 @@ def test_the_wall_the_explorer_kernel_takes_no_world():
     """The compiled explorer sees only its robot: it never indexes it, takes no world arrays, imports no world."""
     import ast
     for name in ("algorithm31.py", "mapstate.py", "signature.py", "lighthouses.py", "trie.py", "records.py",
-                 "enhanced.py"):
+                 "expansion.py", "enhanced.py"):
         tree = ast.parse((ROOT / "reference" / "engine" / name).read_text())
         assert not _world_reads(tree), f"{name}: {_world_reads(tree)}"
     sneaky = ast.parse("def f(robot, offsets):\n    return robot[1][offsets[0]]\n")
@@ -136,10 +136,11 @@ def test_seeded_fault_an_engine_fault_code_is_exit_3_when_the_reference_runs_cle
 def test_choose_the_engine():
     basic = ("basic", None, ("nearest", "fifo", "shortest"))
     assert choose("reference", *basic) == ("reference", None)
-    assert choose("auto", "enh4", None, basic[2]) == ("reference", None)
+    assert choose("auto", "enh4-listing", None, basic[2]) == ("reference", None)
     assert choose("auto", "basic", "undirected-vertex", basic[2]) == ("reference", None)
-    with pytest.raises(InvalidInput, match="--engine compiled runs basic, enh1, enh2, enh3 with the"):
-        choose("compiled", "enh4", None, basic[2])
+    with pytest.raises(InvalidInput, match=r"--engine compiled runs basic, enh1, enh2, enh3, enh4, enh5-d1, enh5-d2, "
+                                           r"enh3\+4, enh3\+5 with the"):
+        choose("compiled", "enh4-listing", None, basic[2])
     assert choose("auto", *basic) == (("compiled", None) if engine.available() else ("reference", NOTICE))
 
 
@@ -159,9 +160,9 @@ def test_without_numba_auto_falls_back_to_the_reference_with_a_notice(monkeypatc
 
 @pytest.mark.parametrize("argv, message", [
     (["--engine", "fast"], "invalid choice"),
-    (["--engine", "compiled", "--algorithm", "enh4"], "--engine compiled runs basic, enh1, enh2, enh3 with the"),
-    (["--engine", "compiled", "--search", "--algorithm", "enh4", "--evaluations", "1"],
-     "--engine compiled runs basic, enh1, enh2, enh3 with the"),  # the search takes --engine too, and refuses it alike
+    (["--engine", "compiled", "--algorithm", "enh4-listing"], "--engine compiled runs basic, enh1, enh2, enh3, enh4,"),
+    (["--engine", "compiled", "--search", "--algorithm", "enh5-d2-listing", "--evaluations", "1"],
+     "--engine compiled runs basic, enh1, enh2, enh3, enh4,"),  # the search takes --engine too, and refuses it alike
 ])
 def test_bad_engine_options_are_exit_2(argv, message, capsys):
     size = [] if "--search" in argv else ["--max-vertices", "3", "--max-degree", "2"]

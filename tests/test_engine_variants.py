@@ -19,7 +19,8 @@ COMBOS = (("nearest", "fifo", "shortest"), ("fifo", "lifo", "dfs"), ("lifo", "sh
 18)."""
 VARIANTS = [("basic", "directional-edge"), ("basic", "vertex-and-edge"), ("basic", "three-undirected-edge"),
             ("basic", "thread"), ("enh1", None), ("enh2", None), ("enh3", None), ("enh1", "vertex-and-edge"),
-            ("enh2", "three-undirected-edge"), ("enh3", "directional-edge"), ("enh3", "thread")]
+            ("enh2", "three-undirected-edge"), ("enh3", "directional-edge"), ("enh3", "thread"), ("enh3+4", "thread"),
+            ("enh5-d2", "three-undirected-edge")]
 
 
 def _slice(n: int, degree: int, algorithm: str, lighthouse: str | None) -> tuple[int, list]:
@@ -82,8 +83,8 @@ def test_supports_the_variants_and_refuses_the_rest():
     policies = ("nearest", "fifo", "shortest")
     for algorithm, lighthouse in VARIANTS:
         assert engine.supports(algorithm, lighthouse, policies)
-    assert not engine.supports("enh4", None, policies) and not engine.supports("basic", "three-undirected-vertex",
-                                                                               policies)
+    assert not engine.supports("enh4-listing", None, policies) and not engine.supports(
+        "basic", "three-undirected-vertex", policies)
     with pytest.raises(ValueError, match="does not run the undirected-vertex lighthouse"):
         script("undirected-vertex")
 
@@ -123,7 +124,7 @@ def test_the_equality_command_names_the_variant_and_refuses_what_the_engine_does
                           "--max-degree", "2"]) == 0
     assert capsys.readouterr().out.startswith("enh2 with thread: ")
     with pytest.raises(SystemExit) as exit_:
-        equality_main(["--algorithm", "enh4"])
+        equality_main(["--algorithm", "enh4-listing"])
     assert exit_.value.code == 2
 
 

@@ -11,8 +11,10 @@ counts and trace digest (:mod:`.digest`), which :mod:`.compare` establishes by
 running both (the command: :mod:`.equality`).  It is not a second definition: where they differ, the
 reference is right.
 
-What it runs (:func:`supports`): ``basic`` and Enhancements 1–3 (``enh1``,
-``enh2``, ``enh3``) with the built-in policies and any deterministic lighthouse
+What it runs (:func:`supports`): ``basic`` and Chapter 4's algorithms —
+Enhancements 1–3 (``enh1``, ``enh2``, ``enh3``, :mod:`.enhanced`), 4 and 5
+(``enh4``, ``enh5-d1``, ``enh5-d2``, :mod:`.expansion`) and the combinations
+of §4.3 (``enh3+4``, ``enh3+5``) — with the built-in policies and any deterministic lighthouse
 recognised without probing (:mod:`.lighthouses`: ``directional-vertex``,
 ``directional-edge``, ``vertex-and-edge``, ``three-undirected-edge``,
 ``thread``); the footprint searches of §6.2.1 (:data:`FOOTPRINT_CASES`: Cases
@@ -25,6 +27,8 @@ results, and :func:`notice` is the one line said on stderr.
 Examples
 --------
 >>> supports("basic", "thread", ("nearest", "fifo", "shortest")), supports("basic", "undirected-vertex", ("nearest", "fifo", "shortest"))
+(True, False)
+>>> supports("enh3+5", "thread", ("lifo", "shortest", "dfs")), supports("enh5-d2-listing", None, ("nearest", "fifo", "shortest"))
 (True, False)
 >>> supports("case-2", None, ("lifo", "fifo", "shortest")), supports("case-2-edgeinfo", None, ("nearest", "fifo", "shortest"))
 (True, False)
@@ -41,7 +45,7 @@ from topomark.reference.explorers.policies import EDGE_POLICIES, HYPOTHESIS_POLI
 __all__ = ["available", "supports", "notice", "choose", "ENGINES", "ENGINE_ALGORITHMS", "ENGINE_LIGHTHOUSES",
            "FOOTPRINT_CASES"]
 
-ENGINE_ALGORITHMS = ("basic", "enh1", "enh2", "enh3")
+ENGINE_ALGORITHMS = ("basic", "enh1", "enh2", "enh3", "enh4", "enh5-d1", "enh5-d2", "enh3+4", "enh3+5")
 """The lighthouse algorithms the engine runs (their registered names)."""
 ENGINE_LIGHTHOUSES = ("directional-vertex", "directional-edge", "vertex-and-edge", "three-undirected-edge", "thread")
 """The lighthouses the engine runs: the deterministic ones whose v0 is recognised without probing

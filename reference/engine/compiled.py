@@ -64,7 +64,7 @@ def _cached(fn: Callable[..., Any]) -> bool:
 
 
 KERNEL_SOURCES = ("compiled.py", "digest.py", "signature.py", "robot.py", "mapstate.py", "algorithm31.py", "lighthouses.py",
-                  "trie.py", "records.py", "enhanced.py", "runs.py", "marks.py", "footprints.py", "footprint_runs.py")
+                  "trie.py", "records.py", "expansion.py", "enhanced.py", "runs.py", "marks.py", "footprints.py", "footprint_runs.py")
 """The engine's modules holding compiled code: one changed, every kernel is compiled again."""
 
 

@@ -1,9 +1,12 @@
-"""The compiled Enhancements 1 and 2: validation on the execution trie (thesis §4.1, Algorithms 4.1–4.2).
+"""The compiled Chapter 4 compositions: validation on the execution trie (thesis §4.1–4.3, Algorithms 4.1–4.5).
 
 The engine's counterpart of :class:`~topomark.reference.explorers.enhanced.EnhancedExplorer`
-with the compositions ``enh1`` (overlap stages 1 and 2, Algorithm 4.1) and
+with the compositions ``enh1`` (overlap stages 1 and 2, Algorithm 4.1),
 ``enh2`` (overlap stage 2 and the executed paths traced on S, Algorithm 4.2),
-as :mod:`~topomark.reference.explorers.compositions` registers them.  The loop
+``enh3`` (… and on T, Algorithm 4.3), ``enh4``, ``enh5-d1``, ``enh5-d2``
+(expanded signatures, Algorithms 4.4–4.5, :mod:`.expansion`) and ``enh3+4``,
+``enh3+5`` (§4.3), as :mod:`~topomark.reference.explorers.compositions`
+registers them.  The loop
 is Algorithm 3.1's (:mod:`.algorithm31`: lines 5–7, H and its order, the two
 augmentations); lines 8–20 run on the execution trie (:mod:`.trie`):
 
@@ -21,8 +24,16 @@ augmentations); lines 8–20 run on the execution trie (:mod:`.trie`):
   policy's order (Algorithm 4.1 lines 15, 23–26), retracing only to the last
   overlapped node (:func:`choose`).
 
-A technique set is an integer of :data:`STAGE1`, :data:`STAGE2` and
-:data:`TRACE_S` (:data:`TECHNIQUES` by registered name).  The reference
+Enhancements 4 and 5 (:mod:`.expansion`) add, on entering v_u, the ``virtual``
+node for v_k behind e, T's records beyond e and (Enhancement-5) the expansion,
+then prune H before validation by tracing the whole trie on S and T
+(:func:`_prune`); Enhancement-4 expands a new vertex after the non-loop
+augmentation; what is recorded into T after the join goes to depth d, for a
+new v_u only (:func:`~.expansion.recorded_depth`).
+
+A technique set is an integer of :data:`STAGE1`, :data:`STAGE2`,
+:data:`TRACE_S`, :data:`TRACE_T` and :mod:`.expansion`'s bits (:data:`TECHNIQUES`
+by registered name).  The reference
 rejects incrementally, tracing only the nodes added since its last check;
 :func:`contradicted` traces the whole trie each time, which rejects the same
 hypotheses: within an iteration S and the trie's old nodes do not change.
@@ -37,6 +48,8 @@ from topomark.reference.engine.algorithm31 import (CONFIRMED, DIST, H_E, H_V, HY
                                                    TO_V0, TOWARD, choose_edge, hypotheses, lighthouse_entry,
                                                    loop_augment, take_exit, travel)
 from topomark.reference.engine.compiled import kernel
+from topomark.reference.engine.expansion import (DEPTH2, EVERY_DEPTH, EXPAND_NEW, EXPAND_PLACE, PRUNE, add_virtual,
+                                                 expand, expansion_depth, recorded_depth)
 from topomark.reference.engine.lighthouses import establish
 from topomark.reference.engine.mapstate import (DCAP, LIMIT, PE, PV, ULEN, add_vertex, bfs, known_signature,
                                                 mark_as_sensed, start_map, u_pop)
@@ -46,21 +59,28 @@ from topomark.reference.engine.records import (R_AT, R_CODE, R_DEGREE, R_FULL, R
 from topomark.reference.engine.trie import (AT, CODE, DEGREE, FULL, META, MOTION, OFFSET, PARENT, find_child, forward,
                                             goto, new_trie, path_to, start_trie)
 
-__all__ = ["STAGE1", "STAGE2", "TRACE_S", "TECHNIQUES", "new_enhanced", "motion_sequences", "contradicted", "choose",
-           "attempt", "validate_on_trie", "iterate_enhanced", "explore_enhanced"]
+__all__ = ["STAGE1", "STAGE2", "TRACE_S", "TRACE_T", "TECHNIQUES", "RECORDS", "new_enhanced", "motion_sequences",
+           "contradicted", "choose", "attempt", "validate_on_trie", "iterate_enhanced", "explore_enhanced"]
 
 STAGE1, STAGE2, TRACE_S, TRACE_T = 1, 2, 4, 8
-TECHNIQUES = {"enh1": STAGE1 | STAGE2, "enh2": STAGE2 | TRACE_S, "enh3": STAGE2 | TRACE_S | TRACE_T}
+_ENH3 = STAGE2 | TRACE_S | TRACE_T
+TECHNIQUES = {"enh1": STAGE1 | STAGE2, "enh2": STAGE2 | TRACE_S, "enh3": _ENH3,
+              "enh4": PRUNE | EXPAND_NEW, "enh5-d1": PRUNE | EXPAND_PLACE, "enh5-d2": PRUNE | EXPAND_PLACE | DEPTH2,
+              "enh3+4": _ENH3 | PRUNE | EXPAND_NEW, "enh3+5": _ENH3 | PRUNE | EXPAND_PLACE | DEPTH2}
 """Each compiled composition's techniques (:mod:`~topomark.reference.explorers.compositions`); ``TRACE_T``:
-tracing continues into T, which records every executed path after the join (Enhancement-3)."""
+tracing continues into T, which records every executed path after the join (Enhancement-3); the bits of
+Enhancements 4 and 5 are :mod:`.expansion`'s."""
+EXPANDS = EXPAND_NEW | EXPAND_PLACE
+RECORDS = TRACE_T | EXPANDS
+"""The techniques that keep T (Enhancement-3's T, or D of Enhancements 4/5)."""
 MOT, EDEG, ECODE, H_OFF, H_ARR, REM, SX, SE, HERE, RL, POOL_REC, POOL_NEXT = range(12)
 
 
 @kernel
 def new_enhanced(vcap: int, dcap: int, ucap: int, records: bool) -> tuple:
     """The trie, the buffers of M, P^E and the remaining hypotheses, with room for every hypothesis's path, and
-    the store T (:mod:`.records`) when ``records`` (Enhancement-3)."""
-    room = ucap * (vcap + 1) + 1
+    the store T (:mod:`.records`) when ``records`` (Enhancement-3's T, D of Enhancements 4/5)."""
+    room = ucap * (vcap + 1) + dcap * (dcap + 1) + 2  # every hypothesis's path, the expansion, v_u and v_k
     rooms = min(16 * room, 1 << 21) if records else 1
     return new_trie(room), new_records(rooms, vcap * dcap if records else 1, max(room, rooms)), (np.zeros(room, dtype=np.int64), np.zeros(room, dtype=np.int64),
                             np.zeros(room, dtype=np.int64), np.zeros(ucap + 1, dtype=np.int64),
@@ -211,17 +231,33 @@ def _reject(S: tuple, T: tuple, W: tuple, X: tuple, R: tuple, remaining: int, te
 
 
 @kernel
+def _prune(S: tuple, T: tuple, W: tuple, X: tuple, R: tuple, remaining: int, vk: int, i: int) -> int:
+    """H without the hypotheses whose expanded signature disagrees with what is known around v_u — the trie
+    (v_k behind e, the records grafted from T, the expansion) traced on S and T — the others keeping their
+    order; pruned hypotheses are not counted as made."""
+    kept = 0
+    for r in range(remaining):
+        k = X[REM][r]
+        if not _traced(S, T, X, R, TRACE_S | TRACE_T, vk, i, W[H_V][k], W[H_E][k]):
+            X[REM][kept] = k
+            kept += 1
+    return kept
+
+
+@kernel
 def validate_on_trie(robot: np.ndarray, S: tuple, W: tuple, T: tuple, X: tuple, R: tuple, nh: int, vk: int, i: int,
                      techniques: int, counts: np.ndarray) -> int:
     """Lines 8–20 on the trie (started at v_u; with T, what T records beyond e grafted): returns the confirmed
     hypothesis's index (the robot at v0) or -1 (the robot back at v_u, its heading counted from e in the trie's
     offset)."""
-    counts[HYPOTHESES] += nh
     motion_sequences(S, W, X, nh)
     for r in range(nh):
         X[REM][r] = W[ORDER][r]
     remaining = nh
-    if T[META][0] > 1:  # perceptions known before any motion (T's records beyond e)
+    if techniques & PRUNE:  # Algorithm 4.4 line 7, 4.5 line 8: H keeps what the expanded signature agrees with
+        remaining = _prune(S, T, W, X, R, remaining, vk, i)
+    counts[HYPOTHESES] += remaining
+    if T[META][0] > 1 and techniques & (STAGE1 | TRACE_S):  # perceptions known before any motion
         remaining = _reject(S, T, W, X, R, remaining, techniques, vk, i, counts)
     while remaining > 0:
         r, start = choose(T, X, W, remaining, techniques)
@@ -241,15 +277,34 @@ def validate_on_trie(robot: np.ndarray, S: tuple, W: tuple, T: tuple, X: tuple, 
 
 
 @kernel
-def _joined(S: tuple, T: tuple, R: tuple, techniques: int, a: int, i: int, b: int, j: int, record: bool) -> None:
+def _joined(S: tuple, T: tuple, R: tuple, techniques: int, a: int, i: int, b: int, j: int, record: bool,
+            new: bool) -> None:
     """After S is augmented by dart (a, i) joined to (b, j): with T, the records under either dart move on, and
     (``record``) the iteration's trie is recorded from the validated (v_u, e) = (b, j) (Algorithm 4.3
-    lines 36–37)."""
-    if techniques & TRACE_T:
+    lines 36–37; to depth d, for a ``new`` v_u only, with Enhancements 4/5 alone)."""
+    if techniques & RECORDS:
         migrate(S, R, a, i)
         migrate(S, R, b, j)
-        if record:
-            record_trie(S, R, T, b, j)
+        depth = EVERY_DEPTH if techniques & TRACE_T else recorded_depth(techniques, new)
+        if record and depth > 0:
+            record_trie(S, R, T, b, j, depth, techniques & EXPANDS != 0)
+
+
+@kernel
+def _enter(robot: np.ndarray, S: tuple, T: tuple, R: tuple, techniques: int, vk: int, i: int, degree: int,
+           marks: int) -> int:
+    """The trie of the iteration at v_u, with what is known there before H is formed: v_k behind e and T's
+    records beyond e (Enhancements 3–5), then Enhancement-5's expansion (Algorithm 4.5 line 7); an outcome code."""
+    start_trie(T, degree, marks)
+    if techniques & EXPANDS:
+        add_virtual(S, T, vk, i)
+    if techniques & RECORDS:
+        graft(R, T, vk * S[5][DCAP] + i)
+    if techniques & EXPAND_PLACE:
+        expand(robot, T, expansion_depth(techniques))
+        if fault(robot):
+            return ROBOT
+    return LIMIT if T[META][FULL] or R[R_META][R_FULL] else OK
 
 
 @kernel
@@ -272,11 +327,11 @@ def iterate_enhanced(robot: np.ndarray, S: tuple, W: tuple, T: tuple, X: tuple, 
     if entry >= 0:  # the marker: place and back-link at once (§3.3)
         counts[LOOP] += 1
         code = loop_augment(S, vk, i, 0, entry)
-        _joined(S, T, R, techniques, vk, i, 0, entry, False)
+        _joined(S, T, R, techniques, vk, i, 0, entry, False, False)
         return LIMIT if R[R_META][R_FULL] else code
-    start_trie(T, degree, marks)
-    if techniques & TRACE_T:
-        graft(R, T, vk * S[5][DCAP] + i)
+    code = _enter(robot, S, T, R, techniques, vk, i, degree, marks)
+    if code != OK:
+        return code
     nh = hypotheses(S, W, vk, degree, marks, path_policy, hypothesis_policy)
     k = validate_on_trie(robot, S, W, T, X, R, nh, vk, i, techniques, counts)  # lines 8-20
     if fault(robot):
@@ -287,16 +342,22 @@ def iterate_enhanced(robot: np.ndarray, S: tuple, W: tuple, T: tuple, X: tuple, 
         counts[LOOP] += 1
         code = loop_augment(S, vk, i, W[H_V][k], W[H_E][k])
         meta[PV], meta[PE] = 0, X[H_ARR][k]
-        _joined(S, T, R, techniques, vk, i, W[H_V][k], W[H_E][k], True)
+        _joined(S, T, R, techniques, vk, i, W[H_V][k], W[H_E][k], True, False)
     else:
         counts[NON_LOOP] += 1  # lines 26-28
         u = add_vertex(S, vk, i, degree)
         if u < 0:
             return LIMIT
         mark_as_sensed(S, u, marks)
+        if techniques & EXPAND_NEW:  # Algorithm 4.4 line 22
+            expand(robot, T, expansion_depth(techniques))
+            if fault(robot):
+                return ROBOT
+            if T[META][FULL]:
+                return LIMIT
         meta[PV], meta[PE] = u, T[META][OFFSET]
         code = OK
-        _joined(S, T, R, techniques, vk, i, u, 0, True)
+        _joined(S, T, R, techniques, vk, i, u, 0, True, True)
     return LIMIT if R[R_META][R_FULL] else code
 
 

@@ -11,7 +11,8 @@ child, ``next`` sibling), ``at`` (the root under map dart ``x * D + t``, or
 
 * :func:`record_trie` — lines 36–37: route the iteration's execution trie
   from the validated (v_u, e) through S; what lies beyond an unexplored dart
-  joins its record;
+  joins its record (to depth d for D of Enhancements 4/5, Algorithm 4.4
+  line 22, 4.5 line 23, which lives in the same store);
 * :func:`migrate` — when a dart with a record becomes explored, the record is
   routed on from where the dart now leads;
 * :func:`graft` — the record beyond e holds paths from v_u: they join the
@@ -31,7 +32,7 @@ import numpy as np
 
 from topomark.reference.engine.compiled import kernel, step
 from topomark.reference.engine.mapstate import DCAP
-from topomark.reference.engine.trie import CODE, DEGREE, FIRST, MOTION, NEXT, add_child, find_child
+from topomark.reference.engine.trie import CODE, DEGREE, DEPTH, FIRST, MOTION, NEXT, add_child, find_child
 
 __all__ = ["new_records", "clear_records", "new_record", "record_child", "record_trie", "migrate", "graft", "R_AT",
            "R_FULL"]
@@ -94,9 +95,11 @@ def _push(R: tuple, top: int, a: int, b: int, c: int) -> int:
 
 
 @kernel
-def record_trie(S: tuple, R: tuple, T: tuple, x0: int, entry0: int) -> None:
+def record_trie(S: tuple, R: tuple, T: tuple, x0: int, entry0: int, depth: int, virtual: bool) -> None:
     """Lines 36–37: trace the trie from the validated (v_u, e) = map dart (``x0``, ``entry0``) and add to T the
-    perceptions from unknown places (stack items: trie node, map vertex and entry, or -1 and a record)."""
+    perceptions from unknown places, of the nodes to ``depth`` (Enhancements 4/5: d), the ``virtual`` node (the
+    root's child by motion 0, when ``virtual``) left out (stack items: trie node, map vertex and entry, or -1 and
+    a record)."""
     dcap = S[5][DCAP]
     top = _push(R, 0, 0, x0, entry0)
     while top > 0 and not R[R_META][R_FULL]:
@@ -105,6 +108,9 @@ def record_trie(S: tuple, R: tuple, T: tuple, x0: int, entry0: int) -> None:
         c = T[FIRST][node]
         while c >= 0:
             m = T[MOTION][c]
+            if T[DEPTH][c] > depth or (virtual and node == 0 and m == 0):
+                c = T[NEXT][c]
+                continue
             if x >= 0:
                 t = x * dcap + (entry + m) % S[0][x]
                 if S[1][t] >= 0:

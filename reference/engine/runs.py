@@ -36,7 +36,7 @@ from topomark.reference.engine.algorithm31 import (CONFIRMED, HYPOTHESES, ITERAT
 from topomark.reference.engine import footprint_runs
 from topomark.reference.engine.compiled import kernel
 from topomark.reference.engine.digest import digest
-from topomark.reference.engine.enhanced import TECHNIQUES, TRACE_T, explore_enhanced, new_enhanced
+from topomark.reference.engine.enhanced import RECORDS, TECHNIQUES, explore_enhanced, new_enhanced
 from topomark.reference.engine.lighthouses import explore_lighthouse, script
 from topomark.reference.engine.mapstate import new_map
 from topomark.reference.engine.robot import ACTIONS, COST, COUNTS, DROPS, LEAVES, TIES, log, make_robot, reset
@@ -127,7 +127,7 @@ def _run_enhanced(robot: np.ndarray, starts: np.ndarray, rows: np.ndarray, techn
                   path: int, vcap: int, dcap: int, ucap: int, codes: np.ndarray, counts: np.ndarray,
                   tallies: np.ndarray) -> None:
     S, W = new_map(vcap, dcap, ucap), new_scratch(vcap, ucap)
-    T, R, X = new_enhanced(vcap, dcap, ucap, techniques & TRACE_T != 0)
+    T, R, X = new_enhanced(vcap, dcap, ucap, techniques & RECORDS != 0)
     for s in range(starts.shape[0]):
         reset(robot, starts[s, 0], starts[s, 1])
         codes[s] = explore_enhanced(robot, S, W, T, X, R, rows, techniques, edge, hypothesis, path, tallies[s])

@@ -38,7 +38,8 @@ def register(sub) -> None:
     p.add_argument("--seed", type=seed, default=0, help="seed of the checked sample and of --search (default 0)")
     p.add_argument("--engine", choices=fact("engines"), default="auto",
                    help="what runs the unchecked runs of the exhaustive search and of --search: reference, compiled "
-                        "(numba; basic, enh1, enh2 and enh3 with the built-in policies and a lighthouse recognised "
+                        "(numba; basic and the Chapter 4 algorithms enh1, enh2, enh3, enh4, enh5-d1, enh5-d2, enh3+4 and "
+                        "enh3+5 with the built-in policies and a lighthouse recognised "
                         "without probing: directional-vertex, directional-edge, vertex-and-edge, three-undirected-edge "
                         "or thread; and the footprint searches case-1a, case-1b, case-2, case-4 and case-4-mn), or "
                         "auto (default: compiled when "
