@@ -180,3 +180,11 @@ def scripted(tmp_path):
     path.write_text(SCRIPTED)
     return lambda *messages, pause=0.0, linger=5.0: [sys.executable, str(path), json.dumps(["hello", *messages]),
                                                     str(pause), str(linger)]
+
+
+def needs_engine(why: str) -> None:
+    """Skip a test that needs the compiled engine where numba has no wheels (the reason says what the test could not
+    do); under CI (env ``CI`` set) never: numba is installed there, and without it the test runs uncompiled."""
+    from topomark.reference.engine import available
+    if not available() and not os.environ.get("CI"):
+        pytest.skip(f"numba is not installed: the compiled engine (equal to the reference) cannot {why}")

@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import pytest
 
+from conftest import needs_engine
+
 from topomark.spec.errors import InvalidInput
 from topomark.reference.run.explore import explore
 from topomark.reference.worlds.generators import generate
@@ -78,10 +80,7 @@ def _engine_cost(world):
 
 
 def _needs_engine():
-    import os
-    from topomark.reference.engine import available
-    if not available() and not os.environ.get("CI"):
-        pytest.skip("numba is not installed: the compiled engine (equal to the reference) cannot run every size")
+    needs_engine("run every size")
 
 
 def test_strip_cost_formula_holds_at_every_size_it_was_measured_for():

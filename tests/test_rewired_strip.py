@@ -7,6 +7,8 @@ from __future__ import annotations
 import networkx as nx
 import pytest
 
+from conftest import needs_engine
+
 from topomark.spec.errors import InvalidInput
 from topomark.reference.run.explore import explore
 from topomark.reference.worlds import rewired
@@ -84,15 +86,12 @@ DOCUMENTED = {46: 79635, 100: 996034, 150: 3368015, 200: 7899490}  # docs/worst-
 
 
 def test_the_documented_costs_and_that_they_beat_the_strip():
-    import os
     from fractions import Fraction
     from topomark.proofs.world_arrays import to_arrays
     from topomark.reference.algorithms.bounds import upper_bound
-    from topomark.reference.engine import available
     from topomark.reference.engine.runs import run_starts
     from topomark.reference.worstcase.family_costs import strip_cost
-    if not available() and not os.environ.get("CI"):
-        pytest.skip("numba is not installed: the compiled engine (equal to the reference) cannot run n = 200 quickly")
+    needs_engine("run n = 200 quickly")
     for n, documented in DOCUMENTED.items():
         w = generate("rewired-strip", n=n)
         at, entry = w.start_state()
