@@ -103,7 +103,8 @@ TABLE: dict[str, Any] = {
                    'circulant': {'n': 12, 'k': 2},
                    'k5e-chain': {'gadgets': 3},
                    'cylinder': {'rings': 4, 'size': 4},
-                   'rewired-strip': {'n': 100}},
+                   'rewired-strip': {'n': 100},
+                   'split-strip': {'n': 100}},
     'conformance_families': ('algorithm-3.1', 'movable-markers', 'undirected-markers', 'directional-markers',
                              'threads', 'marker-less', 'baselines', 'other'),
     'experiments': ('lattice', 'complete', 'lattice-hole', 'complete-hole', 'small-world-k2-p10',
@@ -124,5 +125,5 @@ TABLE: dict[str, Any] = {
     'worker_wait': 60,
     'objectives': ('cost', 'cost-per-m', 'ratio'),
     'engines': ('reference', 'compiled', 'auto'),
-    'restart_families': ('strip', 'circulant', 'k5e-chain', 'rewired-strip'),
+    'restart_families': ('strip', 'circulant', 'k5e-chain', 'rewired-strip', 'split-strip'),
 }

@@ -32,7 +32,9 @@ here:
   :func:`k5e_chain` and :func:`cylinder`: families of maximum degree 4 that make
   Algorithm 3.1 expensive, with their starts (§3.5.2, §7.2);
 * :mod:`~topomark.reference.worlds.rewired` -- :func:`rewired_strip`: the closed strip
-  rewired as a search found at n = 100, moved to any even size (§7.2).
+  rewired as a search found at n = 100, moved to any even size (§7.2);
+* :mod:`~topomark.reference.worlds.split_strip` -- :func:`split_strip`: the closed strip
+  split so that §6.2.1's footprint searches walk far for every loop (§6.2.1, §7.2).
 
 This module holds the registry the CLI uses: :data:`GENERATORS`,
 :data:`PARAMETERS`, :func:`generate` and :func:`DEFAULT_WORLD`.
@@ -81,6 +83,7 @@ from topomark.reference.worlds.figures import figure_6_10, figure_6_15
 from topomark.reference.worlds.worst_cases import worst_case_world
 from topomark.reference.worlds.expensive import circulant, cylinder, k5e_chain, strip
 from topomark.reference.worlds.rewired import rewired_strip
+from topomark.reference.worlds.split_strip import split_strip
 from topomark.reference.worlds.holes import complete_hole, lattice_hole
 from topomark.reference.worlds.random_worlds import OtherPairs, random_graph, small_world  # noqa: F401 - OtherPairs: for tests
 from topomark.proofs.wheels import (WHEEL_A_ROTATION, WHEEL_B_ROTATION, wheel_a, wheel_b, wheel_pair,
@@ -114,6 +117,7 @@ __all__ = [
     "k5e_chain",
     "cylinder",
     "rewired_strip",
+    "split_strip",
     "GENERATORS",
     "PARAMETERS",
     "generate",
@@ -142,6 +146,7 @@ GENERATORS: dict[str, Callable[..., World]] = {
     "k5e-chain": k5e_chain,
     "cylinder": cylinder,
     "rewired-strip": rewired_strip,
+    "split-strip": split_strip,
 }
 """CLI name -> generator function."""
 
@@ -171,6 +176,8 @@ PARAMETERS: dict[str, dict[str, Any]] = {
     "cylinder": {"rings": 4, "size": 4},
     # The closed strip rewired as the search found at n = 100, moved to n places (worlds/rewired.py).
     "rewired-strip": {"n": 100},
+    # The closed strip split so that the footprint searches of §6.2.1 walk far (worlds/split_strip.py).
+    "split-strip": {"n": 100},
 }
 """CLI name -> {parameter name: default}.  The default's type is the parameter's type
 (int, float or str); ``generate`` fills in missing parameters from here."""

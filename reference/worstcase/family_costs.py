@@ -30,17 +30,33 @@ closing tests, in U's order, the open exits of every place before its v_u.
 Measured and fitted the same way, the n − 1 non-loop iterations cost
 5/12·n³ + O(n²) and the n − 2 loop iterations 13/24·n³ + O(n²).
 
+The split strip (:func:`~topomark.reference.worlds.split_strip.split_strip`: m = 2n − 3, maximum degree 4)
+does for the footprint searches of §6.2.1 what the strip does for ``basic``: Cases 1a and 4 (``case-1a``,
+``case-4``, default policies) cost exactly :func:`split_strip_cost`,
+
+    4·cost = 5n² − 31n + c   (c = 12, 14, 8, −6 for n ≡ 0, 2, 4, 6 mod 8)
+
+for every even n ≥ 18 (:data:`SPLIT_STRIP_FROM`): fitted on three sizes of
+each residue and checked against a run at every even n from 18 to 300.  Their
+bound (n − 1)² + (m − n + 1)(3n − 1) is 4n² − 9n + 3 here, so cost / bound
+rises towards 5/16: the O(mn) bound of both cases is tight up to that constant
+on worlds of maximum degree 4 and diameter Θ(n).  Why: of the n − 2 loops,
+about three quarters are validated by a walk of about 1.5 n moves (out along
+the breadth-first tree's short branch, back through v_k, along the long one).
+
 Examples
 --------
 >>> strip_cost(10), strip_cost(20)
 (220, 3671)
+>>> split_strip_cost(50), split_strip_cost(100)
+(2741, 11727)
 """
 
 from __future__ import annotations
 
 from topomark.spec.errors import InvalidInput, TopomarkFault
 
-__all__ = ["strip_cost", "STRIP_FROM"]
+__all__ = ["strip_cost", "STRIP_FROM", "split_strip_cost", "SPLIT_STRIP_FROM"]
 
 STRIP_FROM = 9
 """The least n the formula of :func:`strip_cost` is measured for (below it the fold and the start overlap)."""
@@ -60,3 +76,21 @@ def strip_cost(n: int) -> int:
     if total % 24:
         raise TopomarkFault(f"strip_cost({n}): 24·cost = {total} is not a multiple of 24: the formula is wrong")
     return total // 24
+
+
+SPLIT_STRIP_FROM = 18
+"""The least n the formula of :func:`split_strip_cost` is measured for (at n = 16 the split meets the start)."""
+
+_SPLIT = {0: 12, 2: 14, 4: 8, 6: -6}
+
+
+def split_strip_cost(n: int) -> int:
+    """The cost of ``case-1a`` and of ``case-4`` (default policies) on ``split-strip:n=N``, from the exact fit
+    above; n even, n ≥ :data:`SPLIT_STRIP_FROM`."""
+    if n < SPLIT_STRIP_FROM or n % 2:
+        raise InvalidInput(f"split_strip_cost: the formula is measured for even n >= {SPLIT_STRIP_FROM}, not "
+                           f"n = {n}")
+    total = 5 * n**2 - 31 * n + _SPLIT[n % 8]
+    if total % 4:
+        raise TopomarkFault(f"split_strip_cost({n}): 4·cost = {total} is not a multiple of 4: the formula is wrong")
+    return total // 4

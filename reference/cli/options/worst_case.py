@@ -74,6 +74,7 @@ def add_search_arguments(p) -> None:
     g.add_argument("--restart-family", choices=fact("restart_families"), metavar="NAME",
                    help="start the search from this family's world at each size and its neighbours instead of random "
                         "worlds: strip (strip:n=N,cap=1 for even N >= 8, else cap=0), circulant (circulant:n=N,k=2), "
-                        "k5e-chain (N a multiple of 5) or rewired-strip (rewired-strip:n=N, N even and >= 46)")
+                        "k5e-chain (N a multiple of 5), rewired-strip (rewired-strip:n=N, N even and >= 46) or split-strip "
+                        "(split-strip:n=N, N even and >= 16)")
     g.add_argument("--world-family", choices=("lattice-hole",),
                    help="search within a family of worlds: lattice-hole (a lattice, which cells are removed)")
