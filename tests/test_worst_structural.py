@@ -142,3 +142,13 @@ def test_the_verdict_says_the_bound_is_tight_only_where_the_ratio_does_not_fall(
     assert "falls somewhere over the sizes searched" in falling and "does not fall" not in falling
     basic = verdicts([], _searched("basic", [0.1, 0.12, 0.11]))[0]  # basic rests on the strip's exact formula
     assert STRIP_SAYS[1:] in basic and "23/24·n³" in basic
+
+
+def test_the_verdict_names_each_algorithms_own_bound_and_family_formula():
+    from topomark.reference.worstcase.verdicts import SPLIT_SAYS, verdicts
+    assert "the O(m²n) bound" in verdicts([], _searched("enh2", [0.1, 0.09, 0.08]))[0]
+    falling = verdicts([], _searched("case-2", [0.1, 0.09, 0.08]))[0]
+    assert "the O(mn) bound tight" in falling and "O(m²n)" not in falling
+    for algorithm in ("case-1a", "case-4"):  # these rest on the split strip's exact formula
+        line = verdicts([], _searched(algorithm, [0.1, 0.09, 0.08]))[0]
+        assert SPLIT_SAYS[1:] in line and "(5n² − 31n + c)/4" in line and "falls somewhere" not in line
