@@ -152,3 +152,20 @@ def test_the_verdict_names_each_algorithms_own_bound_and_family_formula():
     for algorithm in ("case-1a", "case-4"):  # these rest on the split strip's exact formula
         line = verdicts([], _searched(algorithm, [0.1, 0.09, 0.08]))[0]
         assert SPLIT_SAYS[1:] in line and "(5n² − 31n + c)/4" in line and "falls somewhere" not in line
+
+
+def test_a_world_kept_for_two_algorithms_is_named_for_the_one_asked_and_a_command_keeps_its_objective(tmp_path,
+                                                                                                       capsys):
+    from topomark.reference.cli.main import main
+    from topomark.reference.worlds.worst_cases import worst_case_world
+    from topomark.reference.worstcase.naming import generator_text
+    world = worst_case_world("case-4-n50-d4-split-search")  # the search for Case 1a found the same world
+    assert generator_text(world, "case-4") == "worst-case:case=case-4-n50-d4-split-search"
+    assert generator_text(world, "case-1a") == "worst-case:case=case-1a-n50-d4-split-search"
+    out = tmp_path / "run"
+    assert main(["worst-case", "--search", "--algorithm", "case-4", "--vertices", "12", "--evaluations", "2",
+                 "--objective", "ratio", "--seed", "3", "--restart-family", "strip", "--quiet", "-o", str(out)]) == 0
+    capsys.readouterr()
+    assert main(["worst-case", "--summarise", str(out)]) == 0
+    assert ("topomark worst-case --search --algorithm case-4 --restart-family strip --objective ratio --seed 3 "
+            "--vertices 12 --evaluations 2 --max-degree 4") in capsys.readouterr().out

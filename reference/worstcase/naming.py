@@ -27,8 +27,9 @@ def _same(a: World, b: World) -> bool:
     return world_to_json(a) == world_to_json(b)
 
 
-def generator_text(world: World) -> str | None:
-    """The generator text of a family or kept worst world equal to ``world`` (start included), or None."""
+def generator_text(world: World, algorithm: str | None = None) -> str | None:
+    """The generator text of a family or kept worst world equal to ``world`` (start included), or None; of kept
+    worlds, one kept for ``algorithm`` first (the same world can be kept for two algorithms, under two names)."""
     for family in RESTART_FAMILIES:
         try:
             candidate, text = family_world(family, world.n)
@@ -36,7 +37,8 @@ def generator_text(world: World) -> str | None:
             continue
         if _same(candidate, world):
             return text
-    for name, entry in WORST_CASES.items():
+    kept = sorted(WORST_CASES.items(), key=lambda item: item[1]["algorithm"] != algorithm)  # stable: index order
+    for name, entry in kept:
         if entry["n"] == world.n and entry["m"] == world.m and _same(worst_case_world(name), world):
             return f"worst-case:case={name}"
     return None

@@ -155,7 +155,7 @@ def _search_section(runs: list[dict]) -> list[str]:
         name = f"{data['algorithm']}{' lattice-hole' if data.get('family') else ''}"
         s, b = r["search"].get("best") or {}, r["random"].get("best") or {}
         holes = f" (holes: {', '.join(s['holes']) or 'none'})" if "holes" in s else ""
-        text = generator_text(world_from_json(s["world"])) if s.get("world") else None
+        text = generator_text(world_from_json(s["world"]), data["algorithm"]) if s.get("world") else None
         lines.append(f"| {name} | {data.get('restart') or 'random worlds'} | {r['n']} | {s.get('m')} | "
                      f"{s.get('diameter')} | {s.get('max_degree')} | {s.get('cost')}{holes} | "
                      f"{f'`{text}`' if text else 'none'} | {s.get('ratio_to_bound')} | {b.get('cost')} |")
@@ -182,7 +182,7 @@ def _names(searched: list[dict]) -> dict[tuple[str, int], str | None]:
             s, key = r["search"].get("best"), (data["algorithm"], r["n"])
             if s and not data.get("family") and (key not in best or s["cost"] > best[key]["cost"]):
                 best[key] = s
-    return {key: generator_text(world_from_json(s["world"])) for key, s in best.items()}
+    return {key: generator_text(world_from_json(s["world"]), key[0]) for key, s in best.items()}
 
 
 def _bound_growth(best: list[dict[str, Any]]) -> str:
@@ -231,6 +231,8 @@ def _commands(exhaustive: list[dict], searched: list[dict]) -> list[str]:
     for d in sorted(searched, key=lambda d: (d["algorithm"], d.get("family") or "")):
         family = f" --world-family {d['family']}" if d.get("family") else ""
         family += f" --restart-family {d['restart']}" if d.get("restart") else ""
+        family += f" --objective {d['objective']}" if d.get("objective", "cost") != "cost" else ""
+        family += f" --seed {d['setup']['seed']}" if d.get("setup", {}).get("seed") else ""
         sizes = " ".join(str(r["n"]) for r in d["per_n"])
         out.append(f"topomark worst-case --search --algorithm {d['algorithm']}{family} --vertices {sizes} "
                    f"--evaluations {d['evaluations']} --max-degree {d['max_degree']}")
