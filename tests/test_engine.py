@@ -186,8 +186,12 @@ def test_the_package_imports_and_its_kernels_run_uncompiled_without_numba():
 
 def test_equality_command_reports_counts_as_json(capsys):
     assert equality_main(["--max-vertices", "3", "--max-degree", "2", "--json", "--algorithm", "basic"]) == 0
-    report = json.loads(capsys.readouterr().out)
+    captured = capsys.readouterr()
+    report = json.loads(captured.out)
     assert report["compared"] == 18 * 4 and report["by_group"] == {"2": 18, "3": 54}
+    assert "run pairs compared, 0 disagreeing" in captured.err  # progress on stderr beside the JSON
+    assert equality_main(["--max-vertices", "3", "--max-degree", "2", "--json", "--quiet"]) == 0
+    assert capsys.readouterr().err == ""
     assert equality_main(["--max-vertices", "9"]) == 2
 
 

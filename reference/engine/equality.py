@@ -95,7 +95,8 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--seed", type=int, default=0, help="seed of the random worlds and their starts")
     p.add_argument("--jobs", type=int, default=1, help="processes (default 1)")
     p.add_argument("--json", action="store_true", help="print the report as JSON")
-    p.add_argument("--quiet", action="store_true", help="no progress lines on stderr")
+    p.add_argument("--quiet", action="store_true", help="no progress lines (by default one on stderr after each "
+                   "task, with --json too)")
     return p
 
 
@@ -120,7 +121,8 @@ def main(argv: list[str] | None = None) -> int:
         return 2
     if not available():
         print(notice(uncompiled=True), file=sys.stderr)
-    progress = None if args.quiet or args.json else (lambda line: print(line, file=sys.stderr, flush=True))
+    # progress on stderr even with --json (the report is stdout's): a long comparison is never silent
+    progress = None if args.quiet else (lambda line: print(line, file=sys.stderr, flush=True))
     report = check(args.max_vertices, min(args.max_degree, args.max_vertices - 1), args.random,
                    args.random_max_vertices, args.seed, args.jobs, progress,
                    tuple(dict.fromkeys(args.algorithm or ["basic"])), args.lighthouse)
