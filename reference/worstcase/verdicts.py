@@ -22,6 +22,7 @@ the report summarises, each sentence from its own evidence:
 
 from __future__ import annotations
 
+import re
 from typing import Any
 
 __all__ = ["verdicts", "STRIP_STATEMENT", "STRIP_SAYS", "SPLIT_STATEMENT", "SPLIT_SAYS", "FORMULAS"]
@@ -47,8 +48,12 @@ FORMULAS = {"basic": (STRIP_STATEMENT, STRIP_SAYS), "case-1a": (SPLIT_STATEMENT,
 """algorithm ↦ (a family's exact cost formula, what it says): the families whose cost is proved by a formula
 checked against runs at every size (:mod:`.family_costs`)."""
 
-_BOUND = {"basic": "O(m²n)", "enh1": "O(m²n)", "enh2": "O(m²n)", "enh3": "O(m²n)"}
-"""The order of each searched algorithm's bound; an algorithm not listed is a §6.2.1 footprint search, O(mn)."""
+
+def _order(algorithm: str) -> str:
+    """The order of ``algorithm``'s bound as its registration states it (``O(m²n)``, ``O(mn)``, …)."""
+    from topomark.reference.algorithms.registry import algorithm_spec  # the registry: only when a report is made
+    found = re.search(r"O\([^)]*\)", algorithm_spec(algorithm).bound)
+    return found.group(0) if found else "stated"
 
 
 def _proved(runs: list[dict[str, Any]]) -> str | None:
@@ -105,7 +110,7 @@ def verdicts(exhaustive: list[dict[str, Any]], searched: list[dict[str, Any]],
         if statement:
             shown = f"{shown}; and {statement}" if shown else f"shown: {statement}"
         degree = max((d["max_degree"] for d in runs), default=None)
-        says = said or (_says(ratios, degree, _BOUND.get(algorithm, "O(mn)")) if runs else None)
+        says = said or (_says(ratios, degree, _order(algorithm)) if runs else None)
         parts = [p for p in (proved, shown, says) if p]
         out.append(f"- `{algorithm}`: " + ". ".join(p[0].upper() + p[1:] for p in parts) + ".")
     return out
