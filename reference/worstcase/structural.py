@@ -22,7 +22,8 @@ stays among the worlds of maximum degree D:
 :func:`family_world` names the worlds a search may restart from
 (:data:`RESTART_FAMILIES`): the families of
 :mod:`~topomark.reference.worlds.expensive`,
-:mod:`~topomark.reference.worlds.rewired` and :mod:`~topomark.reference.worlds.split_strip` at exactly n places, with their
+:mod:`~topomark.reference.worlds.rewired` and
+:mod:`~topomark.reference.worlds.split_strip` at exactly n places, with their
 generator text, so the search's first generation is that world and its
 neighbours instead of random worlds.
 

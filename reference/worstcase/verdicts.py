@@ -52,7 +52,7 @@ checked against runs at every size (:mod:`.family_costs`)."""
 def _order(algorithm: str) -> str:
     """The order of ``algorithm``'s bound as its registration states it (``O(m²n)``, ``O(mn)``, …)."""
     from topomark.reference.algorithms.registry import algorithm_spec  # the registry: only when a report is made
-    found = re.search(r"O\([^)]*\)", algorithm_spec(algorithm).bound)
+    found = re.search(r"O\([^)]*\)", algorithm_spec(algorithm).bound or "")
     return found.group(0) if found else "stated"
 
 
