@@ -28,8 +28,8 @@ these validation walks goes out along the short branch, back through v_k and alo
 about 1.5 n moves (147 at n = 100) where the closed strip's take about n.  Cases 1a and 4 cost exactly
 :func:`~topomark.reference.worstcase.family_costs.split_strip_cost` here, 5n²/4 + O(n), so cost / bound
 rises towards 5/16 (0.2999 at n = 100, 0.3063 at n = 200).  Cases 1b and 2 and the m-marker Case 4, whose
-candidates must also show v_u's count of marked loop edges, do not take the short branch first here and cost
-less than on the closed strip.
+markers tell loop edges from the others (a candidate must show as many marked loop edges as v_u), find no
+candidate on the short branch and cost less here than on the closed strip.
 
 Examples
 --------
