@@ -201,13 +201,15 @@ def test_every_large_kept_worst_world_costs_what_its_index_says_and_is_no_stress
     assert large and not stress & {f"worst-{name}" for name in large}
     for name in large:
         world, entry = worst_case_world(name), WORST_CASES[name]
-        assert (world.n, world.m) == (entry["n"], entry["m"]) and entry["n"] >= 30
+        assert (world.n, world.m) == (entry["n"], entry["m"])
+        assert entry["n"] >= 30 or entry["algorithm"] not in ("basic", "enh1", "enh2", "enh3"), name  # too large
         if entry["n"] <= 50 or not available():  # the reference, checked; past n = 50 it takes minutes
             run = explore(world, entry["algorithm"])
             assert run.verified and run.cost == entry["cost"], name
         else:  # the compiled engine, which agrees with the reference exactly (tests/test_engine.py)
             at, entry_dart = world.start_state()
-            got = run_starts(to_arrays(world), [(world.vertices.index(at), entry_dart)], ("nearest", "fifo", "shortest"))
+            got = run_starts(to_arrays(world), [(world.vertices.index(at), entry_dart)], ("nearest", "fifo", "shortest"),
+                             algorithm=entry["algorithm"])
             assert got[0].claimed == "correct" and got[0].cost == entry["cost"], name
 
 

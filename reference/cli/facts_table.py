@@ -104,7 +104,7 @@ TABLE: dict[str, Any] = {
                    'k5e-chain': {'gadgets': 3},
                    'cylinder': {'rings': 4, 'size': 4},
                    'rewired-strip': {'n': 100},
-                   'split-strip': {'n': 100}},
+                   'split-strip': {'n': 20}},
     'conformance_families': ('algorithm-3.1', 'movable-markers', 'undirected-markers', 'directional-markers',
                              'threads', 'marker-less', 'baselines', 'other'),
     'experiments': ('lattice', 'complete', 'lattice-hole', 'complete-hole', 'small-world-k2-p10',

@@ -177,7 +177,7 @@ PARAMETERS: dict[str, dict[str, Any]] = {
     # The closed strip rewired as the search found at n = 100, moved to n places (worlds/rewired.py).
     "rewired-strip": {"n": 100},
     # The closed strip split so that the footprint searches of §6.2.1 walk far (worlds/split_strip.py).
-    "split-strip": {"n": 100},
+    "split-strip": {"n": 20},
 }
 """CLI name -> {parameter name: default}.  The default's type is the parameter's type
 (int, float or str); ``generate`` fills in missing parameters from here."""

@@ -12,8 +12,9 @@ says, per name, which algorithm it is worst for, how it was found
 (``exhaustive``: the largest cost over every world of its size and degree
 bound, proved by enumeration; ``search``: the largest found, a lower bound on
 the worst case), its size and degree bound, and the cost.  An entry with
-``"stress": false`` (a world too large to run checked in every suite, n ≥ 30)
-is kept for the worst-case report to name, and left out of the stress cases.
+``"stress": false`` (a world too large to run checked in every suite, n ≥ 30, or kept for the report only)
+is kept for the worst-case report to name, and left out of the stress cases; so is every world a search found
+for a footprint search of §6.2.1 (their suites keep the exhaustive worst worlds).
 
 Examples
 --------
