@@ -19,7 +19,7 @@ ALGORITHMS = ("case-1a", "case-4")
 
 
 def _edges(world):
-    return {frozenset((v, x)) for v in world.vertices for x in world.rotation[v]}
+    return {frozenset(edge) for edge in world.edges()}
 
 
 @pytest.mark.parametrize("n", [SPLIT_FROM, 50, 100])
