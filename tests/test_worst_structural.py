@@ -169,3 +169,33 @@ def test_a_world_kept_for_two_algorithms_is_named_for_the_one_asked_and_a_comman
     assert main(["worst-case", "--summarise", str(out)]) == 0
     assert ("topomark worst-case --search --algorithm case-4 --restart-family strip --objective ratio --seed 3 "
             "--vertices 12 --evaluations 2 --max-degree 4") in capsys.readouterr().out
+
+
+def test_a_search_goes_on_from_one_world_and_its_command_says_so(tmp_path, capsys):
+    """``--restart-world`` starts from one world (here a kept worst world): the search can only gain on it, the
+    stored run names it, and the summary's command repeats it with ``--restart-world``."""
+    from topomark.reference.cli.main import main
+    from topomark.reference.worlds.worst_cases import worst_case_world
+    text = "worst-case:case=basic-n20-d4-search"
+    own = explore(worst_case_world("basic-n20-d4-search"), "basic", check=False, record=False).cost
+    found = adversarial_search("basic", 20, 4, evaluations=12, seed=1, restart=text, baseline=False)
+    assert found.best is not None and found.best.cost >= own and found.to_json()["restart"] == text
+    out = tmp_path / "run"
+    assert main(["worst-case", "--search", "--algorithm", "basic", "--restart-world", text, "--vertices", "20",
+                 "--evaluations", "2", "--quiet", "-o", str(out)]) == 0
+    capsys.readouterr()
+    assert main(["worst-case", "--summarise", str(out)]) == 0
+    assert (f"topomark worst-case --search --algorithm basic --restart-world {text} --vertices 20 --evaluations 2 "
+            "--max-degree 4") in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("argv,message", [
+    (["--vertices", "30"], "has 20 places, not 30: search it at --vertices 20"),
+    (["--vertices", "20", "--restart-family", "strip"], "--restart-family and --restart-world both"),
+    (["--vertices", "20", "--max-degree", "3"], "has places of degree 4: max_degree must be >= 4, got 3")])
+def test_a_restart_world_of_another_size_or_degree_or_beside_a_family_is_bad_input(argv, message, capsys):
+    from topomark.reference.cli.main import main
+    assert main(["worst-case", "--search", "--algorithm", "basic", "--restart-world",
+                 "worst-case:case=basic-n20-d4-search", "--evaluations", "2", *argv]) == 2
+    err = capsys.readouterr().err
+    assert message in err and "Traceback" not in err

@@ -4,7 +4,8 @@ For each size ``--vertices N ...`` the search (:func:`topomark.reference.worstca
 changes one vertex's rotation, adds or removes an edge, moves the start, switches two edges or transposes two
 neighbours (:mod:`topomark.reference.worstcase.structural`), keeping the world connected and within
 ``--max-degree``, and keeps what raises the ``--objective``; ``--restart-family`` starts it from a named family's
-world instead of random worlds; the same number of random worlds
+world instead of random worlds, and ``--restart-world`` from one world (a kept worst world: a search going on from
+where another stopped); the same number of random worlds
 (:func:`~topomark.reference.worstcase.search.random_baseline`, run by the search) is the yardstick.  What it finds is a lower bound on
 the worst case, not the worst case.  The growth of the best cost with m, n, the diameter and the maximum degree is
 fitted on log-log axes (:func:`~topomark.reference.worstcase.fit.fit_exponents`).
@@ -67,17 +68,20 @@ def search_command(args: argparse.Namespace) -> int:
     setup = setup_of(args)
     if args.evaluations < 1:
         raise InvalidInput(f"--evaluations must be at least 1, not {args.evaluations}")
+    if args.restart_family and args.restart_world:
+        raise InvalidInput("--restart-family and --restart-world both say where the search starts: give one")
+    restart = args.restart_family or args.restart_world
     claim_out(args.out, args.force)
     rows: list[dict[str, Any]] = []
     for n in args.vertices:
         progress = None if args.quiet or args.json else _Progress(n, args.evaluations)
         kw = dict(objective=args.objective, evaluations=args.evaluations, seed=args.seed, lighthouse=setup.lighthouse,
-                  policies=setup.policy(), family=args.world_family, restart=args.restart_family, engine=args.engine)
+                  policies=setup.policy(), family=args.world_family, restart=restart, engine=args.engine)
         found = adversarial_search(setup.algorithm, n, args.max_degree, progress=progress, **kw).to_json()
         rows.append({"n": n, "search": found, "random": found.pop("random")})
     best = [{**r["search"]["best"], "n": r["n"]} for r in rows if r["search"].get("best")]
     data = {"algorithm": setup.algorithm, "setup": setup.to_json(), "max_degree": args.max_degree,
-            "objective": args.objective, "family": args.world_family, "restart": args.restart_family,
+            "objective": args.objective, "family": args.world_family, "restart": restart,
             "evaluations": args.evaluations, "per_n": rows,
             "fit": fit_exponents(best) if len(best) >= 3 else None,  # two points fit any power exactly
             "method": "seeded local search: a lower bound on the worst case, not the worst case"}

@@ -58,7 +58,7 @@ from topomark.reference.worlds.deterministic import integer_param, seed_param
 from topomark.reference.worstcase.fit import fit_exponents
 from topomark.reference.worstcase.moves import (ALL_MOVES, LatticeHoles, move_lattice, move_world, random_lattice,
                                                 random_world)
-from topomark.reference.worstcase.structural import family_world
+from topomark.reference.worstcase.structural import RESTART_FAMILIES, restart_world
 
 __all__ = ["adversarial_search", "random_baseline", "fit_exponents", "AdversarialResult", "Found", "OBJECTIVES",
            "FAMILIES", "MU", "LAMBDA", "START_SHARE"]
@@ -156,15 +156,15 @@ class _Problem:
     lighthouse: str | None
     policies: Policies | None
     shape: tuple[int, int] = (0, 0)
-    restart: str | None = None  # the family the first generation starts from (structural.RESTART_FAMILIES)
+    restart: str | None = None  # what the first generation starts from (structural.restart_world: a family or a world)
     engine: bool = False  # runs through the compiled Algorithm 3.1 (topomark.reference.engine), equal to the reference
 
     def world_of(self, cand: World | LatticeHoles) -> World:
         return cand.world if isinstance(cand, LatticeHoles) else cand
 
     def draw(self, rng: random.Random) -> World | LatticeHoles:
-        if self.restart is not None:  # the family's world, or a neighbour of it a few moves away
-            world = family_world(self.restart, self.n)[0]
+        if self.restart is not None:  # the restart world, or a neighbour of it a few moves away
+            world = restart_world(self.restart, self.n)
             for _ in range(rng.randrange(4)):
                 world = move_world(world, self.max_degree, rng, ALL_MOVES)
             return world
@@ -229,12 +229,13 @@ def _problem(algorithm: str, n: Any, max_degree: Any, objective: str, evaluation
     problem = _Problem(spec, objective, n, max_degree, evaluations, seed, family, lighthouse, policies)
     if restart is not None:
         if family != "general":
-            raise InvalidInput(f"a restart family replaces the random worlds of the general search, not the "
+            raise InvalidInput(f"a restart replaces the random worlds of the general search, not the "
                                f"{family} family's")
-        world = family_world(restart, n)[0]  # an unknown family or size: bad input here, before the runs
-        if max(world.degree(v) for v in world.vertices) > max_degree:
-            raise InvalidInput(f"the restart family {restart} has places of degree 4: max_degree must be >= 4, "
-                               f"got {max_degree}")
+        world = restart_world(restart, n)  # an unknown family or world, or a wrong size: bad input, before the runs
+        largest = max(world.degree(v) for v in world.vertices)
+        if largest > max_degree:
+            raise InvalidInput(f"the restart {'family' if restart in RESTART_FAMILIES else 'world'} {restart} has "
+                               f"places of degree {largest}: max_degree must be >= {largest}, got {max_degree}")
         problem.restart = restart
     problem.engine = _compiled(engine, spec.name, lighthouse, policies)
     if family == "lattice-hole":
@@ -356,8 +357,9 @@ def adversarial_search(algorithm: str = "basic", n: int = 20, max_degree: int = 
     (:data:`START_SHARE`), the best μ of which the strategy keeps; with ``baseline`` (the default),
     :func:`random_baseline` with the same budget and seed is run too and kept in ``.random``.
     ``family="lattice-hole"`` searches hole patterns of the ⌊√n⌋ x ⌊n/⌊√n⌋⌋ lattice (8 x 8 for n = 64) instead.
-    ``restart`` (one of :data:`~.structural.RESTART_FAMILIES`) starts from that family's world at n places
-    (:func:`~.structural.family_world`) and μ of its neighbours instead of random worlds.  ``engine`` (reference,
+    ``restart`` (one of :data:`~.structural.RESTART_FAMILIES`, or a world of n places that ``topomark explore``
+    accepts) starts from that world (:func:`~.structural.restart_world`) and μ of its neighbours instead of random
+    worlds.  ``engine`` (reference,
     compiled or auto) says what runs the candidates: the compiled Algorithm 3.1, which agrees with the reference
     exactly, runs ``basic`` some hundred times faster.
     ``progress(evaluations_done, best_score)`` is called after about every 1/20 of the budget.  Bad parameters
@@ -373,8 +375,8 @@ def adversarial_search(algorithm: str = "basic", n: int = 20, max_degree: int = 
     toolbox.register("clone", _clone)
     first = min(problem.evaluations, MU if problem.restart else max(MU, problem.evaluations // START_SHARE))
     population = [_Individual([problem.draw(rng)]) for _ in range(first)]
-    if problem.restart is not None:  # the family's own world among them: a restart can only gain on it
-        population[0] = _Individual([family_world(problem.restart, problem.n)[0]])
+    if problem.restart is not None:  # the restart world itself among them: a restart can only gain on it
+        population[0] = _Individual([restart_world(problem.restart, problem.n)])
     generations = math.ceil((problem.evaluations - first) / LAMBDA)
     with _global_random(problem.seed):
         algorithms.eaMuPlusLambda(population, toolbox, mu=min(MU, first), lambda_=LAMBDA, cxpb=0.0, mutpb=1.0,

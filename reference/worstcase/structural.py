@@ -25,7 +25,9 @@ stays among the worlds of maximum degree D:
 :mod:`~topomark.reference.worlds.rewired` and
 :mod:`~topomark.reference.worlds.split_strip` at exactly n places, with their
 generator text, so the search's first generation is that world and its
-neighbours instead of random worlds.
+neighbours instead of random worlds; :func:`restart_world` also takes any one
+world ``topomark explore`` accepts (a kept worst world ``worst-case:case=NAME``
+or a world file), so a search can go on from where an earlier one stopped.
 
 >>> import random
 >>> w = family_world("strip", 12)[0]
@@ -49,7 +51,7 @@ from topomark.reference.worlds.generators import generate
 from topomark.reference.worlds.rewired import REWIRED_FROM
 from topomark.reference.worlds.split_strip import SPLIT_FROM
 
-__all__ = ["STRUCTURAL_MOVES", "RESTART_FAMILIES", "structural_move", "family_world", "family_text"]
+__all__ = ["STRUCTURAL_MOVES", "RESTART_FAMILIES", "structural_move", "family_world", "family_text", "restart_world"]
 
 STRUCTURAL_MOVES = ("switch", "transpose", "marker")
 RESTART_FAMILIES = ("strip", "circulant", "k5e-chain", "rewired-strip", "split-strip")
@@ -136,3 +138,18 @@ def family_world(family: str, n: int) -> tuple[World, str]:
     world = generate(name, **dict(p.split("=") for p in params.split(",")))
     assert world.n == n, f"{text} has {world.n} places, not {n}"
     return world, text
+
+
+def restart_world(restart: str, n: int) -> World:
+    """The world a search restarts from at ``n`` places: the world of the family ``restart``
+    (:data:`RESTART_FAMILIES`) at that size, or else the one world ``restart`` names (a generator text or a world
+    file, as ``topomark explore`` takes it), which must have exactly ``n`` places; without a start it starts at
+    its first place facing that place's first exit."""
+    if restart in RESTART_FAMILIES:
+        return family_world(restart, n)[0]
+    from topomark.reference.worlds.argument import resolve_world
+    world = resolve_world(restart)
+    if world.n != n:
+        raise InvalidInput(f"the restart world {restart} has {world.n} places, not {n}: search it at "
+                           f"--vertices {world.n}")
+    return world if world.start is not None else _keep_start(world, _rotation(world))

@@ -34,6 +34,7 @@ from topomark.reference.algorithms.registry import algorithm_spec
 from topomark.reference.run.explore import explore
 from topomark.reference.bench.reports.plots import curve, drawn, finish, new, points
 from topomark.reference.worstcase.fit import fit_exponents
+from topomark.reference.worstcase.structural import RESTART_FAMILIES
 from topomark.reference.worstcase.naming import generator_text
 from topomark.reference.worstcase.readback import read_regular
 from topomark.reference.worstcase.report import THESIS
@@ -230,7 +231,8 @@ def _commands(exhaustive: list[dict], searched: list[dict]) -> list[str]:
                    f"--max-degree {d['max_degree']}")
     for d in sorted(searched, key=lambda d: (d["algorithm"], d.get("family") or "")):
         family = f" --world-family {d['family']}" if d.get("family") else ""
-        family += f" --restart-family {d['restart']}" if d.get("restart") else ""
+        if d.get("restart"):
+            family += f" --restart-{'family' if d['restart'] in RESTART_FAMILIES else 'world'} {d['restart']}"
         family += f" --objective {d['objective']}" if d.get("objective", "cost") != "cost" else ""
         family += f" --seed {d['setup']['seed']}" if d.get("setup", {}).get("seed") else ""
         sizes = " ".join(str(r["n"]) for r in d["per_n"])

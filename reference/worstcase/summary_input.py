@@ -84,7 +84,9 @@ _BEST = {"oneOf": [{"type": "null"}, {
 SEARCH = {"type": "object", "required": ["algorithm", "setup", "max_degree", "objective", "evaluations", "per_n"],
           "properties": {"algorithm": _NAME, "setup": _SETUP, "objective": _NAME,
                          "family": {"oneOf": [{"type": "null"}, {"enum": ["lattice-hole"]}]},
-                         "restart": {"oneOf": [{"type": "null"}, {"enum": list(RESTART_FAMILIES)}]},
+                         "restart": {"oneOf": [{"type": "null"}, {"enum": list(RESTART_FAMILIES)},  # or one world's text
+                                                {"type": "string", "minLength": 1, "maxLength": 300,
+                                                 "not": {"enum": list(RESTART_FAMILIES)}}]},
                          "max_degree": {"type": "integer", "minimum": 2, "maximum": MAX_DEGREE},
                          "evaluations": {"type": "integer", "minimum": 1, "maximum": 2**62},
                          "per_n": {"type": "array", "maxItems": 64, "items": {

@@ -76,5 +76,9 @@ def add_search_arguments(p) -> None:
                         "worlds: strip (strip:n=N,cap=1 for even N >= 8, else cap=0), circulant (circulant:n=N,k=2), "
                         "k5e-chain (N a multiple of 5), rewired-strip (rewired-strip:n=N, N even and >= 46) or split-strip "
                         "(split-strip:n=N, N even and >= 16)")
+    g.add_argument("--restart-world", metavar="WORLD",
+                   help="start the search from this one world (a generator text such as a kept worst world "
+                        "worst-case:case=NAME, or a world file) and its neighbours: a search going on from where "
+                        "another stopped; --vertices must be its n")
     g.add_argument("--world-family", choices=("lattice-hole",),
                    help="search within a family of worlds: lattice-hole (a lattice, which cells are removed)")
