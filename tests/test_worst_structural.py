@@ -199,3 +199,17 @@ def test_a_restart_world_of_another_size_or_degree_or_beside_a_family_is_bad_inp
                  "worst-case:case=basic-n20-d4-search", "--evaluations", "2", *argv]) == 2
     err = capsys.readouterr().err
     assert message in err and "Traceback" not in err
+
+
+@pytest.mark.parametrize("argv", [["--search", "--vertices", "8", "--evaluations", "2"], ["--max-vertices", "4"]])
+def test_under_json_progress_still_goes_to_stderr_unless_quiet(argv, capsys):
+    """A long ``--json`` run is not silent: stdout holds the one JSON object, progress goes to stderr, and only
+    ``--quiet`` stops it."""
+    import json
+    from topomark.reference.cli.main import main
+    for quiet in (False, True):
+        assert main(["worst-case", "--algorithm", "basic", "--max-degree", "3", "--json", *argv,
+                     *(["--quiet"] if quiet else [])]) == 0
+        out, err = capsys.readouterr()
+        assert json.loads(out)["algorithm"] == "basic"
+        assert (err == "") == quiet, err

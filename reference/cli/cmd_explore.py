@@ -206,7 +206,7 @@ def _explored(args, world, spec, policies, light, options, label: str, ring: Rin
         with contextlib.ExitStack() as files:
             sink = TeeSink(files.enter_context(FileSink(trace)), ring) if trace else ring
             outcome = explore(world, spec, policies, check=not args.no_check, sink=sink,
-                              progress=_Progress(not (args.quiet or args.json)), check_mode=args.check_mode,
+                              progress=_Progress(not args.quiet), check_mode=args.check_mode,
                               keep_hypotheses=False, lighthouse=light, options=options)
         if args.view:
             from topomark.reference.viewer.view import view_trace

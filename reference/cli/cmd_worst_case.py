@@ -98,7 +98,7 @@ def worst_case_command(args: argparse.Namespace) -> int:
     _validate(args)
     claim_out(args.out, args.force)
     setup = _with_engine(args, setup_of(args))
-    progress = None if args.quiet or args.json else (lambda line: print(line, file=sys.stderr, flush=True))
+    progress = None if args.quiet else (lambda line: print(line, file=sys.stderr, flush=True))
     degree = min(args.max_degree, args.max_vertices - 1)
     if args.shards is not None:
         return _finish(args, setup, degree, _run(args, setup, degree, Path(args.shards).absolute(), progress))

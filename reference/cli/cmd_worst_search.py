@@ -74,7 +74,7 @@ def search_command(args: argparse.Namespace) -> int:
     claim_out(args.out, args.force)
     rows: list[dict[str, Any]] = []
     for n in args.vertices:
-        progress = None if args.quiet or args.json else _Progress(n, args.evaluations)
+        progress = None if args.quiet else _Progress(n, args.evaluations)
         kw = dict(objective=args.objective, evaluations=args.evaluations, seed=args.seed, lighthouse=setup.lighthouse,
                   policies=setup.policy(), family=args.world_family, restart=restart, engine=args.engine)
         found = adversarial_search(setup.algorithm, n, args.max_degree, progress=progress, **kw).to_json()

@@ -52,7 +52,8 @@ def register(sub) -> None:
     p.add_argument("--summarise", nargs="+", metavar="DIR",
                    help="the report over the --out directories of earlier runs, exhaustive and --search: Markdown on "
                         "stdout, or worst-case.md and its plot in -o DIR")
-    p.add_argument("--quiet", action="store_true", help="no progress line")
+    p.add_argument("--quiet", action="store_true",
+                   help="no progress lines on stderr (printed by default, with --json too)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     add_search_arguments(p)
     p.set_defaults(handler=Later("cmd_worst_case", "worst_case_command"))
