@@ -64,5 +64,5 @@ def register(sub) -> None:
     add_force(p)
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.add_argument("--quiet", action="store_true",
-                   help="no progress on stderr (a bar on a terminal, else a line every 10 s of a long run; with --json too)")
+                   help="no progress on stderr (a bar on a terminal, else a line every 10 s; with --json too)")
     p.set_defaults(handler=Later("cmd_explore", "explore_command"))
