@@ -213,3 +213,13 @@ def test_under_json_progress_still_goes_to_stderr_unless_quiet(argv, capsys):
         out, err = capsys.readouterr()
         assert json.loads(out)["algorithm"] == "basic"
         assert (err == "") == quiet, err
+
+
+def test_a_restart_world_searches_at_its_own_size_unless_told(capsys):
+    import json
+    from topomark.reference.cli.main import main
+    assert main(["worst-case", "--search", "--algorithm", "basic", "--restart-world",
+                 "worst-case:case=basic-n30-d4-search", "--evaluations", "1", "--quiet", "--json"]) == 0
+    assert [r["n"] for r in json.loads(capsys.readouterr().out)["per_n"]] == [30]
+    assert main(["worst-case", "--search", "--algorithm", "basic", "--evaluations", "1", "--quiet", "--json"]) == 0
+    assert [r["n"] for r in json.loads(capsys.readouterr().out)["per_n"]] == [20]

@@ -82,10 +82,17 @@ def _check_search(args: argparse.Namespace) -> None:
     for key, (flag, default) in EXHAUSTIVE_ONLY.items():
         if getattr(args, key) != default:
             raise InvalidInput(f"{flag} is an option of the exhaustive search; --search does not use it")
+    if args.vertices is None:  # the default size: the restart world's own, else 20
+        args.vertices = [_restart_world_size(args.restart_world) if args.restart_world else 20]
     for n in args.vertices:
         refusal = search_refusal(n, args.evaluations)
         if refusal:
             raise InvalidInput(refusal)
+
+
+def _restart_world_size(text: str) -> int:
+    from topomark.reference.worlds.argument import resolve_world
+    return resolve_world(text).n
 
 
 def worst_case_command(args: argparse.Namespace) -> int:

@@ -64,8 +64,8 @@ def add_search_arguments(p) -> None:
     g.add_argument("--search", action="store_true", help="search worlds past exhaustive sizes for a bad one "
                    "(the exhaustive search's options --max-vertices, --min-vertices, --jobs, --scheduler, --shards, "
                    "--sample and --cross-check are refused with it)")
-    g.add_argument("--vertices", type=int, nargs="+", default=[20], metavar="N",
-                   help=f"world sizes to search (default 20), 3..{MAX_SEARCH_VERTICES:,}")
+    g.add_argument("--vertices", type=int, nargs="+", metavar="N",
+                   help=f"world sizes to search (default 20, or the --restart-world's n), 3..{MAX_SEARCH_VERTICES:,}")
     g.add_argument("--evaluations", type=int, default=400, metavar="K",
                    help=f"runs per size for the search, and as many random worlds (default 400), 1..{MAX_EVALUATIONS:,}; "
                         f"each size times K at most {MAX_SEARCH_PRODUCT:,} (a quarter of the runs' worlds are held at "
@@ -80,6 +80,6 @@ def add_search_arguments(p) -> None:
     g.add_argument("--restart-world", metavar="WORLD",
                    help="start the search from this one world (a generator text such as a kept worst world "
                         "worst-case:case=NAME, or a world file) and its neighbours: a search going on from where "
-                        "another stopped; --vertices must be its n")
+                        "another stopped; --vertices is its n")
     g.add_argument("--world-family", choices=("lattice-hole",),
                    help="search within a family of worlds: lattice-hole (a lattice, which cells are removed)")
