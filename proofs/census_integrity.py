@@ -55,7 +55,7 @@ from topomark.proofs.census_shards import RECORD, checksum, digest, done_path, m
 from topomark.spec.errors import InvalidInput
 from topomark.spec.jsontext import open_regular_file
 
-__all__ = ["Damaged", "MAX_RECORD_BYTES", "code_version", "package_version", "read_capped", "read_record",
+__all__ = ["Damaged", "MAX_RECORD_BYTES", "code_version", "package_version", "source_digest", "read_capped", "read_record",
            "read_record_text", "check_done", "check_reduce",
            "inputs_digest", "file_digest", "CODE_MODULES"]
 
@@ -93,6 +93,25 @@ def code_version() -> str:
         assert spec is not None and spec.origin is not None, f"{name} is one of this package's modules"
         h.update(name.encode() + b"\0" + Path(spec.origin).read_bytes() + b"\0")
     return f"topomark {package}, census code {h.hexdigest()}"
+
+
+def source_digest(packages: tuple[str, ...], modules: tuple[str, ...] = ()) -> str:
+    """A BLAKE2b-64 digest of the source of every module in ``packages`` (recursively) and of ``modules``: what a
+    resumable run writes into its manifest, so that files written by other code are never resumed."""
+    h = hashlib.blake2b(digest_size=8)
+    files: list[Path] = []
+    for name in packages:
+        spec = importlib.util.find_spec(name)
+        assert spec is not None and spec.submodule_search_locations, f"{name} is one of this package's packages"
+        for root in spec.submodule_search_locations:
+            files += sorted(Path(root).rglob("*.py"))
+    for name in modules:
+        spec = importlib.util.find_spec(name)
+        assert spec is not None and spec.origin, f"{name} is one of this package's modules"
+        files.append(Path(spec.origin))
+    for path in files:
+        h.update(path.name.encode() + b"\0" + path.read_bytes() + b"\0")
+    return h.hexdigest()
 
 
 def file_digest(path: Path) -> str:

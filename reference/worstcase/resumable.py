@@ -37,16 +37,14 @@ with a verified map (exit 3 otherwise: topomark's two runs disagree).
 
 from __future__ import annotations
 
-import hashlib
 import json
 import secrets
 import time
-import importlib.util
 from pathlib import Path
 from typing import Any, Callable
 
 from topomark.proofs.census_exec import Progress, executor
-from topomark.proofs.census_integrity import Damaged, package_version, read_record_text
+from topomark.proofs.census_integrity import Damaged, package_version, read_record_text, source_digest
 from topomark.proofs.census_map import plan, world_at
 from topomark.proofs.census_recheck import recheck_sample
 from topomark.proofs.census_shards import seal, write_json
@@ -72,20 +70,7 @@ INFRASTRUCTURE = ("topomark.proofs.census_exec", "topomark.proofs.census_integri
 
 def code_version() -> str:
     """``topomark VERSION, worst-case code DIGEST``: a digest of every source file a run's cost depends on."""
-    h = hashlib.blake2b(digest_size=8)
-    files: list[Path] = []
-    for name in CODE_PACKAGES:
-        spec = importlib.util.find_spec(name)
-        assert spec is not None and spec.submodule_search_locations, name
-        for root in spec.submodule_search_locations:
-            files += sorted(Path(root).rglob("*.py"))
-    for name in CODE_MODULES:
-        spec = importlib.util.find_spec(name)
-        assert spec is not None and spec.origin, name
-        files.append(Path(spec.origin))
-    for path in files:
-        h.update(path.name.encode() + b"\0" + path.read_bytes() + b"\0")
-    return f"topomark {package_version()}, worst-case code {h.hexdigest()}"
+    return f"topomark {package_version()}, worst-case code {source_digest(CODE_PACKAGES, CODE_MODULES)}"
 
 
 def task_path(root: Path, task: int) -> Path:
