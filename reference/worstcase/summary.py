@@ -32,7 +32,7 @@ from topomark.spec.worldfile import world_from_json
 
 from topomark.reference.algorithms.registry import algorithm_spec
 from topomark.reference.run.explore import explore
-from topomark.reference.bench.reports.plots import curve, drawn, finish, new, points
+from topomark.reference.bench.reports.plots import curve, decorate, drawn, new, points, save
 from topomark.reference.worstcase.fit import fit_exponents
 from topomark.reference.worstcase.structural import RESTART_FAMILIES
 from topomark.reference.worstcase.naming import generator_text
@@ -51,6 +51,9 @@ QUESTION = ("\"the derived upper cost bound O(m²n) of the basic single directio
             "the same time). If these worst case scenarios can happen together for some environment, then what "
             "classes of graphs are they? … it might be helpful to derive the bound by considering some other factors "
             "such as graph diameter and maximum vertex degrees\" (§7.2).")
+
+LEGEND_INSIDE = 12
+"""The most legend entries the summary plot keeps inside its axes."""
 
 
 def structure(world: World, algorithm: str) -> dict[str, Any]:
@@ -213,13 +216,21 @@ def _plot(out: Path, exhaustive: list[dict], searched: list[dict]) -> list[Path]
             rows = [r for r in data["per_n"] if r["max_cost"]]
             curve(ax, [r["n"] for r in rows], [r["max_cost"] for r in rows],
                   f"{data['algorithm']}, exact, D ≤ {data['max_degree']}")
-        for data in sorted(searched, key=lambda d: d["algorithm"]):
-            rows = [r for r in data["per_n"] if r["search"].get("best")]
-            points(ax, [r["n"] for r in rows], [r["search"]["best"]["cost"] for r in rows],
-                   f"{data['algorithm']}{' lattice-hole' if data.get('family') else ''}, found")
+        found: dict[str, dict[int, int]] = {}  # one series per algorithm: the best over its runs at each n
+        for data in searched:
+            series = found.setdefault(f"{data['algorithm']}{' lattice-hole' if data.get('family') else ''}", {})
+            for r in data["per_n"]:
+                if r["search"].get("best"):
+                    series[r["n"]] = max(series.get(r["n"], 0), r["search"]["best"]["cost"])
+        for name, series in sorted(found.items()):
+            points(ax, sorted(series), [series[n] for n in sorted(series)], f"{name}, found")
         ax.set_xscale("log")
-        return [finish(plt, fig, ax, out / "worst-case-summary.png", "The worst cost per n: proved and found",
-                       "n (vertices)", "edge traversals")]
+        decorate(ax, "The worst cost per n: proved and found", "n (vertices)", "edge traversals")
+        handles, labels = ax.get_legend_handles_labels()
+        if len(labels) > LEGEND_INSIDE:  # too many to sit on the curves: beside them, the figure widened
+            ax.legend(handles, labels, fontsize=6, ncol=2, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+            fig.set_size_inches(fig.get_figwidth() * 2, fig.get_figheight())
+        return [save(plt, fig, out / "worst-case-summary.png")]
     return drawn(draw)
 
 
