@@ -223,3 +223,16 @@ def test_a_restart_world_searches_at_its_own_size_unless_told(capsys):
     assert [r["n"] for r in json.loads(capsys.readouterr().out)["per_n"]] == [30]
     assert main(["worst-case", "--search", "--algorithm", "basic", "--evaluations", "1", "--quiet", "--json"]) == 0
     assert [r["n"] for r in json.loads(capsys.readouterr().out)["per_n"]] == [20]
+
+
+def test_a_restart_world_file_without_a_start_starts_at_its_first_place(tmp_path):
+    import json
+    from topomark.reference.worstcase.structural import restart_world
+    from topomark.spec.world import Start
+    from topomark.spec.worldfile import world_to_json
+    w = strip(8)
+    path = tmp_path / "w.json"
+    path.write_text(json.dumps(world_to_json(w.with_start(None))))
+    got = restart_world(str(path), 8)
+    assert got.rotation == w.rotation and got.start == Start(w.vertices[0], w.rotation[w.vertices[0]][0])
+    assert restart_world("strip", 8).rotation == family_world("strip", 8)[0].rotation
