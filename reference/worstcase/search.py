@@ -157,6 +157,7 @@ class _Problem:
     policies: Policies | None
     shape: tuple[int, int] = (0, 0)
     restart: str | None = None  # what the first generation starts from (structural.restart_world: a family or a world)
+    start_world: World | None = None  # the restart world, resolved once
     engine: bool = False  # runs through the compiled Algorithm 3.1 (topomark.reference.engine), equal to the reference
 
     def world_of(self, cand: World | LatticeHoles) -> World:
@@ -164,7 +165,8 @@ class _Problem:
 
     def draw(self, rng: random.Random) -> World | LatticeHoles:
         if self.restart is not None:  # the restart world, or a neighbour of it a few moves away
-            world = restart_world(self.restart, self.n)
+            world = self.start_world
+            assert world is not None, "a restart's world is resolved with its parameters"
             for _ in range(rng.randrange(4)):
                 world = move_world(world, self.max_degree, rng, ALL_MOVES)
             return world
@@ -236,7 +238,7 @@ def _problem(algorithm: str, n: Any, max_degree: Any, objective: str, evaluation
         if largest > max_degree:
             raise InvalidInput(f"the restart {'family' if restart in RESTART_FAMILIES else 'world'} {restart} has "
                                f"places of degree {largest}: max_degree must be >= {largest}, got {max_degree}")
-        problem.restart = restart
+        problem.restart, problem.start_world = restart, world
     problem.engine = _compiled(engine, spec.name, lighthouse, policies)
     if family == "lattice-hole":
         if max_degree < 4:
@@ -308,7 +310,7 @@ def random_baseline(algorithm: str = "basic", n: int = 20, max_degree: int = 4, 
 
 
 def _baseline(problem: _Problem, progress: Callable[[int, float], None] | None) -> AdversarialResult:
-    problem = dataclasses.replace(problem, restart=None)  # random worlds, whatever the search started from
+    problem = dataclasses.replace(problem, restart=None, start_world=None)  # random worlds, whatever the search started from
     rng = random.Random(f"random-baseline:{problem.seed}")
     tally = _Tally(problem, progress)
     for _ in range(problem.evaluations):
@@ -376,7 +378,7 @@ def adversarial_search(algorithm: str = "basic", n: int = 20, max_degree: int = 
     first = min(problem.evaluations, MU if problem.restart else max(MU, problem.evaluations // START_SHARE))
     population = [_Individual([problem.draw(rng)]) for _ in range(first)]
     if problem.restart is not None:  # the restart world itself among them: a restart can only gain on it
-        population[0] = _Individual([restart_world(problem.restart, problem.n)])
+        population[0] = _Individual([problem.start_world])
     generations = math.ceil((problem.evaluations - first) / LAMBDA)
     with _global_random(problem.seed):
         algorithms.eaMuPlusLambda(population, toolbox, mu=min(MU, first), lambda_=LAMBDA, cxpb=0.0, mutpb=1.0,
