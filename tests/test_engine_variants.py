@@ -147,3 +147,20 @@ def test_a_case_from_a_world_the_census_does_not_enumerate_agrees():
     count, bad = compare_case(case, COMBOS[:1], "vertex-and-edge", "enh3")
     assert count == 2 and not bad, [str(d) for d in bad]
     assert np.array_equal(script(None), script("directional-vertex"))
+
+
+KEPT_TRACE_WORLDS = [("small-world:n=16,k=4,p=0.1,seed=529202", "8", 3, ("nearest", "shortest", "shortest")),
+                     ("small-world:n=11,k=4,p=0.1,seed=883383", "1", 0, ("lifo", "shortest", "shortest")),
+                     ("small-world:n=18,k=4,p=0.1,seed=547136", "6", 2, ("lifo", "fifo", "shortest"))]
+"""Runs where Enhancement-3's traces start from states kept at an earlier check while records of T are reached
+further on: a trace cache kept past the path it followed made each of them disagree."""
+
+
+@pytest.mark.parametrize("algorithm", ["enh2", "enh3", "enh3+5"])
+def test_traces_resumed_from_kept_states_agree_with_the_reference(algorithm):
+    from topomark.reference.worlds.argument import resolve_world
+    for text, vertex, exit_, policies in KEPT_TRACE_WORLDS:
+        world = resolve_world(text)
+        start = next((v, exit_) for v in world.vertices if str(v) == vertex)
+        count, bad = compare_case(Case(text, "random", world, [start]), (policies,), None, algorithm)
+        assert count == 1 and not bad, [str(d) for d in bad]

@@ -63,8 +63,9 @@ def _cached(fn: Callable[..., Any]) -> bool:
     return fn.__module__.startswith("topomark.") and Path(fn.__code__.co_filename).is_file()
 
 
-KERNEL_SOURCES = ("compiled.py", "digest.py", "signature.py", "robot.py", "mapstate.py", "algorithm31.py", "lighthouses.py",
-                  "trie.py", "records.py", "expansion.py", "enhanced.py", "runs.py", "marks.py", "footprints.py", "footprint_runs.py")
+KERNEL_SOURCES = ("compiled.py", "digest.py", "signature.py", "robot.py", "mapstate.py", "algorithm31.py",
+                  "lighthouses.py", "trie.py", "records.py", "expansion.py", "hypothesis_trie.py", "tracing.py",
+                  "enhanced.py", "runs.py", "marks.py", "footprints.py", "footprint_runs.py")
 """The engine's modules holding compiled code: one changed, every kernel is compiled again."""
 
 

@@ -15,14 +15,15 @@ augmentations); lines 8–20 run on the execution trie (:mod:`.trie`):
 * :func:`attempt` executes M from the overlapped node the robot retraced to,
   stopping at the first mismatch (Algorithm 4.1 lines 8–13);
 * after each mismatch, the remaining hypotheses the trie contradicts are
-  rejected without motion (:func:`contradicted`): stage 1 compares the
-  executed paths overlapping M with P^E (Algorithm 4.1 lines 16–20); tracing
-  maps every executed path onto S from h's dart, the hypothesized edge e''/e
+  rejected without motion (:mod:`.tracing`): stage 1 compares the executed
+  paths overlapping M with P^E (Algorithm 4.1 lines 16–20); tracing maps
+  every executed path onto S from h's dart, the hypothesized edge e''/e
   included, and compares each place it maps onto (Algorithm 4.2 lines 16–20);
 * stage 2: the robot stays where the mismatch stopped it and takes next the
   remaining hypothesis overlapping its path longest, ties in the hypothesis
   policy's order (Algorithm 4.1 lines 15, 23–26), retracing only to the last
-  overlapped node (:func:`choose`).
+  overlapped node (:func:`choose`, through the hypothesis trie of
+  :mod:`.hypothesis_trie`).
 
 Enhancements 4 and 5 (:mod:`.expansion`) add, on entering v_u, the ``virtual``
 node for v_k behind e, T's records beyond e and (Enhancement-5) the expansion,
@@ -33,10 +34,7 @@ new v_u only (:func:`~.expansion.recorded_depth`).
 
 A technique set is an integer of :data:`STAGE1`, :data:`STAGE2`,
 :data:`TRACE_S`, :data:`TRACE_T` and :mod:`.expansion`'s bits (:data:`TECHNIQUES`
-by registered name).  The reference
-rejects incrementally, tracing only the nodes added since its last check;
-:func:`contradicted` traces the whole trie each time, which rejects the same
-hypotheses: within an iteration S and the trie's old nodes do not change.
+by registered name).
 """
 
 from __future__ import annotations
@@ -50,19 +48,22 @@ from topomark.reference.engine.algorithm31 import (CONFIRMED, DIST, H_E, H_V, HY
 from topomark.reference.engine.compiled import kernel
 from topomark.reference.engine.expansion import (DEPTH2, EVERY_DEPTH, EXPAND_NEW, EXPAND_PLACE, PRUNE, add_virtual,
                                                  expand, expansion_depth, recorded_depth)
+from topomark.reference.engine.hypothesis_trie import (MARKED, STATE, build, longest_overlap, new_hypothesis_trie,
+                                                       overlapping, remove)
 from topomark.reference.engine.lighthouses import establish
 from topomark.reference.engine.mapstate import (DCAP, LIMIT, PE, PV, ULEN, add_vertex, bfs, known_signature,
                                                 mark_as_sensed, start_map, u_pop)
+from topomark.reference.engine.records import (R_FULL, R_META, clear_records, graft, migrate, new_records,
+                                               record_trie)
 from topomark.reference.engine.robot import PURPOSE_NEW, PURPOSE_RETRACE, PURPOSE_VALIDATION, fault, sense
-from topomark.reference.engine.records import (R_AT, R_CODE, R_DEGREE, R_FULL, R_META, clear_records, graft,
-                                               migrate, new_records, record_child, record_trie)
-from topomark.reference.engine.trie import (AT, CODE, DEGREE, FULL, META, MOTION, OFFSET, PARENT, find_child, forward,
-                                            goto, new_trie, path_to, start_trie)
+from topomark.reference.engine.tracing import (ECODE, EDEG, H_ARR, H_OFF, HERE, MOT, NODES, PREV, REM, STAGE1,
+                                               STAGE2, TRACE_S, TRACE_T, new_buffers, shared_depth, stage_one,
+                                               to_check, trace)
+from topomark.reference.engine.trie import AT, COUNT, FULL, META, OFFSET, forward, goto, new_trie, path_to, start_trie
 
 __all__ = ["STAGE1", "STAGE2", "TRACE_S", "TRACE_T", "TECHNIQUES", "RECORDS", "new_enhanced", "motion_sequences",
-           "contradicted", "choose", "attempt", "validate_on_trie", "iterate_enhanced", "explore_enhanced"]
+           "choose", "attempt", "validate_on_trie", "iterate_enhanced", "explore_enhanced"]
 
-STAGE1, STAGE2, TRACE_S, TRACE_T = 1, 2, 4, 8
 _ENH3 = STAGE2 | TRACE_S | TRACE_T
 TECHNIQUES = {"enh1": STAGE1 | STAGE2, "enh2": STAGE2 | TRACE_S, "enh3": _ENH3,
               "enh4": PRUNE | EXPAND_NEW, "enh5-d1": PRUNE | EXPAND_PLACE, "enh5-d2": PRUNE | EXPAND_PLACE | DEPTH2,
@@ -71,23 +72,21 @@ TECHNIQUES = {"enh1": STAGE1 | STAGE2, "enh2": STAGE2 | TRACE_S, "enh3": _ENH3,
 tracing continues into T, which records every executed path after the join (Enhancement-3); the bits of
 Enhancements 4 and 5 are :mod:`.expansion`'s."""
 EXPANDS = EXPAND_NEW | EXPAND_PLACE
+REJECTS = STAGE1 | TRACE_S
+"""The techniques that reject hypotheses without motion (:mod:`.tracing`)."""
 RECORDS = TRACE_T | EXPANDS
 """The techniques that keep T (Enhancement-3's T, or D of Enhancements 4/5)."""
-MOT, EDEG, ECODE, H_OFF, H_ARR, REM, SX, SE, HERE, RL, POOL_REC, POOL_NEXT = range(12)
 
 
 @kernel
 def new_enhanced(vcap: int, dcap: int, ucap: int, records: bool) -> tuple:
-    """The trie, the buffers of M, P^E and the remaining hypotheses, with room for every hypothesis's path, and
-    the store T (:mod:`.records`) when ``records`` (Enhancement-3's T, D of Enhancements 4/5)."""
+    """The hypothesis trie (:mod:`.hypothesis_trie`), the execution trie, the store T (:mod:`.records`; room
+    when ``records``: Enhancement-3's T, D of Enhancements 4/5) and the buffers of M, P^E and the remaining
+    hypotheses, with room for every hypothesis's path."""
     room = ucap * (vcap + 1) + dcap * (dcap + 1) + 2  # every hypothesis's path, the expansion, v_u and v_k
     rooms = min(16 * room, 1 << 21) if records else 1
-    return new_trie(room), new_records(rooms, vcap * dcap if records else 1, max(room, rooms)), (np.zeros(room, dtype=np.int64), np.zeros(room, dtype=np.int64),
-                            np.zeros(room, dtype=np.int64), np.zeros(ucap + 1, dtype=np.int64),
-                            np.zeros(ucap, dtype=np.int64), np.zeros(ucap, dtype=np.int64),
-                            np.zeros(room, dtype=np.int64), np.zeros(room, dtype=np.int64),
-                            np.zeros(vcap + 2, dtype=np.int64), np.zeros(room, dtype=np.int64),
-                            np.zeros(4 * room, dtype=np.int64), np.zeros(4 * room, dtype=np.int64))
+    return (new_hypothesis_trie(room, ucap), new_trie(room),
+            new_records(rooms, vcap * dcap if records else 1, max(room, rooms)), new_buffers(room, vcap, ucap))
 
 
 @kernel
@@ -113,92 +112,17 @@ def motion_sequences(S: tuple, W: tuple, X: tuple, nh: int) -> None:
 
 
 @kernel
-def contradicted(S: tuple, T: tuple, X: tuple, R: tuple, k: int, techniques: int, vk: int, i: int, hv: int,
-                 he: int) -> bool:
-    """Whether the trie rejects h' = (hv, he) (index ``k``) without motion: stage 1 (an executed path overlapping
-    M senses other than P^E) or tracing on S (a place an executed path maps onto reads otherwise) and T (a
-    record it reaches beyond an unexplored dart reads otherwise)."""
-    n, off, length = T[META][0], X[H_OFF][k], X[H_OFF][k + 1] - X[H_OFF][k]
-    if techniques & STAGE1:
-        node = 0
-        for s in range(length):
-            node = find_child(T, node, X[MOT][off + s])
-            if node < 0:
-                break
-            if T[DEGREE][node] != X[EDEG][off + s] or T[CODE][node] != X[ECODE][off + s]:
-                return True
-    if techniques & TRACE_S:
-        return _traced(S, T, X, R, techniques, vk, i, hv, he)
-    return False
-
-
-@kernel
-def _traced(S: tuple, T: tuple, X: tuple, R: tuple, techniques: int, vk: int, i: int, hv: int, he: int) -> bool:
-    """Algorithm 4.2 lines 16–20 (with ``TRACE_T``, 4.3 lines 16–24): every trie node in the order added, its
-    parent's state carried by its motion — the map dart reached (``X[SX]``, ``X[SE]``; -1 past an unexplored
-    dart) and the records of T reached (a list from ``X[RL]``); True at the first place or record that reads
-    otherwise than the node's perception."""
-    dcap, sx, se, rl, pool, nxt = S[5][DCAP], X[SX], X[SE], X[RL], X[POOL_REC], X[POOL_NEXT]
-    sx[0], se[0], rl[0] = hv, he, -1
-    used = 0
-    for node in range(1, T[META][0]):
-        p, m = T[PARENT][node], T[MOTION][node]
-        sx[node], rl[node] = -1, -1
-        if sx[p] >= 0:
-            x = sx[p]
-            t = (se[p] + m) % S[0][x]
-            y, y_entry = S[1][x * dcap + t], S[2][x * dcap + t]
-            if y < 0:
-                if techniques & TRACE_T and R[R_AT][x * dcap + t] >= 0 and used < pool.shape[0]:
-                    pool[used], nxt[used], rl[node] = R[R_AT][x * dcap + t], -1, used
-                    used += 1
-                if x == hv and t == he:
-                    y, y_entry = vk, i
-                elif x == vk and t == i:
-                    y, y_entry = hv, he
-            if y >= 0:
-                if known_signature(S, y, y_entry) != (T[DEGREE][node], T[CODE][node]):
-                    return True
-                sx[node], se[node] = y, y_entry
-        r = rl[p]
-        while r >= 0:
-            c = record_child(R, pool[r], m)
-            if c >= 0 and used < pool.shape[0]:
-                pool[used], nxt[used], rl[node] = c, rl[node], used
-                used += 1
-            r = nxt[r]
-        if used >= pool.shape[0]:
-            T[META][FULL] = 1
-            return False
-        r = rl[node]
-        while r >= 0:
-            if R[R_DEGREE][pool[r]] != T[DEGREE][node] or R[R_CODE][pool[r]] != T[CODE][node]:
-                return True
-            r = nxt[r]
-    return False
-
-
-@kernel
-def choose(T: tuple, X: tuple, W: tuple, remaining: int, techniques: int) -> tuple:
+def choose(T: tuple, X: tuple, Q: tuple, remaining: int, techniques: int) -> tuple:
     """Line 10, or with stage 2 lines 23–26: the position in the remaining list of the hypothesis to execute next
-    and the depth of the overlapped node to start from."""
+    and the depth of the overlapped node to start from (:func:`~.hypothesis_trie.longest_overlap`)."""
     if not techniques & STAGE2:
         return 0, 0
     here = path_to(T, T[META][AT], X[HERE])
-    best, best_len = 0, 0
-    if here == 0:
-        return 0, 0
-    for r in range(remaining):
-        k = X[REM][r]
-        off, length = X[H_OFF][k], X[H_OFF][k + 1] - X[H_OFF][k]
-        if X[MOT][off] != X[HERE][0]:
-            continue
-        common = 0
-        while common < here and common < length and X[MOT][off + common] == X[HERE][common]:
-            common += 1
-        if common > best_len:
-            best, best_len = r, common
-    return best, best_len
+    k, depth = longest_overlap(Q, X[HERE], here)
+    for r in range(remaining if k >= 0 else 0):
+        if X[REM][r] == k:
+            return r, depth
+    return 0, 0
 
 
 @kernel
@@ -216,14 +140,34 @@ def attempt(robot: np.ndarray, T: tuple, X: tuple, k: int, start: int) -> bool:
 
 
 @kernel
-def _reject(S: tuple, T: tuple, W: tuple, X: tuple, R: tuple, remaining: int, techniques: int, vk: int, i: int,
-            counts: np.ndarray) -> int:
-    """Reject without motion the remaining hypotheses the trie contradicts, the others keeping their order."""
+def _reject(S: tuple, T: tuple, W: tuple, X: tuple, R: tuple, Q: tuple, remaining: int, techniques: int, vk: int,
+            i: int, counts: np.ndarray, first: int) -> int:
+    """Reject without motion the remaining hypotheses the trie's nodes from ``first`` on contradict
+    (:mod:`.tracing`), the others keeping their order."""
+    count, path = to_check(T, X, first)
+    if techniques & STAGE1:
+        if path:
+            overlapping(Q, T, X[NODES], count, first, X[H_OFF], X[EDEG], X[ECODE])
+        else:
+            stage_one(T, X, Q, remaining, first)
+    if techniques & TRACE_S:
+        trace(S, T, X, R, Q, W, remaining, techniques, vk, i, count, first, path,
+              shared_depth(X, count) if path else 0)
+    X[PREV][0] = count if path and count < X[HERE].shape[0] else 0  # the path the kept traces follow
+    X[PREV][1:X[PREV][0] + 1] = X[NODES][:X[PREV][0]]
+    kept = _drop_marked(X, Q, remaining)
+    counts[REJECTED] += remaining - kept
+    return kept
+
+
+@kernel
+def _drop_marked(X: tuple, Q: tuple, remaining: int) -> int:
+    """The remaining hypotheses without those marked, the others keeping their order; how many are left."""
     kept = 0
     for r in range(remaining):
         k = X[REM][r]
-        if contradicted(S, T, X, R, k, techniques, vk, i, W[H_V][k], W[H_E][k]):
-            counts[REJECTED] += 1
+        if Q[STATE][k] == MARKED:
+            remove(Q, X[H_OFF], k)
         else:
             X[REM][kept] = k
             kept += 1
@@ -231,22 +175,18 @@ def _reject(S: tuple, T: tuple, W: tuple, X: tuple, R: tuple, remaining: int, te
 
 
 @kernel
-def _prune(S: tuple, T: tuple, W: tuple, X: tuple, R: tuple, remaining: int, vk: int, i: int) -> int:
+def _prune(S: tuple, T: tuple, W: tuple, X: tuple, R: tuple, Q: tuple, remaining: int, vk: int, i: int) -> int:
     """H without the hypotheses whose expanded signature disagrees with what is known around v_u — the trie
     (v_k behind e, the records grafted from T, the expansion) traced on S and T — the others keeping their
     order; pruned hypotheses are not counted as made."""
-    kept = 0
-    for r in range(remaining):
-        k = X[REM][r]
-        if not _traced(S, T, X, R, TRACE_S | TRACE_T, vk, i, W[H_V][k], W[H_E][k]):
-            X[REM][kept] = k
-            kept += 1
-    return kept
+    count, _ = to_check(T, X, 1)
+    trace(S, T, X, R, Q, W, remaining, TRACE_S | TRACE_T, vk, i, count, 1, False, 0)
+    return _drop_marked(X, Q, remaining)
 
 
 @kernel
-def validate_on_trie(robot: np.ndarray, S: tuple, W: tuple, T: tuple, X: tuple, R: tuple, nh: int, vk: int, i: int,
-                     techniques: int, counts: np.ndarray) -> int:
+def validate_on_trie(robot: np.ndarray, S: tuple, W: tuple, T: tuple, X: tuple, R: tuple, Q: tuple, nh: int, vk: int,
+                     i: int, techniques: int, counts: np.ndarray) -> int:
     """Lines 8–20 on the trie (started at v_u; with T, what T records beyond e grafted): returns the confirmed
     hypothesis's index (the robot at v0) or -1 (the robot back at v_u, its heading counted from e in the trie's
     offset)."""
@@ -254,24 +194,30 @@ def validate_on_trie(robot: np.ndarray, S: tuple, W: tuple, T: tuple, X: tuple, 
     for r in range(nh):
         X[REM][r] = W[ORDER][r]
     remaining = nh
+    build(Q, X[MOT], X[H_OFF], nh, X[REM], remaining)
+    X[PREV][0] = 0  # no trace kept yet
     if techniques & PRUNE:  # Algorithm 4.4 line 7, 4.5 line 8: H keeps what the expanded signature agrees with
-        remaining = _prune(S, T, W, X, R, remaining, vk, i)
+        remaining = _prune(S, T, W, X, R, Q, remaining, vk, i)
     counts[HYPOTHESES] += remaining
-    if T[META][0] > 1 and techniques & (STAGE1 | TRACE_S):  # perceptions known before any motion
-        remaining = _reject(S, T, W, X, R, remaining, techniques, vk, i, counts)
+    if T[META][0] > 1 and techniques & REJECTS:  # perceptions known before any motion
+        remaining = _reject(S, T, W, X, R, Q, remaining, techniques, vk, i, counts, 1)
+    checked = T[META][COUNT]
     while remaining > 0:
-        r, start = choose(T, X, W, remaining, techniques)
+        r, start = choose(T, X, Q, remaining, techniques)
         k = X[REM][r]
         for t in range(r, remaining - 1):
             X[REM][t] = X[REM][t + 1]
         remaining -= 1
+        remove(Q, X[H_OFF], k)
         if attempt(robot, T, X, k, start):
             counts[CONFIRMED] += 1
             return k
         if fault(robot) or T[META][FULL]:
             return -1
         counts[REJECTED] += 1
-        remaining = _reject(S, T, W, X, R, remaining, techniques, vk, i, counts)
+        if techniques & REJECTS and T[META][COUNT] > checked:  # only new nodes can contradict
+            remaining = _reject(S, T, W, X, R, Q, remaining, techniques, vk, i, counts, checked)
+            checked = T[META][COUNT]
     goto(robot, T, 0, PURPOSE_RETRACE)
     return -1
 
@@ -308,7 +254,7 @@ def _enter(robot: np.ndarray, S: tuple, T: tuple, R: tuple, techniques: int, vk:
 
 
 @kernel
-def iterate_enhanced(robot: np.ndarray, S: tuple, W: tuple, T: tuple, X: tuple, R: tuple, techniques: int,
+def iterate_enhanced(robot: np.ndarray, S: tuple, W: tuple, T: tuple, X: tuple, R: tuple, Q: tuple, techniques: int,
                      edge_policy: int, hypothesis_policy: int, path_policy: int, counts: np.ndarray) -> int:
     """One pass through Algorithm 3.1's lines 5–28 with lines 8–20 on the trie (:func:`validate_on_trie`)."""
     meta = S[5]
@@ -333,7 +279,7 @@ def iterate_enhanced(robot: np.ndarray, S: tuple, W: tuple, T: tuple, X: tuple, 
     if code != OK:
         return code
     nh = hypotheses(S, W, vk, degree, marks, path_policy, hypothesis_policy)
-    k = validate_on_trie(robot, S, W, T, X, R, nh, vk, i, techniques, counts)  # lines 8-20
+    k = validate_on_trie(robot, S, W, T, X, R, Q, nh, vk, i, techniques, counts)  # lines 8-20
     if fault(robot):
         return ROBOT
     if T[META][FULL] or R[R_META][R_FULL]:
@@ -362,7 +308,7 @@ def iterate_enhanced(robot: np.ndarray, S: tuple, W: tuple, T: tuple, X: tuple, 
 
 
 @kernel
-def explore_enhanced(robot: np.ndarray, S: tuple, W: tuple, T: tuple, X: tuple, R: tuple, rows: np.ndarray,
+def explore_enhanced(robot: np.ndarray, S: tuple, W: tuple, T: tuple, X: tuple, R: tuple, Q: tuple, rows: np.ndarray,
                      techniques: int, edge_policy: int, hypothesis_policy: int, path_policy: int,
                      counts: np.ndarray) -> int:
     """The composition ``techniques`` from the robot's start with the lighthouse of ``rows`` (lines 1–3 as
@@ -375,6 +321,6 @@ def explore_enhanced(robot: np.ndarray, S: tuple, W: tuple, T: tuple, X: tuple, 
         return ROBOT
     code = start_map(S, degree, sense(robot)[1])
     while code == OK and S[5][ULEN] > 0:
-        code = iterate_enhanced(robot, S, W, T, X, R, techniques, edge_policy, hypothesis_policy, path_policy,
+        code = iterate_enhanced(robot, S, W, T, X, R, Q, techniques, edge_policy, hypothesis_policy, path_policy,
                                 counts)
     return code

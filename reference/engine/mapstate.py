@@ -39,7 +39,7 @@ import numpy as np
 from topomark.reference.engine.compiled import kernel, step
 from topomark.reference.engine.signature import encode, rotate
 
-__all__ = ["new_map", "start_map", "add_vertex", "mark_as_sensed", "join", "u_pop", "u_index", "neighbours", "known_signature",
+__all__ = ["new_map", "start_map", "add_vertex", "mark_as_sensed", "join", "u_pop", "u_index", "neighbours", "known_signature", "signature_in",
            "bfs", "dfs_toward", "NS", "ULEN", "PV", "PE", "DCAP", "HEAD", "VCAP", "LIMIT"]
 
 NS, ULEN, PV, PE, DCAP, HEAD, VCAP = range(7)
@@ -140,8 +140,13 @@ def neighbours(S: tuple, v: int, w: int) -> bool:
 def known_signature(S: tuple, v: int, entry: int) -> tuple:
     """What S says the robot senses at ``v`` entered by ``entry``: (degree, the code of the marks recorded there,
     counted from ``entry``)."""
-    degree = S[0][v]
-    return degree, rotate(S[6][v], degree, entry)
+    return signature_in(S[0], S[6], v, entry)
+
+
+@step
+def signature_in(degrees: np.ndarray, marks: np.ndarray, v: int, entry: int) -> tuple:
+    """:func:`known_signature` from S's degrees and marks, for a loop that binds them once."""
+    return degrees[v], rotate(marks[v], degrees[v], entry)
 
 
 @kernel

@@ -34,7 +34,7 @@ from topomark.reference.engine.compiled import kernel, step
 from topomark.reference.engine.mapstate import DCAP
 from topomark.reference.engine.trie import CODE, DEGREE, DEPTH, FIRST, MOTION, NEXT, add_child, find_child
 
-__all__ = ["new_records", "clear_records", "new_record", "record_child", "record_trie", "migrate", "graft", "R_AT",
+__all__ = ["new_records", "clear_records", "new_record", "record_child", "child_in", "record_trie", "migrate", "graft", "R_AT",
            "R_FULL"]
 
 R_DEGREE, R_CODE, R_MOTION, R_FIRST, R_NEXT, R_AT, R_META, R_STACK_A, R_STACK_B, R_STACK_C = range(10)
@@ -71,12 +71,16 @@ def new_record(R: tuple, motion: int, degree: int, code: int) -> int:
 @step
 def record_child(R: tuple, rec: int, motion: int) -> int:
     """The child of record ``rec`` by ``motion``, or -1."""
-    c = R[R_FIRST][rec]
-    while c >= 0:
-        if R[R_MOTION][c] == motion:
-            return c
-        c = R[R_NEXT][c]
-    return -1
+    return child_in(R[R_FIRST], R[R_MOTION], R[R_NEXT], rec, motion)
+
+
+@step
+def child_in(first: np.ndarray, motions: np.ndarray, nxt: np.ndarray, rec: int, motion: int) -> int:
+    """:func:`record_child` from T's arrays, for a loop that binds them once."""
+    c = first[rec]
+    while c >= 0 and motions[c] != motion:
+        c = nxt[c]
+    return c
 
 
 @step

@@ -127,10 +127,10 @@ def _run_enhanced(robot: np.ndarray, starts: np.ndarray, rows: np.ndarray, techn
                   path: int, vcap: int, dcap: int, ucap: int, codes: np.ndarray, counts: np.ndarray,
                   tallies: np.ndarray) -> None:
     S, W = new_map(vcap, dcap, ucap), new_scratch(vcap, ucap)
-    T, R, X = new_enhanced(vcap, dcap, ucap, techniques & RECORDS != 0)
+    Q, T, R, X = new_enhanced(vcap, dcap, ucap, techniques & RECORDS != 0)
     for s in range(starts.shape[0]):
         reset(robot, starts[s, 0], starts[s, 1])
-        codes[s] = explore_enhanced(robot, S, W, T, X, R, rows, techniques, edge, hypothesis, path, tallies[s])
+        codes[s] = explore_enhanced(robot, S, W, T, X, R, Q, rows, techniques, edge, hypothesis, path, tallies[s])
         counts[s, :16] = robot[robot[COUNTS]:robot[COUNTS] + 16]
         counts[s, 16] = robot[COST]
 
