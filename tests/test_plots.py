@@ -94,6 +94,22 @@ def test_the_legend_lists_only_what_is_drawn():
     plt.close("all")
 
 
+def test_a_long_legend_goes_beside_the_panel_and_widens_the_figure_once():
+    """Up to LEGEND_INSIDE entries sit over the curves; one more and the legend moves beside the panel."""
+    widths = []
+    for count in (plots.LEGEND_INSIDE, plots.LEGEND_INSIDE + 1):
+        fig, (left, right) = plots.new(plt, panels=2)
+        for ax in (left, right):
+            for k in range(count):
+                plots.curve(ax, [10, 20], [k + 1, k + 2], f"series {k}")
+            plots.decorate(ax, "t", "x", "y")
+        widths.append(fig.get_figwidth())
+        assert len(_legend(left)) == count
+        assert (left.get_legend()._ncols == 2) == (count > plots.LEGEND_INSIDE)
+    assert widths[1] == 2 * widths[0]
+    plt.close("all")
+
+
 def test_a_one_size_bench_plot_lists_no_bound_it_does_not_draw(monkeypatch, tmp_path):
     """The small Figure 3.11 sweep (one size): its cost plot's legend names the drawn series only."""
     panels = []

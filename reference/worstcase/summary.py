@@ -32,7 +32,7 @@ from topomark.spec.worldfile import world_from_json
 
 from topomark.reference.algorithms.registry import algorithm_spec
 from topomark.reference.run.explore import explore
-from topomark.reference.bench.reports.plots import curve, decorate, drawn, new, points, save
+from topomark.reference.bench.reports.plots import curve, drawn, finish, new, points
 from topomark.reference.worstcase.fit import fit_exponents
 from topomark.reference.worstcase.structural import RESTART_FAMILIES
 from topomark.reference.worstcase.naming import generator_text
@@ -51,10 +51,6 @@ QUESTION = ("\"the derived upper cost bound O(m²n) of the basic single directio
             "the same time). If these worst case scenarios can happen together for some environment, then what "
             "classes of graphs are they? … it might be helpful to derive the bound by considering some other factors "
             "such as graph diameter and maximum vertex degrees\" (§7.2).")
-
-LEGEND_INSIDE = 12
-"""The most legend entries the summary plot keeps inside its axes."""
-
 
 def structure(world: World, algorithm: str) -> dict[str, Any]:
     """What the worst run on ``world`` (from its start) looks like: the world's shape and the run's work."""
@@ -225,12 +221,8 @@ def _plot(out: Path, exhaustive: list[dict], searched: list[dict]) -> list[Path]
         for name, series in sorted(found.items()):
             points(ax, sorted(series), [series[n] for n in sorted(series)], f"{name}, found")
         ax.set_xscale("log")
-        decorate(ax, "The worst cost per n: proved and found", "n (vertices)", "edge traversals")
-        handles, labels = ax.get_legend_handles_labels()
-        if len(labels) > LEGEND_INSIDE:  # too many to sit on the curves: beside them, the figure widened
-            ax.legend(handles, labels, fontsize=6, ncol=2, loc="upper left", bbox_to_anchor=(1.01, 1.0))
-            fig.set_size_inches(fig.get_figwidth() * 2, fig.get_figheight())
-        return [save(plt, fig, out / "worst-case-summary.png")]
+        return [finish(plt, fig, ax, out / "worst-case-summary.png", "The worst cost per n: proved and found",
+                       "n (vertices)", "edge traversals")]
     return drawn(draw)
 
 

@@ -48,6 +48,9 @@ COLOURS = ("#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e
            "#17becf")
 MARKERS = ("o", "s", "^", "D", "v", "P", "X")
 MAX_TICKS = 12  # more measured sizes than this: matplotlib's own ticks (they would overlap)
+LEGEND_INSIDE = 12
+"""More legend entries than this do not fit over the curves: the legend goes beside the panel, in two columns,
+and the figure is widened once to make room."""
 
 
 def style(i: int) -> dict[str, str]:
@@ -153,7 +156,8 @@ def shows(artist, log_y: bool = False) -> bool:
 
 
 def decorate(ax, title: str, xlabel: str, ylabel: str, log: bool = True) -> None:
-    """Label a panel (log y axis unless ``log`` is False), tick the sizes it measured, legend and grid."""
+    """Label a panel (log y axis unless ``log`` is False), tick the sizes it measured, legend (beside the panel
+    when it has more than :data:`LEGEND_INSIDE` entries) and grid."""
     if log:
         ax.set_yscale("log")
     xs = sorted(ax.__dict__.get("_topomark_xs", ()))
@@ -167,8 +171,15 @@ def decorate(ax, title: str, xlabel: str, ylabel: str, log: bool = True) -> None
     ax.set_title(title, fontsize=10)
     log_y = ax.get_yscale() == "log"
     entries = [(h, label) for h, label in zip(*ax.get_legend_handles_labels()) if shows(h, log_y)]
-    if entries:
-        ax.legend([h for h, _ in entries], [label for _, label in entries], fontsize=7)
+    handles, labels = [h for h, _ in entries], [label for _, label in entries]
+    if len(entries) > LEGEND_INSIDE:
+        ax.legend(handles, labels, fontsize=6, ncol=2, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+        fig = ax.figure
+        if not getattr(fig, "_topomark_widened", False):
+            fig.set_size_inches(fig.get_figwidth() * 2, fig.get_figheight())
+            fig._topomark_widened = True
+    elif entries:
+        ax.legend(handles, labels, fontsize=7)
     ax.grid(True, which="both", alpha=0.3)
 
 
