@@ -38,7 +38,7 @@ from __future__ import annotations
 import numpy as np
 
 from topomark.reference.engine.algorithm31 import H_E, H_V
-from topomark.reference.engine.compiled import kernel
+from topomark.reference.engine.compiled import kernel, step
 from topomark.reference.engine.hypothesis_trie import MARKED, REMAINING, STATE
 from topomark.reference.engine.mapstate import DCAP, signature_in
 from topomark.reference.engine.records import R_AT, R_CODE, R_DEGREE, R_FIRST, R_MOTION, R_NEXT, child_in
@@ -109,14 +109,40 @@ def stage_one(T: tuple, X: tuple, Q: tuple, remaining: int, first: int) -> None:
                 break
 
 
+@step
+def _across(x: int, t: int, hv: int, he: int, vk: int, i: int, y: int, y_entry: int) -> tuple:
+    """Where exit ``t`` of ``x``, unexplored in S, leads under h': the hypothesized edge joins (hv, he) and (vk, i)
+    (e''/e, Algorithm 4.2); elsewhere (``y``, ``y_entry``)."""
+    if x == hv and t == he:
+        return vk, i
+    if x == vk and t == i:
+        return hv, he
+    return y, y_entry
+
+
+@step
+def _resume(k: int, hv: int, he: int, base: int, shared: int, nodes: np.ndarray, sx: np.ndarray, se: np.ndarray,
+            rl: np.ndarray, csx: np.ndarray, cse: np.ndarray, cvalid: np.ndarray) -> int:
+    """Where hypothesis ``k``'s trace along a path starts: the depth this path shares with the last one traced, as
+    far as ``k``'s kept states reach, its state there put on the node of that depth; -1 when that state is past an
+    unexplored dart with no record (nothing further can disagree)."""
+    q0 = min(shared, cvalid[k])
+    cvalid[k] = q0
+    if q0 == 0:
+        csx[base], cse[base] = hv, he
+        return 0
+    node = nodes[q0 - 1]
+    sx[node], se[node], rl[node] = csx[base + q0], cse[base + q0], -1
+    return q0 if sx[node] >= 0 else -1
+
+
 @kernel
 def trace(S: tuple, T: tuple, X: tuple, R: tuple, Q: tuple, W: tuple, remaining: int, techniques: int, vk: int,
           i: int, count: int, first: int, path: bool, shared: int) -> None:
-    """Tracing (Algorithm 4.2 lines 16–20; with ``TRACE_T``, 4.3 lines 16–24): for each remaining hypothesis h'
-    not yet marked, the nodes ``X[NODES][:count]`` in the order added, each parent's state carried by the node's
-    motion — the map dart reached (-1 past an unexplored dart) and the records of T reached; h' is ``MARKED`` at
-    the first node from ``first`` on whose place or record reads otherwise than its perception.  Along a
-    ``path`` each trace starts where the last path traced and this one part (``shared``), from its kept state."""
+    """Tracing (Algorithm 4.2 lines 16–20; with ``TRACE_T``, 4.3 lines 16–24) of each unmarked remaining h': the
+    nodes ``X[NODES][:count]`` in the order added, each parent's state carried by the node's motion (the map dart
+    reached, -1 past an unexplored dart, and the records of T reached); h' is ``MARKED`` at the first node from
+    ``first`` on that reads otherwise.  Along a ``path`` a trace starts from its state kept at ``shared``."""
     dcap, sx, se, rl, pool, nxt = S[5][DCAP], X[SX], X[SE], X[RL], X[POOL_REC], X[POOL_NEXT]
     nodes, parent, motion, tdeg, tcode = X[NODES], T[PARENT], T[MOTION], T[DEGREE], T[CODE]
     sdeg, slink, sentry, smarks, rat, rdeg, rcode = S[0], S[1], S[2], S[6], R[R_AT], R[R_DEGREE], R[R_CODE]
@@ -129,22 +155,14 @@ def trace(S: tuple, T: tuple, X: tuple, R: tuple, Q: tuple, W: tuple, remaining:
             continue
         hv, he = hvs[k], hes[k]
         sx[0], se[0], rl[0] = hv, he, -1
-        used, q0, keep = 0, 0, path and count < stride
-        base = k * stride
+        used, q0, keep, base = 0, 0, path and count < stride, k * stride
         if keep:  # start from the state kept at the depth this path shares with the last
-            q0 = min(shared, cvalid[k])
-            cvalid[k] = q0
-            if q0 == 0:
-                csx[base], cse[base] = hv, he
-            else:
-                node = nodes[q0 - 1]
-                sx[node], se[node], rl[node] = csx[base + q0], cse[base + q0], -1
-                if sx[node] < 0:
-                    continue  # past an unexplored dart with no record: nothing further can disagree
+            q0 = _resume(k, hv, he, base, shared, nodes, sx, se, rl, csx, cse, cvalid)
+            if q0 < 0:
+                continue
         for q in range(q0, count):
             node = nodes[q]
-            p, m = parent[node], motion[node]
-            sx[node], rl[node] = -1, -1
+            p, m, sx[node], rl[node] = parent[node], motion[node], -1, -1
             if sx[p] >= 0:
                 x = sx[p]
                 t = (se[p] + m) % sdeg[x]
@@ -153,10 +171,7 @@ def trace(S: tuple, T: tuple, X: tuple, R: tuple, Q: tuple, W: tuple, remaining:
                     if records and rat[x * dcap + t] >= 0 and used < pool.shape[0]:
                         pool[used], nxt[used], rl[node] = rat[x * dcap + t], -1, used
                         used += 1
-                    if x == hv and t == he:
-                        y, y_entry = vk, i
-                    elif x == vk and t == i:
-                        y, y_entry = hv, he
+                    y, y_entry = _across(x, t, hv, he, vk, i, y, y_entry)
                 if y >= 0:
                     if node >= first and signature_in(sdeg, smarks, y, y_entry) != (tdeg[node], tcode[node]):
                         state[k] = MARKED
@@ -170,18 +185,15 @@ def trace(S: tuple, T: tuple, X: tuple, R: tuple, Q: tuple, W: tuple, remaining:
                         pool[used], nxt[used], rl[node] = c, rl[node], used
                         used += 1
                     rec = nxt[rec]
-                if used >= pool.shape[0]:
-                    T[META][FULL] = 1
-                    break
-                rec = rl[node]
+                rec = rl[node] if used < pool.shape[0] else -1
                 while rec >= 0 and node >= first and rdeg[pool[rec]] == tdeg[node] and rcode[pool[rec]] == tcode[node]:
                     rec = nxt[rec]
-                if rec >= 0 and node >= first:
-                    state[k] = MARKED
+                if used >= pool.shape[0] or (rec >= 0 and node >= first):
+                    T[META][FULL] |= used >= pool.shape[0]
+                    state[k] = MARKED if used < pool.shape[0] else state[k]
                     break
+            keep = keep and rl[node] < 0
             if keep:  # the state at depth q + 1, while no record is reached; a trace with neither ends here
-                keep = rl[node] < 0
-                if keep:
-                    csx[base + q + 1], cse[base + q + 1], cvalid[k] = sx[node], se[node], q + 1
-                    if sx[node] < 0:
-                        break
+                csx[base + q + 1], cse[base + q + 1], cvalid[k] = sx[node], se[node], q + 1
+                if sx[node] < 0:
+                    break
