@@ -1,5 +1,5 @@
-"""What Algorithm 3.1 costs on the triangulated strip, exactly, and why the (3.1)+(3.2) bound is tight for it
-(thesis §3.5.2, §7.2).
+"""What Algorithm 3.1 costs on the triangulated strip, exactly at every size run, and why that cost keeps within a
+constant factor of the (3.1)+(3.2) bound (thesis §3.5.2, §7.2).
 
 §7.2 asks whether the O(m²n) bound of §3.5.2 is tight, and for which graphs.
 On the strip P_n² (:func:`~topomark.reference.worlds.expensive.strip`: m =
@@ -11,10 +11,12 @@ each cubic, the other sizes of its residue check it):
     24·cost = 23n³ − 318n² + 1724n − c₀   (n even; c₀ = 3144, 3176, 3160 for n ≡ 0, 2, 4 mod 6)
     24·cost = 23n³ − 321n² + 1757n − c₁   (n odd;  c₁ = 3355, 3339, 3323 for n ≡ 1, 3, 5 mod 6)
 
-for n ≥ 9 (:data:`STRIP_FROM`), and checked against a run at every n from 9
-to 200 (the tests).  The bound (3.1)+(3.2) with m = 2n − 3 is
-14n³/3 + O(n²), so cost/bound rises to 23/112 ≈ 0.205: the bound is tight
-up to that constant on this family — Θ(m²n) with diameter Θ(n) and degree 4.
+from n = 9 (:data:`STRIP_FROM`), checked against a run at every n from 9
+to 200 (the tests).  That is measured, not proved: the explanation below
+says why the cost is cubic, but no argument shows the formula at every n.
+The bound (3.1)+(3.2) with m = 2n − 3 is 14n³/3 + O(n²), so over those
+sizes cost/bound rises towards 23/112 ≈ 0.205: as far as the runs go the
+bound is tight up to that constant on this family (diameter Θ(n), degree 4).
 
 Why (the cost breakdown of ``topomark explore --breakdown`` shows it): every
 inner place has degree 4 and no marker, so all of them look alike.  Exit 1
@@ -36,10 +38,11 @@ does for the footprint searches of §6.2.1 what the strip does for ``basic``: Ca
 
     4·cost = 5n² − 31n + c   (c = 12, 14, 8, −6 for n ≡ 0, 2, 4, 6 mod 8)
 
-for every even n ≥ 18 (:data:`SPLIT_STRIP_FROM`): fitted on three sizes of
-each residue and checked against a run at every even n from 18 to 300.  Their
-bound (n − 1)² + (m − n + 1)(3n − 1) is 4n² − 9n + 3 here, so cost / bound
-rises towards 5/16: the O(mn) bound of both cases is tight up to that constant
+from n = 18 (:data:`SPLIT_STRIP_FROM`): fitted on three sizes of each
+residue and checked against a run at every even n from 18 to 300 (measured,
+not proved for larger n).  Their bound (n − 1)² + (m − n + 1)(3n − 1) is
+4n² − 9n + 3 here, so cost / bound rises towards 5/16 over those sizes: as
+far as the runs go the O(mn) bound of both cases is tight up to that constant
 on worlds of maximum degree 4 and diameter Θ(n).  Why: of the n − 2 loops,
 about three quarters are validated by a walk of about 1.5 n moves (out along
 the breadth-first tree's short branch, back through v_k, along the long one).
