@@ -74,15 +74,10 @@ def test_it_costs_cases_1a_and_4_more_than_the_closed_strip_from_the_least_size(
 def test_the_cost_formula_holds_past_100_up_to_300():
     """The reference at both ends; the compiled engine, which agrees with it run for run, at every even n between
     (the reference where the engine is not installed)."""
-    from topomark.proofs.world_arrays import to_arrays
+    from topomark.reference.algorithms.registry import algorithm_spec
     from topomark.reference.engine import available
-    from topomark.reference.engine.runs import run_starts
+    from topomark.reference.worstcase.search import unchecked_run
     for n in range(102, 301, 2):
-        world = generate("split-strip", n=n)
-        if n in (102, 300) or not available():
-            cost = explore(world, "case-4", check=False, record=False).cost
-        else:
-            at, entry = world.start_state()
-            cost = run_starts(to_arrays(world), [(world.vertices.index(at), entry)], ("nearest", "fifo", "shortest"),
-                              algorithm="case-4")[0].cost
+        _, cost, _ = unchecked_run(generate("split-strip", n=n), algorithm_spec("case-4"),
+                                   available() and n not in (102, 300))
         assert cost == split_strip_cost(n), n

@@ -194,8 +194,8 @@ def test_every_large_kept_worst_world_costs_what_its_index_says_and_is_no_stress
     from topomark.reference.worlds.worst_cases import WORST_CASES, worst_case_world, worst_case_worlds
     from topomark.reference.run.explore import explore
     from topomark.reference.engine import available
-    from topomark.reference.engine.runs import run_starts
-    from topomark.proofs.world_arrays import to_arrays
+    from topomark.reference.algorithms.registry import algorithm_spec
+    from topomark.reference.worstcase.search import unchecked_run
     stress = {name for name, _, _ in worst_case_worlds()}
     large = [name for name, entry in WORST_CASES.items() if not entry.get("stress", True)]
     assert large and not stress & {f"worst-{name}" for name in large}
@@ -207,10 +207,8 @@ def test_every_large_kept_worst_world_costs_what_its_index_says_and_is_no_stress
             run = explore(world, entry["algorithm"])
             assert run.verified and run.cost == entry["cost"], name
         else:  # the compiled engine, which agrees with the reference exactly (tests/test_engine.py)
-            at, entry_dart = world.start_state()
-            got = run_starts(to_arrays(world), [(world.vertices.index(at), entry_dart)], ("nearest", "fifo", "shortest"),
-                             algorithm=entry["algorithm"])
-            assert got[0].claimed == "correct" and got[0].cost == entry["cost"], name
+            claimed, cost, _ = unchecked_run(world, algorithm_spec(entry["algorithm"]), True)
+            assert claimed == "correct" and cost == entry["cost"], name
 
 
 def test_worst_worlds_are_stress_cases_of_the_conformance_suites():

@@ -60,7 +60,7 @@ from topomark.reference.worstcase.moves import (ALL_MOVES, LatticeHoles, move_la
                                                 random_world)
 from topomark.reference.worstcase.structural import RESTART_FAMILIES, restart_world
 
-__all__ = ["adversarial_search", "random_baseline", "fit_exponents", "AdversarialResult", "Found", "OBJECTIVES",
+__all__ = ["adversarial_search", "random_baseline", "unchecked_run", "fit_exponents", "AdversarialResult", "Found", "OBJECTIVES",
            "FAMILIES", "MU", "LAMBDA", "START_SHARE"]
 
 OBJECTIVES = ("cost", "cost-per-m", "ratio")
@@ -181,17 +181,7 @@ class _Problem:
 
     def outcome(self, world: World) -> tuple[str, int, dict[str, int]]:
         """(claimed, cost, cost by purpose) of the unchecked run on ``world`` from its start."""
-        if self.engine:
-            from topomark.proofs.world_arrays import to_arrays
-            from topomark.reference.engine.runs import run_starts
-            at, entry = world.start_state()
-            policies = self.policies or Policies()
-            run = run_starts(to_arrays(world), [(world.vertices.index(at), entry)],
-                             (policies.edge, policies.hypothesis, policies.path), lighthouse=self.lighthouse,
-                             algorithm=self.spec.name)[0]
-            return run.claimed, run.cost, run.by_purpose
-        out = explore(world, self.spec, lighthouse=self.lighthouse, policies=self.policies, check=False, record=False)
-        return out.claimed, out.cost, out.by_purpose
+        return unchecked_run(world, self.spec, self.engine, self.lighthouse, self.policies)
 
     def run(self, cand: World | LatticeHoles) -> tuple[float, tuple[int, int] | None]:
         """(score, (cost, counted cost)) of one run; (−∞, None) for a run that does not end ``correct``."""
@@ -258,6 +248,22 @@ def _compiled(engine: str, algorithm: str, lighthouse: str | None, policies: Pol
 
 
 # -- counting evaluations, the best so far and the history -----------------------------------
+def unchecked_run(world: World, spec: Any, engine: bool, lighthouse: str | None = None,
+                  policies: Policies | None = None) -> tuple[str, int, dict[str, int]]:
+    """(claimed, cost, cost by purpose) of ``spec``'s unchecked run on ``world`` from its start: on the compiled
+    engine when ``engine`` (see :func:`_compiled`), else on the reference."""
+    if engine:
+        from topomark.proofs.world_arrays import to_arrays
+        from topomark.reference.engine.runs import run_starts
+        at, entry = world.start_state()
+        chosen = policies or Policies()
+        run = run_starts(to_arrays(world), [(world.vertices.index(at), entry)],
+                         (chosen.edge, chosen.hypothesis, chosen.path), lighthouse=lighthouse, algorithm=spec.name)[0]
+        return run.claimed, run.cost, run.by_purpose
+    out = explore(world, spec, lighthouse=lighthouse, policies=policies, check=False, record=False)
+    return out.claimed, out.cost, out.by_purpose
+
+
 class _Tally:
     def __init__(self, problem: _Problem, progress: Callable[[int, float], None] | None):
         self.problem, self.progress = problem, progress
