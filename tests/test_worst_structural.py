@@ -144,6 +144,24 @@ def test_the_verdict_says_the_bound_is_tight_only_where_the_ratio_does_not_fall(
     assert STRIP_SAYS[1:] in basic and "23/24·n³" in basic
 
 
+def test_the_verdict_shows_each_sizes_largest_ratio_and_names_that_world():
+    """Two runs at n = 50, the costlier world given the lower cost / bound. The verdict shows the larger
+    ratio and the report names its world, so figure and world are one world, as on the families page."""
+    from topomark.reference.worstcase.summary import _names
+    from topomark.reference.worstcase.verdicts import best_per_size, verdicts
+    from topomark.spec.worldfile import world_to_json
+    from topomark.reference.worlds.argument import resolve_world
+    lower, higher = (world_to_json(resolve_world(f"worst-case:case={name}"))
+                     for name in ("case-2-n50-d4-search", "case-2-n50-d4-search-3"))
+    runs = [{"algorithm": "case-2", "max_degree": 4, "family": None, "per_n": [
+        {"n": 50, "search": {"best": {"cost": cost, "ratio_to_bound": q, "world": w}}}]}
+        for cost, q, w in ((1000, 0.10, lower), (900, 0.12, higher))]
+    assert best_per_size(runs)[("case-2", 50)]["cost"] == 900
+    assert _names(runs) == {("case-2", 50): "worst-case:case=case-2-n50-d4-search-3"}
+    line = verdicts([], runs, _names(runs))[0]
+    assert "n = 50: 0.1200 (`worst-case:case=case-2-n50-d4-search-3`)" in line and "0.1000" not in line
+
+
 def test_the_verdict_names_each_algorithms_own_bound_and_family_formula():
     from topomark.reference.worstcase.verdicts import SPLIT_SAYS, verdicts
     assert "the O(m²n) bound" in verdicts([], _searched("enh2", [0.1, 0.09, 0.08]))[0]

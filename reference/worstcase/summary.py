@@ -39,7 +39,7 @@ from topomark.reference.worstcase.naming import generator_text
 from topomark.reference.worstcase.readback import read_regular
 from topomark.reference.worstcase.report import THESIS
 from topomark.reference.worstcase.summary_input import bound_broken, load_runs
-from topomark.reference.worstcase.verdicts import verdicts
+from topomark.reference.worstcase.verdicts import best_per_size, verdicts
 
 __all__ = ["structure", "summarise", "summarise_runs", "MIN_FIT_SIZES"]
 
@@ -175,14 +175,8 @@ def _search_section(runs: list[dict]) -> list[str]:
 
 
 def _names(searched: list[dict]) -> dict[tuple[str, int], str | None]:
-    """(algorithm, n) ↦ the generator text of the best world found there (the largest cost over its runs)."""
-    best: dict[tuple[str, int], dict] = {}
-    for data in searched:
-        for r in data["per_n"]:
-            s, key = r["search"].get("best"), (data["algorithm"], r["n"])
-            if s and not data.get("family") and (key not in best or s["cost"] > best[key]["cost"]):
-                best[key] = s
-    return {key: generator_text(world_from_json(s["world"]), key[0]) for key, s in best.items()}
+    """(algorithm, n) ↦ the generator text of the best world found there (:func:`~.verdicts.best_per_size`)."""
+    return {key: generator_text(world_from_json(s["world"]), key[0]) for key, s in best_per_size(searched).items()}
 
 
 def _bound_growth(best: list[dict[str, Any]]) -> str:

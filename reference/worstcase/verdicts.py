@@ -26,7 +26,7 @@ from __future__ import annotations
 import re
 from typing import Any
 
-__all__ = ["verdicts", "STRIP_STATEMENT", "STRIP_SAYS", "SPLIT_STATEMENT", "SPLIT_SAYS", "FORMULAS"]
+__all__ = ["verdicts", "best_per_size", "STRIP_STATEMENT", "STRIP_SAYS", "SPLIT_STATEMENT", "SPLIT_SAYS", "FORMULAS"]
 
 STRIP_STATEMENT = ("on the triangulated strip `strip:n=N` (maximum degree 4, m = 2n − 3, diameter ⌊n/2⌋, "
                    "the start at an end) the cost is a cubic in n per n mod 6, 23/24·n³ + O(n²), at every n from 9 "
@@ -72,18 +72,29 @@ def _proved(runs: list[dict[str, Any]]) -> str | None:
             f"(at n = {top[1]}, degree ≤ {top[2]})")
 
 
-def _shown(runs: list[dict[str, Any]], names: dict[tuple[str, int], str | None]) -> tuple[str | None, list[float]]:
-    best: dict[int, dict[str, Any]] = {}
-    for d in runs:
+def best_per_size(searched: list[dict[str, Any]]) -> dict[tuple[str, int], dict[str, Any]]:
+    """(algorithm, n) ↦ the best world found there over every search run (the ``lattice-hole`` family left out):
+    the largest cost / exact bound, the larger cost between equal ratios.  The verdict's figure and the world its
+    generator text names are the same world, and the same rule as the families page (the largest ratio)."""
+    best: dict[tuple[str, int], dict[str, Any]] = {}
+    for d in searched:
         for r in d["per_n"]:
-            s = r["search"].get("best")
-            if s and s.get("ratio_to_bound") is not None and (r["n"] not in best or s["cost"] > best[r["n"]]["cost"]):
-                best[r["n"]] = {**s, "algorithm": d["algorithm"]}
+            s, key = r["search"].get("best"), (d["algorithm"], r["n"])
+            if not s or s.get("ratio_to_bound") is None or d.get("family"):
+                continue
+            if key not in best or (s["ratio_to_bound"], s["cost"]) > (best[key]["ratio_to_bound"], best[key]["cost"]):
+                best[key] = s
+    return best
+
+
+def _shown(runs: list[dict[str, Any]], names: dict[tuple[str, int], str | None]) -> tuple[str | None, list[float]]:
+    best = {n: s for (_, n), s in best_per_size(runs).items()}
     if not best:
         return None, []
+    algorithm = runs[0]["algorithm"]
     parts = []
     for n in sorted(best):
-        text = names.get((best[n]["algorithm"], n))
+        text = names.get((algorithm, n))
         parts.append(f"n = {n}: {best[n]['ratio_to_bound']:.4f}" + (f" (`{text}`)" if text else ""))
     return "shown (the best world found per size, cost / exact bound): " + "; ".join(parts), \
         [best[n]["ratio_to_bound"] for n in sorted(best)]
