@@ -88,16 +88,13 @@ def best_per_size(searched: list[dict[str, Any]]) -> dict[tuple[str, int], dict[
 
 
 def _shown(runs: list[dict[str, Any]], names: dict[tuple[str, int], str | None]) -> tuple[str | None, list[float]]:
-    best = {n: s for (_, n), s in best_per_size(runs).items()}
+    best = sorted(best_per_size(runs).items(), key=lambda item: item[0][1])  # one algorithm's runs: by n
     if not best:
         return None, []
-    algorithm = runs[0]["algorithm"]
-    parts = []
-    for n in sorted(best):
-        text = names.get((algorithm, n))
-        parts.append(f"n = {n}: {best[n]['ratio_to_bound']:.4f}" + (f" (`{text}`)" if text else ""))
+    parts = [f"n = {key[1]}: {s['ratio_to_bound']:.4f}" + (f" (`{names[key]}`)" if names.get(key) else "")
+             for key, s in best]
     return "shown (the best world found per size, cost / exact bound): " + "; ".join(parts), \
-        [best[n]["ratio_to_bound"] for n in sorted(best)]
+        [s["ratio_to_bound"] for _, s in best]
 
 
 def _says(ratios: list[float], degree: int | None, bound: str) -> str:
