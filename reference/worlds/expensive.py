@@ -17,9 +17,10 @@ the default ``nearest`` edge policy walks S out as one long path.
   ``0 … n−1`` on a path (the robot's route), each place ``i`` also joined to
   ``n−1−i`` and ``n−2−i`` (the "rungs" and "diagonals" of a ladder folded
   in two).  The robot walks out along one side, round the fold and back along
-  the other, so S is a path whose every inner place keeps two open exits; the
-  rungs and diagonals join places as far from v0 in S as each other, so
-  closing them never shortens a path to v0.  The worst family found for
+  the other, so S is a path whose every inner place keeps two open exits.
+  Each rung or diagonal joins a place x of the way out to n−1−x or n−2−x of
+  the way back, far apart on that path: closing one shortens the paths to
+  v0 from the places near the far end of the walk.  The worst family found for
   ``basic``: its cost is a cubic in n (per n mod 6), about 23/24·n³, some
   0.2 of the bound (:mod:`topomark.reference.worstcase.family_costs`).
   ``cap=1`` joins its two ends so that every place has degree 4; that costs
