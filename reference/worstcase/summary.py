@@ -34,9 +34,9 @@ from topomark.reference.algorithms.registry import algorithm_spec
 from topomark.reference.run.explore import explore
 from topomark.reference.bench.reports.plots import curve, drawn, finish, new, points
 from topomark.reference.worstcase.fit import fit_exponents
-from topomark.reference.worstcase.structural import RESTART_FAMILIES
 from topomark.reference.worstcase.naming import generator_text
 from topomark.reference.worstcase.readback import read_regular
+from topomark.reference.worstcase.remake import commands
 from topomark.reference.worstcase.report import THESIS
 from topomark.reference.worstcase.summary_input import bound_broken, load_runs
 from topomark.reference.worstcase.verdicts import best_per_size, verdicts
@@ -140,7 +140,13 @@ def _bound_m(data: dict, r: dict) -> int:
     return ms[0]
 
 
-def _search_section(runs: list[dict]) -> list[str]:
+def _found_texts(runs: list[dict]) -> list[list[str | None]]:
+    """For each search run, the generator text of the best world it found at each of its sizes (None: none)."""
+    return [[generator_text(world_from_json(r["search"]["best"]["world"]), data["algorithm"])
+             if (r["search"].get("best") or {}).get("world") else None for r in data["per_n"]] for data in runs]
+
+
+def _search_section(runs: list[dict], found: list[list[str | None]]) -> list[str]:
     lines = ["## Found: bad worlds past exhaustive sizes (lower bounds)", "",
              "Seeded local search; the best world found is a lower bound on the worst case, set beside the best of as "
              "many random worlds. Each row's figures are of one world, named by a generator text that "
@@ -149,13 +155,14 @@ def _search_section(runs: list[dict]) -> list[str]:
              "| best random |",
              "|---|---|---|---|---|---|---|---|---|---|"]
     fits = []
+    texts = {(id(data), r["n"]): text for data, row in zip(runs, found) for r, text in zip(data["per_n"], row)}
     rows = sorted(((data, r) for data in runs for r in data["per_n"]),
                   key=lambda p: (p[0]["algorithm"], p[0].get("family") or "", p[0].get("restart") or "", p[1]["n"]))
     for data, r in rows:  # by size within an algorithm, whichever run each size came from
         name = f"{data['algorithm']}{' lattice-hole' if data.get('family') else ''}"
         s, b = r["search"].get("best") or {}, r["random"].get("best") or {}
         holes = f" (holes: {', '.join(s['holes']) or 'none'})" if "holes" in s else ""
-        text = generator_text(world_from_json(s["world"]), data["algorithm"]) if s.get("world") else None
+        text = texts[id(data), r["n"]]
         lines.append(f"| {name} | {data.get('restart') or 'random worlds'} | {r['n']} | {s.get('m')} | "
                      f"{s.get('diameter')} | {s.get('max_degree')} | {s.get('cost')}{holes} | "
                      f"{f'`{text}`' if text else 'none'} | {s.get('ratio_to_bound')} | {b.get('cost')} |")
@@ -220,24 +227,6 @@ def _plot(out: Path, exhaustive: list[dict], searched: list[dict]) -> list[Path]
     return drawn(draw)
 
 
-def _commands(exhaustive: list[dict], searched: list[dict]) -> list[str]:
-    """The command line each summarised run repeats (its seed and sample are the defaults unless shown)."""
-    out = []
-    for d in sorted(exhaustive, key=lambda d: (d["algorithm"], d["max_degree"], d["max_vertices"])):
-        out.append(f"topomark worst-case --algorithm {d['algorithm']} --max-vertices {d['max_vertices']} "
-                   f"--max-degree {d['max_degree']}")
-    for d in sorted(searched, key=lambda d: (d["algorithm"], d.get("family") or "")):
-        family = f" --world-family {d['family']}" if d.get("family") else ""
-        if d.get("restart"):
-            family += f" --restart-{'family' if d['restart'] in RESTART_FAMILIES else 'world'} {d['restart']}"
-        family += f" --objective {d['objective']}" if d.get("objective", "cost") != "cost" else ""
-        family += f" --seed {d['setup']['seed']}" if d.get("setup", {}).get("seed") else ""
-        sizes = " ".join(str(r["n"]) for r in d["per_n"])
-        out.append(f"topomark worst-case --search --algorithm {d['algorithm']}{family} --vertices {sizes} "
-                   f"--evaluations {d['evaluations']} --max-degree {d['max_degree']}")
-    return out
-
-
 def _distributions(out: Path, exhaustive: list[dict]) -> list[Path]:
     """Each exhaustive search's cost/m distribution plot, copied beside the report under its own name."""
     copied = []
@@ -261,6 +250,7 @@ def summarise_runs(dirs: list[Path], out: Path | None = None) -> tuple[str, bool
     directories are read and recomputed by :func:`~topomark.reference.worstcase.summary_input.load_runs`:
     bad input naming the file and field otherwise)."""
     exhaustive, searched = load_runs(dirs)
+    found = _found_texts(searched)
     lines = ["# Worst cases: the thesis's open question, measured", "", f"> {QUESTION}", "",
              f"- **Thesis:** {THESIS}"]
     if exhaustive:
@@ -273,11 +263,12 @@ def summarise_runs(dirs: list[Path], out: Path | None = None) -> tuple[str, bool
     if exhaustive:
         lines += _exhaustive_section(exhaustive)
     if searched:
-        lines += _search_section(searched)
+        lines += _search_section(searched, found)
     lines += ["## What this says about §7.2, per algorithm", "", f"- **Thesis:** {THESIS}",
               *verdicts(exhaustive, searched, _names(searched)), ""]
     lines += ["## How this page was made", "", "`topomark worst-case --summarise` over the outputs (`-o DIR`) of:", "",
-              *[f"- `{c}`" for c in _commands(exhaustive, searched)], ""]
+              "A search that goes on from another's world (`--restart-world`) comes after it; `→` names the kept "
+              "world a search found.", "", *[f"- {c}" for c in commands(exhaustive, searched, found)], ""]
     if out is not None:
         out.mkdir(parents=True, exist_ok=True)
         plots = (_plot(out, exhaustive, searched) or []) + _distributions(out, exhaustive)
