@@ -26,9 +26,10 @@ open exits in U, and at each new place every one of them is a hypothesis
 whose walk matches P^E until v0 should appear — case (2) at the end of a walk
 as long as its path in S, or case (1) where the real walk, on the way back
 along the second side, passes v0 first — each retraced as far.  The rungs and
-diagonals left open join places at the same distance from v0 in S (the path
-folds back on itself), so closing them never shortens a walk, and each loop
-closing tests, in U's order, the open exits of every place before its v_u.
+diagonals left open each join a place x of the way out to n−1−x or n−2−x of
+the way back (the path folds back on itself): closing one shortens the paths
+to v0 of the places near the walk's far end, and each loop closing tests, in
+U's order, the open exits of every place before its v_u.
 Measured and fitted the same way, the n − 1 non-loop iterations cost
 5/12·n³ + O(n²) and the n − 2 loop iterations 13/24·n³ + O(n²).
 
