@@ -134,7 +134,7 @@ def _searched(algorithm, ratios):
 
 
 def test_the_verdict_says_the_bound_is_tight_only_where_the_ratio_does_not_fall():
-    from topomark.reference.worstcase.verdicts import STRIP_SAYS, verdicts
+    from topomark.reference.worstcase.verdicts import CIRCULANT_PROOF, STRIP_SAYS, verdicts
     rising = verdicts([], _searched("enh1", [0.1, 0.12, 0.12]), {("enh1", 50): "strip:n=50,cap=1"})[0]
     assert rising.startswith("- `enh1`: Shown") and "n = 50: 0.1200 (`strip:n=50,cap=1`)" in rising
     assert "does not fall with n on worlds of maximum degree 4" in rising
@@ -142,6 +142,8 @@ def test_the_verdict_says_the_bound_is_tight_only_where_the_ratio_does_not_fall(
     assert "falls somewhere over the sizes searched" in falling and "does not fall" not in falling
     basic = verdicts([], _searched("basic", [0.1, 0.12, 0.11]))[0]  # basic rests on the strip's exact formula
     assert STRIP_SAYS[1:] in basic and "23/24·n³" in basic
+    assert basic.startswith("- `basic`: " + CIRCULANT_PROOF[0].upper() + CIRCULANT_PROOF[1:])  # proved at every n
+    assert CIRCULANT_PROOF not in rising  # only basic's bound is proved
 
 
 def test_the_verdict_shows_each_sizes_largest_ratio_and_names_that_world():

@@ -5,6 +5,7 @@ a bound in the diameter or the maximum degree could hold.  :func:`verdicts` answ
 the report summarises, each sentence from its own evidence:
 
 * **proved** — the exhaustive runs: the largest cost / exact bound over every world up to their size, exact;
+  for ``basic`` also the lower bound :mod:`.lower_bound` proves at every n on the circulant C_n(1, 2);
 * **shown** — the search runs: the best world found per size (a lower bound on the worst case), its cost / exact
   bound and its generator text; for ``basic`` also the strip's cost formula
   (:func:`~.family_costs.strip_cost`, fitted on the sizes up to 60 and checked at every size from 9 to 200), for
@@ -26,17 +27,26 @@ from __future__ import annotations
 import re
 from typing import Any
 
-__all__ = ["verdicts", "best_per_size", "STRIP_STATEMENT", "STRIP_SAYS", "SPLIT_STATEMENT", "SPLIT_SAYS", "FORMULAS"]
+__all__ = ["verdicts", "best_per_size", "STRIP_STATEMENT", "STRIP_SAYS", "SPLIT_STATEMENT", "SPLIT_SAYS", "FORMULAS",
+           "CIRCULANT_PROOF", "PROOFS"]
 
 STRIP_STATEMENT = ("on the triangulated strip `strip:n=N` (maximum degree 4, m = 2n − 3, diameter ⌊n/2⌋, "
                    "the start at an end) the cost is a cubic in n per n mod 6, 23/24·n³ + O(n²), at every n from 9 "
                    "to 200 (fitted on n ≤ 60, each size run; measured, not proved for larger n), so cost / bound "
                    "rises there towards 23/112 ≈ 0.205")
 
-STRIP_SAYS = ("says: on the strip the cost grows as m²n at every size run, so on worlds of maximum degree 4 the "
-              "O(m²n) bound is tight up to a constant factor as far as the runs go (for every n if the formula "
-              "holds for every n, which is not proved), and no bound in the degree alone below it fits them; the "
-              "strip's diameter is Θ(n), so whether a bound in the diameter holds stays open")
+STRIP_SAYS = ("says: on worlds of maximum degree 4 the O(m²n) bound is tight up to a constant factor, proved at "
+              "every n by the circulant (at least 5/112 of the bound as n grows) and measured on the strip, whose "
+              "cost grows as m²n at every size run; so no bound in the degree alone below it fits them; both "
+              "families have diameter Θ(n), so whether a bound in the diameter holds stays open")
+
+CIRCULANT_PROOF = ("proved for every n ≥ 5 (`topomark.reference.worstcase.lower_bound`): on the 4-regular "
+                   "circulant `circulant:n=N,k=2` (m = 2n, diameter ⌈⌊n/2⌋/2⌉, the default policies) the cost "
+                   "is at least (5n³ − 9n² − c₁n + c₀)/24 with c₁, c₀ fixed by n mod 4, so at least 5/112 ≈ 0.045 "
+                   "of the bound as n grows")
+
+PROOFS = {"basic": CIRCULANT_PROOF}
+"""algorithm ↦ a lower bound proved at every n (:mod:`.lower_bound`), added to the exhaustive runs' proof."""
 
 SPLIT_STATEMENT = ("on the split strip `split-strip:n=N` (maximum degree 4, m = 2n − 3, diameter Θ(n), the start "
                    "at an end) the cost is (5n² − 31n + c)/4 with c fixed by n mod 8 at every even n from 18 to "
@@ -117,6 +127,8 @@ def verdicts(exhaustive: list[dict[str, Any]], searched: list[dict[str, Any]],
     out = []
     for algorithm in sorted({d["algorithm"] for d in exhaustive} | {d["algorithm"] for d in searched}):
         proved = _proved([d for d in exhaustive if d["algorithm"] == algorithm])
+        if algorithm in PROOFS:
+            proved = f"{proved}; and {PROOFS[algorithm]}" if proved else PROOFS[algorithm]
         runs = [d for d in searched if d["algorithm"] == algorithm and not d.get("family")]
         shown, ratios = _shown(runs, names)
         statement, said = FORMULAS.get(algorithm, (None, None))
