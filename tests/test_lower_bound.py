@@ -80,3 +80,16 @@ def test_without_the_distance_limit_the_bound_would_be_false():
 
 def test_the_bound_grows_as_five_twenty_fourths_of_n_cubed():
     assert abs(circulant_bound_formula(10_000) / 10_000**3 - 5 / 24) < 1e-3
+
+
+@pytest.mark.parametrize("algorithm", ["enh1", "enh2", "enh3"])
+@pytest.mark.parametrize("n", [12, 30])
+def test_the_first_walk_costs_the_enhancements_at_most_4k_minus_3_an_iteration(algorithm, n):
+    """Along the first walk every hypothesis's motions after the first are the same turn, so Enhancement-1's
+    overlap (§4.1) walks them once: iteration k costs at most 4k − 3, where basic's costs up to 2k² − 2k + 1."""
+    rows = explore(circulant(n, 2), algorithm).breakdown.rows()
+    walk = rows[2:n]  # iterations k = 1 … n − 2
+    assert [row[1] for row in walk] == ["non-loop"] * (n - 2)
+    assert all(sum(row[3:]) <= 4 * k - 3 for k, row in enumerate(walk, start=1))
+    basic = explore(circulant(n, 2), "basic", record=False).breakdown.rows()[2:n]
+    assert any(sum(row[3:]) > 4 * k - 3 for k, row in enumerate(basic, start=1))
