@@ -34,7 +34,9 @@ here:
 * :mod:`~topomark.reference.worlds.rewired` -- :func:`rewired_strip`: the closed strip
   rewired as a search found at n = 100, moved to any even size (§7.2);
 * :mod:`~topomark.reference.worlds.split_strip` -- :func:`split_strip`: the closed strip
-  split so that §6.2.1's footprint searches walk far for every loop (§6.2.1, §7.2).
+  split so that §6.2.1's footprint searches walk far for every loop (§6.2.1, §7.2);
+* :mod:`~topomark.reference.worlds.chorded_cycle` -- :func:`chorded_cycle`: a cycle walked
+  first and a random second cycle of chords, expensive at small diameter (§7.2).
 
 This module holds the registry the CLI uses: :data:`GENERATORS`,
 :data:`PARAMETERS`, :func:`generate` and :func:`DEFAULT_WORLD`.
@@ -84,6 +86,7 @@ from topomark.reference.worlds.worst_cases import worst_case_world
 from topomark.reference.worlds.expensive import circulant, cylinder, k5e_chain, strip
 from topomark.reference.worlds.rewired import rewired_strip
 from topomark.reference.worlds.split_strip import split_strip
+from topomark.reference.worlds.chorded_cycle import chorded_cycle
 from topomark.reference.worlds.holes import complete_hole, lattice_hole
 from topomark.reference.worlds.random_worlds import OtherPairs, random_graph, small_world  # noqa: F401 - OtherPairs: for tests
 from topomark.proofs.wheels import (WHEEL_A_ROTATION, WHEEL_B_ROTATION, wheel_a, wheel_b, wheel_pair,
@@ -118,6 +121,7 @@ __all__ = [
     "cylinder",
     "rewired_strip",
     "split_strip",
+    "chorded_cycle",
     "GENERATORS",
     "PARAMETERS",
     "generate",
@@ -147,6 +151,7 @@ GENERATORS: dict[str, Callable[..., World]] = {
     "cylinder": cylinder,
     "rewired-strip": rewired_strip,
     "split-strip": split_strip,
+    "chorded-cycle": chorded_cycle,
 }
 """CLI name -> generator function."""
 
@@ -178,6 +183,8 @@ PARAMETERS: dict[str, dict[str, Any]] = {
     "rewired-strip": {"n": 100},
     # The closed strip split so that the footprint searches of §6.2.1 walk far (worlds/split_strip.py).
     "split-strip": {"n": 20},
+    # A cycle walked first and a seeded random cycle of chords: small diameter (worlds/chorded_cycle.py).
+    "chorded-cycle": {"n": 20, "seed": 0},
 }
 """CLI name -> {parameter name: default}.  The default's type is the parameter's type
 (int, float or str); ``generate`` fills in missing parameters from here."""
