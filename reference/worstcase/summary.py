@@ -181,9 +181,13 @@ def _search_section(runs: list[dict], found: list[list[str | None]]) -> list[str
                     *fits, ""]
 
 
-def _names(searched: list[dict]) -> dict[tuple[str, int], str | None]:
-    """(algorithm, n) ↦ the generator text of the best world found there (:func:`~.verdicts.best_per_size`)."""
-    return {key: generator_text(world_from_json(s["world"]), key[0]) for key, s in best_per_size(searched).items()}
+def _names(searched: list[dict], found: list[list[str | None]] | None = None) -> dict[tuple[str, int], str | None]:
+    """(algorithm, n) ↦ the generator text of the best world found there (:func:`~.verdicts.best_per_size`); read
+    from ``found`` (:func:`_found_texts`) where given, so no world is named twice."""
+    known = {id(r["search"]["best"]): text for data, row in zip(searched, found or [])
+             for r, text in zip(data["per_n"], row) if r["search"].get("best")}
+    return {key: known[id(s)] if id(s) in known else generator_text(world_from_json(s["world"]), key[0])
+            for key, s in best_per_size(searched).items()}
 
 
 def _bound_growth(best: list[dict[str, Any]]) -> str:
@@ -265,7 +269,7 @@ def summarise_runs(dirs: list[Path], out: Path | None = None) -> tuple[str, bool
     if searched:
         lines += _search_section(searched, found)
     lines += ["## What this says about §7.2, per algorithm", "", f"- **Thesis:** {THESIS}",
-              *verdicts(exhaustive, searched, _names(searched)), ""]
+              *verdicts(exhaustive, searched, _names(searched, found)), ""]
     lines += ["## How this page was made", "", "`topomark worst-case --summarise` over the outputs (`-o DIR`) of:", "",
               "A search that goes on from another's world (`--restart-world`) comes after it; `→` names the kept "
               "world a search found.", "", *[f"- {c}" for c in commands(exhaustive, searched, found)], ""]
