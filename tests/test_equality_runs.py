@@ -40,10 +40,18 @@ def _tally(root: Path) -> tuple[dict, dict[str, int], int, int]:
     return store.manifest, counts, len(results), sum(r["disagreement_count"] for r in results.values())
 
 
+def _name(params: dict) -> str:
+    """The directory name a comparison is kept under: ``ALG-nN-dD``, and ``-LIGHTHOUSE`` unless it is the default
+    ``directional-vertex`` (the footprint searches, which have none, record the default)."""
+    (algorithm,) = params["algorithms"]
+    name = f"{algorithm}-n{params['max_vertices']}-d{params['max_degree']}"
+    return name if params["lighthouse"] == "directional-vertex" else f"{name}-{params['lighthouse']}"
+
+
 def _check(root: Path) -> None:
     manifest, counts, tasks, disagreements = _tally(root)
     assert disagreements == 0, f"{root.name}: {disagreements} disagreeing run pairs"
-    assert manifest["params"]["algorithms"] == [root.name.split("-n")[0]], root.name
+    assert root.name == _name(manifest["params"]), f"{root.name} holds the comparison {_name(manifest['params'])}"
     report = root / "report.json"
     if report.exists():
         data = json.loads(report.read_text(encoding="utf-8"))
@@ -89,3 +97,9 @@ def test_seeded_fault_a_resealed_disagreement_is_caught(finished):
     path.write_text(json.dumps(seal(record)), encoding="utf-8")
     with pytest.raises(AssertionError, match="disagreeing"):
         _check(finished)
+
+
+def test_seeded_fault_a_comparison_kept_under_another_lighthouse_name_is_caught(finished):
+    renamed = finished.rename(finished.parent / f"{finished.name}-thread")
+    with pytest.raises(AssertionError, match="holds the comparison"):
+        _check(renamed)
