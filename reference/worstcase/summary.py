@@ -182,12 +182,12 @@ def _search_section(runs: list[dict], found: list[list[str | None]]) -> list[str
 
 
 def _names(searched: list[dict], found: list[list[str | None]] | None = None) -> dict[tuple[str, int], str | None]:
-    """(algorithm, n) ↦ the generator text of the best world found there (:func:`~.verdicts.best_per_size`); read
-    from ``found`` (:func:`_found_texts`) where given, so no world is named twice."""
-    known = {id(r["search"]["best"]): text for data, row in zip(searched, found or [])
-             for r, text in zip(data["per_n"], row) if r["search"].get("best")}
-    return {key: known[id(s)] if id(s) in known else generator_text(world_from_json(s["world"]), key[0])
-            for key, s in best_per_size(searched).items()}
+    """(algorithm, n) ↦ the generator text of the best world found there (:func:`~.verdicts.best_per_size`), read
+    from ``found`` (:func:`_found_texts`, made here when not given), so no world is named twice."""
+    found = _found_texts(searched) if found is None else found
+    text = {id(r["search"]["best"]): name for data, row in zip(searched, found)
+            for r, name in zip(data["per_n"], row) if r["search"].get("best")}
+    return {key: text[id(s)] for key, s in best_per_size(searched).items()}
 
 
 def _bound_growth(best: list[dict[str, Any]]) -> str:
