@@ -128,6 +128,22 @@ def test_the_report_names_each_found_world_by_its_generator_text_and_fits_only_o
     assert "no fit (3 sizes; a growth fit needs at least 5)" in capsys.readouterr().out
 
 
+
+def test_the_growth_fit_takes_one_world_per_size_however_often_a_size_was_searched(tmp_path, capsys):
+    """A size searched by two runs is one point of the fit (the better world there), and the report counts sizes,
+    not runs: fitting every run's world would weigh the sizes searched most and count them more than once."""
+    from topomark.reference.cli.main import main
+    once, again = tmp_path / "once", tmp_path / "again"
+    for out, seed in ((once, "0"), (again, "1")):
+        assert main(["worst-case", "--search", "--vertices", "8", "9", "10", "11", "12", "--evaluations", "1",
+                     "--restart-family", "strip", "--seed", seed, "--quiet", "-o", str(out)]) == 0
+    capsys.readouterr()
+    assert main(["worst-case", "--summarise", str(once)]) == 0
+    alone = next(line for line in capsys.readouterr().out.splitlines() if line.startswith("- basic: cost ∝"))
+    assert main(["worst-case", "--summarise", str(once), str(again)]) == 0
+    both = next(line for line in capsys.readouterr().out.splitlines() if line.startswith("- basic: cost ∝"))
+    assert "over 5 sizes" in both and both == alone  # the same worlds at each size: the same fit
+
 def _searched(algorithm, ratios):
     return [{"algorithm": algorithm, "max_degree": 4, "family": None, "per_n": [
         {"n": n, "search": {"best": {"cost": 10 * n, "ratio_to_bound": q}}} for n, q in zip((20, 50, 100), ratios)]}]

@@ -39,7 +39,7 @@ from topomark.reference.worstcase.readback import read_regular
 from topomark.reference.worstcase.remake import commands
 from topomark.reference.worstcase.report import THESIS
 from topomark.reference.worstcase.summary_input import bound_broken, load_runs
-from topomark.reference.worstcase.verdicts import best_per_size, verdicts
+from topomark.reference.worstcase.verdicts import best_per_size, one_per_size, verdicts
 
 __all__ = ["structure", "summarise", "summarise_runs", "MIN_FIT_SIZES"]
 
@@ -171,8 +171,9 @@ def _search_section(runs: list[dict], found: list[list[str | None]]) -> list[str
         name = f"{data['algorithm']}{' lattice-hole' if data.get('family') else ''}"
         by_name.setdefault(name, []).extend({**r["search"]["best"], "n": r["n"]} for r in data["per_n"]
                                             if r["search"].get("best"))
-    for name, best in sorted(by_name.items()):
-        sizes = len({b["n"] for b in best})
+    for name, rows_found in sorted(by_name.items()):
+        best = one_per_size(rows_found)  # a size searched twice is still one point of the fit
+        sizes = len(best)
         if sizes >= MIN_FIT_SIZES:  # fitted here, from the rows, so every report fits alike
             fits.append(f"- {name}: {_fit_text(fit_exponents(best))}{_bound_growth(best)}")
         else:

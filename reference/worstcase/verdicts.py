@@ -27,7 +27,7 @@ from __future__ import annotations
 import re
 from typing import Any
 
-__all__ = ["verdicts", "best_per_size", "STRIP_STATEMENT", "STRIP_SAYS", "SPLIT_STATEMENT", "SPLIT_SAYS", "FORMULAS",
+__all__ = ["verdicts", "best_per_size", "one_per_size", "STRIP_STATEMENT", "STRIP_SAYS", "SPLIT_STATEMENT", "SPLIT_SAYS", "FORMULAS",
            "CIRCULANT_PROOF", "PROOFS"]
 
 STRIP_STATEMENT = ("on the triangulated strip `strip:n=N` (maximum degree 4, m = 2n − 3, diameter ⌊n/2⌋, "
@@ -84,6 +84,12 @@ def _proved(runs: list[dict[str, Any]]) -> str | None:
             f"(at n = {top[1]}, degree ≤ {top[2]})")
 
 
+def _rank(s: dict[str, Any]) -> tuple[bool, float, int]:
+    """Which of two worlds found at one size is the better: the larger cost / exact bound (a world without one
+    ranks below every world with one), then the larger cost."""
+    return s.get("ratio_to_bound") is not None, s.get("ratio_to_bound") or 0.0, s["cost"]
+
+
 def best_per_size(searched: list[dict[str, Any]]) -> dict[tuple[str, int], dict[str, Any]]:
     """(algorithm, n) ↦ the best world found there over every search run (the ``lattice-hole`` family left out):
     the largest cost / exact bound, the larger cost between equal ratios.  The verdict's figure and the world its
@@ -94,9 +100,19 @@ def best_per_size(searched: list[dict[str, Any]]) -> dict[tuple[str, int], dict[
             s, key = r["search"].get("best"), (d["algorithm"], r["n"])
             if not s or s.get("ratio_to_bound") is None or d.get("family"):
                 continue
-            if key not in best or (s["ratio_to_bound"], s["cost"]) > (best[key]["ratio_to_bound"], best[key]["cost"]):
+            if key not in best or _rank(s) > _rank(best[key]):
                 best[key] = s
     return best
+
+
+def one_per_size(found: list[dict[str, Any]]) -> list[dict[str, Any]]:
+    """The best of the worlds ``found`` (each with its ``n``) at each size, by n, ranked as :func:`best_per_size`
+    ranks them: the points a growth fit may use, one per size."""
+    best: dict[int, dict[str, Any]] = {}
+    for s in found:
+        if s["n"] not in best or _rank(s) > _rank(best[s["n"]]):
+            best[s["n"]] = s
+    return [best[n] for n in sorted(best)]
 
 
 def _shown(runs: list[dict[str, Any]], names: dict[tuple[str, int], str | None]) -> tuple[str | None, list[float]]:
