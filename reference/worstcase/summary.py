@@ -178,8 +178,8 @@ def _search_section(runs: list[dict], found: list[list[str | None]]) -> list[str
             fits.append(f"- {name}: {_fit_text(fit_exponents(best))}{_bound_growth(best)}")
         else:
             fits.append(f"- {name}: no fit ({sizes} sizes; a growth fit needs at least {MIN_FIT_SIZES})")
-    return lines + ["", "Growth of the best cost found (log-log least squares, 95 % confidence intervals):", "",
-                    *fits, ""]
+    return lines + ["", "Growth of the cost of the best world found at each size, the one the verdicts below show "
+                    "(log-log least squares, 95 % confidence intervals):", "", *fits, ""]
 
 
 def _names(searched: list[dict], found: list[list[str | None]] | None = None) -> dict[tuple[str, int], str | None]:
