@@ -128,7 +128,6 @@ def test_the_report_names_each_found_world_by_its_generator_text_and_fits_only_o
     assert "no fit (3 sizes; a growth fit needs at least 5)" in capsys.readouterr().out
 
 
-
 def test_the_growth_fit_takes_one_world_per_size_however_often_a_size_was_searched(tmp_path, capsys):
     """A size searched by two runs is one point of the fit (the better world there), and the report counts sizes,
     not runs: fitting every run's world would weigh the sizes searched most and count them more than once."""
@@ -143,6 +142,7 @@ def test_the_growth_fit_takes_one_world_per_size_however_often_a_size_was_search
     assert main(["worst-case", "--summarise", str(once), str(again)]) == 0
     both = next(line for line in capsys.readouterr().out.splitlines() if line.startswith("- basic: cost ∝"))
     assert "over 5 sizes" in both and both == alone  # the same worlds at each size: the same fit
+
 
 def _searched(algorithm, ratios):
     return [{"algorithm": algorithm, "max_degree": 4, "family": None, "per_n": [

@@ -25,10 +25,10 @@ the report summarises, each sentence from its own evidence:
 from __future__ import annotations
 
 import re
-from typing import Any
+from typing import Any, Iterable
 
-__all__ = ["verdicts", "best_per_size", "one_per_size", "STRIP_STATEMENT", "STRIP_SAYS", "SPLIT_STATEMENT", "SPLIT_SAYS", "FORMULAS",
-           "CIRCULANT_PROOF", "PROOFS"]
+__all__ = ["verdicts", "best_per_size", "one_per_size", "STRIP_STATEMENT", "STRIP_SAYS", "SPLIT_STATEMENT",
+           "SPLIT_SAYS", "FORMULAS", "CIRCULANT_PROOF", "PROOFS"]
 
 STRIP_STATEMENT = ("on the triangulated strip `strip:n=N` (maximum degree 4, m = 2n − 3, diameter ⌊n/2⌋, "
                    "the start at an end) the cost is a cubic in n per n mod 6, 23/24·n³ + O(n²), at every n from 9 "
@@ -90,28 +90,28 @@ def _rank(s: dict[str, Any]) -> tuple[bool, float, int]:
     return s.get("ratio_to_bound") is not None, s.get("ratio_to_bound") or 0.0, s["cost"]
 
 
+def _best_by(found: Iterable[tuple[Any, dict[str, Any]]]) -> dict[Any, dict[str, Any]]:
+    """key ↦ the best world (:func:`_rank`) of the (key, world) pairs ``found``."""
+    best: dict[Any, dict[str, Any]] = {}
+    for key, s in found:
+        if key not in best or _rank(s) > _rank(best[key]):
+            best[key] = s
+    return best
+
+
 def best_per_size(searched: list[dict[str, Any]]) -> dict[tuple[str, int], dict[str, Any]]:
     """(algorithm, n) ↦ the best world found there over every search run (the ``lattice-hole`` family left out):
     the largest cost / exact bound, the larger cost between equal ratios.  The verdict's figure and the world its
     generator text names are the same world, and the same rule as the families page (the largest ratio)."""
-    best: dict[tuple[str, int], dict[str, Any]] = {}
-    for d in searched:
-        for r in d["per_n"]:
-            s, key = r["search"].get("best"), (d["algorithm"], r["n"])
-            if not s or s.get("ratio_to_bound") is None or d.get("family"):
-                continue
-            if key not in best or _rank(s) > _rank(best[key]):
-                best[key] = s
-    return best
+    return _best_by(((d["algorithm"], r["n"]), r["search"]["best"]) for d in searched for r in d["per_n"]
+                    if r["search"].get("best") and r["search"]["best"].get("ratio_to_bound") is not None
+                    and not d.get("family"))
 
 
 def one_per_size(found: list[dict[str, Any]]) -> list[dict[str, Any]]:
     """The best of the worlds ``found`` (each with its ``n``) at each size, by n, ranked as :func:`best_per_size`
     ranks them: the points a growth fit may use, one per size."""
-    best: dict[int, dict[str, Any]] = {}
-    for s in found:
-        if s["n"] not in best or _rank(s) > _rank(best[s["n"]]):
-            best[s["n"]] = s
+    best = _best_by((s["n"], s) for s in found)
     return [best[n] for n in sorted(best)]
 
 
