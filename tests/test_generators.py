@@ -409,7 +409,7 @@ def test_wheel_pair_directional_figure_3_6():
 EXPECTED_NAMES = {"cycle", "chain", "lattice", "lattice-hole", "complete", "complete-hole",
                   "small-world", "random", "wheel-a", "wheel-b", "wheel-hub-last", "figure-6.10", "figure-6.15",
                   "worst-case", "strip", "circulant", "k5e-chain", "cylinder", "rewired-strip", "split-strip",
-                  "chorded-cycle"}
+                  "chorded-cycle", "pendant-strip"}
 
 
 def test_registry_names_and_parameters():

@@ -70,6 +70,8 @@ def test_an_unknown_move_or_family_or_size_is_bad_input_naming_it():
     for n in (14, 21):
         with pytest.raises(InvalidInput, match=f"split-strip needs an even n >= 16, not {n}"):
             family_world("split-strip", n)
+    with pytest.raises(InvalidInput, match="pendant-strip needs n >= 13, not 12"):
+        family_world("pendant-strip", 12)
     with pytest.raises(InvalidInput, match="max_degree must be >= 4, got 3"):
         adversarial_search("basic", 20, 3, evaluations=5, restart="strip", baseline=False)
     with pytest.raises(InvalidInput, match="not the lattice-hole family"):
@@ -77,7 +79,8 @@ def test_an_unknown_move_or_family_or_size_is_bad_input_naming_it():
 
 
 @pytest.mark.parametrize("family,n", [("strip", 20), ("strip", 21), ("circulant", 20), ("k5e-chain", 20),
-                                               ("rewired-strip", 46), ("split-strip", 16)])
+                                               ("rewired-strip", 46), ("split-strip", 16),
+                                               ("pendant-strip", 13), ("pendant-strip", 20)])
 def test_a_family_world_has_n_places_and_is_what_its_text_generates(family, n):
     from topomark.reference.worlds.argument import parse_generator
     from topomark.reference.worlds.generators import generate

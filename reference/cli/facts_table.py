@@ -105,7 +105,8 @@ TABLE: dict[str, Any] = {
                    'cylinder': {'rings': 4, 'size': 4},
                    'rewired-strip': {'n': 100},
                    'split-strip': {'n': 20},
-                   'chorded-cycle': {'n': 20, 'seed': 0}},
+                   'chorded-cycle': {'n': 20, 'seed': 0},
+                   'pendant-strip': {'n': 20}},
     'conformance_families': ('algorithm-3.1', 'movable-markers', 'undirected-markers', 'directional-markers',
                              'threads', 'marker-less', 'baselines', 'other'),
     'experiments': ('lattice', 'complete', 'lattice-hole', 'complete-hole', 'small-world-k2-p10',
@@ -126,5 +127,5 @@ TABLE: dict[str, Any] = {
     'worker_wait': 60,
     'objectives': ('cost', 'cost-per-m', 'ratio'),
     'engines': ('reference', 'compiled', 'auto'),
-    'restart_families': ('strip', 'circulant', 'k5e-chain', 'rewired-strip', 'split-strip'),
+    'restart_families': ('strip', 'circulant', 'k5e-chain', 'rewired-strip', 'split-strip', 'pendant-strip'),
 }

@@ -36,7 +36,9 @@ here:
 * :mod:`~topomark.reference.worlds.split_strip` -- :func:`split_strip`: the closed strip
   split so that §6.2.1's footprint searches walk far for every loop (§6.2.1, §7.2);
 * :mod:`~topomark.reference.worlds.chorded_cycle` -- :func:`chorded_cycle`: a cycle walked
-  first and a random second cycle of chords, expensive at small diameter (§7.2).
+  first and a random second cycle of chords, expensive at small diameter (§7.2);
+* :mod:`~topomark.reference.worlds.pendant` -- :func:`pendant_strip`: a closed strip hung at
+  the end of a triangulated stem, where the Chapter 4 enhancements cost m²n too (§4.1–4.3, §7.2).
 
 This module holds the registry the CLI uses: :data:`GENERATORS`,
 :data:`PARAMETERS`, :func:`generate` and :func:`DEFAULT_WORLD`.
@@ -87,6 +89,7 @@ from topomark.reference.worlds.expensive import circulant, cylinder, k5e_chain, 
 from topomark.reference.worlds.rewired import rewired_strip
 from topomark.reference.worlds.split_strip import split_strip
 from topomark.reference.worlds.chorded_cycle import chorded_cycle
+from topomark.reference.worlds.pendant import pendant_strip
 from topomark.reference.worlds.holes import complete_hole, lattice_hole
 from topomark.reference.worlds.random_worlds import OtherPairs, random_graph, small_world  # noqa: F401 - OtherPairs: for tests
 from topomark.proofs.wheels import (WHEEL_A_ROTATION, WHEEL_B_ROTATION, wheel_a, wheel_b, wheel_pair,
@@ -122,6 +125,7 @@ __all__ = [
     "rewired_strip",
     "split_strip",
     "chorded_cycle",
+    "pendant_strip",
     "GENERATORS",
     "PARAMETERS",
     "generate",
@@ -152,6 +156,7 @@ GENERATORS: dict[str, Callable[..., World]] = {
     "rewired-strip": rewired_strip,
     "split-strip": split_strip,
     "chorded-cycle": chorded_cycle,
+    "pendant-strip": pendant_strip,
 }
 """CLI name -> generator function."""
 
@@ -185,6 +190,8 @@ PARAMETERS: dict[str, dict[str, Any]] = {
     "split-strip": {"n": 20},
     # A cycle walked first and a seeded random cycle of chords: small diameter (worlds/chorded_cycle.py).
     "chorded-cycle": {"n": 20, "seed": 0},
+    # A closed strip hung at the end of a triangulated stem: the enhancements' cost is cubic (worlds/pendant.py).
+    "pendant-strip": {"n": 20},
 }
 """CLI name -> {parameter name: default}.  The default's type is the parameter's type
 (int, float or str); ``generate`` fills in missing parameters from here."""

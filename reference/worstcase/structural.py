@@ -22,8 +22,9 @@ stays among the worlds of maximum degree D:
 :func:`family_world` names the worlds a search may restart from
 (:data:`RESTART_FAMILIES`): the families of
 :mod:`~topomark.reference.worlds.expensive`,
-:mod:`~topomark.reference.worlds.rewired` and
-:mod:`~topomark.reference.worlds.split_strip` at exactly n places, with their
+:mod:`~topomark.reference.worlds.rewired`,
+:mod:`~topomark.reference.worlds.split_strip` and
+:mod:`~topomark.reference.worlds.pendant` at exactly n places, with their
 generator text, so the search's first generation is that world and its
 neighbours instead of random worlds; :func:`restart_world` also takes any one
 world ``topomark explore`` accepts (a kept worst world ``worst-case:case=NAME``
@@ -50,11 +51,12 @@ from topomark.spec.world import Start, World
 from topomark.reference.worlds.generators import generate
 from topomark.reference.worlds.rewired import REWIRED_FROM
 from topomark.reference.worlds.split_strip import SPLIT_FROM
+from topomark.reference.worlds.pendant import PENDANT_FROM
 
 __all__ = ["STRUCTURAL_MOVES", "RESTART_FAMILIES", "structural_move", "family_world", "family_text", "restart_world"]
 
 STRUCTURAL_MOVES = ("switch", "transpose", "marker")
-RESTART_FAMILIES = ("strip", "circulant", "k5e-chain", "rewired-strip", "split-strip")
+RESTART_FAMILIES = ("strip", "circulant", "k5e-chain", "rewired-strip", "split-strip", "pendant-strip")
 
 
 def _rotation(world: World) -> dict[str, list[str]]:
@@ -128,6 +130,10 @@ def family_text(family: str, n: int) -> str:
         if n % 2 or n < SPLIT_FROM:
             raise InvalidInput(f"--restart-family split-strip needs an even n >= {SPLIT_FROM}, not {n}")
         return f"split-strip:n={n}"
+    if family == "pendant-strip":
+        if n < PENDANT_FROM:
+            raise InvalidInput(f"--restart-family pendant-strip needs n >= {PENDANT_FROM}, not {n}")
+        return f"pendant-strip:n={n}"
     raise InvalidInput(f"unknown restart family {family!r} (choose from {', '.join(RESTART_FAMILIES)})")
 
 

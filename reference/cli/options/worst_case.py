@@ -75,8 +75,8 @@ def add_search_arguments(p) -> None:
     g.add_argument("--restart-family", choices=fact("restart_families"), metavar="NAME",
                    help="start the search from this family's world at each size and its neighbours instead of random "
                         "worlds: strip (strip:n=N,cap=1 for even N >= 8, else cap=0), circulant (circulant:n=N,k=2), "
-                        "k5e-chain (N a multiple of 5), rewired-strip (rewired-strip:n=N, N even and >= 46) or split-strip "
-                        "(split-strip:n=N, N even and >= 16)")
+                        "k5e-chain (N a multiple of 5), rewired-strip (rewired-strip:n=N, N even and >= 46), split-strip "
+                        "(split-strip:n=N, N even and >= 16) or pendant-strip (pendant-strip:n=N, N >= 13)")
     g.add_argument("--restart-world", metavar="WORLD",
                    help="start the search from this one world (a generator text such as a kept worst world "
                         "worst-case:case=NAME, or a world file) and its neighbours: a search going on from where "

@@ -1,0 +1,125 @@
+"""The pendant strip (§4.1–4.3, §7.2): its structure at every size, the walk the docstring describes on a checked
+run, and the documented costs of the Chapter 4 enhancements, whose cost / bound rises with n there (the compiled
+engine, cross-checked against the reference at n = 50)."""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import networkx as nx
+import pytest
+
+from conftest import needs_engine
+
+from topomark.spec.errors import InvalidInput
+from topomark.reference.algorithms.bounds import upper_bound
+from topomark.reference.run.explore import explore
+from topomark.reference.worlds import pendant
+from topomark.reference.worlds.generators import generate
+
+ENHANCEMENTS = ("enh1", "enh2", "enh3")
+
+# docs/worst-case/families.md: the default run of each enhancement from the start (compiled engine)
+DOCUMENTED = {20: (1165, 1139, 1139), 50: (25093, 24135, 24031), 100: (231167, 210563, 208351),
+              150: (820180, 737730, 732264), 200: (1993334, 1787638, 1779182), 300: (6880049, 6110381, 6094851)}
+
+
+def _check_structure(w, n):
+    j = pendant.stem_length(n)
+    assert (w.n, w.m) == (n, 2 * n - 2) and (n - 1 - j) % 2 == 0 and j == 3 * n // 10 + (n - 1 - 3 * n // 10) % 2
+    assert sorted(v for v in w.vertices if w.degree(v) != 4) == sorted({"0", "1", str(j - 1)})
+    for v in w.vertices:  # a rotation system: each neighbour once, every edge seen from both ends
+        assert len(set(w.rotation[v])) == w.degree(v) and v not in w.rotation[v]
+        assert all(v in w.rotation[u] for u in w.rotation[v])
+    assert nx.is_connected(nx.Graph((u, x) for u in w.vertices for x in w.rotation[u]))
+    for i in range(2, j):  # the stem: the first walk's next place follows the one it came from
+        assert w.rotation[str(i)][:2] == (str(i - 1), str(i + 1))
+    assert w.rotation[str(j)] == tuple(map(str, (j - 1, j - 2, j + 1, n - 1)))  # J: exit 1 closes the first loop
+    assert (w.start.at, w.start.facing) == ("0", "1")
+
+
+@pytest.mark.parametrize("n", [pendant.PENDANT_FROM, 14, 20, 21, 50, 99, 100, 200])
+def test_structure_at_every_size(n):
+    _check_structure(generate("pendant-strip", n=n), n)
+
+
+def test_the_structure_check_catches_a_stem_walked_the_other_way():
+    """The seeded fault of the check above: a stem whose places list i + 1 before i − 1 fails it."""
+    w = generate("pendant-strip", n=30)
+    rot = {v: list(ns) for v, ns in w.rotation.items()}
+    rot["4"][0], rot["4"][1] = rot["4"][1], rot["4"][0]
+    from topomark.spec.world import World
+    with pytest.raises(AssertionError):
+        _check_structure(World(rot, (), w.start), 30)
+
+
+def test_refuses_sizes_below_the_smallest_closed_strip():
+    with pytest.raises(InvalidInput, match="n"):
+        generate("pendant-strip", n=pendant.PENDANT_FROM - 1)
+
+
+def test_the_walk_the_docstring_describes_on_a_checked_run():
+    """The first walk runs up the stem and closes its first loop at J; the stem's chords come next; the robot
+    enters the pendant last, and there each non-loop iteration walks every open exit's path to within one motion
+    of its end, each path parting from the others where it turns off the walk."""
+    n = 60
+    j = pendant.stem_length(n)
+    out = explore(generate("pendant-strip", n=n), "enh1", record=True)
+    assert out.verified and out.claimed == "correct"
+    its = [r for r in out.trace if r["event"] == "iteration"]
+    assert [r["augmentation"] for r in its[:j]] == ["non-loop"] * j and its[j]["augmentation"] == "loop"
+    into = next(k for k, r in enumerate(its) if k > j and r["augmentation"] == "non-loop")
+    assert all(r["augmentation"] == "loop" for r in its[j:into]) and into - j == j - 1  # the first loop, J − 2 chords
+    pendant_walk = [r for r in its[into:] if r["augmentation"] == "non-loop"]
+    for r in pendant_walk[len(pendant_walk) // 2:]:
+        long = [h for h in r["hypotheses"] if len(h["motions"]) > j // 2]
+        assert len(long) > n // 4 and all(len(h["perceived"]) >= len(h["motions"]) - 1 for h in long)
+        tails = {tuple(h["motions"][1:]) for h in long}  # a place's two open exits differ in their first motion only
+        assert len(tails) * 2 >= len(long)
+
+
+@pytest.mark.parametrize("algorithm", ENHANCEMENTS)
+def test_engine_and_reference_agree_at_n_50(algorithm):
+    from topomark.proofs.world_arrays import to_arrays
+    from topomark.reference.engine import available
+    from topomark.reference.engine.runs import run_starts
+    w = generate("pendant-strip", n=50)
+    checked = explore(w, algorithm, record=False)
+    assert checked.verified and checked.cost == DOCUMENTED[50][ENHANCEMENTS.index(algorithm)]
+    if available():
+        at, entry = w.start_state()
+        run = run_starts(to_arrays(w), [(w.vertices.index(at), entry)], ("nearest", "fifo", "shortest"),
+                         algorithm=algorithm)[0]
+        assert (run.claimed, run.cost) == ("correct", checked.cost)
+
+
+def _ratios(costs: dict[int, tuple[int, ...]], k: int) -> list[Fraction]:
+    return [Fraction(c[k], upper_bound(n, 2 * n - 2)) for n, c in sorted(costs.items())]
+
+
+def _rises(ratios: list[Fraction]) -> bool:
+    return all(a < b for a, b in zip(ratios, ratios[1:]))
+
+
+def test_the_documented_costs_and_that_cost_over_bound_rises_with_n():
+    from topomark.proofs.world_arrays import to_arrays
+    from topomark.reference.engine.runs import run_starts
+    needs_engine("run n = 300 quickly")
+    for n, documented in DOCUMENTED.items():
+        w = generate("pendant-strip", n=n)
+        at, entry = w.start_state()
+        for algorithm, cost in zip(ENHANCEMENTS, documented):
+            run = run_starts(to_arrays(w), [(w.vertices.index(at), entry)], ("nearest", "fifo", "shortest"),
+                             algorithm=algorithm)[0]
+            assert (run.claimed, run.cost) == ("correct", cost), (n, algorithm)
+    for k in range(len(ENHANCEMENTS)):
+        assert _rises(_ratios(DOCUMENTED, k)), ENHANCEMENTS[k]
+    # the seeded fault: on the rewired strip, the costliest family for them before, enh1's cost / bound falls
+    rewired = {}
+    for n in (100, 200):
+        w = generate("rewired-strip", n=n)
+        at, entry = w.start_state()
+        run = run_starts(to_arrays(w), [(w.vertices.index(at), entry)], ("nearest", "fifo", "shortest"),
+                         algorithm="enh1")[0]
+        rewired[n] = Fraction(run.cost, upper_bound(n, w.m))
+    assert not _rises([rewired[100], rewired[200]])
