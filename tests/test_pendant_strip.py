@@ -17,11 +17,8 @@ from topomark.reference.run.explore import explore
 from topomark.reference.worlds import pendant
 from topomark.reference.worlds.generators import generate
 
-ENHANCEMENTS = ("enh1", "enh2", "enh3")
-
-# docs/worst-case/families.md: the default run of each enhancement from the start (compiled engine)
-DOCUMENTED = {20: (1165, 1139, 1139), 50: (25093, 24135, 24031), 100: (231167, 210563, 208351),
-              150: (820180, 737730, 732264), 200: (1993334, 1787638, 1779182), 300: (6880049, 6110381, 6094851)}
+from topomark.reference.worstcase.family_costs import PENDANT_ALGORITHMS as ENHANCEMENTS
+from topomark.reference.worstcase.family_costs import PENDANT_COSTS as DOCUMENTED
 
 
 def _check_structure(w, n):
@@ -123,3 +120,16 @@ def test_the_documented_costs_and_that_cost_over_bound_rises_with_n():
                          algorithm="enh1")[0]
         rewired[n] = Fraction(run.cost, upper_bound(n, w.m))
     assert not _rises([rewired[100], rewired[200]])
+
+
+def test_the_report_states_what_the_pendant_strip_shows_and_only_while_it_rises(monkeypatch):
+    from topomark.reference.worstcase import family_costs
+    from topomark.reference.worstcase.verdicts import pendant_statement, verdicts
+    shown, says = pendant_statement("enh2")
+    assert "0.0350, 0.0437, 0.0464, 0.0477, 0.0485, 0.0489 at n = 20, 50, 100, 150, 200, 300" in shown
+    assert "tight up to a constant factor" in says and pendant_statement("basic") is None
+    run = {"algorithm": "enh2", "max_degree": 4, "per_n": []}
+    assert "`pendant-strip:n=N`" in verdicts([], [run])[0]
+    # the seeded fault: a size where cost / bound falls takes the statement away
+    monkeypatch.setattr(family_costs, "PENDANT_COSTS", {**family_costs.PENDANT_COSTS, 300: (1, 1, 1)})
+    assert pendant_statement("enh2") is None
