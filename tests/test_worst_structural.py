@@ -154,10 +154,10 @@ def _searched(algorithm, ratios):
 
 def test_the_verdict_says_the_bound_is_tight_only_where_the_ratio_does_not_fall():
     from topomark.reference.worstcase.verdicts import CIRCULANT_PROOF, STRIP_SAYS, verdicts
-    rising = verdicts([], _searched("enh1", [0.1, 0.12, 0.12]), {("enh1", 50): "strip:n=50,cap=1"})[0]
-    assert rising.startswith("- `enh1`: Shown") and "n = 50: 0.1200 (`strip:n=50,cap=1`)" in rising
+    rising = verdicts([], _searched("case-2", [0.1, 0.12, 0.12]), {("case-2", 50): "strip:n=50,cap=1"})[0]
+    assert rising.startswith("- `case-2`: Shown") and "n = 50: 0.1200 (`strip:n=50,cap=1`)" in rising
     assert "does not fall with n on worlds of maximum degree 4" in rising
-    falling = verdicts([], _searched("enh1", [0.1, 0.12, 0.11]))[0]
+    falling = verdicts([], _searched("case-2", [0.1, 0.12, 0.11]))[0]
     assert "falls somewhere over the sizes searched" in falling and "does not fall" not in falling
     basic = verdicts([], _searched("basic", [0.1, 0.12, 0.11]))[0]  # basic rests on the strip's exact formula
     assert STRIP_SAYS[1:] in basic and "23/24·n³" in basic
