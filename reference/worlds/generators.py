@@ -38,7 +38,7 @@ here:
 * :mod:`~topomark.reference.worlds.chorded_cycle` -- :func:`chorded_cycle`: a cycle walked
   first and a random second cycle of chords, expensive at small diameter (§7.2);
 * :mod:`~topomark.reference.worlds.pendant` -- :func:`pendant_strip`: a closed strip hung at
-  the end of a triangulated stem, where the Chapter 4 enhancements cost m²n too (§4.1–4.3, §7.2).
+  the end of a long stem, where the Chapter 4 enhancements cost m²n too (§4.1–4.3, §7.2).
 
 This module holds the registry the CLI uses: :data:`GENERATORS`,
 :data:`PARAMETERS`, :func:`generate` and :func:`DEFAULT_WORLD`.
@@ -190,7 +190,7 @@ PARAMETERS: dict[str, dict[str, Any]] = {
     "split-strip": {"n": 20},
     # A cycle walked first and a seeded random cycle of chords: small diameter (worlds/chorded_cycle.py).
     "chorded-cycle": {"n": 20, "seed": 0},
-    # A closed strip hung at the end of a triangulated stem: the enhancements' cost is cubic (worlds/pendant.py).
+    # A closed strip hung at the end of a long stem: the enhancements' cost is cubic (worlds/pendant.py).
     "pendant-strip": {"n": 20},
 }
 """CLI name -> {parameter name: default}.  The default's type is the parameter's type

@@ -1,5 +1,5 @@
-"""The pendant strip: a closed strip hung at the far end of a triangulated stem, a family of worlds on which the
-cost of the Chapter 4 enhancements grows as m²n (thesis §4.1–4.3, §7.2).
+"""The pendant strip: a closed strip hung at the far end of a long stem, a family of worlds on which the
+cost of the Chapter 4 enhancements grows as m²n, as far as the runs go (thesis §4.1–4.3, §7.2).
 
 §7.2 asks whether the O(m²n) bound of Algorithm 3.1 is tight; Chapter 4's
 enhancements keep that bound.  On the families that make ``basic`` cubic
