@@ -16,7 +16,6 @@ from topomark.reference.algorithms.bounds import upper_bound
 from topomark.reference.run.explore import explore
 from topomark.reference.worlds import pendant
 from topomark.reference.worlds.generators import generate
-
 from topomark.reference.worstcase.family_costs import PENDANT_ALGORITHMS as ENHANCEMENTS
 from topomark.reference.worstcase.family_costs import PENDANT_COSTS as DOCUMENTED
 
@@ -38,7 +37,7 @@ def _check_structure(w, n):
 
 
 @pytest.mark.parametrize("n", [pendant.PENDANT_FROM, 14, 20, 21, 50, 99, 100, 200])
-def test_structure_at_every_size(n):
+def test_structure_at_each_size(n):
     _check_structure(generate("pendant-strip", n=n), n)
 
 
@@ -53,7 +52,7 @@ def test_the_structure_check_catches_a_stem_walked_the_other_way():
 
 
 def test_refuses_sizes_below_the_smallest_closed_strip():
-    with pytest.raises(InvalidInput, match="n"):
+    with pytest.raises(InvalidInput, match="n must be >= 13, got 12"):
         generate("pendant-strip", n=pendant.PENDANT_FROM - 1)
 
 
