@@ -16,8 +16,11 @@ from topomark.reference.algorithms.bounds import upper_bound
 from topomark.reference.run.explore import explore
 from topomark.reference.worlds import pendant
 from topomark.reference.worlds.generators import generate
+from topomark.reference.algorithms.registry import algorithm_spec
 from topomark.reference.worstcase.family_costs import PENDANT_ALGORITHMS as ENHANCEMENTS
 from topomark.reference.worstcase.family_costs import PENDANT_COSTS as DOCUMENTED
+from topomark.reference.worstcase.family_costs import pendant_ratios
+from topomark.reference.worstcase.search import unchecked_run
 
 
 def _check_structure(w, n):
@@ -78,21 +81,12 @@ def test_the_walk_the_docstring_describes_on_a_checked_run():
 
 @pytest.mark.parametrize("algorithm", ENHANCEMENTS)
 def test_engine_and_reference_agree_at_n_50(algorithm):
-    from topomark.proofs.world_arrays import to_arrays
     from topomark.reference.engine import available
-    from topomark.reference.engine.runs import run_starts
     w = generate("pendant-strip", n=50)
     checked = explore(w, algorithm, record=False)
     assert checked.verified and checked.cost == DOCUMENTED[50][ENHANCEMENTS.index(algorithm)]
     if available():
-        at, entry = w.start_state()
-        run = run_starts(to_arrays(w), [(w.vertices.index(at), entry)], ("nearest", "fifo", "shortest"),
-                         algorithm=algorithm)[0]
-        assert (run.claimed, run.cost) == ("correct", checked.cost)
-
-
-def _ratios(costs: dict[int, tuple[int, ...]], k: int) -> list[Fraction]:
-    return [Fraction(c[k], upper_bound(n, generate("pendant-strip", n=n).m)) for n, c in sorted(costs.items())]
+        assert unchecked_run(w, algorithm_spec(algorithm), True)[:2] == ("correct", checked.cost)
 
 
 def _rises(ratios: list[Fraction]) -> bool:
@@ -100,26 +94,18 @@ def _rises(ratios: list[Fraction]) -> bool:
 
 
 def test_the_documented_costs_and_that_cost_over_bound_rises_with_n():
-    from topomark.proofs.world_arrays import to_arrays
-    from topomark.reference.engine.runs import run_starts
     needs_engine("run n = 300 quickly")
     for n, documented in DOCUMENTED.items():
         w = generate("pendant-strip", n=n)
-        at, entry = w.start_state()
         for algorithm, cost in zip(ENHANCEMENTS, documented):
-            run = run_starts(to_arrays(w), [(w.vertices.index(at), entry)], ("nearest", "fifo", "shortest"),
-                             algorithm=algorithm)[0]
-            assert (run.claimed, run.cost) == ("correct", cost), (n, algorithm)
-    for k in range(len(ENHANCEMENTS)):
-        assert _rises(_ratios(DOCUMENTED, k)), ENHANCEMENTS[k]
+            assert unchecked_run(w, algorithm_spec(algorithm), True)[:2] == ("correct", cost), (n, algorithm)
+    for algorithm in ENHANCEMENTS:
+        assert _rises([r for _, r in pendant_ratios(algorithm)]), algorithm
     # the seeded fault: on the rewired strip, the costliest family for them before, enh1's cost / bound falls
     rewired = {}
     for n in (100, 200):
         w = generate("rewired-strip", n=n)
-        at, entry = w.start_state()
-        run = run_starts(to_arrays(w), [(w.vertices.index(at), entry)], ("nearest", "fifo", "shortest"),
-                         algorithm="enh1")[0]
-        rewired[n] = Fraction(run.cost, upper_bound(n, w.m))
+        rewired[n] = Fraction(unchecked_run(w, algorithm_spec("enh1"), True)[1], upper_bound(n, w.m))
     assert not _rises([rewired[100], rewired[200]])
 
 

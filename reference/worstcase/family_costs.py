@@ -66,9 +66,12 @@ Examples
 
 from __future__ import annotations
 
+from fractions import Fraction
+
 from topomark.spec.errors import InvalidInput, TopomarkFault
 
-__all__ = ["strip_cost", "STRIP_FROM", "split_strip_cost", "SPLIT_STRIP_FROM", "PENDANT_COSTS", "PENDANT_ALGORITHMS"]
+__all__ = ["strip_cost", "STRIP_FROM", "split_strip_cost", "SPLIT_STRIP_FROM", "PENDANT_COSTS", "PENDANT_ALGORITHMS",
+           "pendant_ratios"]
 
 STRIP_FROM = 9
 """The least n the formula of :func:`strip_cost` is measured for (below it the fold and the start overlap)."""
@@ -116,3 +119,12 @@ PENDANT_COSTS: dict[int, tuple[int, int, int]] = {
     150: (793400, 718460, 713986), 200: (1943779, 1744893, 1739015), 300: (6776543, 6036437, 6027751)}
 """n ↦ the cost of :data:`PENDANT_ALGORITHMS` (default policies) on ``pendant-strip:n=N``: measured by the compiled
 engine, re-run by the tests at every one of these sizes (and by the checked reference at n = 50)."""
+
+
+def pendant_ratios(algorithm: str) -> list[tuple[int, Fraction]]:
+    """(n, cost / exact bound) of ``algorithm`` (one of :data:`PENDANT_ALGORITHMS`) at each size of
+    :data:`PENDANT_COSTS`, the bound (3.1)+(3.2) taken at the pendant strip's own m."""
+    from topomark.reference.algorithms.bounds import upper_bound
+    from topomark.reference.worlds.pendant import pendant_strip
+    k = PENDANT_ALGORITHMS.index(algorithm)
+    return [(n, Fraction(costs[k], upper_bound(n, pendant_strip(n).m))) for n, costs in sorted(PENDANT_COSTS.items())]

@@ -70,16 +70,13 @@ size run (:mod:`.family_costs`): measured, not proved for every n."""
 def pendant_statement(algorithm: str) -> tuple[str, str] | None:
     """(what the pendant strip shows for ``algorithm``, what it says), from :data:`~.family_costs.PENDANT_COSTS`;
     None for an algorithm it was not run for, or if its cost / bound does not rise from each size to the next."""
-    from topomark.reference.algorithms.bounds import upper_bound
-    from topomark.reference.worlds.pendant import pendant_strip
-    from topomark.reference.worstcase.family_costs import PENDANT_ALGORITHMS, PENDANT_COSTS
+    from topomark.reference.worstcase.family_costs import PENDANT_ALGORITHMS, pendant_ratios
     if algorithm not in PENDANT_ALGORITHMS:
         return None
-    k = PENDANT_ALGORITHMS.index(algorithm)
-    ratios = [(n, costs[k] / upper_bound(n, pendant_strip(n).m)) for n, costs in sorted(PENDANT_COSTS.items())]
+    ratios = pendant_ratios(algorithm)
     if any(b <= a for (_, a), (_, b) in zip(ratios, ratios[1:])):
         return None
-    shown = ", ".join(f"{r:.4f}" for _, r in ratios)
+    shown = ", ".join(f"{float(r):.4f}" for _, r in ratios)
     sizes = ", ".join(str(n) for n, _ in ratios)
     return (f"on the pendant strip `pendant-strip:n=N` (maximum degree 4, m about 1.8 n, diameter about n/3, the "
             f"start at the end of its stem) cost / bound rises from each size run to the next: {shown} at n = "
